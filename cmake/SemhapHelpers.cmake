@@ -1,0 +1,43 @@
+# SPDX-License-Identifier: MIT
+# Compiler settings shared by every semhap target, and the one-line test helper.
+
+set(SEMHAP_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/..")
+
+# Strict Qt: no implicit string conversions, no foreach, nothing deprecated before 6.4.
+# qcustomplot.h uses foreach, so the studio opts out of QT_NO_FOREACH (see STYLE.md).
+function(semhap_strict_target target)
+    cmake_parse_arguments(arg "ALLOW_FOREACH" "" "" ${ARGN})
+    target_compile_definitions(${target} PRIVATE
+        QT_NO_CAST_FROM_ASCII QT_NO_CAST_TO_ASCII QT_NO_CAST_FROM_BYTEARRAY
+        QT_NO_URL_CAST_FROM_STRING QT_USE_QSTRINGBUILDER
+        QT_DISABLE_DEPRECATED_BEFORE=0x060400)
+    if(NOT arg_ALLOW_FOREACH)
+        target_compile_definitions(${target} PRIVATE QT_NO_FOREACH)
+    endif()
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast
+        -Wcast-align -Woverloaded-virtual -Wconversion -Wno-sign-conversion)
+    if(SEMHAP_SANITIZE)
+        target_compile_options(${target} PRIVATE
+            -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()
+
+# semhap_add_test(name LIBS lib... [LABELS label...] [SOURCES extra...])
+# Builds tests/<name>/tst_<name>.cpp into tst_<name> and registers it with CTest.
+# Tests read their golden files from SEMHAP_TEST_DATA (the test's own folder).
+function(semhap_add_test name)
+    cmake_parse_arguments(arg "" "" "LIBS;LABELS;SOURCES" ${ARGN})
+    set(target tst_${name})
+    add_executable(${target} ${CMAKE_CURRENT_SOURCE_DIR}/${name}/tst_${name}.cpp ${arg_SOURCES})
+    target_link_libraries(${target} PRIVATE Qt6::Test ${arg_LIBS})
+    target_compile_definitions(${target} PRIVATE
+        SEMHAP_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/${name}"
+        SEMHAP_RESOURCES="${SEMHAP_SOURCE_DIR}/resources")
+    semhap_strict_target(${target})
+    add_test(NAME ${name} COMMAND ${target})
+    set_tests_properties(${name} PROPERTIES
+        LABELS "${arg_LABELS}" TIMEOUT 300
+        ENVIRONMENT "QT_QPA_PLATFORM=offscreen;ASAN_OPTIONS=detect_leaks=1")
+endfunction()

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "contactframe.h"
+#include "eventbuffer.h"
+#include "semanticevent.h"
+
+#include <QJsonObject>
+#include <QString>
+
+#include <memory>
+
+namespace semhap {
+
+/**
+ * A stateful state estimator on one gripper's contact frames (spec section 2). Each update
+ * appends the begin/update/end events of that tick to the buffer, in the spec's order.
+ * Plain values: no Qt event loop, no allocation in update().
+ */
+class Detector
+{
+public:
+    Detector(int node, Gripper gripper) : m_node(node), m_gripper(gripper) {}
+    virtual ~Detector() = default;
+
+    virtual DetectorKind kind() const = 0;
+    /** Consumes one frame of this detector's gripper and appends this tick's events. */
+    virtual void update(const ContactFrame &frame, EventBuffer &out) = 0;
+    /** Ends every active message at time t (router swap, end of a run). */
+    virtual void endAll(double t, EventBuffer &out) = 0;
+    /** Back to the initial state, silently. */
+    virtual void clear() = 0;
+    /** Whether `message` is active now, and its intensity. */
+    virtual bool isActive(Message message, double *intensity = nullptr) const = 0;
+
+    int node() const { return m_node; }
+    Gripper gripper() const { return m_gripper; }
+
+protected:
+    int m_node;
+    Gripper m_gripper;
+};
+
+} // namespace semhap

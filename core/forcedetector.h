@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "detector.h"
+#include "messagetracker.h"
+
+namespace semhap {
+
+/**
+ * The paper's Algorithm 1 as stateful messages: `grasp` (confirmation) while F > grasp,
+ * `break` (exception) while F > break with intensity clip((F - break)/(max - break), 0, 1).
+ */
+class ForceDetector : public Detector
+{
+public:
+    struct Params
+    {
+        double grasp = 20.0;  ///< T_grasp, N
+        double brk = 80.0;    ///< T_break, N (JSON key "break")
+        double max = 120.0;   ///< F_max, N
+        /** Once active, a message stays active until F <= threshold - hysteresis (N). */
+        double hysteresis = 0.0;
+        /** A message begins only after its condition has held this long (s). */
+        double minDuration = 0.0;
+
+        /** Reads the keys present in `json` over the defaults; false with `key`+`reason`. */
+        bool read(const QJsonObject &json, QString *key, QString *reason);
+        QJsonObject toJson() const;
+        /** grasp < break < max, hysteresis and minDuration >= 0, all finite. */
+        bool validate(QString *key, QString *reason) const;
+    };
+
+    ForceDetector(int node, Gripper gripper, const Params &params);
+
+    DetectorKind kind() const override { return DetectorKind::Force; }
+    void update(const ContactFrame &frame, EventBuffer &out) override;
+    void endAll(double t, EventBuffer &out) override;
+    void clear() override;
+    bool isActive(Message message, double *intensity = nullptr) const override;
+
+    const Params &params() const { return m_params; }
+
+private:
+    Params m_params;
+    MessageTracker m_grasp;
+    MessageTracker m_break;
+};
+
+} // namespace semhap

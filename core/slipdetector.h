@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "detector.h"
+#include "messagetracker.h"
+
+namespace semhap {
+
+/**
+ * The paper's Algorithm 2 as stateful messages: once both fingertips hold the same actor
+ * with F > grasp the grasp is stable (`grasp`, confirmation); while stable, `slip`
+ * (exception) is active when N < loss, intensity clip((loss - N)/(loss - min), 0, 1).
+ * An actor switch, a release or F <= grasp resets: every active message ends at once.
+ */
+class SlipDetector : public Detector
+{
+public:
+    struct Params
+    {
+        double grasp = 20.0;  ///< T_grasp, N
+        double loss = 28.0;   ///< N_loss, contacts
+        double min = 8.0;     ///< N_min, contacts (< loss)
+        /** Once slipping, slip stays active until N >= loss + hysteresis (contacts). */
+        double hysteresis = 0.0;
+        /** A message begins only after its condition has held this long (s). */
+        double minDuration = 0.0;
+
+        bool read(const QJsonObject &json, QString *key, QString *reason);
+        QJsonObject toJson() const;
+        /** min < loss, grasp >= 0, hysteresis and minDuration >= 0, all finite. */
+        bool validate(QString *key, QString *reason) const;
+    };
+
+    SlipDetector(int node, Gripper gripper, const Params &params);
+
+    DetectorKind kind() const override { return DetectorKind::Slip; }
+    void update(const ContactFrame &frame, EventBuffer &out) override;
+    void endAll(double t, EventBuffer &out) override;
+    void clear() override;
+    bool isActive(Message message, double *intensity = nullptr) const override;
+
+    const Params &params() const { return m_params; }
+    /** The grasped actor (ActorTable id), -1 for none. */
+    int graspedActor() const { return m_actor; }
+    bool isStable() const { return m_stable; }
+
+private:
+    Params m_params;
+    int m_actor = -1;
+    bool m_stable = false;
+    MessageTracker m_grasp;
+    MessageTracker m_slip;
+};
+
+} // namespace semhap
