@@ -5,12 +5,16 @@ set(SEMHAP_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/..")
 
 # Strict Qt: no implicit string conversions, no foreach, nothing deprecated before 6.4.
 # qcustomplot.h uses foreach, so the studio opts out of QT_NO_FOREACH (see STYLE.md).
+# Tests may build QStrings from literals (ALLOW_ASCII): their rows read better that way.
 function(semhap_strict_target target)
-    cmake_parse_arguments(arg "ALLOW_FOREACH" "" "" ${ARGN})
+    cmake_parse_arguments(arg "ALLOW_FOREACH;ALLOW_ASCII" "" "" ${ARGN})
     target_compile_definitions(${target} PRIVATE
-        QT_NO_CAST_FROM_ASCII QT_NO_CAST_TO_ASCII QT_NO_CAST_FROM_BYTEARRAY
+        QT_NO_CAST_TO_ASCII QT_NO_CAST_FROM_BYTEARRAY
         QT_NO_URL_CAST_FROM_STRING QT_USE_QSTRINGBUILDER
         QT_DISABLE_DEPRECATED_BEFORE=0x060400)
+    if(NOT arg_ALLOW_ASCII)
+        target_compile_definitions(${target} PRIVATE QT_NO_CAST_FROM_ASCII)
+    endif()
     if(NOT arg_ALLOW_FOREACH)
         target_compile_definitions(${target} PRIVATE QT_NO_FOREACH)
     endif()
@@ -35,7 +39,7 @@ function(semhap_add_test name)
     target_compile_definitions(${target} PRIVATE
         SEMHAP_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/${name}"
         SEMHAP_RESOURCES="${SEMHAP_SOURCE_DIR}/resources")
-    semhap_strict_target(${target})
+    semhap_strict_target(${target} ALLOW_ASCII)
     add_test(NAME ${name} COMMAND ${target})
     set_tests_properties(${name} PROPERTIES
         LABELS "${arg_LABELS}" TIMEOUT 300

@@ -10,8 +10,8 @@ QString LoadError::toString() const
         where += QLatin1Char(':') + QString::number(line);
         if (column > 0)
             where += QLatin1Char(':') + QString::number(column);
-    } else if (!pointer.isNull()) {
-        where += QStringLiteral(": ") + (pointer.isEmpty() ? QStringLiteral("/") : pointer);
+    } else if (!pointer.isEmpty()) {
+        where += QStringLiteral(": ") + pointer;
     }
     return where + QStringLiteral(": ") + reason;
 }
@@ -20,7 +20,7 @@ LoadError LoadError::at(const QString &file, const QString &pointer, const QStri
 {
     LoadError e;
     e.file = file;
-    e.pointer = pointer.isNull() ? QStringLiteral("") : pointer;
+    e.pointer = pointer;
     e.reason = reason;
     return e;
 }

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QIODevice>
+#include <QString>
+#include <QStringList>
+#include <QTextStream>
+
+#include <memory>
+#include <vector>
+
+namespace semhap {
+
+/** Exit codes shared by every command (spec section 5). */
+enum ExitCode { ExitOk = 0, ExitInvalidInput = 1, ExitUsage = 2 };
+
+/** The standard streams a command uses; tests pass buffers, main passes the real ones. */
+struct CommandIo
+{
+    QIODevice *in = nullptr;   ///< what `-` reads
+    QIODevice *out = nullptr;  ///< what `-` writes, and help text
+    QIODevice *err = nullptr;  ///< error messages, one line each
+};
+
+/**
+ * One `semhap` subcommand: parses its own options and returns an exit code, so tests run
+ * commands in-process with buffers for the standard streams.
+ */
+class Command
+{
+    Q_DECLARE_TR_FUNCTIONS(semhap::Command)
+
+public:
+    explicit Command(const CommandIo &io);
+    virtual ~Command();
+
+    virtual QString name() const = 0;
+    virtual QString summary() const = 0;
+    /** Runs with the arguments after the command name. */
+    int run(const QStringList &arguments);
+
+protected:
+    /** Declares the options and positional arguments on the parser. */
+    virtual void configure(QCommandLineParser &parser) = 0;
+    /** Runs once the arguments parsed; report usage errors with usageError(). */
+    virtual int execute(const QCommandLineParser &parser) = 0;
+
+    int usageError(const QString &message);
+    /** Prints `WHERE: reason` on the error stream; returns ExitInvalidInput. */
+    int inputError(const QString &line);
+    /** Prints a line on the error stream without failing (rejected stream lines, counts). */
+    void report(const QString &line);
+
+    /** Parses a number option; false (after a usage message) when it is not one. */
+    bool numberOption(const QCommandLineParser &parser, const QString &option, double *value);
+
+    /**
+     * Opens FILE, or standard output for `-`, for writing; the command keeps it open until it
+     * is destroyed. Null after printing why.
+     */
+    QIODevice *openOutput(const QString &path);
+    /** Opens FILE, or standard input for `-`, for reading. Null after printing why. */
+    QIODevice *openInput(const QString &path);
+    /** Usage check of the spec: at most one of the outputs may be `-`. */
+    bool checkSingleStdout(const QStringList &outputs);
+
+    CommandIo m_io;
+    QTextStream m_out;
+
+private:
+    std::vector<std::unique_ptr<QIODevice>> m_files;
+};
+
+} // namespace semhap

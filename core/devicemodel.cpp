@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: MIT
+#include "devicemodel.h"
+
+#include "deviceframe.h"
+#include "jsondocument.h"
+
+#include <QDir>
+#include <QJsonArray>
+
+#include <cmath>
+#include <map>
+
+namespace semhap {
+
+namespace {
+
+constexpr double Pi = 3.14159265358979323846;
+// A first-order lag reaches 10 % at tau·ln(10/9) and 90 % at tau·ln(10): 10–90 % = tau·ln 9.
+const double RiseToTau = 1.0 / std::log(9.0);
+
+bool readResponse(JsonReader &reader, const QJsonObject &response, double *latency, double *tau)
+{
+    const QString where = QStringLiteral("/response");
+    for (auto it = response.begin(); it != response.end(); ++it) {
+        if (it.key() != QLatin1String("latency") && it.key() != QLatin1String("bandwidth")
+            && it.key() != QLatin1String("rise"))
+            return reader.fail(jsonPointerChild(where, it.key()),
+                               QStringLiteral("unknown key; expected latency, bandwidth or rise"));
+    }
+    if (!reader.number(response, QStringLiteral("latency"), where, latency, false))
+        return false;
+    if (*latency < 0 || *latency > 1)
+        return reader.fail(where + QStringLiteral("/latency"),
+                           QStringLiteral("must be between 0 and 1 s"));
+    const bool hasBandwidth = response.contains(QStringLiteral("bandwidth"));
+    const bool hasRise = response.contains(QStringLiteral("rise"));
+    if (hasBandwidth && hasRise)
+        return reader.fail(where, QStringLiteral("give bandwidth or rise, not both"));
+    if (hasBandwidth) {
+        double bandwidth = 0;
+        if (!reader.number(response, QStringLiteral("bandwidth"), where, &bandwidth))
+            return false;
+        if (bandwidth <= 0)
+            return reader.fail(where + QStringLiteral("/bandwidth"),
+                               QStringLiteral("must be positive (Hz)"));
+        *tau = 1.0 / (2 * Pi * bandwidth);
+    } else if (hasRise) {
+        double rise = 0;
+        if (!reader.number(response, QStringLiteral("rise"), where, &rise))
+            return false;
+        if (rise < 0 || rise > 10)
+            return reader.fail(where + QStringLiteral("/rise"),
+                               QStringLiteral("must be between 0 and 10 s"));
+        *tau = rise * RiseToTau;
+    }
+    return true;
+}
+
+} // namespace
+
+std::shared_ptr<const DeviceModel> DeviceModel::fromJson(const QJsonObject &json,
+                                                         const QString &file, LoadError *error)
+{
+    if (!checkFormat(json, file, QLatin1String(Format), error))
+        return nullptr;
+    auto model = std::make_shared<DeviceModel>();
+    JsonReader reader(file, error);
+    return model->read(json, reader) ? model : nullptr;
+}
+
+bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
+{
+    const QString root;
+    if (!reader.string(json, QStringLiteral("name"), root, &m_name)
+        || !reader.string(json, QStringLiteral("description"), root, &m_description, false)
+        || !reader.number(json, QStringLiteral("rate"), root, &m_rate))
+        return false;
+    if (m_name.isEmpty() || m_name.contains(QLatin1Char('/')))
+        return reader.fail(QStringLiteral("/name"),
+                           QStringLiteral("must be a non-empty name without '/'"));
+    if (m_rate <= 0 || m_rate > 100000)
+        return reader.fail(QStringLiteral("/rate"),
+                           QStringLiteral("must be between 0 and 100000 frames/s"));
+
+    QJsonArray channels;
+    if (!reader.array(json, QStringLiteral("channels"), root, &channels))
+        return false;
+    if (channels.isEmpty() || channels.size() > MaxChannels)
+        return reader.fail(QStringLiteral("/channels"),
+                           QStringLiteral("must list 1 to %1 channels").arg(MaxChannels));
+    for (int i = 0; i < channels.size(); ++i) {
+        const QString where = jsonPointerChild(QStringLiteral("/channels"), i);
+        if (!channels.at(i).isObject())
+            return reader.fail(where, QStringLiteral("must be an object"));
+        const QJsonObject c = channels.at(i).toObject();
+        ChannelSpec spec;
+        if (!reader.string(c, QStringLiteral("name"), where, &spec.name)
+            || !reader.string(c, QStringLiteral("unit"), where, &spec.unit, false)
+            || !reader.number(c, QStringLiteral("min"), where, &spec.min, false)
+            || !reader.number(c, QStringLiteral("max"), where, &spec.max, false))
+            return false;
+        if (spec.name.isEmpty())
+            return reader.fail(where + QStringLiteral("/name"), QStringLiteral("is empty"));
+        if (channelIndex(spec.name) >= 0)
+            return reader.fail(where + QStringLiteral("/name"),
+                               QStringLiteral("duplicate channel '%1'").arg(spec.name));
+        if (!(spec.min < spec.max))
+            return reader.fail(where, QStringLiteral("min must be below max"));
+        m_channels.push_back(spec);
+    }
+
+    if (!reader.object(json, QStringLiteral("response"), root, &m_response, false))
+        return false;
+    return readResponse(reader, m_response, &m_latency, &m_tau);
+}
+
+std::shared_ptr<const DeviceModel> DeviceModel::fromFile(const QString &path, LoadError *error)
+{
+    QJsonObject json;
+    if (!readJsonObjectFile(path, &json, error))
+        return nullptr;
+    return fromJson(json, path, error);
+}
+
+QJsonObject DeviceModel::toJson() const
+{
+    QJsonArray channels;
+    for (const ChannelSpec &c : m_channels) {
+        QJsonObject o{{QStringLiteral("name"), c.name},
+                      {QStringLiteral("min"), c.min},
+                      {QStringLiteral("max"), c.max}};
+        if (!c.unit.isEmpty())
+            o.insert(QStringLiteral("unit"), c.unit);
+        channels.append(o);
+    }
+    QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)},
+                     {QStringLiteral("name"), m_name},
+                     {QStringLiteral("rate"), m_rate},
+                     {QStringLiteral("channels"), channels}};
+    if (!m_description.isEmpty())
+        json.insert(QStringLiteral("description"), m_description);
+    if (!m_response.isEmpty())
+        json.insert(QStringLiteral("response"), m_response);
+    return json;
+}
+
+QStringList DeviceModel::channelNames() const
+{
+    QStringList names;
+    for (const ChannelSpec &c : m_channels)
+        names.append(c.name);
+    return names;
+}
+
+int DeviceModel::channelIndex(const QString &name) const
+{
+    for (size_t i = 0; i < m_channels.size(); ++i) {
+        if (m_channels[i].name == name)
+            return int(i);
+    }
+    return -1;
+}
+
+double DeviceModel::clamp(int channel, double value) const
+{
+    const ChannelSpec &c = m_channels[size_t(channel)];
+    if (!(value >= c.min))  // also maps NaN to the lower limit: never send NaN to hardware
+        return c.min;
+    return value > c.max ? c.max : value;
+}
+
+std::vector<double> DeviceModel::predict(const std::vector<double> &commanded,
+                                         double sampleRate) const
+{
+    ResponseFilter filter(*this, sampleRate);
+    std::vector<double> delivered;
+    delivered.reserve(commanded.size());
+    for (double u : commanded)
+        delivered.push_back(filter.step(u));
+    return delivered;
+}
+
+ResponseFilter::ResponseFilter(const DeviceModel &model, double sampleRate)
+{
+    const double dt = 1.0 / sampleRate;
+    const auto delaySamples = size_t(std::lround(model.latency() * sampleRate));
+    m_delay.assign(delaySamples, 0.0);
+    if (model.timeConstant() > 0)
+        m_alpha = 1.0 - std::exp(-dt / model.timeConstant());
+}
+
+double ResponseFilter::step(double command)
+{
+    double delayed = command;
+    if (!m_delay.empty()) {
+        delayed = m_delay[m_head];
+        m_delay[m_head] = command;
+        m_head = (m_head + 1) % m_delay.size();
+    }
+    m_value += m_alpha * (delayed - m_value);
+    return m_value;
+}
+
+void ResponseFilter::reset()
+{
+    std::fill(m_delay.begin(), m_delay.end(), 0.0);
+    m_head = 0;
+    m_value = 0.0;
+}
+
+namespace {
+
+const std::map<QString, DeviceModelPtr> &builtinModels()
+{
+    static const std::map<QString, DeviceModelPtr> models = [] {
+        std::map<QString, DeviceModelPtr> result;
+        const QDir dir(QStringLiteral(":/semhap/devices"));
+        const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files);
+        for (const QString &file : files) {
+            LoadError error;
+            if (DeviceModelPtr model = DeviceModel::fromFile(dir.filePath(file), &error))
+                result.emplace(model->name(), model);
+            else
+                qFatal("built-in device model is broken: %s", qPrintable(error.toString()));
+        }
+        return result;
+    }();
+    return models;
+}
+
+} // namespace
+
+QStringList DeviceModelLibrary::builtinNames()
+{
+    QStringList names;
+    for (const auto &entry : builtinModels())
+        names.append(entry.first);
+    return names;
+}
+
+DeviceModelPtr DeviceModelLibrary::builtin(const QString &name)
+{
+    const auto &models = builtinModels();
+    const auto it = models.find(name);
+    return it == models.end() ? nullptr : it->second;
+}
+
+DeviceModelPtr DeviceModelLibrary::load(const QString &nameOrPath, LoadError *error)
+{
+    const bool isPath = nameOrPath.contains(QLatin1Char('/'))
+                        || nameOrPath.endsWith(QLatin1String(".json"));
+    if (isPath)
+        return DeviceModel::fromFile(nameOrPath, error);
+    if (DeviceModelPtr model = builtin(nameOrPath))
+        return model;
+    *error = LoadError::at(QString(), QString(),
+                           QStringLiteral("unknown device model '%1' (built-in: %2)")
+                               .arg(nameOrPath, builtinNames().join(QStringLiteral(", "))));
+    return nullptr;
+}
+
+} // namespace semhap

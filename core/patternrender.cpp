@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+#include "patternrender.h"
+
+#include "voice.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+bool resolvePatternRoutes(const Pattern &pattern, const DeviceModel &model,
+                          const QStringList &channels, std::vector<PlayerInput::Route> *routes,
+                          QString *reason)
+{
+    if (pattern.model() != model.name()) {
+        *reason = QStringLiteral("pattern '%1' is for model %2, not %3")
+                      .arg(pattern.name(), pattern.model(), model.name());
+        return false;
+    }
+    const auto &tracks = pattern.tracks();
+    if (!channels.isEmpty() && tracks.size() != 1) {
+        *reason = QStringLiteral("channels can only be remapped for a pattern with one track; "
+                                 "'%1' has %2")
+                      .arg(pattern.name())
+                      .arg(tracks.size());
+        return false;
+    }
+    routes->clear();
+    for (size_t track = 0; track < tracks.size(); ++track) {
+        QStringList names = channels.isEmpty() ? tracks[track].channels : channels;
+        if (names == QStringList{QStringLiteral("*")})
+            names = model.channelNames();
+        for (const QString &name : names) {
+            const int channel = model.channelIndex(name);
+            if (channel < 0) {
+                *reason = QStringLiteral("pattern '%1' drives channel '%2', which model %3 does "
+                                         "not have (channels: %4)")
+                              .arg(pattern.name(), name, model.name(),
+                                   model.channelNames().join(QStringLiteral(", ")));
+                return false;
+            }
+            routes->push_back({channel, int(track)});
+        }
+    }
+    return true;
+}
+
+bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
+                   const RenderOptions &options, RenderedPattern *result, QString *reason)
+{
+    std::vector<PlayerInput::Route> routes;
+    if (!resolvePatternRoutes(*pattern, model, {}, &routes, reason))
+        return false;
+    const auto samples = size_t(std::max(0.0, std::round(options.duration * options.rate)));
+    result->channels = model.channelNames();
+    result->t.resize(samples);
+    result->values.assign(size_t(model.channelCount()), std::vector<double>(samples, 0.0));
+
+    Voice voice(pattern);
+    voice.setParam(ParamTable::Intensity, options.intensity, 0.0);
+    voice.begin(0.0);
+    bool released = false;
+    for (size_t k = 0; k < samples; ++k) {
+        const double t = double(k) / options.rate;
+        if (!released && t >= options.releaseAt) {
+            voice.end(options.releaseAt);
+            released = true;
+        }
+        voice.advance(t);
+        result->t[k] = t;
+        std::vector<bool> touched(size_t(model.channelCount()), false);
+        for (const PlayerInput::Route &route : routes) {
+            double &cell = result->values[size_t(route.channel)][k];
+            const double v = voice.value(route.slot);
+            cell = touched[size_t(route.channel)] ? std::max(cell, v) : v;
+            touched[size_t(route.channel)] = true;
+        }
+        for (int c = 0; c < model.channelCount(); ++c) {
+            double &cell = result->values[size_t(c)][k];
+            cell = model.clamp(c, cell);
+        }
+    }
+    return true;
+}
+
+} // namespace semhap

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "pipeline.h"
+
+#include <algorithm>
+
+namespace semhap {
+
+namespace {
+
+// Device instants are rounded to the nanosecond; a frame "at" an instant may differ from it
+// by floating-point noise.
+constexpr double TimeEpsilon = 1e-9;
+
+} // namespace
+
+Pipeline::Pipeline(std::unique_ptr<Router> router) : m_router(std::move(router)) {}
+
+void Pipeline::process(const ContactFrame &frame, PipelineSink &sink)
+{
+    if (!m_router->isStarted()) {
+        m_router->start(frame.t);
+        m_now = frame.t;
+    }
+    // A frame older than "now" (another gripper lagging) still runs its detectors, but the
+    // clock does not go back: its events act at "now".
+    const double t = std::max(frame.t, m_now);
+    advance(t, false, sink);
+    m_now = t;
+    m_events.clear();
+    m_router->process(frame, m_events);
+    for (const SemanticEvent &event : m_events)
+        sink.onEvent(event);
+}
+
+void Pipeline::flush(PipelineSink &sink)
+{
+    if (m_router->isStarted())
+        advance(m_now, true, sink);
+}
+
+void Pipeline::advance(double t, bool inclusive, PipelineSink &sink)
+{
+    const double limit = inclusive ? t + TimeEpsilon : t - TimeEpsilon;
+    Player &player = m_router->player();
+    DeviceFrame frame;
+    for (;;) {
+        const double timer = m_router->nextTimer();
+        const double instant = player.nextInstant();
+        // A timer due at an instant acts before it is rendered, like a frame at that time.
+        if (timer <= instant && timer <= limit) {
+            m_router->fireTimers(timer);
+        } else if (instant <= limit) {
+            player.renderNext(&frame);
+            sink.onDeviceFrame(frame);
+        } else {
+            return;
+        }
+    }
+}
+
+} // namespace semhap

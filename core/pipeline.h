@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "deviceframe.h"
+#include "eventbuffer.h"
+#include "router.h"
+
+#include <memory>
+
+namespace semhap {
+
+/** Receives what a pipeline produces, as it is produced. */
+class PipelineSink
+{
+public:
+    virtual ~PipelineSink() = default;
+    virtual void onEvent(const SemanticEvent &event) { Q_UNUSED(event) }
+    virtual void onDeviceFrame(const DeviceFrame &frame) { Q_UNUSED(frame) }
+};
+
+/**
+ * Contact frames in, semantic events and device frames out, on a clock the frames drive:
+ * a frame at t first renders every device instant before t (and fires due timers, in time
+ * order), then runs the detectors and the router. flush() renders the instants at the last
+ * frame's time, once every gripper's frame of that tick is in. Deterministic; the per-tick
+ * path allocates nothing.
+ */
+class Pipeline
+{
+public:
+    explicit Pipeline(std::unique_ptr<Router> router);
+
+    /** Processes one contact frame; the first one starts the clocks at its t. */
+    void process(const ContactFrame &frame, PipelineSink &sink);
+    /** Renders the device instants up to and including the latest frame's time. */
+    void flush(PipelineSink &sink);
+
+    Router &router() { return *m_router; }
+    const Router &router() const { return *m_router; }
+    /** The latest frame time seen (the pipeline's "now"). */
+    double now() const { return m_now; }
+
+private:
+    void advance(double t, bool inclusive, PipelineSink &sink);
+
+    std::unique_ptr<Router> m_router;
+    EventBuffer m_events;
+    double m_now = 0.0;
+};
+
+} // namespace semhap

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "contactframe.h"
+#include "eventbuffer.h"
+#include "loaderror.h"
+#include "player.h"
+#include "routergraph.h"
+
+#include <QStringList>
+
+#include <memory>
+#include <vector>
+
+namespace semhap {
+
+class DetectorNode;
+class RuntimeNode;
+class SignalNode;
+
+/**
+ * A router graph compiled to run: detectors, logic, pattern voices and the player with its
+ * devices. Compiling checks everything (types, ports, cycles, patterns, models, channels)
+ * and names the node and the reason of the first problem. Running allocates nothing.
+ */
+class Router
+{
+public:
+    /** Compiles `graph`; on failure returns null with `error` (file and JSON pointer). */
+    static std::unique_ptr<Router> compile(const RouterGraph &graph, LoadError *error);
+    ~Router();
+
+    /** Starts the player's clocks and the continuous patterns at the first frame's time. */
+    void start(double t0);
+    bool isStarted() const { return m_started; }
+
+    /** Runs the detectors (and signal sources) of the frame's gripper; appends and routes. */
+    void process(const ContactFrame &frame, EventBuffer &events);
+    /** Ends every active message of every detector at t (end of a run, router swap). */
+    void endAll(double t, EventBuffer &events);
+
+    /** When a logic node next needs fireTimers; infinity when none waits. */
+    double nextTimer() const;
+    /** Fires the timers due at or before t, in time order. */
+    void fireTimers(double t);
+
+    Player &player() { return m_player; }
+    const Player &player() const { return m_player; }
+    /** Node ids in graph order: SemanticEvent::node indexes this list. */
+    const QStringList &nodeIds() const { return m_nodeIds; }
+    const RouterGraph &graph() const { return m_graph; }
+
+private:
+    Router() = default;
+
+    RouterGraph m_graph;
+    QStringList m_nodeIds;
+    std::vector<std::unique_ptr<RuntimeNode>> m_nodes;  ///< graph order; null for devices
+    std::vector<DetectorNode *> m_detectors;
+    std::vector<SignalNode *> m_signals;
+    std::vector<RuntimeNode *> m_timed;  ///< nodes that may hold timers
+    Player m_player;
+    bool m_started = false;
+    friend class RouterCompiler;
+};
+
+/**
+ * Loads a router preset or file, applies `NODE.PARAM=VALUE` overrides and compiles it. An
+ * error caused by an override is reported against the override (`--set NODE.PARAM=VALUE:
+ * reason`), not against the file.
+ */
+std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList &overrides,
+                                   LoadError *error);
+
+} // namespace semhap

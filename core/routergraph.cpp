@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+#include "routergraph.h"
+
+#include "jsondocument.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+
+namespace semhap {
+
+namespace {
+
+bool validId(const QString &id)
+{
+    if (id.isEmpty())
+        return false;
+    for (const QChar c : id) {
+        if (c == QLatin1Char(':') || c.isSpace())
+            return false;
+    }
+    return true;
+}
+
+// "node" or "node:port".
+void splitEndpoint(const QString &text, QString *node, QString *port)
+{
+    const int colon = int(text.indexOf(QLatin1Char(':')));
+    *node = colon < 0 ? text : text.left(colon);
+    *port = colon < 0 ? QString() : text.mid(colon + 1);
+}
+
+QString joinEndpoint(const QString &node, const QString &port)
+{
+    return port.isEmpty() ? node : node + QLatin1Char(':') + port;
+}
+
+bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
+{
+    for (int i = 0; i < nodes.size(); ++i) {
+        const QString where = jsonPointerChild(QStringLiteral("/nodes"), i);
+        if (!nodes.at(i).isObject())
+            return reader.fail(where, QStringLiteral("must be an object, found ")
+                                          + jsonTypeName(nodes.at(i)));
+        const QJsonObject o = nodes.at(i).toObject();
+        RouterNode node;
+        if (!reader.string(o, QStringLiteral("id"), where, &node.id)
+            || !reader.string(o, QStringLiteral("type"), where, &node.type)
+            || !reader.object(o, QStringLiteral("params"), where, &node.params, false)
+            || !reader.object(o, QStringLiteral("ui"), where, &node.ui, false))
+            return false;
+        if (!validId(node.id))
+            return reader.fail(where + QStringLiteral("/id"),
+                               QStringLiteral("'%1' is not a valid id (non-empty, no ':' or "
+                                              "spaces)")
+                                   .arg(node.id));
+        if (graph->nodeIndex(node.id) >= 0)
+            return reader.fail(where + QStringLiteral("/id"),
+                               QStringLiteral("duplicate node id '%1'").arg(node.id));
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            static const QStringList known{QStringLiteral("id"), QStringLiteral("type"),
+                                           QStringLiteral("params"), QStringLiteral("ui")};
+            if (!known.contains(it.key()))
+                return reader.fail(jsonPointerChild(where, it.key()),
+                                   QStringLiteral("unknown key; node parameters go in "
+                                                  "\"params\""));
+        }
+        graph->nodes.push_back(node);
+    }
+    return true;
+}
+
+bool readLinks(JsonReader &reader, const QJsonArray &links, RouterGraph *graph)
+{
+    for (int i = 0; i < links.size(); ++i) {
+        const QString where = jsonPointerChild(QStringLiteral("/links"), i);
+        if (!links.at(i).isObject())
+            return reader.fail(where, QStringLiteral("must be an object {\"from\", \"to\"}, "
+                                                     "found ")
+                                          + jsonTypeName(links.at(i)));
+        const QJsonObject o = links.at(i).toObject();
+        QString from;
+        QString to;
+        if (!reader.string(o, QStringLiteral("from"), where, &from)
+            || !reader.string(o, QStringLiteral("to"), where, &to))
+            return false;
+        RouterLink link;
+        splitEndpoint(from, &link.from, &link.fromPort);
+        splitEndpoint(to, &link.to, &link.toPort);
+        graph->links.push_back(link);
+    }
+    return true;
+}
+
+} // namespace
+
+bool RouterGraph::fromJson(const QJsonObject &json, const QString &file, RouterGraph *graph,
+                           LoadError *error)
+{
+    *graph = RouterGraph();
+    graph->file = file;
+    if (!checkFormat(json, file, QLatin1String(Format), error))
+        return false;
+    JsonReader reader(file, error);
+    const QString root;
+    QJsonArray nodes;
+    QJsonArray links;
+    QJsonArray patterns;
+    QJsonArray models;
+    if (!reader.string(json, QStringLiteral("name"), root, &graph->name, false)
+        || !reader.string(json, QStringLiteral("description"), root, &graph->description, false)
+        || !reader.array(json, QStringLiteral("nodes"), root, &nodes)
+        || !reader.array(json, QStringLiteral("links"), root, &links, false)
+        || !reader.array(json, QStringLiteral("patterns"), root, &patterns, false)
+        || !reader.array(json, QStringLiteral("models"), root, &models, false))
+        return false;
+    if (!readNodes(reader, nodes, graph) || !readLinks(reader, links, graph))
+        return false;
+
+    for (int i = 0; i < patterns.size(); ++i) {
+        const QString where = jsonPointerChild(QStringLiteral("/patterns"), i);
+        if (!patterns.at(i).isObject())
+            return reader.fail(where, QStringLiteral("must be a pattern object"));
+        LoadError inner;
+        PatternPtr pattern = Pattern::fromJson(patterns.at(i).toObject(), file, &inner);
+        if (!pattern) {
+            *error = inner;
+            error->pointer = where + inner.pointer;
+            return false;
+        }
+        graph->patterns.push_back(pattern);
+    }
+    for (int i = 0; i < models.size(); ++i) {
+        const QString where = jsonPointerChild(QStringLiteral("/models"), i);
+        if (!models.at(i).isObject())
+            return reader.fail(where, QStringLiteral("must be a device model object"));
+        LoadError inner;
+        DeviceModelPtr model = DeviceModel::fromJson(models.at(i).toObject(), file, &inner);
+        if (!model) {
+            *error = inner;
+            error->pointer = where + inner.pointer;
+            return false;
+        }
+        graph->models.push_back(model);
+    }
+    return true;
+}
+
+bool RouterGraph::fromFile(const QString &path, RouterGraph *graph, LoadError *error)
+{
+    QJsonObject json;
+    if (!readJsonObjectFile(path, &json, error))
+        return false;
+    if (!fromJson(json, path, graph, error))
+        return false;
+    graph->baseDir = QFileInfo(path).absolutePath();
+    return true;
+}
+
+QJsonObject RouterGraph::toJson() const
+{
+    QJsonArray nodeArray;
+    for (const RouterNode &node : nodes) {
+        QJsonObject o{{QStringLiteral("id"), node.id}, {QStringLiteral("type"), node.type}};
+        if (!node.params.isEmpty())
+            o.insert(QStringLiteral("params"), node.params);
+        if (!node.ui.isEmpty())
+            o.insert(QStringLiteral("ui"), node.ui);
+        nodeArray.append(o);
+    }
+    QJsonArray linkArray;
+    for (const RouterLink &link : links) {
+        linkArray.append(QJsonObject{{QStringLiteral("from"), joinEndpoint(link.from, link.fromPort)},
+                                     {QStringLiteral("to"), joinEndpoint(link.to, link.toPort)}});
+    }
+    QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)},
+                     {QStringLiteral("nodes"), nodeArray},
+                     {QStringLiteral("links"), linkArray}};
+    if (!name.isEmpty())
+        json.insert(QStringLiteral("name"), name);
+    if (!description.isEmpty())
+        json.insert(QStringLiteral("description"), description);
+    if (!patterns.empty()) {
+        QJsonArray array;
+        for (const PatternPtr &pattern : patterns)
+            array.append(pattern->toJson());
+        json.insert(QStringLiteral("patterns"), array);
+    }
+    if (!models.empty()) {
+        QJsonArray array;
+        for (const DeviceModelPtr &model : models)
+            array.append(model->toJson());
+        json.insert(QStringLiteral("models"), array);
+    }
+    return json;
+}
+
+int RouterGraph::nodeIndex(const QString &id) const
+{
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        if (nodes[i].id == id)
+            return int(i);
+    }
+    return -1;
+}
+
+bool RouterGraph::applyOverride(const QString &assignment, LoadError *error)
+{
+    const QString where = QStringLiteral("--set ") + assignment;
+    const int equals = int(assignment.indexOf(QLatin1Char('=')));
+    const int dot = equals < 0 ? -1 : int(assignment.lastIndexOf(QLatin1Char('.'), equals));
+    if (equals < 0 || dot <= 0 || dot + 1 == equals) {
+        *error = LoadError::at(where, QString(),
+                               QStringLiteral("expected NODE.PARAM=VALUE"));
+        return false;
+    }
+    const QString nodeId = assignment.left(dot);
+    const QString param = assignment.mid(dot + 1, equals - dot - 1);
+    const QString text = assignment.mid(equals + 1);
+    const int index = nodeIndex(nodeId);
+    if (index < 0) {
+        *error = LoadError::at(where, QString(), QStringLiteral("no node '%1' in router '%2'")
+                                                     .arg(nodeId, name.isEmpty() ? file : name));
+        return false;
+    }
+    // Wrap the value so that scalars parse too; fall back to a plain string.
+    const QJsonDocument doc =
+        QJsonDocument::fromJson(QByteArrayLiteral("[") + text.toUtf8() + QByteArrayLiteral("]"));
+    QJsonValue value(text);
+    if (doc.isArray() && doc.array().size() == 1)
+        value = doc.array().at(0);
+    nodes[size_t(index)].params.insert(param, value);
+    return true;
+}
+
+QStringList RouterPresets::names()
+{
+    QStringList names;
+    const QStringList files = QDir(QStringLiteral(":/semhap/routers"))
+                                  .entryList({QStringLiteral("*.json")}, QDir::Files);
+    for (const QString &file : files)
+        names.append(file.chopped(5));
+    return names;
+}
+
+bool RouterPresets::preset(const QString &name, RouterGraph *graph, LoadError *error)
+{
+    const QString path = QStringLiteral(":/semhap/routers/%1.json").arg(name);
+    if (!QFileInfo::exists(path) || name.contains(QLatin1Char('/'))) {
+        *error = LoadError::at(name, QString(), QStringLiteral("no such router preset "
+                                                               "(presets: %1)")
+                                                    .arg(names().join(QStringLiteral(", "))));
+        return false;
+    }
+    QJsonObject json;
+    if (!readJsonObjectFile(path, &json, error) || !RouterGraph::fromJson(json, name, graph, error))
+        return false;
+    return true;
+}
+
+bool RouterPresets::load(const QString &nameOrPath, RouterGraph *graph, LoadError *error)
+{
+    if (nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json")))
+        return RouterGraph::fromFile(nameOrPath, graph, error);
+    return preset(nameOrPath, graph, error);
+}
+
+} // namespace semhap

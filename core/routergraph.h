@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "devicemodel.h"
+#include "loaderror.h"
+#include "pattern.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace semhap {
+
+/** A node of a router graph as saved: its id, its type and its parameters. */
+struct RouterNode
+{
+    QString id;         ///< unique in the graph; the name events and devices carry
+    QString type;       ///< one of the types in RouterNodeTypes
+    QJsonObject params; ///< type-specific parameters, checked when the graph is compiled
+    QJsonObject ui;     ///< editor data (position…), kept as is
+};
+
+/** A directed link from an output port to an input port. */
+struct RouterLink
+{
+    QString from;
+    QString fromPort;  ///< empty: the node's default output
+    QString to;
+    QString toPort;    ///< empty: the node's default input
+};
+
+/**
+ * A router as data (`"format": "semhap.router/1"`): nodes, links, and optionally the user
+ * patterns and device models it uses, embedded so the file runs the same elsewhere. This
+ * is the document; Router compiles it into something that runs.
+ */
+class RouterGraph
+{
+public:
+    static constexpr const char *Format = "semhap.router/1";
+
+    /** Parses the document's structure; node types and parameters are checked by compile. */
+    static bool fromJson(const QJsonObject &json, const QString &file, RouterGraph *graph,
+                         LoadError *error);
+    static bool fromFile(const QString &path, RouterGraph *graph, LoadError *error);
+    QJsonObject toJson() const;
+
+    /** The index of node `id` in nodes, or -1. */
+    int nodeIndex(const QString &id) const;
+
+    /**
+     * Applies `NODE.PARAM=VALUE` (the node id may itself contain dots: the last dot splits).
+     * VALUE is read as JSON when it parses as such, otherwise as a string.
+     */
+    bool applyOverride(const QString &assignment, LoadError *error);
+
+    QString name;
+    QString description;
+    QString file;     ///< where it was loaded from (errors, relative pattern paths)
+    QString baseDir;  ///< folder relative pattern and model paths are resolved against
+    std::vector<RouterNode> nodes;
+    std::vector<RouterLink> links;
+    std::vector<PatternPtr> patterns;    ///< embedded patterns, found by name first
+    std::vector<DeviceModelPtr> models;  ///< embedded device models, found by name first
+};
+
+/** The router presets shipped as resources (`:/semhap/routers/NAME.json`). */
+class RouterPresets
+{
+public:
+    static QStringList names();
+    /** A preset by name; false (with error) when there is none. */
+    static bool preset(const QString &name, RouterGraph *graph, LoadError *error);
+    /** A preset name or a file path (a `/` or a `.json` ending make it a path). */
+    static bool load(const QString &nameOrPath, RouterGraph *graph, LoadError *error);
+};
+
+} // namespace semhap

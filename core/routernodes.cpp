@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: MIT
+#include "routernodes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+ActiveMessages::Entry *ActiveMessages::find(int key)
+{
+    for (Entry &entry : *this) {
+        if (entry.key == key)
+            return &entry;
+    }
+    return nullptr;
+}
+
+ActiveMessages::Entry *ActiveMessages::insert(int key)
+{
+    if (Entry *existing = find(key))
+        return existing;
+    if (m_size == Capacity)
+        return nullptr;
+    Entry &entry = m_entries[size_t(m_size++)];
+    entry = Entry();
+    entry.key = key;
+    return &entry;
+}
+
+void ActiveMessages::remove(int key)
+{
+    for (int i = 0; i < m_size; ++i) {
+        if (m_entries[size_t(i)].key == key) {
+            // Keep insertion order: replays (gate reopening) follow the order messages began.
+            std::move(m_entries.begin() + i + 1, m_entries.begin() + m_size, m_entries.begin() + i);
+            --m_size;
+            return;
+        }
+    }
+}
+
+void RuntimeNode::onEvent(int, const SemanticEvent &) {}
+
+void RuntimeNode::onSignal(int, double, double) {}
+
+void RuntimeNode::start(double) {}
+
+double RuntimeNode::nextTimer() const
+{
+    return std::numeric_limits<double>::infinity();
+}
+
+void RuntimeNode::fireTimers(double) {}
+
+void RuntimeNode::emitEvent(const SemanticEvent &event) const
+{
+    for (const RouteTarget &target : eventTargets)
+        target.node->onEvent(target.port, event);
+}
+
+void RuntimeNode::emitSignal(double value, double t) const
+{
+    for (const RouteTarget &target : signalTargets)
+        target.node->onSignal(target.port, value, t);
+}
+
+void DetectorNode::process(const ContactFrame &frame, EventBuffer &events)
+{
+    const int from = events.size();
+    m_detector->update(frame, events);
+    route(events, from);
+}
+
+void DetectorNode::endAll(double t, EventBuffer &events)
+{
+    const int from = events.size();
+    m_detector->endAll(t, events);
+    route(events, from);
+}
+
+void DetectorNode::route(const EventBuffer &events, int from) const
+{
+    for (int i = from; i < events.size(); ++i)
+        emitEvent(events[i]);
+}
+
+bool SignalNode::quantityFromName(const QString &name, Quantity *quantity)
+{
+    const QStringList names = quantityNames();
+    const int index = int(names.indexOf(name));
+    if (index < 0)
+        return false;
+    *quantity = Quantity(index);
+    return true;
+}
+
+QStringList SignalNode::quantityNames()
+{
+    // In Quantity's order.
+    return {QStringLiteral("F"),      QStringLiteral("N"),      QStringLiteral("f.left"),
+            QStringLiteral("f.right"), QStringLiteral("n.left"), QStringLiteral("n.right")};
+}
+
+void SignalNode::process(const ContactFrame &frame) const
+{
+    double value = 0.0;
+    switch (m_quantity) {
+    case Quantity::F:
+        value = frame.totalForce();
+        break;
+    case Quantity::N:
+        value = frame.totalContacts();
+        break;
+    case Quantity::FLeft:
+        value = frame.left.f;
+        break;
+    case Quantity::FRight:
+        value = frame.right.f;
+        break;
+    case Quantity::NLeft:
+        value = frame.left.n;
+        break;
+    case Quantity::NRight:
+        value = frame.right.n;
+        break;
+    }
+    emitSignal(value, frame.t);
+}
+
+void FilterNode::onEvent(int, const SemanticEvent &event)
+{
+    const auto bit = [](auto value) { return 1u << unsigned(value); };
+    if (m_messages && !(m_messages & bit(event.message)))
+        return;
+    if (m_categories && !(m_categories & bit(event.category)))
+        return;
+    if (m_grippers && !(m_grippers & bit(event.gripper)))
+        return;
+    emitEvent(event);
+}
+
+void GateNode::onEvent(int port, const SemanticEvent &event)
+{
+    const int key = ActiveMessages::keyOf(event);
+    if (port == 0) {
+        if (event.phase == EventPhase::End)
+            m_inputs.remove(key);
+        else if (ActiveMessages::Entry *entry = m_inputs.insert(key))
+            entry->last = event;
+        if (isOpen())
+            emitEvent(event);
+        return;
+    }
+
+    const bool wasOpen = isOpen();
+    if (event.phase == EventPhase::End)
+        m_control.remove(key);
+    else
+        m_control.insert(key);
+    const bool open = isOpen();
+    if (open == wasOpen)
+        return;
+    // Closing ends what was passing; opening resumes what is still active, at its intensity.
+    for (const ActiveMessages::Entry &entry : m_inputs) {
+        SemanticEvent e = entry.last;
+        e.t = event.t;
+        e.phase = open ? EventPhase::Begin : EventPhase::End;
+        emitEvent(e);
+    }
+}
+
+void HysteresisNode::onEvent(int, const SemanticEvent &event)
+{
+    const int key = ActiveMessages::keyOf(event);
+    ActiveMessages::Entry *entry = m_active.find(key);
+    switch (event.phase) {
+    case EventPhase::Begin:
+        if (entry && entry->endPending) {
+            // The message came back within the hold: downstream never saw it end.
+            entry->endPending = false;
+            if (entry->last.intensity != event.intensity) {
+                entry->last = event;
+                entry->last.phase = EventPhase::Update;
+                emitEvent(entry->last);
+            }
+            return;
+        }
+        if ((entry = m_active.insert(key))) {
+            entry->last = event;
+            emitEvent(event);
+        }
+        return;
+    case EventPhase::Update: {
+        if (!entry)
+            return;
+        const double change = std::abs(event.intensity - entry->last.intensity);
+        const bool extreme = event.intensity <= 0.0 || event.intensity >= 1.0;
+        if (m_band > 0 && change < m_band && !extreme)
+            return;
+        entry->last = event;
+        emitEvent(event);
+        return;
+    }
+    case EventPhase::End:
+        if (!entry)
+            return;
+        if (m_hold > 0) {
+            entry->endPending = true;
+            entry->pendingEnd = event.t + m_hold;
+            return;
+        }
+        SemanticEvent end = entry->last;
+        end.t = event.t;
+        end.phase = EventPhase::End;
+        m_active.remove(key);
+        emitEvent(end);
+        return;
+    }
+}
+
+double HysteresisNode::nextTimer() const
+{
+    double next = std::numeric_limits<double>::infinity();
+    for (const ActiveMessages::Entry &entry : m_active) {
+        if (entry.endPending)
+            next = std::min(next, entry.pendingEnd);
+    }
+    return next;
+}
+
+void HysteresisNode::fireTimers(double t)
+{
+    for (;;) {
+        ActiveMessages::Entry *due = nullptr;
+        for (ActiveMessages::Entry &entry : m_active) {
+            if (entry.endPending && entry.pendingEnd <= t
+                && (!due || entry.pendingEnd < due->pendingEnd))
+                due = &entry;
+        }
+        if (!due)
+            return;
+        SemanticEvent end = due->last;
+        end.t = due->pendingEnd;
+        end.phase = EventPhase::End;
+        m_active.remove(due->key);
+        emitEvent(end);
+    }
+}
+
+void CurveNode::onEvent(int, const SemanticEvent &event)
+{
+    const int key = ActiveMessages::keyOf(event);
+    SemanticEvent mapped = event;
+    mapped.intensity = std::clamp(m_curve.map(event.intensity), 0.0, 1.0);
+    if (event.phase == EventPhase::End) {
+        if (const ActiveMessages::Entry *entry = m_active.find(key))
+            mapped.intensity = entry->last.intensity;
+        m_active.remove(key);
+        emitEvent(mapped);
+        return;
+    }
+    ActiveMessages::Entry *entry = m_active.insert(key);
+    if (!entry)
+        return;
+    if (event.phase == EventPhase::Update && entry->last.intensity == mapped.intensity)
+        return;
+    entry->last = mapped;
+    emitEvent(mapped);
+}
+
+void PatternNode::onEvent(int, const SemanticEvent &event)
+{
+    const int key = ActiveMessages::keyOf(event);
+    const bool wasActive = !m_active.isEmpty();
+    if (event.phase == EventPhase::End) {
+        m_active.remove(key);
+    } else if (ActiveMessages::Entry *entry = m_active.insert(key)) {
+        entry->last = event;
+    }
+
+    if (m_active.isEmpty()) {
+        if (wasActive) {
+            for (const auto &input : voices)
+                input->voice.end(event.t);
+        }
+        return;
+    }
+    bool exception = false;
+    for (const ActiveMessages::Entry &entry : m_active)
+        exception = exception || entry.last.category == Category::Exception;
+    for (const auto &input : voices)
+        input->currentPriority = exception ? PlayerInput::Exception : PlayerInput::Confirmation;
+    applyIntensity(event.t);
+    if (!wasActive) {
+        for (const auto &input : voices)
+            input->voice.begin(event.t);
+    }
+}
+
+void PatternNode::applyIntensity(double t)
+{
+    double intensity = 0.0;
+    for (const ActiveMessages::Entry &entry : m_active)
+        intensity = std::max(intensity, entry.last.intensity);
+    if (intensity == m_intensity)
+        return;
+    m_intensity = intensity;
+    for (const auto &input : voices)
+        input->voice.setParam(ParamTable::Intensity, intensity, t);
+}
+
+void PatternNode::onSignal(int port, double value, double t)
+{
+    const int param = signalParams[size_t(port)];
+    for (const auto &input : voices)
+        input->voice.setParam(param, value, t);
+}
+
+void PatternNode::start(double t)
+{
+    if (!m_continuous)
+        return;
+    for (const auto &input : voices) {
+        input->currentPriority = PlayerInput::Continuous;
+        input->voice.begin(t);
+    }
+}
+
+void ProportionalNode::onSignal(int, double value, double)
+{
+    m_value = std::clamp(value / m_ref, 0.0, 1.0);
+}
+
+void ProportionalNode::start(double)
+{
+    m_started = true;
+}
+
+} // namespace semhap

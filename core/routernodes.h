@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// The running forms of router nodes. Private to the core: Router builds them from a graph.
+
+#include "contactframe.h"
+#include "detector.h"
+#include "eventbuffer.h"
+#include "player.h"
+#include "signal.h"
+#include "voice.h"
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace semhap {
+
+class RuntimeNode;
+
+/** Where a node's output goes: a node and its input port index. */
+struct RouteTarget
+{
+    RuntimeNode *node;
+    int port;
+};
+
+/**
+ * The messages currently active at a node, keyed by their origin (detector node and
+ * message). Fixed capacity: a node listens to at most Capacity distinct messages, which the
+ * compiler checks, so nothing allocates while events flow.
+ */
+class ActiveMessages
+{
+public:
+    static constexpr int Capacity = 16;
+
+    struct Entry
+    {
+        int key = -1;
+        SemanticEvent last;         ///< the last event passed on for this message
+        double pendingEnd = 0.0;    ///< hysteresis: time the held-back end is due
+        bool endPending = false;
+    };
+
+    static int keyOf(const SemanticEvent &e) { return e.node * 8 + int(e.message); }
+
+    Entry *find(int key);
+    Entry *insert(int key);  ///< null when full
+    void remove(int key);
+    int size() const { return m_size; }
+    bool isEmpty() const { return m_size == 0; }
+    Entry *begin() { return m_entries.data(); }
+    Entry *end() { return m_entries.data() + m_size; }
+    const Entry *begin() const { return m_entries.data(); }
+    const Entry *end() const { return m_entries.data() + m_size; }
+
+private:
+    std::array<Entry, Capacity> m_entries{};
+    int m_size = 0;
+};
+
+/** A node of a compiled router. Events flow depth-first along the links, in link order. */
+class RuntimeNode
+{
+public:
+    virtual ~RuntimeNode() = default;
+
+    virtual void onEvent(int port, const SemanticEvent &event);
+    virtual void onSignal(int port, double value, double t);
+    /** Starts the node at the session's first frame. */
+    virtual void start(double t);
+    /** When the node next needs fireTimers (infinity: never). */
+    virtual double nextTimer() const;
+    virtual void fireTimers(double t);
+
+    std::vector<RouteTarget> eventTargets;
+    std::vector<RouteTarget> signalTargets;
+
+protected:
+    void emitEvent(const SemanticEvent &event) const;
+    void emitSignal(double value, double t) const;
+};
+
+/** Runs a detector on its gripper's frames and sends its events on. */
+class DetectorNode : public RuntimeNode
+{
+public:
+    explicit DetectorNode(std::unique_ptr<Detector> detector) : m_detector(std::move(detector)) {}
+    void process(const ContactFrame &frame, EventBuffer &events);
+    void endAll(double t, EventBuffer &events);
+    Detector &detector() { return *m_detector; }
+
+private:
+    void route(const EventBuffer &events, int from) const;
+    std::unique_ptr<Detector> m_detector;
+};
+
+/** A continuous quantity of one gripper's frames. */
+class SignalNode : public RuntimeNode
+{
+public:
+    enum class Quantity { F, N, FLeft, FRight, NLeft, NRight };
+    static bool quantityFromName(const QString &name, Quantity *quantity);
+    static QStringList quantityNames();
+
+    SignalNode(Gripper gripper, Quantity quantity) : m_gripper(gripper), m_quantity(quantity) {}
+    Gripper gripper() const { return m_gripper; }
+    void process(const ContactFrame &frame) const;
+
+private:
+    Gripper m_gripper;
+    Quantity m_quantity;
+};
+
+/** Passes the messages that match; a message's whole lifecycle matches or none of it. */
+class FilterNode : public RuntimeNode
+{
+public:
+    /** Bit sets over Message, Category and Gripper values; 0 means "any". */
+    FilterNode(unsigned messages, unsigned categories, unsigned grippers)
+        : m_messages(messages), m_categories(categories), m_grippers(grippers)
+    {
+    }
+    void onEvent(int port, const SemanticEvent &event) override;
+
+private:
+    unsigned m_messages;
+    unsigned m_categories;
+    unsigned m_grippers;
+};
+
+/** Passes input messages only while the control allows; closing ends them, opening resumes. */
+class GateNode : public RuntimeNode
+{
+public:
+    explicit GateNode(bool openWhenControlActive) : m_openOnControl(openWhenControlActive) {}
+    void onEvent(int port, const SemanticEvent &event) override;
+
+private:
+    bool isOpen() const { return m_control.isEmpty() == !m_openOnControl; }
+    bool m_openOnControl;
+    ActiveMessages m_inputs;
+    ActiveMessages m_control;
+};
+
+/** Delays ends by `hold` (a begin within it continues the message) and drops small updates. */
+class HysteresisNode : public RuntimeNode
+{
+public:
+    HysteresisNode(double hold, double band) : m_hold(hold), m_band(band) {}
+    void onEvent(int port, const SemanticEvent &event) override;
+    double nextTimer() const override;
+    void fireTimers(double t) override;
+
+private:
+    double m_hold;
+    double m_band;
+    ActiveMessages m_active;
+};
+
+/** Maps intensity through a curve, clipped to [0, 1]; updates that map equal are dropped. */
+class CurveNode : public RuntimeNode
+{
+public:
+    explicit CurveNode(Curve curve) : m_curve(std::move(curve)) {}
+    void onEvent(int port, const SemanticEvent &event) override;
+
+private:
+    Curve m_curve;
+    ActiveMessages m_active;
+};
+
+/** A voice feeding one device, with the priority of the messages that drive it. */
+class VoiceInput : public PlayerInput
+{
+public:
+    explicit VoiceInput(PatternPtr pattern) : voice(std::move(pattern)) {}
+    void advance(double t) override { voice.advance(t); }
+    bool isSounding() const override { return !voice.isIdle(); }
+    Priority priority() const override { return currentPriority; }
+    double value(int slot) const override { return voice.value(slot); }
+
+    Voice voice;
+    Priority currentPriority = Confirmation;
+};
+
+/**
+ * Plays a pattern on each linked device while any of its messages is active, at the highest
+ * intensity among them. A pattern node with no event input plays from the start
+ * (continuous patterns such as air.proportional); its signal inputs set parameters live.
+ */
+class PatternNode : public RuntimeNode
+{
+public:
+    PatternNode(PatternPtr pattern, bool continuous)
+        : m_pattern(std::move(pattern)), m_continuous(continuous)
+    {
+    }
+    void onEvent(int port, const SemanticEvent &event) override;
+    void onSignal(int port, double value, double t) override;
+    void start(double t) override;
+
+    /** Port index -> pattern parameter index, for the signal inputs. */
+    std::vector<int> signalParams;
+    std::vector<std::unique_ptr<VoiceInput>> voices;
+    const Pattern &pattern() const { return *m_pattern; }
+
+private:
+    void applyIntensity(double t);
+
+    PatternPtr m_pattern;
+    bool m_continuous;
+    ActiveMessages m_active;
+    double m_intensity = -1.0;
+};
+
+/** clip(signal / ref, 0, 1) on the linked devices' channels. */
+class ProportionalNode : public RuntimeNode
+{
+public:
+    explicit ProportionalNode(double ref) : m_ref(ref) {}
+    void onSignal(int port, double value, double t) override;
+    void start(double t) override;
+
+    class Input : public PlayerInput
+    {
+    public:
+        explicit Input(const ProportionalNode &node) : m_node(node) {}
+        void advance(double) override {}
+        bool isSounding() const override { return m_node.m_started; }
+        Priority priority() const override { return Continuous; }
+        double value(int) const override { return m_node.m_value; }
+
+    private:
+        const ProportionalNode &m_node;
+    };
+    std::vector<std::unique_ptr<Input>> inputs;
+
+private:
+    double m_ref;
+    double m_value = 0.0;
+    bool m_started = false;
+};
+
+} // namespace semhap

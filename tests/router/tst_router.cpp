@@ -1,0 +1,397 @@
+// SPDX-License-Identifier: MIT
+#include "jsondocument.h"
+#include "router.h"
+#include "routergraph.h"
+#include "routernodetype.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace semhap;
+
+namespace {
+
+const QStringList PresetDevices{"left.air",   "left.fingertips",  "left.vibro", "overlay",
+                                "right.air",  "right.fingertips", "right.vibro"};
+
+/** A router document with a force detector, a filter, a pattern and a device, to vary. */
+QJsonObject baseRouter()
+{
+    return QJsonDocument::fromJson(R"({
+      "format": "semhap.router/1", "name": "test",
+      "nodes": [
+        {"id": "right.force", "type": "force",
+         "params": {"gripper": "right", "grasp": 20, "break": 80, "max": 120}},
+        {"id": "warn", "type": "filter", "params": {"category": "exception"}},
+        {"id": "geiger", "type": "pattern", "params": {"pattern": "vib.geiger"}},
+        {"id": "right.vibro", "type": "device", "params": {"model": "lra4"}}
+      ],
+      "links": [
+        {"from": "right.force", "to": "warn"},
+        {"from": "warn", "to": "geiger"},
+        {"from": "geiger", "to": "right.vibro"}
+      ]})")
+        .object();
+}
+
+/** Applies a JSON merge of `path` = `value` into the base router (path like "nodes/1"). */
+QJsonObject edited(const QString &path, const QJsonValue &value)
+{
+    QJsonObject root = baseRouter();
+    const QStringList parts = path.split('/');
+    if (parts.size() == 1) {
+        root.insert(parts[0], value);
+        return root;
+    }
+    QJsonArray array = root.value(parts[0]).toArray();
+    const int index = parts[1].toInt();
+    if (index >= array.size())
+        array.append(value);
+    else if (parts.size() == 2)
+        array[index] = value;
+    else {
+        QJsonObject item = array[index].toObject();
+        QJsonObject params = item.value("params").toObject();
+        params.insert(parts[3], value);
+        item.insert("params", params);
+        array[index] = item;
+    }
+    root.insert(parts[0], array);
+    return root;
+}
+
+QJsonObject object(const char *json)
+{
+    return QJsonDocument::fromJson(json).object();
+}
+
+QString compileError(const QJsonObject &json)
+{
+    RouterGraph graph;
+    LoadError error;
+    if (!RouterGraph::fromJson(json, "r.json", &graph, &error))
+        return error.toString();
+    if (Router::compile(graph, &error))
+        return QString();
+    return error.toString();
+}
+
+} // namespace
+
+class TestRouter : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void presets_data();
+    void presets();
+    void unknownPreset();
+    void graphRoundTrip();
+    void invalid_data();
+    void invalid();
+    void overrides_data();
+    void overrides();
+    void embeddedPatternAndModel();
+    void patternFileRelativeToRouter();
+    void nodeTypesTable();
+};
+
+void TestRouter::presets_data()
+{
+    QTest::addColumn<QString>("name");
+    for (const char *name : {"none", "visual", "sensory", "C1", "C2", "C3", "C4"})
+        QTest::newRow(name) << QString::fromLatin1(name);
+}
+
+void TestRouter::presets()
+{
+    QFETCH(QString, name);
+    QVERIFY(RouterPresets::names().contains(name));
+    LoadError error;
+    const std::unique_ptr<Router> router = loadRouter(name, {}, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    QStringList devices;
+    for (int d = 0; d < router->player().deviceCount(); ++d)
+        devices.append(router->player().deviceName(d));
+    QCOMPARE(devices, PresetDevices);
+    QVERIFY(router->nodeIds().contains("right.force"));
+    QVERIFY(router->nodeIds().contains("left.slip"));
+    QCOMPARE(router->graph().name, name);
+}
+
+void TestRouter::unknownPreset()
+{
+    LoadError error;
+    QVERIFY(!loadRouter("C5", {}, &error));
+    QCOMPARE(error.toString(),
+             QString("C5: no such router preset (presets: C1, C2, C3, C4, none, sensory, visual)"));
+}
+
+void TestRouter::graphRoundTrip()
+{
+    for (const QString &name : RouterPresets::names()) {
+        RouterGraph graph;
+        LoadError error;
+        QVERIFY(RouterPresets::preset(name, &graph, &error));
+        RouterGraph again;
+        QVERIFY(RouterGraph::fromJson(graph.toJson(), name, &again, &error));
+        QCOMPARE(again.toJson(), graph.toJson());
+    }
+}
+
+void TestRouter::invalid_data()
+{
+    QTest::addColumn<QJsonObject>("json");
+    QTest::addColumn<QString>("error");
+
+    QTest::newRow("wrong format")
+        << edited("format", "semhap.pattern/1")
+        << "r.json: /format: expected \"semhap.router/1\", found \"semhap.pattern/1\"";
+    QTest::newRow("nodes missing") << object(R"({"format": "semhap.router/1"})")
+                                   << "r.json: /nodes: missing (an array)";
+    QTest::newRow("node not object") << edited("nodes/1", 5)
+                                     << "r.json: /nodes/1: must be an object, found a number";
+    QTest::newRow("duplicate id")
+        << edited("nodes/1", object(R"({"id": "right.force", "type": "filter"})"))
+        << "r.json: /nodes/1/id: duplicate node id 'right.force'";
+    QTest::newRow("colon in id") << edited("nodes/1", object(R"({"id": "a:b", "type": "filter"})"))
+                                 << "r.json: /nodes/1/id: 'a:b' is not a valid id (non-empty, no "
+                                    "':' or spaces)";
+    QTest::newRow("stray node key")
+        << edited("nodes/1", object(R"({"id": "warn", "type": "filter", "grasp": 3})"))
+        << "r.json: /nodes/1/grasp: unknown key; node parameters go in \"params\"";
+    QTest::newRow("unknown type")
+        << edited("nodes/1", object(R"({"id": "warn", "type": "fliter"})"))
+        << "r.json: /nodes/1/type: node 'warn': unknown node type 'fliter' (known: force, slip, "
+           "signal, filter, gate, hysteresis, curve, pattern, proportional, device)";
+    QTest::newRow("detector without gripper")
+        << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
+        << "r.json: /nodes/0: node 'right.force' (force): needs a gripper (\"left\" or "
+           "\"right\")";
+    QTest::newRow("bad gripper") << edited("nodes/0/params/gripper", "middle")
+                                 << "r.json: /nodes/0/params/gripper: node 'right.force' (force): "
+                                    "must be \"left\" or \"right\"";
+    QTest::newRow("break below grasp") << edited("nodes/0/params/break", 10)
+                                       << "r.json: /nodes/0/params/break: node 'right.force' "
+                                          "(force): break must be above grasp (20)";
+    QTest::newRow("detector param type") << edited("nodes/0/params/max", "lots")
+                                         << "r.json: /nodes/0/params/max: node 'right.force' "
+                                            "(force): must be a number, got a string";
+    QTest::newRow("unknown detector param") << edited("nodes/0/params/loss", 3)
+                                            << "r.json: /nodes/0/params/loss: node 'right.force' "
+                                               "(force): unknown parameter";
+    QTest::newRow("filter value") << edited("nodes/1/params/category", "warning")
+                                  << "r.json: /nodes/1/params/category: node 'warn' (filter): "
+                                     "must be one of confirmation, exception, or a list of them";
+    QTest::newRow("unknown filter param") << edited("nodes/1/params/phase", "begin")
+                                          << "r.json: /nodes/1/params/phase: node 'warn' "
+                                             "(filter): unknown parameter 'phase' (known: "
+                                             "message, category, gripper)";
+    QTest::newRow("unknown pattern")
+        << edited("nodes/2/params/pattern", "vib.gieger")
+        << "r.json: /nodes/2/params/pattern: node 'geiger' (pattern): unknown pattern "
+           "'vib.gieger' (built-in: air.proportional, air.pulse5hz, air.squeeze, vib.geiger, "
+           "vib.rampup, visual.blink, visual.confirm)";
+    QTest::newRow("unknown pattern param")
+        << edited("nodes/2/params/speed", 3)
+        << "r.json: /nodes/2/params/speed: node 'geiger' (pattern): unknown parameter 'speed' "
+           "(known: pattern, channels, intensity)";
+    QTest::newRow("unknown device model")
+        << edited("nodes/3/params/model", "lra5")
+        << "r.json: /nodes/3/params/model: node 'right.vibro' (device): unknown device model "
+           "'lra5' (built-in: fingertips2, lra4, overlay, pneumatic6)";
+    QTest::newRow("bad policy") << edited("nodes/3/params/policy", "loudest")
+                                << "r.json: /nodes/3/params/policy: node 'right.vibro' (device): "
+                                   "must be \"priority\", \"max\" or \"sum\"";
+    QTest::newRow("dangling link")
+        << edited("links/3", object(R"({"from": "warn", "to": "nowhere"})"))
+        << "r.json: /links/3/to: dangling link: no node 'nowhere'";
+    QTest::newRow("link not object") << edited("links/0", "a->b")
+                                     << "r.json: /links/0: must be an object {\"from\", \"to\"}, "
+                                        "found a string";
+    QTest::newRow("unknown output port")
+        << edited("links/0", object(R"({"from": "right.force:out", "to": "warn"})"))
+        << "r.json: /links/0/from: node 'right.force' (force) has no output 'out'";
+    QTest::newRow("unknown input port")
+        << edited("links/1", object(R"({"from": "warn", "to": "geiger:rate"})"))
+        << "r.json: /links/1/to: node 'geiger' (pattern) has no input 'rate' (inputs: events)";
+    QTest::newRow("type mismatch")
+        << edited("links/3", object(R"({"from": "right.force", "to": "right.vibro"})"))
+        << "r.json: /links/3: port type mismatch: 'right.force:events' sends event, "
+           "'right.vibro:in' takes voice";
+    QTest::newRow("device has no outputs")
+        << edited("links/3", object(R"({"from": "right.vibro", "to": "warn"})"))
+        << "r.json: /links/3/from: node 'right.vibro' (device) has no outputs";
+    QTest::newRow("detector has no inputs")
+        << edited("links/3", object(R"({"from": "warn", "to": "right.force"})"))
+        << "r.json: /links/3/to: node 'right.force' (force) has no inputs";
+    QTest::newRow("cycle") << edited("links/3", object(R"({"from": "warn", "to": "warn"})"))
+                           << "r.json: /nodes/1: node 'warn' (filter): is part of a cycle";
+    QTest::newRow("model mismatch")
+        << edited("nodes/3/params/model", "pneumatic6")
+        << "r.json: /links/2: node 'geiger' (pattern) -> device 'right.vibro': pattern "
+           "'vib.geiger' is for model lra4, not pneumatic6";
+    QTest::newRow("bad channel remap")
+        << edited("nodes/2/params/channels", QJsonArray{"m1", "m9"})
+        << "r.json: /links/2: node 'geiger' (pattern) -> device 'right.vibro': pattern "
+           "'vib.geiger' drives channel 'm9', which model lra4 does not have (channels: m1, "
+           "m2, m3, m4)";
+    QTest::newRow("empty channel list")
+        << edited("nodes/2/params/channels", QJsonArray{})
+        << "r.json: /nodes/2/params/channels: node 'geiger' (pattern): must be a non-empty "
+           "array of channel names";
+    QTest::newRow("single input twice")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "F"}},
+             {"id": "N", "type": "signal", "params": {"gripper": "right", "quantity": "N"}},
+             {"id": "p", "type": "proportional", "params": {"ref": 100}}],
+             "links": [{"from": "F", "to": "p"}, {"from": "N", "to": "p"}]})")
+        << "r.json: /links/1/to: 'p:in' takes a single link and already has one";
+    QTest::newRow("bad quantity")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "G"}}]})")
+        << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be one of F, N, f.left, "
+           "f.right, n.left, n.right";
+    QTest::newRow("curve points")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
+        << "r.json: /nodes/0/params/points: node 'c' (curve): must be a list of [x, y] points "
+           "with x increasing";
+    QTest::newRow("hysteresis band")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "h", "type": "hysteresis", "params": {"band": 2}}]})")
+        << "r.json: /nodes/0/params/band: node 'h' (hysteresis): hold must be >= 0 s and band "
+           "within [0, 1]";
+    QTest::newRow("gate mode")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "g", "type": "gate", "params": {"mode": "ajar"}}]})")
+        << "r.json: /nodes/0/params/mode: node 'g' (gate): must be \"block\" or \"open\"";
+    QTest::newRow("proportional ref")
+        << object(R"({"format": "semhap.router/1", "nodes": [
+             {"id": "p", "type": "proportional", "params": {"ref": 0}}]})")
+        << "r.json: /nodes/0/params/ref: node 'p' (proportional): must be positive";
+    QJsonArray nine;
+    QJsonArray links;
+    for (int i = 0; i < 9; ++i) {
+        nine.append(QJsonObject{{"id", QString("d%1").arg(i)},
+                                {"type", "force"},
+                                {"params", QJsonObject{{"gripper", "right"}}}});
+        links.append(QJsonObject{{"from", QString("d%1").arg(i)}, {"to", "all"}});
+    }
+    nine.append(QJsonObject{{"id", "all"}, {"type", "filter"}});
+    QTest::newRow("fan-in")
+        << QJsonObject{{"format", "semhap.router/1"}, {"nodes", nine}, {"links", links}}
+        << "r.json: /nodes/9: node 'all' (filter): listens to 9 detectors; at most 8 may feed "
+           "one node";
+}
+
+void TestRouter::invalid()
+{
+    QFETCH(QJsonObject, json);
+    QFETCH(QString, error);
+    QCOMPARE(compileError(json), error);
+}
+
+void TestRouter::overrides_data()
+{
+    QTest::addColumn<QStringList>("overrides");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("valid") << QStringList{"right.force.break=90", "left.slip.loss=30"}
+                           << QString();
+    QTest::newRow("no equals") << QStringList{"right.force.break"}
+                               << "--set right.force.break: expected NODE.PARAM=VALUE";
+    QTest::newRow("no dot") << QStringList{"break=90"}
+                            << "--set break=90: expected NODE.PARAM=VALUE";
+    QTest::newRow("unknown node") << QStringList{"right.slip.loss=3"}
+                                  << "--set right.slip.loss=3: no node 'right.slip' in router "
+                                     "'C3'";
+    QTest::newRow("not a number") << QStringList{"right.force.break=abc"}
+                                  << "--set right.force.break=abc: node 'right.force' (force): "
+                                     "must be a number, got a string";
+    QTest::newRow("invalid value") << QStringList{"right.force.break=200"}
+                                   << "--set right.force.break=200: node 'right.force' (force): "
+                                      "break must be below max (120)";
+    QTest::newRow("unknown param") << QStringList{"right.force.brake=90"}
+                                   << "--set right.force.brake=90: node 'right.force' (force): "
+                                      "unknown parameter";
+    QTest::newRow("pattern swap") << QStringList{"right.geiger.pattern=vib.rampup"} << QString();
+    QTest::newRow("pattern model clash")
+        << QStringList{"right.geiger.pattern=air.squeeze"}
+        << "C3: /links/7: node 'right.geiger' (pattern) -> device 'right.vibro': pattern "
+           "'air.squeeze' is for model pneumatic6, not lra4";
+}
+
+void TestRouter::overrides()
+{
+    QFETCH(QStringList, overrides);
+    QFETCH(QString, error);
+    LoadError e;
+    const std::unique_ptr<Router> router = loadRouter("C3", overrides, &e);
+    QCOMPARE(router ? QString() : e.toString(), error);
+    if (router && overrides.first().startsWith("right.force.break")) {
+        const QJsonObject params = router->graph().nodes[0].params;
+        QCOMPARE(params.value("break").toDouble(), 90.0);
+    }
+}
+
+void TestRouter::embeddedPatternAndModel()
+{
+    QJsonObject json = object(R"({
+      "format": "semhap.router/1",
+      "patterns": [{"format": "semhap.pattern/1", "name": "buzz", "model": "band2",
+                    "tracks": [{"channels": ["*"], "sustain": {"type": "const", "value": 0.5}}]}],
+      "models": [{"format": "semhap.device/1", "name": "band2", "rate": 50,
+                  "channels": [{"name": "a"}, {"name": "b"}]}],
+      "nodes": [
+        {"id": "f", "type": "force", "params": {"gripper": "left"}},
+        {"id": "buzz", "type": "pattern", "params": {"pattern": "buzz"}},
+        {"id": "band", "type": "device", "params": {"model": "band2"}}],
+      "links": [{"from": "f", "to": "buzz"}, {"from": "buzz", "to": "band"}]})");
+    QCOMPARE(compileError(json), QString());
+
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterGraph::fromJson(json, "r.json", &graph, &error));
+    RouterGraph again;
+    QVERIFY(RouterGraph::fromJson(graph.toJson(), "r.json", &again, &error));
+    QCOMPARE(again.patterns.size(), size_t(1));
+    QCOMPARE(again.models.size(), size_t(1));
+
+    json.insert("patterns", QJsonArray{object(R"({"format": "semhap.pattern/1"})")});
+    QVERIFY(compileError(json).startsWith("r.json: /patterns/0/"));
+}
+
+void TestRouter::patternFileRelativeToRouter()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QFile pattern(dir.filePath("soft.json"));
+    QVERIFY(pattern.open(QIODevice::WriteOnly));
+    pattern.write(R"({"format": "semhap.pattern/1", "name": "soft", "model": "lra4",
+                      "tracks": [{"channels": ["m1"], "sustain": {"type": "const", "value": 0.3}}]})");
+    pattern.close();
+    QJsonObject json = edited("nodes/2/params/pattern", "soft.json");
+    QFile router(dir.filePath("r.json"));
+    QVERIFY(router.open(QIODevice::WriteOnly));
+    router.write(QJsonDocument(json).toJson());
+    router.close();
+
+    LoadError error;
+    QVERIFY2(loadRouter(dir.filePath("r.json"), {}, &error), qPrintable(error.toString()));
+    QVERIFY(!loadRouter(dir.filePath("missing.json"), {}, &error));
+    QVERIFY(error.toString().contains("missing.json: cannot read"));
+}
+
+void TestRouter::nodeTypesTable()
+{
+    for (const RouterNodeType &type : routerNodeTypes()) {
+        QVERIFY(!type.description.isEmpty());
+        QCOMPARE(routerNodeType(type.type), &type);
+    }
+    QVERIFY(!routerNodeType("nonsense"));
+}
+
+QTEST_GUILESS_MAIN(TestRouter)
+#include "tst_router.moc"
