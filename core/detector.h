@@ -24,7 +24,10 @@ public:
     virtual ~Detector() = default;
 
     virtual DetectorKind kind() const = 0;
-    /** Consumes one frame of this detector's gripper and appends this tick's events. */
+    /**
+     * Consumes one frame and appends this tick's events. Frames of the other gripper are
+     * ignored, so a pipeline may hand every frame to every detector.
+     */
     virtual void update(const ContactFrame &frame, EventBuffer &out) = 0;
     /** Ends every active message at time t (router swap, end of a run). */
     virtual void endAll(double t, EventBuffer &out) = 0;

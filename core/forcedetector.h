@@ -25,11 +25,13 @@ public:
 
         /** Reads the keys present in `json` over the defaults; false with `key`+`reason`. */
         bool read(const QJsonObject &json, QString *key, QString *reason);
+        /** Every parameter, under the JSON keys read() accepts. */
         QJsonObject toJson() const;
         /** grasp < break < max, hysteresis and minDuration >= 0, all finite. */
         bool validate(QString *key, QString *reason) const;
     };
 
+    /** `params` should have passed validate(); events carry `node` and `gripper`. */
     ForceDetector(int node, Gripper gripper, const Params &params);
 
     DetectorKind kind() const override { return DetectorKind::Force; }

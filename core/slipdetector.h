@@ -25,12 +25,15 @@ public:
         /** A message begins only after its condition has held this long (s). */
         double minDuration = 0.0;
 
+        /** Reads the keys present in `json` over the defaults; false with `key`+`reason`. */
         bool read(const QJsonObject &json, QString *key, QString *reason);
+        /** Every parameter, under the JSON keys read() accepts. */
         QJsonObject toJson() const;
         /** min < loss, grasp >= 0, hysteresis and minDuration >= 0, all finite. */
         bool validate(QString *key, QString *reason) const;
     };
 
+    /** `params` should have passed validate(); events carry `node` and `gripper`. */
     SlipDetector(int node, Gripper gripper, const Params &params);
 
     DetectorKind kind() const override { return DetectorKind::Slip; }
@@ -45,6 +48,9 @@ public:
     bool isStable() const { return m_stable; }
 
 private:
+    /** The spec's reset: not stable, every active message ends now (grasp, then slip). */
+    void reset(double t, EventBuffer &out);
+
     Params m_params;
     int m_actor = -1;
     bool m_stable = false;

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+#include "forcedetector.h"
+
+#include "detectorparams.h"
+
+#include <algorithm>
+
+namespace semhap {
+
+bool ForceDetector::Params::read(const QJsonObject &json, QString *key, QString *reason)
+{
+    return readDetectorParams(json,
+                              {{QLatin1String("grasp"), &grasp},
+                               {QLatin1String("break"), &brk},
+                               {QLatin1String("max"), &max},
+                               {QLatin1String("hysteresis"), &hysteresis},
+                               {QLatin1String("minDuration"), &minDuration}},
+                              key, reason);
+}
+
+QJsonObject ForceDetector::Params::toJson() const
+{
+    return QJsonObject{{QStringLiteral("grasp"), grasp},
+                       {QStringLiteral("break"), brk},
+                       {QStringLiteral("max"), max},
+                       {QStringLiteral("hysteresis"), hysteresis},
+                       {QStringLiteral("minDuration"), minDuration}};
+}
+
+bool ForceDetector::Params::validate(QString *key, QString *reason) const
+{
+    if (!checkFiniteParams({{QLatin1String("grasp"), grasp},
+                            {QLatin1String("break"), brk},
+                            {QLatin1String("max"), max},
+                            {QLatin1String("hysteresis"), hysteresis},
+                            {QLatin1String("minDuration"), minDuration}},
+                           key, reason))
+        return false;
+    if (!(grasp < brk)) {
+        return paramError(key, reason, QStringLiteral("break"),
+                          QStringLiteral("must be greater than grasp (%1), got %2")
+                              .arg(formatNumber(grasp), formatNumber(brk)));
+    }
+    if (!(brk < max)) {
+        return paramError(key, reason, QStringLiteral("max"),
+                          QStringLiteral("must be greater than break (%1), got %2")
+                              .arg(formatNumber(brk), formatNumber(max)));
+    }
+    if (hysteresis < 0.0) {
+        return paramError(
+            key, reason, QStringLiteral("hysteresis"),
+            QStringLiteral("must not be negative, got %1").arg(formatNumber(hysteresis)));
+    }
+    if (minDuration < 0.0) {
+        return paramError(
+            key, reason, QStringLiteral("minDuration"),
+            QStringLiteral("must not be negative, got %1").arg(formatNumber(minDuration)));
+    }
+    return true;
+}
+
+ForceDetector::ForceDetector(int node, Gripper gripper, const Params &params)
+    : Detector(node, gripper), m_params(params)
+{
+    m_grasp.configure(gripper, node, DetectorKind::Force, Message::Grasp, params.minDuration);
+    m_break.configure(gripper, node, DetectorKind::Force, Message::Break, params.minDuration);
+}
+
+void ForceDetector::update(const ContactFrame &frame, EventBuffer &out)
+{
+    if (frame.gripper != m_gripper)
+        return;
+    const double force = frame.totalForce();
+    // An active message holds down to threshold - hysteresis; with 0 this is the spec's F > T.
+    const double graspThreshold =
+        m_grasp.isActive() ? m_params.grasp - m_params.hysteresis : m_params.grasp;
+    const double breakThreshold =
+        m_break.isActive() ? m_params.brk - m_params.hysteresis : m_params.brk;
+    const double intensity =
+        std::clamp((force - m_params.brk) / (m_params.max - m_params.brk), 0.0, 1.0);
+    m_grasp.update(frame.t, force > graspThreshold, 1.0, out);
+    m_break.update(frame.t, force > breakThreshold, intensity, out);
+}
+
+void ForceDetector::endAll(double t, EventBuffer &out)
+{
+    m_grasp.forceEnd(t, out);
+    m_break.forceEnd(t, out);
+}
+
+void ForceDetector::clear()
+{
+    m_grasp.clear();
+    m_break.clear();
+}
+
+bool ForceDetector::isActive(Message message, double *intensity) const
+{
+    const MessageTracker *tracker = message == Message::Grasp   ? &m_grasp
+                                    : message == Message::Break ? &m_break
+                                                                : nullptr;
+    if (!tracker || !tracker->isActive())
+        return false;
+    if (intensity)
+        *intensity = tracker->intensity();
+    return true;
+}
+
+} // namespace semhap

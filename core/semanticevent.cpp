@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "semanticevent.h"
+
+namespace semhap {
+
+namespace {
+
+// One table per enum, in enum order, so names and parsing cannot drift apart.
+template<typename Enum, size_t Count>
+bool fromName(const QLatin1String (&names)[Count], const QString &name, Enum *value)
+{
+    for (size_t i = 0; i < Count; ++i) {
+        if (name == names[i]) {
+            *value = Enum(i);
+            return true;
+        }
+    }
+    return false;
+}
+
+const QLatin1String detectorKindNames[] = {QLatin1String("force"), QLatin1String("slip")};
+const QLatin1String messageNames[] = {QLatin1String("grasp"), QLatin1String("break"),
+                                      QLatin1String("slip")};
+const QLatin1String categoryNames[] = {QLatin1String("confirmation"), QLatin1String("exception")};
+const QLatin1String eventPhaseNames[] = {QLatin1String("begin"), QLatin1String("update"),
+                                         QLatin1String("end")};
+
+} // namespace
+
+QString detectorKindName(DetectorKind kind)
+{
+    return detectorKindNames[size_t(kind)];
+}
+
+QString messageName(Message message)
+{
+    return messageNames[size_t(message)];
+}
+
+QString categoryName(Category category)
+{
+    return categoryNames[size_t(category)];
+}
+
+QString eventPhaseName(EventPhase phase)
+{
+    return eventPhaseNames[size_t(phase)];
+}
+
+bool detectorKindFromName(const QString &name, DetectorKind *kind)
+{
+    return fromName(detectorKindNames, name, kind);
+}
+
+bool messageFromName(const QString &name, Message *message)
+{
+    return fromName(messageNames, name, message);
+}
+
+bool categoryFromName(const QString &name, Category *category)
+{
+    return fromName(categoryNames, name, category);
+}
+
+bool eventPhaseFromName(const QString &name, EventPhase *phase)
+{
+    return fromName(eventPhaseNames, name, phase);
+}
+
+Category categoryOf(Message message)
+{
+    return message == Message::Grasp ? Category::Confirmation : Category::Exception;
+}
+
+} // namespace semhap

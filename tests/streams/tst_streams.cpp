@@ -1,0 +1,449 @@
+// SPDX-License-Identifier: MIT
+#include "actortable.h"
+#include "contactframereader.h"
+#include "jsonlineswriter.h"
+
+#include <QBuffer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLocale>
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+
+using namespace semhap;
+
+namespace {
+
+const QString File = QStringLiteral("frames.jsonl");
+
+QString number(double value)
+{
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+}
+
+/** "f n actor [x y z]", the form the expected fingertips in the rows use. */
+QString describe(const Fingertip &tip, const ActorTable &actors)
+{
+    QString text = number(tip.f) + QLatin1Char(' ') + QString::number(tip.n) + QLatin1Char(' ') +
+                   (tip.actor < 0 ? QStringLiteral("-") : actors.name(tip.actor));
+    if (tip.hasFxyz) {
+        text += QStringLiteral(" [%1 %2 %3]")
+                    .arg(number(tip.fxyz[0]), number(tip.fxyz[1]), number(tip.fxyz[2]));
+    }
+    return text;
+}
+
+/** "t gripper | left | right". */
+QString describe(const ContactFrame &frame, const ActorTable &actors)
+{
+    return number(frame.t) + QLatin1Char(' ') + gripperName(frame.gripper) +
+           QStringLiteral(" | ") + describe(frame.left, actors) + QStringLiteral(" | ") +
+           describe(frame.right, actors);
+}
+
+/** Reads every frame of `input`, collecting described frames and rendered errors. */
+struct ReadResult
+{
+    QStringList frames;
+    QStringList errors;
+    int rejected = 0;
+};
+
+ReadResult readAll(const QByteArray &input)
+{
+    QByteArray data = input;
+    QBuffer buffer(&data);
+    buffer.open(QIODevice::ReadOnly);
+    ContactFrameReader reader(&buffer, File);
+    ReadResult result;
+    reader.setErrorHandler(
+        [&result](const LoadError &error) { result.errors.append(error.toString()); });
+    ContactFrame frame;
+    while (reader.next(&frame))
+        result.frames.append(describe(frame, reader.actors()));
+    result.rejected = reader.rejectedCount();
+    return result;
+}
+
+QByteArray writeEvent(const SemanticEvent &event)
+{
+    QByteArray data;
+    QBuffer buffer(&data);
+    buffer.open(QIODevice::WriteOnly);
+    JsonLinesWriter writer(&buffer);
+    writer.setNodeNames({QStringLiteral("left.slip"), QStringLiteral("right.force")});
+    writer.write(event);
+    return data;
+}
+
+} // namespace
+
+class TestStreams : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void validFrames_data();
+    void validFrames();
+    void malformed_data();
+    void malformed();
+    void timePerGripper();
+    void blankLinesAndLineNumbers();
+    void longLine();
+    void goldenFile();
+    void eventText();
+    void deviceFrameText();
+    void numbers_data();
+    void numbers();
+    void escapes();
+    void contactFrameRoundTrip();
+};
+
+void TestStreams::validFrames_data()
+{
+    QTest::addColumn<QByteArray>("line");
+    QTest::addColumn<QString>("frame");
+
+    QTest::newRow("all fields")
+        << QByteArray(
+               R"({"t": 1.250, "gripper": "right",)"
+               R"( "left": {"f": 31.5, "n": 9, "actor": "cube_3", "fxyz": [0.1, 31.4, -2]},)"
+               R"( "right": {"f": 30.2, "n": 8, "actor": "cube_3"}})")
+        << QStringLiteral("1.25 right | 31.5 9 cube_3 [0.1 31.4 -2] | 30.2 8 cube_3");
+    QTest::newRow("missing fingertip")
+        << QByteArray(R"({"t": 0, "gripper": "left", "right": {"f": 2, "n": 1, "actor": "a"}})")
+        << QStringLiteral("0 left | 0 0 - | 2 1 a");
+    QTest::newRow("null fingertip")
+        << QByteArray(R"({"t": 0, "gripper": "left", "left": null, "right": null})")
+        << QStringLiteral("0 left | 0 0 - | 0 0 -");
+    QTest::newRow("null actor, null fxyz")
+        << QByteArray(R"({"t": 2, "gripper": "right",)"
+                      R"( "left": {"f": 0, "n": 0, "actor": null, "fxyz": null}})")
+        << QStringLiteral("2 right | 0 0 - | 0 0 -");
+    QTest::newRow("9.0 as n")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 9.0, "actor": "b"}})")
+        << QStringLiteral("1 right | 1 9 b | 0 0 -");
+    QTest::newRow("unknown keys are extensions")
+        << QByteArray(R"({"t": 1, "gripper": "right", "source": "sim",)"
+                      R"( "left": {"f": 1, "n": 1, "actor": "b", "torque": 3}})")
+        << QStringLiteral("1 right | 1 1 b | 0 0 -");
+    QTest::newRow("CRLF line end") << QByteArray("{\"t\": 3, \"gripper\": \"left\"}\r")
+                                   << QStringLiteral("3 left | 0 0 - | 0 0 -");
+    QTest::newRow("byte order mark") << QByteArray("\xEF\xBB\xBF{\"t\": 3, \"gripper\": \"left\"}")
+                                     << QStringLiteral("3 left | 0 0 - | 0 0 -");
+}
+
+void TestStreams::validFrames()
+{
+    QFETCH(QByteArray, line);
+    QFETCH(QString, frame);
+
+    const ReadResult result = readAll(line + '\n');
+    QCOMPARE(result.errors, QStringList());
+    QCOMPARE(result.frames, QStringList{frame});
+    QCOMPARE(result.rejected, 0);
+}
+
+void TestStreams::malformed_data()
+{
+    QTest::addColumn<QByteArray>("line");
+    // A trailing "*" matches any rest: the parser's own wording and offsets are Qt's.
+    QTest::addColumn<QString>("reason");
+
+    QTest::newRow("truncated JSON") << QByteArray(R"({"t": 1, "gripper": "right")")
+                                    << QStringLiteral("invalid JSON at column *");
+    QTest::newRow("not JSON") << QByteArray("hello") << QStringLiteral("invalid JSON at column *");
+    QTest::newRow("array") << QByteArray("[1, 2]")
+                           << QStringLiteral(
+                                  "a contact frame must be a JSON object, got an array");
+    QTest::newRow("missing t") << QByteArray(R"({"gripper": "right"})")
+                               << QStringLiteral(R"("t" is missing)");
+    QTest::newRow("t as string") << QByteArray(R"({"t": "1", "gripper": "right"})")
+                                 << QStringLiteral(R"("t" must be a finite number, got "1")");
+    QTest::newRow("missing gripper")
+        << QByteArray(R"({"t": 1})") << QStringLiteral(R"("gripper" is missing)");
+    QTest::newRow("unknown gripper")
+        << QByteArray(R"({"t": 1, "gripper": "middle"})")
+        << QStringLiteral(R"("gripper" must be "left" or "right", got "middle")");
+    QTest::newRow("gripper not a string")
+        << QByteArray(R"({"t": 1, "gripper": 0})")
+        << QStringLiteral(R"("gripper" must be "left" or "right", got 0)");
+    QTest::newRow("fingertip not an object")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": 3})")
+        << QStringLiteral(R"("left" must be an object or null, got 3)");
+    QTest::newRow("missing f")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"n": 1, "actor": null}})")
+        << QStringLiteral(R"("left.f" is missing)");
+    QTest::newRow("negative f")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": -1, "n": 1, "actor": null}})")
+        << QStringLiteral(R"("left.f" must be a finite non-negative number, got -1)");
+    QTest::newRow("NaN as string")
+        << QByteArray(
+               R"({"t": 1, "gripper": "right", "left": {"f": "NaN", "n": 1, "actor": null}})")
+        << QStringLiteral(R"("left.f" must be a finite non-negative number, got "NaN")");
+    QTest::newRow("Infinity as string")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 1, "actor": null,)"
+                      R"( "fxyz": [0, "Infinity", 0]}})")
+        << QStringLiteral(R"("right.fxyz" must be an array of 3 finite numbers, got an array)");
+    QTest::newRow("bare NaN") << QByteArray(R"({"t": NaN, "gripper": "right"})")
+                              << QStringLiteral("invalid JSON at column *");
+    QTest::newRow("n 9.5")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 9.5, "actor": "a"}})")
+        << QStringLiteral(R"("right.n" must be a non-negative integer, got 9.5)");
+    QTest::newRow("negative n")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": -2, "actor": "a"}})")
+        << QStringLiteral(R"("right.n" must be a non-negative integer, got -2)");
+    QTest::newRow("n as string")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": "3", "actor": "a"}})")
+        << QStringLiteral(R"("right.n" must be a non-negative integer, got "3")");
+    QTest::newRow("missing actor")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3}})")
+        << QStringLiteral(R"("right.actor" is missing)");
+    QTest::newRow("actor a number")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3, "actor": 7}})")
+        << QStringLiteral(R"("right.actor" must be a non-empty string or null, got 7)");
+    QTest::newRow("empty actor")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3, "actor": ""}})")
+        << QStringLiteral(R"("right.actor" must be a non-empty string or null, got "")");
+    QTest::newRow("fxyz of 2")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 3, "actor": "a",)"
+                      R"( "fxyz": [1, 2]}})")
+        << QStringLiteral(R"("left.fxyz" must be an array of 3 finite numbers, got an array)");
+    QTest::newRow("fxyz not an array")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 3, "actor": "a",)"
+                      R"( "fxyz": {}}})")
+        << QStringLiteral(R"("left.fxyz" must be an array of 3 finite numbers, got an object)");
+    QTest::newRow("t not increasing")
+        << QByteArray(R"({"t": 0, "gripper": "right"})")
+        << QStringLiteral(R"("t" must increase per gripper, got 0 after 0 for "right")");
+}
+
+void TestStreams::malformed()
+{
+    QFETCH(QByteArray, line);
+    QFETCH(QString, reason);
+
+    // A valid frame before and after: the bad line is line 2, and reading goes on.
+    const QByteArray input =
+        QByteArray(R"({"t": 0, "gripper": "right"})") + '\n' + line + '\n' +
+        QByteArray(R"({"t": 5, "gripper": "right", "left": {"f": 1, "n": 1, "actor": "x"}})") +
+        '\n';
+    const ReadResult result = readAll(input);
+    const QString expected = QStringLiteral("frames.jsonl:2: ") + reason;
+    QCOMPARE(result.errors.size(), 1);
+    if (expected.endsWith(QLatin1Char('*')))
+        QVERIFY2(result.errors[0].startsWith(expected.chopped(1)), qPrintable(result.errors[0]));
+    else
+        QCOMPARE(result.errors[0], expected);
+    QCOMPARE(result.frames, (QStringList{QStringLiteral("0 right | 0 0 - | 0 0 -"),
+                                         QStringLiteral("5 right | 1 1 x | 0 0 -")}));
+    QCOMPARE(result.rejected, 1);
+}
+
+void TestStreams::timePerGripper()
+{
+    const QByteArray input = "{\"t\": 1, \"gripper\": \"right\"}\n"
+                             "{\"t\": 0.5, \"gripper\": \"left\"}\n"
+                             "{\"t\": 0.5, \"gripper\": \"right\"}\n"
+                             "{\"t\": 1, \"gripper\": \"left\"}\n"
+                             "{\"t\": 1.5, \"gripper\": \"right\"}\n";
+    const ReadResult result = readAll(input);
+    QCOMPARE(
+        result.errors,
+        QStringList{QStringLiteral(
+            R"(frames.jsonl:3: "t" must increase per gripper, got 0.5 after 1 for "right")")});
+    QCOMPARE(result.frames.size(), 4);
+    QCOMPARE(result.rejected, 1);
+}
+
+void TestStreams::blankLinesAndLineNumbers()
+{
+    const QByteArray input = "\n   \n{\"t\": 1, \"gripper\": \"right\"}\n\t\r\n{bad\n\n"
+                             "{\"t\": 2, \"gripper\": \"right\"}";
+    const ReadResult result = readAll(input);
+    QCOMPARE(result.errors.size(), 1);
+    QVERIFY2(result.errors[0].startsWith(QStringLiteral("frames.jsonl:5: invalid JSON")),
+             qPrintable(result.errors[0]));
+    QCOMPARE(result.frames.size(), 2);
+    QCOMPARE(result.rejected, 1);
+}
+
+void TestStreams::longLine()
+{
+    const QByteArray padding(int(ContactFrameReader::MaxLineLength), ' ');
+    // Exactly the limit is still read; one byte more is rejected without parsing.
+    const QByteArray atLimit =
+        QByteArray(R"({"t": 1, "gripper": "right"})") + padding.left(padding.size() - 28);
+    QCOMPARE(atLimit.size(), ContactFrameReader::MaxLineLength);
+    const QByteArray input = atLimit + '\n' + atLimit + " \n" +
+                             QByteArray(R"({"t": 2, "gripper": "right"})") + '\n' + padding +
+                             padding + "x";
+    const ReadResult result = readAll(input);
+    QCOMPARE(result.errors, (QStringList{QStringLiteral("frames.jsonl:2: line longer than "
+                                                        "1048576 bytes"),
+                                         QStringLiteral("frames.jsonl:4: line longer than "
+                                                        "1048576 bytes")}));
+    QCOMPARE(result.frames.size(), 2);
+    QCOMPARE(result.rejected, 2);
+}
+
+void TestStreams::goldenFile()
+{
+    QFile file(QStringLiteral(SEMHAP_TEST_DATA "/mixed.jsonl"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QFile expected(QStringLiteral(SEMHAP_TEST_DATA "/mixed.errors"));
+    QVERIFY(expected.open(QIODevice::ReadOnly | QIODevice::Text));
+    ContactFrameReader reader(&file, QStringLiteral("mixed.jsonl"));
+    QStringList errors;
+    reader.setErrorHandler([&errors](const LoadError &e) { errors.append(e.toString()); });
+    ContactFrame frame;
+    int frames = 0;
+    while (reader.next(&frame))
+        ++frames;
+    QCOMPARE(errors.join(QLatin1Char('\n')), QString::fromUtf8(expected.readAll()).trimmed());
+    QCOMPARE(frames, 4);
+    QCOMPARE(reader.frameCount(), 4);
+    QCOMPARE(reader.rejectedCount(), int(errors.size()));
+    QCOMPARE(reader.actors().size(), 2);
+    QCOMPARE(reader.lastError().toString(), errors.last());
+}
+
+void TestStreams::eventText()
+{
+    SemanticEvent event;
+    event.t = 1.25;
+    event.gripper = Gripper::Right;
+    event.node = 1;
+    event.detector = DetectorKind::Force;
+    event.message = Message::Break;
+    event.category = Category::Exception;
+    event.phase = EventPhase::Update;
+    event.intensity = 0.42;
+    QCOMPARE(writeEvent(event),
+             QByteArray(R"({"t":1.25,"gripper":"right","node":"right.force","detector":"force",)"
+                        R"("message":"break","category":"exception","phase":"update",)"
+                        R"("intensity":0.42})"
+                        "\n"));
+    event.node = 5;
+    event.t = 2;
+    event.intensity = 1;
+    QVERIFY(writeEvent(event).startsWith(R"({"t":2,"gripper":"right","node":null,)"));
+}
+
+void TestStreams::deviceFrameText()
+{
+    QByteArray data;
+    QBuffer buffer(&data);
+    buffer.open(QIODevice::WriteOnly);
+    JsonLinesWriter writer(&buffer);
+    writer.setDeviceNames({QStringLiteral("left.vibro"), QStringLiteral("right.vibro")});
+    DeviceFrame frame;
+    frame.t = 1.255;
+    frame.device = 1;
+    frame.channelCount = 4;
+    frame.values = {0.0, 0.8, 0.8, 0.0};
+    QVERIFY(writer.write(frame));
+    frame.channelCount = 0;
+    QVERIFY(writer.write(frame));
+    QCOMPARE(data, QByteArray("{\"t\":1.255,\"device\":\"right.vibro\",\"values\":[0,0.8,0.8,0]}\n"
+                              "{\"t\":1.255,\"device\":\"right.vibro\",\"values\":[]}\n"));
+}
+
+void TestStreams::numbers_data()
+{
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QByteArray>("text");
+
+    QTest::newRow("0.1") << 0.1 << QByteArray("0.1");
+    QTest::newRow("1e-300") << 1e-300 << QByteArray("1e-300");
+    QTest::newRow("123456.789") << 123456.789 << QByteArray("123456.789");
+    QTest::newRow("integer") << 42.0 << QByteArray("42");
+    QTest::newRow("zero") << 0.0 << QByteArray("0");
+    QTest::newRow("negative") << -2.5 << QByteArray("-2.5");
+    QTest::newRow("one third") << 1.0 / 3.0 << QByteArray("0.3333333333333333");
+    QTest::newRow("largest") << std::numeric_limits<double>::max()
+                             << QByteArray("1.7976931348623157e+308");
+    QTest::newRow("denormal") << std::numeric_limits<double>::denorm_min() << QByteArray("5e-324");
+}
+
+void TestStreams::numbers()
+{
+    QFETCH(double, value);
+    QFETCH(QByteArray, text);
+
+    QByteArray out;
+    JsonLinesWriter::appendNumber(out, value);
+    QCOMPARE(out, text);
+
+    // Written in every stream position, each parses back to exactly the same double.
+    DeviceFrame frame;
+    frame.t = value;
+    frame.device = 0;
+    frame.channelCount = 2;
+    frame.values = {value, value};
+    QByteArray data;
+    QBuffer buffer(&data);
+    buffer.open(QIODevice::WriteOnly);
+    JsonLinesWriter writer(&buffer);
+    writer.setDeviceNames({QStringLiteral("overlay")});
+    QVERIFY(writer.write(frame));
+    const QJsonObject json = QJsonDocument::fromJson(data).object();
+    QCOMPARE(json.value(QLatin1String("t")).toDouble(), value);
+    QCOMPARE(json.value(QLatin1String("values")).toArray().at(1).toDouble(), value);
+}
+
+void TestStreams::escapes()
+{
+    QByteArray out;
+    JsonLinesWriter::appendString(out, QStringLiteral("a\"b\\c\nd\x01 é"));
+    QCOMPARE(out, QByteArray("\"a\\\"b\\\\c\\u000ad\\u0001 \xC3\xA9\""));
+    QCOMPARE(QJsonDocument::fromJson("[" + out + "]").array().at(0).toString(),
+             QStringLiteral("a\"b\\c\nd\x01 é"));
+    out.clear();
+    JsonLinesWriter::appendNumber(out, std::nan(""));
+    QCOMPARE(out, QByteArray("null"));
+}
+
+void TestStreams::contactFrameRoundTrip()
+{
+    ActorTable actors;
+    ContactFrame first;
+    first.t = 0.1;
+    first.gripper = Gripper::Left;
+    first.left = {31.5, 9, actors.intern(QStringLiteral("cube_3")), true, {0.1, 31.4, -2.0}};
+    first.right = {1e-300, 8, actors.intern(QStringLiteral("cube_3")), false, {}};
+    ContactFrame second;
+    second.t = 123456.789;
+    second.gripper = Gripper::Right;
+    second.right = {0.25, 1, actors.intern(QStringLiteral("odd \"name\"")), false, {}};
+
+    QByteArray data;
+    QBuffer out(&data);
+    out.open(QIODevice::WriteOnly);
+    JsonLinesWriter writer(&out);
+    writer.setActorTable(&actors);
+    QVERIFY(writer.write(first));
+    QVERIFY(writer.write(second));
+    QVERIFY(data.startsWith(R"({"t":0.1,"gripper":"left","left":{"f":31.5,"n":9,)"
+                            R"("actor":"cube_3","fxyz":[0.1,31.4,-2]},"right":{"f":1e-300,)"));
+
+    QBuffer in(&data);
+    in.open(QIODevice::ReadOnly);
+    ContactFrameReader reader(&in, File);
+    ContactFrame back;
+    QVERIFY(reader.next(&back));
+    QCOMPARE(describe(back, reader.actors()), describe(first, actors));
+    QCOMPARE(back.right.f, 1e-300);
+    QVERIFY(reader.next(&back));
+    QCOMPARE(describe(back, reader.actors()), describe(second, actors));
+    QCOMPARE(back.t, 123456.789);
+    QVERIFY(!reader.next(&back));
+    QCOMPARE(reader.rejectedCount(), 0);
+}
+
+QTEST_GUILESS_MAIN(TestStreams)
+#include "tst_streams.moc"
