@@ -97,9 +97,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     if ((!eventsPath.isEmpty() && !events) || (!framesOutPath.isEmpty() && !deviceFrames))
         return ExitInvalidInput;
 
-    ContactFrameReader reader(frames, framesPath == QLatin1String("-")
-                                          ? QStringLiteral("<stdin>")
-                                          : framesPath);
+    ContactFrameReader reader(frames, framesPath);
     reader.setErrorHandler([this](const LoadError &e) { report(e.toString()); });
     Pipeline pipeline(std::move(router));
     StreamSink sink(pipeline.router(), events, deviceFrames);
@@ -110,7 +108,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
 
     if (reader.rejectedCount() > 0)
         report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount())
-                   .arg(reader.fileName()));
+                   .arg(framesPath));
     return ExitOk;
 }
 

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Installs what is missing, builds, and runs every test:
+#  1. the normal build (gcc): every Qt Test; timing-sensitive ones (label "timing") serially;
+#  2. the sanitizer build (clang, ASan + UBSan) of the core, patterns and devices tests, and
+#     each libFuzzer target for a capped number of runs on its seed corpus;
+#  3. the exported CMake package: an outside project's Qt Test against the installed core.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+jobs=$(nproc)
+fuzz_runs=${SEMHAP_FUZZ_RUNS:-20000}
+
+"$root/scripts/deps.sh"
+
+echo "== normal build"
+"$root/scripts/build.sh" "$root/build"
+(cd "$root/build" && ctest --output-on-failure -j "$jobs" -LE timing \
+    && ctest --output-on-failure -L timing)
+
+echo "== sanitizer build (ASan + UBSan) and fuzzers"
+CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-asan" \
+    -DSEMHAP_SANITIZE=ON -DSEMHAP_FUZZ=ON -DSEMHAP_HEADLESS_ONLY=ON -DSEMHAP_BUILD_BENCH=OFF
+(cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --output-on-failure -j "$jobs" -L sanitize)
+for fuzzer in "$root"/build-asan/tests/fuzz/fuzz_*; do
+    name=$(basename "$fuzzer")
+    corpus="$root/tests/fuzz/corpus/${name#fuzz_}"
+    work=$(mktemp -d)
+    cp -r "$corpus"/. "$work"/
+    echo "-- $name: $fuzz_runs runs"
+    "$fuzzer" -runs="$fuzz_runs" -max_total_time=60 -rss_limit_mb=2048 "$work" 2>&1 | tail -n 1
+    rm -rf "$work"
+done
+
+echo "== exported package"
+stage="$root/build/stage"
+cmake --install "$root/build" --prefix "$stage" >/dev/null
+cmake -S "$root/tests/package" -B "$root/build/package" -G Ninja \
+    -DCMAKE_PREFIX_PATH="$stage" >/dev/null
+cmake --build "$root/build/package" >/dev/null
+(cd "$root/build/package" && LD_LIBRARY_PATH="$stage/lib" ctest --output-on-failure)
