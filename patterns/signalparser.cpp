@@ -11,73 +11,9 @@
 
 namespace semhap {
 
-namespace {
-
-QString quoted(const QString &s)
-{
-    return QLatin1Char('\'') + s + QLatin1Char('\'');
-}
-
-} // namespace
-
-QString jsonTypeName(const QJsonValue &value)
-{
-    switch (value.type()) {
-    case QJsonValue::Null:
-        return QStringLiteral("null");
-    case QJsonValue::Bool:
-        return QStringLiteral("a boolean");
-    case QJsonValue::Double:
-        return QStringLiteral("a number");
-    case QJsonValue::String:
-        return QStringLiteral("a string");
-    case QJsonValue::Array:
-        return QStringLiteral("an array");
-    case QJsonValue::Object:
-        return QStringLiteral("an object");
-    case QJsonValue::Undefined:
-        break;
-    }
-    return QStringLiteral("nothing");
-}
-
 SignalParser::SignalParser(const ParamTable &params, const QString &file)
-    : m_params(params), m_file(file)
+    : JsonReader(file), m_params(params)
 {}
-
-bool SignalParser::fail(const QString &pointer, const QString &reason)
-{
-    if (!m_error.isSet())
-        m_error = LoadError::at(m_file, pointer, reason);
-    return false;
-}
-
-bool SignalParser::checkKeys(const QJsonObject &object, const QString &pointer,
-                             std::initializer_list<QLatin1String> allowed)
-{
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
-            return fail(pointer, QStringLiteral("unknown key ") + quoted(it.key()));
-    }
-    return true;
-}
-
-bool SignalParser::require(const QJsonObject &object, const QString &pointer, QLatin1String key)
-{
-    if (object.contains(key))
-        return true;
-    return fail(pointer, QStringLiteral("missing key ") + quoted(key));
-}
-
-bool SignalParser::finiteNumber(const QJsonValue &json, const QString &pointer, double *out)
-{
-    if (!json.isDouble())
-        return fail(pointer, QStringLiteral("expected a number, got ") + jsonTypeName(json));
-    *out = json.toDouble();
-    if (!std::isfinite(*out))
-        return fail(pointer, QStringLiteral("must be a finite number"));
-    return true;
-}
 
 bool SignalParser::pairs(const QJsonValue &json, const QString &pointer,
                          std::vector<std::pair<double, double>> *out)

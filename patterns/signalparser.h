@@ -2,7 +2,7 @@
 #pragma once
 
 #include "envelopes.h"
-#include "loaderror.h"
+#include "jsonreader.h"
 #include "signal.h"
 
 #include <QJsonObject>
@@ -10,7 +10,6 @@
 #include <QLatin1String>
 #include <QString>
 
-#include <initializer_list>
 #include <vector>
 
 namespace semhap {
@@ -20,7 +19,7 @@ namespace semhap {
  * table, and reports the first mistake as `FILE: /json/pointer: reason` so a user can find
  * it. Ranges are checked on constants; parameter-bound values are clamped when sampled.
  */
-class SignalParser
+class SignalParser : public JsonReader
 {
 public:
     SignalParser(const ParamTable &params, const QString &file);
@@ -29,8 +28,6 @@ public:
     SignalPtr parse(const QJsonValue &json, const QString &pointer);
     /** A Number (constant or `{"param": …}`); false with error() set. */
     bool parseNumber(const QJsonValue &json, const QString &pointer, Number *out);
-    /** The first error met, empty while all went well. */
-    const LoadError &error() const { return m_error; }
 
 private:
     enum class Range
@@ -40,16 +37,11 @@ private:
         Unit
     };
 
-    bool fail(const QString &pointer, const QString &reason);
-    bool checkKeys(const QJsonObject &object, const QString &pointer,
-                   std::initializer_list<QLatin1String> allowed);
-    bool require(const QJsonObject &object, const QString &pointer, QLatin1String key);
     bool number(const QJsonObject &object, const QString &pointer, QLatin1String key, Range range,
                 Number *out);
     bool optionalNumber(const QJsonObject &object, const QString &pointer, QLatin1String key,
                         Range range, double defaultValue, Number *out);
     bool checkRange(const Number &number, const QString &pointer, Range range);
-    bool finiteNumber(const QJsonValue &json, const QString &pointer, double *out);
     bool pairs(const QJsonValue &json, const QString &pointer,
                std::vector<std::pair<double, double>> *out);
     bool startValue(const QJsonObject &object, const QString &pointer, StartValue *out);
@@ -71,11 +63,6 @@ private:
     SignalPtr parseClip(const QJsonObject &object, const QString &pointer);
 
     const ParamTable &m_params;
-    QString m_file;
-    LoadError m_error;
 };
-
-/** "a number", "an object", …: how error messages name what they found instead. */
-QString jsonTypeName(const QJsonValue &value);
 
 } // namespace semhap
