@@ -18,14 +18,44 @@ std::atomic<int> g_allocations{0};
 
 } // namespace
 
-// Counts allocations while g_counting is set, to prove the real-time path allocates nothing.
-void *operator new(std::size_t size)
+namespace {
+
+void *countedAlloc(std::size_t size) noexcept
 {
     if (g_counting)
         ++g_allocations;
-    if (void *p = std::malloc(size == 0 ? 1 : size))
+    return std::malloc(size == 0 ? 1 : size);
+}
+
+void *countedAllocOrThrow(std::size_t size)
+{
+    if (void *p = countedAlloc(size))
         return p;
     throw std::bad_alloc();
+}
+
+} // namespace
+
+// Every unaligned form is replaced, so that no pointer from another allocator reaches free.
+// They count allocations while g_counting is set, to prove the real-time path allocates none.
+void *operator new(std::size_t size)
+{
+    return countedAllocOrThrow(size);
+}
+
+void *operator new[](std::size_t size)
+{
+    return countedAllocOrThrow(size);
+}
+
+void *operator new(std::size_t size, const std::nothrow_t &) noexcept
+{
+    return countedAlloc(size);
+}
+
+void *operator new[](std::size_t size, const std::nothrow_t &) noexcept
+{
+    return countedAlloc(size);
 }
 
 void operator delete(void *p) noexcept
@@ -33,7 +63,27 @@ void operator delete(void *p) noexcept
     std::free(p);
 }
 
+void operator delete[](void *p) noexcept
+{
+    std::free(p);
+}
+
 void operator delete(void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+void operator delete(void *p, const std::nothrow_t &) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void *p, const std::nothrow_t &) noexcept
 {
     std::free(p);
 }
