@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "combinators.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
 
 #include <algorithm>
@@ -35,12 +36,12 @@ void CompositeSignal::assignState(int &next)
         child->assignState(next);
 }
 
-QJsonArray CompositeSignal::childrenJson(const ParamTable &params) const
+QJsonValue CompositeSignal::toJson(const ParamTable &params) const
 {
     QJsonArray of;
     for (const SignalPtr &child : m_children)
         of.append(child->toJson(params));
-    return of;
+    return QJsonObject{{QStringLiteral("type"), type()}, {QStringLiteral("of"), of}};
 }
 
 QString SumSignal::type() const
@@ -64,12 +65,6 @@ double SumSignal::duration(const double *params) const
     return longest;
 }
 
-QJsonValue SumSignal::toJson(const ParamTable &params) const
-{
-    return QJsonObject{{QStringLiteral("type"), type()},
-                       {QStringLiteral("of"), childrenJson(params)}};
-}
-
 QString ProductSignal::type() const
 {
     return QStringLiteral("product");
@@ -89,12 +84,6 @@ double ProductSignal::duration(const double *params) const
     for (const SignalPtr &child : m_children)
         shortest = std::min(shortest, child->duration(params));
     return shortest;
-}
-
-QJsonValue ProductSignal::toJson(const ParamTable &params) const
-{
-    return QJsonObject{{QStringLiteral("type"), type()},
-                       {QStringLiteral("of"), childrenJson(params)}};
 }
 
 QString SequenceSignal::type() const
@@ -141,12 +130,6 @@ double SequenceSignal::duration(const double *params) const
     for (const SignalPtr &child : m_children)
         total += child->duration(params);
     return total;
-}
-
-QJsonValue SequenceSignal::toJson(const ParamTable &params) const
-{
-    return QJsonObject{{QStringLiteral("type"), type()},
-                       {QStringLiteral("of"), childrenJson(params)}};
 }
 
 ScaleSignal::ScaleSignal(SignalPtr in, Number gain, Number div, Number offset)

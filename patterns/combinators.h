@@ -3,8 +3,6 @@
 
 #include "signal.h"
 
-#include <QJsonArray>
-
 #include <vector>
 
 namespace semhap {
@@ -18,11 +16,10 @@ public:
     void assignState(int &next) override;
     /** The children, in the order the JSON lists them. */
     const std::vector<SignalPtr> &children() const { return m_children; }
+    /** `{"type": …, "of": [children]}`, the form of the list combinators. */
+    QJsonValue toJson(const ParamTable &params) const override;
 
 protected:
-    /** The children's JSON forms, for the `"of"` key. */
-    QJsonArray childrenJson(const ParamTable &params) const;
-
     std::vector<SignalPtr> m_children;
 };
 
@@ -35,7 +32,6 @@ public:
     double sample(const SignalContext &ctx) const override;
     /** As long as any child lasts (ended children hold their last value). */
     double duration(const double *params) const override;
-    QJsonValue toJson(const ParamTable &params) const override;
 };
 
 /** The children multiplied sample by sample: an envelope shaping an oscillator. */
@@ -47,7 +43,6 @@ public:
     double sample(const SignalContext &ctx) const override;
     /** As long as every child lasts. */
     double duration(const double *params) const override;
-    QJsonValue toJson(const ParamTable &params) const override;
 };
 
 /**
@@ -62,7 +57,6 @@ public:
     double sample(const SignalContext &ctx) const override;
     /** The sum of the children's durations. */
     double duration(const double *params) const override;
-    QJsonValue toJson(const ParamTable &params) const override;
 
 protected:
     int ownStateSize() const override { return 3; } // child index, its start, its from

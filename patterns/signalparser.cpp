@@ -181,7 +181,8 @@ bool SignalParser::children(const QJsonObject &object, const QString &pointer,
                             std::vector<SignalPtr> *out)
 {
     const QLatin1String key("of");
-    if (!require(object, pointer, key))
+    if (!checkKeys(object, pointer, {QLatin1String("type"), key}) ||
+        !require(object, pointer, key))
         return false;
     const QString at = jsonPointerChild(pointer, key);
     const QJsonValue of = object.value(key);
@@ -360,30 +361,24 @@ SignalPtr SignalParser::parsePulses(const QJsonObject &object, const QString &po
 SignalPtr SignalParser::parseSum(const QJsonObject &object, const QString &pointer)
 {
     std::vector<SignalPtr> of;
-    if (!checkKeys(object, pointer, {QLatin1String("type"), QLatin1String("of")}) ||
-        !children(object, pointer, &of)) {
+    if (!children(object, pointer, &of))
         return nullptr;
-    }
     return std::make_unique<SumSignal>(std::move(of));
 }
 
 SignalPtr SignalParser::parseProduct(const QJsonObject &object, const QString &pointer)
 {
     std::vector<SignalPtr> of;
-    if (!checkKeys(object, pointer, {QLatin1String("type"), QLatin1String("of")}) ||
-        !children(object, pointer, &of)) {
+    if (!children(object, pointer, &of))
         return nullptr;
-    }
     return std::make_unique<ProductSignal>(std::move(of));
 }
 
 SignalPtr SignalParser::parseSequence(const QJsonObject &object, const QString &pointer)
 {
     std::vector<SignalPtr> of;
-    if (!checkKeys(object, pointer, {QLatin1String("type"), QLatin1String("of")}) ||
-        !children(object, pointer, &of)) {
+    if (!children(object, pointer, &of))
         return nullptr;
-    }
     for (size_t i = 0; i + 1 < of.size(); ++i) {
         if (std::isinf(of[i]->duration(m_params.defaults().data()))) {
             fail(jsonPointerChild(jsonPointerChild(pointer, QStringLiteral("of")), int(i)),
