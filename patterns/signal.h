@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QJsonObject>
 #include <QJsonValue>
 #include <QString>
 #include <QStringList>
@@ -76,6 +77,8 @@ public:
     bool isConstant() const { return m_param < 0; }
     int param() const { return m_param; }
     const Curve &curve() const { return m_curve; }
+    /** The JSON form the signal parser reads back (a number or a `{"param": …}` object). */
+    QJsonValue toJson(const ParamTable &params) const;
 
 private:
     double m_constant = 0.0;
@@ -83,13 +86,18 @@ private:
     Curve m_curve;
 };
 
+/** Writes `number` under `key` unless it is the constant `defaultValue`, keeping files short. */
+void insertNumber(QJsonObject &object, const QString &key, const Number &number,
+                  const ParamTable &params, double defaultValue);
+
 /** Everything a signal needs to produce one sample. */
 struct SignalContext
 {
     double t = 0.0;                  ///< seconds since this signal started
     double dt = 0.0;                 ///< seconds since the previous sample, 0 on the first
     double from = 0.0;               ///< the track's value when this signal started
-    double peak = 0.0;               ///< the track's highest value since the last begin
+    double peak = 0.0;               ///< the track's highest value from the last begin
+                                     ///< to the start of this signal
     const double *params = nullptr;  ///< live parameter values, indexed as the ParamTable
     double *state = nullptr;         ///< the voice's state slots for the whole signal tree
 };
@@ -120,6 +128,12 @@ public:
     int stateOffset() const { return m_stateOffset; }
 
     static constexpr double Forever = std::numeric_limits<double>::infinity();
+    /**
+     * Seconds within which an edge (a segment's end, a square edge, a pulse's width) counts
+     * as reached, so that the rounding of sample times like k/1000 never adds or drops a
+     * sample at an edge that falls exactly on one.
+     */
+    static constexpr double TimeTolerance = 1e-9;
 
 protected:
     /** How many state slots this node needs for itself (children not counted). */

@@ -57,12 +57,16 @@ private:
         double segmentStart = 0.0;  ///< absolute time the current segment began
         double from = 0.0;          ///< value when the segment began
         double peak = 0.0;          ///< highest value since the last begin
+        double segmentPeak = 0.0;   ///< peak when the segment began (SignalContext::peak)
         double value = 0.0;         ///< value at the last sample
         int stateOffset = 0;        ///< first state slot of this track
     };
 
     void advanceTrack(size_t index, double t);
     void startSegment(TrackState &track, const PatternTrack &def, Phase phase, double t);
+    /** Samples `signal` for `track` at `local` seconds into its segment, `dt` after the last. */
+    double sampleSegment(TrackState &track, const Signal &signal, double local, double dt);
+    static const Signal *segmentSignal(const PatternTrack &def, Phase phase);
 
     PatternPtr m_pattern;
     std::vector<TrackState> m_tracks;

@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+#include "combinators.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <algorithm>
+
+namespace semhap {
+
+namespace {
+
+std::vector<SignalPtr> single(SignalPtr in)
+{
+    std::vector<SignalPtr> children;
+    children.push_back(std::move(in));
+    return children;
+}
+
+} // namespace
+
+CompositeSignal::CompositeSignal(std::vector<SignalPtr> children) : m_children(std::move(children))
+{}
+
+void CompositeSignal::reset(double *state) const
+{
+    Signal::reset(state);
+    for (const SignalPtr &child : m_children)
+        child->reset(state);
+}
+
+void CompositeSignal::assignState(int &next)
+{
+    Signal::assignState(next);
+    for (const SignalPtr &child : m_children)
+        child->assignState(next);
+}
+
+QJsonValue CompositeSignal::toJson(const ParamTable &params) const
+{
+    QJsonArray of;
+    for (const SignalPtr &child : m_children)
+        of.append(child->toJson(params));
+    return QJsonObject{{QStringLiteral("type"), type()}, {QStringLiteral("of"), of}};
+}
+
+QString SumSignal::type() const
+{
+    return QStringLiteral("sum");
+}
+
+double SumSignal::sample(const SignalContext &ctx) const
+{
+    double sum = 0.0;
+    for (const SignalPtr &child : m_children)
+        sum += child->sample(ctx);
+    return sum;
+}
+
+double SumSignal::duration(const double *params) const
+{
+    double longest = 0.0;
+    for (const SignalPtr &child : m_children)
+        longest = std::max(longest, child->duration(params));
+    return longest;
+}
+
+QString ProductSignal::type() const
+{
+    return QStringLiteral("product");
+}
+
+double ProductSignal::sample(const SignalContext &ctx) const
+{
+    double product = 1.0;
+    for (const SignalPtr &child : m_children)
+        product *= child->sample(ctx);
+    return product;
+}
+
+double ProductSignal::duration(const double *params) const
+{
+    double shortest = Forever;
+    for (const SignalPtr &child : m_children)
+        shortest = std::min(shortest, child->duration(params));
+    return shortest;
+}
+
+QString SequenceSignal::type() const
+{
+    return QStringLiteral("sequence");
+}
+
+double SequenceSignal::sample(const SignalContext &ctx) const
+{
+    double &index = ctx.state[m_stateOffset];
+    double &childStart = ctx.state[m_stateOffset + 1];
+    double &childFrom = ctx.state[m_stateOffset + 2];
+
+    size_t current = size_t(index);
+    SignalContext child = ctx;
+    child.from = current == 0 ? ctx.from : childFrom;
+    double previousT = ctx.t - ctx.dt;
+    bool handedOver = false;
+    while (current + 1 < m_children.size()) {
+        const double length = m_children[current]->duration(ctx.params);
+        const double end = childStart + length;
+        if (ctx.t < end - TimeTolerance)
+            break;
+        // Finish the child exactly at its end: its last value is where the next one starts.
+        child.t = length;
+        child.dt = std::max(end - std::max(previousT, childStart), 0.0);
+        child.from = m_children[current]->sample(child);
+        childFrom = child.from;
+        childStart = end;
+        previousT = end;
+        ++current;
+        index = double(current);
+        m_children[current]->reset(ctx.state);
+        handedOver = true;
+    }
+    child.t = ctx.t - childStart;
+    child.dt = handedOver ? std::max(ctx.t - childStart, 0.0) : ctx.dt;
+    return m_children[current]->sample(child);
+}
+
+double SequenceSignal::duration(const double *params) const
+{
+    double total = 0.0;
+    for (const SignalPtr &child : m_children)
+        total += child->duration(params);
+    return total;
+}
+
+ScaleSignal::ScaleSignal(SignalPtr in, Number gain, Number div, Number offset)
+    : CompositeSignal(single(std::move(in))), m_gain(std::move(gain)), m_div(std::move(div)),
+      m_offset(std::move(offset))
+{}
+
+QString ScaleSignal::type() const
+{
+    return QStringLiteral("scale");
+}
+
+double ScaleSignal::sample(const SignalContext &ctx) const
+{
+    const double in = m_children.front()->sample(ctx);
+    const double div = m_div.value(ctx.params);
+    const double quotient = div == 0.0 ? 0.0 : in * m_gain.value(ctx.params) / div;
+    return quotient + m_offset.value(ctx.params);
+}
+
+double ScaleSignal::duration(const double *params) const
+{
+    return m_children.front()->duration(params);
+}
+
+QJsonValue ScaleSignal::toJson(const ParamTable &params) const
+{
+    QJsonObject o{{QStringLiteral("type"), type()},
+                  {QStringLiteral("in"), m_children.front()->toJson(params)}};
+    insertNumber(o, QStringLiteral("gain"), m_gain, params, 1.0);
+    insertNumber(o, QStringLiteral("div"), m_div, params, 1.0);
+    insertNumber(o, QStringLiteral("offset"), m_offset, params, 0.0);
+    return o;
+}
+
+ClipSignal::ClipSignal(SignalPtr in, Number min, Number max)
+    : CompositeSignal(single(std::move(in))), m_min(std::move(min)), m_max(std::move(max))
+{}
+
+QString ClipSignal::type() const
+{
+    return QStringLiteral("clip");
+}
+
+double ClipSignal::sample(const SignalContext &ctx) const
+{
+    const double in = m_children.front()->sample(ctx);
+    return std::max(m_min.value(ctx.params), std::min(m_max.value(ctx.params), in));
+}
+
+double ClipSignal::duration(const double *params) const
+{
+    return m_children.front()->duration(params);
+}
+
+QJsonValue ClipSignal::toJson(const ParamTable &params) const
+{
+    QJsonObject o{{QStringLiteral("type"), type()},
+                  {QStringLiteral("in"), m_children.front()->toJson(params)}};
+    insertNumber(o, QStringLiteral("min"), m_min, params, 0.0);
+    insertNumber(o, QStringLiteral("max"), m_max, params, 1.0);
+    return o;
+}
+
+} // namespace semhap

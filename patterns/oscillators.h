@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "signal.h"
+
+namespace semhap {
+
+// The oscillators share one rule: the phase (in cycles) is an accumulator advanced by
+// freq·dt at each sample and kept in the voice's state, never computed as freq·t, so a
+// frequency bound to a live parameter changes the period from then on without a jump.
+
+/** offset + amp·sin(2π(phase + phase offset)): a smooth periodic wave. */
+class SineSignal : public Signal
+{
+public:
+    SineSignal(Number freq, Number amp, Number offset, Number phase);
+    QString type() const override;
+    double sample(const SignalContext &ctx) const override;
+    QJsonValue toJson(const ParamTable &params) const override;
+
+protected:
+    int ownStateSize() const override { return 1; }
+
+private:
+    Number m_freq;
+    Number m_amp;
+    Number m_offset;
+    Number m_phase;
+};
+
+/** `high` for the first `duty` of each cycle and `low` for the rest, starting high. */
+class SquareSignal : public Signal
+{
+public:
+    SquareSignal(Number freq, Number duty, Number high, Number low);
+    QString type() const override;
+    double sample(const SignalContext &ctx) const override;
+    QJsonValue toJson(const ParamTable &params) const override;
+
+protected:
+    int ownStateSize() const override { return 1; }
+
+private:
+    Number m_freq;
+    Number m_duty;
+    Number m_high;
+    Number m_low;
+};
+
+/**
+ * A pulse of `amp` lasting `width` seconds at the start of each cycle of `rate` Hz, the
+ * first at time 0: the width stays in seconds however the rate moves.
+ */
+class PulsesSignal : public Signal
+{
+public:
+    PulsesSignal(Number rate, Number width, Number amp);
+    QString type() const override;
+    double sample(const SignalContext &ctx) const override;
+    QJsonValue toJson(const ParamTable &params) const override;
+
+protected:
+    int ownStateSize() const override { return 2; } // phase, seconds since the cycle began
+
+private:
+    Number m_rate;
+    Number m_width;
+    Number m_amp;
+};
+
+} // namespace semhap

@@ -1,0 +1,524 @@
+// SPDX-License-Identifier: MIT
+// The signal algebra: samples of every node at chosen times, oscillator edges and phase
+// continuity, curves, JSON round trips and parse errors.
+#include "signal.h"
+#include "signalparser.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+#include <utility>
+#include <vector>
+
+using namespace semhap;
+
+using Samples = std::vector<std::pair<double, double>>;
+Q_DECLARE_METATYPE(Samples)
+
+namespace {
+
+QJsonValue json(const char *text)
+{
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray(text), &error);
+    if (error.error != QJsonParseError::NoError)
+        qFatal("bad JSON in test: %s", text);
+    return doc.object();
+}
+
+/** Plays one signal the way a voice does: own state, dt from the previous sample. */
+class Player
+{
+public:
+    explicit Player(const char *text, const QVariantMap &params = {})
+    {
+        for (auto it = params.begin(); it != params.end(); ++it)
+            m_table.declare(it.key(), it.value().toDouble());
+        SignalParser parser(m_table, QStringLiteral("test.json"));
+        m_signal = parser.parse(json(text), QString());
+        if (!m_signal)
+            qFatal("%s", qPrintable(parser.error().toString()));
+        int size = 0;
+        m_signal->assignState(size);
+        m_state.assign(size_t(size), 0.0);
+        m_signal->reset(m_state.data());
+        m_params = m_table.defaults();
+    }
+
+    double at(double t)
+    {
+        SignalContext ctx;
+        ctx.t = t;
+        ctx.dt = m_started ? t - m_lastT : 0.0;
+        ctx.from = from;
+        ctx.peak = peak;
+        ctx.params = m_params.data();
+        ctx.state = m_state.data();
+        m_started = true;
+        m_lastT = t;
+        return m_signal->sample(ctx);
+    }
+
+    void set(const QString &name, double value)
+    {
+        m_params[size_t(m_table.indexOf(name))] = value;
+    }
+    double duration() const { return m_signal->duration(m_params.data()); }
+
+    double from = 0.0;
+    double peak = 0.0;
+
+private:
+    ParamTable m_table;
+    SignalPtr m_signal;
+    std::vector<double> m_state;
+    std::vector<double> m_params;
+    double m_lastT = 0.0;
+    bool m_started = false;
+};
+
+bool near(double a, double b)
+{
+    return std::abs(a - b) < 1e-9;
+}
+
+} // namespace
+
+class TestSignal : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void samples_data();
+    void samples();
+    void durations_data();
+    void durations();
+    void curve_data();
+    void curve();
+    void squareEdges_data();
+    void squareEdges();
+    void pulseCount_data();
+    void pulseCount();
+    void pulsePhaseContinuity_data();
+    void pulsePhaseContinuity();
+    void roundTrip_data();
+    void roundTrip();
+    void errors_data();
+    void errors();
+};
+
+void TestSignal::samples_data()
+{
+    QTest::addColumn<QByteArray>("signal");
+    QTest::addColumn<QVariantMap>("params");
+    QTest::addColumn<double>("from");
+    QTest::addColumn<double>("peak");
+    QTest::addColumn<Samples>("samples");
+
+    const QVariantMap none;
+    QTest::newRow("const") << QByteArray(R"({"type":"const","value":0.7})") << none << 0.3 << 0.0
+                           << Samples{{0, 0.7}, {5, 0.7}};
+    QTest::newRow("param through gain")
+        << QByteArray(R"({"type":"param","name":"intensity","gain":2,"offset":1})") << none << 0.0
+        << 0.0 << Samples{{0, 3}, {1, 3}};
+    QTest::newRow("param through curve")
+        << QByteArray(R"({"type":"param","name":"f","curve":[[0,0],[10,1]]})")
+        << QVariantMap{{QStringLiteral("f"), 4.0}} << 0.0 << 0.0 << Samples{{0, 0.4}};
+    QTest::newRow("ramp from current")
+        << QByteArray(R"({"type":"ramp","to":1,"time":0.5})") << none << 0.4 << 0.0
+        << Samples{{0, 0.4}, {0.25, 0.7}, {0.5, 1}, {1, 1}};
+    QTest::newRow("ramp from peak")
+        << QByteArray(R"({"type":"ramp","to":0,"time":0.5,"from":"peak"})") << none << 0.2 << 0.8
+        << Samples{{0, 0.8}, {0.25, 0.4}, {0.5, 0}, {0.7, 0}};
+    QTest::newRow("ramp from a number")
+        << QByteArray(R"({"type":"ramp","to":1,"time":1,"from":0.5})") << none << 0.9 << 0.0
+        << Samples{{0, 0.5}, {0.5, 0.75}, {1, 1}};
+    QTest::newRow("ramp of no time") << QByteArray(R"({"type":"ramp","to":0.6,"time":0})") << none
+                                     << 0.1 << 0.0 << Samples{{0, 0.6}, {1, 0.6}};
+    QTest::newRow("keyframes from current")
+        << QByteArray(R"({"type":"keyframes","points":[[0.5,1],[1,0.5],[2,0.5]]})") << none << 0.2
+        << 0.0 << Samples{{0, 0.2}, {0.25, 0.6}, {0.5, 1}, {0.75, 0.75}, {1, 0.5}, {3, 0.5}};
+    QTest::newRow("keyframes with a knot at 0")
+        << QByteArray(R"({"type":"keyframes","points":[[0,0.3],[1,1]]})") << none << 0.9 << 0.0
+        << Samples{{0, 0.3}, {0.5, 0.65}, {1, 1}};
+    QTest::newRow("keyframes step")
+        << QByteArray(R"({"type":"keyframes","points":[[1,0],[1,1],[2,1]]})") << none << 0.0 << 0.0
+        << Samples{{0.5, 0}, {1, 1}, {1.5, 1}};
+    QTest::newRow("sine") << QByteArray(
+                                 R"({"type":"sine","freq":1,"amp":2,"offset":1,"phase":0.25})")
+                          << none << 0.0 << 0.0 << Samples{{0, 3}, {0.25, 1}, {0.5, -1}, {1, 3}};
+    QTest::newRow("square at duty 0.25")
+        << QByteArray(R"({"type":"square","freq":5,"duty":0.25,"high":0.8,"low":0.1})") << none
+        << 0.0 << 0.0 << Samples{{0, 0.8}, {0.049, 0.8}, {0.05, 0.1}, {0.199, 0.1}, {0.2, 0.8}};
+    QTest::newRow("pulses") << QByteArray(R"({"type":"pulses","rate":2,"width":0.1,"amp":0.5})")
+                            << none << 0.0 << 0.0 << Samples{{0, 0.5},   {0.099, 0.5}, {0.1, 0},
+                                                             {0.499, 0}, {0.5, 0.5},   {0.6, 0}};
+    QTest::newRow("sum") << QByteArray(R"({"type":"sum","of":[{"type":"const","value":0.25},)"
+                                       R"({"type":"ramp","to":1,"time":1}]})")
+                         << none << 0.0 << 0.0 << Samples{{0, 0.25}, {0.5, 0.75}, {2, 1.25}};
+    QTest::newRow("product") << QByteArray(R"({"type":"product","of":[
+            {"type":"ramp","to":1,"time":1,"from":0},{"type":"square","freq":1}]})")
+                             << none << 0.0 << 0.0
+                             << Samples{{0, 0}, {0.25, 0.25}, {0.5, 0}, {0.75, 0}, {1, 1}};
+    const QByteArray sequence(R"({"type":"sequence","of":[{"type":"ramp","to":1,"time":0.5},
+            {"type":"ramp","to":0.5,"time":1},{"type":"const","value":0.2}]})");
+    QTest::newRow("sequence hand-over")
+        << sequence << none << 0.0 << 0.0
+        << Samples{{0, 0}, {0.25, 0.5}, {0.5, 1}, {1, 0.75}, {1.4, 0.55}, {1.5, 0.2}};
+    QTest::newRow("sequence skipping a whole child")
+        << sequence << none << 0.0 << 0.0 << Samples{{0, 0}, {1, 0.75}, {3, 0.2}};
+    QTest::newRow("sequence hands its from to the first child")
+        << sequence << none << 0.6 << 0.0 << Samples{{0, 0.6}, {0.25, 0.8}};
+    QTest::newRow("scale by a parameter")
+        << QByteArray(
+               R"({"type":"scale","in":{"type":"param","name":"left"},"div":{"param":"ref"}})")
+        << QVariantMap{{QStringLiteral("left"), 60.0}, {QStringLiteral("ref"), 120.0}} << 0.0
+        << 0.0 << Samples{{0, 0.5}};
+    QTest::newRow("scale gain offset")
+        << QByteArray(
+               R"({"type":"scale","in":{"type":"const","value":3},"gain":2,"div":4,"offset":0.5})")
+        << none << 0.0 << 0.0 << Samples{{0, 2}};
+    QTest::newRow("scale by zero")
+        << QByteArray(R"({"type":"scale","in":{"type":"const","value":3},"div":0,"offset":0.5})")
+        << none << 0.0 << 0.0 << Samples{{0, 0.5}};
+    QTest::newRow("clip above") << QByteArray(
+                                       R"({"type":"clip","in":{"type":"const","value":1.7}})")
+                                << none << 0.0 << 0.0 << Samples{{0, 1}};
+    QTest::newRow("clip below") << QByteArray(
+                                       R"({"type":"clip","in":{"type":"const","value":-0.3}})")
+                                << none << 0.0 << 0.0 << Samples{{0, 0}};
+    QTest::newRow("clip inside own bounds")
+        << QByteArray(
+               R"({"type":"clip","in":{"type":"ramp","to":1,"time":1},"min":0.2,"max":0.8})")
+        << none << 0.0 << 0.0 << Samples{{0, 0.2}, {0.5, 0.5}, {1, 0.8}};
+}
+
+void TestSignal::samples()
+{
+    QFETCH(QByteArray, signal);
+    QFETCH(QVariantMap, params);
+    QFETCH(double, from);
+    QFETCH(double, peak);
+    QFETCH(Samples, samples);
+
+    Player player(signal.constData(), params);
+    player.from = from;
+    player.peak = peak;
+    for (const auto &[t, expected] : samples) {
+        const double value = player.at(t);
+        QVERIFY2(
+            near(value, expected),
+            qPrintable(QStringLiteral("at %1: %2, expected %3").arg(t).arg(value).arg(expected)));
+    }
+}
+
+void TestSignal::durations_data()
+{
+    QTest::addColumn<QByteArray>("signal");
+    QTest::addColumn<double>("duration");
+
+    const double endless = Signal::Forever;
+    QTest::newRow("const") << QByteArray(R"({"type":"const","value":1})") << endless;
+    QTest::newRow("ramp") << QByteArray(R"({"type":"ramp","to":1,"time":0.5})") << 0.5;
+    QTest::newRow("ramp bound to intensity")
+        << QByteArray(R"({"type":"ramp","to":1,"time":{"param":"intensity","gain":0.5}})") << 0.5;
+    QTest::newRow("keyframes") << QByteArray(R"({"type":"keyframes","points":[[0,1],[2,0]]})")
+                               << 2.0;
+    QTest::newRow("square") << QByteArray(R"({"type":"square","freq":5})") << endless;
+    QTest::newRow("sum lasts while any lasts") << QByteArray(R"({"type":"sum","of":[
+            {"type":"ramp","to":1,"time":0.5},{"type":"ramp","to":1,"time":2}]})")
+                                               << 2.0;
+    QTest::newRow("product lasts while all last") << QByteArray(R"({"type":"product","of":[
+            {"type":"ramp","to":1,"time":0.5},{"type":"const","value":1}]})")
+                                                  << 0.5;
+    QTest::newRow("sequence adds up") << QByteArray(R"({"type":"sequence","of":[
+            {"type":"ramp","to":1,"time":0.5},{"type":"ramp","to":1,"time":2}]})")
+                                      << 2.5;
+    QTest::newRow("scale")
+        << QByteArray(R"({"type":"scale","in":{"type":"ramp","to":1,"time":0.5},"gain":2})")
+        << 0.5;
+}
+
+void TestSignal::durations()
+{
+    QFETCH(QByteArray, signal);
+    QFETCH(double, duration);
+    QCOMPARE(Player(signal.constData()).duration(), duration);
+}
+
+void TestSignal::curve_data()
+{
+    QTest::addColumn<int>("kind"); // 0 identity, 1 linear 18x+2, 2 points
+    QTest::addColumn<double>("x");
+    QTest::addColumn<double>("y");
+
+    QTest::newRow("identity") << 0 << 0.3 << 0.3;
+    QTest::newRow("linear") << 1 << 0.5 << 11.0;
+    QTest::newRow("points below the first") << 2 << -1.0 << 2.0;
+    QTest::newRow("points at the first") << 2 << 0.0 << 2.0;
+    QTest::newRow("points inside") << 2 << 0.25 << 6.0;
+    QTest::newRow("points at a knot") << 2 << 0.5 << 10.0;
+    QTest::newRow("points inside the second") << 2 << 0.75 << 15.0;
+    QTest::newRow("points above the last") << 2 << 3.0 << 20.0;
+}
+
+void TestSignal::curve()
+{
+    QFETCH(int, kind);
+    QFETCH(double, x);
+    QFETCH(double, y);
+
+    const Curve curves[] = {Curve(), Curve::linear(18, 2),
+                            Curve::points({{0, 2}, {0.5, 10}, {1, 20}})};
+    QCOMPARE(curves[kind].map(x), y);
+}
+
+void TestSignal::squareEdges_data()
+{
+    QTest::addColumn<double>("duty");
+    QTest::addColumn<int>("highSamples"); // per 200-sample period at 1 kHz
+
+    QTest::newRow("duty 0.5") << 0.5 << 100;
+    QTest::newRow("duty 0.3") << 0.3 << 60;
+    QTest::newRow("duty 0") << 0.0 << 0;
+    QTest::newRow("duty 1") << 1.0 << 200;
+}
+
+void TestSignal::squareEdges()
+{
+    QFETCH(double, duty);
+    QFETCH(int, highSamples);
+
+    const QByteArray signal =
+        R"({"type":"square","freq":5,"duty":)" + QByteArray::number(duty) + "}";
+    Player player(signal.constData());
+    for (int k = 0; k < 3000; ++k) {
+        const double expected = k % 200 < highSamples ? 1.0 : 0.0;
+        QVERIFY2(player.at(k / 1000.0) == expected, qPrintable(QString::number(k)));
+    }
+}
+
+void TestSignal::pulseCount_data()
+{
+    QTest::addColumn<double>("intensity");
+    QTest::addColumn<int>("pulses");
+
+    QTest::newRow("intensity 0 (2 Hz)") << 0.0 << 6;
+    QTest::newRow("intensity 0.25 (6.5 Hz)") << 0.25 << 20;
+    QTest::newRow("intensity 0.5 (11 Hz)") << 0.5 << 33;
+    QTest::newRow("intensity 1 (20 Hz)") << 1.0 << 60;
+}
+
+void TestSignal::pulseCount()
+{
+    QFETCH(double, intensity);
+    QFETCH(int, pulses);
+
+    Player geiger(R"({"type":"pulses","amp":1,"width":0.025,"rate":{"param":"intensity",)"
+                  R"("gain":18,"offset":2}})");
+    geiger.set(QStringLiteral("intensity"), intensity);
+    std::vector<int> lengths;
+    double previous = 0.0;
+    for (int k = 0; k < 3000; ++k) {
+        const double value = geiger.at(k / 1000.0);
+        if (value == 1.0 && previous == 0.0)
+            lengths.push_back(0);
+        if (value == 1.0)
+            ++lengths.back();
+        previous = value;
+    }
+    QCOMPARE(int(lengths.size()), pulses);
+    for (int length : lengths)
+        QCOMPARE(length, 25);
+}
+
+void TestSignal::pulsePhaseContinuity_data()
+{
+    QTest::addColumn<double>("before");
+    QTest::addColumn<double>("after");
+    QTest::addColumn<int>("changeAt");      // ms
+    QTest::addColumn<QList<int>>("starts"); // ms of the pulse starts in the first second
+
+    // 2 Hz until 300 ms (0.6 cycles done), then 20 Hz: 0.4 cycles left = 20 ms.
+    QTest::newRow("speeding up between pulses")
+        << 0.0 << 1.0 << 300
+        << QList<int>{0, 320, 370, 420, 470, 520, 570, 620, 670, 720, 770, 820, 870, 920, 970};
+    // 20 Hz until 10 ms, inside the first pulse (0.2 cycles), then 2 Hz: 0.8 cycles = 400 ms.
+    QTest::newRow("slowing down inside a pulse") << 1.0 << 0.0 << 10 << QList<int>{0, 410, 910};
+}
+
+void TestSignal::pulsePhaseContinuity()
+{
+    QFETCH(double, before);
+    QFETCH(double, after);
+    QFETCH(int, changeAt);
+    QFETCH(QList<int>, starts);
+
+    Player geiger(
+        R"({"type":"pulses","width":0.025,"rate":{"param":"intensity","gain":18,"offset":2}})");
+    geiger.set(QStringLiteral("intensity"), before);
+    QList<int> found;
+    QList<int> lengths;
+    double previous = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const double value = geiger.at(k / 1000.0);
+        if (k == changeAt) // as a voice does: advance to the change, then change
+            geiger.set(QStringLiteral("intensity"), after);
+        if (value == 1.0 && previous == 0.0) {
+            found.append(k);
+            lengths.append(0);
+        }
+        if (value == 1.0)
+            ++lengths.back();
+        previous = value;
+    }
+    QCOMPARE(found, starts);
+    for (int length : lengths)
+        QCOMPARE(length, 25); // the width is in seconds, whatever the rate did
+}
+
+void TestSignal::roundTrip_data()
+{
+    QTest::addColumn<QByteArray>("signal");
+
+    QTest::newRow("const") << QByteArray(R"({"type":"const","value":0.5})");
+    QTest::newRow("const bound") << QByteArray(
+        R"({"type":"const","value":{"param":"intensity"}})");
+    QTest::newRow("param") << QByteArray(R"({"type":"param","name":"ref"})");
+    QTest::newRow("param linear") << QByteArray(
+        R"({"type":"param","name":"ref","gain":0.5,"offset":1})");
+    QTest::newRow("param curve") << QByteArray(
+        R"({"type":"param","name":"ref","curve":[[0,1],[2,3]]})");
+    QTest::newRow("ramp") << QByteArray(R"({"type":"ramp","to":1,"time":0.5})");
+    QTest::newRow("ramp from peak")
+        << QByteArray(R"({"type":"ramp","to":0,"time":0.5,"from":"peak"})");
+    QTest::newRow("ramp from bound number")
+        << QByteArray(R"({"type":"ramp","to":0,"time":{"param":"ref","gain":2,"offset":0},)"
+                      R"("from":{"param":"intensity"}})");
+    QTest::newRow("keyframes") << QByteArray(R"({"type":"keyframes","points":[[0.5,1],[1,0]]})");
+    QTest::newRow("keyframes from number")
+        << QByteArray(R"({"type":"keyframes","points":[[1,0]],"from":0.25})");
+    QTest::newRow("sine") << QByteArray(R"({"type":"sine","freq":3})");
+    QTest::newRow("sine full") << QByteArray(
+        R"({"type":"sine","freq":3,"amp":0.5,"offset":0.5,"phase":0.25})");
+    QTest::newRow("square") << QByteArray(R"({"type":"square","freq":5})");
+    QTest::newRow("square full") << QByteArray(
+        R"({"type":"square","freq":{"param":"intensity","gain":8,"offset":2},)"
+        R"("duty":0.3,"high":0.9,"low":0.1})");
+    QTest::newRow("pulses") << QByteArray(R"({"type":"pulses","rate":4,"width":0.025})");
+    QTest::newRow("pulses full") << QByteArray(
+        R"({"type":"pulses","rate":{"param":"intensity","curve":[[0,2],[1,20]]},)"
+        R"("width":0.025,"amp":0.5})");
+    QTest::newRow("sum") << QByteArray(
+        R"({"type":"sum","of":[{"type":"const","value":1},{"type":"sine","freq":2}]})");
+    QTest::newRow("product") << QByteArray(
+        R"({"type":"product","of":[{"type":"ramp","to":1,"time":1},{"type":"square","freq":2}]})");
+    QTest::newRow("sequence") << QByteArray(
+        R"({"type":"sequence","of":[{"type":"ramp","to":1,"time":1},)"
+        R"({"type":"const","value":0}]})");
+    QTest::newRow("scale") << QByteArray(
+        R"({"type":"scale","in":{"type":"param","name":"ref"},"gain":2,)"
+        R"("div":{"param":"ref"},"offset":1})");
+    QTest::newRow("clip") << QByteArray(
+        R"({"type":"clip","in":{"type":"const","value":2},"min":-1,"max":0.5})");
+}
+
+void TestSignal::roundTrip()
+{
+    QFETCH(QByteArray, signal);
+
+    ParamTable table;
+    table.declare(QStringLiteral("ref"), 120);
+    SignalParser parser(table, QStringLiteral("test.json"));
+    const QJsonValue source = json(signal.constData());
+    SignalPtr parsed = parser.parse(source, QString());
+    QVERIFY2(parsed, qPrintable(parser.error().toString()));
+    const QJsonValue written = parsed->toJson(table);
+    QCOMPARE(written, source);
+    SignalPtr reparsed = parser.parse(written, QString());
+    QVERIFY(reparsed);
+    QCOMPARE(reparsed->toJson(table), written);
+}
+
+void TestSignal::errors_data()
+{
+    QTest::addColumn<QByteArray>("signal");
+    QTest::addColumn<QString>("error");
+
+    QTest::newRow("not an object")
+        << QByteArray(R"({"s":[1]})") << "test.json: /s/0: expected a signal object, got a number";
+    QTest::newRow("no type") << QByteArray(R"({"s":{"value":1}})")
+                             << "test.json: /s: missing key 'type'";
+    QTest::newRow("unknown type") << QByteArray(R"({"s":{"type":"saw","freq":1}})")
+                                  << "test.json: /s/type: unknown signal type 'saw'";
+    QTest::newRow("unknown key") << QByteArray(R"({"s":{"type":"square","frq":1}})")
+                                 << "test.json: /s: unknown key 'frq'";
+    QTest::newRow("missing key") << QByteArray(R"({"s":{"type":"ramp","to":1}})")
+                                 << "test.json: /s: missing key 'time'";
+    QTest::newRow("wrong type") << QByteArray(R"({"s":{"type":"ramp","to":"1","time":1}})")
+                                << "test.json: /s/to: expected a number or a {\"param\": …} "
+                                   "object, got a string";
+    QTest::newRow("unknown parameter")
+        << QByteArray(R"({"s":{"type":"pulses","rate":{"param":"speed"},"width":1}})")
+        << "test.json: /s/rate: unknown parameter 'speed'";
+    QTest::newRow("unknown parameter signal") << QByteArray(R"({"s":{"type":"param","name":"x"}})")
+                                              << "test.json: /s: unknown parameter 'x'";
+    QTest::newRow("negative time") << QByteArray(R"({"s":{"type":"ramp","to":1,"time":-0.5}})")
+                                   << "test.json: /s/time: must not be negative, got -0.5";
+    QTest::newRow("negative rate")
+        << QByteArray(R"({"s":{"type":"pulses","rate":-1,"width":0.1}})")
+        << "test.json: /s/rate: must not be negative, got -1";
+    QTest::newRow("duty above 1") << QByteArray(R"({"s":{"type":"square","freq":1,"duty":1.5}})")
+                                  << "test.json: /s/duty: must be between 0 and 1, got 1.5";
+    QTest::newRow("bad from") << QByteArray(R"({"s":{"type":"ramp","to":1,"time":1,"from":"x"}})")
+                              << "test.json: /s/from: expected \"current\", \"peak\" or a "
+                                 "number, got 'x'";
+    QTest::newRow("keyframes decreasing")
+        << QByteArray(R"({"s":{"type":"keyframes","points":[[1,0],[0.5,1]]}})")
+        << "test.json: /s/points/1: times must not decrease";
+    QTest::newRow("keyframes not pairs")
+        << QByteArray(R"({"s":{"type":"keyframes","points":[[1,0,2]]}})")
+        << "test.json: /s/points/0: expected a pair [x, y]";
+    QTest::newRow("empty of") << QByteArray(R"({"s":{"type":"sum","of":[]}})")
+                              << "test.json: /s/of: expected at least one signal";
+    QTest::newRow("endless step in a sequence")
+        << QByteArray(R"({"s":{"type":"sequence","of":[{"type":"const","value":1},)"
+                      R"({"type":"const","value":0}]}})")
+        << "test.json: /s/of/0: only the last signal "
+           "of a sequence may last forever";
+    QTest::newRow("nested error")
+        << QByteArray(R"({"s":{"type":"clip","in":{"type":"sum","of":[{"type":"sine"}]}}})")
+        << "test.json: /s/in/of/0: missing key 'freq'";
+    QTest::newRow("curve not increasing")
+        << QByteArray(
+               R"({"s":{"type":"const","value":{"param":"intensity","curve":[[1,0],[1,2]]}}})")
+        << "test.json: /s/value/curve/1: the x values of a curve must increase";
+    QTest::newRow("curve and gain")
+        << QByteArray(
+               R"({"s":{"type":"const","value":{"param":"intensity","curve":[[1,0]],"gain":2}}})")
+        << "test.json: /s/value: give either 'curve' or "
+           "'gain'/'offset', not both";
+    QTest::newRow("clip inverted")
+        << QByteArray(R"({"s":{"type":"clip","in":{"type":"const","value":1},"min":1,"max":0}})")
+        << "test.json: /s/max: must not be below min";
+}
+
+void TestSignal::errors()
+{
+    QFETCH(QByteArray, signal);
+    QFETCH(QString, error);
+
+    const ParamTable table;
+    SignalParser parser(table, QStringLiteral("test.json"));
+    const QJsonObject document = json(signal.constData()).toObject();
+    const QJsonValue s = document.value(QLatin1String("s"));
+    const QJsonValue input = s.isArray() ? s.toArray().at(0) : s;
+    const QString pointer = s.isArray() ? QStringLiteral("/s/0") : QStringLiteral("/s");
+    QVERIFY(!parser.parse(input, pointer));
+    QCOMPARE(parser.error().toString(), error);
+}
+
+QTEST_GUILESS_MAIN(TestSignal)
+#include "tst_signal.moc"
