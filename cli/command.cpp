@@ -23,10 +23,15 @@ int Command::run(const QStringList &arguments)
     parser.addOption(help);
     configure(parser);
 
-    if (!parser.parse(QStringList{QStringLiteral("semhap ") + name()} + arguments))
+    if (!parser.parse(QStringList{QStringLiteral("semhap")} + arguments))
         return usageError(parser.errorText());
     if (parser.isSet(help)) {
-        m_out << parser.helpText();
+        // Qt names the program after argv[0]; users call it `semhap COMMAND`.
+        QString text = parser.helpText();
+        const int programEnd = int(text.indexOf(QLatin1Char(' '), 7));
+        if (text.startsWith(QLatin1String("Usage: ")) && programEnd > 0)
+            text.replace(7, programEnd - 7, QStringLiteral("semhap ") + name());
+        m_out << text;
         m_out.flush();
         return ExitOk;
     }

@@ -2,7 +2,7 @@
 #include "validatecommand.h"
 
 #include "devicemodel.h"
-#include "jsondocument.h"
+#include "jsonreader.h"
 #include "pattern.h"
 #include "patternrender.h"
 #include "router.h"

@@ -2,7 +2,7 @@
 #include "devicemodel.h"
 
 #include "deviceframe.h"
-#include "jsondocument.h"
+#include "jsonreader.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -21,13 +21,11 @@ const double RiseToTau = 1.0 / std::log(9.0);
 bool readResponse(JsonReader &reader, const QJsonObject &response, double *latency, double *tau)
 {
     const QString where = QStringLiteral("/response");
-    for (auto it = response.begin(); it != response.end(); ++it) {
-        if (it.key() != QLatin1String("latency") && it.key() != QLatin1String("bandwidth")
-            && it.key() != QLatin1String("rise"))
-            return reader.fail(jsonPointerChild(where, it.key()),
-                               QStringLiteral("unknown key; expected latency, bandwidth or rise"));
-    }
-    if (!reader.number(response, QStringLiteral("latency"), where, latency, false))
+    if (!reader.checkKeys(response, where,
+                          {QLatin1String("latency"), QLatin1String("bandwidth"),
+                           QLatin1String("rise")}))
+        return false;
+    if (!reader.number(response, where, QLatin1String("latency"), latency, false))
         return false;
     if (*latency < 0 || *latency > 1)
         return reader.fail(where + QStringLiteral("/latency"),
@@ -38,7 +36,7 @@ bool readResponse(JsonReader &reader, const QJsonObject &response, double *laten
         return reader.fail(where, QStringLiteral("give bandwidth or rise, not both"));
     if (hasBandwidth) {
         double bandwidth = 0;
-        if (!reader.number(response, QStringLiteral("bandwidth"), where, &bandwidth))
+        if (!reader.number(response, where, QLatin1String("bandwidth"), &bandwidth))
             return false;
         if (bandwidth <= 0)
             return reader.fail(where + QStringLiteral("/bandwidth"),
@@ -46,7 +44,7 @@ bool readResponse(JsonReader &reader, const QJsonObject &response, double *laten
         *tau = 1.0 / (2 * Pi * bandwidth);
     } else if (hasRise) {
         double rise = 0;
-        if (!reader.number(response, QStringLiteral("rise"), where, &rise))
+        if (!reader.number(response, where, QLatin1String("rise"), &rise))
             return false;
         if (rise < 0 || rise > 10)
             return reader.fail(where + QStringLiteral("/rise"),
@@ -64,16 +62,23 @@ std::shared_ptr<const DeviceModel> DeviceModel::fromJson(const QJsonObject &json
     if (!checkFormat(json, file, QLatin1String(Format), error))
         return nullptr;
     auto model = std::make_shared<DeviceModel>();
-    JsonReader reader(file, error);
-    return model->read(json, reader) ? model : nullptr;
+    JsonReader reader(file);
+    if (model->read(json, reader))
+        return model;
+    *error = reader.error();
+    return nullptr;
 }
 
 bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
 {
     const QString root;
-    if (!reader.string(json, QStringLiteral("name"), root, &m_name)
-        || !reader.string(json, QStringLiteral("description"), root, &m_description, false)
-        || !reader.number(json, QStringLiteral("rate"), root, &m_rate))
+    if (!reader.checkKeys(json, root,
+                          {QLatin1String("format"), QLatin1String("name"),
+                           QLatin1String("description"), QLatin1String("rate"),
+                           QLatin1String("channels"), QLatin1String("response")})
+        || !reader.string(json, root, QLatin1String("name"), &m_name)
+        || !reader.string(json, root, QLatin1String("description"), &m_description, false)
+        || !reader.number(json, root, QLatin1String("rate"), &m_rate))
         return false;
     if (m_name.isEmpty() || m_name.contains(QLatin1Char('/')))
         return reader.fail(QStringLiteral("/name"),
@@ -83,7 +88,7 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
                            QStringLiteral("must be between 0 and 100000 frames/s"));
 
     QJsonArray channels;
-    if (!reader.array(json, QStringLiteral("channels"), root, &channels))
+    if (!reader.array(json, root, QLatin1String("channels"), &channels))
         return false;
     if (channels.isEmpty() || channels.size() > MaxChannels)
         return reader.fail(QStringLiteral("/channels"),
@@ -91,13 +96,17 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     for (int i = 0; i < channels.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/channels"), i);
         if (!channels.at(i).isObject())
-            return reader.fail(where, QStringLiteral("must be an object"));
+            return reader.fail(where, QStringLiteral("expected a channel object, got ")
+                                          + jsonTypeName(channels.at(i)));
         const QJsonObject c = channels.at(i).toObject();
         ChannelSpec spec;
-        if (!reader.string(c, QStringLiteral("name"), where, &spec.name)
-            || !reader.string(c, QStringLiteral("unit"), where, &spec.unit, false)
-            || !reader.number(c, QStringLiteral("min"), where, &spec.min, false)
-            || !reader.number(c, QStringLiteral("max"), where, &spec.max, false))
+        if (!reader.checkKeys(c, where,
+                              {QLatin1String("name"), QLatin1String("unit"), QLatin1String("min"),
+                               QLatin1String("max")})
+            || !reader.string(c, where, QLatin1String("name"), &spec.name)
+            || !reader.string(c, where, QLatin1String("unit"), &spec.unit, false)
+            || !reader.number(c, where, QLatin1String("min"), &spec.min, false)
+            || !reader.number(c, where, QLatin1String("max"), &spec.max, false))
             return false;
         if (spec.name.isEmpty())
             return reader.fail(where + QStringLiteral("/name"), QStringLiteral("is empty"));
@@ -109,7 +118,7 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
         m_channels.push_back(spec);
     }
 
-    if (!reader.object(json, QStringLiteral("response"), root, &m_response, false))
+    if (!reader.object(json, root, QLatin1String("response"), &m_response, false))
         return false;
     return readResponse(reader, m_response, &m_latency, &m_tau);
 }

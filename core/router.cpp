@@ -2,7 +2,7 @@
 #include "router.h"
 
 #include "forcedetector.h"
-#include "jsondocument.h"
+#include "jsonreader.h"
 #include "patternrender.h"
 #include "patternlibrary.h"
 #include "routernodes.h"
@@ -694,12 +694,12 @@ std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList 
     std::unique_ptr<Router> router = Router::compile(graph, error);
     if (router)
         return router;
+    // An override that makes its node invalid is the culprit: say so, not the file.
     for (const QString &assignment : overrides) {
         const QString target = assignment.section(QLatin1Char('='), 0, 0);
-        const int dot = int(target.lastIndexOf(QLatin1Char('.')));
-        const int node = graph.nodeIndex(target.left(dot));
-        const QString pointer = QStringLiteral("/nodes/%1/params").arg(node);
-        if (error->pointer == jsonPointerChild(pointer, target.mid(dot + 1))) {
+        const int node = graph.nodeIndex(target.left(int(target.lastIndexOf(QLatin1Char('.')))));
+        const QString pointer = QStringLiteral("/nodes/%1").arg(node);
+        if (error->pointer == pointer || error->pointer.startsWith(pointer + QLatin1Char('/'))) {
             *error = LoadError::at(QStringLiteral("--set ") + assignment, QString(),
                                    error->reason);
             break;

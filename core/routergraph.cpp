@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "routergraph.h"
 
-#include "jsondocument.h"
+#include "jsonreader.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -41,14 +41,17 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
     for (int i = 0; i < nodes.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/nodes"), i);
         if (!nodes.at(i).isObject())
-            return reader.fail(where, QStringLiteral("must be an object, found ")
+            return reader.fail(where, QStringLiteral("expected a node object, got ")
                                           + jsonTypeName(nodes.at(i)));
         const QJsonObject o = nodes.at(i).toObject();
         RouterNode node;
-        if (!reader.string(o, QStringLiteral("id"), where, &node.id)
-            || !reader.string(o, QStringLiteral("type"), where, &node.type)
-            || !reader.object(o, QStringLiteral("params"), where, &node.params, false)
-            || !reader.object(o, QStringLiteral("ui"), where, &node.ui, false))
+        if (!reader.checkKeys(o, where,
+                              {QLatin1String("id"), QLatin1String("type"), QLatin1String("params"),
+                               QLatin1String("ui")})
+            || !reader.string(o, where, QLatin1String("id"), &node.id)
+            || !reader.string(o, where, QLatin1String("type"), &node.type)
+            || !reader.object(o, where, QLatin1String("params"), &node.params, false)
+            || !reader.object(o, where, QLatin1String("ui"), &node.ui, false))
             return false;
         if (!validId(node.id))
             return reader.fail(where + QStringLiteral("/id"),
@@ -58,14 +61,6 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
         if (graph->nodeIndex(node.id) >= 0)
             return reader.fail(where + QStringLiteral("/id"),
                                QStringLiteral("duplicate node id '%1'").arg(node.id));
-        for (auto it = o.begin(); it != o.end(); ++it) {
-            static const QStringList known{QStringLiteral("id"), QStringLiteral("type"),
-                                           QStringLiteral("params"), QStringLiteral("ui")};
-            if (!known.contains(it.key()))
-                return reader.fail(jsonPointerChild(where, it.key()),
-                                   QStringLiteral("unknown key; node parameters go in "
-                                                  "\"params\""));
-        }
         graph->nodes.push_back(node);
     }
     return true;
@@ -76,14 +71,15 @@ bool readLinks(JsonReader &reader, const QJsonArray &links, RouterGraph *graph)
     for (int i = 0; i < links.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/links"), i);
         if (!links.at(i).isObject())
-            return reader.fail(where, QStringLiteral("must be an object {\"from\", \"to\"}, "
-                                                     "found ")
+            return reader.fail(where, QStringLiteral("expected a link object {\"from\", \"to\"}, "
+                                                     "got ")
                                           + jsonTypeName(links.at(i)));
         const QJsonObject o = links.at(i).toObject();
         QString from;
         QString to;
-        if (!reader.string(o, QStringLiteral("from"), where, &from)
-            || !reader.string(o, QStringLiteral("to"), where, &to))
+        if (!reader.checkKeys(o, where, {QLatin1String("from"), QLatin1String("to")})
+            || !reader.string(o, where, QLatin1String("from"), &from)
+            || !reader.string(o, where, QLatin1String("to"), &to))
             return false;
         RouterLink link;
         splitEndpoint(from, &link.from, &link.fromPort);
@@ -102,18 +98,32 @@ bool RouterGraph::fromJson(const QJsonObject &json, const QString &file, RouterG
     graph->file = file;
     if (!checkFormat(json, file, QLatin1String(Format), error))
         return false;
-    JsonReader reader(file, error);
+    JsonReader reader(file);
+    if (readDocument(reader, json, graph))
+        return true;
+    *error = reader.error();
+    return false;
+}
+
+bool RouterGraph::readDocument(JsonReader &reader, const QJsonObject &json, RouterGraph *graph)
+{
     const QString root;
+    if (!reader.checkKeys(json, root,
+                          {QLatin1String("format"), QLatin1String("name"),
+                           QLatin1String("description"), QLatin1String("nodes"),
+                           QLatin1String("links"), QLatin1String("patterns"),
+                           QLatin1String("models")}))
+        return false;
     QJsonArray nodes;
     QJsonArray links;
     QJsonArray patterns;
     QJsonArray models;
-    if (!reader.string(json, QStringLiteral("name"), root, &graph->name, false)
-        || !reader.string(json, QStringLiteral("description"), root, &graph->description, false)
-        || !reader.array(json, QStringLiteral("nodes"), root, &nodes)
-        || !reader.array(json, QStringLiteral("links"), root, &links, false)
-        || !reader.array(json, QStringLiteral("patterns"), root, &patterns, false)
-        || !reader.array(json, QStringLiteral("models"), root, &models, false))
+    if (!reader.string(json, root, QLatin1String("name"), &graph->name, false)
+        || !reader.string(json, root, QLatin1String("description"), &graph->description, false)
+        || !reader.array(json, root, QLatin1String("nodes"), &nodes)
+        || !reader.array(json, root, QLatin1String("links"), &links, false)
+        || !reader.array(json, root, QLatin1String("patterns"), &patterns, false)
+        || !reader.array(json, root, QLatin1String("models"), &models, false))
         return false;
     if (!readNodes(reader, nodes, graph) || !readLinks(reader, links, graph))
         return false;
@@ -121,27 +131,21 @@ bool RouterGraph::fromJson(const QJsonObject &json, const QString &file, RouterG
     for (int i = 0; i < patterns.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/patterns"), i);
         if (!patterns.at(i).isObject())
-            return reader.fail(where, QStringLiteral("must be a pattern object"));
+            return reader.fail(where, QStringLiteral("expected a pattern object"));
         LoadError inner;
-        PatternPtr pattern = Pattern::fromJson(patterns.at(i).toObject(), file, &inner);
-        if (!pattern) {
-            *error = inner;
-            error->pointer = where + inner.pointer;
-            return false;
-        }
+        PatternPtr pattern = Pattern::fromJson(patterns.at(i).toObject(), graph->file, &inner);
+        if (!pattern)
+            return reader.fail(where + inner.pointer, inner.reason);
         graph->patterns.push_back(pattern);
     }
     for (int i = 0; i < models.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/models"), i);
         if (!models.at(i).isObject())
-            return reader.fail(where, QStringLiteral("must be a device model object"));
+            return reader.fail(where, QStringLiteral("expected a device model object"));
         LoadError inner;
-        DeviceModelPtr model = DeviceModel::fromJson(models.at(i).toObject(), file, &inner);
-        if (!model) {
-            *error = inner;
-            error->pointer = where + inner.pointer;
-            return false;
-        }
+        DeviceModelPtr model = DeviceModel::fromJson(models.at(i).toObject(), graph->file, &inner);
+        if (!model)
+            return reader.fail(where + inner.pointer, inner.reason);
         graph->models.push_back(model);
     }
     return true;

@@ -13,6 +13,8 @@
 
 namespace semhap {
 
+class JsonReader;
+
 /** A node of a router graph as saved: its id, its type and its parameters. */
 struct RouterNode
 {
@@ -64,6 +66,9 @@ public:
     std::vector<RouterLink> links;
     std::vector<PatternPtr> patterns;    ///< embedded patterns, found by name first
     std::vector<DeviceModelPtr> models;  ///< embedded device models, found by name first
+
+private:
+    static bool readDocument(JsonReader &reader, const QJsonObject &json, RouterGraph *graph);
 };
 
 /** The router presets shipped as resources (`:/semhap/routers/NAME.json`). */

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "jsonreader.h"
 
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonParseError>
+
 #include <algorithm>
 #include <cmath>
 
@@ -79,6 +83,115 @@ bool JsonReader::nonEmptyString(const QJsonObject &object, const QString &pointe
     if (out->isEmpty())
         return fail(at, QStringLiteral("must not be empty"));
     return true;
+}
+
+namespace {
+
+// Shared by the typed reads: a missing key is fine unless required; a wrong type never is.
+template<typename Check>
+bool readKey(JsonReader &reader, const QJsonObject &object, const QString &pointer,
+             QLatin1String key, bool required, const QString &expected, Check isRightType)
+{
+    const QJsonValue value = object.value(key);
+    if (value.isUndefined())
+        return required ? reader.require(object, pointer, key) : true;
+    if (!isRightType(value))
+        return reader.fail(jsonPointerChild(pointer, key),
+                           QStringLiteral("expected %1, got %2").arg(expected, jsonTypeName(value)));
+    return true;
+}
+
+} // namespace
+
+bool JsonReader::string(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                        QString *out, bool required)
+{
+    if (!readKey(*this, object, pointer, key, required, QStringLiteral("a string"),
+                 [](const QJsonValue &v) { return v.isString(); }))
+        return false;
+    if (object.contains(key))
+        *out = object.value(key).toString();
+    return true;
+}
+
+bool JsonReader::number(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                        double *out, bool required)
+{
+    if (!object.contains(key))
+        return required ? require(object, pointer, key) : true;
+    return finiteNumber(object.value(key), jsonPointerChild(pointer, key), out);
+}
+
+bool JsonReader::object(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                        QJsonObject *out, bool required)
+{
+    if (!readKey(*this, object, pointer, key, required, QStringLiteral("an object"),
+                 [](const QJsonValue &v) { return v.isObject(); }))
+        return false;
+    if (object.contains(key))
+        *out = object.value(key).toObject();
+    return true;
+}
+
+bool JsonReader::array(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                       QJsonArray *out, bool required)
+{
+    if (!readKey(*this, object, pointer, key, required, QStringLiteral("an array"),
+                 [](const QJsonValue &v) { return v.isArray(); }))
+        return false;
+    if (object.contains(key))
+        *out = object.value(key).toArray();
+    return true;
+}
+
+bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *object,
+                     LoadError *error)
+{
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // QJsonParseError gives a byte offset; editors want a line and a character column.
+        const QByteArray before = bytes.left(parseError.offset);
+        const qsizetype lineStart = before.lastIndexOf('\n') + 1;
+        const int line = int(before.count('\n')) + 1;
+        const int column = int(QString::fromUtf8(before.mid(lineStart)).size()) + 1;
+        *error = LoadError::atLine(file, line, column,
+                                   QStringLiteral("invalid JSON: ") + parseError.errorString());
+        return false;
+    }
+    if (!document.isObject()) {
+        *error = LoadError::at(file, QString(),
+                               QStringLiteral("expected a JSON object, got ")
+                                   + (document.isArray() ? QStringLiteral("an array")
+                                                         : QStringLiteral("nothing")));
+        return false;
+    }
+    *object = document.object();
+    return true;
+}
+
+bool readJsonObjectFile(const QString &path, QJsonObject *object, LoadError *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
+        return false;
+    }
+    return parseJsonObject(file.readAll(), path, object, error);
+}
+
+bool checkFormat(const QJsonObject &object, const QString &file, QLatin1String expected,
+                 LoadError *error)
+{
+    JsonReader reader(file);
+    QString format;
+    if (reader.string(object, QString(), QLatin1String("format"), &format)
+        && format != expected)
+        reader.fail(QStringLiteral("/format"), QStringLiteral("unsupported format %1, expected %2")
+                                                   .arg(quoted(format), quoted(expected)));
+    if (reader.error().isSet() && error)
+        *error = reader.error();
+    return !reader.error().isSet();
 }
 
 } // namespace semhap

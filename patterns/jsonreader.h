@@ -3,6 +3,7 @@
 
 #include "loaderror.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QJsonValue>
 #include <QLatin1String>
@@ -37,10 +38,35 @@ public:
     bool nonEmptyString(const QJsonObject &object, const QString &pointer, QLatin1String key,
                         QString *out);
 
+    /**
+     * Typed reads of `key` in `object` (at `pointer`): a missing key leaves `out` alone
+     * unless `required`; a value of the wrong type always fails.
+     */
+    bool string(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                QString *out, bool required = true);
+    bool number(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                double *out, bool required = true);
+    bool object(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                QJsonObject *out, bool required = true);
+    bool array(const QJsonObject &object, const QString &pointer, QLatin1String key,
+               QJsonArray *out, bool required = true);
+
 private:
     QString m_file;
     LoadError m_error;
 };
+
+/**
+ * Parses a JSON document whose root must be an object. Syntax errors come back as
+ * `FILE:LINE:COL: invalid JSON: reason`, so users can jump to the spot in an editor.
+ */
+bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *object,
+                     LoadError *error);
+/** Reads and parses a file the same way; an unreadable file is `FILE: cannot read: why`. */
+bool readJsonObjectFile(const QString &path, QJsonObject *object, LoadError *error);
+/** Checks the document's `"format"` is `expected` (e.g. "semhap.router/1"). */
+bool checkFormat(const QJsonObject &object, const QString &file, QLatin1String expected,
+                 LoadError *error);
 
 /** "a number", "an object", …: how error messages name what they found instead. */
 QString jsonTypeName(const QJsonValue &value);

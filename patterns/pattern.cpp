@@ -2,11 +2,10 @@
 #include "pattern.h"
 
 #include "envelopes.h"
+#include "jsonreader.h"
 #include "signalparser.h"
 
-#include <QFile>
 #include <QJsonArray>
-#include <QJsonDocument>
 
 #include <cmath>
 
@@ -123,17 +122,11 @@ std::shared_ptr<const Pattern> Pattern::fromJson(const QJsonObject &json, const 
         return nullptr;
     };
 
-    QString format;
+    if (!checkFormat(json, file, QLatin1String(Format), error))
+        return nullptr;
     if (!parser.checkKeys(json, root,
                           {formatKey, QLatin1String("name"), QLatin1String("model"),
-                           descriptionKey, QLatin1String("params"), tracksKey}) ||
-        !parser.nonEmptyString(json, root, formatKey, &format)) {
-        return failed();
-    }
-    if (format != QLatin1String(Format)) {
-        parser.fail(jsonPointerChild(root, formatKey),
-                    QStringLiteral("unsupported format ") + quoted(format) +
-                        QStringLiteral(", expected ") + quoted(QLatin1String(Format)));
+                           descriptionKey, QLatin1String("params"), tracksKey})) {
         return failed();
     }
     if (!parser.nonEmptyString(json, root, QLatin1String("name"), &pattern->m_name) ||
@@ -178,34 +171,14 @@ std::shared_ptr<const Pattern> Pattern::fromJson(const QJsonObject &json, const 
 
 std::shared_ptr<const Pattern> Pattern::fromFile(const QString &path, LoadError *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error) {
-            *error = LoadError();
-            error->file = path;
-            error->reason = QStringLiteral("cannot read: ") + file.errorString();
-        }
-        return nullptr;
-    }
-    const QByteArray data = file.readAll();
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        if (error) {
-            const QByteArray before = data.left(parseError.offset);
-            const qsizetype lineStart = before.lastIndexOf('\n') + 1;
-            const int line = int(before.count('\n')) + 1;
-            const int column = int(QString::fromUtf8(before.mid(lineStart)).size()) + 1;
-            *error = LoadError::atLine(path, line, column, parseError.errorString());
-        }
-        return nullptr;
-    }
-    if (!document.isObject()) {
+    QJsonObject json;
+    LoadError readError;
+    if (!readJsonObjectFile(path, &json, &readError)) {
         if (error)
-            *error = LoadError::at(path, QString(), QStringLiteral("expected a pattern object"));
+            *error = readError;
         return nullptr;
     }
-    return fromJson(document.object(), path, error);
+    return fromJson(json, path, error);
 }
 
 QJsonObject Pattern::toJson() const

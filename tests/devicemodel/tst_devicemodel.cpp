@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "devicemodel.h"
-#include "jsondocument.h"
+#include "jsonreader.h"
 
 #include <QTest>
 
@@ -134,20 +134,20 @@ void TestDeviceModel::malformed_data()
     QTest::addColumn<QString>("error");
     const QByteArray ok = R"("format": "semhap.device/1", "name": "x", "rate": 100)";
     QTest::newRow("syntax") << QByteArray("{\n  \"format\": ,\n}")
-                            << "m.json:2:13: invalid JSON: illegal value";
+                            << "m.json:2:14: invalid JSON: illegal value";
     QTest::newRow("not object") << QByteArray("[1]")
-                                << "m.json: the document must be a JSON object";
+                                << "m.json: expected a JSON object, got an array";
     QTest::newRow("no format") << QByteArray(R"({"name": "x"})")
-                               << "m.json: /format: missing; expected \"semhap.device/1\"";
+                               << "m.json: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format": "semhap.pattern/1"})")
-        << "m.json: /format: expected \"semhap.device/1\", found \"semhap.pattern/1\"";
+        << "m.json: /format: unsupported format 'semhap.pattern/1', expected 'semhap.device/1'";
     QTest::newRow("no channels") << "{" + ok + "}"
-                                 << "m.json: /channels: missing (an array)";
+                                 << "m.json: missing key 'channels'";
     QTest::newRow("empty channels") << "{" + ok + R"(, "channels": []})"
                                     << "m.json: /channels: must list 1 to 16 channels";
     QTest::newRow("channel not object") << "{" + ok + R"(, "channels": [3]})"
-                                        << "m.json: /channels/0: must be an object";
+                                        << "m.json: /channels/0: expected a channel object, got a number";
     QTest::newRow("duplicate channel")
         << "{" + ok + R"(, "channels": [{"name": "a"}, {"name": "a"}]})"
         << "m.json: /channels/1/name: duplicate channel 'a'";
@@ -155,7 +155,7 @@ void TestDeviceModel::malformed_data()
                                    << "m.json: /channels/0: min must be below max";
     QTest::newRow("string limit")
         << "{" + ok + R"(, "channels": [{"name": "a", "max": "1"}]})"
-        << "m.json: /channels/0/max: must be a finite number, found a string";
+        << "m.json: /channels/0/max: expected a number, got a string";
     QTest::newRow("zero rate")
         << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 0, "channels": []})")
         << "m.json: /rate: must be between 0 and 100000 frames/s";
@@ -171,7 +171,7 @@ void TestDeviceModel::malformed_data()
         << "m.json: /response/bandwidth: must be positive (Hz)";
     QTest::newRow("unknown response key")
         << "{" + ok + R"(, "channels": [{"name": "a"}], "response": {"delay": 1}})"
-        << "m.json: /response/delay: unknown key; expected latency, bandwidth or rise";
+        << "m.json: /response: unknown key 'delay'";
     QTest::newRow("latency too long")
         << "{" + ok + R"(, "channels": [{"name": "a"}], "response": {"latency": 5}})"
         << "m.json: /response/latency: must be between 0 and 1 s";

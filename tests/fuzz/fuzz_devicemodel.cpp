@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Device model documents: parse, round-trip, and predict a step response.
 #include "devicemodel.h"
-#include "jsondocument.h"
+#include "jsonreader.h"
 
 #include <cstdlib>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Pattern documents: parse, round-trip through toJson, and play a voice briefly.
-#include "jsondocument.h"
+#include "jsonreader.h"
 #include "pattern.h"
 #include "voice.h"
 

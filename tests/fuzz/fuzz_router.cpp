@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Router documents: parse, compile, and run a few frames through what compiled.
-#include "jsondocument.h"
+#include "jsonreader.h"
 #include "pipeline.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -140,24 +140,24 @@ void TestPattern::errors_data()
     QTest::newRow("bad JSON: missing comma")
         << QByteArray("{\n  \"format\": \"semhap.pattern/1\",\n  \"name\": \"x\"\n"
                       "  \"model\": \"lra4\"\n}")
-        << "FILE:4:4: unterminated object";
+        << "FILE:4:4: invalid JSON: unterminated object";
     QTest::newRow("bad JSON: truncated")
-        << QByteArray("{\"format\": ") << "FILE:1:12: unterminated object";
+        << QByteArray("{\"format\": ") << "FILE:1:12: invalid JSON: unterminated object";
     QTest::newRow("bad JSON: stray comma, after a multi-byte line")
         << QByteArray("{\"a\": 1,\n \"Über\": [1, 2,,]\n}")
-        << "FILE:2:17: illegal value";
-    QTest::newRow("not an object") << QByteArray("[1]") << "FILE: /: expected a pattern object";
-    QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: /: missing key 'format'";
+        << "FILE:2:17: invalid JSON: illegal value";
+    QTest::newRow("not an object") << QByteArray("[1]") << "FILE: expected a JSON object, got an array";
+    QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format":"semhap.router/1","name":"p"})")
         << "FILE: /format: unsupported format 'semhap.router/1', expected 'semhap.pattern/1'";
     QTest::newRow("format of the wrong type")
         << QByteArray(R"({"format":1})") << "FILE: /format: expected a string, got a number";
     QTest::newRow("unknown key") << QByteArray(R"({"format":"semhap.pattern/1","nmae":"p"})")
-                                 << "FILE: /: unknown key 'nmae'";
+                                 << "FILE: unknown key 'nmae'";
     QTest::newRow("missing name")
         << QByteArray(R"({"format":"semhap.pattern/1","model":"lra4","tracks":[]})")
-        << "FILE: /: missing key 'name'";
+        << "FILE: missing key 'name'";
     QTest::newRow("empty name") << QByteArray(
                                        R"({"format":"semhap.pattern/1","name":"","model":"lra4"})")
                                 << "FILE: /name: must not be empty";
@@ -171,7 +171,7 @@ void TestPattern::errors_data()
         << head + R"("params":{"ref":"120"},"tracks":[]})"
         << "FILE: /params/ref: expected a number, got a string";
     QTest::newRow("no tracks") << head.chopped(1) + "}"
-                               << "FILE: /: missing key 'tracks'";
+                               << "FILE: missing key 'tracks'";
     QTest::newRow("empty tracks") << head + R"("tracks":[]})"
                                   << "FILE: /tracks: expected at least one track";
     QTest::newRow("tracks of the wrong type") << head + R"("tracks":{}})"

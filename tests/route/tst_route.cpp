@@ -139,8 +139,9 @@ void TestRoute::demoTrace()
     compareLines(readLines(events), readLines(SEMHAP_TEST_DATA "/demo.events.jsonl"));
 
     const QList<QJsonObject> all = readLines(frames);
-    // 8 s at 100 + 100 + 500 + 500 + 100 + 100 + 60 frames per second, instants 0 … 7.995 s.
-    QCOMPARE(all.size(), 800 * 4 + 4000 * 2 + 480);
+    // Frames from 0 to 7.995 s: every instant k / rate <= 7.995 of each device: 800 at
+    // 100 Hz (four devices), 3998 at 500 Hz (two), 480 at 60 Hz (the overlay).
+    QCOMPARE(all.size(), 800 * 4 + 3998 * 2 + 480);
     const QString golden = QString(SEMHAP_TEST_DATA "/demo.%1.changes.jsonl").arg(preset);
     if (qEnvironmentVariableIsSet("SEMHAP_REGENERATE_GOLDEN"))
         writeLines(golden, changes(all));

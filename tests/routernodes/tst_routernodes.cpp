@@ -24,8 +24,8 @@ public:
     QStringList seen;
 };
 
-/** An event of detector node `node`, e.g. event(1.0, 0, "break", "begin", 0.5). */
-SemanticEvent event(double t, int node, const QString &message, const QString &phase,
+/** An event of detector node `node`, e.g. makeEvent(1.0, 0, "break", "begin", 0.5). */
+SemanticEvent makeEvent(double t, int node, const QString &message, const QString &phase,
                     double intensity = 1.0, Gripper gripper = Gripper::Right)
 {
     SemanticEvent e;
@@ -53,7 +53,7 @@ void feed(RuntimeNode &node, const QStringList &lines)
             node.fireTimers(parts[1].toDouble());
             continue;
         }
-        node.onEvent(port, event(parts[0].toDouble(), parts[1].toInt(), parts[2], parts[3],
+        node.onEvent(port, makeEvent(parts[0].toDouble(), parts[1].toInt(), parts[2], parts[3],
                                  parts.size() > 4 ? parts[4].toDouble() : 1.0));
     }
 }
@@ -229,18 +229,18 @@ void TestRouterNodes::patternNodeMergesMessages()
     node.start(0.0);
     QVERIFY(voice.isIdle());
 
-    node.onEvent(0, event(1.0, 0, "break", "begin", 0.3));
+    node.onEvent(0, makeEvent(1.0, 0, "break", "begin", 0.3));
     QVERIFY(voice.isActive());
     QCOMPARE(voice.param(ParamTable::Intensity), 0.3);
     QCOMPARE(node.voices.front()->priority(), PlayerInput::Exception);
-    node.onEvent(0, event(1.1, 1, "slip", "begin", 0.6));
+    node.onEvent(0, makeEvent(1.1, 1, "slip", "begin", 0.6));
     QCOMPARE(voice.param(ParamTable::Intensity), 0.6);
-    node.onEvent(0, event(1.2, 1, "slip", "update", 0.2));
+    node.onEvent(0, makeEvent(1.2, 1, "slip", "update", 0.2));
     QCOMPARE(voice.param(ParamTable::Intensity), 0.3);
-    node.onEvent(0, event(1.3, 0, "break", "end", 0.3));
+    node.onEvent(0, makeEvent(1.3, 0, "break", "end", 0.3));
     QVERIFY(voice.isActive());
     QCOMPARE(voice.param(ParamTable::Intensity), 0.2);
-    node.onEvent(0, event(1.4, 1, "slip", "end", 0.2));
+    node.onEvent(0, makeEvent(1.4, 1, "slip", "end", 0.2));
     QVERIFY(!voice.isActive());
 }
 

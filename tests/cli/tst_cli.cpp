@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// The `semhap` command line as users meet it: exit codes, one-line errors, render output.
+#include "clitool.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QProcess>
+#include <QTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+const QString Trace = QStringLiteral(SEMHAP_RESOURCES "/traces/demo.jsonl");
+const QString Data = QStringLiteral(SEMHAP_TEST_DATA);
+
+struct Result
+{
+    int code;
+    QByteArray out;
+    QByteArray err;
+};
+
+Result semhapRun(const QStringList &arguments, const QByteArray &input = {})
+{
+    QByteArray in = input;
+    QBuffer inBuffer(&in);
+    inBuffer.open(QIODevice::ReadOnly);
+    Result r{0, {}, {}};
+    QBuffer outBuffer(&r.out);
+    QBuffer errBuffer(&r.err);
+    outBuffer.open(QIODevice::WriteOnly);
+    errBuffer.open(QIODevice::WriteOnly);
+    CliTool tool({&inBuffer, &outBuffer, &errBuffer});
+    r.code = tool.run(arguments);
+    return r;
+}
+
+QStringList csvRow(const QByteArray &csv, int row)
+{
+    return QString::fromUtf8(csv.split('\n').at(row)).split(',');
+}
+
+} // namespace
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void errors_data();
+    void errors();
+    void help();
+    void rejectedLinesAreReportedNotFatal();
+    void renderGeigerPulses();
+    void renderReleaseRamp();
+    void renderToFile();
+    void validate();
+    void realBinaryReadsStdin();
+};
+
+void TestCli::errors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("firstLine");
+    const QString broken = Data + "/broken-router.json";
+    const QString syntax = Data + "/syntax-error.json";
+
+    QTest::newRow("no command") << QStringList{} << 2 << "Usage: semhap COMMAND [OPTIONS]";
+    QTest::newRow("unknown command") << QStringList{"frobnicate"} << 2
+                                     << "semhap: unknown command 'frobnicate'";
+    QTest::newRow("unknown option") << QStringList{"route", "--bogus"} << 2
+                                    << "semhap route: Unknown option 'bogus'.";
+    QTest::newRow("route without router") << QStringList{"route", "--frames", Trace} << 2
+                                          << "semhap route: --router is required";
+    QTest::newRow("route without frames") << QStringList{"route", "--router", "C3"} << 2
+                                          << "semhap route: --frames is required";
+    QTest::newRow("two outputs on stdout")
+        << QStringList{"route", "--router", "C3", "--frames", Trace, "--events", "-",
+                       "--device-frames", "-"}
+        << 2 << "semhap route: at most one output may be '-' (standard output)";
+    QTest::newRow("unknown preset")
+        << QStringList{"route", "--router", "C5", "--frames", Trace} << 1
+        << "C5: no such router preset (presets: C1, C2, C3, C4, none, sensory, visual)";
+    QTest::newRow("missing frames file")
+        << QStringList{"route", "--router", "C3", "--frames", "/nonexistent/frames.jsonl"} << 1
+        << "/nonexistent/frames.jsonl: cannot read: No such file or directory";
+    QTest::newRow("bad override")
+        << QStringList{"route", "--router", "C3", "--frames", Trace, "--set",
+                       "right.force.break=200"}
+        << 1
+        << "--set right.force.break=200: node 'right.force' (force): must be greater than break "
+           "(200), got 120";
+    QTest::newRow("broken router file")
+        << QStringList{"route", "--router", broken, "--frames", Trace} << 1
+        << broken + ": /links/0/to: dangling link: no node 'nowhere'";
+    QTest::newRow("router syntax error")
+        << QStringList{"route", "--router", syntax, "--frames", Trace} << 1
+        << syntax + ":3:17: invalid JSON: unterminated object";
+    QTest::newRow("render without pattern") << QStringList{"render"} << 2
+                                            << "semhap render: a pattern name or file is required";
+    QTest::newRow("render without duration")
+        << QStringList{"render", "vib.geiger", "--rate", "1000"} << 2
+        << "semhap render: --duration is required";
+    QTest::newRow("render bad number")
+        << QStringList{"render", "vib.geiger", "--duration", "x", "--rate", "10"} << 2
+        << "semhap render: --duration expects a number, got 'x'";
+    QTest::newRow("render intensity range")
+        << QStringList{"render", "vib.geiger", "--duration", "1", "--rate", "10", "--intensity",
+                       "2"}
+        << 2 << "semhap render: --intensity must be within [0, 1]";
+    QTest::newRow("render unknown pattern")
+        << QStringList{"render", "vib.geigr", "--duration", "1", "--rate", "10"} << 1
+        << "vib.geigr: no built-in pattern of that name (there are air.proportional, "
+           "air.pulse5hz, air.squeeze, vib.geiger, vib.rampup, visual.blink, visual.confirm)";
+    QTest::newRow("validate nothing") << QStringList{"validate"} << 2
+                                      << "semhap validate: no files given";
+    QTest::newRow("validate broken pattern")
+        << QStringList{"validate", Data + "/broken-pattern.json"} << 1
+        << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "
+                  "model lra4 does not have (channels: m1, m2, m3, m4)";
+}
+
+void TestCli::errors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, code);
+    QFETCH(QString, firstLine);
+    const Result r = semhapRun(args);
+    QCOMPARE(r.code, code);
+    QCOMPARE(QString::fromUtf8(r.err.split('\n').first()), firstLine);
+}
+
+void TestCli::help()
+{
+    const Result top = semhapRun({"--help"});
+    QCOMPARE(top.code, 0);
+    for (const char *command : {"route", "render", "validate"})
+        QVERIFY(top.out.contains(command));
+    for (const char *command : {"route", "render", "validate"}) {
+        const Result r = semhapRun({command, "--help"});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains(QByteArray(QByteArray("Usage: semhap ") + command)), r.out.constData());
+        QVERIFY(r.err.isEmpty());
+    }
+}
+
+void TestCli::rejectedLinesAreReportedNotFatal()
+{
+    const QString frames = Data + "/bad-lines.jsonl";
+    const Result r = semhapRun({"route", "--router", "C3", "--frames", frames, "--events", "-"});
+    QCOMPARE(r.code, 0);
+    const QList<QByteArray> err = r.err.trimmed().split('\n');
+    QCOMPARE(err.size(), 3);
+    QVERIFY(err[0].startsWith(QByteArray(frames.toUtf8() + ":2: ")));
+    QVERIFY(err[1].startsWith(QByteArray(frames.toUtf8() + ":3: ")));
+    QCOMPARE(err[2], frames.toUtf8() + ": 2 line(s) rejected");
+    // grasp begins at 0, ends at 0.3 (F = 10): the rejected lines changed nothing.
+    QCOMPARE(r.out.count('\n'), 2);
+}
+
+void TestCli::renderGeigerPulses()
+{
+    const Result r = semhapRun({"render", "vib.geiger", "--intensity", "0.5", "--duration", "3",
+                                "--rate", "1000", "--out", "-"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.err.isEmpty());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.first(), QByteArray("t,m1,m2,m3,m4"));
+    QCOMPARE(lines.size(), 3001);
+    int pulses = 0;
+    int high = 0;
+    bool previous = false;
+    for (int k = 1; k < lines.size(); ++k) {
+        const QStringList row = QString::fromUtf8(lines[k]).split(',');
+        QCOMPARE(row[0].toDouble(), (k - 1) / 1000.0);
+        QCOMPARE(row[1], row[4]);  // all four motors together
+        const bool on = row[1].toDouble() > 0.5;
+        pulses += on && !previous;
+        high += on;
+        previous = on;
+    }
+    QCOMPARE(pulses, 33);       // 2 + 18 · 0.5 = 11 Hz for 3 s
+    QCOMPARE(high, 33 * 25);    // 25 ms each
+}
+
+void TestCli::renderReleaseRamp()
+{
+    const Result r = semhapRun({"render", "air.squeeze", "--release-at", "0.5", "--duration",
+                                "1.2", "--rate", "10"});
+    QCOMPARE(r.code, 0);
+    const double expected[] = {0, 0.2, 0.4, 0.6, 0.8, 1.0, 0.8, 0.6, 0.4, 0.2, 0, 0};
+    QCOMPARE(csvRow(r.out, 0).size(), 7);
+    for (int k = 0; k < 12; ++k) {
+        const QStringList row = csvRow(r.out, k + 1);
+        QVERIFY2(std::abs(row[1].toDouble() - expected[k]) < 1e-9,
+                 qPrintable(QString("t=%1: %2").arg(row[0], row[1])));
+    }
+}
+
+void TestCli::renderToFile()
+{
+    const QString path = QDir::temp().filePath("semhap-tst-cli-render.csv");
+    const Result r = semhapRun({"render", "air.pulse5hz", "--duration", "0.4", "--rate", "20",
+                                "--out", path});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.isEmpty());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray csv = file.readAll();
+    file.remove();
+    QCOMPARE(csvRow(csv, 0).join(','), QString("t,b1,b2,b3,b4,b5,b6"));
+    // 5 Hz, 50 % duty, high first: 2 samples high, 2 low at 20 Hz.
+    QStringList column;
+    for (int k = 1; k <= 8; ++k)
+        column.append(csvRow(csv, k)[1]);
+    QCOMPARE(column, (QStringList{"1", "1", "0", "0", "1", "1", "0", "0"}));
+}
+
+void TestCli::validate()
+{
+    QStringList files;
+    for (const char *dir : {"routers", "patterns", "devices"}) {
+        const QDir d(QString(SEMHAP_RESOURCES "/") + dir);
+        for (const QString &f : d.entryList({"*.json"}))
+            files.append(d.filePath(f));
+    }
+    const Result ok = semhapRun(QStringList{"validate"} + files);
+    QCOMPARE(ok.code, 0);
+    QCOMPARE(ok.out.count('\n'), files.size());
+    QVERIFY(ok.err.isEmpty());
+
+    const Result bad = semhapRun({"validate", files.first(), Data + "/broken-router.json",
+                                  Data + "/syntax-error.json"});
+    QCOMPARE(bad.code, 1);
+    QCOMPARE(bad.out.count('\n'), 1);
+    QCOMPARE(bad.err.count('\n'), 2);  // one line per broken file
+}
+
+void TestCli::realBinaryReadsStdin()
+{
+    QProcess semhap;
+    semhap.start(SEMHAP_CLI_BINARY, {"route", "--router", "C3", "--frames", "-", "--events", "-"});
+    QVERIFY(semhap.waitForStarted());
+    QFile trace(Trace);
+    QVERIFY(trace.open(QIODevice::ReadOnly));
+    semhap.write(trace.readAll());
+    semhap.closeWriteChannel();
+    QVERIFY(semhap.waitForFinished(30000));
+    QCOMPARE(semhap.exitCode(), 0);
+    QCOMPARE(semhap.readAllStandardError(), QByteArray());
+    QCOMPARE(semhap.readAllStandardOutput().count('\n'), 170);  // reference_events.py's count
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
