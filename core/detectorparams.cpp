@@ -16,8 +16,8 @@ bool paramError(QString *key, QString *reason, const QString &badKey, const QStr
     return false;
 }
 
-bool readDetectorParams(const QJsonObject &json, std::initializer_list<DetectorParam> params,
-                        QString *key, QString *reason)
+bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, QString *key,
+                        QString *reason)
 {
     // Check everything before assigning, so a rejected object leaves the values untouched.
     for (auto it = json.begin(); it != json.end(); ++it) {
@@ -37,12 +37,19 @@ bool readDetectorParams(const QJsonObject &json, std::initializer_list<DetectorP
     return true;
 }
 
-bool checkFiniteParams(std::initializer_list<std::pair<QLatin1String, double>> values,
-                       QString *key, QString *reason)
+QJsonObject detectorParamsToJson(const DetectorParams &params)
 {
-    for (const auto &[name, value] : values) {
-        if (!std::isfinite(value))
-            return paramError(key, reason, name, QStringLiteral("must be a finite number"));
+    QJsonObject json;
+    for (const DetectorParam &param : params)
+        json.insert(param.key, *param.value);
+    return json;
+}
+
+bool checkFiniteParams(const DetectorParams &params, QString *key, QString *reason)
+{
+    for (const DetectorParam &param : params) {
+        if (!std::isfinite(*param.value))
+            return paramError(key, reason, param.key, QStringLiteral("must be a finite number"));
     }
     return true;
 }

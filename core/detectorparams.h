@@ -4,8 +4,7 @@
 #include <QJsonObject>
 #include <QString>
 
-#include <initializer_list>
-#include <utility>
+#include <vector>
 
 namespace semhap {
 
@@ -16,16 +15,21 @@ struct DetectorParam
     double *value;
 };
 
+/** A detector's parameters, listed once for reading, writing and checking. */
+using DetectorParams = std::vector<DetectorParam>;
+
 /**
  * Reads the keys present in `json` into `params`, so every detector's Params::read
  * rejects unknown keys and non-numbers with the same wording. False with key and reason.
  */
-bool readDetectorParams(const QJsonObject &json, std::initializer_list<DetectorParam> params,
-                        QString *key, QString *reason);
+bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, QString *key,
+                        QString *reason);
+
+/** Every parameter as a JSON object. */
+QJsonObject detectorParamsToJson(const DetectorParams &params);
 
 /** Checks each value is finite, so validators need not repeat it. False with key and reason. */
-bool checkFiniteParams(std::initializer_list<std::pair<QLatin1String, double>> values,
-                       QString *key, QString *reason);
+bool checkFiniteParams(const DetectorParams &params, QString *key, QString *reason);
 
 /** Fills `key` and `reason` (either may be null) and returns false, for one-line rejects. */
 bool paramError(QString *key, QString *reason, const QString &badKey, const QString &why);

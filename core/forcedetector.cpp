@@ -7,34 +7,36 @@
 
 namespace semhap {
 
+namespace {
+
+// Every parameter's JSON key and field, listed once for reading, writing and checking.
+DetectorParams fields(ForceDetector::Params &p)
+{
+    return {
+            {QLatin1String("grasp"), &p.grasp},
+            {QLatin1String("break"), &p.brk},
+            {QLatin1String("max"), &p.max},
+            {QLatin1String("hysteresis"), &p.hysteresis},
+            {QLatin1String("minDuration"), &p.minDuration}};
+}
+
+} // namespace
+
 bool ForceDetector::Params::read(const QJsonObject &json, QString *key, QString *reason)
 {
-    return readDetectorParams(json,
-                              {{QLatin1String("grasp"), &grasp},
-                               {QLatin1String("break"), &brk},
-                               {QLatin1String("max"), &max},
-                               {QLatin1String("hysteresis"), &hysteresis},
-                               {QLatin1String("minDuration"), &minDuration}},
-                              key, reason);
+    return readDetectorParams(json, fields(*this), key, reason);
 }
 
 QJsonObject ForceDetector::Params::toJson() const
 {
-    return QJsonObject{{QStringLiteral("grasp"), grasp},
-                       {QStringLiteral("break"), brk},
-                       {QStringLiteral("max"), max},
-                       {QStringLiteral("hysteresis"), hysteresis},
-                       {QStringLiteral("minDuration"), minDuration}};
+    Params copy = *this;
+    return detectorParamsToJson(fields(copy));
 }
 
 bool ForceDetector::Params::validate(QString *key, QString *reason) const
 {
-    if (!checkFiniteParams({{QLatin1String("grasp"), grasp},
-                            {QLatin1String("break"), brk},
-                            {QLatin1String("max"), max},
-                            {QLatin1String("hysteresis"), hysteresis},
-                            {QLatin1String("minDuration"), minDuration}},
-                           key, reason))
+    Params copy = *this;
+    if (!checkFiniteParams(fields(copy), key, reason))
         return false;
     if (!(grasp < brk)) {
         return paramError(key, reason, QStringLiteral("break"),

@@ -14,8 +14,8 @@ class PipelineSink
 {
 public:
     virtual ~PipelineSink() = default;
-    virtual void onEvent(const SemanticEvent &event) { Q_UNUSED(event) }
-    virtual void onDeviceFrame(const DeviceFrame &frame) { Q_UNUSED(frame) }
+    virtual void onEvent(const SemanticEvent &) {}
+    virtual void onDeviceFrame(const DeviceFrame &) {}
 };
 
 /**

@@ -7,34 +7,36 @@
 
 namespace semhap {
 
+namespace {
+
+// Every parameter's JSON key and field, listed once for reading, writing and checking.
+DetectorParams fields(SlipDetector::Params &p)
+{
+    return {
+            {QLatin1String("grasp"), &p.grasp},
+            {QLatin1String("loss"), &p.loss},
+            {QLatin1String("min"), &p.min},
+            {QLatin1String("hysteresis"), &p.hysteresis},
+            {QLatin1String("minDuration"), &p.minDuration}};
+}
+
+} // namespace
+
 bool SlipDetector::Params::read(const QJsonObject &json, QString *key, QString *reason)
 {
-    return readDetectorParams(json,
-                              {{QLatin1String("grasp"), &grasp},
-                               {QLatin1String("loss"), &loss},
-                               {QLatin1String("min"), &min},
-                               {QLatin1String("hysteresis"), &hysteresis},
-                               {QLatin1String("minDuration"), &minDuration}},
-                              key, reason);
+    return readDetectorParams(json, fields(*this), key, reason);
 }
 
 QJsonObject SlipDetector::Params::toJson() const
 {
-    return QJsonObject{{QStringLiteral("grasp"), grasp},
-                       {QStringLiteral("loss"), loss},
-                       {QStringLiteral("min"), min},
-                       {QStringLiteral("hysteresis"), hysteresis},
-                       {QStringLiteral("minDuration"), minDuration}};
+    Params copy = *this;
+    return detectorParamsToJson(fields(copy));
 }
 
 bool SlipDetector::Params::validate(QString *key, QString *reason) const
 {
-    if (!checkFiniteParams({{QLatin1String("grasp"), grasp},
-                            {QLatin1String("loss"), loss},
-                            {QLatin1String("min"), min},
-                            {QLatin1String("hysteresis"), hysteresis},
-                            {QLatin1String("minDuration"), minDuration}},
-                           key, reason))
+    Params copy = *this;
+    if (!checkFiniteParams(fields(copy), key, reason))
         return false;
     if (grasp < 0.0) {
         return paramError(key, reason, QStringLiteral("grasp"),

@@ -2,41 +2,17 @@
 // Per-tick cost of the whole core path: two grippers at 1 kHz through detectors, the C3
 // router and the player with all seven devices. Prints median, p99 and max in microseconds
 // and the heap allocations per tick (the target: p99 <= 20 us, zero allocations).
+#include "allocationcounter.h"
 #include "pipeline.h"
 
 #include <QCoreApplication>
 #include <QStringList>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <new>
 #include <vector>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-} // namespace
-
-void *operator new(std::size_t size)
-{
-    if (g_counting.load(std::memory_order_relaxed))
-        g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void *p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace semhap;
 
@@ -118,8 +94,7 @@ int main(int argc, char *argv[])
         pipeline.process(right, sink);
         pipeline.flush(sink);
     }
-    g_allocations = 0;
-    g_counting = true;
+    test::startCountingAllocations();
     for (int k = 0; k < ticks; ++k) {
         makeFrames(1.0 + k * 0.001, &left, &right);
         const auto start = std::chrono::steady_clock::now();
@@ -129,13 +104,13 @@ int main(int argc, char *argv[])
         const auto stop = std::chrono::steady_clock::now();
         micros[size_t(k)] = std::chrono::duration<double, std::micro>(stop - start).count();
     }
-    g_counting = false;
+    const long allocations = test::stopCountingAllocations();
 
     std::printf("bench_pipeline: C3, 2 grippers at 1 kHz, 7 devices, %d ticks\n", ticks);
     std::printf("  per tick: median %.2f us, p99 %.2f us, max %.2f us\n",
                 percentile(micros, 0.5), percentile(micros, 0.99), percentile(micros, 1.0));
     std::printf("  heap allocations per tick: %.3f (%ld in all)\n",
-                double(g_allocations.load()) / ticks, g_allocations.load());
+                double(allocations) / ticks, allocations);
     std::printf("  output: %ld events, %ld device frames (checksum %.3f)\n", sink.events,
                 sink.frames, sink.checksum);
     return 0;

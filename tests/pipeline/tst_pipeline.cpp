@@ -1,36 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The pipeline's clock and the player's mixing: when device frames come out and what they hold.
+#include "allocationcounter.h"
 #include "pipeline.h"
 
 #include <QJsonDocument>
 #include <QTest>
-
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-} // namespace
-
-// Counts heap allocations while g_counting is set: the per-tick path must make none.
-void *operator new(std::size_t size)
-{
-    if (g_counting.load(std::memory_order_relaxed))
-        g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void *p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace semhap;
 
@@ -331,13 +305,12 @@ void TestPipeline::noAllocationPerTick()
         pipeline.flush(sink);
     };
     tick(0);
-    g_allocations = 0;
-    g_counting = true;
+    test::startCountingAllocations();
     for (int k = 1; k < 5000; ++k)
         tick(k);
-    g_counting = false;
+    const long allocations = test::stopCountingAllocations();
     QVERIFY(r.events.size() > 10);
-    QCOMPARE(g_allocations.load(), 0L);
+    QCOMPARE(allocations, 0L);
 }
 
 QTEST_GUILESS_MAIN(TestPipeline)

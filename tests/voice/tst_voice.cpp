@@ -1,92 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Voices of the built-in patterns: lifecycles as the spec words them (ramps from wherever
 // the value is, no dip on end+begin, phase-continuous rates) and no allocation while playing.
+#include "allocationcounter.h"
 #include "patternlibrary.h"
 #include "voice.h"
 
 #include <QTest>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
-
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<int> g_allocations{0};
-
-} // namespace
-
-namespace {
-
-void *countedAlloc(std::size_t size) noexcept
-{
-    if (g_counting)
-        ++g_allocations;
-    return std::malloc(size == 0 ? 1 : size);
-}
-
-void *countedAllocOrThrow(std::size_t size)
-{
-    if (void *p = countedAlloc(size))
-        return p;
-    throw std::bad_alloc();
-}
-
-} // namespace
-
-// Every unaligned form is replaced, so that no pointer from another allocator reaches free.
-// They count allocations while g_counting is set, to prove the real-time path allocates none.
-void *operator new(std::size_t size)
-{
-    return countedAllocOrThrow(size);
-}
-
-void *operator new[](std::size_t size)
-{
-    return countedAllocOrThrow(size);
-}
-
-void *operator new(std::size_t size, const std::nothrow_t &) noexcept
-{
-    return countedAlloc(size);
-}
-
-void *operator new[](std::size_t size, const std::nothrow_t &) noexcept
-{
-    return countedAlloc(size);
-}
-
-void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete[](void *p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
-
-void operator delete[](void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void *p, const std::nothrow_t &) noexcept
-{
-    std::free(p);
-}
-
-void operator delete[](void *p, const std::nothrow_t &) noexcept
-{
-    std::free(p);
-}
 
 using namespace semhap;
 
@@ -327,12 +248,12 @@ void TestVoice::stop()
 
 void TestVoice::allocationCounterCounts()
 {
-    g_allocations = 0;
-    g_counting = true;
-    auto *probe = new std::vector<double>(8);
-    g_counting = false;
-    delete probe;
-    QVERIFY(g_allocations.load() >= 2);
+    test::startCountingAllocations();
+    // A direct call: the compiler may elide a new-expression, but not this.
+    void *probe = ::operator new(64);
+    const long allocations = test::stopCountingAllocations();
+    ::operator delete(probe);
+    QCOMPARE(allocations, 1L);
 }
 
 void TestVoice::noAllocation_data()
@@ -347,8 +268,7 @@ void TestVoice::noAllocation()
     QFETCH(QString, pattern);
 
     Voice voice(PatternLibrary::builtin(pattern));
-    g_allocations = 0;
-    g_counting = true;
+    test::startCountingAllocations();
     for (int cycle = 0; cycle < 3; ++cycle) {
         const double start = cycle * 2.0;
         voice.begin(start);
@@ -363,8 +283,7 @@ void TestVoice::noAllocation()
     }
     voice.resetParams();
     voice.stop();
-    g_counting = false;
-    QCOMPARE(g_allocations.load(), 0);
+    QCOMPARE(test::stopCountingAllocations(), 0L);
 }
 
 QTEST_GUILESS_MAIN(TestVoice)
