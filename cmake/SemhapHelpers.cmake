@@ -26,6 +26,10 @@ function(semhap_strict_target target)
             -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
+    if(SEMHAP_FUZZ)
+        # Coverage feedback from the libraries too, not only from the fuzz targets' own code.
+        target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+    endif()
 endfunction()
 
 # semhap_add_test(name LIBS lib... [LABELS label...] [SOURCES extra...])

@@ -9,13 +9,14 @@ set(SEMHAP_PUBLIC_HEADERS
     core/contactframe.h core/actortable.h core/semanticevent.h core/deviceframe.h
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h
     core/slipdetector.h core/contactframereader.h core/jsonlineswriter.h
-    core/devicemodel.h core/routergraph.h core/router.h core/player.h core/pipeline.h)
+    core/devicemodel.h core/routergraph.h core/router.h core/player.h core/pipeline.h
+    core/patternrender.h)
 
 install(TARGETS semhap_patterns semhap_core EXPORT semhapTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/semhap)
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${SEMHAP_PUBLIC_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/semhap)
 install(EXPORT semhapTargets NAMESPACE semhap::
     DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/semhap)

@@ -24,6 +24,7 @@ CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-asan" \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --output-on-failure -j "$jobs" -L sanitize)
 for fuzzer in "$root"/build-asan/tests/fuzz/fuzz_*; do
+    [ -f "$fuzzer" ] && [ -x "$fuzzer" ] || continue
     name=$(basename "$fuzzer")
     corpus="$root/tests/fuzz/corpus/${name#fuzz_}"
     work=$(mktemp -d)
@@ -35,6 +36,7 @@ done
 
 echo "== exported package"
 stage="$root/build/stage"
+rm -rf "$stage" "$root/build/package"
 cmake --install "$root/build" --prefix "$stage" >/dev/null
 cmake -S "$root/tests/package" -B "$root/build/package" -G Ninja \
     -DCMAKE_PREFIX_PATH="$stage" >/dev/null
