@@ -48,8 +48,8 @@ int CliTool::run(const QStringList &arguments)
         return ExitUsage;
     }
     const QString &first = arguments.first();
-    if (first == QLatin1String("--help") || first == QLatin1String("-h")
-        || first == QLatin1String("help")) {
+    if (first == QLatin1String("--help") || first == QLatin1String("-h") ||
+        first == QLatin1String("help")) {
         m_io.out->write(usage().toUtf8());
         return ExitOk;
     }
@@ -59,8 +59,8 @@ int CliTool::run(const QStringList &arguments)
     }
     std::unique_ptr<Command> command = makeCommand(first);
     if (!command) {
-        m_io.err->write(tr("semhap: unknown command '%1'\n").arg(first).toUtf8()
-                        + tr("Try 'semhap --help'.\n").toUtf8());
+        m_io.err->write(tr("semhap: unknown command '%1'\n").arg(first).toUtf8() +
+                        tr("Try 'semhap --help'.\n").toUtf8());
         return ExitUsage;
     }
     return command->run(arguments.mid(1));

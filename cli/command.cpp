@@ -58,8 +58,7 @@ void Command::report(const QString &line)
     m_io.err->write(line.toUtf8() + '\n');
 }
 
-bool Command::numberOption(const QCommandLineParser &parser, const QString &option,
-                           double *value)
+bool Command::numberOption(const QCommandLineParser &parser, const QString &option, double *value)
 {
     if (!parser.isSet(option))
         return true;

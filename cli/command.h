@@ -14,14 +14,19 @@
 namespace semhap {
 
 /** Exit codes shared by every command (spec section 5). */
-enum ExitCode { ExitOk = 0, ExitInvalidInput = 1, ExitUsage = 2 };
+enum ExitCode
+{
+    ExitOk = 0,
+    ExitInvalidInput = 1,
+    ExitUsage = 2
+};
 
 /** The standard streams a command uses; tests pass buffers, main passes the real ones. */
 struct CommandIo
 {
-    QIODevice *in = nullptr;   ///< what `-` reads
-    QIODevice *out = nullptr;  ///< what `-` writes, and help text
-    QIODevice *err = nullptr;  ///< error messages, one line each
+    QIODevice *in = nullptr;  ///< what `-` reads
+    QIODevice *out = nullptr; ///< what `-` writes, and help text
+    QIODevice *err = nullptr; ///< error messages, one line each
 };
 
 /**

@@ -23,11 +23,10 @@ QString RenderCommand::summary() const
 void RenderCommand::configure(QCommandLineParser &parser)
 {
     parser.addPositionalArgument(QStringLiteral("pattern"),
-                                 tr("Built-in pattern name or pattern file."),
-                                 tr("PATTERN|FILE"));
+                                 tr("Built-in pattern name or pattern file."), tr("PATTERN|FILE"));
     parser.addOption({QStringLiteral("intensity"), tr("Intensity 0..1 (default 1)."), tr("X")});
-    parser.addOption({QStringLiteral("release-at"),
-                      tr("Time of the end (release), in seconds."), tr("S")});
+    parser.addOption(
+        {QStringLiteral("release-at"), tr("Time of the end (release), in seconds."), tr("S")});
     parser.addOption({QStringLiteral("duration"), tr("Length to render, in seconds."), tr("S")});
     parser.addOption({QStringLiteral("rate"), tr("Samples per second."), tr("HZ")});
     parser.addOption({QStringLiteral("out"),
@@ -39,18 +38,18 @@ int RenderCommand::execute(const QCommandLineParser &parser)
 {
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
-        return usageError(positional.isEmpty() ? tr("a pattern name or file is required")
-                                               : tr("exactly one pattern, got %1")
-                                                     .arg(positional.size()));
+        return usageError(positional.isEmpty()
+                              ? tr("a pattern name or file is required")
+                              : tr("exactly one pattern, got %1").arg(positional.size()));
     for (const QString &required : {QStringLiteral("duration"), QStringLiteral("rate")}) {
         if (!parser.isSet(required))
             return usageError(tr("--%1 is required").arg(required));
     }
     RenderOptions options;
-    if (!numberOption(parser, QStringLiteral("intensity"), &options.intensity)
-        || !numberOption(parser, QStringLiteral("release-at"), &options.releaseAt)
-        || !numberOption(parser, QStringLiteral("duration"), &options.duration)
-        || !numberOption(parser, QStringLiteral("rate"), &options.rate))
+    if (!numberOption(parser, QStringLiteral("intensity"), &options.intensity) ||
+        !numberOption(parser, QStringLiteral("release-at"), &options.releaseAt) ||
+        !numberOption(parser, QStringLiteral("duration"), &options.duration) ||
+        !numberOption(parser, QStringLiteral("rate"), &options.rate))
         return ExitUsage;
     if (options.intensity < 0 || options.intensity > 1)
         return usageError(tr("--intensity must be within [0, 1]"));
@@ -69,12 +68,12 @@ int RenderCommand::execute(const QCommandLineParser &parser)
         return inputError(error.toString());
     DeviceModelPtr model = DeviceModelLibrary::builtin(pattern->model());
     if (!model)
-        return inputError(LoadError::at(positional.first(), QStringLiteral("/model"),
-                                        tr("unknown device model '%1' (built-in: %2)")
-                                            .arg(pattern->model(),
-                                                 DeviceModelLibrary::builtinNames().join(
-                                                     QStringLiteral(", "))))
-                              .toString());
+        return inputError(
+            LoadError::at(positional.first(), QStringLiteral("/model"),
+                          tr("unknown device model '%1' (built-in: %2)")
+                              .arg(pattern->model(),
+                                   DeviceModelLibrary::builtinNames().join(QStringLiteral(", "))))
+                .toString());
     RenderedPattern rendered;
     QString reason;
     if (!renderPattern(pattern, *model, options, &rendered, &reason))

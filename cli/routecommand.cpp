@@ -72,7 +72,8 @@ void RouteCommand::configure(QCommandLineParser &parser)
 int RouteCommand::execute(const QCommandLineParser &parser)
 {
     if (!parser.positionalArguments().isEmpty())
-        return usageError(tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+        return usageError(
+            tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     for (const QString &required : {QStringLiteral("router"), QStringLiteral("frames")}) {
         if (!parser.isSet(required))
             return usageError(tr("--%1 is required").arg(required));
@@ -107,8 +108,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     pipeline.flush(sink);
 
     if (reader.rejectedCount() > 0)
-        report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount())
-                   .arg(framesPath));
+        report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount()).arg(framesPath));
     return ExitOk;
 }
 

@@ -21,7 +21,8 @@ bool validateScene(const QString &path, LoadError *error, QString *what)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = LoadError::atLine(path, 0, 0, QStringLiteral("cannot read: ") + file.errorString());
+        *error =
+            LoadError::atLine(path, 0, 0, QStringLiteral("cannot read: ") + file.errorString());
         return false;
     }
     QXmlStreamReader xml(&file);
@@ -60,8 +61,7 @@ QString ValidateCommand::summary() const
 
 void ValidateCommand::configure(QCommandLineParser &parser)
 {
-    parser.addPositionalArgument(QStringLiteral("files"), tr("Files to check."),
-                                 tr("FILE..."));
+    parser.addPositionalArgument(QStringLiteral("files"), tr("Files to check."), tr("FILE..."));
 }
 
 int ValidateCommand::execute(const QCommandLineParser &parser)
@@ -81,10 +81,10 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
     std::vector<DeviceModelPtr> models;
     for (const QString &path : files) {
         Document doc{path, {}, {}};
-        if (!path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive)
-            && readJsonObjectFile(path, &doc.json, &doc.error)
-            && doc.json.value(QStringLiteral("format")).toString()
-                   == QLatin1String(DeviceModel::Format)) {
+        if (!path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive) &&
+            readJsonObjectFile(path, &doc.json, &doc.error) &&
+            doc.json.value(QStringLiteral("format")).toString() ==
+                QLatin1String(DeviceModel::Format)) {
             if (DeviceModelPtr model = DeviceModel::fromJson(doc.json, path, &doc.error))
                 models.push_back(model);
         }
@@ -112,9 +112,9 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 std::vector<PlayerInput::Route> routes;
                 QString reason;
                 if (!model)
-                    error = LoadError::at(doc.path, QStringLiteral("/model"),
-                                          tr("unknown device model '%1' (give its file too)")
-                                              .arg(pattern->model()));
+                    error = LoadError::at(
+                        doc.path, QStringLiteral("/model"),
+                        tr("unknown device model '%1' (give its file too)").arg(pattern->model()));
                 else if (!resolvePatternRoutes(*pattern, *model, {}, &routes, &reason))
                     error = LoadError::at(doc.path, QStringLiteral("/tracks"), reason);
                 ok = !error.isSet();

@@ -8,7 +8,11 @@
 namespace semhap {
 
 /** Which gripper (robot hand) a frame or event belongs to. */
-enum class Gripper { Left = 0, Right = 1 };
+enum class Gripper
+{
+    Left = 0,
+    Right = 1
+};
 
 QString gripperName(Gripper gripper);
 /** Parses `"left"` / `"right"`; returns false for anything else. */
@@ -17,11 +21,11 @@ bool gripperFromName(const QString &name, Gripper *gripper);
 /** Contact state of one fingertip in one tick. */
 struct Fingertip
 {
-    double f = 0.0;     ///< summed contact-force magnitudes, N (finite, >= 0)
-    int n = 0;          ///< number of contact points
-    int actor = -1;     ///< ActorTable id of the touched body, -1 for none
+    double f = 0.0; ///< summed contact-force magnitudes, N (finite, >= 0)
+    int n = 0;      ///< number of contact points
+    int actor = -1; ///< ActorTable id of the touched body, -1 for none
     bool hasFxyz = false;
-    std::array<double, 3> fxyz{};  ///< resultant force in the gripper frame, when known
+    std::array<double, 3> fxyz{}; ///< resultant force in the gripper frame, when known
 };
 
 /**
@@ -32,8 +36,8 @@ struct ContactFrame
 {
     double t = 0.0;
     Gripper gripper = Gripper::Right;
-    Fingertip left;   ///< the gripper's left fingertip
-    Fingertip right;  ///< the gripper's right fingertip
+    Fingertip left;  ///< the gripper's left fingertip
+    Fingertip right; ///< the gripper's right fingertip
 
     double totalForce() const { return left.f + right.f; }
     int totalContacts() const { return left.n + right.n; }

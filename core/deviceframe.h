@@ -12,7 +12,7 @@ constexpr int MaxChannels = 16;
 struct DeviceFrame
 {
     double t = 0.0;
-    int device = -1;  ///< index into the player's device table
+    int device = -1; ///< index into the player's device table
     int channelCount = 0;
     std::array<double, MaxChannels> values{};
 };

@@ -21,9 +21,9 @@ const double RiseToTau = 1.0 / std::log(9.0);
 bool readResponse(JsonReader &reader, const QJsonObject &response, double *latency, double *tau)
 {
     const QString where = QStringLiteral("/response");
-    if (!reader.checkKeys(response, where,
-                          {QLatin1String("latency"), QLatin1String("bandwidth"),
-                           QLatin1String("rise")}))
+    if (!reader.checkKeys(
+            response, where,
+            {QLatin1String("latency"), QLatin1String("bandwidth"), QLatin1String("rise")}))
         return false;
     if (!reader.number(response, where, QLatin1String("latency"), latency, false))
         return false;
@@ -75,10 +75,10 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     if (!reader.checkKeys(json, root,
                           {QLatin1String("format"), QLatin1String("name"),
                            QLatin1String("description"), QLatin1String("rate"),
-                           QLatin1String("channels"), QLatin1String("response")})
-        || !reader.string(json, root, QLatin1String("name"), &m_name)
-        || !reader.string(json, root, QLatin1String("description"), &m_description, false)
-        || !reader.number(json, root, QLatin1String("rate"), &m_rate))
+                           QLatin1String("channels"), QLatin1String("response")}) ||
+        !reader.string(json, root, QLatin1String("name"), &m_name) ||
+        !reader.string(json, root, QLatin1String("description"), &m_description, false) ||
+        !reader.number(json, root, QLatin1String("rate"), &m_rate))
         return false;
     if (m_name.isEmpty() || m_name.contains(QLatin1Char('/')))
         return reader.fail(QStringLiteral("/name"),
@@ -96,17 +96,17 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     for (int i = 0; i < channels.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/channels"), i);
         if (!channels.at(i).isObject())
-            return reader.fail(where, QStringLiteral("expected a channel object, got ")
-                                          + jsonTypeName(channels.at(i)));
+            return reader.fail(where, QStringLiteral("expected a channel object, got ") +
+                                          jsonTypeName(channels.at(i)));
         const QJsonObject c = channels.at(i).toObject();
         ChannelSpec spec;
         if (!reader.checkKeys(c, where,
                               {QLatin1String("name"), QLatin1String("unit"), QLatin1String("min"),
-                               QLatin1String("max")})
-            || !reader.string(c, where, QLatin1String("name"), &spec.name)
-            || !reader.string(c, where, QLatin1String("unit"), &spec.unit, false)
-            || !reader.number(c, where, QLatin1String("min"), &spec.min, false)
-            || !reader.number(c, where, QLatin1String("max"), &spec.max, false))
+                               QLatin1String("max")}) ||
+            !reader.string(c, where, QLatin1String("name"), &spec.name) ||
+            !reader.string(c, where, QLatin1String("unit"), &spec.unit, false) ||
+            !reader.number(c, where, QLatin1String("min"), &spec.min, false) ||
+            !reader.number(c, where, QLatin1String("max"), &spec.max, false))
             return false;
         if (spec.name.isEmpty())
             return reader.fail(where + QStringLiteral("/name"), QStringLiteral("is empty"));
@@ -173,7 +173,7 @@ int DeviceModel::channelIndex(const QString &name) const
 double DeviceModel::clamp(int channel, double value) const
 {
     const ChannelSpec &c = m_channels[size_t(channel)];
-    if (!(value >= c.min))  // also maps NaN to the lower limit: never send NaN to hardware
+    if (!(value >= c.min)) // also maps NaN to the lower limit: never send NaN to hardware
         return c.min;
     return value > c.max ? c.max : value;
 }
@@ -256,8 +256,8 @@ DeviceModelPtr DeviceModelLibrary::builtin(const QString &name)
 
 DeviceModelPtr DeviceModelLibrary::load(const QString &nameOrPath, LoadError *error)
 {
-    const bool isPath = nameOrPath.contains(QLatin1Char('/'))
-                        || nameOrPath.endsWith(QLatin1String(".json"));
+    const bool isPath =
+        nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json"));
     if (isPath)
         return DeviceModel::fromFile(nameOrPath, error);
     if (DeviceModelPtr model = builtin(nameOrPath))

@@ -44,7 +44,7 @@ public:
     const std::vector<ChannelSpec> &channels() const { return m_channels; }
     int channelCount() const { return int(m_channels.size()); }
     QStringList channelNames() const;
-    int channelIndex(const QString &name) const;  ///< -1 when the model has no such channel
+    int channelIndex(const QString &name) const; ///< -1 when the model has no such channel
     /** Frames per second the device accepts. */
     double rate() const { return m_rate; }
     /** Dead time before the output starts to follow a command (s). */
@@ -69,7 +69,7 @@ private:
     double m_rate = 100.0;
     double m_latency = 0.0;
     double m_tau = 0.0;
-    QJsonObject m_response;  ///< as written, so toJson keeps bandwidth vs rise
+    QJsonObject m_response; ///< as written, so toJson keeps bandwidth vs rise
 };
 
 using DeviceModelPtr = std::shared_ptr<const DeviceModel>;
@@ -86,9 +86,9 @@ public:
     void reset();
 
 private:
-    std::vector<double> m_delay;  ///< ring buffer of the last `latency` worth of commands
+    std::vector<double> m_delay; ///< ring buffer of the last `latency` worth of commands
     size_t m_head = 0;
-    double m_alpha = 1.0;  ///< exact discretisation of the lag: 1 - exp(-dt / tau)
+    double m_alpha = 1.0; ///< exact discretisation of the lag: 1 - exp(-dt / tau)
     double m_value = 0.0;
 };
 

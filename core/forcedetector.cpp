@@ -12,8 +12,7 @@ namespace {
 // Every parameter's JSON key and field, listed once for reading, writing and checking.
 DetectorParams fields(ForceDetector::Params &p)
 {
-    return {
-            {QLatin1String("grasp"), &p.grasp},
+    return {{QLatin1String("grasp"), &p.grasp},
             {QLatin1String("break"), &p.brk},
             {QLatin1String("max"), &p.max},
             {QLatin1String("hysteresis"), &p.hysteresis},

@@ -15,9 +15,9 @@ class ForceDetector : public Detector
 public:
     struct Params
     {
-        double grasp = 20.0;  ///< T_grasp, N
-        double brk = 80.0;    ///< T_break, N (JSON key "break")
-        double max = 120.0;   ///< F_max, N
+        double grasp = 20.0; ///< T_grasp, N
+        double brk = 80.0;   ///< T_break, N (JSON key "break")
+        double max = 120.0;  ///< F_max, N
         /** Once active, a message stays active until F <= threshold - hysteresis (N). */
         double hysteresis = 0.0;
         /** A message begins only after its condition has held this long (s). */

@@ -26,9 +26,9 @@ bool resolvePatternRoutes(const Pattern &pattern, const DeviceModel &model,
 struct RenderOptions
 {
     double intensity = 1.0;
-    double releaseAt = std::numeric_limits<double>::infinity();  ///< time of the end, s
-    double duration = 1.0;                                       ///< s
-    double rate = 1000.0;                                        ///< samples per second
+    double releaseAt = std::numeric_limits<double>::infinity(); ///< time of the end, s
+    double duration = 1.0;                                      ///< s
+    double rate = 1000.0;                                       ///< samples per second
 };
 
 /** A rendered pattern: sample times and one column of values per model channel. */
@@ -36,7 +36,7 @@ struct RenderedPattern
 {
     QStringList channels;
     std::vector<double> t;
-    std::vector<std::vector<double>> values;  ///< values[channel][sample]
+    std::vector<std::vector<double>> values; ///< values[channel][sample]
 };
 
 /**

@@ -50,8 +50,9 @@ int Player::addDevice(const QString &name, DeviceModelPtr model, MixPolicy polic
     device.model = std::move(model);
     device.policy = policy;
     device.last.channelCount = device.model->channelCount();
-    const auto pos = std::lower_bound(m_devices.begin(), m_devices.end(), name,
-                                      [](const Device &d, const QString &n) { return d.name < n; });
+    const auto pos =
+        std::lower_bound(m_devices.begin(), m_devices.end(), name,
+                         [](const Device &d, const QString &n) { return d.name < n; });
     const auto index = pos - m_devices.begin();
     m_devices.insert(pos, std::move(device));
     for (size_t i = 0; i < m_devices.size(); ++i)

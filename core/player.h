@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "devicemodel.h"
 #include "deviceframe.h"
+#include "devicemodel.h"
 
 #include <QString>
 
@@ -18,12 +18,17 @@ class PlayerInput
 {
 public:
     /** Priority classes for the priority mix: exceptions over confirmations over the rest. */
-    enum Priority { Continuous = 0, Confirmation = 1, Exception = 2 };
+    enum Priority
+    {
+        Continuous = 0,
+        Confirmation = 1,
+        Exception = 2
+    };
 
     struct Route
     {
-        int channel;  ///< device channel index
-        int slot;     ///< the input's own output index
+        int channel; ///< device channel index
+        int slot;    ///< the input's own output index
     };
 
     virtual ~PlayerInput() = default;
@@ -48,10 +53,11 @@ class Player
 {
 public:
     /** How voices that meet on one channel combine. */
-    enum class MixPolicy {
-        Priority,  ///< the highest priority class sounding wins; within it, the maximum
-        Max,       ///< the maximum of all sounding inputs
-        Sum        ///< the sum, clamped to the channel's limits
+    enum class MixPolicy
+    {
+        Priority, ///< the highest priority class sounding wins; within it, the maximum
+        Max,      ///< the maximum of all sounding inputs
+        Sum       ///< the sum, clamped to the channel's limits
     };
     static QString mixPolicyName(MixPolicy policy);
     static bool mixPolicyFromName(const QString &name, MixPolicy *policy);
@@ -84,7 +90,7 @@ private:
         MixPolicy policy = MixPolicy::Priority;
         std::vector<PlayerInput *> inputs;
         double period = 0.01;
-        long long next = 0;  ///< index k of the next instant t0 + k / rate
+        long long next = 0; ///< index k of the next instant t0 + k / rate
         DeviceFrame last;
     };
 

@@ -3,8 +3,8 @@
 
 #include "forcedetector.h"
 #include "jsonreader.h"
-#include "patternrender.h"
 #include "patternlibrary.h"
+#include "patternrender.h"
 #include "routernodes.h"
 #include "routernodetype.h"
 #include "slipdetector.h"
@@ -35,10 +35,7 @@ bool isPath(const QString &nameOrPath)
 class RouterCompiler
 {
 public:
-    RouterCompiler(const RouterGraph &graph, LoadError *error)
-        : m_graph(graph), m_error(error)
-    {
-    }
+    RouterCompiler(const RouterGraph &graph, LoadError *error) : m_graph(graph), m_error(error) {}
 
     std::unique_ptr<Router> compile();
 
@@ -47,9 +44,9 @@ private:
     {
         const RouterNodeType *type = nullptr;
         std::vector<PortSpec> inputs;
-        std::vector<int> inputLinks;  ///< links into each input port
+        std::vector<int> inputLinks; ///< links into each input port
         PatternPtr pattern;
-        QStringList channels;  ///< pattern and proportional nodes: explicit channel list
+        QStringList channels; ///< pattern and proportional nodes: explicit channel list
         DeviceModelPtr model;
         Player::MixPolicy policy = Player::MixPolicy::Priority;
         Gripper gripper = Gripper::Right;
@@ -131,8 +128,9 @@ bool RouterCompiler::readGripper(int node)
 {
     const QJsonValue v = m_graph.nodes[size_t(node)].params.value(QStringLiteral("gripper"));
     if (v.isUndefined())
-        return failNode(node, QString(), QStringLiteral("needs a gripper (\"left\" or "
-                                                        "\"right\")"));
+        return failNode(node, QString(),
+                        QStringLiteral("needs a gripper (\"left\" or "
+                                       "\"right\")"));
     if (!gripperFromName(v.toString(), &m_info[size_t(node)].gripper))
         return failNode(node, QStringLiteral("gripper"),
                         QStringLiteral("must be \"left\" or \"right\""));
@@ -146,8 +144,8 @@ bool RouterCompiler::readNumber(int node, const QString &key, double fallback, d
     if (v.isUndefined())
         return true;
     if (!v.isDouble() || !std::isfinite(v.toDouble()))
-        return failNode(node, key, QStringLiteral("must be a finite number, found ")
-                                       + jsonTypeName(v));
+        return failNode(node, key,
+                        QStringLiteral("must be a finite number, found ") + jsonTypeName(v));
     *out = v.toDouble();
     return true;
 }
@@ -208,8 +206,8 @@ PatternPtr RouterCompiler::findPattern(int node, const QString &name)
     LoadError inner;
     PatternPtr pattern = Pattern::fromFile(path, &inner);
     if (!pattern)
-        failNode(node, QStringLiteral("pattern"), QStringLiteral("cannot load pattern: ")
-                                                      + inner.toString());
+        failNode(node, QStringLiteral("pattern"),
+                 QStringLiteral("cannot load pattern: ") + inner.toString());
     return pattern;
 }
 
@@ -223,10 +221,9 @@ DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
     DeviceModelPtr model = DeviceModelLibrary::load(
         isPath(name) ? QDir(m_graph.baseDir).filePath(name) : name, &inner);
     if (!model)
-        failNode(node, QStringLiteral("model"), isPath(name)
-                                                    ? QStringLiteral("cannot load model: ")
-                                                          + inner.toString()
-                                                    : inner.reason);
+        failNode(node, QStringLiteral("model"),
+                 isPath(name) ? QStringLiteral("cannot load model: ") + inner.toString()
+                              : inner.reason);
     return model;
 }
 
@@ -293,8 +290,9 @@ bool RouterCompiler::buildPattern(int node)
                                 .arg(it.key(), known.join(QStringLiteral(", "))));
         }
         if (!it.value().isDouble() || !std::isfinite(it.value().toDouble()))
-            return failNode(node, it.key(), QStringLiteral("must be a finite number, found ")
-                                                + jsonTypeName(it.value()));
+            return failNode(node, it.key(),
+                            QStringLiteral("must be a finite number, found ") +
+                                jsonTypeName(it.value()));
         defaults.insert(it.key(), it.value());
         overridden = true;
     }
@@ -346,8 +344,8 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
         if (!SignalNode::quantityFromName(params.value(QStringLiteral("quantity")).toString(),
                                           &quantity)) {
             failNode(node, QStringLiteral("quantity"),
-                     QStringLiteral("must be one of ")
-                         + SignalNode::quantityNames().join(QStringLiteral(", ")));
+                     QStringLiteral("must be one of ") +
+                         SignalNode::quantityNames().join(QStringLiteral(", ")));
             return nullptr;
         }
         auto signal = std::make_unique<SignalNode>(m_info[size_t(node)].gripper, quantity);
@@ -361,20 +359,21 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
         if (!readNames(node, QStringLiteral("message"),
                        {messageName(Message::Grasp), messageName(Message::Break),
                         messageName(Message::Slip)},
-                       &messages)
-            || !readNames(node, QStringLiteral("category"),
-                          {categoryName(Category::Confirmation),
-                           categoryName(Category::Exception)},
-                          &categories)
-            || !readNames(node, QStringLiteral("gripper"),
-                          {gripperName(Gripper::Left), gripperName(Gripper::Right)}, &grippers))
+                       &messages) ||
+            !readNames(node, QStringLiteral("category"),
+                       {categoryName(Category::Confirmation), categoryName(Category::Exception)},
+                       &categories) ||
+            !readNames(node, QStringLiteral("gripper"),
+                       {gripperName(Gripper::Left), gripperName(Gripper::Right)}, &grippers))
             return nullptr;
         return std::make_unique<FilterNode>(messages, categories, grippers);
     }
     if (n.type == QLatin1String("gate")) {
-        const QString mode = params.value(QStringLiteral("mode")).toString(QStringLiteral("block"));
+        const QString mode =
+            params.value(QStringLiteral("mode")).toString(QStringLiteral("block"));
         if (mode != QLatin1String("block") && mode != QLatin1String("open")) {
-            failNode(node, QStringLiteral("mode"), QStringLiteral("must be \"block\" or \"open\""));
+            failNode(node, QStringLiteral("mode"),
+                     QStringLiteral("must be \"block\" or \"open\""));
             return nullptr;
         }
         return std::make_unique<GateNode>(mode == QLatin1String("open"));
@@ -382,8 +381,8 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
     if (n.type == QLatin1String("hysteresis")) {
         double hold = 0;
         double band = 0;
-        if (!readNumber(node, QStringLiteral("hold"), 0.0, &hold)
-            || !readNumber(node, QStringLiteral("band"), 0.0, &band))
+        if (!readNumber(node, QStringLiteral("hold"), 0.0, &hold) ||
+            !readNumber(node, QStringLiteral("band"), 0.0, &band))
             return nullptr;
         if (hold < 0 || band < 0 || band > 1) {
             failNode(node, hold < 0 ? QStringLiteral("hold") : QStringLiteral("band"),
@@ -407,9 +406,9 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
         }
         for (const QJsonValue &point : points.toArray()) {
             const QJsonArray xy = point.toArray();
-            if (xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble()
-                || !std::isfinite(xy.at(0).toDouble()) || !std::isfinite(xy.at(1).toDouble())
-                || (!list.empty() && xy.at(0).toDouble() <= list.back().first)) {
+            if (xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble() ||
+                !std::isfinite(xy.at(0).toDouble()) || !std::isfinite(xy.at(1).toDouble()) ||
+                (!list.empty() && xy.at(0).toDouble() <= list.back().first)) {
                 failNode(node, QStringLiteral("points"), expected);
                 return nullptr;
             }
@@ -445,7 +444,7 @@ bool RouterCompiler::buildNode(int node)
     info.inputLinks.assign(info.inputs.size(), 0);
 
     if (n.type == QLatin1String("force") || n.type == QLatin1String("slip"))
-        return buildDetector(node);  // the detector's own reader checks its keys
+        return buildDetector(node); // the detector's own reader checks its keys
     if (n.type == QLatin1String("pattern"))
         return buildPattern(node);
     if (!checkParams(node, info.type->params))
@@ -497,9 +496,8 @@ bool RouterCompiler::resolveLinks()
             for (const PortSpec &p : to.inputs)
                 names.append(p.name);
             return fail(where + QStringLiteral("/to"),
-                        nodeLabel(r.to)
-                            + QStringLiteral(" has no input '%1' (inputs: %2)")
-                                  .arg(toPort, names.join(QStringLiteral(", "))));
+                        nodeLabel(r.to) + QStringLiteral(" has no input '%1' (inputs: %2)")
+                                              .arg(toPort, names.join(QStringLiteral(", "))));
         }
         if (out->type != in->type)
             return fail(where, QStringLiteral("port type mismatch: '%1:%2' sends %3, '%4:%5' "
@@ -557,8 +555,8 @@ bool RouterCompiler::checkFanIn()
     std::vector<std::set<int>> upstream(count);
     bool changed = true;
     for (size_t i = 0; i < count; ++i) {
-        if (m_info[i].type->type == QLatin1String("force")
-            || m_info[i].type->type == QLatin1String("slip"))
+        if (m_info[i].type->type == QLatin1String("force") ||
+            m_info[i].type->type == QLatin1String("slip"))
             upstream[i].insert(int(i));
     }
     while (changed) {
@@ -594,9 +592,8 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
         QString reason;
         if (!resolvePatternRoutes(*source.pattern, model, source.channels, &input->routes,
                                   &reason))
-            return fail(where, nodeLabel(link.from) + QStringLiteral(" -> device '%1': ")
-                                                          .arg(deviceId)
-                                   + reason);
+            return fail(where, nodeLabel(link.from) +
+                                   QStringLiteral(" -> device '%1': ").arg(deviceId) + reason);
         m_router->m_player.addInput(device, input.get());
         pattern->voices.push_back(std::move(input));
         return true;
@@ -607,10 +604,10 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
     for (const QString &name : names) {
         const int channel = model.channelIndex(name);
         if (channel < 0)
-            return fail(where, nodeLabel(link.from)
-                                   + QStringLiteral(" drives channel '%1', which device '%2' "
-                                                    "(%3) does not have")
-                                         .arg(name, deviceId, model.name()));
+            return fail(where, nodeLabel(link.from) +
+                                   QStringLiteral(" drives channel '%1', which device '%2' "
+                                                  "(%3) does not have")
+                                       .arg(name, deviceId, model.name()));
         input->routes.push_back({channel, 0});
     }
     m_router->m_player.addInput(device, input.get());
@@ -700,8 +697,8 @@ std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList 
         const int node = graph.nodeIndex(target.left(int(target.lastIndexOf(QLatin1Char('.')))));
         const QString pointer = QStringLiteral("/nodes/%1").arg(node);
         if (error->pointer == pointer || error->pointer.startsWith(pointer + QLatin1Char('/'))) {
-            *error = LoadError::at(QStringLiteral("--set ") + assignment, QString(),
-                                   error->reason);
+            *error =
+                LoadError::at(QStringLiteral("--set ") + assignment, QString(), error->reason);
             break;
         }
     }

@@ -55,10 +55,10 @@ private:
 
     RouterGraph m_graph;
     QStringList m_nodeIds;
-    std::vector<std::unique_ptr<RuntimeNode>> m_nodes;  ///< graph order; null for devices
+    std::vector<std::unique_ptr<RuntimeNode>> m_nodes; ///< graph order; null for devices
     std::vector<DetectorNode *> m_detectors;
     std::vector<SignalNode *> m_signals;
-    std::vector<RuntimeNode *> m_timed;  ///< nodes that may hold timers
+    std::vector<RuntimeNode *> m_timed; ///< nodes that may hold timers
     Player m_player;
     bool m_started = false;
     friend class RouterCompiler;

@@ -41,17 +41,17 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
     for (int i = 0; i < nodes.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/nodes"), i);
         if (!nodes.at(i).isObject())
-            return reader.fail(where, QStringLiteral("expected a node object, got ")
-                                          + jsonTypeName(nodes.at(i)));
+            return reader.fail(where, QStringLiteral("expected a node object, got ") +
+                                          jsonTypeName(nodes.at(i)));
         const QJsonObject o = nodes.at(i).toObject();
         RouterNode node;
         if (!reader.checkKeys(o, where,
                               {QLatin1String("id"), QLatin1String("type"), QLatin1String("params"),
-                               QLatin1String("ui")})
-            || !reader.string(o, where, QLatin1String("id"), &node.id)
-            || !reader.string(o, where, QLatin1String("type"), &node.type)
-            || !reader.object(o, where, QLatin1String("params"), &node.params, false)
-            || !reader.object(o, where, QLatin1String("ui"), &node.ui, false))
+                               QLatin1String("ui")}) ||
+            !reader.string(o, where, QLatin1String("id"), &node.id) ||
+            !reader.string(o, where, QLatin1String("type"), &node.type) ||
+            !reader.object(o, where, QLatin1String("params"), &node.params, false) ||
+            !reader.object(o, where, QLatin1String("ui"), &node.ui, false))
             return false;
         if (!validId(node.id))
             return reader.fail(where + QStringLiteral("/id"),
@@ -72,14 +72,14 @@ bool readLinks(JsonReader &reader, const QJsonArray &links, RouterGraph *graph)
         const QString where = jsonPointerChild(QStringLiteral("/links"), i);
         if (!links.at(i).isObject())
             return reader.fail(where, QStringLiteral("expected a link object {\"from\", \"to\"}, "
-                                                     "got ")
-                                          + jsonTypeName(links.at(i)));
+                                                     "got ") +
+                                          jsonTypeName(links.at(i)));
         const QJsonObject o = links.at(i).toObject();
         QString from;
         QString to;
-        if (!reader.checkKeys(o, where, {QLatin1String("from"), QLatin1String("to")})
-            || !reader.string(o, where, QLatin1String("from"), &from)
-            || !reader.string(o, where, QLatin1String("to"), &to))
+        if (!reader.checkKeys(o, where, {QLatin1String("from"), QLatin1String("to")}) ||
+            !reader.string(o, where, QLatin1String("from"), &from) ||
+            !reader.string(o, where, QLatin1String("to"), &to))
             return false;
         RouterLink link;
         splitEndpoint(from, &link.from, &link.fromPort);
@@ -118,12 +118,12 @@ bool RouterGraph::readDocument(JsonReader &reader, const QJsonObject &json, Rout
     QJsonArray links;
     QJsonArray patterns;
     QJsonArray models;
-    if (!reader.string(json, root, QLatin1String("name"), &graph->name, false)
-        || !reader.string(json, root, QLatin1String("description"), &graph->description, false)
-        || !reader.array(json, root, QLatin1String("nodes"), &nodes)
-        || !reader.array(json, root, QLatin1String("links"), &links, false)
-        || !reader.array(json, root, QLatin1String("patterns"), &patterns, false)
-        || !reader.array(json, root, QLatin1String("models"), &models, false))
+    if (!reader.string(json, root, QLatin1String("name"), &graph->name, false) ||
+        !reader.string(json, root, QLatin1String("description"), &graph->description, false) ||
+        !reader.array(json, root, QLatin1String("nodes"), &nodes) ||
+        !reader.array(json, root, QLatin1String("links"), &links, false) ||
+        !reader.array(json, root, QLatin1String("patterns"), &patterns, false) ||
+        !reader.array(json, root, QLatin1String("models"), &models, false))
         return false;
     if (!readNodes(reader, nodes, graph) || !readLinks(reader, links, graph))
         return false;
@@ -175,8 +175,9 @@ QJsonObject RouterGraph::toJson() const
     }
     QJsonArray linkArray;
     for (const RouterLink &link : links) {
-        linkArray.append(QJsonObject{{QStringLiteral("from"), joinEndpoint(link.from, link.fromPort)},
-                                     {QStringLiteral("to"), joinEndpoint(link.to, link.toPort)}});
+        linkArray.append(
+            QJsonObject{{QStringLiteral("from"), joinEndpoint(link.from, link.fromPort)},
+                        {QStringLiteral("to"), joinEndpoint(link.to, link.toPort)}});
     }
     QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)},
                      {QStringLiteral("nodes"), nodeArray},
@@ -215,8 +216,7 @@ bool RouterGraph::applyOverride(const QString &assignment, LoadError *error)
     const int equals = int(assignment.indexOf(QLatin1Char('=')));
     const int dot = equals < 0 ? -1 : int(assignment.lastIndexOf(QLatin1Char('.'), equals));
     if (equals < 0 || dot <= 0 || dot + 1 == equals) {
-        *error = LoadError::at(where, QString(),
-                               QStringLiteral("expected NODE.PARAM=VALUE"));
+        *error = LoadError::at(where, QString(), QStringLiteral("expected NODE.PARAM=VALUE"));
         return false;
     }
     const QString nodeId = assignment.left(dot);
@@ -224,8 +224,9 @@ bool RouterGraph::applyOverride(const QString &assignment, LoadError *error)
     const QString text = assignment.mid(equals + 1);
     const int index = nodeIndex(nodeId);
     if (index < 0) {
-        *error = LoadError::at(where, QString(), QStringLiteral("no node '%1' in router '%2'")
-                                                     .arg(nodeId, name.isEmpty() ? file : name));
+        *error = LoadError::at(where, QString(),
+                               QStringLiteral("no node '%1' in router '%2'")
+                                   .arg(nodeId, name.isEmpty() ? file : name));
         return false;
     }
     // Wrap the value so that scalars parse too; fall back to a plain string.
@@ -252,13 +253,15 @@ bool RouterPresets::preset(const QString &name, RouterGraph *graph, LoadError *e
 {
     const QString path = QStringLiteral(":/semhap/routers/%1.json").arg(name);
     if (!QFileInfo::exists(path) || name.contains(QLatin1Char('/'))) {
-        *error = LoadError::at(name, QString(), QStringLiteral("no such router preset "
-                                                               "(presets: %1)")
-                                                    .arg(names().join(QStringLiteral(", "))));
+        *error = LoadError::at(name, QString(),
+                               QStringLiteral("no such router preset "
+                                              "(presets: %1)")
+                                   .arg(names().join(QStringLiteral(", "))));
         return false;
     }
     QJsonObject json;
-    if (!readJsonObjectFile(path, &json, error) || !RouterGraph::fromJson(json, name, graph, error))
+    if (!readJsonObjectFile(path, &json, error) ||
+        !RouterGraph::fromJson(json, name, graph, error))
         return false;
     return true;
 }

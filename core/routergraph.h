@@ -28,9 +28,9 @@ struct RouterNode
 struct RouterLink
 {
     QString from;
-    QString fromPort;  ///< empty: the node's default output
+    QString fromPort; ///< empty: the node's default output
     QString to;
-    QString toPort;    ///< empty: the node's default input
+    QString toPort; ///< empty: the node's default input
 };
 
 /**
@@ -60,12 +60,12 @@ public:
 
     QString name;
     QString description;
-    QString file;     ///< where it was loaded from (errors, relative pattern paths)
-    QString baseDir;  ///< folder relative pattern and model paths are resolved against
+    QString file;    ///< where it was loaded from (errors, relative pattern paths)
+    QString baseDir; ///< folder relative pattern and model paths are resolved against
     std::vector<RouterNode> nodes;
     std::vector<RouterLink> links;
-    std::vector<PatternPtr> patterns;    ///< embedded patterns, found by name first
-    std::vector<DeviceModelPtr> models;  ///< embedded device models, found by name first
+    std::vector<PatternPtr> patterns;   ///< embedded patterns, found by name first
+    std::vector<DeviceModelPtr> models; ///< embedded device models, found by name first
 
 private:
     static bool readDocument(JsonReader &reader, const QJsonObject &json, RouterGraph *graph);

@@ -32,7 +32,8 @@ void ActiveMessages::remove(int key)
     for (int i = 0; i < m_size; ++i) {
         if (m_entries[size_t(i)].key == key) {
             // Keep insertion order: replays (gate reopening) follow the order messages began.
-            std::move(m_entries.begin() + i + 1, m_entries.begin() + m_size, m_entries.begin() + i);
+            std::move(m_entries.begin() + i + 1, m_entries.begin() + m_size,
+                      m_entries.begin() + i);
             --m_size;
             return;
         }
@@ -97,7 +98,7 @@ bool SignalNode::quantityFromName(const QString &name, Quantity *quantity)
 QStringList SignalNode::quantityNames()
 {
     // In Quantity's order.
-    return {QStringLiteral("F"),      QStringLiteral("N"),      QStringLiteral("f.left"),
+    return {QStringLiteral("F"),       QStringLiteral("N"),      QStringLiteral("f.left"),
             QStringLiteral("f.right"), QStringLiteral("n.left"), QStringLiteral("n.right")};
 }
 
@@ -233,8 +234,8 @@ void HysteresisNode::fireTimers(double t)
     for (;;) {
         ActiveMessages::Entry *due = nullptr;
         for (ActiveMessages::Entry &entry : m_active) {
-            if (entry.endPending && entry.pendingEnd <= t
-                && (!due || entry.pendingEnd < due->pendingEnd))
+            if (entry.endPending && entry.pendingEnd <= t &&
+                (!due || entry.pendingEnd < due->pendingEnd))
                 due = &entry;
         }
         if (!due)

@@ -39,15 +39,15 @@ public:
     struct Entry
     {
         int key = -1;
-        SemanticEvent last;         ///< the last event passed on for this message
-        double pendingEnd = 0.0;    ///< hysteresis: time the held-back end is due
+        SemanticEvent last;      ///< the last event passed on for this message
+        double pendingEnd = 0.0; ///< hysteresis: time the held-back end is due
         bool endPending = false;
     };
 
     static int keyOf(const SemanticEvent &e) { return e.node * 8 + int(e.message); }
 
     Entry *find(int key);
-    Entry *insert(int key);  ///< null when full
+    Entry *insert(int key); ///< null when full
     void remove(int key);
     int size() const { return m_size; }
     bool isEmpty() const { return m_size == 0; }
@@ -101,7 +101,15 @@ private:
 class SignalNode : public RuntimeNode
 {
 public:
-    enum class Quantity { F, N, FLeft, FRight, NLeft, NRight };
+    enum class Quantity
+    {
+        F,
+        N,
+        FLeft,
+        FRight,
+        NLeft,
+        NRight
+    };
     static bool quantityFromName(const QString &name, Quantity *quantity);
     static QStringList quantityNames();
 
@@ -121,8 +129,7 @@ public:
     /** Bit sets over Message, Category and Gripper values; 0 means "any". */
     FilterNode(unsigned messages, unsigned categories, unsigned grippers)
         : m_messages(messages), m_categories(categories), m_grippers(grippers)
-    {
-    }
+    {}
     void onEvent(int port, const SemanticEvent &event) override;
 
 private:
@@ -196,8 +203,7 @@ class PatternNode : public RuntimeNode
 public:
     PatternNode(PatternPtr pattern, bool continuous)
         : m_pattern(std::move(pattern)), m_continuous(continuous)
-    {
-    }
+    {}
     void onEvent(int port, const SemanticEvent &event) override;
     void onSignal(int port, double value, double t) override;
     void start(double t) override;

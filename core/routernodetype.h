@@ -9,7 +9,12 @@
 namespace semhap {
 
 /** What flows along a link: semantic events, a continuous value, or a voice's channels. */
-enum class PortType { Event, Signal, Voice };
+enum class PortType
+{
+    Event,
+    Signal,
+    Voice
+};
 
 QString portTypeName(PortType type);
 
@@ -18,7 +23,7 @@ struct PortSpec
 {
     QString name;
     PortType type;
-    bool multiple;  ///< inputs: accepts several links; outputs always do
+    bool multiple; ///< inputs: accepts several links; outputs always do
 };
 
 /**
@@ -29,9 +34,9 @@ struct RouterNodeType
 {
     QString type;
     QString description;
-    std::vector<PortSpec> inputs;   ///< the first is the default input
-    std::vector<PortSpec> outputs;  ///< the first is the default output
-    QStringList params;             ///< known parameters (pattern nodes add the pattern's)
+    std::vector<PortSpec> inputs;  ///< the first is the default input
+    std::vector<PortSpec> outputs; ///< the first is the default output
+    QStringList params;            ///< known parameters (pattern nodes add the pattern's)
 
     const PortSpec *input(const QString &name) const;
     const PortSpec *output(const QString &name) const;

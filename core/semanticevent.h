@@ -8,11 +8,29 @@
 namespace semhap {
 
 /** The kind of detector that produced an event. */
-enum class DetectorKind { Force, Slip };
+enum class DetectorKind
+{
+    Force,
+    Slip
+};
 /** A semantic message. grasp is a confirmation; break and slip are exceptions. */
-enum class Message { Grasp, Break, Slip };
-enum class Category { Confirmation, Exception };
-enum class EventPhase { Begin, Update, End };
+enum class Message
+{
+    Grasp,
+    Break,
+    Slip
+};
+enum class Category
+{
+    Confirmation,
+    Exception
+};
+enum class EventPhase
+{
+    Begin,
+    Update,
+    End
+};
 
 QString detectorKindName(DetectorKind kind);
 QString messageName(Message message);
@@ -38,7 +56,7 @@ struct SemanticEvent
     Message message = Message::Grasp;
     Category category = Category::Confirmation;
     EventPhase phase = EventPhase::Begin;
-    double intensity = 1.0;  ///< in [0, 1]; on end, the last value
+    double intensity = 1.0; ///< in [0, 1]; on end, the last value
 };
 
 } // namespace semhap

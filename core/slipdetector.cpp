@@ -12,8 +12,7 @@ namespace {
 // Every parameter's JSON key and field, listed once for reading, writing and checking.
 DetectorParams fields(SlipDetector::Params &p)
 {
-    return {
-            {QLatin1String("grasp"), &p.grasp},
+    return {{QLatin1String("grasp"), &p.grasp},
             {QLatin1String("loss"), &p.loss},
             {QLatin1String("min"), &p.min},
             {QLatin1String("hysteresis"), &p.hysteresis},

@@ -17,9 +17,9 @@ class SlipDetector : public Detector
 public:
     struct Params
     {
-        double grasp = 20.0;  ///< T_grasp, N
-        double loss = 28.0;   ///< N_loss, contacts
-        double min = 8.0;     ///< N_min, contacts (< loss)
+        double grasp = 20.0; ///< T_grasp, N
+        double loss = 28.0;  ///< N_loss, contacts
+        double min = 8.0;    ///< N_min, contacts (< loss)
         /** Once slipping, slip stays active until N >= loss + hysteresis (contacts). */
         double hysteresis = 0.0;
         /** A message begins only after its condition has held this long (s). */

@@ -96,8 +96,9 @@ bool readKey(JsonReader &reader, const QJsonObject &object, const QString &point
     if (value.isUndefined())
         return required ? reader.require(object, pointer, key) : true;
     if (!isRightType(value))
-        return reader.fail(jsonPointerChild(pointer, key),
-                           QStringLiteral("expected %1, got %2").arg(expected, jsonTypeName(value)));
+        return reader.fail(
+            jsonPointerChild(pointer, key),
+            QStringLiteral("expected %1, got %2").arg(expected, jsonTypeName(value)));
     return true;
 }
 
@@ -160,10 +161,10 @@ bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *
         return false;
     }
     if (!document.isObject()) {
-        *error = LoadError::at(file, QString(),
-                               QStringLiteral("expected a JSON object, got ")
-                                   + (document.isArray() ? QStringLiteral("an array")
-                                                         : QStringLiteral("nothing")));
+        *error = LoadError::at(
+            file, QString(),
+            QStringLiteral("expected a JSON object, got ") +
+                (document.isArray() ? QStringLiteral("an array") : QStringLiteral("nothing")));
         return false;
     }
     *object = document.object();
@@ -174,7 +175,8 @@ bool readJsonObjectFile(const QString &path, QJsonObject *object, LoadError *err
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
+        *error =
+            LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
         return false;
     }
     return parseJsonObject(file.readAll(), path, object, error);
@@ -185,8 +187,7 @@ bool checkFormat(const QJsonObject &object, const QString &file, QLatin1String e
 {
     JsonReader reader(file);
     QString format;
-    if (reader.string(object, QString(), QLatin1String("format"), &format)
-        && format != expected)
+    if (reader.string(object, QString(), QLatin1String("format"), &format) && format != expected)
         reader.fail(QStringLiteral("/format"), QStringLiteral("unsupported format %1, expected %2")
                                                    .arg(quoted(format), quoted(expected)));
     if (reader.error().isSet() && error)

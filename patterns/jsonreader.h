@@ -42,10 +42,10 @@ public:
      * Typed reads of `key` in `object` (at `pointer`): a missing key leaves `out` alone
      * unless `required`; a value of the wrong type always fails.
      */
-    bool string(const QJsonObject &object, const QString &pointer, QLatin1String key,
-                QString *out, bool required = true);
-    bool number(const QJsonObject &object, const QString &pointer, QLatin1String key,
-                double *out, bool required = true);
+    bool string(const QJsonObject &object, const QString &pointer, QLatin1String key, QString *out,
+                bool required = true);
+    bool number(const QJsonObject &object, const QString &pointer, QLatin1String key, double *out,
+                bool required = true);
     bool object(const QJsonObject &object, const QString &pointer, QLatin1String key,
                 QJsonObject *out, bool required = true);
     bool array(const QJsonObject &object, const QString &pointer, QLatin1String key,

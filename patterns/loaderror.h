@@ -11,11 +11,11 @@ namespace semhap {
  */
 struct LoadError
 {
-    QString file;     ///< file name as the user gave it (or a resource path)
-    int line = 0;     ///< 1-based line, 0 when the error is not tied to a line
-    int column = 0;   ///< 1-based column, 0 when unknown
-    QString pointer;  ///< RFC 6901 JSON pointer into the document; empty: the whole file
-    QString reason;   ///< one sentence, no trailing period
+    QString file;    ///< file name as the user gave it (or a resource path)
+    int line = 0;    ///< 1-based line, 0 when the error is not tied to a line
+    int column = 0;  ///< 1-based column, 0 when unknown
+    QString pointer; ///< RFC 6901 JSON pointer into the document; empty: the whole file
+    QString reason;  ///< one sentence, no trailing period
 
     bool isSet() const { return !reason.isEmpty(); }
     QString toString() const;

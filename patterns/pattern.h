@@ -20,11 +20,11 @@ namespace semhap {
  */
 struct PatternTrack
 {
-    QStringList channels;  ///< channel names of the pattern's model; `{"*"}` means all
-    SignalPtr attack;      ///< may be null: begin goes straight to the sustain
-    SignalPtr sustain;     ///< never null (a missing sustain parses as the constant 0)
-    SignalPtr release;     ///< may be null: end drops to 0 at once; otherwise finite
-    int stateSize = 0;     ///< state slots of the three signals together
+    QStringList channels; ///< channel names of the pattern's model; `{"*"}` means all
+    SignalPtr attack;     ///< may be null: begin goes straight to the sustain
+    SignalPtr sustain;    ///< never null (a missing sustain parses as the constant 0)
+    SignalPtr release;    ///< may be null: end drops to 0 at once; otherwise finite
+    int stateSize = 0;    ///< state slots of the three signals together
 };
 
 /**

@@ -17,11 +17,11 @@ namespace semhap {
 class ParamTable
 {
 public:
-    ParamTable();  ///< holds `intensity` (index 0, default 1) and nothing else
+    ParamTable(); ///< holds `intensity` (index 0, default 1) and nothing else
 
     /** Adds a parameter or changes its default; returns its index. */
     int declare(const QString &name, double defaultValue);
-    int indexOf(const QString &name) const;  ///< -1 when unknown
+    int indexOf(const QString &name) const; ///< -1 when unknown
     int size() const { return int(m_names.size()); }
     const QString &name(int index) const { return m_names[size_t(index)]; }
     double defaultValue(int index) const { return m_defaults[size_t(index)]; }
@@ -38,7 +38,7 @@ private:
 class Curve
 {
 public:
-    Curve() = default;  ///< identity
+    Curve() = default; ///< identity
     static Curve linear(double gain, double offset);
     /** Piecewise linear through points sorted by x, held constant outside them. */
     static Curve points(std::vector<std::pair<double, double>> points);
@@ -46,7 +46,12 @@ public:
     double map(double x) const;
     bool isIdentity() const { return m_kind == Kind::Identity; }
 
-    enum class Kind { Identity, Linear, Points };
+    enum class Kind
+    {
+        Identity,
+        Linear,
+        Points
+    };
     Kind kind() const { return m_kind; }
     double gain() const { return m_gain; }
     double offset() const { return m_offset; }
@@ -67,7 +72,7 @@ private:
 class Number
 {
 public:
-    Number(double constant = 0.0) : m_constant(constant) {}  // NOLINT: numbers convert
+    Number(double constant = 0.0) : m_constant(constant) {} // NOLINT: numbers convert
     static Number bound(int param, Curve curve);
 
     double value(const double *params) const
@@ -93,13 +98,13 @@ void insertNumber(QJsonObject &object, const QString &key, const Number &number,
 /** Everything a signal needs to produce one sample. */
 struct SignalContext
 {
-    double t = 0.0;                  ///< seconds since this signal started
-    double dt = 0.0;                 ///< seconds since the previous sample, 0 on the first
-    double from = 0.0;               ///< the track's value when this signal started
-    double peak = 0.0;               ///< the track's highest value from the last begin
-                                     ///< to the start of this signal
-    const double *params = nullptr;  ///< live parameter values, indexed as the ParamTable
-    double *state = nullptr;         ///< the voice's state slots for the whole signal tree
+    double t = 0.0;                 ///< seconds since this signal started
+    double dt = 0.0;                ///< seconds since the previous sample, 0 on the first
+    double from = 0.0;              ///< the track's value when this signal started
+    double peak = 0.0;              ///< the track's highest value from the last begin
+                                    ///< to the start of this signal
+    const double *params = nullptr; ///< live parameter values, indexed as the ParamTable
+    double *state = nullptr;        ///< the voice's state slots for the whole signal tree
 };
 
 /**

@@ -19,7 +19,13 @@ namespace semhap {
 class Voice
 {
 public:
-    enum class Phase { Idle, Attack, Sustain, Release };
+    enum class Phase
+    {
+        Idle,
+        Attack,
+        Sustain,
+        Release
+    };
 
     explicit Voice(PatternPtr pattern);
 
@@ -54,12 +60,12 @@ private:
     struct TrackState
     {
         Phase phase = Phase::Idle;
-        double segmentStart = 0.0;  ///< absolute time the current segment began
-        double from = 0.0;          ///< value when the segment began
-        double peak = 0.0;          ///< highest value since the last begin
-        double segmentPeak = 0.0;   ///< peak when the segment began (SignalContext::peak)
-        double value = 0.0;         ///< value at the last sample
-        int stateOffset = 0;        ///< first state slot of this track
+        double segmentStart = 0.0; ///< absolute time the current segment began
+        double from = 0.0;         ///< value when the segment began
+        double peak = 0.0;         ///< highest value since the last begin
+        double segmentPeak = 0.0;  ///< peak when the segment began (SignalContext::peak)
+        double value = 0.0;        ///< value at the last sample
+        int stateOffset = 0;       ///< first state slot of this track
     };
 
     void advanceTrack(size_t index, double t);

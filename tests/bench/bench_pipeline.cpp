@@ -50,7 +50,7 @@ void makeFrames(double t, ContactFrame *left, ContactFrame *right)
     }
     left->t = t;
     left->gripper = Gripper::Left;
-    const int rows = int(std::fmod(t, 3.0) * 3);  // 0..8 rows lost, a row at a time
+    const int rows = int(std::fmod(t, 3.0) * 3); // 0..8 rows lost, a row at a time
     for (Fingertip *tip : {&left->left, &left->right}) {
         tip->f = 15;
         tip->n = std::max(0, 16 - 4 * (rows / 2));
@@ -61,8 +61,8 @@ void makeFrames(double t, ContactFrame *left, ContactFrame *right)
 double percentile(std::vector<double> sorted, double p)
 {
     std::sort(sorted.begin(), sorted.end());
-    const auto index = size_t(std::clamp(p * double(sorted.size() - 1), 0.0,
-                                         double(sorted.size() - 1)));
+    const auto index =
+        size_t(std::clamp(p * double(sorted.size() - 1), 0.0, double(sorted.size() - 1)));
     return sorted[index];
 }
 
@@ -107,10 +107,10 @@ int main(int argc, char *argv[])
     const long allocations = test::stopCountingAllocations();
 
     std::printf("bench_pipeline: C3, 2 grippers at 1 kHz, 7 devices, %d ticks\n", ticks);
-    std::printf("  per tick: median %.2f us, p99 %.2f us, max %.2f us\n",
-                percentile(micros, 0.5), percentile(micros, 0.99), percentile(micros, 1.0));
-    std::printf("  heap allocations per tick: %.3f (%ld in all)\n",
-                double(allocations) / ticks, allocations);
+    std::printf("  per tick: median %.2f us, p99 %.2f us, max %.2f us\n", percentile(micros, 0.5),
+                percentile(micros, 0.99), percentile(micros, 1.0));
+    std::printf("  heap allocations per tick: %.3f (%ld in all)\n", double(allocations) / ticks,
+                allocations);
     std::printf("  output: %ld events, %ld device frames (checksum %.3f)\n", sink.events,
                 sink.frames, sink.checksum);
     return 0;

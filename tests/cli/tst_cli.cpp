@@ -70,17 +70,17 @@ void TestCli::errors_data()
     const QString syntax = Data + "/syntax-error.json";
 
     QTest::newRow("no command") << QStringList{} << 2 << "Usage: semhap COMMAND [OPTIONS]";
-    QTest::newRow("unknown command") << QStringList{"frobnicate"} << 2
-                                     << "semhap: unknown command 'frobnicate'";
-    QTest::newRow("unknown option") << QStringList{"route", "--bogus"} << 2
-                                    << "semhap route: Unknown option 'bogus'.";
-    QTest::newRow("route without router") << QStringList{"route", "--frames", Trace} << 2
-                                          << "semhap route: --router is required";
-    QTest::newRow("route without frames") << QStringList{"route", "--router", "C3"} << 2
-                                          << "semhap route: --frames is required";
+    QTest::newRow("unknown command")
+        << QStringList{"frobnicate"} << 2 << "semhap: unknown command 'frobnicate'";
+    QTest::newRow("unknown option")
+        << QStringList{"route", "--bogus"} << 2 << "semhap route: Unknown option 'bogus'.";
+    QTest::newRow("route without router")
+        << QStringList{"route", "--frames", Trace} << 2 << "semhap route: --router is required";
+    QTest::newRow("route without frames")
+        << QStringList{"route", "--router", "C3"} << 2 << "semhap route: --frames is required";
     QTest::newRow("two outputs on stdout")
-        << QStringList{"route", "--router", "C3", "--frames", Trace, "--events", "-",
-                       "--device-frames", "-"}
+        << QStringList{"route", "--router",        "C3", "--frames", Trace, "--events",
+                       "-",     "--device-frames", "-"}
         << 2 << "semhap route: at most one output may be '-' (standard output)";
     QTest::newRow("unknown preset")
         << QStringList{"route", "--router", "C5", "--frames", Trace} << 1
@@ -89,7 +89,12 @@ void TestCli::errors_data()
         << QStringList{"route", "--router", "C3", "--frames", "/nonexistent/frames.jsonl"} << 1
         << "/nonexistent/frames.jsonl: cannot read: No such file or directory";
     QTest::newRow("bad override")
-        << QStringList{"route", "--router", "C3", "--frames", Trace, "--set",
+        << QStringList{"route",
+                       "--router",
+                       "C3",
+                       "--frames",
+                       Trace,
+                       "--set",
                        "right.force.break=200"}
         << 1
         << "--set right.force.break=200: node 'right.force' (force): must be greater than break "
@@ -100,8 +105,8 @@ void TestCli::errors_data()
     QTest::newRow("router syntax error")
         << QStringList{"route", "--router", syntax, "--frames", Trace} << 1
         << syntax + ":3:17: invalid JSON: unterminated object";
-    QTest::newRow("render without pattern") << QStringList{"render"} << 2
-                                            << "semhap render: a pattern name or file is required";
+    QTest::newRow("render without pattern")
+        << QStringList{"render"} << 2 << "semhap render: a pattern name or file is required";
     QTest::newRow("render without duration")
         << QStringList{"render", "vib.geiger", "--rate", "1000"} << 2
         << "semhap render: --duration is required";
@@ -109,15 +114,15 @@ void TestCli::errors_data()
         << QStringList{"render", "vib.geiger", "--duration", "x", "--rate", "10"} << 2
         << "semhap render: --duration expects a number, got 'x'";
     QTest::newRow("render intensity range")
-        << QStringList{"render", "vib.geiger", "--duration", "1", "--rate", "10", "--intensity",
-                       "2"}
+        << QStringList{"render", "vib.geiger", "--duration",  "1",
+                       "--rate", "10",         "--intensity", "2"}
         << 2 << "semhap render: --intensity must be within [0, 1]";
     QTest::newRow("render unknown pattern")
         << QStringList{"render", "vib.geigr", "--duration", "1", "--rate", "10"} << 1
         << "vib.geigr: no built-in pattern of that name (there are air.proportional, "
            "air.pulse5hz, air.squeeze, vib.geiger, vib.rampup, visual.blink, visual.confirm)";
-    QTest::newRow("validate nothing") << QStringList{"validate"} << 2
-                                      << "semhap validate: no files given";
+    QTest::newRow("validate nothing")
+        << QStringList{"validate"} << 2 << "semhap validate: no files given";
     QTest::newRow("validate broken pattern")
         << QStringList{"validate", Data + "/broken-pattern.json"} << 1
         << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "
@@ -143,7 +148,8 @@ void TestCli::help()
     for (const char *command : {"route", "render", "validate"}) {
         const Result r = semhapRun({command, "--help"});
         QCOMPARE(r.code, 0);
-        QVERIFY2(r.out.contains(QByteArray(QByteArray("Usage: semhap ") + command)), r.out.constData());
+        QVERIFY2(r.out.contains(QByteArray(QByteArray("Usage: semhap ") + command)),
+                 r.out.constData());
         QVERIFY(r.err.isEmpty());
     }
 }
@@ -177,20 +183,20 @@ void TestCli::renderGeigerPulses()
     for (int k = 1; k < lines.size(); ++k) {
         const QStringList row = QString::fromUtf8(lines[k]).split(',');
         QCOMPARE(row[0].toDouble(), (k - 1) / 1000.0);
-        QCOMPARE(row[1], row[4]);  // all four motors together
+        QCOMPARE(row[1], row[4]); // all four motors together
         const bool on = row[1].toDouble() > 0.5;
         pulses += on && !previous;
         high += on;
         previous = on;
     }
-    QCOMPARE(pulses, 33);       // 2 + 18 · 0.5 = 11 Hz for 3 s
-    QCOMPARE(high, 33 * 25);    // 25 ms each
+    QCOMPARE(pulses, 33);    // 2 + 18 · 0.5 = 11 Hz for 3 s
+    QCOMPARE(high, 33 * 25); // 25 ms each
 }
 
 void TestCli::renderReleaseRamp()
 {
-    const Result r = semhapRun({"render", "air.squeeze", "--release-at", "0.5", "--duration",
-                                "1.2", "--rate", "10"});
+    const Result r = semhapRun(
+        {"render", "air.squeeze", "--release-at", "0.5", "--duration", "1.2", "--rate", "10"});
     QCOMPARE(r.code, 0);
     const double expected[] = {0, 0.2, 0.4, 0.6, 0.8, 1.0, 0.8, 0.6, 0.4, 0.2, 0, 0};
     QCOMPARE(csvRow(r.out, 0).size(), 7);
@@ -204,8 +210,8 @@ void TestCli::renderReleaseRamp()
 void TestCli::renderToFile()
 {
     const QString path = QDir::temp().filePath("semhap-tst-cli-render.csv");
-    const Result r = semhapRun({"render", "air.pulse5hz", "--duration", "0.4", "--rate", "20",
-                                "--out", path});
+    const Result r =
+        semhapRun({"render", "air.pulse5hz", "--duration", "0.4", "--rate", "20", "--out", path});
     QCOMPARE(r.code, 0);
     QVERIFY(r.out.isEmpty());
     QFile file(path);
@@ -233,11 +239,11 @@ void TestCli::validate()
     QCOMPARE(ok.out.count('\n'), files.size());
     QVERIFY(ok.err.isEmpty());
 
-    const Result bad = semhapRun({"validate", files.first(), Data + "/broken-router.json",
-                                  Data + "/syntax-error.json"});
+    const Result bad = semhapRun(
+        {"validate", files.first(), Data + "/broken-router.json", Data + "/syntax-error.json"});
     QCOMPARE(bad.code, 1);
     QCOMPARE(bad.out.count('\n'), 1);
-    QCOMPARE(bad.err.count('\n'), 2);  // one line per broken file
+    QCOMPARE(bad.err.count('\n'), 2); // one line per broken file
 }
 
 void TestCli::realBinaryReadsStdin()
@@ -252,7 +258,7 @@ void TestCli::realBinaryReadsStdin()
     QVERIFY(semhap.waitForFinished(30000));
     QCOMPARE(semhap.exitCode(), 0);
     QCOMPARE(semhap.readAllStandardError(), QByteArray());
-    QCOMPARE(semhap.readAllStandardOutput().count('\n'), 170);  // reference_events.py's count
+    QCOMPARE(semhap.readAllStandardOutput().count('\n'), 170); // reference_events.py's count
 }
 
 QTEST_GUILESS_MAIN(TestCli)

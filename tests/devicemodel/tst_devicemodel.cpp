@@ -31,8 +31,8 @@ void TestDeviceModel::builtins_data()
     QTest::addColumn<QString>("name");
     QTest::addColumn<QStringList>("channels");
     QTest::addColumn<double>("rate");
-    QTest::newRow("pneumatic6") << "pneumatic6"
-                                << QStringList{"b1", "b2", "b3", "b4", "b5", "b6"} << 100.0;
+    QTest::newRow("pneumatic6") << "pneumatic6" << QStringList{"b1", "b2", "b3", "b4", "b5", "b6"}
+                                << 100.0;
     QTest::newRow("lra4") << "lra4" << QStringList{"m1", "m2", "m3", "m4"} << 500.0;
     QTest::newRow("fingertips2") << "fingertips2" << QStringList{"thumb", "index"} << 100.0;
     QTest::newRow("overlay") << "overlay"
@@ -107,9 +107,9 @@ void TestDeviceModel::riseTimeMatchesModel()
     const double rate = 100000;
     const std::vector<double> out = model->predict(std::vector<double>(5000, 1.0), rate);
     const auto crossing = [&](double level) {
-        return double(std::find_if(out.begin(), out.end(), [&](double v) { return v >= level; })
-                      - out.begin())
-               / rate;
+        return double(std::find_if(out.begin(), out.end(), [&](double v) { return v >= level; }) -
+                      out.begin()) /
+               rate;
     };
     QVERIFY(std::abs(crossing(0.9) - crossing(0.1) - 0.012) < 1e-4);
 }
@@ -137,8 +137,7 @@ void TestDeviceModel::malformed_data()
                             << "m.json:2:14: invalid JSON: illegal value";
     QTest::newRow("not object") << QByteArray("[1]")
                                 << "m.json: expected a JSON object, got an array";
-    QTest::newRow("no format") << QByteArray(R"({"name": "x"})")
-                               << "m.json: missing key 'format'";
+    QTest::newRow("no format") << QByteArray(R"({"name": "x"})") << "m.json: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format": "semhap.pattern/1"})")
         << "m.json: /format: unsupported format 'semhap.pattern/1', expected 'semhap.device/1'";
@@ -146,16 +145,16 @@ void TestDeviceModel::malformed_data()
                                  << "m.json: missing key 'channels'";
     QTest::newRow("empty channels") << "{" + ok + R"(, "channels": []})"
                                     << "m.json: /channels: must list 1 to 16 channels";
-    QTest::newRow("channel not object") << "{" + ok + R"(, "channels": [3]})"
-                                        << "m.json: /channels/0: expected a channel object, got a number";
+    QTest::newRow("channel not object")
+        << "{" + ok + R"(, "channels": [3]})"
+        << "m.json: /channels/0: expected a channel object, got a number";
     QTest::newRow("duplicate channel")
         << "{" + ok + R"(, "channels": [{"name": "a"}, {"name": "a"}]})"
         << "m.json: /channels/1/name: duplicate channel 'a'";
     QTest::newRow("min above max") << "{" + ok + R"(, "channels": [{"name": "a", "min": 2}]})"
                                    << "m.json: /channels/0: min must be below max";
-    QTest::newRow("string limit")
-        << "{" + ok + R"(, "channels": [{"name": "a", "max": "1"}]})"
-        << "m.json: /channels/0/max: expected a number, got a string";
+    QTest::newRow("string limit") << "{" + ok + R"(, "channels": [{"name": "a", "max": "1"}]})"
+                                  << "m.json: /channels/0/max: expected a number, got a string";
     QTest::newRow("zero rate")
         << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 0, "channels": []})")
         << "m.json: /rate: must be between 0 and 100000 frames/s";
@@ -163,8 +162,8 @@ void TestDeviceModel::malformed_data()
         << QByteArray(R"({"format": "semhap.device/1", "name": "a/b", "rate": 1})")
         << "m.json: /name: must be a non-empty name without '/'";
     QTest::newRow("both bandwidth and rise")
-        << "{" + ok
-               + R"(, "channels": [{"name": "a"}], "response": {"bandwidth": 7, "rise": 0.01}})"
+        << "{" + ok +
+               R"(, "channels": [{"name": "a"}], "response": {"bandwidth": 7, "rise": 0.01}})"
         << "m.json: /response: give bandwidth or rise, not both";
     QTest::newRow("negative bandwidth")
         << "{" + ok + R"(, "channels": [{"name": "a"}], "response": {"bandwidth": -1}})"

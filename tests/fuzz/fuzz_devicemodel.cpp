@@ -12,8 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const QByteArray bytes(reinterpret_cast<const char *>(data), qsizetype(size));
     if (!semhap::parseJsonObject(bytes, QStringLiteral("fuzz"), &json, &error))
         return 0;
-    semhap::DeviceModelPtr model = semhap::DeviceModel::fromJson(json, QStringLiteral("fuzz"),
-                                                                 &error);
+    semhap::DeviceModelPtr model =
+        semhap::DeviceModel::fromJson(json, QStringLiteral("fuzz"), &error);
     if (!model)
         return 0;
     if (!semhap::DeviceModel::fromJson(model->toJson(), QStringLiteral("again"), &error))

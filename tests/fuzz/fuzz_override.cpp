@@ -4,8 +4,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    const QString assignment = QString::fromUtf8(reinterpret_cast<const char *>(data),
-                                                 qsizetype(size));
+    const QString assignment =
+        QString::fromUtf8(reinterpret_cast<const char *>(data), qsizetype(size));
     semhap::LoadError error;
     semhap::loadRouter(QStringLiteral("C3"), {assignment}, &error);
     return 0;

@@ -9,8 +9,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     semhap::LoadError error;
     const QByteArray bytes(reinterpret_cast<const char *>(data), qsizetype(size));
     semhap::RouterGraph graph;
-    if (!semhap::parseJsonObject(bytes, QStringLiteral("fuzz"), &json, &error)
-        || !semhap::RouterGraph::fromJson(json, QStringLiteral("fuzz"), &graph, &error))
+    if (!semhap::parseJsonObject(bytes, QStringLiteral("fuzz"), &json, &error) ||
+        !semhap::RouterGraph::fromJson(json, QStringLiteral("fuzz"), &graph, &error))
         return 0;
     std::unique_ptr<semhap::Router> router = semhap::Router::compile(graph, &error);
     if (!router)

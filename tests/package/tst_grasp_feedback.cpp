@@ -55,7 +55,7 @@ private slots:
         QCOMPARE(out.events[0].message, semhap::Message::Grasp);
         QCOMPARE(out.events[0].phase, semhap::EventPhase::Begin);
         QCOMPARE(out.events[1].message, semhap::Message::Break);
-        QCOMPARE(out.events[1].intensity, 0.5);  // (100 - 80) / (120 - 80)
+        QCOMPARE(out.events[1].intensity, 0.5); // (100 - 80) / (120 - 80)
         QCOMPARE(pipeline.router().nodeIds()[out.events[1].node], QString("right.force"));
 
         // The air band confirms the grasp: 0.9 s after it began it is fully inflated.

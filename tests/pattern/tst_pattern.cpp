@@ -146,7 +146,8 @@ void TestPattern::errors_data()
     QTest::newRow("bad JSON: stray comma, after a multi-byte line")
         << QByteArray("{\"a\": 1,\n \"Über\": [1, 2,,]\n}")
         << "FILE:2:17: invalid JSON: illegal value";
-    QTest::newRow("not an object") << QByteArray("[1]") << "FILE: expected a JSON object, got an array";
+    QTest::newRow("not an object")
+        << QByteArray("[1]") << "FILE: expected a JSON object, got an array";
     QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format":"semhap.router/1","name":"p"})")

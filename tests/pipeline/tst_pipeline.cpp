@@ -51,8 +51,7 @@ std::unique_ptr<Router> router(const QString &preset, const QStringList &overrid
 }
 
 /** Runs frames at 1 kHz from t0 with F given by `force(t)`; returns what came out. */
-template<typename Force>
-Recorded run(const QString &preset, double t0, double t1, Force force)
+template<typename Force> Recorded run(const QString &preset, double t0, double t1, Force force)
 {
     Pipeline pipeline(router(preset));
     Recorded recorded;
@@ -136,8 +135,8 @@ void TestPipeline::framesOrderedByTimeThenName()
     for (size_t i = 1; i < r.frames.size(); ++i) {
         const DeviceFrame &a = r.frames[i - 1];
         const DeviceFrame &b = r.frames[i];
-        QVERIFY(a.t < b.t || (a.t == b.t && c3->player().deviceName(a.device)
-                                                < c3->player().deviceName(b.device)));
+        QVERIFY(a.t < b.t || (a.t == b.t && c3->player().deviceName(a.device) <
+                                                c3->player().deviceName(b.device)));
     }
     // At t = 0 every device has an instant: all seven, in name order.
     QCOMPARE(r.frames.size() >= 7, true);
@@ -156,9 +155,8 @@ void TestPipeline::instantAtFrameTimeSeesThatFrame()
     pipeline.process(rightFrame(0.01, 50.0), sink);
     const int air = pipeline.router().player().deviceIndex("right.air");
     const auto atBreak = [&] {
-        return std::find_if(r.frames.begin(), r.frames.end(), [&](const DeviceFrame &f) {
-            return f.device == air && f.t == 0.01;
-        });
+        return std::find_if(r.frames.begin(), r.frames.end(),
+                            [&](const DeviceFrame &f) { return f.device == air && f.t == 0.01; });
     };
     QVERIFY(atBreak() == r.frames.end());
     for (const DeviceFrame &f : r.frames)
@@ -191,24 +189,28 @@ void TestPipeline::exceptionOverridesConfirmationOnSharedChannel()
 {
     // C4: squeeze (confirmation) and pulse5hz (exception) share right.air. F = 30 from 0.1 s,
     // 100 (break) from 1.0 s to 1.6 s, then 30 again.
-    const auto force = [](double t) { return t < 0.1 ? 0.0 : (t >= 1.0 && t < 1.6 ? 100.0 : 30.0); };
+    const auto force = [](double t) {
+        return t < 0.1 ? 0.0 : (t >= 1.0 && t < 1.6 ? 100.0 : 30.0);
+    };
     const Recorded r = run("C4", 0.0, 2.5, force);
     const std::unique_ptr<Router> c4 = router("C4");
     const auto air = channel(r, *c4, "right.air", 0);
-    QCOMPARE(valueAt(air, 0.9), 1.0);     // squeezed
-    QCOMPARE(valueAt(air, 1.0), 1.0);     // pulse starts high
+    QCOMPARE(valueAt(air, 0.9), 1.0); // squeezed
+    QCOMPARE(valueAt(air, 1.0), 1.0); // pulse starts high
     QCOMPARE(valueAt(air, 1.09), 1.0);
-    QCOMPARE(valueAt(air, 1.1), 0.0);     // low half of the 5 Hz square wins over the squeeze
+    QCOMPARE(valueAt(air, 1.1), 0.0); // low half of the 5 Hz square wins over the squeeze
     QCOMPARE(valueAt(air, 1.19), 0.0);
     QCOMPARE(valueAt(air, 1.2), 1.0);
-    QCOMPARE(valueAt(air, 1.6), 1.0);     // the exception ended: the squeeze is back
+    QCOMPARE(valueAt(air, 1.6), 1.0); // the exception ended: the squeeze is back
     QCOMPARE(valueAt(air, 2.5), 1.0);
 }
 
 void TestPipeline::maxPolicyMasksThePulse()
 {
     // The same with the max policy: the squeeze at 1 hides the pulse. Why priority is default.
-    const auto force = [](double t) { return t < 0.1 ? 0.0 : (t >= 1.0 && t < 1.6 ? 100.0 : 30.0); };
+    const auto force = [](double t) {
+        return t < 0.1 ? 0.0 : (t >= 1.0 && t < 1.6 ? 100.0 : 30.0);
+    };
     Pipeline pipeline(router("C4", {"right.air.policy=\"max\""}));
     Recorded r;
     RecordingSink sink(r);
@@ -237,8 +239,8 @@ void TestPipeline::geigerRateFollowsIntensity()
         high += v > 0.5;
         previous = v;
     }
-    QCOMPARE(rising, 11);                         // pulses at 0, 1/11, … 10/11 s
-    QVERIFY(std::abs(high - 11 * 12.5) <= 11);    // 25 ms each at 500 Hz
+    QCOMPARE(rising, 11);                      // pulses at 0, 1/11, … 10/11 s
+    QVERIFY(std::abs(high - 11 * 12.5) <= 11); // 25 ms each at 500 Hz
 }
 
 void TestPipeline::hysteresisTimerActsBetweenFrames()
@@ -295,11 +297,11 @@ void TestPipeline::noAllocationPerTick()
     RecordingSink sink(r);
     const auto tick = [&](int k) {
         const double t = k * 0.001;
-        const double f = 60 + 50 * std::sin(t * 3);  // in and out of the break zone
+        const double f = 60 + 50 * std::sin(t * 3); // in and out of the break zone
         ContactFrame right = rightFrame(t, f);
         ContactFrame left = rightFrame(t, 40);
         left.gripper = Gripper::Left;
-        left.left.n = left.right.n = 8 + (k / 200) % 9;  // slipping and recovering
+        left.left.n = left.right.n = 8 + (k / 200) % 9; // slipping and recovering
         pipeline.process(left, sink);
         pipeline.process(right, sink);
         pipeline.flush(sink);

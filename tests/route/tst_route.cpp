@@ -38,7 +38,8 @@ QList<QJsonObject> readLines(const QString &path)
 bool sameValue(const QJsonValue &a, const QJsonValue &b)
 {
     if (a.isDouble() && b.isDouble())
-        return std::abs(a.toDouble() - b.toDouble()) <= 1e-9 * std::max(1.0, std::abs(a.toDouble()));
+        return std::abs(a.toDouble() - b.toDouble()) <=
+               1e-9 * std::max(1.0, std::abs(a.toDouble()));
     if (a.isArray() && b.isArray()) {
         const QJsonArray x = a.toArray();
         const QJsonArray y = b.toArray();
@@ -64,10 +65,11 @@ void compareLines(const QList<QJsonObject> &actual, const QList<QJsonObject> &ex
         for (auto it = e.begin(); same && it != e.end(); ++it)
             same = sameValue(a.value(it.key()), it.value());
         if (!same)
-            QFAIL(qPrintable(QString("line %1 differs:\n  actual:   %2\n  expected: %3")
-                                 .arg(i + 1)
-                                 .arg(QString::fromUtf8(QJsonDocument(a).toJson(QJsonDocument::Compact)),
-                                      QString::fromUtf8(QJsonDocument(e).toJson(QJsonDocument::Compact)))));
+            QFAIL(qPrintable(
+                QString("line %1 differs:\n  actual:   %2\n  expected: %3")
+                    .arg(i + 1)
+                    .arg(QString::fromUtf8(QJsonDocument(a).toJson(QJsonDocument::Compact)),
+                         QString::fromUtf8(QJsonDocument(e).toJson(QJsonDocument::Compact)))));
     }
     QCOMPARE(actual.size(), expected.size());
 }

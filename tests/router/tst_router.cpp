@@ -13,8 +13,8 @@ using namespace semhap;
 
 namespace {
 
-const QStringList PresetDevices{"left.air",   "left.fingertips",  "left.vibro", "overlay",
-                                "right.air",  "right.fingertips", "right.vibro"};
+const QStringList PresetDevices{"left.air",  "left.fingertips",  "left.vibro", "overlay",
+                                "right.air", "right.fingertips", "right.vibro"};
 
 /** A router document with a force detector, a filter, a pattern and a device, to vary. */
 QJsonObject baseRouter()
@@ -125,8 +125,9 @@ void TestRouter::unknownPreset()
 {
     LoadError error;
     QVERIFY(!loadRouter("C5", {}, &error));
-    QCOMPARE(error.toString(),
-             QString("C5: no such router preset (presets: C1, C2, C3, C4, none, sensory, visual)"));
+    QCOMPARE(
+        error.toString(),
+        QString("C5: no such router preset (presets: C1, C2, C3, C4, none, sensory, visual)"));
 }
 
 void TestRouter::graphRoundTrip()
@@ -149,13 +150,13 @@ void TestRouter::invalid_data()
     QTest::newRow("wrong format")
         << edited("format", "semhap.pattern/1")
         << "r.json: /format: unsupported format 'semhap.pattern/1', expected 'semhap.router/1'";
-    QTest::newRow("nodes missing") << object(R"({"format": "semhap.router/1"})")
-                                   << "r.json: missing key 'nodes'";
-    QTest::newRow("node not object") << edited("nodes/1", 5)
-                                     << "r.json: /nodes/1: expected a node object, got a number";
-    QTest::newRow("duplicate id")
-        << edited("nodes/1", object(R"({"id": "right.force", "type": "filter"})"))
-        << "r.json: /nodes/1/id: duplicate node id 'right.force'";
+    QTest::newRow("nodes missing")
+        << object(R"({"format": "semhap.router/1"})") << "r.json: missing key 'nodes'";
+    QTest::newRow("node not object")
+        << edited("nodes/1", 5) << "r.json: /nodes/1: expected a node object, got a number";
+    QTest::newRow("duplicate id") << edited("nodes/1",
+                                            object(R"({"id": "right.force", "type": "filter"})"))
+                                  << "r.json: /nodes/1/id: duplicate node id 'right.force'";
     QTest::newRow("colon in id") << edited("nodes/1", object(R"({"id": "a:b", "type": "filter"})"))
                                  << "r.json: /nodes/1/id: 'a:b' is not a valid id (non-empty, no "
                                     "':' or spaces)";
@@ -208,9 +209,10 @@ void TestRouter::invalid_data()
     QTest::newRow("dangling link")
         << edited("links/3", object(R"({"from": "warn", "to": "nowhere"})"))
         << "r.json: /links/3/to: dangling link: no node 'nowhere'";
-    QTest::newRow("link not object") << edited("links/0", "a->b")
-                                     << "r.json: /links/0: expected a link object {\"from\", \"to\"}, "
-                                        "got a string";
+    QTest::newRow("link not object")
+        << edited("links/0", "a->b")
+        << "r.json: /links/0: expected a link object {\"from\", \"to\"}, "
+           "got a string";
     QTest::newRow("unknown output port")
         << edited("links/0", object(R"({"from": "right.force:out", "to": "warn"})"))
         << "r.json: /links/0/from: node 'right.force' (force) has no output 'out'";

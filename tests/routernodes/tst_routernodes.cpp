@@ -26,7 +26,7 @@ public:
 
 /** An event of detector node `node`, e.g. makeEvent(1.0, 0, "break", "begin", 0.5). */
 SemanticEvent makeEvent(double t, int node, const QString &message, const QString &phase,
-                    double intensity = 1.0, Gripper gripper = Gripper::Right)
+                        double intensity = 1.0, Gripper gripper = Gripper::Right)
 {
     SemanticEvent e;
     e.t = t;
@@ -54,7 +54,7 @@ void feed(RuntimeNode &node, const QStringList &lines)
             continue;
         }
         node.onEvent(port, makeEvent(parts[0].toDouble(), parts[1].toInt(), parts[2], parts[3],
-                                 parts.size() > 4 ? parts[4].toDouble() : 1.0));
+                                     parts.size() > 4 ? parts[4].toDouble() : 1.0));
     }
 }
 
@@ -90,8 +90,8 @@ void TestRouterNodes::filter_data()
     QTest::newRow("everything") << 0u << 0u << 0u
                                 << QStringList{"1 grasp begin 1", "2 break begin 0.5"};
     QTest::newRow("grasp") << grasp << 0u << 0u << QStringList{"1 grasp begin 1"};
-    QTest::newRow("grasp or break") << (grasp | brk) << 0u << 0u
-                                    << QStringList{"1 grasp begin 1", "2 break begin 0.5"};
+    QTest::newRow("grasp or break")
+        << (grasp | brk) << 0u << 0u << QStringList{"1 grasp begin 1", "2 break begin 0.5"};
     QTest::newRow("exceptions") << 0u << exception << 0u << QStringList{"2 break begin 0.5"};
     QTest::newRow("left gripper only") << 0u << 0u << left << QStringList{};
     QTest::newRow("grasp and exception") << grasp << exception << 0u << QStringList{};
@@ -123,17 +123,14 @@ void TestRouterNodes::gate_data()
         << false
         << QStringList{"1 0 grasp begin", "c 2 1 break begin 0.3", "3 0 grasp update 0.8",
                        "c 4 1 break end 0.3", "5 0 grasp end 0.8"}
-        << QStringList{"1 grasp begin 1", "2 grasp end 1", "4 grasp begin 0.8",
-                       "5 grasp end 0.8"};
+        << QStringList{"1 grasp begin 1", "2 grasp end 1", "4 grasp begin 0.8", "5 grasp end 0.8"};
     QTest::newRow("block: message ends while blocked")
         << false
-        << QStringList{"c 1 1 break begin", "2 0 grasp begin", "3 0 grasp end",
-                       "c 4 1 break end"}
+        << QStringList{"c 1 1 break begin", "2 0 grasp begin", "3 0 grasp end", "c 4 1 break end"}
         << QStringList{};
     QTest::newRow("open: passes only during control")
         << true
-        << QStringList{"1 0 grasp begin", "c 2 1 break begin", "c 3 1 break end",
-                       "4 0 grasp end"}
+        << QStringList{"1 0 grasp begin", "c 2 1 break begin", "c 3 1 break end", "4 0 grasp end"}
         << QStringList{"2 grasp begin 1", "3 grasp end 1"};
     QTest::newRow("two control messages keep it closed")
         << false
@@ -183,14 +180,14 @@ void TestRouterNodes::hysteresis_data()
         << QStringList{"1 break begin 0.2"} << never;
     QTest::newRow("band drops small updates")
         << 0.0 << 0.1
-        << QStringList{"1 0 break begin 0.2", "2 0 break update 0.25", "3 0 break update 0.31",
-                       "4 0 break update 0.95", "5 0 break update 1", "6 0 break end 1"}
+        << QStringList{"1 0 break begin 0.2",   "2 0 break update 0.25", "3 0 break update 0.31",
+                       "4 0 break update 0.95", "5 0 break update 1",    "6 0 break end 1"}
         << QStringList{"1 break begin 0.2", "3 break update 0.31", "4 break update 0.95",
                        "5 break update 1", "6 break end 1"}
         << never;
     QTest::newRow("end carries the last passed intensity")
-        << 0.0 << 0.1 << QStringList{"1 0 break begin 0.2", "2 0 break update 0.25",
-                                     "3 0 break end 0.25"}
+        << 0.0 << 0.1
+        << QStringList{"1 0 break begin 0.2", "2 0 break update 0.25", "3 0 break end 0.25"}
         << QStringList{"1 break begin 0.2", "3 break end 0.2"} << never;
 }
 
@@ -256,7 +253,7 @@ void TestRouterNodes::continuousPatternStartsAtStart()
     QCOMPARE(node.voices.front()->priority(), PlayerInput::Continuous);
     node.onSignal(1, 60.0, 2.5);
     voice.advance(2.5);
-    QCOMPARE(voice.value(0), 0.5);  // 60 N of the default ref 120 N
+    QCOMPARE(voice.value(0), 0.5); // 60 N of the default ref 120 N
 }
 
 void TestRouterNodes::activeMessagesKeepOrder()
