@@ -2,6 +2,7 @@
 #include "contactframereader.h"
 
 #include "detectorparams.h"
+#include "jsonreader.h"
 
 #include <QIODevice>
 #include <QJsonArray>
@@ -32,17 +33,12 @@ QString describe(const QJsonValue &value)
             return QLatin1Char('"') + text.left(MaxQuoted) + QStringLiteral("...\"");
         return QLatin1Char('"') + text + QLatin1Char('"');
     }
-    case QJsonValue::Array:
-        return QStringLiteral("an array");
-    case QJsonValue::Object:
-        return QStringLiteral("an object");
-    case QJsonValue::Undefined:
-        break;
+    default:
+        return jsonTypeName(value);
     }
-    return QStringLiteral("nothing");
 }
 
-QString quoted(const QString &field)
+QString quotedField(const QString &field)
 {
     return QLatin1Char('"') + field + QLatin1Char('"');
 }
@@ -182,31 +178,31 @@ bool ContactFrameReader::parseFingertip(const QJsonObject &json, QLatin1String n
         return true;
     if (!value.isObject()) {
         return fail(reason, QStringLiteral("%1 must be an object or null, got %2")
-                                .arg(quoted(name), describe(value)));
+                                .arg(quotedField(name), describe(value)));
     }
     const QJsonObject object = value.toObject();
     const QString prefix = name + QLatin1Char('.');
 
     const QJsonValue f = object.value(QLatin1String("f"));
     if (f.isUndefined())
-        return fail(reason, QStringLiteral("%1 is missing").arg(quoted(prefix + u'f')));
+        return fail(reason, QStringLiteral("%1 is missing").arg(quotedField(prefix + u'f')));
     if (!f.isDouble() || !std::isfinite(f.toDouble()) || f.toDouble() < 0.0) {
         return fail(reason, QStringLiteral("%1 must be a finite non-negative number, got %2")
-                                .arg(quoted(prefix + u'f'), describe(f)));
+                                .arg(quotedField(prefix + u'f'), describe(f)));
     }
 
     const QJsonValue n = object.value(QLatin1String("n"));
     if (n.isUndefined())
-        return fail(reason, QStringLiteral("%1 is missing").arg(quoted(prefix + u'n')));
+        return fail(reason, QStringLiteral("%1 is missing").arg(quotedField(prefix + u'n')));
     const double count = n.toDouble(-1.0);
     if (!n.isDouble() || !(count >= 0.0) || count > double(INT_MAX) ||
         count != std::floor(count)) {
         return fail(reason, QStringLiteral("%1 must be a non-negative integer, got %2")
-                                .arg(quoted(prefix + u'n'), describe(n)));
+                                .arg(quotedField(prefix + u'n'), describe(n)));
     }
 
     const QJsonValue actorValue = object.value(QLatin1String("actor"));
-    const QString actorField = quoted(prefix + QLatin1String("actor"));
+    const QString actorField = quotedField(prefix + QLatin1String("actor"));
     if (actorValue.isUndefined())
         return fail(reason, QStringLiteral("%1 is missing").arg(actorField));
     if (!actorValue.isNull() && (!actorValue.isString() || actorValue.toString().isEmpty())) {
@@ -226,7 +222,7 @@ bool ContactFrameReader::parseFingertip(const QJsonObject &json, QLatin1String n
         }
         if (!valid) {
             return fail(reason, QStringLiteral("%1 must be an array of 3 finite numbers, got %2")
-                                    .arg(quoted(prefix + QLatin1String("fxyz")), describe(fxyz)));
+                                    .arg(quotedField(prefix + QLatin1String("fxyz")), describe(fxyz)));
         }
     }
 
