@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+#include "scenelibrary.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QXmlStreamReader>
+#include <QXmlStreamWriter>
+
+#include <cstring>
+
+namespace semhap {
+
+namespace {
+
+const QRegularExpression &cubeName()
+{
+    static const QRegularExpression re(QStringLiteral("^cube_(\\d+)$"));
+    return re;
+}
+
+/** The scene's own default cube count, or -1 when it declares none. */
+int declaredCubes(const QByteArray &xml)
+{
+    static const QRegularExpression re(
+        QStringLiteral("<numeric\\s+name=\"semhap:cubes\"\\s+data=\"(\\d+)\""));
+    const QRegularExpressionMatch m = re.match(QString::fromUtf8(xml));
+    return m.hasMatch() ? m.captured(1).toInt() : -1;
+}
+
+/**
+ * Copies the MJCF without the cube bodies from `count` on (and their fragile numerics),
+ * setting semhap:cubes to `count`. Streaming, so comments and layout survive.
+ */
+bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available,
+               QString *error)
+{
+    QXmlStreamReader reader(xml);
+    QXmlStreamWriter writer(out);
+    *available = 0;
+    while (!reader.atEnd()) {
+        reader.readNext();
+        if (reader.isStartElement()) {
+            const QString name = reader.attributes().value(QLatin1String("name")).toString();
+            const QString tag = reader.name().toString();
+            QString object = name;
+            if (tag == QLatin1String("numeric") && name.startsWith(QLatin1String("fragile:")))
+                object = name.mid(8);
+            const QRegularExpressionMatch m = cubeName().match(object);
+            if (m.hasMatch() && (tag == QLatin1String("body") || tag == QLatin1String("numeric"))) {
+                if (tag == QLatin1String("body"))
+                    ++*available;
+                if (m.captured(1).toInt() >= count) {
+                    reader.skipCurrentElement();
+                    continue;
+                }
+            }
+            if (tag == QLatin1String("numeric") && name == QLatin1String("semhap:cubes")) {
+                writer.writeStartElement(tag);
+                writer.writeAttribute(QStringLiteral("name"), name);
+                writer.writeAttribute(QStringLiteral("data"), QString::number(count));
+                continue;
+            }
+        }
+        writer.writeCurrentToken(reader);
+    }
+    if (reader.hasError()) {
+        *error = QStringLiteral("%1:%2: %3")
+                     .arg(reader.lineNumber())
+                     .arg(reader.columnNumber())
+                     .arg(reader.errorString());
+        return false;
+    }
+    return true;
+}
+
+MjModelPtr compile(const QByteArray &xml, const QString &where, QString *error)
+{
+    MjVfsPtr vfs(new mjVFS);
+    mj_defaultVFS(vfs.get());
+    const char *file = "scene.xml";
+    if (mj_makeEmptyFileVFS(vfs.get(), file, int(xml.size())) != 0) {
+        *error = where + QStringLiteral(": cannot hold the scene in MuJoCo's file system");
+        return nullptr;
+    }
+    const int index = mj_findFileVFS(vfs.get(), file);
+    std::memcpy(vfs->filedata[index], xml.constData(), size_t(xml.size()));
+    char message[1000] = "";
+    MjModelPtr model(mj_loadXML(file, vfs.get(), message, sizeof message));
+    if (!model)
+        *error = where + QStringLiteral(": ") + QString::fromUtf8(message).trimmed();
+    return model;
+}
+
+} // namespace
+
+QStringList SceneLibrary::builtinNames()
+{
+    QStringList names;
+    const QStringList files =
+        QDir(QStringLiteral(":/semhap/scenes")).entryList({QStringLiteral("*.xml")}, QDir::Files);
+    for (const QString &file : files)
+        names.append(file.chopped(4));
+    return names;
+}
+
+MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &options,
+                              QString *error)
+{
+    installMujocoHandlers();
+    const bool isPath = nameOrPath.contains(QLatin1Char('/'))
+                        || nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
+    const QString path =
+        isPath ? nameOrPath : QStringLiteral(":/semhap/scenes/%1.xml").arg(nameOrPath);
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = isPath ? QStringLiteral("%1: cannot read: %2").arg(nameOrPath, file.errorString())
+                        : QStringLiteral("%1: no such scene (scenes: %2)")
+                              .arg(nameOrPath, builtinNames().join(QStringLiteral(", ")));
+        return nullptr;
+    }
+    const QByteArray xml = file.readAll();
+    const int count = options.cubes >= 0 ? options.cubes : declaredCubes(xml);
+    if (count < 0) {
+        // A file on disk compiles from its own folder, so its <include>s and meshes resolve.
+        if (isPath) {
+            char message[1000] = "";
+            MjModelPtr model(mj_loadXML(QFile::encodeName(QFileInfo(path).absoluteFilePath())
+                                            .constData(),
+                                        nullptr, message, sizeof message));
+            if (!model)
+                *error = nameOrPath + QStringLiteral(": ") + QString::fromUtf8(message).trimmed();
+            return model;
+        }
+        return compile(xml, nameOrPath, error);
+    }
+    QByteArray filtered;
+    int available = 0;
+    QString xmlError;
+    if (!keepCubes(xml, count, &filtered, &available, &xmlError)) {
+        *error = nameOrPath + QLatin1Char(':') + xmlError;
+        return nullptr;
+    }
+    if (count > available) {
+        *error = QStringLiteral("%1: asked for %2 cubes, the scene has %3")
+                     .arg(nameOrPath)
+                     .arg(count)
+                     .arg(available);
+        return nullptr;
+    }
+    return compile(filtered, nameOrPath, error);
+}
+
+} // namespace semhap

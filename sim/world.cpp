@@ -1,0 +1,409 @@
+// SPDX-License-Identifier: MIT
+#include "world.h"
+
+#include "mujocohandles.h"
+
+#include <QByteArray>
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+// A fragile object breaks when gripped above its force for this many steps in a row: a
+// single-step impact spike (a finger arriving fast) is physics noise, not a squeeze.
+constexpr int FractureSteps = 3;
+// Where broken objects are parked, out of sight and out of play.
+constexpr double ParkingDepth = -2.0;
+// Distinct bodies one fingertip is tracked touching at once; more are not told apart.
+constexpr int MaxTouched = 8;
+
+int id(const mjModel *m, mjtObj type, const QString &name)
+{
+    return mj_name2id(m, type, name.toUtf8().constData());
+}
+
+QString name(const mjModel *m, mjtObj type, int index)
+{
+    const char *text = mj_id2name(m, type, index);
+    return text ? QString::fromUtf8(text) : QString();
+}
+
+} // namespace
+
+struct World::Private
+{
+    struct Touch
+    {
+        int actor = -1;
+        double force = 0.0;
+        int contacts = 0;
+    };
+    struct Tip
+    {
+        int gripperBody = -1;
+        double force = 0.0;
+        int contacts = 0;
+        std::array<double, 3> fworld{};
+        std::array<Touch, MaxTouched> touched{};
+        int touchedCount = 0;
+    };
+    struct Hand
+    {
+        bool present = false;
+        int body = -1;
+        int mocap = -1;
+        int actuators[2] = {-1, -1};
+        ContactFrame frame;
+    };
+
+    MjModelPtr model;
+    MjDataPtr data;
+    std::array<Hand, 2> hands;
+    std::array<Tip, 4> tips;            ///< gripper * 2 + finger (0 left, 1 right)
+    std::vector<int> tipOfGeom;         ///< per geom: its tip, or -1
+    std::vector<long> taxelStamp;       ///< per geom: the step it was last counted in
+    std::vector<int> objectOfBody;      ///< per body: its object index, or -1
+    std::vector<double> gripOnObject;   ///< per object: tip force this step
+    std::vector<int> overForceSteps;    ///< per object: steps in a row above its limit
+    long stepCount = 0;
+
+    void extract(World &world, double t);
+    void checkFractures(World &world, double t);
+};
+
+World::World() : d(std::make_unique<Private>()) {}
+
+World::~World() = default;
+
+std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions &options,
+                                   QString *error)
+{
+    MjModelPtr model = SceneLibrary::load(nameOrPath, options, error);
+    if (!model)
+        return nullptr;
+    std::unique_ptr<World> world(new World);
+    world->m_sceneName = nameOrPath;
+    Private &p = *world->d;
+    const mjModel *m = model.get();
+    p.data.reset(mj_makeData(m));
+    p.model = std::move(model);
+
+    p.tipOfGeom.assign(size_t(m->ngeom), -1);
+    p.taxelStamp.assign(size_t(m->ngeom), -1);
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        const QString hand = gripperName(g);
+        Private::Hand &h = p.hands[size_t(g)];
+        h.body = id(m, mjOBJ_BODY, hand + QStringLiteral(".gripper"));
+        const int target = id(m, mjOBJ_BODY, hand + QStringLiteral(".target"));
+        h.actuators[0] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.left"));
+        h.actuators[1] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.right"));
+        h.present = h.body >= 0 && target >= 0 && m->body_mocapid[target] >= 0
+                    && h.actuators[0] >= 0 && h.actuators[1] >= 0;
+        if (h.body >= 0 && !h.present) {
+            *error = QStringLiteral("%1: gripper '%2' needs a mocap body %2.target and "
+                                    "actuators %2.grip.left, %2.grip.right (see sim/README.md)")
+                         .arg(nameOrPath, hand);
+            return nullptr;
+        }
+        if (!h.present)
+            continue;
+        h.mocap = m->body_mocapid[target];
+        h.frame.gripper = g;
+        for (int finger = 0; finger < 2; ++finger) {
+            const QString prefix = hand + (finger == 0 ? QStringLiteral(".tip.left.")
+                                                       : QStringLiteral(".tip.right."));
+            const int tip = int(g) * 2 + finger;
+            p.tips[size_t(tip)].gripperBody = h.body;
+            for (int geom = 0; geom < m->ngeom; ++geom) {
+                if (name(m, mjOBJ_GEOM, geom).startsWith(prefix))
+                    p.tipOfGeom[size_t(geom)] = tip;
+            }
+        }
+    }
+    if (!p.hands[0].present && !p.hands[1].present) {
+        *error = nameOrPath + QStringLiteral(": no gripper (a body left.gripper or "
+                                             "right.gripper; see sim/README.md)");
+        return nullptr;
+    }
+
+    // Objects: free root bodies that are not grippers. Their names are the actors.
+    p.objectOfBody.assign(size_t(m->nbody), -1);
+    for (int body = 1; body < m->nbody; ++body) {
+        const int joint = m->body_jntadr[body];
+        if (m->body_parentid[body] != 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE
+            || body == p.hands[0].body || body == p.hands[1].body)
+            continue;
+        SceneObject object;
+        object.name = name(m, mjOBJ_BODY, body);
+        object.body = body;
+        object.actor = world->m_actors.intern(object.name);
+        const int numeric = id(m, mjOBJ_NUMERIC, QStringLiteral("fragile:") + object.name);
+        if (numeric >= 0)
+            object.fragileForce = m->numeric_data[m->numeric_adr[numeric]];
+        p.objectOfBody[size_t(body)] = int(world->m_objects.size());
+        world->m_objects.push_back(object);
+    }
+    p.gripOnObject.assign(world->m_objects.size(), 0.0);
+    p.overForceSteps.assign(world->m_objects.size(), 0);
+
+    mj_forward(m, p.data.get());
+    // Targets start where the grippers are, so nothing jumps at the first step.
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (world->hasGripper(g))
+            world->setTarget(g, world->gripperPose(g));
+    }
+    return world;
+}
+
+double World::time() const
+{
+    return d->data->time;
+}
+
+double World::timestep() const
+{
+    return d->model->opt.timestep;
+}
+
+void World::step()
+{
+    const double t = d->data->time;
+    mj_step(d->model.get(), d->data.get());
+    ++d->stepCount;
+    m_fractures.clear();
+    d->extract(*this, t);
+    d->checkFractures(*this, t);
+}
+
+void World::Private::extract(World &world, double t)
+{
+    const mjModel *m = model.get();
+    const mjData *dd = data.get();
+    for (Tip &tip : tips) {
+        tip.force = 0.0;
+        tip.contacts = 0;
+        tip.fworld = {};
+        tip.touchedCount = 0;
+    }
+    std::fill(gripOnObject.begin(), gripOnObject.end(), 0.0);
+
+    for (int c = 0; c < dd->ncon; ++c) {
+        const mjContact &contact = dd->contact[c];
+        const int tip1 = tipOfGeom[size_t(contact.geom1)];
+        const int tip2 = tipOfGeom[size_t(contact.geom2)];
+        if ((tip1 < 0) == (tip2 < 0))
+            continue;  // no fingertip, or two fingertips touching each other
+        const bool tipIsFirst = tip1 >= 0;
+        Tip &tip = tips[size_t(tipIsFirst ? tip1 : tip2)];
+        const int taxel = tipIsFirst ? contact.geom1 : contact.geom2;
+        const int other = tipIsFirst ? contact.geom2 : contact.geom1;
+        const int root = m->body_rootid[m->geom_bodyid[other]];
+        if (root == tip.gripperBody)
+            continue;  // the gripper's own parts
+        const int object = objectOfBody[size_t(root)];
+        const int actor = object >= 0 ? world.m_objects[size_t(object)].actor : -1;
+
+        Touch *touch = nullptr;
+        for (int i = 0; i < tip.touchedCount; ++i) {
+            if (tip.touched[size_t(i)].actor == actor)
+                touch = &tip.touched[size_t(i)];
+        }
+        if (!touch && tip.touchedCount < MaxTouched) {
+            touch = &tip.touched[size_t(tip.touchedCount++)];
+            *touch = Touch{actor, 0.0, 0};
+        }
+        // A taxel counts once however many contact points it has. Contacts inside the
+        // geoms' gap (efc_address < 0) count too: they keep n steady while an object slides.
+        if (taxelStamp[size_t(taxel)] != stepCount) {
+            taxelStamp[size_t(taxel)] = stepCount;
+            ++tip.contacts;
+            if (touch)
+                ++touch->contacts;
+        }
+        if (contact.efc_address < 0)
+            continue;
+        mjtNum local[6];
+        mj_contactForce(m, dd, c, local);
+        const double magnitude =
+            std::sqrt(local[0] * local[0] + local[1] * local[1] + local[2] * local[2]);
+        tip.force += magnitude;
+        if (touch)
+            touch->force += magnitude;
+        if (object >= 0)
+            gripOnObject[size_t(object)] += magnitude;
+        // The contact frame's rows are its axes in world coordinates; the force acts on
+        // geom2 along them, so on geom1 it is the opposite.
+        const double sign = tipIsFirst ? -1.0 : 1.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int k = 0; k < 3; ++k)
+                tip.fworld[size_t(k)] += sign * local[axis] * contact.frame[3 * axis + k];
+        }
+    }
+
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        Hand &hand = hands[size_t(g)];
+        if (!hand.present)
+            continue;
+        hand.frame.t = t;
+        const mjtNum *rotation = dd->xmat + 9 * hand.body;
+        for (int finger = 0; finger < 2; ++finger) {
+            const Tip &tip = tips[size_t(int(g) * 2 + finger)];
+            Fingertip &out = finger == 0 ? hand.frame.left : hand.frame.right;
+            out.f = tip.force;
+            out.n = tip.contacts;
+            // The touched body carrying the most force; without force, the most contacts.
+            out.actor = -1;
+            double bestForce = -1.0;
+            int bestContacts = -1;
+            for (int i = 0; i < tip.touchedCount; ++i) {
+                const Touch &touch = tip.touched[size_t(i)];
+                if (touch.force > bestForce
+                    || (touch.force == bestForce && touch.contacts > bestContacts)) {
+                    bestForce = touch.force;
+                    bestContacts = touch.contacts;
+                    out.actor = touch.actor;
+                }
+            }
+            // Into the gripper frame: R^T · f (xmat is row-major, body to world).
+            out.hasFxyz = true;
+            for (int row = 0; row < 3; ++row) {
+                out.fxyz[size_t(row)] = rotation[row] * tip.fworld[0]
+                                        + rotation[3 + row] * tip.fworld[1]
+                                        + rotation[6 + row] * tip.fworld[2];
+            }
+        }
+    }
+}
+
+void World::Private::checkFractures(World &world, double t)
+{
+    for (size_t i = 0; i < world.m_objects.size(); ++i) {
+        SceneObject &object = world.m_objects[i];
+        if (object.broken) {
+            // Gravity would pull a parked object down forever: put it back every step.
+            world.placeObject(int(i), {0.0, 0.0, ParkingDepth});
+            continue;
+        }
+        if (object.fragileForce <= 0)
+            continue;
+        overForceSteps[i] = gripOnObject[i] > object.fragileForce ? overForceSteps[i] + 1 : 0;
+        if (overForceSteps[i] < FractureSteps)
+            continue;
+        object.broken = true;
+        world.m_fractures.push_back({t, int(i), gripOnObject[i]});
+        mjModel *m = model.get();
+        for (int geom = 0; geom < m->ngeom; ++geom) {
+            if (m->geom_bodyid[geom] == object.body) {
+                m->geom_contype[geom] = 0;
+                m->geom_conaffinity[geom] = 0;
+                m->geom_rgba[4 * geom + 3] = 0.0f;
+            }
+        }
+        world.placeObject(int(i), {0.0, 0.0, ParkingDepth});
+    }
+}
+
+bool World::hasGripper(Gripper gripper) const
+{
+    return d->hands[size_t(gripper)].present;
+}
+
+void World::setTarget(Gripper gripper, const Pose &target)
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    std::copy(target.pos.begin(), target.pos.end(), d->data->mocap_pos + 3 * h.mocap);
+    std::copy(target.quat.begin(), target.quat.end(), d->data->mocap_quat + 4 * h.mocap);
+}
+
+Pose World::target(Gripper gripper) const
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    Pose pose;
+    std::copy_n(d->data->mocap_pos + 3 * h.mocap, 3, pose.pos.begin());
+    std::copy_n(d->data->mocap_quat + 4 * h.mocap, 4, pose.quat.begin());
+    return pose;
+}
+
+void World::setGrip(Gripper gripper, double force)
+{
+    // Each finger's pad pushes with its actuator's force: the total is twice that.
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    for (int actuator : h.actuators)
+        d->data->ctrl[actuator] = force / 2;
+}
+
+double World::grip(Gripper gripper) const
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    return 2 * d->data->ctrl[h.actuators[0]];
+}
+
+double World::maxGrip(Gripper gripper) const
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    return 2 * d->model->actuator_ctrlrange[2 * h.actuators[0] + 1];
+}
+
+Pose World::gripperPose(Gripper gripper) const
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    Pose pose;
+    std::copy_n(d->data->xpos + 3 * h.body, 3, pose.pos.begin());
+    std::copy_n(d->data->xquat + 4 * h.body, 4, pose.quat.begin());
+    return pose;
+}
+
+const ContactFrame &World::frame(Gripper gripper) const
+{
+    return d->hands[size_t(gripper)].frame;
+}
+
+int World::objectIndex(const QString &objectName) const
+{
+    for (size_t i = 0; i < m_objects.size(); ++i) {
+        if (m_objects[i].name == objectName)
+            return int(i);
+    }
+    return -1;
+}
+
+std::array<double, 3> World::objectPosition(int object) const
+{
+    std::array<double, 3> pos{};
+    std::copy_n(d->data->xpos + 3 * m_objects[size_t(object)].body, 3, pos.begin());
+    return pos;
+}
+
+std::array<double, 3> World::objectVelocity(int object) const
+{
+    const mjModel *m = d->model.get();
+    const int dof = m->jnt_dofadr[m->body_jntadr[m_objects[size_t(object)].body]];
+    return {d->data->qvel[dof], d->data->qvel[dof + 1], d->data->qvel[dof + 2]};
+}
+
+void World::placeObject(int object, const std::array<double, 3> &pos)
+{
+    const mjModel *m = d->model.get();
+    const int joint = m->body_jntadr[m_objects[size_t(object)].body];
+    mjtNum *qpos = d->data->qpos + m->jnt_qposadr[joint];
+    mjtNum *qvel = d->data->qvel + m->jnt_dofadr[joint];
+    std::copy(pos.begin(), pos.end(), qpos);
+    const mjtNum upright[4] = {1, 0, 0, 0};
+    std::copy(upright, upright + 4, qpos + 3);
+    std::fill(qvel, qvel + 6, 0.0);
+}
+
+const mjModel *World::model() const
+{
+    return d->model.get();
+}
+
+const mjData *World::data() const
+{
+    return d->data.get();
+}
+
+} // namespace semhap

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "actortable.h"
+#include "contactframe.h"
+#include "scenelibrary.h"
+
+#include <QString>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace semhap {
+
+/** A position and an orientation (unit quaternion w, x, y, z) in world coordinates. */
+struct Pose
+{
+    std::array<double, 3> pos{};
+    std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};
+};
+
+/** A movable object of the scene: a free body that fingertips can touch. */
+struct SceneObject
+{
+    QString name;
+    int body = -1;              ///< MuJoCo body id
+    int actor = -1;             ///< ActorTable id, as contact frames name it
+    double fragileForce = 0.0;  ///< grip force that fractures it (N); 0: not fragile
+    bool broken = false;
+};
+
+/** A fracture: a fragile object gripped harder than it can take. */
+struct Fracture
+{
+    double t = 0.0;
+    int object = -1;
+    double force = 0.0;  ///< the grip force on it when it broke (N)
+};
+
+/**
+ * A MuJoCo scene with semhap's grippers in it: pose targets and grip forces in, one
+ * ContactFrame per gripper per physics step out, fragile objects that fracture. The naming
+ * convention that makes a user's MJCF work is in sim/README.md. Not thread-safe; one owner.
+ */
+class World
+{
+public:
+    /** Loads a scene (built-in name or MJCF path); null with a one-line `error`. */
+    static std::unique_ptr<World> load(const QString &nameOrPath, const SceneOptions &options,
+                                       QString *error);
+    ~World();
+
+    const QString &sceneName() const { return m_sceneName; }
+    double time() const;
+    double timestep() const;
+
+    /** One physics step; then fractures, and a fresh ContactFrame per gripper. */
+    void step();
+
+    bool hasGripper(Gripper gripper) const;
+    /** Where the wrist should be: the gripper follows this target through a soft weld. */
+    void setTarget(Gripper gripper, const Pose &target);
+    Pose target(Gripper gripper) const;
+    /** Total closing force of both fingers (N); negative opens the gripper. */
+    void setGrip(Gripper gripper, double force);
+    double grip(Gripper gripper) const;
+    /** Where the gripper is now (its body frame). */
+    Pose gripperPose(Gripper gripper) const;
+    /** The highest total grip force the actuators can give (N). */
+    double maxGrip(Gripper gripper) const;
+
+    /** The contact frame of the last step (t = the time its contacts were computed). */
+    const ContactFrame &frame(Gripper gripper) const;
+    const ActorTable &actors() const { return m_actors; }
+
+    const std::vector<SceneObject> &objects() const { return m_objects; }
+    /** The object with this name, or -1. */
+    int objectIndex(const QString &name) const;
+    std::array<double, 3> objectPosition(int object) const;
+    std::array<double, 3> objectVelocity(int object) const;
+    /** Puts an object back at `pos`, upright and at rest (a respawned container). */
+    void placeObject(int object, const std::array<double, 3> &pos);
+    /** The fractures of the last step. */
+    const std::vector<Fracture> &fractures() const { return m_fractures; }
+
+    /** The MuJoCo model and state, for the renderer (sim/ only). */
+    const struct mjModel_ *model() const;
+    const struct mjData_ *data() const;
+
+private:
+    World();
+    struct Private;
+    std::unique_ptr<Private> d;
+
+    QString m_sceneName;
+    ActorTable m_actors;
+    std::vector<SceneObject> m_objects;
+    std::vector<Fracture> m_fractures;
+};
+
+} // namespace semhap

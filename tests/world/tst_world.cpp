@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+// The MuJoCo world: scenes load, fingertips report the force they grip with, fragile cubes
+// break above their force and not below, contact counts stay steady while an object slides.
+#include "world.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+std::unique_ptr<World> loadWorld(const QString &scene, int cubes = -1)
+{
+    QString error;
+    std::unique_ptr<World> world = World::load(scene, SceneOptions{cubes}, &error);
+    if (!world)
+        qFatal("%s", qPrintable(error));
+    return world;
+}
+
+/** Moves the right gripper's target linearly to `to` over `seconds`, stepping the world. */
+void moveTo(World &world, Gripper g, const std::array<double, 3> &to, double seconds)
+{
+    const Pose from = world.target(g);
+    const int steps = int(std::lround(seconds / world.timestep()));
+    for (int k = 1; k <= steps; ++k) {
+        Pose p = from;
+        for (int i = 0; i < 3; ++i)
+            p.pos[size_t(i)] = from.pos[size_t(i)] + (to[size_t(i)] - from.pos[size_t(i)]) * k / steps;
+        world.setTarget(g, p);
+        world.step();
+    }
+}
+
+void hold(World &world, double seconds)
+{
+    const int steps = int(std::lround(seconds / world.timestep()));
+    for (int k = 0; k < steps; ++k)
+        world.step();
+}
+
+/** Ramps the grip from its current command to `force` over `seconds`. */
+void rampGrip(World &world, Gripper g, double force, double seconds)
+{
+    const double from = world.grip(g);
+    const int steps = int(std::lround(seconds / world.timestep()));
+    for (int k = 1; k <= steps; ++k) {
+        world.setGrip(g, from + (force - from) * k / steps);
+        world.step();
+    }
+}
+
+/** Puts the right gripper's pads around cube_0 (gripper origin 6 cm above the pad centre). */
+void graspCube(World &world, double force)
+{
+    const auto cube = world.objectPosition(0);
+    world.setGrip(Gripper::Right, -10);
+    moveTo(world, Gripper::Right, {cube[0], cube[1], cube[2] + 0.2}, 0.6);
+    moveTo(world, Gripper::Right, {cube[0], cube[1], cube[2] + 0.06}, 0.6);
+    hold(world, 0.2);
+    rampGrip(world, Gripper::Right, force, 0.3);
+    hold(world, 0.3);
+}
+
+} // namespace
+
+class TestWorld : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void scenesLoad_data();
+    void scenesLoad();
+    void cubeCount();
+    void badScenes_data();
+    void badScenes();
+    void squeezeReportsForce_data();
+    void squeezeReportsForce();
+    void fragileCubeBreaksAboveItsForce_data();
+    void fragileCubeBreaksAboveItsForce();
+    void liftHoldsOrSlips_data();
+    void liftHoldsOrSlips();
+    void countFallsRowByRowWhileSliding();
+};
+
+void TestWorld::scenesLoad_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<bool>("left");
+    QTest::addColumn<int>("objects");
+    QTest::newRow("box_and_block") << "box_and_block" << false << 12;
+    QTest::newRow("bimanual_sorting") << "bimanual_sorting" << true << 13;
+}
+
+void TestWorld::scenesLoad()
+{
+    QFETCH(QString, scene);
+    QFETCH(bool, left);
+    QFETCH(int, objects);
+    std::unique_ptr<World> world = loadWorld(scene);
+    QVERIFY(world->hasGripper(Gripper::Right));
+    QCOMPARE(world->hasGripper(Gripper::Left), left);
+    QCOMPARE(int(world->objects().size()), objects);
+    QCOMPARE(world->timestep(), 0.002);
+    world->step();
+    QCOMPARE(world->frame(Gripper::Right).t, 0.0);
+    QCOMPARE(world->frame(Gripper::Right).left.n, 0);
+}
+
+void TestWorld::cubeCount()
+{
+    QCOMPARE(loadWorld("box_and_block", 3)->objects().size(), size_t(3));
+    QCOMPARE(loadWorld("box_and_block", 24)->objects().size(), size_t(24));
+    QCOMPARE(loadWorld("box_and_block", 0)->objects().size(), size_t(0));
+    const std::unique_ptr<World> world = loadWorld("box_and_block", 2);
+    QCOMPARE(world->objects()[1].name, QString("cube_1"));
+    QCOMPARE(world->objects()[1].fragileForce, 120.0);
+}
+
+void TestWorld::badScenes_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<int>("cubes");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("unknown name") << "box_and_blocks" << -1
+                                  << "box_and_blocks: no such scene (scenes: bimanual_sorting, "
+                                     "box_and_block)";
+    QTest::newRow("too many cubes") << "box_and_block" << 30
+                                    << "box_and_block: asked for 30 cubes, the scene has 24";
+    QTest::newRow("missing file") << "/nonexistent/scene.xml" << -1
+                                  << "/nonexistent/scene.xml: cannot read: No such file or "
+                                     "directory";
+}
+
+void TestWorld::badScenes()
+{
+    QFETCH(QString, scene);
+    QFETCH(int, cubes);
+    QFETCH(QString, error);
+    QString message;
+    QVERIFY(!World::load(scene, SceneOptions{cubes}, &message));
+    QCOMPARE(message, error);
+}
+
+void TestWorld::squeezeReportsForce_data()
+{
+    QTest::addColumn<double>("force");
+    QTest::newRow("20 N") << 20.0;
+    QTest::newRow("40 N") << 40.0;
+    QTest::newRow("80 N") << 80.0;
+}
+
+void TestWorld::squeezeReportsForce()
+{
+    QFETCH(double, force);
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    graspCube(*world, force);
+    const ContactFrame &frame = world->frame(Gripper::Right);
+    qDebug() << "F" << frame.totalForce() << "n" << frame.left.n << frame.right.n
+             << "actor" << frame.left.actor << frame.right.actor;
+    QVERIFY(std::abs(frame.totalForce() - force) < 0.05 * force);
+    QCOMPARE(frame.left.n, 16);
+    QCOMPARE(frame.right.n, 16);
+    QCOMPARE(frame.left.actor, world->objects()[0].actor);
+    QCOMPARE(frame.right.actor, world->objects()[0].actor);
+}
+
+void TestWorld::fragileCubeBreaksAboveItsForce_data()
+{
+    QTest::addColumn<double>("force");
+    QTest::addColumn<bool>("breaks");
+    QTest::newRow("110 N holds") << 110.0 << false;
+    QTest::newRow("130 N breaks") << 130.0 << true;
+}
+
+void TestWorld::fragileCubeBreaksAboveItsForce()
+{
+    QFETCH(double, force);
+    QFETCH(bool, breaks);
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    graspCube(*world, force);
+    QCOMPARE(world->objects()[0].broken, breaks);
+    if (breaks) {
+        QVERIFY(world->objectPosition(0)[2] < -1.0);
+        QCOMPARE(world->frame(Gripper::Right).left.n, 0);
+    }
+}
+
+void TestWorld::liftHoldsOrSlips_data()
+{
+    QTest::addColumn<double>("force");
+    QTest::addColumn<bool>("lifted");
+    // The cube weighs 0.08 kg at mu = 0.1: it needs about 8 N of grip.
+    QTest::newRow("30 N lifts") << 30.0 << true;
+    QTest::newRow("12 N lifts") << 12.0 << true;
+    QTest::newRow("5 N slips") << 5.0 << false;
+}
+
+void TestWorld::liftHoldsOrSlips()
+{
+    QFETCH(double, force);
+    QFETCH(bool, lifted);
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    graspCube(*world, force);
+    const double z0 = world->objectPosition(0)[2];
+    const auto target = world->target(Gripper::Right).pos;
+    moveTo(*world, Gripper::Right, {target[0], target[1], target[2] + 0.1}, 0.8);
+    hold(*world, 0.5);
+    const double rise = world->objectPosition(0)[2] - z0;
+    QVERIFY2(lifted ? rise > 0.09 : rise < 0.01, qPrintable(QString::number(rise)));
+}
+
+void TestWorld::countFallsRowByRowWhileSliding()
+{
+    // Just under the grip the cube needs: it slides out of the pads. The count must fall a
+    // row at a time and never flicker back up for a step (which would reset slip detection).
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    graspCube(*world, 20.0);
+    QCOMPARE(world->frame(Gripper::Right).totalContacts(), 32);
+    const auto target = world->target(Gripper::Right).pos;
+    Pose up = world->target(Gripper::Right);
+    up.pos[2] = target[2] + 0.1;
+    world->setTarget(Gripper::Right, up);
+    world->setGrip(Gripper::Right, 6.0);
+    QList<int> counts;
+    for (int k = 0; k < 400; ++k) {
+        world->step();
+        const int n = world->frame(Gripper::Right).totalContacts();
+        if (counts.isEmpty() || counts.last() != n)
+            counts.append(n);
+    }
+    qDebug() << counts;
+    QCOMPARE(counts.last(), 0);
+    for (int i = 1; i < counts.size(); ++i)
+        QVERIFY2(counts[i] < counts[i - 1], "the count went back up");
+}
+
+QTEST_GUILESS_MAIN(TestWorld)
+#include "tst_world.moc"
