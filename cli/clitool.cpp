@@ -3,6 +3,7 @@
 
 #include "rendercommand.h"
 #include "routecommand.h"
+#include "runcommand.h"
 #include "validatecommand.h"
 
 namespace semhap {
@@ -12,7 +13,7 @@ namespace {
 const QStringList &commandNames()
 {
     static const QStringList names{QStringLiteral("route"), QStringLiteral("render"),
-                                   QStringLiteral("validate")};
+                                   QStringLiteral("validate"), QStringLiteral("run")};
     return names;
 }
 
@@ -26,6 +27,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<RenderCommand>(m_io);
     if (name == QLatin1String("validate"))
         return std::make_unique<ValidateCommand>(m_io);
+    if (name == QLatin1String("run"))
+        return std::make_unique<RunCommand>(m_io);
     return nullptr;
 }
 

@@ -74,6 +74,16 @@ int Player::deviceIndex(const QString &name) const
     return -1;
 }
 
+int Player::soundingPriority(int device) const
+{
+    int highest = -1;
+    for (const PlayerInput *input : m_devices[size_t(device)].inputs) {
+        if (input->isSounding())
+            highest = std::max(highest, int(input->priority()));
+    }
+    return highest;
+}
+
 void Player::start(double t0)
 {
     m_t0 = t0;

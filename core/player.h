@@ -79,6 +79,11 @@ public:
     const QString &deviceName(int device) const { return m_devices[size_t(device)].name; }
     const DeviceModel &deviceModel(int device) const { return *m_devices[size_t(device)].model; }
     int deviceIndex(const QString &name) const;
+    /**
+     * The highest priority class among the device's inputs sounding at its last frame, or
+     * -1 when none is: what the device's output means right now (a warning, a confirmation).
+     */
+    int soundingPriority(int device) const;
     /** The last frame rendered for a device (all zero before the first). */
     const DeviceFrame &lastFrame(int device) const { return m_devices[size_t(device)].last; }
 

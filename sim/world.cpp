@@ -6,6 +6,7 @@
 #include <QByteArray>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace semhap {
@@ -56,6 +57,7 @@ struct World::Private
         int body = -1;
         int mocap = -1;
         int actuators[2] = {-1, -1};
+        int slides[2] = {-1, -1};
         ContactFrame frame;
     };
 
@@ -69,6 +71,7 @@ struct World::Private
     std::vector<double> gripOnObject;   ///< per object: tip force this step
     std::vector<int> overForceSteps;    ///< per object: steps in a row above its limit
     long stepCount = 0;
+    std::chrono::steady_clock::duration physics{};
 
     void extract(World &world, double t);
     void checkFractures(World &world, double t);
@@ -100,6 +103,8 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         const int target = id(m, mjOBJ_BODY, hand + QStringLiteral(".target"));
         h.actuators[0] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.left"));
         h.actuators[1] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.right"));
+        for (int finger = 0; finger < 2; ++finger)
+            h.slides[finger] = m->actuator_trnid[2 * h.actuators[finger]];
         h.present = h.body >= 0 && target >= 0 && m->body_mocapid[target] >= 0
                     && h.actuators[0] >= 0 && h.actuators[1] >= 0;
         if (h.body >= 0 && !h.present) {
@@ -171,11 +176,18 @@ double World::timestep() const
 void World::step()
 {
     const double t = d->data->time;
+    const auto start = std::chrono::steady_clock::now();
     mj_step(d->model.get(), d->data.get());
+    d->physics += std::chrono::steady_clock::now() - start;
     ++d->stepCount;
     m_fractures.clear();
     d->extract(*this, t);
     d->checkFractures(*this, t);
+}
+
+double World::physicsSeconds() const
+{
+    return std::chrono::duration<double>(d->physics).count();
 }
 
 void World::Private::extract(World &world, double t)
@@ -247,7 +259,9 @@ void World::Private::extract(World &world, double t)
         Hand &hand = hands[size_t(g)];
         if (!hand.present)
             continue;
-        hand.frame.t = t;
+        // MuJoCo adds up its time step by step; frames carry it to the nanosecond, as the
+        // player's instants do, so streams read 1.25 rather than 1.2499999999999.
+        hand.frame.t = std::round(t * 1e9) / 1e9;
         const mjtNum *rotation = dd->xmat + 9 * hand.body;
         for (int finger = 0; finger < 2; ++finger) {
             const Tip &tip = tips[size_t(int(g) * 2 + finger)];
@@ -306,6 +320,26 @@ void World::Private::checkFractures(World &world, double t)
     }
 }
 
+bool Region::contains(const std::array<double, 3> &p) const
+{
+    for (size_t i = 0; i < 3; ++i) {
+        if (std::abs(p[i] - center[i]) > half[i])
+            return false;
+    }
+    return true;
+}
+
+bool World::region(const QString &siteName, Region *region) const
+{
+    const mjModel *m = d->model.get();
+    const int site = id(m, mjOBJ_SITE, siteName);
+    if (site < 0)
+        return false;
+    std::copy_n(d->data->site_xpos + 3 * site, 3, region->center.begin());
+    std::copy_n(m->site_size + 3 * site, 3, region->half.begin());
+    return true;
+}
+
 bool World::hasGripper(Gripper gripper) const
 {
     return d->hands[size_t(gripper)].present;
@@ -347,6 +381,14 @@ double World::maxGrip(Gripper gripper) const
     return 2 * d->model->actuator_ctrlrange[2 * h.actuators[0] + 1];
 }
 
+double World::fingerTravel(Gripper gripper) const
+{
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    const mjModel *m = d->model.get();
+    return (d->data->qpos[m->jnt_qposadr[h.slides[0]]] + d->data->qpos[m->jnt_qposadr[h.slides[1]]])
+           / 2;
+}
+
 Pose World::gripperPose(Gripper gripper) const
 {
     const Private::Hand &h = d->hands[size_t(gripper)];
@@ -375,6 +417,15 @@ std::array<double, 3> World::objectPosition(int object) const
     std::array<double, 3> pos{};
     std::copy_n(d->data->xpos + 3 * m_objects[size_t(object)].body, 3, pos.begin());
     return pos;
+}
+
+Pose World::objectPose(int object) const
+{
+    const int body = m_objects[size_t(object)].body;
+    Pose pose;
+    std::copy_n(d->data->xpos + 3 * body, 3, pose.pos.begin());
+    std::copy_n(d->data->xquat + 4 * body, 4, pose.quat.begin());
+    return pose;
 }
 
 std::array<double, 3> World::objectVelocity(int object) const

@@ -20,6 +20,15 @@ struct Pose
     std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};
 };
 
+/** A box-shaped region of the scene (a `<site>`): centre and half sizes, world axes. */
+struct Region
+{
+    std::array<double, 3> center{};
+    std::array<double, 3> half{};
+
+    bool contains(const std::array<double, 3> &p) const;
+};
+
 /** A movable object of the scene: a free body that fingertips can touch. */
 struct SceneObject
 {
@@ -57,6 +66,8 @@ public:
 
     /** One physics step; then fractures, and a fresh ContactFrame per gripper. */
     void step();
+    /** Wall-clock seconds spent in MuJoCo's mj_step so far (what benchmarks compare to). */
+    double physicsSeconds() const;
 
     bool hasGripper(Gripper gripper) const;
     /** Where the wrist should be: the gripper follows this target through a soft weld. */
@@ -67,6 +78,8 @@ public:
     double grip(Gripper gripper) const;
     /** Where the gripper is now (its body frame). */
     Pose gripperPose(Gripper gripper) const;
+    /** How far the fingers have closed from fully open (m, the mean of both fingers). */
+    double fingerTravel(Gripper gripper) const;
     /** The highest total grip force the actuators can give (N). */
     double maxGrip(Gripper gripper) const;
 
@@ -78,9 +91,13 @@ public:
     /** The object with this name, or -1. */
     int objectIndex(const QString &name) const;
     std::array<double, 3> objectPosition(int object) const;
+    Pose objectPose(int object) const;
     std::array<double, 3> objectVelocity(int object) const;
     /** Puts an object back at `pos`, upright and at rest (a respawned container). */
     void placeObject(int object, const std::array<double, 3> &pos);
+    /** The region of site `name`; false when the scene has no such site. */
+    bool region(const QString &name, Region *region) const;
+
     /** The fractures of the last step. */
     const std::vector<Fracture> &fractures() const { return m_fractures; }
 

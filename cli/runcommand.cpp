@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: MIT
+#include "runcommand.h"
+
+#include "jsonlineswriter.h"
+#include "simrun.h"
+
+#include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QThread>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace semhap {
+
+namespace {
+
+/** Writes the run's requested streams as JSON Lines. */
+class StreamWriter : public RunSink
+{
+public:
+    StreamWriter(const SimRun &run, QIODevice *frames, QIODevice *events, QIODevice *devices)
+        : m_frames(frames), m_events(events), m_devices(devices), m_frameWriter(frames),
+          m_eventWriter(events), m_deviceWriter(devices)
+    {
+        const Router &router = const_cast<SimRun &>(run).pipeline().router();
+        QStringList names;
+        for (int d = 0; d < router.player().deviceCount(); ++d)
+            names.append(router.player().deviceName(d));
+        m_eventWriter.setNodeNames(router.nodeIds());
+        m_deviceWriter.setDeviceNames(names);
+        m_frameWriter.setActorTable(&const_cast<SimRun &>(run).world().actors());
+    }
+    void onContactFrame(const ContactFrame &frame) override
+    {
+        if (m_frames)
+            m_frameWriter.write(frame);
+    }
+    void onEvent(const SemanticEvent &event) override
+    {
+        if (m_events)
+            m_eventWriter.write(event);
+    }
+    void onDeviceFrame(const DeviceFrame &frame) override
+    {
+        if (m_devices)
+            m_deviceWriter.write(frame);
+    }
+
+private:
+    QIODevice *m_frames;
+    QIODevice *m_events;
+    QIODevice *m_devices;
+    JsonLinesWriter m_frameWriter;
+    JsonLinesWriter m_eventWriter;
+    JsonLinesWriter m_deviceWriter;
+};
+
+} // namespace
+
+QString RunCommand::summary() const
+{
+    return tr("Runs the pipeline on a simulated scene with a scripted or reactive operator, "
+              "as fast as possible (or in real time), and reports the task metrics.");
+}
+
+void RunCommand::configure(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("scene"),
+                      tr("Scene: box_and_block, bimanual_sorting, or an MJCF file."),
+                      tr("NAME|FILE")});
+    parser.addOption({QStringLiteral("router"), tr("Router preset or router file."),
+                      tr("PRESET|FILE")});
+    parser.addOption({QStringLiteral("operator"),
+                      tr("Who drives the grippers: scripted or reactive."), tr("NAME")});
+    parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."),
+                      tr("N")});
+    parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
+    parser.addOption({QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."),
+                      tr("N")});
+    parser.addOption({QStringLiteral("reaction-time"),
+                      tr("The reactive operator's reaction time in seconds (default 0.25)."),
+                      tr("S")});
+    parser.addOption({QStringLiteral("set"),
+                      tr("Override a router node parameter (repeatable)."),
+                      tr("NODE.PARAM=VALUE")});
+    parser.addOption({QStringLiteral("metrics"),
+                      tr("Where to write the metrics (JSON), or - for standard output."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("frames"), tr("Where to write the contact frames."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("events"), tr("Where to write the semantic events."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("device-frames"), tr("Where to write the device frames."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("realtime"), tr("Run at the speed of the wall clock.")});
+}
+
+int RunCommand::execute(const QCommandLineParser &parser)
+{
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    for (const QString &required : {QStringLiteral("scene"), QStringLiteral("router"),
+                                    QStringLiteral("operator"), QStringLiteral("duration")}) {
+        if (!parser.isSet(required))
+            return usageError(tr("--%1 is required").arg(required));
+    }
+    RunOptions options;
+    options.scene = parser.value(QStringLiteral("scene"));
+    options.router = parser.value(QStringLiteral("router"));
+    options.operatorName = parser.value(QStringLiteral("operator"));
+    options.overrides = parser.values(QStringLiteral("set"));
+    double seed = 1;
+    double cubes = -1;
+    if (!numberOption(parser, QStringLiteral("duration"), &options.duration)
+        || !numberOption(parser, QStringLiteral("seed"), &seed)
+        || !numberOption(parser, QStringLiteral("cubes"), &cubes)
+        || !numberOption(parser, QStringLiteral("reaction-time"), &options.reactionTime))
+        return ExitUsage;
+    if (options.duration <= 0 || options.duration > 1e6)
+        return usageError(tr("--duration must be between 0 and 1000000 s"));
+    if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
+        return usageError(tr("--seed must be a whole number >= 0"));
+    if (parser.isSet(QStringLiteral("cubes")) && (cubes < 0 || cubes != std::floor(cubes)))
+        return usageError(tr("--cubes must be a whole number >= 0"));
+    if (options.reactionTime < 0 || options.reactionTime > 10)
+        return usageError(tr("--reaction-time must be between 0 and 10 s"));
+    options.seed = std::uint64_t(seed);
+    options.sceneOptions.cubes = int(cubes);
+
+    const QStringList outputs{parser.value(QStringLiteral("metrics")),
+                              parser.value(QStringLiteral("frames")),
+                              parser.value(QStringLiteral("events")),
+                              parser.value(QStringLiteral("device-frames"))};
+    if (!checkSingleStdout(outputs))
+        return ExitUsage;
+
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    if (!run)
+        return inputError(error);
+    std::array<QIODevice *, 4> devices{};
+    for (size_t i = 0; i < devices.size(); ++i) {
+        if (outputs[int(i)].isEmpty())
+            continue;
+        devices[i] = openOutput(outputs[int(i)]);
+        if (!devices[i])
+            return ExitInvalidInput;
+    }
+    StreamWriter writer(*run, devices[1], devices[2], devices[3]);
+
+    const bool progress = isatty(fileno(stderr)) && m_io.err != nullptr;
+    QElapsedTimer wall;
+    wall.start();
+    qint64 lastDraw = -1000;
+    while (run->step(writer)) {
+        if (parser.isSet(QStringLiteral("realtime"))) {
+            const qint64 ahead = qint64(run->time() * 1000) - wall.elapsed();
+            if (ahead > 1)
+                QThread::msleep(quint64(ahead));
+        }
+        if (progress && wall.elapsed() - lastDraw >= 200) {
+            lastDraw = wall.elapsed();
+            const double done = run->time() / options.duration;
+            const int bar = int(done * 30);
+            m_io.err->write(QStringLiteral("\r[%1%2] %3% %4/%5 s  %6x real time ")
+                                .arg(QString(bar, QLatin1Char('#')),
+                                     QString(30 - bar, QLatin1Char(' ')))
+                                .arg(int(done * 100), 3)
+                                .arg(run->time(), 0, 'f', 1)
+                                .arg(options.duration)
+                                .arg(run->time() / std::max(1e-3, double(wall.elapsed()) / 1000),
+                                     0, 'f', 1)
+                                .toUtf8());
+        }
+    }
+    if (progress)
+        m_io.err->write("\r\033[K");
+
+    const double wallSeconds = double(wall.elapsed()) / 1000;
+    QJsonObject metrics = run->metrics();
+    metrics.insert(QStringLiteral("scene"), options.scene);
+    metrics.insert(QStringLiteral("router"), options.router);
+    metrics.insert(QStringLiteral("operator"), options.operatorName);
+    metrics.insert(QStringLiteral("seed"), double(options.seed));
+    metrics.insert(QStringLiteral("sim_seconds"), run->time());
+    metrics.insert(QStringLiteral("wall_seconds"), wallSeconds);
+    metrics.insert(QStringLiteral("realtime_factor"), run->time() / std::max(1e-9, wallSeconds));
+    if (devices[0])
+        devices[0]->write(QJsonDocument(metrics).toJson(QJsonDocument::Indented));
+    return ExitOk;
+}
+
+} // namespace semhap

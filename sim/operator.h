@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "contactframe.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+
+namespace semhap {
+
+class World;
+
+/**
+ * What reaches the operator about one hand at a moment, each in [0, 1]: how strongly a
+ * confirmation and a warning are felt on the wristbands, a continuous pressure (the sensory
+ * baseline), and what the visual overlay on that gripper shows — which the operator sees
+ * only while looking at that hand. Computed from the device output through the devices'
+ * response models.
+ */
+struct Feeling
+{
+    double confirmation = 0.0;
+    double warning = 0.0;
+    double pressure = 0.0;
+    double shownConfirmation = 0.0;
+    double shownWarning = 0.0;
+};
+
+/**
+ * Drives the grippers: sets pose targets and grip forces before each physics step. The
+ * scripted operators here, the studio's keyboard and mouse, and live rigs over the network
+ * all implement this one interface.
+ */
+class Operator
+{
+public:
+    virtual ~Operator() = default;
+    virtual QString name() const = 0;
+    /** Sets the targets and grips for the next physics step. */
+    virtual void act(World &world) = 0;
+    /** What `hand` perceives now (the previous tick's device output); default: ignored. */
+    virtual void feel(Gripper hand, const Feeling &feeling, double t);
+};
+
+/** Operator names `makeOperator` knows. */
+QStringList operatorNames();
+
+/**
+ * The named operator for `world`: `scripted` (performs the task with seeded human
+ * variation, ignoring feedback) or `reactive` (the same, reacting to what it feels after
+ * `reactionTime` seconds). Null with `error` for an unknown name or a scene it cannot do.
+ */
+std::unique_ptr<Operator> makeOperator(const QString &name, const World &world,
+                                       std::uint64_t seed, double reactionTime, QString *error);
+
+} // namespace semhap

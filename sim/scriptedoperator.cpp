@@ -1,0 +1,350 @@
+// SPDX-License-Identifier: MIT
+#include "scriptedoperator.h"
+
+#include "world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+constexpr double Pi = 3.14159265358979323846;
+// Heights of the wrist (the gripper origin sits 6 cm above the pads' centre).
+constexpr double PadDrop = 0.06;
+constexpr double CarryHeight = 0.25;
+constexpr double ReleaseHeight = 0.19;
+// How far from a cube's centre the fingers come down, and the room they need there.
+constexpr double FingerReach = 0.04;
+constexpr double MinClearance = 0.008;
+// Pulses of one warning come at least this often (the Geiger's slowest rate is 2 Hz): a
+// pulsed warning is one cue, not one per pulse.
+constexpr double CueGap = 0.6;
+constexpr double OpenGrip = -20.0;
+// A cue counts as perceived above this level.
+constexpr double Noticeable = 0.25;
+// Sensory baseline: pressure (F / ref) at which a person stops closing, and eases off.
+constexpr double EnoughPressure = 0.3;
+constexpr double TooMuchPressure = 0.65;
+// The container's grip: what holds it (m g / mu, empty) and how the hold drifts.
+constexpr double ContainerHoldLimit = 0.3 * 9.81 / 0.1;
+constexpr double ContainerHeight = 0.09;
+// How high the left hand lifts the container off its base.
+constexpr double HoldLift = 0.06;
+
+} // namespace
+
+void Operator::feel(Gripper, const Feeling &, double) {}
+
+ScriptedOperator::ScriptedOperator(Task task, std::uint64_t seed, bool reactive,
+                                   double reactionTime)
+    : m_task(task), m_random(seed), m_reactive(reactive), m_reactionTime(reactionTime)
+{
+    m_wobblePhase = {m_random.uniform(0, 2 * Pi), m_random.uniform(0, 2 * Pi)};
+}
+
+QString ScriptedOperator::name() const
+{
+    return m_reactive ? QStringLiteral("reactive") : QStringLiteral("scripted");
+}
+
+void ScriptedOperator::act(World &world)
+{
+    const double t = world.time();
+    while (!m_percepts.empty() && m_percepts.front().due <= t) {
+        react(world, m_percepts.front());
+        m_percepts.pop_front();
+    }
+    if (m_task == Task::BimanualSorting)
+        planHold(world);
+    if (m_right.isIdle())
+        m_target >= 0 ? planGrasp(world) : planPick(world);
+    m_right.apply(world);
+}
+
+std::array<double, 3> ScriptedOperator::placePoint(const World &world)
+{
+    if (m_task == Task::BimanualSorting) {
+        const auto container = world.objectPosition(world.objectIndex(QStringLiteral("container")));
+        return {container[0], container[1], container[2] + ContainerHeight + 0.11};
+    }
+    // Where the fewest cubes are: the free spot of a 4 x 4 grid farthest from any cube in the
+    // place region, released above the rim so the fingers never land on a cube.
+    Region place;
+    world.region(QStringLiteral("place"), &place);
+    std::array<double, 3> best = place.center;
+    double bestClearance = -1.0;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const double x = place.center[0] + (i - 1.5) * place.half[0] / 2;
+            const double y = place.center[1] + (j - 1.5) * place.half[1] / 2;
+            double clearance = 1.0;
+            for (size_t k = 0; k < world.objects().size(); ++k) {
+                const auto pos = world.objectPosition(int(k));
+                if (!world.objects()[k].broken && place.contains(pos))
+                    clearance = std::min(clearance, std::hypot(pos[0] - x, pos[1] - y));
+            }
+            if (clearance > bestClearance + 1e-9) {
+                bestClearance = clearance;
+                best = {x, y, ReleaseHeight};
+            }
+        }
+    }
+    return {best[0] + m_random.uniform(-0.01, 0.01), best[1] + m_random.uniform(-0.01, 0.01),
+            best[2]};
+}
+
+void ScriptedOperator::planPick(World &world)
+{
+    // The next cube: from the top of the pile down, the first with room for the fingers; if
+    // none has, the roomiest (a person would try it anyway).
+    Region pick;
+    world.region(QStringLiteral("pick"), &pick);
+    int cube = -1;
+    double bestZ = -1.0;
+    double bestRoom = -1.0;
+    for (size_t i = 0; i < world.objects().size(); ++i) {
+        const SceneObject &object = world.objects()[i];
+        const auto pos = world.objectPosition(int(i));
+        if (object.broken || !object.name.startsWith(QLatin1String("cube")) || !pick.contains(pos))
+            continue;
+        const double yaw = graspYaw(world, int(i));
+        const double room = std::min(fingerClearance(world, int(i), yaw), MinClearance);
+        if (room > bestRoom + 1e-9 || (room >= bestRoom - 1e-9 && pos[2] > bestZ + 0.01)) {
+            bestRoom = room;
+            bestZ = pos[2];
+            cube = int(i);
+        }
+    }
+    if (cube < 0 || (m_task == Task::BimanualSorting && m_hold != Hold::Holding)) {
+        m_right.wait(0.2);
+        return;
+    }
+    // Reach above it first; the grasp is planned from there, on what the eyes see then.
+    const auto pos = world.objectPosition(cube);
+    m_target = cube;
+    m_right.grip(OpenGrip, 0.1);
+    m_right.move({pos[0], pos[1], CarryHeight}, 0.9 * m_random.uniform(0.85, 1.2));
+}
+
+void ScriptedOperator::planGrasp(World &world)
+{
+    const int cube = m_target;
+    m_target = -1;
+    if (world.objects()[size_t(cube)].broken)
+        return;
+    const auto pos = world.objectPosition(cube);
+    const double yaw = graspYaw(world, cube);
+    Pose wrist = world.target(Gripper::Right);
+    wrist.quat = {std::cos(yaw / 2), 0.0, 0.0, std::sin(yaw / 2)};
+    world.setTarget(Gripper::Right, wrist);
+    // People vary: this trial's pace and the grip it will squeeze with (N, both fingers).
+    const double pace = m_random.uniform(0.85, 1.2);
+    const double force = std::clamp(m_random.normal(60.0, 40.0), 4.0, world.maxGrip(Gripper::Right));
+    m_right.move({pos[0], pos[1], CarryHeight}, 0.3 * pace);
+    m_right.move({pos[0], pos[1], pos[2] + PadDrop}, 0.5 * pace);
+    m_right.wait(0.1);
+    m_right.grip(force, 0.7 * pace);
+    m_right.wait(0.25);
+    // Carry high enough to clear where it goes (a held container's rim may be higher).
+    const auto place = placePoint(world);
+    const double carry = std::max(CarryHeight, place[2] + 0.02);
+    m_right.move({pos[0], pos[1], carry}, 0.6 * pace);
+    m_right.move({place[0], place[1], carry}, 1.0 * pace);
+    m_right.move(place, 0.4 * pace);
+    m_right.grip(OpenGrip, 0.15);
+    m_right.wait(0.3);
+    m_right.move({place[0], place[1], carry}, 0.3 * pace);
+}
+
+double ScriptedOperator::graspYaw(const World &world, int cube) const
+{
+    // A pair of the cube's faces: of its two yaws, folded into ±45 degrees, the one whose
+    // fingers come down farthest from walls and other cubes.
+    const auto q = world.objectPose(cube).quat;
+    double yaw = std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
+    yaw -= (Pi / 2) * std::round(yaw / (Pi / 2));
+    const double other = yaw + (yaw > 0 ? -Pi / 2 : Pi / 2);
+    return fingerClearance(world, cube, other) > fingerClearance(world, cube, yaw) ? other : yaw;
+}
+
+double ScriptedOperator::fingerClearance(const World &world, int cube, double yaw) const
+{
+    // Where each finger comes down: 4 cm to either side of the cube, across the grip.
+    Region pick;
+    world.region(QStringLiteral("pick"), &pick);
+    const auto centre = world.objectPosition(cube);
+    double clearance = 1.0;
+    for (double side : {-1.0, 1.0}) {
+        const double x = centre[0] - side * FingerReach * std::sin(yaw);
+        const double y = centre[1] + side * FingerReach * std::cos(yaw);
+        clearance = std::min({clearance, pick.half[0] - std::abs(x - pick.center[0]),
+                              pick.half[1] - std::abs(y - pick.center[1])});
+        for (size_t i = 0; i < world.objects().size(); ++i) {
+            if (int(i) == cube || world.objects()[i].broken)
+                continue;
+            const auto pos = world.objectPosition(int(i));
+            if (std::abs(pos[2] - centre[2]) < 0.04)
+                clearance = std::min(clearance, std::hypot(pos[0] - x, pos[1] - y) - 0.035);
+        }
+    }
+    return clearance;
+}
+
+void ScriptedOperator::planHold(World &world)
+{
+    const double t = world.time();
+    const int container = world.objectIndex(QStringLiteral("container"));
+    const int actor = world.objects()[size_t(container)].actor;
+    const ContactFrame &frame = world.frame(Gripper::Left);
+    const bool held = frame.left.actor == actor && frame.right.actor == actor;
+    switch (m_hold) {
+    case Hold::Acquire:
+        if (m_left.isIdle()) {
+            if (held && t > m_holdStart) {
+                m_hold = Hold::Holding;
+                m_holdStart = t;
+                m_holdPos = world.target(Gripper::Left).pos;
+                m_slipAfter = m_random.uniform(10.0, 15.0);
+                break;
+            }
+            const auto pos = world.objectPosition(container);
+            const double gripZ = pos[2] + ContainerHeight - 0.02 + PadDrop;
+            m_holdGrip = m_random.normal(46.0, 3.0);
+            m_left.grip(OpenGrip, 0.1);
+            m_left.move({pos[0], pos[1], 0.3}, 0.8);
+            m_left.move({pos[0], pos[1], gripZ}, 0.6);
+            m_left.grip(m_holdGrip, 0.4);
+            m_left.wait(0.3);
+            m_left.move({pos[0], pos[1], gripZ + HoldLift}, 0.8);
+            m_holdStart = t;
+        }
+        break;
+    case Hold::Holding: {
+        // The hand relaxes without noticing: the grip drifts down to what just holds the
+        // empty container after m_slipAfter seconds, and the wrist sways a few millimetres.
+        const double s = (t - m_holdStart) / m_slipAfter;
+        world.setGrip(Gripper::Left,
+                      std::max(0.0, m_holdGrip - (m_holdGrip - ContainerHoldLimit) * s));
+        Pose target = world.target(Gripper::Left);
+        target.pos[0] = m_holdPos[0] + 0.004 * std::sin(2 * Pi * t / 5.0 + m_wobblePhase[0]);
+        target.pos[1] = m_holdPos[1] + 0.003 * std::sin(2 * Pi * t / 7.0 + m_wobblePhase[1]);
+        world.setTarget(Gripper::Left, target);
+        if (!held) {
+            m_hold = Hold::Dropped;
+            m_droppedAt = t;
+            m_left.clear();
+            m_left.grip(OpenGrip, 0.15);
+            m_left.move({m_holdPos[0], m_holdPos[1], 0.3}, 0.6);
+        }
+        break;
+    }
+    case Hold::Dropped: {
+        Region home;
+        const auto pos = world.objectPosition(container);
+        world.region(QStringLiteral("home"), &home);
+        const bool back = std::abs(pos[0] - home.center[0]) < 0.01
+                          && std::abs(pos[1] - home.center[1]) < 0.01;
+        if (m_left.isIdle() && back && t - m_droppedAt > 2.0) {
+            m_hold = Hold::Acquire;
+            m_holdStart = t;
+        }
+        break;
+    }
+    }
+    m_left.apply(world);
+}
+
+bool ScriptedOperator::looksAt(Gripper hand, double t) const
+{
+    if (m_task == Task::BoxAndBlock)
+        return hand == Gripper::Right;
+    // Watching the picking hand, with a half-second glance at the holding hand every 4.5 s
+    // (and eyes on it while it takes the container).
+    const bool glance = std::fmod(t, 4.5) < 0.5 || m_hold != Hold::Holding;
+    return hand == Gripper::Left ? glance : !glance;
+}
+
+void ScriptedOperator::feel(Gripper hand, const Feeling &feeling, double t)
+{
+    if (!m_reactive)
+        return;
+    const bool sees = looksAt(hand, t);
+    const std::array<double, 4> levels{
+        std::max(feeling.confirmation, sees ? feeling.shownConfirmation : 0.0),
+        std::max(feeling.warning, sees ? feeling.shownWarning : 0.0),
+        feeling.pressure >= EnoughPressure ? 1.0 : 0.0,
+        feeling.pressure >= TooMuchPressure ? 1.0 : 0.0};
+    HandState &state = m_hands[size_t(hand)];
+    for (size_t cue = 0; cue < levels.size(); ++cue) {
+        if (levels[cue] < Noticeable)
+            continue;
+        if (t - state.lastFelt[cue] > CueGap)
+            m_percepts.push_back({t + m_reactionTime, hand, Cue(cue)});
+        state.lastFelt[cue] = t;
+    }
+}
+
+void ScriptedOperator::react(World &world, const Percept &percept)
+{
+    const double grip = world.grip(percept.hand);
+    if (grip <= 0)
+        return;  // nothing in hand
+    HandPlan &plan = percept.hand == Gripper::Right ? m_right : m_left;
+    switch (percept.cue) {
+    case Cue::Confirmation:
+    case Cue::Pressure:
+        // Enough: stop closing here.
+        if (plan.isGripping())
+            plan.regrip(grip, 0.0);
+        break;
+    case Cue::Warning:
+        if (percept.hand == Gripper::Left && m_hold == Hold::Holding) {
+            // The container is slipping: grip firmly again, and the drift starts over.
+            m_holdGrip = std::max(m_holdGrip, grip) + 5.0;
+            m_holdStart = world.time();
+            break;
+        }
+        plan.regrip(0.7 * grip, 0.15);
+        break;
+    case Cue::HighPressure:
+        plan.regrip(0.7 * grip, 0.15);
+        break;
+    }
+}
+
+QStringList operatorNames()
+{
+    return {QStringLiteral("scripted"), QStringLiteral("reactive")};
+}
+
+std::unique_ptr<Operator> makeOperator(const QString &name, const World &world,
+                                       std::uint64_t seed, double reactionTime, QString *error)
+{
+    if (!operatorNames().contains(name)) {
+        *error = QStringLiteral("unknown operator '%1' (operators: %2)")
+                     .arg(name, operatorNames().join(QStringLiteral(", ")));
+        return nullptr;
+    }
+    Region region;
+    ScriptedOperator::Task task = ScriptedOperator::Task::BoxAndBlock;
+    if (world.objectIndex(QStringLiteral("container")) >= 0 && world.hasGripper(Gripper::Left)
+        && world.region(QStringLiteral("home"), &region)) {
+        task = ScriptedOperator::Task::BimanualSorting;
+    } else if (!world.region(QStringLiteral("place"), &region)) {
+        *error = QStringLiteral("%1: the %2 operator needs sites 'pick' and 'place' (or a "
+                                "'container' and a 'home' site; see sim/README.md)")
+                     .arg(world.sceneName(), name);
+        return nullptr;
+    }
+    if (!world.region(QStringLiteral("pick"), &region) || !world.hasGripper(Gripper::Right)) {
+        *error = QStringLiteral("%1: the %2 operator needs a right gripper and a 'pick' site")
+                     .arg(world.sceneName(), name);
+        return nullptr;
+    }
+    return std::make_unique<ScriptedOperator>(task, seed, name == QLatin1String("reactive"),
+                                              reactionTime);
+}
+
+} // namespace semhap

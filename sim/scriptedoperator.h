@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "handplan.h"
+#include "operator.h"
+#include "random.h"
+
+#include <deque>
+
+namespace semhap {
+
+/**
+ * Performs the scene's task the way a person would: reach, close at a human speed, lift,
+ * carry, release, return, with seeded variation in timing and grip force — so that without
+ * feedback some cubes break and some slip, as in the paper's no-feedback condition. In the
+ * bimanual task the left hand holds the container with a grip that drifts slowly down (the
+ * subconscious hand movement the paper describes), so it slips every 10–15 s.
+ *
+ * Reactive, it also acts on what it perceives, `reactionTime` later: it stops closing on a
+ * grasp confirmation (or once the fingertip pressure is clear), eases off on a break warning
+ * or high pressure, and grips harder on a slip warning; the overlay counts only while it
+ * looks at that hand (it watches the picking hand and glances at the other every few s).
+ */
+class ScriptedOperator : public Operator
+{
+public:
+    enum class Task { BoxAndBlock, BimanualSorting };
+
+    ScriptedOperator(Task task, std::uint64_t seed, bool reactive, double reactionTime);
+
+    QString name() const override;
+    void act(World &world) override;
+    void feel(Gripper hand, const Feeling &feeling, double t) override;
+
+private:
+    enum class Cue { Confirmation, Warning, Pressure, HighPressure };
+    struct Percept
+    {
+        double due;
+        Gripper hand;
+        Cue cue;
+    };
+    struct HandState
+    {
+        /** Per Cue: when it was last above the noticeable level. */
+        std::array<double, 4> lastFelt{-1e9, -1e9, -1e9, -1e9};
+    };
+
+    void planPick(World &world);
+    void planGrasp(World &world);
+    /** The wrist's yaw to grip `cube` by a pair of its faces, the roomier pair. */
+    double graspYaw(const World &world, int cube) const;
+    /** The room the fingers have around `cube` gripping at `yaw` (m; negative: none). */
+    double fingerClearance(const World &world, int cube, double yaw) const;
+    void planHold(World &world);
+    void react(World &world, const Percept &percept);
+    bool looksAt(Gripper hand, double t) const;
+    std::array<double, 3> placePoint(const World &world);
+
+    Task m_task;
+    Random m_random;
+    bool m_reactive;
+    double m_reactionTime;
+    HandPlan m_right{Gripper::Right};
+    HandPlan m_left{Gripper::Left};
+    std::array<HandState, 2> m_hands{};
+    std::deque<Percept> m_percepts;
+    int m_target = -1;  ///< the cube the right hand is reaching for, until it descends
+
+    // Bimanual: the holding hand's state.
+    enum class Hold { Acquire, Holding, Dropped } m_hold = Hold::Acquire;
+    double m_holdStart = 0.0;
+    double m_holdGrip = 0.0;
+    double m_slipAfter = 12.0;
+    double m_droppedAt = 0.0;
+    std::array<double, 3> m_holdPos{};
+    std::array<double, 2> m_wobblePhase{};
+    double m_nextGlance = 4.0;
+};
+
+} // namespace semhap

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include "simrun.h"
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+// A warning counts as perceived from this level on (as the operators' Noticeable).
+constexpr double Perceptible = 0.25;
+
+} // namespace
+
+std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error)
+{
+    std::unique_ptr<SimRun> run(new SimRun);
+    run->m_options = options;
+    run->m_world = World::load(options.scene, options.sceneOptions, error);
+    if (!run->m_world)
+        return nullptr;
+    LoadError loadError;
+    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError);
+    if (!router) {
+        *error = loadError.toString();
+        return nullptr;
+    }
+    run->m_operator = makeOperator(options.operatorName, *run->m_world, options.seed,
+                                   options.reactionTime, error);
+    if (!run->m_operator)
+        return nullptr;
+    run->m_perception = std::make_unique<Perception>(*router);
+    run->m_pipeline = std::make_unique<Pipeline>(std::move(router));
+    run->m_task = std::make_unique<TaskMonitor>(*run->m_world);
+    run->m_totalSteps = std::lround(options.duration / run->m_world->timestep());
+    return run;
+}
+
+bool SimRun::isDone() const
+{
+    return m_steps >= m_totalSteps;
+}
+
+double SimRun::time() const
+{
+    return m_world->time();
+}
+
+bool SimRun::step(RunSink &sink)
+{
+    if (isDone())
+        return false;
+    m_operator->act(*m_world);
+    m_world->step();
+    Tee tee(*m_perception, sink);
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (!m_world->hasGripper(g))
+            continue;
+        const ContactFrame &frame = m_world->frame(g);
+        sink.onContactFrame(frame);
+        m_pipeline->process(frame, tee);
+    }
+    m_pipeline->flush(tee);
+    m_task->observe(*m_world);
+    // What the operator acts on next step: this tick's output, as the hands perceive it.
+    const double t = m_world->frame(Gripper::Right).t;
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        const Feeling feeling = m_perception->feeling(g);
+        m_operator->feel(g, feeling, t);
+        m_task->setWarningFelt(g, std::max(feeling.warning, feeling.shownWarning) >= Perceptible,
+                               t);
+    }
+    ++m_steps;
+    return !isDone();
+}
+
+} // namespace semhap

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "operator.h"
+#include "perception.h"
+#include "pipeline.h"
+#include "taskmonitor.h"
+#include "world.h"
+
+#include <QJsonObject>
+#include <QStringList>
+
+#include <cstdint>
+#include <memory>
+
+namespace semhap {
+
+/** Everything that defines a headless run; same options, same run. */
+struct RunOptions
+{
+    QString scene = QStringLiteral("box_and_block");
+    SceneOptions sceneOptions;
+    QString router = QStringLiteral("C3");
+    QStringList overrides;  ///< NODE.PARAM=VALUE
+    QString operatorName = QStringLiteral("scripted");
+    std::uint64_t seed = 1;
+    double duration = 60.0;      ///< simulated seconds
+    double reactionTime = 0.25;  ///< the reactive operator's delay (s)
+};
+
+/** Receives a run's streams: contact frames besides the pipeline's events and frames. */
+class RunSink : public PipelineSink
+{
+public:
+    virtual void onContactFrame(const ContactFrame &) {}
+};
+
+/**
+ * The whole pipeline on the simulation: each physics step the operator acts on what it
+ * felt, the world steps, its contact frames go through detectors, router and player, and
+ * the task counts. Deterministic: the same options give the same streams, bit for bit.
+ */
+class SimRun
+{
+public:
+    /** Loads scene, router and operator; null with a one-line `error`. */
+    static std::unique_ptr<SimRun> create(const RunOptions &options, QString *error);
+
+    /** One physics step and the pipeline tick it makes; false once the duration is done. */
+    bool step(RunSink &sink);
+    bool isDone() const;
+    /** Simulated seconds so far. */
+    double time() const;
+
+    /** The task metrics so far. */
+    QJsonObject metrics() const { return m_task->metrics(); }
+
+    World &world() { return *m_world; }
+    Pipeline &pipeline() { return *m_pipeline; }
+    const RunOptions &options() const { return m_options; }
+
+private:
+    SimRun() = default;
+
+    /** Forwards the pipeline's output to the perception and the caller's sink. */
+    class Tee : public PipelineSink
+    {
+    public:
+        Tee(Perception &perception, RunSink &sink) : m_perception(perception), m_sink(sink) {}
+        void onEvent(const SemanticEvent &event) override { m_sink.onEvent(event); }
+        void onDeviceFrame(const DeviceFrame &frame) override
+        {
+            m_perception.onDeviceFrame(frame);
+            m_sink.onDeviceFrame(frame);
+        }
+
+    private:
+        Perception &m_perception;
+        RunSink &m_sink;
+    };
+
+    RunOptions m_options;
+    std::unique_ptr<World> m_world;
+    std::unique_ptr<Pipeline> m_pipeline;
+    std::unique_ptr<Operator> m_operator;
+    std::unique_ptr<Perception> m_perception;
+    std::unique_ptr<TaskMonitor> m_task;
+    long m_steps = 0;
+    long m_totalSteps = 0;
+};
+
+} // namespace semhap

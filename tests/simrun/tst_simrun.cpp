@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: MIT
+// Headless runs of the simulation: deterministic streams, task metrics whose answer is known,
+// the container's slip timing, and the `semhap run` command line.
+#include "clitool.h"
+#include "contactframereader.h"
+#include "handplan.h"
+#include "simrun.h"
+#include "taskmonitor.h"
+
+#include <QBuffer>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+struct CliResult
+{
+    int code;
+    QByteArray out;
+    QByteArray err;
+};
+
+CliResult semhapRun(const QStringList &args)
+{
+    CliResult r{0, {}, {}};
+    QBuffer out(&r.out);
+    QBuffer err(&r.err);
+    out.open(QIODevice::WriteOnly);
+    err.open(QIODevice::WriteOnly);
+    CliTool tool({nullptr, &out, &err});
+    r.code = tool.run(args);
+    return r;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+/** Steps `world` (and the monitor) until `plan` is done. */
+void play(World &world, TaskMonitor &monitor, HandPlan &plan)
+{
+    while (!plan.isIdle()) {
+        plan.apply(world);
+        world.step();
+        monitor.observe(world);
+    }
+}
+
+/** Picks cube_0 with `force` and, unless it is lost, drops it in box B. */
+QJsonObject pickAndPlace(double force)
+{
+    QString error;
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
+    TaskMonitor monitor(*world);
+    HandPlan plan(Gripper::Right);
+    const auto cube = world->objectPosition(0);
+    plan.grip(-20, 0.1);
+    plan.move({cube[0], cube[1], 0.25}, 0.8);
+    plan.move({cube[0], cube[1], cube[2] + 0.06}, 0.6);
+    plan.grip(force, 0.5);
+    plan.wait(0.3);
+    plan.move({cube[0], cube[1], 0.25}, 0.6);
+    plan.move({0.15, 0.0, 0.25}, 1.0);
+    plan.move({0.15, 0.0, 0.19}, 0.4);
+    plan.grip(-20, 0.2);
+    plan.wait(1.0);
+    play(*world, monitor, plan);
+    return monitor.metrics();
+}
+
+} // namespace
+
+class TestSimRun : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void metricsOfKnownEpisodes_data();
+    void metricsOfKnownEpisodes();
+    void runIsDeterministic();
+    void containerSlipsWithin10To15Seconds_data();
+    void containerSlipsWithin10To15Seconds();
+    void commandLine();
+    void commandLineErrors_data();
+    void commandLineErrors();
+};
+
+void TestSimRun::metricsOfKnownEpisodes_data()
+{
+    QTest::addColumn<double>("force");
+    QTest::addColumn<int>("transferred");
+    QTest::addColumn<int>("dropped");
+    QTest::addColumn<int>("broken");
+    QTest::newRow("firm grip: transferred") << 40.0 << 1 << 0 << 0;
+    QTest::newRow("too little grip: dropped") << 5.0 << 0 << 1 << 0;
+    QTest::newRow("too much grip: broken") << 140.0 << 0 << 0 << 1;
+}
+
+void TestSimRun::metricsOfKnownEpisodes()
+{
+    QFETCH(double, force);
+    QFETCH(int, transferred);
+    QFETCH(int, dropped);
+    QFETCH(int, broken);
+    const QJsonObject m = pickAndPlace(force);
+    QCOMPARE(m.value("cubes_transferred").toInt(), transferred);
+    QCOMPARE(m.value("cubes_dropped").toInt(), dropped);
+    QCOMPARE(m.value("cubes_broken").toInt(), broken);
+    QCOMPARE(m.value("grasps").toInt(), 1);
+    if (transferred) {
+        // The grip settles at the command: both averages sit at the force squeezed with.
+        QVERIFY(std::abs(m.value("average_peak_grasp_force").toDouble() - force) < 0.1 * force);
+        QVERIFY(std::abs(m.value("average_grasp_force").toDouble() - force) < 0.25 * force);
+        QCOMPARE(m.value("grasps_per_transfer").toDouble(), 1.0);
+    }
+    if (broken)
+        QVERIFY(m.value("average_peak_grasp_force").toDouble() > 120.0);
+}
+
+void TestSimRun::runIsDeterministic()
+{
+    QTemporaryDir dir;
+    QList<QByteArray> outputs[2];
+    for (int i = 0; i < 2; ++i) {
+        const QString prefix = dir.filePath(QString::number(i));
+        const CliResult r = semhapRun({"run", "--scene", "box_and_block", "--router", "C3",
+                                       "--operator", "reactive", "--seed", "7", "--duration",
+                                       "8", "--frames", prefix + ".frames", "--events",
+                                       prefix + ".events", "--device-frames",
+                                       prefix + ".devices", "--metrics", prefix + ".json"});
+        QCOMPARE(r.code, 0);
+        for (const char *stream : {".frames", ".events", ".devices"})
+            outputs[i].append(readAll(prefix + stream));
+        QJsonObject metrics = QJsonDocument::fromJson(readAll(prefix + ".json")).object();
+        metrics.remove("wall_seconds");
+        metrics.remove("realtime_factor");
+        outputs[i].append(QJsonDocument(metrics).toJson());
+    }
+    QVERIFY(outputs[0][0].size() > 100000);
+    QVERIFY(outputs[0][1].contains("\"grasp\""));
+    for (int s = 0; s < 4; ++s)
+        QVERIFY2(outputs[0][s] == outputs[1][s], "the same seed gave different output");
+
+    // The contact frames are valid input for `semhap route`.
+    QBuffer frames(&outputs[0][0]);
+    frames.open(QIODevice::ReadOnly);
+    ContactFrameReader reader(&frames, "frames");
+    ContactFrame frame;
+    int count = 0;
+    while (reader.next(&frame))
+        ++count;
+    QCOMPARE(reader.rejectedCount(), 0);
+    QCOMPARE(count, 4000);  // 8 s at 2 ms, the right gripper only
+}
+
+void TestSimRun::containerSlipsWithin10To15Seconds_data()
+{
+    QTest::addColumn<int>("seed");
+    for (int seed : {1, 2, 3})
+        QTest::newRow(qPrintable(QString("seed %1").arg(seed))) << seed;
+}
+
+void TestSimRun::containerSlipsWithin10To15Seconds()
+{
+    // No cubes: the right hand stays idle and the container stays empty, so only the
+    // holding hand's drift decides when it slips.
+    QFETCH(int, seed);
+    RunOptions options;
+    options.scene = "bimanual_sorting";
+    options.sceneOptions.cubes = 0;
+    options.seed = std::uint64_t(seed);
+    options.duration = 25;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    QVERIFY2(run, qPrintable(error));
+    RunSink sink;
+    const int container = run->world().objectIndex("container");
+    const int actor = run->world().objects()[size_t(container)].actor;
+    double heldSince = -1;
+    double slippedAt = -1;
+    while (run->step(sink) && slippedAt < 0) {
+        const ContactFrame &f = run->world().frame(Gripper::Left);
+        const bool held = f.left.actor == actor && f.right.actor == actor && f.totalForce() > 20;
+        if (held && heldSince < 0)
+            heldSince = f.t;
+        if (!held && heldSince >= 0 && run->metrics().value("containers_dropped").toInt() > 0)
+            slippedAt = f.t;
+    }
+    QVERIFY(heldSince > 0);
+    QVERIFY2(slippedAt > 0, "the container never slipped");
+    const double held = slippedAt - heldSince;
+    QVERIFY2(held >= 10.0 && held <= 15.5, qPrintable(QString("held for %1 s").arg(held)));
+}
+
+void TestSimRun::commandLine()
+{
+    const CliResult r = semhapRun({"run", "--scene", "box_and_block", "--router", "C3",
+                                   "--operator", "scripted", "--duration", "12", "--metrics",
+                                   "-"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.err, QByteArray());
+    const QJsonObject m = QJsonDocument::fromJson(r.out).object();
+    for (const char *key :
+         {"cubes_transferred", "cubes_dropped", "cubes_broken", "grasps", "average_grasp_force",
+          "grasps_per_transfer", "average_peak_grasp_force", "warning_lead_time",
+          "breaks_warned_share", "sim_seconds", "wall_seconds", "realtime_factor"})
+        QVERIFY2(m.contains(key), key);
+    QVERIFY(m.value("cubes_transferred").toInt() >= 1);
+    QVERIFY(std::abs(m.value("sim_seconds").toDouble() - 12.0) < 1e-6);
+}
+
+void TestSimRun::commandLineErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("error");
+    const QStringList base{"run", "--router", "C3", "--operator", "scripted", "--duration", "1"};
+    QTest::newRow("no scene") << base << 2 << "semhap run: --scene is required";
+    QTest::newRow("unknown scene")
+        << base + QStringList{"--scene", "kitchen"} << 1
+        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block)";
+    QTest::newRow("unknown operator")
+        << QStringList{"run", "--scene", "box_and_block", "--router", "C3", "--operator",
+                       "robot", "--duration", "1"}
+        << 1 << "unknown operator 'robot' (operators: scripted, reactive)";
+    QTest::newRow("bad seed") << base + QStringList{"--scene", "box_and_block", "--seed", "1.5"}
+                              << 2 << "semhap run: --seed must be a whole number >= 0";
+    QTest::newRow("too many cubes")
+        << base + QStringList{"--scene", "box_and_block", "--cubes", "99"} << 1
+        << "box_and_block: asked for 99 cubes, the scene has 24";
+}
+
+void TestSimRun::commandLineErrors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, code);
+    QFETCH(QString, error);
+    const CliResult r = semhapRun(args);
+    QCOMPARE(r.code, code);
+    QCOMPARE(QString::fromUtf8(r.err.split('\n').first()), error);
+}
+
+QTEST_GUILESS_MAIN(TestSimRun)
+#include "tst_simrun.moc"
