@@ -6,48 +6,29 @@
 #include "pattern.h"
 #include "patternrender.h"
 #include "router.h"
+#include "world.h"
 
 #include <QFile>
 #include <QFileInfo>
-#include <QXmlStreamReader>
 
 namespace semhap {
 
 namespace {
 
-// Until the simulation module validates scenes with MuJoCo itself, a scene is checked for
-// well-formed XML with a <mujoco> root.
-bool validateScene(const QString &path, LoadError *error, QString *what)
+// A scene is valid when MuJoCo compiles it and semhap finds its grippers (sim/README.md).
+bool validateScene(const QString &path, QString *error, QString *what)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error =
-            LoadError::atLine(path, 0, 0, QStringLiteral("cannot read: ") + file.errorString());
+    std::unique_ptr<World> world = World::load(path, SceneOptions(), error);
+    if (!world)
         return false;
+    QStringList grippers;
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (world->hasGripper(g))
+            grippers.append(gripperName(g));
     }
-    QXmlStreamReader xml(&file);
-    bool sawRoot = false;
-    while (!xml.atEnd()) {
-        xml.readNext();
-        if (xml.isStartElement() && !sawRoot) {
-            sawRoot = true;
-            if (xml.name() != QLatin1String("mujoco")) {
-                *error = LoadError::atLine(path, int(xml.lineNumber()), int(xml.columnNumber()),
-                                           QStringLiteral("the root element must be <mujoco>, "
-                                                          "found <%1>")
-                                               .arg(xml.name()));
-                return false;
-            }
-            *what = QStringLiteral("scene '%1'")
-                        .arg(xml.attributes().value(QLatin1String("model")).toString());
-        }
-    }
-    if (xml.hasError() || !sawRoot) {
-        *error = LoadError::atLine(path, int(xml.lineNumber()), int(xml.columnNumber()),
-                                   xml.hasError() ? xml.errorString()
-                                                  : QStringLiteral("no XML element"));
-        return false;
-    }
+    *what = QStringLiteral("scene (grippers: %1; %2 objects)")
+                .arg(grippers.join(QStringLiteral(", ")))
+                .arg(world->objects().size());
     return true;
 }
 
@@ -98,7 +79,13 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
         const QString format = doc.json.value(QStringLiteral("format")).toString();
         bool ok = false;
         if (doc.path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive)) {
-            ok = validateScene(doc.path, &error, &what);
+            QString sceneError;
+            ok = validateScene(doc.path, &sceneError, &what);
+            if (!ok) {
+                report(sceneError);
+                ++invalid;
+                continue;
+            }
         } else if (error.isSet()) {
             ok = false;
         } else if (format == QLatin1String(Pattern::Format)) {

@@ -14,6 +14,12 @@ namespace semhap {
 
 namespace {
 
+/** MuJoCo's messages span lines; a loader's error is one line. */
+QString oneLine(const char *message)
+{
+    return QString::fromUtf8(message).trimmed().replace(QLatin1Char('\n'), QStringLiteral("; "));
+}
+
 const QRegularExpression &cubeName()
 {
     static const QRegularExpression re(QStringLiteral("^cube_(\\d+)$"));
@@ -89,7 +95,7 @@ MjModelPtr compile(const QByteArray &xml, const QString &where, QString *error)
     char message[1000] = "";
     MjModelPtr model(mj_loadXML(file, vfs.get(), message, sizeof message));
     if (!model)
-        *error = where + QStringLiteral(": ") + QString::fromUtf8(message).trimmed();
+        *error = where + QStringLiteral(": ") + oneLine(message);
     return model;
 }
 
@@ -130,7 +136,7 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                                             .constData(),
                                         nullptr, message, sizeof message));
             if (!model)
-                *error = nameOrPath + QStringLiteral(": ") + QString::fromUtf8(message).trimmed();
+                *error = nameOrPath + QStringLiteral(": ") + oneLine(message);
             return model;
         }
         return compile(xml, nameOrPath, error);

@@ -123,6 +123,14 @@ void TestCli::errors_data()
            "air.pulse5hz, air.squeeze, vib.geiger, vib.rampup, visual.blink, visual.confirm)";
     QTest::newRow("validate nothing")
         << QStringList{"validate"} << 2 << "semhap validate: no files given";
+    QTest::newRow("validate scene without gripper")
+        << QStringList{"validate", Data + "/no-gripper.xml"} << 1
+        << Data + "/no-gripper.xml: no gripper (a body left.gripper or right.gripper; see "
+                  "sim/README.md)";
+    QTest::newRow("validate broken scene")
+        << QStringList{"validate", Data + "/broken-scene.xml"} << 1
+        << Data + "/broken-scene.xml: XML parse error 6:; Error=XML_ERROR_PARSING_ELEMENT "
+                  "ErrorID=6 (0x6) Line number=3: XMLElement name=bod";
     QTest::newRow("validate broken pattern")
         << QStringList{"validate", Data + "/broken-pattern.json"} << 1
         << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "
@@ -229,9 +237,9 @@ void TestCli::renderToFile()
 void TestCli::validate()
 {
     QStringList files;
-    for (const char *dir : {"routers", "patterns", "devices"}) {
+    for (const char *dir : {"routers", "patterns", "devices", "scenes"}) {
         const QDir d(QString(SEMHAP_RESOURCES "/") + dir);
-        for (const QString &f : d.entryList({"*.json"}))
+        for (const QString &f : d.entryList({"*.json", "*.xml"}))
             files.append(d.filePath(f));
     }
     const Result ok = semhapRun(QStringList{"validate"} + files);
