@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "clitool.h"
 
+#include "comparecommand.h"
 #include "rendercommand.h"
 #include "routecommand.h"
 #include "runcommand.h"
@@ -13,7 +14,8 @@ namespace {
 const QStringList &commandNames()
 {
     static const QStringList names{QStringLiteral("route"), QStringLiteral("render"),
-                                   QStringLiteral("validate"), QStringLiteral("run")};
+                                   QStringLiteral("validate"), QStringLiteral("run"),
+                                   QStringLiteral("compare")};
     return names;
 }
 
@@ -29,6 +31,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<ValidateCommand>(m_io);
     if (name == QLatin1String("run"))
         return std::make_unique<RunCommand>(m_io);
+    if (name == QLatin1String("compare"))
+        return std::make_unique<CompareCommand>(m_io);
     return nullptr;
 }
 

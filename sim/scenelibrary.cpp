@@ -9,6 +9,7 @@
 #include <QXmlStreamWriter>
 
 #include <cstring>
+#include <mutex>
 
 namespace semhap {
 
@@ -115,6 +116,10 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                               QString *error)
 {
     installMujocoHandlers();
+    // MuJoCo 2.2's XML compiler keeps global state; runs load in parallel (compare), step
+    // in parallel, but compile one at a time.
+    static std::mutex compiling;
+    const std::lock_guard<std::mutex> lock(compiling);
     const bool isPath = nameOrPath.contains(QLatin1Char('/'))
                         || nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
     const QString path =

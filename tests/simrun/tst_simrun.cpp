@@ -90,6 +90,7 @@ private slots:
     void commandLine();
     void commandLineErrors_data();
     void commandLineErrors();
+    void compareShardsMergeToTheWholeGrid();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -245,6 +246,48 @@ void TestSimRun::commandLineErrors()
     const CliResult r = semhapRun(args);
     QCOMPARE(r.code, code);
     QCOMPARE(QString::fromUtf8(r.err.split('\n').first()), error);
+}
+
+void TestSimRun::compareShardsMergeToTheWholeGrid()
+{
+    QTemporaryDir dir;
+    const QStringList grid{"compare", "--scene", "box_and_block", "--routers", "none,C3",
+                           "--operator", "scripted", "--seeds", "3", "--duration", "2",
+                           "--jobs", "2"};
+    const CliResult whole = semhapRun(grid + QStringList{"--csv", dir.filePath("all.csv")});
+    QCOMPARE(whole.code, 0);
+    QVERIFY(whole.out.startsWith("metric"));
+    QVERIFY(whole.out.contains("none") && whole.out.contains("C3"));
+    QStringList parts;
+    for (int i = 1; i <= 3; ++i) {
+        parts.append(dir.filePath(QString("part%1.csv").arg(i)));
+        QCOMPARE(semhapRun(grid + QStringList{"--shard", QString("%1/3").arg(i), "--csv",
+                                              parts.last()})
+                     .code,
+                 0);
+    }
+    const CliResult merged =
+        semhapRun(QStringList{"compare", "--merge", "--csv", dir.filePath("merged.csv")} + parts);
+    QCOMPARE(merged.code, 0);
+    // The same six runs, whatever slice ran them (timing columns aside).
+    const auto runs = [](const QByteArray &csv) {
+        QStringList lines;
+        for (const QByteArray &line : csv.trimmed().split('\n'))
+            lines.append(QString::fromUtf8(line).section(',', 0, -2));
+        lines.sort();
+        return lines;
+    };
+    QCOMPARE(runs(readAll(dir.filePath("merged.csv"))), runs(readAll(dir.filePath("all.csv"))));
+    QCOMPARE(runs(readAll(dir.filePath("all.csv"))).size(), 7);
+
+    QCOMPARE(semhapRun(grid + QStringList{"--shard", "4/3"}).code, 2);
+    QFile bad(dir.filePath("bad.csv"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("a,b\n");
+    bad.close();
+    const CliResult refused = semhapRun({"compare", "--merge", dir.filePath("bad.csv")});
+    QCOMPARE(refused.code, 1);
+    QVERIFY(refused.err.contains("bad.csv:1: not a semhap compare CSV"));
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
