@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs what is missing, builds, and runs every test:
-#  1. the normal build (gcc): every Qt Test; timing-sensitive ones (label "timing") serially;
+#  1. the normal build (gcc): every Qt Test, under Xvfb; timing-sensitive ones (label
+#     "timing") serially;
 #  2. the sanitizer build (clang, ASan + UBSan) of the core, patterns and devices tests, and
 #     each libFuzzer target for a capped number of runs on its seed corpus;
 #  3. the exported CMake package: an outside project's Qt Test against the installed core.
@@ -14,8 +15,10 @@ fuzz_runs=${SEMHAP_FUZZ_RUNS:-20000}
 
 echo "== normal build"
 "$root/scripts/build.sh" "$root/build"
-(cd "$root/build" && ctest --output-on-failure -j "$jobs" -LE timing \
-    && ctest --output-on-failure -L timing)
+# OpenGL tests need an X display: a virtual one, for this run only.
+xvfb="xvfb-run -a -s '-screen 0 1600x1200x24'"
+(cd "$root/build" && eval "$xvfb" ctest --output-on-failure -j "$jobs" -LE timing \
+    && eval "$xvfb" ctest --output-on-failure -L timing)
 
 echo "== sanitizer build (ASan + UBSan) and fuzzers"
 CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-asan" \

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// The scene renderer in a real OpenGL context (run under Xvfb): it draws the scene, the
+// overlay tints the gripper in its colour, and grabs are opaque. The images are saved
+// beside the test binary to be looked at.
+#include "scenerenderer.h"
+#include "world.h"
+
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QSet>
+#include <QTest>
+
+using namespace semhap;
+
+namespace {
+
+/** Pixels close to `colour` (the overlay's tint, lit or in shade). */
+int pixelsNear(const QImage &image, QColor colour)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.hueF() - colour.hueF()) < 0.04 && c.saturationF() > 0.6
+                && c.valueF() > 0.25)
+                ++count;
+        }
+    }
+    return count;
+}
+
+} // namespace
+
+class TestSimView : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void rendersTheScene();
+    void overlayTintsTheGripper_data();
+    void overlayTintsTheGripper();
+
+private:
+    QImage render(const SceneRenderer::Overlay &overlay, const QString &name);
+
+    QOffscreenSurface m_surface;
+    QOpenGLContext m_context;
+    std::unique_ptr<World> m_world;
+    std::unique_ptr<SceneRenderer> m_renderer;
+};
+
+void TestSimView::initTestCase()
+{
+    QSurfaceFormat format;
+    format.setProfile(QSurfaceFormat::CompatibilityProfile);  // MuJoCo needs it
+    format.setDepthBufferSize(24);
+    m_surface.setFormat(format);
+    m_surface.create();
+    m_context.setFormat(format);
+    QVERIFY(m_context.create());
+    QVERIFY(m_context.makeCurrent(&m_surface));
+    QString error;
+    m_world = World::load("box_and_block", SceneOptions(), &error);
+    QVERIFY2(m_world, qPrintable(error));
+    for (int k = 0; k < 50; ++k)
+        m_world->step();
+    m_renderer = std::make_unique<SceneRenderer>(*m_world);
+    m_renderer->initialize();
+    QVERIFY(m_renderer->isInitialized());
+    m_renderer->camera().lookAt = {-0.1, 0.0, 0.12};
+    m_renderer->camera().distance = 0.75;
+}
+
+QImage TestSimView::render(const SceneRenderer::Overlay &overlay, const QString &name)
+{
+    QOpenGLFramebufferObject fbo(800, 600, QOpenGLFramebufferObject::CombinedDepthStencil);
+    m_renderer->setOverlay(overlay);
+    m_renderer->render(fbo.handle(), fbo.width(), fbo.height());
+    const QImage image = fbo.toImage();
+    image.save(QString("%1/simview-%2.png").arg(QCoreApplication::applicationDirPath(), name));
+    return image;
+}
+
+void TestSimView::rendersTheScene()
+{
+    const QImage image = render({}, "plain");
+    QSet<QRgb> colours;
+    bool opaque = true;
+    for (int y = 0; y < image.height(); y += 4) {
+        for (int x = 0; x < image.width(); x += 4) {
+            colours.insert(image.pixel(x, y) & 0xffffff);
+            opaque = opaque && qAlpha(image.pixel(x, y)) == 255;
+        }
+    }
+    QVERIFY2(colours.size() > 100, "the image is (nearly) uniform: nothing was drawn");
+    QVERIFY(opaque);
+}
+
+void TestSimView::overlayTintsTheGripper_data()
+{
+    QTest::addColumn<double>("confirm");
+    QTest::addColumn<double>("warn");
+    QTest::addColumn<QColor>("colour");
+    QTest::newRow("confirmation: blue") << 1.0 << 0.0 << QColor::fromRgbF(0.0f, 0.447f, 0.698f);
+    QTest::newRow("warning: orange") << 0.0 << 1.0 << QColor::fromRgbF(0.902f, 0.624f, 0.0f);
+    QTest::newRow("warning over confirmation")
+        << 1.0 << 1.0 << QColor::fromRgbF(0.902f, 0.624f, 0.0f);
+}
+
+void TestSimView::overlayTintsTheGripper()
+{
+    QFETCH(double, confirm);
+    QFETCH(double, warn);
+    QFETCH(QColor, colour);
+    const QImage plain = render({}, "plain");
+    SceneRenderer::Overlay overlay;
+    overlay.rightConfirm = confirm;
+    overlay.rightWarn = warn;
+    const QImage tinted = render(overlay, QTest::currentDataTag());
+    const int before = pixelsNear(plain, colour);
+    const int after = pixelsNear(tinted, colour);
+    QVERIFY2(after > before + 500, qPrintable(QString("%1 -> %2 pixels").arg(before).arg(after)));
+}
+
+QTEST_MAIN(TestSimView)
+#include "tst_simview.moc"
