@@ -37,6 +37,10 @@ endfunction()
 # Tests read their golden files from SEMHAP_TEST_DATA (the test's own folder).
 function(semhap_add_test name)
     cmake_parse_arguments(arg "" "" "LIBS;LABELS;SOURCES" ${ARGN})
+    # The sanitizer build runs only the tests labelled "sanitize": build only those.
+    if(SEMHAP_SANITIZE AND NOT "sanitize" IN_LIST arg_LABELS)
+        return()
+    endif()
     set(target tst_${name})
     add_executable(${target} ${CMAKE_CURRENT_SOURCE_DIR}/${name}/tst_${name}.cpp ${arg_SOURCES})
     target_link_libraries(${target} PRIVATE Qt6::Test ${arg_LIBS})

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The MuJoCo world: scenes load, fingertips report the force they grip with, fragile cubes
 // break above their force and not below, contact counts stay steady while an object slides.
+#include "manualoperator.h"
 #include "world.h"
+
+#include <thread>
 
 #include <QTest>
 
@@ -83,6 +86,7 @@ private slots:
     void liftHoldsOrSlips_data();
     void liftHoldsOrSlips();
     void countFallsRowByRowWhileSliding();
+    void manualInputDrivesTheGripper();
 };
 
 void TestWorld::scenesLoad_data()
@@ -235,6 +239,34 @@ void TestWorld::countFallsRowByRowWhileSliding()
     QCOMPARE(counts.last(), 0);
     for (int i = 1; i < counts.size(); ++i)
         QVERIFY2(counts[i] < counts[i - 1], "the count went back up");
+}
+
+void TestWorld::manualInputDrivesTheGripper()
+{
+    // The pose-and-grip input, written from another thread as the studio or a rig would.
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    ManualOperator input;
+    const auto cube = world->objectPosition(0);
+    std::thread rig([&] {
+        Pose above;
+        above.pos = {cube[0], cube[1], cube[2] + 0.06};
+        input.setTarget(Gripper::Right, above);
+        input.setGrip(Gripper::Right, -20);
+    });
+    rig.join();
+    for (int k = 0; k < 500; ++k) {
+        input.act(*world);
+        world->step();
+    }
+    input.setGrip(Gripper::Right, 30);
+    for (int k = 0; k < 400; ++k) {
+        input.act(*world);
+        world->step();
+    }
+    const ContactFrame &frame = world->frame(Gripper::Right);
+    QVERIFY(std::abs(frame.totalForce() - 30.0) < 1.5);
+    QCOMPARE(frame.left.actor, world->objects()[0].actor);
+    QCOMPARE(input.name(), QString("manual"));
 }
 
 QTEST_GUILESS_MAIN(TestWorld)
