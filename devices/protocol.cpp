@@ -214,7 +214,8 @@ int assemble(MessageType type, std::uint16_t sequence, const std::uint8_t *paylo
     frame[1] = std::uint8_t(type);
     frame[2] = std::uint8_t(sequence & 0xFF);
     frame[3] = std::uint8_t(sequence >> 8);
-    std::memcpy(frame + HeaderSize, payload, size_t(size));
+    if (size > 0)
+        std::memcpy(frame + HeaderSize, payload, size_t(size));
     const std::uint16_t crc = crc16(frame, size_t(HeaderSize + size));
     frame[HeaderSize + size] = std::uint8_t(crc & 0xFF);
     frame[HeaderSize + size + 1] = std::uint8_t(crc >> 8);
@@ -333,6 +334,10 @@ bool decodeFrame(const std::uint8_t *frame, int size, Message *message, FrameErr
         *error = FrameError::UnknownType;
     if (*error != FrameError::None)
         return false;
+    // The decoder reuses one message: fields of another type must not survive.
+    message->channelCount = 0;
+    message->timestamp = 0;
+    message->status = {};
     message->type = MessageType(frame[1]);
     message->sequence = std::uint16_t(frame[2] | (frame[3] << 8));
     Reader reader(frame + HeaderSize, size - HeaderSize - CrcSize);
