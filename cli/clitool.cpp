@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "clitool.h"
 
+#include "devicescommand.h"
+#include "emulatecommand.h"
+#include "playcommand.h"
 #include "rendercommand.h"
 #include "routecommand.h"
 #include "validatecommand.h"
@@ -11,8 +14,9 @@ namespace {
 
 const QStringList &commandNames()
 {
-    static const QStringList names{QStringLiteral("route"), QStringLiteral("render"),
-                                   QStringLiteral("validate")};
+    static const QStringList names{QStringLiteral("route"),    QStringLiteral("render"),
+                                   QStringLiteral("validate"), QStringLiteral("play"),
+                                   QStringLiteral("devices"),  QStringLiteral("emulate")};
     return names;
 }
 
@@ -26,6 +30,12 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<RenderCommand>(m_io);
     if (name == QLatin1String("validate"))
         return std::make_unique<ValidateCommand>(m_io);
+    if (name == QLatin1String("play"))
+        return std::make_unique<PlayCommand>(m_io);
+    if (name == QLatin1String("devices"))
+        return std::make_unique<DevicesCommand>(m_io);
+    if (name == QLatin1String("emulate"))
+        return std::make_unique<EmulateCommand>(m_io);
     return nullptr;
 }
 

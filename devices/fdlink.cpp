@@ -34,12 +34,14 @@ bool FdLink::writeFrame(const std::uint8_t *data, int size, QString *error)
 
 int FdLink::read(std::uint8_t *buffer, int size, QString *error)
 {
+    // 0 is no data, not an end: a raw tty with VMIN 0 says so, and so does an empty
+    // datagram. A pty whose other side went away fails with EIO instead.
     const ssize_t n = ::read(m_fd, buffer, size_t(size));
-    if (n > 0)
+    if (n >= 0)
         return int(n);
-    if (n < 0 && (errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED))
-        return 0;
-    *error = n == 0 ? QStringLiteral("end of file") : QString::fromLocal8Bit(std::strerror(errno));
+    if (errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED)
+        return 0; // nobody listening on a UDP port yet is not a lost link
+    *error = QString::fromLocal8Bit(std::strerror(errno));
     return -1;
 }
 

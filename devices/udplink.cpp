@@ -49,15 +49,4 @@ bool UdpLink::open(QString *error)
     return false;
 }
 
-int UdpLink::read(std::uint8_t *buffer, int size, QString *error)
-{
-    const ssize_t n = ::recv(m_fd, buffer, size_t(size), 0);
-    if (n >= 0)
-        return int(n);
-    if (errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED)
-        return 0; // nobody listening yet is not a lost link
-    *error = QString::fromLocal8Bit(std::strerror(errno));
-    return -1;
-}
-
 } // namespace semhap

@@ -17,7 +17,6 @@ public:
 
     QString uri() const override;
     bool open(QString *error) override;
-    int read(std::uint8_t *buffer, int size, QString *error) override;
 
 private:
     QString m_host;
