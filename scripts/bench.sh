@@ -6,3 +6,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/deps.sh"
 "$root/scripts/build.sh" "$root/build"
 "$root/build/tests/bench/bench_pipeline" "$@"
+"$root/build/tests/bench/bench_devices"
