@@ -61,8 +61,8 @@ int EmulateCommand::execute(const QCommandLineParser &parser)
         bool ok = false;
         options.port = value.mid(colon + 1).toInt(&ok);
         if (!ok || options.port < 0 || options.port > 65535 || options.host.isEmpty())
-            return usageError(tr("--udp expects [HOST:]PORT with a port 0-65535, got '%1'")
-                                  .arg(value));
+            return usageError(
+                tr("--udp expects [HOST:]PORT with a port 0-65535, got '%1'").arg(value));
     }
 
     Emulator emulator(options);

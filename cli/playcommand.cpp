@@ -76,10 +76,9 @@ int PlayCommand::execute(const QCommandLineParser &parser)
         return inputError(error.toString());
     DeviceModelPtr model = DeviceModelLibrary::builtin(pattern->model());
     if (!model)
-        return inputError(
-            LoadError::at(positional.first(), QStringLiteral("/model"),
-                          tr("unknown device model '%1'").arg(pattern->model()))
-                .toString());
+        return inputError(LoadError::at(positional.first(), QStringLiteral("/model"),
+                                        tr("unknown device model '%1'").arg(pattern->model()))
+                              .toString());
     options.rate = model->rate();
     RenderedPattern rendered;
     QString reason;
@@ -105,9 +104,8 @@ int PlayCommand::execute(const QCommandLineParser &parser)
     frame.channelCount = model->channelCount();
     const Clock::time_point start = Clock::now();
     for (size_t k = 0; k < rendered.t.size(); ++k) {
-        std::this_thread::sleep_until(
-            start + std::chrono::duration_cast<Clock::duration>(
-                        std::chrono::duration<double>(rendered.t[k])));
+        std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(rendered.t[k])));
         frame.t = rendered.t[k];
         for (int c = 0; c < frame.channelCount; ++c)
             frame.values[size_t(c)] = rendered.values[size_t(c)][k];
@@ -122,9 +120,9 @@ int PlayCommand::execute(const QCommandLineParser &parser)
                  .arg(pattern->name(), transport->uri())
                  .arg(status.framesSent)
                  .arg(status.roundTripMs, 0, 'f', 2)
-                 .arg(status.lastError.isEmpty() ? QString()
-                                                 : QStringLiteral(" (") + status.lastError +
-                                                       QLatin1Char(')'));
+                 .arg(status.lastError.isEmpty()
+                          ? QString()
+                          : QStringLiteral(" (") + status.lastError + QLatin1Char(')'));
     return ExitOk;
 }
 

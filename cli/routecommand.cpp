@@ -147,9 +147,9 @@ int RouteCommand::execute(const QCommandLineParser &parser)
                 t0 = frame.t;
                 first = false;
             }
-            std::this_thread::sleep_until(
-                start + std::chrono::duration_cast<Clock::duration>(
-                            std::chrono::duration<double>(frame.t - t0)));
+            std::this_thread::sleep_until(start +
+                                          std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(frame.t - t0)));
         }
         pipeline.process(frame, sink);
     }

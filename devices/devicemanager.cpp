@@ -42,8 +42,8 @@ std::vector<PortInfo> DeviceManager::present() const
                        hid.vendorId, hid.productId});
     }
     for (const QString &uri : m_configured)
-        out.push_back({uri, uri.section(QLatin1Char(':'), 0, 0), QStringLiteral("configured"),
-                       -1, -1});
+        out.push_back(
+            {uri, uri.section(QLatin1Char(':'), 0, 0), QStringLiteral("configured"), -1, -1});
     return out;
 }
 
@@ -123,8 +123,7 @@ void DeviceManager::stopAll()
         transport->stopAll();
 }
 
-bool DeviceManager::parseBinding(const QString &text, QString *name, QString *uri,
-                                 QString *error)
+bool DeviceManager::parseBinding(const QString &text, QString *name, QString *uri, QString *error)
 {
     const qsizetype equals = text.indexOf(QLatin1Char('='));
     if (equals <= 0 || equals == text.size() - 1) {

@@ -37,16 +37,15 @@ bool DeviceUri::parse(const QString &text, DeviceUri *uri, QString *error)
         const qsizetype query = rest.indexOf(QLatin1Char('?'));
         out.name = rest.left(query);
         if (out.name.isEmpty()) {
-            *error = QStringLiteral("%1: a serial device needs a path (serial:/dev/ttyACM0)")
-                         .arg(text);
+            *error =
+                QStringLiteral("%1: a serial device needs a path (serial:/dev/ttyACM0)").arg(text);
             return false;
         }
         if (query >= 0) {
             const QString option = rest.mid(query + 1);
             bool ok = false;
-            const int baud = option.startsWith(QLatin1String("baud="))
-                                 ? option.mid(5).toInt(&ok)
-                                 : 0;
+            const int baud =
+                option.startsWith(QLatin1String("baud=")) ? option.mid(5).toInt(&ok) : 0;
             if (!ok || baud <= 0) {
                 *error = QStringLiteral("%1: unknown option '%2' (serial takes ?baud=N, N > 0)")
                              .arg(text, option);
@@ -100,9 +99,8 @@ QString DeviceUri::toString() const
             .arg(vendorId, 4, 16, QLatin1Char('0'))
             .arg(productId, 4, 16, QLatin1Char('0'));
     case Scheme::Udp:
-        return name.contains(QLatin1Char(':'))
-                   ? QStringLiteral("udp:[%1]:%2").arg(name).arg(port)
-                   : QStringLiteral("udp:%1:%2").arg(name).arg(port);
+        return name.contains(QLatin1Char(':')) ? QStringLiteral("udp:[%1]:%2").arg(name).arg(port)
+                                               : QStringLiteral("udp:%1:%2").arg(name).arg(port);
     }
     return {};
 }

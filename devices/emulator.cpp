@@ -70,8 +70,8 @@ bool Emulator::open(QString *error)
     if (!m_options.logPath.isEmpty()) {
         m_log.setFileName(m_options.logPath);
         if (!m_log.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-            *error = QStringLiteral("%1: cannot write: %2").arg(m_options.logPath,
-                                                                m_log.errorString());
+            *error =
+                QStringLiteral("%1: cannot write: %2").arg(m_options.logPath, m_log.errorString());
             return false;
         }
     }
@@ -125,16 +125,16 @@ bool Emulator::openUdp(QString *error)
     hints.ai_flags = AI_PASSIVE;
     addrinfo *found = nullptr;
     const QByteArray port = QByteArray::number(m_options.port);
-    const int rc = ::getaddrinfo(m_options.host.toLocal8Bit().constData(), port.constData(),
-                                 &hints, &found);
+    const int rc =
+        ::getaddrinfo(m_options.host.toLocal8Bit().constData(), port.constData(), &hints, &found);
     if (rc != 0) {
-        *error = QStringLiteral("%1: %2").arg(m_options.host,
-                                              QString::fromLocal8Bit(gai_strerror(rc)));
+        *error =
+            QStringLiteral("%1: %2").arg(m_options.host, QString::fromLocal8Bit(gai_strerror(rc)));
         return false;
     }
     for (addrinfo *a = found; a && m_fd < 0; a = a->ai_next) {
-        const int fd = ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
-                                a->ai_protocol);
+        const int fd =
+            ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
         if (fd >= 0 && ::bind(fd, a->ai_addr, a->ai_addrlen) == 0)
             m_fd = fd;
         else if (fd >= 0)
@@ -284,8 +284,7 @@ void Emulator::reply(const protocol::Message &message)
     if (m_options.udp) {
         if (!m_peer.empty())
             ::sendto(m_fd, bytes.constData(), size_t(bytes.size()), 0,
-                     reinterpret_cast<const sockaddr *>(m_peer.data()),
-                     socklen_t(m_peer.size()));
+                     reinterpret_cast<const sockaddr *>(m_peer.data()), socklen_t(m_peer.size()));
         return;
     }
     // A full pty (no host reading) drops the reply, as a UART would.

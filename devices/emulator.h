@@ -17,11 +17,11 @@ namespace semhap {
 struct EmulatorOptions
 {
     DeviceModelPtr model;
-    bool udp = false;                        ///< a UDP port instead of a pseudo-terminal
+    bool udp = false;                           ///< a UDP port instead of a pseudo-terminal
     QString host = QStringLiteral("127.0.0.1"); ///< UDP: the address to bind
-    int port = 0;                            ///< UDP: 0 picks a free port
-    QString link;    ///< pty: a symlink kept pointing at the pty (replaced if stale)
-    QString logPath; ///< JSON Lines state log; empty: none
+    int port = 0;                               ///< UDP: 0 picks a free port
+    QString link;           ///< pty: a symlink kept pointing at the pty (replaced if stale)
+    QString logPath;        ///< JSON Lines state log; empty: none
     double watchdog = 0.25; ///< s without a valid frame before every setpoint goes to 0
 };
 

@@ -25,8 +25,7 @@ void FdLink::close()
 bool FdLink::writeFrame(const std::uint8_t *data, int size, QString *error)
 {
     const ssize_t n = ::write(m_fd, data, size_t(size));
-    if (n >= 0 || errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED ||
-        errno == ENOBUFS)
+    if (n >= 0 || errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED || errno == ENOBUFS)
         return true; // a full or unreachable link drops this frame; the next one is newer
     *error = QString::fromLocal8Bit(std::strerror(errno));
     return false;

@@ -168,8 +168,7 @@ void LinkTransport::writeValues(double now)
         m_slotFresh = false;
     }
     std::array<double, MaxChannels> safe{};
-    m_safety.apply(frame.values.data(), frame.channelCount, now, gain(), isArmed(),
-                   safe.data());
+    m_safety.apply(frame.values.data(), frame.channelCount, now, gain(), isArmed(), safe.data());
     std::array<std::uint16_t, MaxChannels> wire{};
     const int count = m_model->channelCount();
     for (int c = 0; c < count; ++c) {

@@ -54,7 +54,7 @@ private:
     void onMessage(const protocol::Message &message, double now);
 
     std::unique_ptr<Link> m_link;
-    SafetyFilter m_safety; ///< I/O thread only
+    SafetyFilter m_safety;  ///< I/O thread only
     FrameDecoder m_decoder; ///< I/O thread only
     std::thread m_thread;
     int m_wakeFd = -1;

@@ -83,8 +83,7 @@ public:
         const int length = u8();
         if (length > MaxNameLength || !take(length))
             return fail();
-        return QString::fromUtf8(reinterpret_cast<const char *>(m_data + m_pos - length),
-                                 length);
+        return QString::fromUtf8(reinterpret_cast<const char *>(m_data + m_pos - length), length);
     }
 
 private:
@@ -294,8 +293,8 @@ void encode(const Message &message, QByteArray *out)
     writePayload(message, writer);
     const int size = std::min(int(payload.size()), MaxPayload);
     std::array<std::uint8_t, MaxFrame> frame{};
-    const int length = assemble(message.type, message.sequence, payload.data(), size,
-                                frame.data());
+    const int length =
+        assemble(message.type, message.sequence, payload.data(), size, frame.data());
     std::array<std::uint8_t, MaxEncodedFrame + 1> encoded{};
     const int n = cobsEncode(frame.data(), length, encoded.data());
     encoded[size_t(n)] = 0;

@@ -15,8 +15,8 @@ SafetyFilter::SafetyFilter(DeviceModelPtr model) : m_model(std::move(model))
         m_limit.seconds = 0.0;
 }
 
-void SafetyFilter::apply(const double *commanded, int count, double now, double gain,
-                         bool armed, double *out)
+void SafetyFilter::apply(const double *commanded, int count, double now, double gain, bool armed,
+                         double *out)
 {
     const int channels = std::min(m_model->channelCount(), MaxChannels);
     gain = std::isfinite(gain) ? std::clamp(gain, 0.0, 1.0) : 0.0;

@@ -11,9 +11,9 @@ namespace semhap {
 /** The comfort limit on continuous full inflation (pneumatic bands on a wrist for an hour). */
 struct InflationLimit
 {
-    double seconds = 60.0;   ///< how long a channel may stay above `threshold`; 0 disables
-    double threshold = 0.9;  ///< fraction of the channel's range that counts as "full"
-    double comfort = 0.6;    ///< fraction of the range the value is capped to afterwards
+    double seconds = 60.0;  ///< how long a channel may stay above `threshold`; 0 disables
+    double threshold = 0.9; ///< fraction of the channel's range that counts as "full"
+    double comfort = 0.6;   ///< fraction of the range the value is capped to afterwards
 };
 
 /**

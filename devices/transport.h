@@ -19,14 +19,14 @@ struct TransportStatus
     bool connected = false;  ///< the link is open (a port, a socket, a HID handle)
     bool responding = false; ///< the device answered within the last 500 ms
     bool armed = false;
-    double framesPerSecond = 0.0;       ///< set-values frames written, over the last second
-    std::uint32_t framesSent = 0;       ///< set-values frames written
-    std::uint32_t framesSkipped = 0;    ///< stale frames replaced before they were written
-    std::uint32_t errors = 0;           ///< write errors and garbled frames from the device
-    double roundTripMs = -1.0;          ///< from the latest heartbeat reply; < 0 before one
-    std::uint32_t reconnects = 0;       ///< times the link was opened again after a loss
-    protocol::DeviceStatus device;      ///< the device's own counters (latest status)
-    QString identity;                   ///< model name from the identify reply, if any
+    double framesPerSecond = 0.0;    ///< set-values frames written, over the last second
+    std::uint32_t framesSent = 0;    ///< set-values frames written
+    std::uint32_t framesSkipped = 0; ///< stale frames replaced before they were written
+    std::uint32_t errors = 0;        ///< write errors and garbled frames from the device
+    double roundTripMs = -1.0;       ///< from the latest heartbeat reply; < 0 before one
+    std::uint32_t reconnects = 0;    ///< times the link was opened again after a loss
+    protocol::DeviceStatus device;   ///< the device's own counters (latest status)
+    QString identity;                ///< model name from the identify reply, if any
     QString lastError;
 };
 

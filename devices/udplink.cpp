@@ -2,8 +2,8 @@
 #include "udplink.h"
 
 #include <cerrno>
-#include <memory>
 #include <cstring>
+#include <memory>
 #include <netdb.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -32,8 +32,8 @@ bool UdpLink::open(QString *error)
     }
     std::unique_ptr<addrinfo, void (*)(addrinfo *)> list(found, ::freeaddrinfo);
     for (addrinfo *a = found; a; a = a->ai_next) {
-        const int fd = ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC,
-                                a->ai_protocol);
+        const int fd =
+            ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
         if (fd < 0)
             continue;
         if (::connect(fd, a->ai_addr, a->ai_addrlen) == 0) {

@@ -36,8 +36,8 @@ void VirtualTransport::send(const DeviceFrame &frame)
     DeviceFrame safe = frame;
     safe.channelCount = m_model->channelCount();
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_safety.apply(frame.values.data(), frame.channelCount, monotonicSeconds(), gain(),
-                   isArmed(), safe.values.data());
+    m_safety.apply(frame.values.data(), frame.channelCount, monotonicSeconds(), gain(), isArmed(),
+                   safe.values.data());
     store(safe);
 }
 

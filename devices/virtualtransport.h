@@ -10,8 +10,8 @@ namespace semhap {
 
 /**
  * The embedded default: no hardware, it keeps the latest frames (after safety) for
- * previews and monitors. Armed from the start. No thread: send() takes a tiny mutex that readers hold only to
- * copy.
+ * previews and monitors. Armed from the start. No thread: send() takes a tiny mutex that readers
+ * hold only to copy.
  */
 class VirtualTransport : public Transport
 {

@@ -75,7 +75,8 @@ public:
     {
         QStringList args{"emulate", "--model", model, "--log", log};
         if (transport == "serial")
-            args << "--pty" << "--link" << where;
+            args << "--pty"
+                 << "--link" << where;
         else
             args << "--udp" << where;
         m_process.start(Semhap, args);
@@ -181,9 +182,11 @@ void TestEndToEnd::watchdogAfterHostKilled()
     QVERIFY(emulator.started());
     QProcess play;
     play.start(Semhap, {"play", "air.squeeze", "--device", emulator.uri(), "--duration", "20"});
-    QVERIFY(waitForLog(log, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
+    QVERIFY(waitForLog(
+                log, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
     play.kill(); // SIGKILL: no stop-all from the host, only the band's watchdog
-    const qint64 ms = waitForLog(log, [](const LogLine &l) { return allAt(l, 0.0); }, 2000);
+    const qint64 ms = waitForLog(
+        log, [](const LogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("setpoints at 0 %lld ms after the kill", ms);
     QVERIFY2(ms >= 0 && ms <= 300, qPrintable(QString::number(ms)));
@@ -199,11 +202,13 @@ void TestEndToEnd::reconnectsAfterEmulatorRestart()
     QVERIFY(emulator->started());
     QProcess play;
     play.start(Semhap, {"play", "air.squeeze", "--device", emulator->uri(), "--duration", "20"});
-    QVERIFY(waitForLog(first, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
+    QVERIFY(waitForLog(
+                first, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
     QCOMPARE(emulator->stop(), 0);
     emulator = std::make_unique<Emulator>(transport, "pneumatic6", place, second);
     QVERIFY(emulator->started());
-    const qint64 ms = waitForLog(second, [](const LogLine &l) { return allAt(l, 1.0); }, 3000);
+    const qint64 ms = waitForLog(
+        second, [](const LogLine &l) { return allAt(l, 1.0); }, 3000);
     play.kill();
     play.waitForFinished(1000);
     qInfo("values back %lld ms after the restart", ms);

@@ -99,8 +99,9 @@ void TestProtocol::cobs_data()
     QTest::addColumn<QByteArray>("cobs");
     QTest::newRow("zero") << QByteArray(1, '\0') << QByteArray::fromHex("0101");
     QTest::newRow("two zeros") << QByteArray(2, '\0') << QByteArray::fromHex("010101");
-    QTest::newRow("mixed") << QByteArray::fromHex("11220033") << QByteArray::fromHex("03112202"
-                                                                                     "33");
+    QTest::newRow("mixed") << QByteArray::fromHex("11220033")
+                           << QByteArray::fromHex("03112202"
+                                                  "33");
     QTest::newRow("no zero") << QByteArray::fromHex("11223344")
                              << QByteArray::fromHex("0511223344");
     QByteArray run254(254, '\x01');
@@ -251,8 +252,7 @@ void TestProtocol::malformed_data()
         // A flipped code byte may break COBS or only the CRC: either way one error.
         QTest::addRow("bit %d flipped", bit) << flipped << (bit < 8 ? "any" : "crc");
     }
-    QTest::newRow("oversize") << delimited(QByteArray(MaxEncodedFrame + 10, '\x55'))
-                              << "oversize";
+    QTest::newRow("oversize") << delimited(QByteArray(MaxEncodedFrame + 10, '\x55')) << "oversize";
     QTest::newRow("unknown type") << sealed(QByteArray::fromHex("017F0300")) << "unknownType";
     QTest::newRow("other version") << sealed(QByteArray::fromHex("09030300")) << "version";
     // Says five channels, carries two.
@@ -275,8 +275,8 @@ void TestProtocol::malformed()
     const DecoderCounters &c = decoder.counters();
     QCOMPARE(c.frames, 2u);
     const std::map<QString, std::uint32_t> counts{
-        {"cobs", c.cobs},       {"truncated", c.truncated},     {"crc", c.crc},
-        {"version", c.version}, {"unknownType", c.unknownType}, {"malformed", c.malformed},
+        {"cobs", c.cobs},        {"truncated", c.truncated},     {"crc", c.crc},
+        {"version", c.version},  {"unknownType", c.unknownType}, {"malformed", c.malformed},
         {"oversize", c.oversize}};
     QCOMPARE(c.errors(), counter.isEmpty() ? 0u : 1u);
     if (!counter.isEmpty() && counter != QLatin1String("any"))
@@ -347,8 +347,8 @@ void TestProtocol::hidReports()
     std::vector<std::array<std::uint8_t, hidreport::ReportSize>> packed;
     for (int pos = 0; pos < stream.size();) {
         packed.emplace_back();
-        pos += hidreport::pack(bytes(stream) + pos, int(stream.size() - pos),
-                               packed.back().data());
+        pos +=
+            hidreport::pack(bytes(stream) + pos, int(stream.size() - pos), packed.back().data());
     }
     QCOMPARE(int(packed.size()), reports);
     QCOMPARE(packed.front()[0], hidreport::ReportId);

@@ -45,31 +45,72 @@ void TestTransports::parseUri_data()
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("canonical"); ///< empty: must be rejected
     QTest::addColumn<QString>("errorPart");
-    QTest::newRow("virtual") << "virtual:right.vibro" << "virtual:right.vibro" << "";
-    QTest::newRow("virtual no name") << "virtual:" << "" << "needs a name";
-    QTest::newRow("serial") << "serial:/dev/ttyACM0" << "serial:/dev/ttyACM0" << "";
+    QTest::newRow("virtual") << "virtual:right.vibro"
+                             << "virtual:right.vibro"
+                             << "";
+    QTest::newRow("virtual no name") << "virtual:"
+                                     << ""
+                                     << "needs a name";
+    QTest::newRow("serial") << "serial:/dev/ttyACM0"
+                            << "serial:/dev/ttyACM0"
+                            << "";
     QTest::newRow("serial baud") << "serial:/dev/ttyUSB1?baud=921600"
-                                 << "serial:/dev/ttyUSB1?baud=921600" << "";
-    QTest::newRow("serial default baud") << "serial:/tmp/band?baud=115200" << "serial:/tmp/band"
+                                 << "serial:/dev/ttyUSB1?baud=921600"
+                                 << "";
+    QTest::newRow("serial default baud") << "serial:/tmp/band?baud=115200"
+                                         << "serial:/tmp/band"
                                          << "";
-    QTest::newRow("serial bad baud") << "serial:/dev/ttyACM0?baud=fast" << "" << "baud=fast";
-    QTest::newRow("serial other option") << "serial:/dev/ttyACM0?parity=odd" << ""
+    QTest::newRow("serial bad baud") << "serial:/dev/ttyACM0?baud=fast"
+                                     << ""
+                                     << "baud=fast";
+    QTest::newRow("serial other option") << "serial:/dev/ttyACM0?parity=odd"
+                                         << ""
                                          << "parity=odd";
-    QTest::newRow("serial no path") << "serial:" << "" << "needs a path";
-    QTest::newRow("hid") << "hid:1234:ABCD" << "hid:1234:abcd" << "";
-    QTest::newRow("hid short ids") << "hid:1:2" << "hid:0001:0002" << "";
-    QTest::newRow("hid one id") << "hid:1234" << "" << "hid:VID:PID";
-    QTest::newRow("hid not hex") << "hid:12g4:0001" << "" << "hex";
-    QTest::newRow("hid too long") << "hid:12345:0001" << "" << "four hex";
-    QTest::newRow("udp") << "udp:127.0.0.1:9000" << "udp:127.0.0.1:9000" << "";
-    QTest::newRow("udp name") << "udp:band.local:9000" << "udp:band.local:9000" << "";
-    QTest::newRow("udp ipv6") << "udp:[::1]:9000" << "udp:[::1]:9000" << "";
-    QTest::newRow("udp no port") << "udp:127.0.0.1" << "" << "HOST:PORT";
-    QTest::newRow("udp port zero") << "udp:127.0.0.1:0" << "" << "1-65535";
-    QTest::newRow("udp port too big") << "udp:127.0.0.1:70000" << "" << "1-65535";
-    QTest::newRow("unknown scheme") << "usb:1" << "" << "unknown device scheme 'usb'";
-    QTest::newRow("no scheme") << "/dev/ttyACM0" << "" << "unknown device scheme";
-    QTest::newRow("empty") << "" << "" << "unknown device scheme";
+    QTest::newRow("serial no path") << "serial:"
+                                    << ""
+                                    << "needs a path";
+    QTest::newRow("hid") << "hid:1234:ABCD"
+                         << "hid:1234:abcd"
+                         << "";
+    QTest::newRow("hid short ids") << "hid:1:2"
+                                   << "hid:0001:0002"
+                                   << "";
+    QTest::newRow("hid one id") << "hid:1234"
+                                << ""
+                                << "hid:VID:PID";
+    QTest::newRow("hid not hex") << "hid:12g4:0001"
+                                 << ""
+                                 << "hex";
+    QTest::newRow("hid too long") << "hid:12345:0001"
+                                  << ""
+                                  << "four hex";
+    QTest::newRow("udp") << "udp:127.0.0.1:9000"
+                         << "udp:127.0.0.1:9000"
+                         << "";
+    QTest::newRow("udp name") << "udp:band.local:9000"
+                              << "udp:band.local:9000"
+                              << "";
+    QTest::newRow("udp ipv6") << "udp:[::1]:9000"
+                              << "udp:[::1]:9000"
+                              << "";
+    QTest::newRow("udp no port") << "udp:127.0.0.1"
+                                 << ""
+                                 << "HOST:PORT";
+    QTest::newRow("udp port zero") << "udp:127.0.0.1:0"
+                                   << ""
+                                   << "1-65535";
+    QTest::newRow("udp port too big") << "udp:127.0.0.1:70000"
+                                      << ""
+                                      << "1-65535";
+    QTest::newRow("unknown scheme") << "usb:1"
+                                    << ""
+                                    << "unknown device scheme 'usb'";
+    QTest::newRow("no scheme") << "/dev/ttyACM0"
+                               << ""
+                               << "unknown device scheme";
+    QTest::newRow("empty") << ""
+                           << ""
+                           << "unknown device scheme";
 }
 
 void TestTransports::parseUri()
@@ -214,9 +255,9 @@ void TestTransports::factoryMakesEachKind()
 {
     DeviceModelPtr model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
     QString error;
-    for (const QString &uri : {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
-                              QStringLiteral("hid:1234:5678"),
-                              QStringLiteral("udp:127.0.0.1:9")}) {
+    for (const QString &uri :
+         {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
+          QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9")}) {
         std::unique_ptr<Transport> t = TransportFactory::create(uri, model, &error);
         QVERIFY2(t, qPrintable(error));
         QCOMPARE(t->uri(), uri);
@@ -225,8 +266,8 @@ void TestTransports::factoryMakesEachKind()
     QVERIFY(!TransportFactory::create(QStringLiteral("tcp:1"), model, &error));
     QVERIFY(error.contains(QStringLiteral("unknown device scheme")));
     // Real bands start disarmed.
-    QVERIFY(!TransportFactory::create(QStringLiteral("udp:127.0.0.1:9"), model, &error)
-                 ->isArmed());
+    QVERIFY(
+        !TransportFactory::create(QStringLiteral("udp:127.0.0.1:9"), model, &error)->isArmed());
 }
 
 void TestTransports::hidEnumerationWithoutDevices()
