@@ -2,8 +2,6 @@
 #include "playcommand.h"
 
 #include "emergencystop.h"
-#include "patternlibrary.h"
-#include "patternrender.h"
 #include "transportfactory.h"
 
 #include <chrono>
@@ -28,15 +26,11 @@ QString PlayCommand::summary() const
 
 void PlayCommand::configure(QCommandLineParser &parser)
 {
-    parser.addPositionalArgument(QStringLiteral("pattern"),
-                                 tr("Built-in pattern name or pattern file."), tr("PATTERN|FILE"));
+    addPatternArguments(parser);
     parser.addOption({QStringLiteral("device"),
                       tr("Where to play: virtual:NAME, serial:PATH[?baud=N], hid:VID:PID, "
                          "udp:HOST:PORT."),
                       tr("URI")});
-    parser.addOption({QStringLiteral("intensity"), tr("Intensity 0..1 (default 1)."), tr("X")});
-    parser.addOption(
-        {QStringLiteral("release-at"), tr("Time of the end (release), in seconds."), tr("S")});
     parser.addOption({QStringLiteral("duration"),
                       tr("How long to play, in seconds (default: release-at + 1, or 2)."),
                       tr("S")});
@@ -45,47 +39,29 @@ void PlayCommand::configure(QCommandLineParser &parser)
 
 int PlayCommand::execute(const QCommandLineParser &parser)
 {
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
-        return usageError(positional.isEmpty()
-                              ? tr("a pattern name or file is required")
-                              : tr("exactly one pattern, got %1").arg(positional.size()));
+    QString pattern;
+    RenderOptions options;
+    if (!patternArguments(parser, &pattern, &options))
+        return ExitUsage;
     if (!parser.isSet(QStringLiteral("device")))
         return usageError(tr("--device is required"));
-    RenderOptions options;
     double gain = 1.0;
-    if (!numberOption(parser, QStringLiteral("intensity"), &options.intensity) ||
-        !numberOption(parser, QStringLiteral("release-at"), &options.releaseAt) ||
-        !numberOption(parser, QStringLiteral("gain"), &gain))
-        return ExitUsage;
     options.duration = parser.isSet(QStringLiteral("release-at")) ? options.releaseAt + 1.0 : 2.0;
-    if (!numberOption(parser, QStringLiteral("duration"), &options.duration))
+    if (!numberOption(parser, QStringLiteral("gain"), &gain) ||
+        !numberOption(parser, QStringLiteral("duration"), &options.duration))
         return ExitUsage;
-    if (options.intensity < 0 || options.intensity > 1)
-        return usageError(tr("--intensity must be within [0, 1]"));
     if (gain < 0 || gain > 1)
         return usageError(tr("--gain must be within [0, 1]"));
-    if (options.releaseAt < 0)
-        return usageError(tr("--release-at must not be negative"));
     if (options.duration < 0 || options.duration > MaxDuration)
         return usageError(tr("--duration must be within [0, %1]").arg(MaxDuration));
-
-    LoadError error;
-    PatternPtr pattern = PatternLibrary::load(positional.first(), &error);
-    if (!pattern)
-        return inputError(error.toString());
-    DeviceModelPtr model = DeviceModelLibrary::builtin(pattern->model());
-    if (!model)
-        return inputError(LoadError::at(positional.first(), QStringLiteral("/model"),
-                                        tr("unknown device model '%1'").arg(pattern->model()))
-                              .toString());
-    options.rate = model->rate();
+    options.rate = 0.0; // the model's own rate
     RenderedPattern rendered;
-    QString reason;
-    if (!renderPattern(pattern, *model, options, &rendered, &reason))
-        return inputError(positional.first() + QStringLiteral(": ") + reason);
+    DeviceModelPtr model;
+    if (!renderNamedPattern(pattern, options, &rendered, &model))
+        return ExitInvalidInput;
 
     const QString uri = parser.value(QStringLiteral("device"));
+    QString reason;
     std::unique_ptr<Transport> transport = TransportFactory::create(uri, model, &reason);
     if (!transport)
         return usageError(reason);
@@ -117,7 +93,7 @@ int PlayCommand::execute(const QCommandLineParser &parser)
     const TransportStatus status = transport->status();
     transport->close();
     m_out << tr("%1 on %2: %3 frames, round trip %4 ms%5\n")
-                 .arg(pattern->name(), transport->uri())
+                 .arg(pattern, transport->uri())
                  .arg(status.framesSent)
                  .arg(status.roundTripMs, 0, 'f', 2)
                  .arg(status.lastError.isEmpty()

@@ -66,6 +66,14 @@ bool allAt(const LogLine &l, double value)
                        [value](double v) { return std::abs(v - value) < 1e-3; });
 }
 
+/** Starts a long `air.squeeze` on `uri` and waits until the band's log shows it full. */
+bool squeezeUntilFull(QProcess &play, const QString &uri, const QString &log)
+{
+    play.start(Semhap, {"play", "air.squeeze", "--device", uri, "--duration", "20"});
+    return waitForLog(
+               log, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0;
+}
+
 /** `semhap emulate` in a child process; stopped with SIGTERM (a clean exit) when destroyed. */
 class Emulator
 {
@@ -181,9 +189,7 @@ void TestEndToEnd::watchdogAfterHostKilled()
     Emulator emulator(transport, "pneumatic6", where(transport), log);
     QVERIFY(emulator.started());
     QProcess play;
-    play.start(Semhap, {"play", "air.squeeze", "--device", emulator.uri(), "--duration", "20"});
-    QVERIFY(waitForLog(
-                log, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
+    QVERIFY(squeezeUntilFull(play, emulator.uri(), log));
     play.kill(); // SIGKILL: no stop-all from the host, only the band's watchdog
     const qint64 ms = waitForLog(
         log, [](const LogLine &l) { return allAt(l, 0.0); }, 2000);
@@ -201,9 +207,7 @@ void TestEndToEnd::reconnectsAfterEmulatorRestart()
     auto emulator = std::make_unique<Emulator>(transport, "pneumatic6", place, first);
     QVERIFY(emulator->started());
     QProcess play;
-    play.start(Semhap, {"play", "air.squeeze", "--device", emulator->uri(), "--duration", "20"});
-    QVERIFY(waitForLog(
-                first, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0);
+    QVERIFY(squeezeUntilFull(play, emulator->uri(), first));
     QCOMPARE(emulator->stop(), 0);
     emulator = std::make_unique<Emulator>(transport, "pneumatic6", place, second);
     QVERIFY(emulator->started());
