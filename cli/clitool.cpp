@@ -2,6 +2,9 @@
 #include "clitool.h"
 
 #include "comparecommand.h"
+#include "devicescommand.h"
+#include "emulatecommand.h"
+#include "playcommand.h"
 #include "rendercommand.h"
 #include "routecommand.h"
 #include "runcommand.h"
@@ -13,9 +16,10 @@ namespace {
 
 const QStringList &commandNames()
 {
-    static const QStringList names{QStringLiteral("route"), QStringLiteral("render"),
-                                   QStringLiteral("validate"), QStringLiteral("run"),
-                                   QStringLiteral("compare")};
+    static const QStringList names{
+        QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
+        QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
+        QStringLiteral("devices"), QStringLiteral("emulate")};
     return names;
 }
 
@@ -33,6 +37,12 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<RunCommand>(m_io);
     if (name == QLatin1String("compare"))
         return std::make_unique<CompareCommand>(m_io);
+    if (name == QLatin1String("play"))
+        return std::make_unique<PlayCommand>(m_io);
+    if (name == QLatin1String("devices"))
+        return std::make_unique<DevicesCommand>(m_io);
+    if (name == QLatin1String("emulate"))
+        return std::make_unique<EmulateCommand>(m_io);
     return nullptr;
 }
 

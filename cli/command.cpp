@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "command.h"
 
+#include "patternlibrary.h"
+
 #include <QFile>
 
 #include <cmath>
@@ -96,6 +98,68 @@ QIODevice *Command::openInput(const QString &path)
     }
     m_files.push_back(std::move(file));
     return m_files.back().get();
+}
+
+void Command::addPatternArguments(QCommandLineParser &parser)
+{
+    parser.addPositionalArgument(QStringLiteral("pattern"),
+                                 tr("Built-in pattern name or pattern file."), tr("PATTERN|FILE"));
+    parser.addOption({QStringLiteral("intensity"), tr("Intensity 0..1 (default 1)."), tr("X")});
+    parser.addOption(
+        {QStringLiteral("release-at"), tr("Time of the end (release), in seconds."), tr("S")});
+}
+
+bool Command::patternArguments(const QCommandLineParser &parser, QString *pattern,
+                               RenderOptions *options)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        usageError(positional.isEmpty()
+                       ? tr("a pattern name or file is required")
+                       : tr("exactly one pattern, got %1").arg(positional.size()));
+        return false;
+    }
+    *pattern = positional.first();
+    if (!numberOption(parser, QStringLiteral("intensity"), &options->intensity) ||
+        !numberOption(parser, QStringLiteral("release-at"), &options->releaseAt))
+        return false;
+    if (options->intensity < 0 || options->intensity > 1) {
+        usageError(tr("--intensity must be within [0, 1]"));
+        return false;
+    }
+    if (options->releaseAt < 0) {
+        usageError(tr("--release-at must not be negative"));
+        return false;
+    }
+    return true;
+}
+
+bool Command::renderNamedPattern(const QString &pattern, RenderOptions options,
+                                 RenderedPattern *rendered, DeviceModelPtr *model)
+{
+    LoadError error;
+    PatternPtr loaded = PatternLibrary::load(pattern, &error);
+    if (!loaded) {
+        inputError(error.toString());
+        return false;
+    }
+    *model = DeviceModelLibrary::builtin(loaded->model());
+    if (!*model) {
+        inputError(LoadError::at(pattern, QStringLiteral("/model"),
+                                 tr("unknown device model '%1' (built-in: %2)")
+                                     .arg(loaded->model(), DeviceModelLibrary::builtinNames().join(
+                                                               QStringLiteral(", "))))
+                       .toString());
+        return false;
+    }
+    if (options.rate <= 0)
+        options.rate = (*model)->rate();
+    QString reason;
+    if (!renderPattern(loaded, **model, options, rendered, &reason)) {
+        inputError(pattern + QStringLiteral(": ") + reason);
+        return false;
+    }
+    return true;
 }
 
 bool Command::checkSingleStdout(const QStringList &outputs)

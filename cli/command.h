@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "devicemodel.h"
+#include "patternrender.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QIODevice>
@@ -68,6 +71,21 @@ protected:
     QIODevice *openOutput(const QString &path);
     /** Opens FILE, or standard input for `-`, for reading. Null after printing why. */
     QIODevice *openInput(const QString &path);
+    /** Declares PATTERN|FILE, --intensity and --release-at: what render and play share. */
+    void addPatternArguments(QCommandLineParser &parser);
+    /**
+     * Reads the one pattern argument, --intensity and --release-at into `pattern` and
+     * `options`; false after a usage message.
+     */
+    bool patternArguments(const QCommandLineParser &parser, QString *pattern,
+                          RenderOptions *options);
+    /**
+     * Loads a pattern and renders it on its built-in model (at the model's rate when
+     * `options.rate` is 0); false after an error line (exit code 1).
+     */
+    bool renderNamedPattern(const QString &pattern, RenderOptions options,
+                            RenderedPattern *rendered, DeviceModelPtr *model);
+
     /** Usage check of the spec: at most one of the outputs may be `-`. */
     bool checkSingleStdout(const QStringList &outputs);
 

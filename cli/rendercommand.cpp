@@ -2,8 +2,6 @@
 #include "rendercommand.h"
 
 #include "jsonlineswriter.h"
-#include "patternlibrary.h"
-#include "patternrender.h"
 
 namespace semhap {
 
@@ -22,11 +20,7 @@ QString RenderCommand::summary() const
 
 void RenderCommand::configure(QCommandLineParser &parser)
 {
-    parser.addPositionalArgument(QStringLiteral("pattern"),
-                                 tr("Built-in pattern name or pattern file."), tr("PATTERN|FILE"));
-    parser.addOption({QStringLiteral("intensity"), tr("Intensity 0..1 (default 1)."), tr("X")});
-    parser.addOption(
-        {QStringLiteral("release-at"), tr("Time of the end (release), in seconds."), tr("S")});
+    addPatternArguments(parser);
     parser.addOption({QStringLiteral("duration"), tr("Length to render, in seconds."), tr("S")});
     parser.addOption({QStringLiteral("rate"), tr("Samples per second."), tr("HZ")});
     parser.addOption({QStringLiteral("out"),
@@ -36,48 +30,28 @@ void RenderCommand::configure(QCommandLineParser &parser)
 
 int RenderCommand::execute(const QCommandLineParser &parser)
 {
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 1)
-        return usageError(positional.isEmpty()
-                              ? tr("a pattern name or file is required")
-                              : tr("exactly one pattern, got %1").arg(positional.size()));
+    QString pattern;
+    RenderOptions options;
+    if (!patternArguments(parser, &pattern, &options))
+        return ExitUsage;
     for (const QString &required : {QStringLiteral("duration"), QStringLiteral("rate")}) {
         if (!parser.isSet(required))
             return usageError(tr("--%1 is required").arg(required));
     }
-    RenderOptions options;
-    if (!numberOption(parser, QStringLiteral("intensity"), &options.intensity) ||
-        !numberOption(parser, QStringLiteral("release-at"), &options.releaseAt) ||
-        !numberOption(parser, QStringLiteral("duration"), &options.duration) ||
+    if (!numberOption(parser, QStringLiteral("duration"), &options.duration) ||
         !numberOption(parser, QStringLiteral("rate"), &options.rate))
         return ExitUsage;
-    if (options.intensity < 0 || options.intensity > 1)
-        return usageError(tr("--intensity must be within [0, 1]"));
     if (options.duration < 0)
         return usageError(tr("--duration must not be negative"));
     if (options.rate <= 0)
         return usageError(tr("--rate must be positive"));
-    if (options.releaseAt < 0)
-        return usageError(tr("--release-at must not be negative"));
     if (options.duration * options.rate > MaxSamples)
         return usageError(tr("--duration × --rate is more than %1 samples").arg(MaxSamples));
 
-    LoadError error;
-    PatternPtr pattern = PatternLibrary::load(positional.first(), &error);
-    if (!pattern)
-        return inputError(error.toString());
-    DeviceModelPtr model = DeviceModelLibrary::builtin(pattern->model());
-    if (!model)
-        return inputError(
-            LoadError::at(positional.first(), QStringLiteral("/model"),
-                          tr("unknown device model '%1' (built-in: %2)")
-                              .arg(pattern->model(),
-                                   DeviceModelLibrary::builtinNames().join(QStringLiteral(", "))))
-                .toString());
     RenderedPattern rendered;
-    QString reason;
-    if (!renderPattern(pattern, *model, options, &rendered, &reason))
-        return inputError(positional.first() + QStringLiteral(": ") + reason);
+    DeviceModelPtr model;
+    if (!renderNamedPattern(pattern, options, &rendered, &model))
+        return ExitInvalidInput;
 
     QIODevice *out = openOutput(parser.value(QStringLiteral("out")).isEmpty()
                                     ? QStringLiteral("-")

@@ -2,8 +2,14 @@
 #include "routecommand.h"
 
 #include "contactframereader.h"
+#include "devicemanager.h"
+#include "deviceoutputsink.h"
+#include "emergencystop.h"
 #include "jsonlineswriter.h"
 #include "pipeline.h"
+
+#include <chrono>
+#include <thread>
 
 namespace semhap {
 
@@ -67,6 +73,11 @@ void RouteCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("set"),
                       tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
                       tr("NODE.PARAM=VALUE")});
+    parser.addOption({QStringLiteral("bind"),
+                      tr("Send a device's output to a transport, e.g. "
+                         "right.vibro=serial:/dev/ttyACM0 (repeatable). With --bind the run "
+                         "is paced in real time."),
+                      tr("NAME=URI")});
 }
 
 int RouteCommand::execute(const QCommandLineParser &parser)
@@ -98,14 +109,52 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     if ((!eventsPath.isEmpty() && !events) || (!framesOutPath.isEmpty() && !deviceFrames))
         return ExitInvalidInput;
 
+    DeviceManager devices;
+    for (const QString &binding : parser.values(QStringLiteral("bind"))) {
+        QString name;
+        QString uri;
+        QString reason;
+        if (!DeviceManager::parseBinding(binding, &name, &uri, &reason))
+            return usageError(reason);
+        const int device = router->player().deviceIndex(name);
+        if (device < 0)
+            return inputError(tr("--bind %1: the router has no device '%2'").arg(binding, name));
+        devices.bind(name, uri,
+                     std::make_shared<const DeviceModel>(router->player().deviceModel(device)),
+                     &reason);
+    }
+    const bool realTime = !devices.boundNames().isEmpty();
+    if (realTime) {
+        EmergencyStop::install();
+        devices.armAll(true);
+    }
+
     ContactFrameReader reader(frames, framesPath);
     reader.setErrorHandler([this](const LoadError &e) { report(e.toString()); });
     Pipeline pipeline(std::move(router));
-    StreamSink sink(pipeline.router(), events, deviceFrames);
+    StreamSink streams(pipeline.router(), events, deviceFrames);
+    DeviceOutputSink sink(pipeline.router().player(), devices, &streams);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point start;
+    double t0 = 0.0;
+    bool first = true;
     ContactFrame frame;
-    while (reader.next(&frame))
+    while (reader.next(&frame)) {
+        // Bound bands feel the session as it happened: wait for each frame's time.
+        if (realTime) {
+            if (first) {
+                start = Clock::now();
+                t0 = frame.t;
+                first = false;
+            }
+            std::this_thread::sleep_until(start +
+                                          std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(frame.t - t0)));
+        }
         pipeline.process(frame, sink);
+    }
     pipeline.flush(sink);
+    devices.stopAll();
 
     if (reader.rejectedCount() > 0)
         report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount()).arg(framesPath));

@@ -7,3 +7,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh" "$root/build"
 "$root/build/tests/bench/bench_pipeline" "$@"
 "$root/build/tests/bench/bench_sim"
+"$root/build/tests/bench/bench_devices"

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#include "emergencystop.h"
+
+#include "protocol.h"
+
+#include <array>
+#include <atomic>
+#include <csignal>
+#include <unistd.h>
+
+namespace semhap {
+
+namespace {
+
+constexpr int MaxFds = 32;
+constexpr int StopRepeats = 3;
+
+/** Registered descriptors plus one, so that the zero-initialised table is empty. */
+std::array<std::atomic<int>, MaxFds> g_fds{};
+
+/** The stop-all frame, encoded before any signal can arrive. */
+struct StopFrame
+{
+    std::array<char, 16> bytes{};
+    int size = 0;
+};
+
+const StopFrame &stopFrame()
+{
+    static const StopFrame frame = [] {
+        QByteArray encoded;
+        protocol::Message stop;
+        stop.type = protocol::MessageType::StopAll;
+        stop.sequence = 0xFFFF;
+        encoded.append('\0'); // flush whatever half-frame the device holds
+        protocol::encode(stop, &encoded);
+        StopFrame f;
+        f.size = int(encoded.size());
+        std::copy(encoded.begin(), encoded.end(), f.bytes.begin());
+        return f;
+    }();
+    return frame;
+}
+
+extern "C" void onTerminatingSignal(int signal)
+{
+    EmergencyStop::stopAllNow();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+} // namespace
+
+void EmergencyStop::install()
+{
+    static std::atomic<bool> installed{false};
+    stopFrame();
+    if (installed.exchange(true))
+        return;
+    std::signal(SIGINT, onTerminatingSignal);
+    std::signal(SIGTERM, onTerminatingSignal);
+}
+
+bool EmergencyStop::add(int fd)
+{
+    stopFrame();
+    if (fd < 0)
+        return false;
+    for (auto &slot : g_fds) {
+        int expected = 0;
+        if (slot.compare_exchange_strong(expected, fd + 1))
+            return true;
+    }
+    return false;
+}
+
+void EmergencyStop::remove(int fd)
+{
+    for (auto &slot : g_fds) {
+        int expected = fd + 1;
+        slot.compare_exchange_strong(expected, 0);
+    }
+}
+
+void EmergencyStop::stopAllNow()
+{
+    const StopFrame &frame = stopFrame();
+    for (auto &slot : g_fds) {
+        const int fd = slot.load() - 1;
+        if (fd < 0)
+            continue;
+        for (int i = 0; i < StopRepeats; ++i) {
+            if (::write(fd, frame.bytes.data(), size_t(frame.size)) < 0)
+                break;
+        }
+    }
+}
+
+} // namespace semhap

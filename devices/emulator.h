@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "devicemodel.h"
+#include "framedecoder.h"
+
+#include <QFile>
+#include <QString>
+
+#include <functional>
+#include <mutex>
+#include <vector>
+
+namespace semhap {
+
+/** Where and how an emulated band listens. */
+struct EmulatorOptions
+{
+    DeviceModelPtr model;
+    bool udp = false;                           ///< a UDP port instead of a pseudo-terminal
+    QString host = QStringLiteral("127.0.0.1"); ///< UDP: the address to bind
+    int port = 0;                               ///< UDP: 0 picks a free port
+    QString link;           ///< pty: a symlink kept pointing at the pty (replaced if stale)
+    QString logPath;        ///< JSON Lines state log; empty: none
+    double watchdog = 0.25; ///< s without a valid frame before every setpoint goes to 0
+};
+
+/**
+ * A wristband in software, for tests and for working without hardware: it listens on a
+ * pseudo-terminal or a UDP port, speaks the wire protocol as firmware must, applies the
+ * device model's response at the model's rate, runs the firmware watchdog and logs its
+ * state as JSON Lines (`{"t", "setpoint", "values"}`) at every change.
+ */
+class Emulator
+{
+public:
+    /** What the band is doing, for in-process tests. */
+    struct State
+    {
+        std::vector<double> setpoints;
+        std::vector<double> values;
+        protocol::DeviceStatus status;
+        int watchdogTrips = 0;
+    };
+
+    explicit Emulator(const EmulatorOptions &options);
+    ~Emulator();
+    Emulator(const Emulator &) = delete;
+    Emulator &operator=(const Emulator &) = delete;
+
+    /** Creates the pty (and link) or binds the port, opens the log; false with `error`. */
+    bool open(QString *error);
+    /** The pty's path, or HOST:PORT. */
+    QString address() const;
+    /** The URI a host uses: `serial:LINK-or-PTY` or `udp:HOST:PORT`. */
+    QString uri() const;
+    /** Serves until `quit()` returns true (checked at least every tick). */
+    void run(const std::function<bool()> &quit);
+    State state() const;
+
+private:
+    bool openPty(QString *error);
+    bool openUdp(QString *error);
+    void receive(double now);
+    void handle(const protocol::Message &message, double now);
+    void reply(const protocol::Message &message);
+    void tick(double now);
+    void log(double now);
+
+    EmulatorOptions m_options;
+    int m_fd = -1;
+    int m_slaveFd = -1; ///< held open so the pty survives hosts coming and going
+    QString m_ptyPath;
+    int m_boundPort = 0;
+    std::vector<unsigned char> m_peer; ///< UDP: the last sender's address
+    FrameDecoder m_decoder;
+    std::vector<ResponseFilter> m_filters;
+    QFile m_log;
+    QByteArray m_lastLogged;
+    double m_start = 0.0;
+    double m_lastFrame = -1.0;
+    int m_lastSequence = -1;
+
+    mutable std::mutex m_mutex; ///< guards m_state against state() from other threads
+    State m_state;
+};
+
+} // namespace semhap

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#include "fdlink.h"
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
+
+namespace semhap {
+
+FdLink::~FdLink()
+{
+    // Not close(): a virtual call from a destructor would skip the subclass's release().
+    if (m_fd >= 0)
+        ::close(m_fd);
+}
+
+void FdLink::close()
+{
+    release();
+    if (m_fd >= 0)
+        ::close(m_fd);
+    m_fd = -1;
+}
+
+bool FdLink::writeFrame(const std::uint8_t *data, int size, QString *error)
+{
+    const ssize_t n = ::write(m_fd, data, size_t(size));
+    if (n >= 0 || errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED || errno == ENOBUFS)
+        return true; // a full or unreachable link drops this frame; the next one is newer
+    *error = QString::fromLocal8Bit(std::strerror(errno));
+    return false;
+}
+
+int FdLink::read(std::uint8_t *buffer, int size, QString *error)
+{
+    // 0 is no data, not an end: a raw tty with VMIN 0 says so, and so does an empty
+    // datagram. A pty whose other side went away fails with EIO instead.
+    const ssize_t n = ::read(m_fd, buffer, size_t(size));
+    if (n >= 0)
+        return int(n);
+    if (errno == EAGAIN || errno == EINTR || errno == ECONNREFUSED)
+        return 0; // nobody listening on a UDP port yet is not a lost link
+    *error = QString::fromLocal8Bit(std::strerror(errno));
+    return -1;
+}
+
+} // namespace semhap

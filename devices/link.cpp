@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: MIT
+#include "link.h"
+
+namespace semhap {
+
+Link::~Link() = default;
+
+} // namespace semhap

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#include "transportfactory.h"
+
+#include "hidlink.h"
+#include "linktransport.h"
+#include "seriallink.h"
+#include "udplink.h"
+#include "virtualtransport.h"
+
+namespace semhap {
+
+std::unique_ptr<Transport> TransportFactory::create(const QString &uri, DeviceModelPtr model,
+                                                    QString *error)
+{
+    DeviceUri parsed;
+    if (!DeviceUri::parse(uri, &parsed, error))
+        return nullptr;
+    return create(parsed, std::move(model));
+}
+
+std::unique_ptr<Transport> TransportFactory::create(const DeviceUri &uri, DeviceModelPtr model)
+{
+    std::unique_ptr<Link> link;
+    switch (uri.scheme) {
+    case DeviceUri::Scheme::Virtual:
+        return std::make_unique<VirtualTransport>(uri.name, std::move(model));
+    case DeviceUri::Scheme::Serial:
+        link = std::make_unique<SerialLink>(uri.name, uri.baud);
+        break;
+    case DeviceUri::Scheme::Hid:
+        link = std::make_unique<HidLink>(uri.vendorId, uri.productId);
+        break;
+    case DeviceUri::Scheme::Udp:
+        link = std::make_unique<UdpLink>(uri.name, uri.port);
+        break;
+    }
+    return std::make_unique<LinkTransport>(std::move(link), std::move(model));
+}
+
+} // namespace semhap

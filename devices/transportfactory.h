@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "deviceuri.h"
+#include "transport.h"
+
+#include <memory>
+
+namespace semhap {
+
+/** Makes the transport a URI names, so callers never name a link class. */
+class TransportFactory
+{
+public:
+    /** A transport for `uri` driving `model` (not opened yet); null with `error`. */
+    static std::unique_ptr<Transport> create(const QString &uri, DeviceModelPtr model,
+                                             QString *error);
+    static std::unique_ptr<Transport> create(const DeviceUri &uri, DeviceModelPtr model);
+};
+
+} // namespace semhap

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+#include "virtualtransport.h"
+
+#include "monotonic.h"
+
+namespace semhap {
+
+VirtualTransport::VirtualTransport(const QString &name, DeviceModelPtr model)
+    : Transport(model), m_name(name), m_safety(model)
+{
+    // Nothing physical to protect: previews play as soon as they are asked to.
+    setArmed(true);
+}
+
+QString VirtualTransport::uri() const
+{
+    return QStringLiteral("virtual:") + m_name;
+}
+
+bool VirtualTransport::open(QString *)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_open = true;
+    return true;
+}
+
+void VirtualTransport::close()
+{
+    stopAll();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_open = false;
+}
+
+void VirtualTransport::send(const DeviceFrame &frame)
+{
+    DeviceFrame safe = frame;
+    safe.channelCount = m_model->channelCount();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_safety.apply(frame.values.data(), frame.channelCount, monotonicSeconds(), gain(), isArmed(),
+                   safe.values.data());
+    store(safe);
+}
+
+void VirtualTransport::stopAll()
+{
+    DeviceFrame zero;
+    zero.channelCount = m_model->channelCount();
+    for (int c = 0; c < zero.channelCount; ++c)
+        zero.values[size_t(c)] = m_model->channels()[size_t(c)].min;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_count > 0)
+        zero.t = m_history[size_t((m_count - 1) % HistorySize)].t;
+    m_safety.reset();
+    store(zero);
+    ++m_stops;
+}
+
+void VirtualTransport::store(const DeviceFrame &frame)
+{
+    m_history[size_t(m_count % HistorySize)] = frame;
+    ++m_count;
+}
+
+TransportStatus VirtualTransport::status() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    TransportStatus s;
+    s.connected = m_open;
+    s.responding = m_open;
+    s.armed = isArmed();
+    s.framesSent = std::uint32_t(m_count);
+    s.identity = m_model->name();
+    return s;
+}
+
+DeviceFrame VirtualTransport::lastFrame() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_count > 0 ? m_history[size_t((m_count - 1) % HistorySize)] : DeviceFrame{};
+}
+
+std::vector<DeviceFrame> VirtualTransport::history() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    std::vector<DeviceFrame> out;
+    const int first = std::max(0, m_count - HistorySize);
+    for (int i = first; i < m_count; ++i)
+        out.push_back(m_history[size_t(i % HistorySize)]);
+    return out;
+}
+
+int VirtualTransport::stopCount() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_stops;
+}
+
+} // namespace semhap

@@ -1,0 +1,284 @@
+// SPDX-License-Identifier: MIT
+// Transports without hardware: URIs, safety (clamp, gain, inflation limit, armed, stop-all),
+// the virtual transport, HID enumeration.
+#include "deviceuri.h"
+#include "hidlink.h"
+#include "safetyfilter.h"
+#include "transportfactory.h"
+#include "virtualtransport.h"
+
+#include <QTest>
+
+using namespace semhap;
+
+namespace {
+
+DeviceFrame frameOf(std::initializer_list<double> values)
+{
+    DeviceFrame f;
+    f.channelCount = int(values.size());
+    std::copy(values.begin(), values.end(), f.values.begin());
+    return f;
+}
+
+} // namespace
+
+class TestTransports : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void parseUri_data();
+    void parseUri();
+    void safety_data();
+    void safety();
+    void inflationLimit();
+    void inflationLimitOnlyForPneumatic();
+    void virtualTransport();
+    void stopAllGetsThrough();
+    void factoryMakesEachKind();
+    void hidEnumerationWithoutDevices();
+};
+
+void TestTransports::parseUri_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("canonical"); ///< empty: must be rejected
+    QTest::addColumn<QString>("errorPart");
+    QTest::newRow("virtual") << "virtual:right.vibro"
+                             << "virtual:right.vibro"
+                             << "";
+    QTest::newRow("virtual no name") << "virtual:"
+                                     << ""
+                                     << "needs a name";
+    QTest::newRow("serial") << "serial:/dev/ttyACM0"
+                            << "serial:/dev/ttyACM0"
+                            << "";
+    QTest::newRow("serial baud") << "serial:/dev/ttyUSB1?baud=921600"
+                                 << "serial:/dev/ttyUSB1?baud=921600"
+                                 << "";
+    QTest::newRow("serial default baud") << "serial:/tmp/band?baud=115200"
+                                         << "serial:/tmp/band"
+                                         << "";
+    QTest::newRow("serial bad baud") << "serial:/dev/ttyACM0?baud=fast"
+                                     << ""
+                                     << "baud=fast";
+    QTest::newRow("serial other option") << "serial:/dev/ttyACM0?parity=odd"
+                                         << ""
+                                         << "parity=odd";
+    QTest::newRow("serial no path") << "serial:"
+                                    << ""
+                                    << "needs a path";
+    QTest::newRow("hid") << "hid:1234:ABCD"
+                         << "hid:1234:abcd"
+                         << "";
+    QTest::newRow("hid short ids") << "hid:1:2"
+                                   << "hid:0001:0002"
+                                   << "";
+    QTest::newRow("hid one id") << "hid:1234"
+                                << ""
+                                << "hid:VID:PID";
+    QTest::newRow("hid not hex") << "hid:12g4:0001"
+                                 << ""
+                                 << "hex";
+    QTest::newRow("hid too long") << "hid:12345:0001"
+                                  << ""
+                                  << "four hex";
+    QTest::newRow("udp") << "udp:127.0.0.1:9000"
+                         << "udp:127.0.0.1:9000"
+                         << "";
+    QTest::newRow("udp name") << "udp:band.local:9000"
+                              << "udp:band.local:9000"
+                              << "";
+    QTest::newRow("udp ipv6") << "udp:[::1]:9000"
+                              << "udp:[::1]:9000"
+                              << "";
+    QTest::newRow("udp no port") << "udp:127.0.0.1"
+                                 << ""
+                                 << "HOST:PORT";
+    QTest::newRow("udp port zero") << "udp:127.0.0.1:0"
+                                   << ""
+                                   << "1-65535";
+    QTest::newRow("udp port too big") << "udp:127.0.0.1:70000"
+                                      << ""
+                                      << "1-65535";
+    QTest::newRow("unknown scheme") << "usb:1"
+                                    << ""
+                                    << "unknown device scheme 'usb'";
+    QTest::newRow("no scheme") << "/dev/ttyACM0"
+                               << ""
+                               << "unknown device scheme";
+    QTest::newRow("empty") << ""
+                           << ""
+                           << "unknown device scheme";
+}
+
+void TestTransports::parseUri()
+{
+    QFETCH(QString, text);
+    QFETCH(QString, canonical);
+    QFETCH(QString, errorPart);
+    DeviceUri uri;
+    QString error;
+    const bool ok = DeviceUri::parse(text, &uri, &error);
+    QCOMPARE(ok, !canonical.isEmpty());
+    if (ok) {
+        QCOMPARE(uri.toString(), canonical);
+        DeviceUri again;
+        QVERIFY(DeviceUri::parse(uri.toString(), &again, &error));
+        QCOMPARE(again.toString(), canonical);
+    } else {
+        QVERIFY2(error.contains(errorPart), qPrintable(error));
+        QVERIFY2(error.startsWith(text), qPrintable(error));
+    }
+}
+
+void TestTransports::safety_data()
+{
+    QTest::addColumn<double>("commanded");
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<bool>("armed");
+    QTest::addColumn<double>("expected");
+    QTest::newRow("passes") << 0.7 << 1.0 << true << 0.7;
+    QTest::newRow("clamped above") << 3.0 << 1.0 << true << 1.0;
+    QTest::newRow("clamped below") << -1.0 << 1.0 << true << 0.0;
+    QTest::newRow("nan is the lower limit") << qQNaN() << 1.0 << true << 0.0;
+    QTest::newRow("gain") << 0.8 << 0.5 << true << 0.4;
+    QTest::newRow("gain above 1 is 1") << 0.8 << 7.0 << true << 0.8;
+    QTest::newRow("gain nan is 0") << 0.8 << qQNaN() << true << 0.0;
+    QTest::newRow("disarmed sends zeros") << 0.8 << 1.0 << false << 0.0;
+}
+
+void TestTransports::safety()
+{
+    QFETCH(double, commanded);
+    QFETCH(double, gain);
+    QFETCH(bool, armed);
+    QFETCH(double, expected);
+    for (const char *model : {"lra4", "pneumatic6"}) {
+        DeviceModelPtr m = DeviceModelLibrary::builtin(QString::fromLatin1(model));
+        SafetyFilter filter(m);
+        std::vector<double> in(size_t(m->channelCount()), commanded);
+        std::vector<double> out(in.size(), -1.0);
+        filter.apply(in.data(), int(in.size()), 0.0, gain, armed, out.data());
+        for (double v : out)
+            QCOMPARE(v, expected);
+        // Channels the caller did not send are at the lower limit, not left over.
+        filter.apply(in.data(), 1, 0.0, gain, armed, out.data());
+        QCOMPARE(out.back(), 0.0);
+    }
+}
+
+void TestTransports::inflationLimit()
+{
+    SafetyFilter filter(DeviceModelLibrary::builtin(QStringLiteral("pneumatic6")));
+    filter.setInflationLimit({60.0, 0.9, 0.6});
+    std::array<double, 6> full;
+    full.fill(1.0);
+    std::array<double, 6> out{};
+    for (double t = 0.0; t < 59.9; t += 0.1) {
+        filter.apply(full.data(), 6, 100.0 + t, 1.0, true, out.data());
+        QCOMPARE(out[0], 1.0);
+    }
+    filter.apply(full.data(), 6, 160.0, 1.0, true, out.data());
+    QCOMPARE(out[0], 0.6);
+    QVERIFY(filter.isCapped(0));
+    // Dropping below the threshold is not enough; the cap holds down to the comfort level.
+    std::array<double, 6> high;
+    high.fill(0.8);
+    filter.apply(high.data(), 6, 161.0, 1.0, true, out.data());
+    QCOMPARE(out[0], 0.6);
+    std::array<double, 6> low;
+    low.fill(0.5);
+    filter.apply(low.data(), 6, 162.0, 1.0, true, out.data());
+    QCOMPARE(out[0], 0.5);
+    QVERIFY(!filter.isCapped(0));
+    filter.apply(full.data(), 6, 163.0, 1.0, true, out.data());
+    QCOMPARE(out[0], 1.0);
+    // A brief dip below the threshold restarts the count.
+    filter.apply(full.data(), 6, 200.0, 1.0, true, out.data());
+    filter.apply(low.data(), 6, 200.1, 1.0, true, out.data());
+    filter.apply(full.data(), 6, 200.2, 1.0, true, out.data());
+    filter.apply(full.data(), 6, 250.0, 1.0, true, out.data());
+    QCOMPARE(out[0], 1.0);
+}
+
+void TestTransports::inflationLimitOnlyForPneumatic()
+{
+    SafetyFilter vibro(DeviceModelLibrary::builtin(QStringLiteral("lra4")));
+    QCOMPARE(vibro.inflationLimit().seconds, 0.0);
+    SafetyFilter fingertips(DeviceModelLibrary::builtin(QStringLiteral("fingertips2")));
+    QCOMPARE(fingertips.inflationLimit().seconds, 60.0);
+}
+
+void TestTransports::virtualTransport()
+{
+    VirtualTransport t(QStringLiteral("right.vibro"),
+                       DeviceModelLibrary::builtin(QStringLiteral("lra4")));
+    QString error;
+    QVERIFY(t.open(&error));
+    QCOMPARE(t.uri(), QStringLiteral("virtual:right.vibro"));
+    QVERIFY(t.isArmed());
+    t.setGain(0.5);
+    t.send(frameOf({1.0, 0.5, 2.0, -1.0}));
+    const DeviceFrame last = t.lastFrame();
+    QCOMPARE(last.channelCount, 4);
+    QCOMPARE(last.values[0], 0.5);
+    QCOMPARE(last.values[1], 0.25);
+    QCOMPARE(last.values[2], 0.5);
+    QCOMPARE(last.values[3], 0.0);
+    for (int i = 0; i < VirtualTransport::HistorySize + 10; ++i)
+        t.send(frameOf({0.1 * (i % 10), 0, 0, 0}));
+    QCOMPARE(int(t.history().size()), VirtualTransport::HistorySize);
+    QCOMPARE(t.status().framesSent, std::uint32_t(VirtualTransport::HistorySize + 11));
+    t.setArmed(false);
+    t.send(frameOf({1, 1, 1, 1}));
+    QCOMPARE(t.lastFrame().values[0], 0.0);
+}
+
+void TestTransports::stopAllGetsThrough()
+{
+    VirtualTransport t(QStringLiteral("left.air"),
+                       DeviceModelLibrary::builtin(QStringLiteral("pneumatic6")));
+    QString error;
+    QVERIFY(t.open(&error));
+    t.send(frameOf({1, 1, 1, 1, 1, 1}));
+    t.stopAll();
+    QCOMPARE(t.stopCount(), 1);
+    QCOMPARE(t.lastFrame().values[0], 0.0);
+    t.close();
+    QCOMPARE(t.stopCount(), 2);
+    QVERIFY(!t.status().connected);
+}
+
+void TestTransports::factoryMakesEachKind()
+{
+    DeviceModelPtr model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+    QString error;
+    for (const QString &uri :
+         {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
+          QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9")}) {
+        std::unique_ptr<Transport> t = TransportFactory::create(uri, model, &error);
+        QVERIFY2(t, qPrintable(error));
+        QCOMPARE(t->uri(), uri);
+        QCOMPARE(t->model().name(), QStringLiteral("lra4"));
+    }
+    QVERIFY(!TransportFactory::create(QStringLiteral("tcp:1"), model, &error));
+    QVERIFY(error.contains(QStringLiteral("unknown device scheme")));
+    // Real bands start disarmed.
+    QVERIFY(
+        !TransportFactory::create(QStringLiteral("udp:127.0.0.1:9"), model, &error)->isArmed());
+}
+
+void TestTransports::hidEnumerationWithoutDevices()
+{
+    QVERIFY(HidLink::enumerate(0, 0, 0).empty());
+    QVERIFY(HidLink::enumerate(0x1234, 0x5678, 0xFF00).empty());
+    HidLink link(0x1234, 0x5678);
+    QString error;
+    QVERIFY(!link.open(&error));
+    QCOMPARE(error, QStringLiteral("hid:1234:5678: no such HID device"));
+}
+
+QTEST_GUILESS_MAIN(TestTransports)
+#include "tst_transports.moc"
