@@ -16,10 +16,10 @@ namespace {
 
 const QStringList &commandNames()
 {
-    static const QStringList names{
-        QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
-        QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
-        QStringLiteral("devices"), QStringLiteral("emulate")};
+    static const QStringList names{QStringLiteral("route"),    QStringLiteral("render"),
+                                   QStringLiteral("validate"), QStringLiteral("run"),
+                                   QStringLiteral("compare"),  QStringLiteral("play"),
+                                   QStringLiteral("devices"),  QStringLiteral("emulate")};
     return names;
 }
 

@@ -21,13 +21,18 @@ namespace {
 // The metrics a comparison reports, in table order; inputs come first in the CSV.
 const QStringList &metricKeys()
 {
-    static const QStringList keys{
-        QStringLiteral("cubes_transferred"),    QStringLiteral("cubes_dropped"),
-        QStringLiteral("cubes_broken"),         QStringLiteral("grasps"),
-        QStringLiteral("average_grasp_force"),  QStringLiteral("grasps_per_transfer"),
-        QStringLiteral("average_peak_grasp_force"), QStringLiteral("containers_dropped"),
-        QStringLiteral("transfers_per_container_cycle"), QStringLiteral("warning_lead_time"),
-        QStringLiteral("breaks_warned_share"),  QStringLiteral("realtime_factor")};
+    static const QStringList keys{QStringLiteral("cubes_transferred"),
+                                  QStringLiteral("cubes_dropped"),
+                                  QStringLiteral("cubes_broken"),
+                                  QStringLiteral("grasps"),
+                                  QStringLiteral("average_grasp_force"),
+                                  QStringLiteral("grasps_per_transfer"),
+                                  QStringLiteral("average_peak_grasp_force"),
+                                  QStringLiteral("containers_dropped"),
+                                  QStringLiteral("transfers_per_container_cycle"),
+                                  QStringLiteral("warning_lead_time"),
+                                  QStringLiteral("breaks_warned_share"),
+                                  QStringLiteral("realtime_factor")};
     return keys;
 }
 
@@ -121,7 +126,8 @@ QString table(const std::vector<Row> &rows)
     QString text;
     for (const QStringList &line : lines) {
         for (int c = 0; c < line.size(); ++c)
-            text += (c == 0 ? line[c].leftJustified(widths[0]) : line[c].rightJustified(widths[size_t(c)] + 2));
+            text += (c == 0 ? line[c].leftJustified(widths[0])
+                            : line[c].rightJustified(widths[size_t(c)] + 2));
         text += QLatin1Char('\n');
     }
     return text;
@@ -138,20 +144,18 @@ QString CompareCommand::summary() const
 void CompareCommand::configure(QCommandLineParser &parser)
 {
     parser.addOption({QStringLiteral("scene"), tr("Scene name or MJCF file."), tr("NAME|FILE")});
-    parser.addOption({QStringLiteral("routers"),
-                      tr("Comma-separated routers (presets or files)."), tr("LIST")});
+    parser.addOption({QStringLiteral("routers"), tr("Comma-separated routers (presets or files)."),
+                      tr("LIST")});
     parser.addOption({QStringLiteral("operator"), tr("scripted or reactive."), tr("NAME")});
     parser.addOption({QStringLiteral("seeds"), tr("Seeds 1..N per router."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds per run."), tr("S")});
-    parser.addOption({QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."),
-                      tr("N")});
-    parser.addOption({QStringLiteral("jobs"), tr("Runs at once (default: the cores)."),
-                      tr("N")});
+    parser.addOption(
+        {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
+    parser.addOption({QStringLiteral("jobs"), tr("Runs at once (default: the cores)."), tr("N")});
     parser.addOption({QStringLiteral("shard"),
                       tr("Run only slice I of N of the grid (1-based), for job arrays."),
                       tr("I/N")});
-    parser.addOption({QStringLiteral("csv"), tr("Where to write one row per run."),
-                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("csv"), tr("Where to write one row per run."), tr("FILE|-")});
     parser.addOption({QStringLiteral("merge"),
                       tr("Combine the CSV files given as arguments and print the table.")});
     parser.addPositionalArgument(QStringLiteral("files"), tr("CSV files, with --merge."),
@@ -164,9 +168,9 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         return merge(parser.positionalArguments(), parser.value(QStringLiteral("csv")));
     if (!parser.positionalArguments().isEmpty())
         return usageError(tr("files are only taken with --merge"));
-    for (const QString &required : {QStringLiteral("scene"), QStringLiteral("routers"),
-                                    QStringLiteral("operator"), QStringLiteral("seeds"),
-                                    QStringLiteral("duration")}) {
+    for (const QString &required :
+         {QStringLiteral("scene"), QStringLiteral("routers"), QStringLiteral("operator"),
+          QStringLiteral("seeds"), QStringLiteral("duration")}) {
         if (!parser.isSet(required))
             return usageError(tr("--%1 is required").arg(required));
     }
@@ -174,10 +178,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     double duration = 0;
     double cubes = -1;
     double jobs = std::max(1u, std::thread::hardware_concurrency());
-    if (!numberOption(parser, QStringLiteral("seeds"), &seeds)
-        || !numberOption(parser, QStringLiteral("duration"), &duration)
-        || !numberOption(parser, QStringLiteral("cubes"), &cubes)
-        || !numberOption(parser, QStringLiteral("jobs"), &jobs))
+    if (!numberOption(parser, QStringLiteral("seeds"), &seeds) ||
+        !numberOption(parser, QStringLiteral("duration"), &duration) ||
+        !numberOption(parser, QStringLiteral("cubes"), &cubes) ||
+        !numberOption(parser, QStringLiteral("jobs"), &jobs))
         return ExitUsage;
     if (seeds < 1 || seeds != std::floor(seeds) || seeds > 100000)
         return usageError(tr("--seeds must be a whole number from 1"));
@@ -188,8 +192,8 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     int shard = 1;
     int shards = 1;
     if (parser.isSet(QStringLiteral("shard"))) {
-        const QRegularExpressionMatch m =
-            QRegularExpression(QStringLiteral("^(\\d+)/(\\d+)$")).match(parser.value(QStringLiteral("shard")));
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("^(\\d+)/(\\d+)$"))
+                                              .match(parser.value(QStringLiteral("shard")));
         shard = m.captured(1).toInt();
         shards = m.captured(2).toInt();
         if (!m.hasMatch() || shards < 1 || shard < 1 || shard > shards)
@@ -205,7 +209,7 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     for (const QString &router : routers) {
         for (int seed = 1; seed <= int(seeds); ++seed) {
             if (int(grid.size() + 1) % shards != shard % shards) {
-                grid.emplace_back();  // not ours: a placeholder keeps the index
+                grid.emplace_back(); // not ours: a placeholder keeps the index
                 grid.back().duration = -1;
                 continue;
             }
@@ -315,7 +319,8 @@ int CompareCommand::merge(const QStringList &files, const QString &csvPath)
                 bool ok = cells[c].isEmpty();
                 const double value = ok ? std::nan("") : cells[c].toDouble(&ok);
                 if (!ok)
-                    return inputError(tr("%1:%2: '%3' is not a number").arg(path).arg(line).arg(cells[c]));
+                    return inputError(
+                        tr("%1:%2: '%3' is not a number").arg(path).arg(line).arg(cells[c]));
                 row.metrics.push_back(value);
             }
             rows.push_back(row);

@@ -69,37 +69,36 @@ void RunCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("scene"),
                       tr("Scene: box_and_block, bimanual_sorting, or an MJCF file."),
                       tr("NAME|FILE")});
-    parser.addOption({QStringLiteral("router"), tr("Router preset or router file."),
-                      tr("PRESET|FILE")});
+    parser.addOption(
+        {QStringLiteral("router"), tr("Router preset or router file."), tr("PRESET|FILE")});
     parser.addOption({QStringLiteral("operator"),
                       tr("Who drives the grippers: scripted or reactive."), tr("NAME")});
-    parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."),
-                      tr("N")});
+    parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
-    parser.addOption({QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."),
-                      tr("N")});
+    parser.addOption(
+        {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
     parser.addOption({QStringLiteral("reaction-time"),
                       tr("The reactive operator's reaction time in seconds (default 0.25)."),
                       tr("S")});
-    parser.addOption({QStringLiteral("set"),
-                      tr("Override a router node parameter (repeatable)."),
+    parser.addOption({QStringLiteral("set"), tr("Override a router node parameter (repeatable)."),
                       tr("NODE.PARAM=VALUE")});
     parser.addOption({QStringLiteral("metrics"),
                       tr("Where to write the metrics (JSON), or - for standard output."),
                       tr("FILE|-")});
-    parser.addOption({QStringLiteral("frames"), tr("Where to write the contact frames."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("events"), tr("Where to write the semantic events."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("device-frames"), tr("Where to write the device frames."),
-                      tr("FILE|-")});
+    parser.addOption(
+        {QStringLiteral("frames"), tr("Where to write the contact frames."), tr("FILE|-")});
+    parser.addOption(
+        {QStringLiteral("events"), tr("Where to write the semantic events."), tr("FILE|-")});
+    parser.addOption(
+        {QStringLiteral("device-frames"), tr("Where to write the device frames."), tr("FILE|-")});
     parser.addOption({QStringLiteral("realtime"), tr("Run at the speed of the wall clock.")});
 }
 
 int RunCommand::execute(const QCommandLineParser &parser)
 {
     if (!parser.positionalArguments().isEmpty())
-        return usageError(tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+        return usageError(
+            tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     for (const QString &required : {QStringLiteral("scene"), QStringLiteral("router"),
                                     QStringLiteral("operator"), QStringLiteral("duration")}) {
         if (!parser.isSet(required))
@@ -112,10 +111,10 @@ int RunCommand::execute(const QCommandLineParser &parser)
     options.overrides = parser.values(QStringLiteral("set"));
     double seed = 1;
     double cubes = -1;
-    if (!numberOption(parser, QStringLiteral("duration"), &options.duration)
-        || !numberOption(parser, QStringLiteral("seed"), &seed)
-        || !numberOption(parser, QStringLiteral("cubes"), &cubes)
-        || !numberOption(parser, QStringLiteral("reaction-time"), &options.reactionTime))
+    if (!numberOption(parser, QStringLiteral("duration"), &options.duration) ||
+        !numberOption(parser, QStringLiteral("seed"), &seed) ||
+        !numberOption(parser, QStringLiteral("cubes"), &cubes) ||
+        !numberOption(parser, QStringLiteral("reaction-time"), &options.reactionTime))
         return ExitUsage;
     if (options.duration <= 0 || options.duration > 1e6)
         return usageError(tr("--duration must be between 0 and 1000000 s"));
@@ -128,10 +127,9 @@ int RunCommand::execute(const QCommandLineParser &parser)
     options.seed = std::uint64_t(seed);
     options.sceneOptions.cubes = int(cubes);
 
-    const QStringList outputs{parser.value(QStringLiteral("metrics")),
-                              parser.value(QStringLiteral("frames")),
-                              parser.value(QStringLiteral("events")),
-                              parser.value(QStringLiteral("device-frames"))};
+    const QStringList outputs{
+        parser.value(QStringLiteral("metrics")), parser.value(QStringLiteral("frames")),
+        parser.value(QStringLiteral("events")), parser.value(QStringLiteral("device-frames"))};
     if (!checkSingleStdout(outputs))
         return ExitUsage;
 
@@ -163,15 +161,14 @@ int RunCommand::execute(const QCommandLineParser &parser)
             lastDraw = wall.elapsed();
             const double done = run->time() / options.duration;
             const int bar = int(done * 30);
-            m_io.err->write(QStringLiteral("\r[%1%2] %3% %4/%5 s  %6x real time ")
-                                .arg(QString(bar, QLatin1Char('#')),
-                                     QString(30 - bar, QLatin1Char(' ')))
-                                .arg(int(done * 100), 3)
-                                .arg(run->time(), 0, 'f', 1)
-                                .arg(options.duration)
-                                .arg(run->time() / std::max(1e-3, double(wall.elapsed()) / 1000),
-                                     0, 'f', 1)
-                                .toUtf8());
+            m_io.err->write(
+                QStringLiteral("\r[%1%2] %3% %4/%5 s  %6x real time ")
+                    .arg(QString(bar, QLatin1Char('#')), QString(30 - bar, QLatin1Char(' ')))
+                    .arg(int(done * 100), 3)
+                    .arg(run->time(), 0, 'f', 1)
+                    .arg(options.duration)
+                    .arg(run->time() / std::max(1e-3, double(wall.elapsed()) / 1000), 0, 'f', 1)
+                    .toUtf8());
         }
     }
     if (progress)

@@ -4,7 +4,7 @@
 include(CMakePackageConfigHelpers)
 
 set(SEMHAP_PUBLIC_HEADERS
-    patterns/loaderror.h patterns/signal.h patterns/pattern.h patterns/voice.h
+    patterns/loaderror.h patterns/waveform.h patterns/pattern.h patterns/voice.h
     patterns/patternlibrary.h
     core/contactframe.h core/actortable.h core/semanticevent.h core/deviceframe.h
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h

@@ -221,8 +221,9 @@ bool ContactFrameReader::parseFingertip(const QJsonObject &json, QLatin1String n
             valid = array.at(i).isDouble() && std::isfinite(components[size_t(i)]);
         }
         if (!valid) {
-            return fail(reason, QStringLiteral("%1 must be an array of 3 finite numbers, got %2")
-                                    .arg(quotedField(prefix + QLatin1String("fxyz")), describe(fxyz)));
+            return fail(reason,
+                        QStringLiteral("%1 must be an array of 3 finite numbers, got %2")
+                            .arg(quotedField(prefix + QLatin1String("fxyz")), describe(fxyz)));
         }
     }
 

@@ -7,8 +7,8 @@
 #include "detector.h"
 #include "eventbuffer.h"
 #include "player.h"
-#include "signal.h"
 #include "voice.h"
+#include "waveform.h"
 
 #include <array>
 #include <limits>

@@ -10,95 +10,96 @@ namespace semhap {
 
 namespace {
 
-std::vector<SignalPtr> single(SignalPtr in)
+std::vector<WaveformPtr> single(WaveformPtr in)
 {
-    std::vector<SignalPtr> children;
+    std::vector<WaveformPtr> children;
     children.push_back(std::move(in));
     return children;
 }
 
 } // namespace
 
-CompositeSignal::CompositeSignal(std::vector<SignalPtr> children) : m_children(std::move(children))
+CompositeWaveform::CompositeWaveform(std::vector<WaveformPtr> children)
+    : m_children(std::move(children))
 {}
 
-void CompositeSignal::reset(double *state) const
+void CompositeWaveform::reset(double *state) const
 {
-    Signal::reset(state);
-    for (const SignalPtr &child : m_children)
+    Waveform::reset(state);
+    for (const WaveformPtr &child : m_children)
         child->reset(state);
 }
 
-void CompositeSignal::assignState(int &next)
+void CompositeWaveform::assignState(int &next)
 {
-    Signal::assignState(next);
-    for (const SignalPtr &child : m_children)
+    Waveform::assignState(next);
+    for (const WaveformPtr &child : m_children)
         child->assignState(next);
 }
 
-QJsonValue CompositeSignal::toJson(const ParamTable &params) const
+QJsonValue CompositeWaveform::toJson(const ParamTable &params) const
 {
     QJsonArray of;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         of.append(child->toJson(params));
     return QJsonObject{{QStringLiteral("type"), type()}, {QStringLiteral("of"), of}};
 }
 
-QString SumSignal::type() const
+QString SumWaveform::type() const
 {
     return QStringLiteral("sum");
 }
 
-double SumSignal::sample(const SignalContext &ctx) const
+double SumWaveform::sample(const WaveformContext &ctx) const
 {
     double sum = 0.0;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         sum += child->sample(ctx);
     return sum;
 }
 
-double SumSignal::duration(const double *params) const
+double SumWaveform::duration(const double *params) const
 {
     double longest = 0.0;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         longest = std::max(longest, child->duration(params));
     return longest;
 }
 
-QString ProductSignal::type() const
+QString ProductWaveform::type() const
 {
     return QStringLiteral("product");
 }
 
-double ProductSignal::sample(const SignalContext &ctx) const
+double ProductWaveform::sample(const WaveformContext &ctx) const
 {
     double product = 1.0;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         product *= child->sample(ctx);
     return product;
 }
 
-double ProductSignal::duration(const double *params) const
+double ProductWaveform::duration(const double *params) const
 {
     double shortest = Forever;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         shortest = std::min(shortest, child->duration(params));
     return shortest;
 }
 
-QString SequenceSignal::type() const
+QString SequenceWaveform::type() const
 {
     return QStringLiteral("sequence");
 }
 
-double SequenceSignal::sample(const SignalContext &ctx) const
+double SequenceWaveform::sample(const WaveformContext &ctx) const
 {
     double &index = ctx.state[m_stateOffset];
     double &childStart = ctx.state[m_stateOffset + 1];
     double &childFrom = ctx.state[m_stateOffset + 2];
 
     size_t current = size_t(index);
-    SignalContext child = ctx;
+    WaveformContext child = ctx;
     child.from = current == 0 ? ctx.from : childFrom;
     double previousT = ctx.t - ctx.dt;
     bool handedOver = false;
@@ -124,25 +125,25 @@ double SequenceSignal::sample(const SignalContext &ctx) const
     return m_children[current]->sample(child);
 }
 
-double SequenceSignal::duration(const double *params) const
+double SequenceWaveform::duration(const double *params) const
 {
     double total = 0.0;
-    for (const SignalPtr &child : m_children)
+    for (const WaveformPtr &child : m_children)
         total += child->duration(params);
     return total;
 }
 
-ScaleSignal::ScaleSignal(SignalPtr in, Number gain, Number div, Number offset)
-    : CompositeSignal(single(std::move(in))), m_gain(std::move(gain)), m_div(std::move(div)),
+ScaleWaveform::ScaleWaveform(WaveformPtr in, Number gain, Number div, Number offset)
+    : CompositeWaveform(single(std::move(in))), m_gain(std::move(gain)), m_div(std::move(div)),
       m_offset(std::move(offset))
 {}
 
-QString ScaleSignal::type() const
+QString ScaleWaveform::type() const
 {
     return QStringLiteral("scale");
 }
 
-double ScaleSignal::sample(const SignalContext &ctx) const
+double ScaleWaveform::sample(const WaveformContext &ctx) const
 {
     const double in = m_children.front()->sample(ctx);
     const double div = m_div.value(ctx.params);
@@ -150,12 +151,12 @@ double ScaleSignal::sample(const SignalContext &ctx) const
     return quotient + m_offset.value(ctx.params);
 }
 
-double ScaleSignal::duration(const double *params) const
+double ScaleWaveform::duration(const double *params) const
 {
     return m_children.front()->duration(params);
 }
 
-QJsonValue ScaleSignal::toJson(const ParamTable &params) const
+QJsonValue ScaleWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("in"), m_children.front()->toJson(params)}};
@@ -165,27 +166,27 @@ QJsonValue ScaleSignal::toJson(const ParamTable &params) const
     return o;
 }
 
-ClipSignal::ClipSignal(SignalPtr in, Number min, Number max)
-    : CompositeSignal(single(std::move(in))), m_min(std::move(min)), m_max(std::move(max))
+ClipWaveform::ClipWaveform(WaveformPtr in, Number min, Number max)
+    : CompositeWaveform(single(std::move(in))), m_min(std::move(min)), m_max(std::move(max))
 {}
 
-QString ClipSignal::type() const
+QString ClipWaveform::type() const
 {
     return QStringLiteral("clip");
 }
 
-double ClipSignal::sample(const SignalContext &ctx) const
+double ClipWaveform::sample(const WaveformContext &ctx) const
 {
     const double in = m_children.front()->sample(ctx);
     return std::max(m_min.value(ctx.params), std::min(m_max.value(ctx.params), in));
 }
 
-double ClipSignal::duration(const double *params) const
+double ClipWaveform::duration(const double *params) const
 {
     return m_children.front()->duration(params);
 }
 
-QJsonValue ClipSignal::toJson(const ParamTable &params) const
+QJsonValue ClipWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("in"), m_children.front()->toJson(params)}};

@@ -1,46 +1,46 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "signal.h"
+#include "waveform.h"
 
 #include <vector>
 
 namespace semhap {
 
-/** A signal built from child signals; it hands state slots and resets down to them. */
-class CompositeSignal : public Signal
+/** A waveform built from child waveforms; it hands state slots and resets down to them. */
+class CompositeWaveform : public Waveform
 {
 public:
-    explicit CompositeSignal(std::vector<SignalPtr> children);
+    explicit CompositeWaveform(std::vector<WaveformPtr> children);
     void reset(double *state) const override;
     void assignState(int &next) override;
     /** The children, in the order the JSON lists them. */
-    const std::vector<SignalPtr> &children() const { return m_children; }
+    const std::vector<WaveformPtr> &children() const { return m_children; }
     /** `{"type": …, "of": [children]}`, the form of the list combinators. */
     QJsonValue toJson(const ParamTable &params) const override;
 
 protected:
-    std::vector<SignalPtr> m_children;
+    std::vector<WaveformPtr> m_children;
 };
 
 /** The children added sample by sample: layers, e.g. a pulse train on a base level. */
-class SumSignal : public CompositeSignal
+class SumWaveform : public CompositeWaveform
 {
 public:
-    using CompositeSignal::CompositeSignal;
+    using CompositeWaveform::CompositeWaveform;
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     /** As long as any child lasts (ended children hold their last value). */
     double duration(const double *params) const override;
 };
 
 /** The children multiplied sample by sample: an envelope shaping an oscillator. */
-class ProductSignal : public CompositeSignal
+class ProductWaveform : public CompositeWaveform
 {
 public:
-    using CompositeSignal::CompositeSignal;
+    using CompositeWaveform::CompositeWaveform;
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     /** As long as every child lasts. */
     double duration(const double *params) const override;
 };
@@ -49,12 +49,12 @@ public:
  * The children one after another, each for its duration, each starting from the previous
  * one's last value; all but the last must be finite.
  */
-class SequenceSignal : public CompositeSignal
+class SequenceWaveform : public CompositeWaveform
 {
 public:
-    using CompositeSignal::CompositeSignal;
+    using CompositeWaveform::CompositeWaveform;
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     /** The sum of the children's durations. */
     double duration(const double *params) const override;
 
@@ -63,12 +63,12 @@ protected:
 };
 
 /** in·gain/div + offset (the quotient is 0 when div is 0): normalises a raw parameter. */
-class ScaleSignal : public CompositeSignal
+class ScaleWaveform : public CompositeWaveform
 {
 public:
-    ScaleSignal(SignalPtr in, Number gain, Number div, Number offset);
+    ScaleWaveform(WaveformPtr in, Number gain, Number div, Number offset);
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     double duration(const double *params) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
@@ -79,12 +79,12 @@ private:
 };
 
 /** The input clamped to [min, max], keeping a channel inside its device's range. */
-class ClipSignal : public CompositeSignal
+class ClipWaveform : public CompositeWaveform
 {
 public:
-    ClipSignal(SignalPtr in, Number min, Number max);
+    ClipWaveform(WaveformPtr in, Number min, Number max);
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     double duration(const double *params) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 

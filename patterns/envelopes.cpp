@@ -23,7 +23,7 @@ StartValue StartValue::value(Number number)
     return s;
 }
 
-double StartValue::resolve(const SignalContext &ctx) const
+double StartValue::resolve(const WaveformContext &ctx) const
 {
     switch (m_kind) {
     case Kind::Current:
@@ -49,47 +49,47 @@ QJsonValue StartValue::toJson(const ParamTable &params) const
     return m_number.toJson(params);
 }
 
-QString ConstSignal::type() const
+QString ConstWaveform::type() const
 {
     return QStringLiteral("const");
 }
 
-double ConstSignal::sample(const SignalContext &ctx) const
+double ConstWaveform::sample(const WaveformContext &ctx) const
 {
     return m_value.value(ctx.params);
 }
 
-QJsonValue ConstSignal::toJson(const ParamTable &params) const
+QJsonValue ConstWaveform::toJson(const ParamTable &params) const
 {
     return QJsonObject{{QStringLiteral("type"), type()},
                        {QStringLiteral("value"), m_value.toJson(params)}};
 }
 
-QString ParamSignal::type() const
+QString ParamWaveform::type() const
 {
     return QStringLiteral("param");
 }
 
-double ParamSignal::sample(const SignalContext &ctx) const
+double ParamWaveform::sample(const WaveformContext &ctx) const
 {
     return m_value.value(ctx.params);
 }
 
-QJsonValue ParamSignal::toJson(const ParamTable &params) const
+QJsonValue ParamWaveform::toJson(const ParamTable &params) const
 {
-    // The Number's object form names the parameter "param"; the signal form calls it "name".
+    // The Number's object form names the parameter "param"; the waveform form calls it "name".
     QJsonObject o = m_value.toJson(params).toObject();
     o.insert(QStringLiteral("name"), o.take(QStringLiteral("param")));
     o.insert(QStringLiteral("type"), type());
     return o;
 }
 
-QString RampSignal::type() const
+QString RampWaveform::type() const
 {
     return QStringLiteral("ramp");
 }
 
-double RampSignal::sample(const SignalContext &ctx) const
+double RampWaveform::sample(const WaveformContext &ctx) const
 {
     const double to = m_to.value(ctx.params);
     const double time = duration(ctx.params);
@@ -99,12 +99,12 @@ double RampSignal::sample(const SignalContext &ctx) const
     return start + (to - start) * std::max(ctx.t, 0.0) / time;
 }
 
-double RampSignal::duration(const double *params) const
+double RampWaveform::duration(const double *params) const
 {
     return std::max(m_time.value(params), 0.0);
 }
 
-QJsonValue RampSignal::toJson(const ParamTable &params) const
+QJsonValue RampWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("to"), m_to.toJson(params)},
@@ -114,12 +114,12 @@ QJsonValue RampSignal::toJson(const ParamTable &params) const
     return o;
 }
 
-QString KeyframesSignal::type() const
+QString KeyframesWaveform::type() const
 {
     return QStringLiteral("keyframes");
 }
 
-double KeyframesSignal::sample(const SignalContext &ctx) const
+double KeyframesWaveform::sample(const WaveformContext &ctx) const
 {
     const auto upper = std::upper_bound(m_points.begin(), m_points.end(), ctx.t,
                                         [](double t, const auto &p) { return t < p.first; });
@@ -140,12 +140,12 @@ double KeyframesSignal::sample(const SignalContext &ctx) const
     return v0 + (v1 - v0) * (ctx.t - t0) / (t1 - t0);
 }
 
-double KeyframesSignal::duration(const double *) const
+double KeyframesWaveform::duration(const double *) const
 {
     return m_points.back().first;
 }
 
-QJsonValue KeyframesSignal::toJson(const ParamTable &params) const
+QJsonValue KeyframesWaveform::toJson(const ParamTable &params) const
 {
     QJsonArray points;
     for (const auto &[t, v] : m_points)

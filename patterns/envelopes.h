@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "signal.h"
+#include "waveform.h"
 
 #include <utility>
 #include <vector>
@@ -9,7 +9,7 @@
 namespace semhap {
 
 /**
- * Where a ramp or keyframe envelope starts: the track's value when the signal started
+ * Where a ramp or keyframe envelope starts: the track's value when the waveform started
  * (`"current"`, the default, so every ramp takes its time from wherever the value is), the
  * track's peak since the last begin (`"peak"`), or a Number.
  */
@@ -30,7 +30,7 @@ public:
     static StartValue value(Number number);
 
     /** The start value for this sample's context. */
-    double resolve(const SignalContext &ctx) const;
+    double resolve(const WaveformContext &ctx) const;
     Kind kind() const { return m_kind; }
     /** `"current"`, `"peak"` or the Number's JSON form. */
     QJsonValue toJson(const ParamTable &params) const;
@@ -41,26 +41,26 @@ private:
 };
 
 /** A constant (or a parameter read through a Number), held forever: a plain sustain. */
-class ConstSignal : public Signal
+class ConstWaveform : public Waveform
 {
 public:
-    explicit ConstSignal(Number value) : m_value(std::move(value)) {}
+    explicit ConstWaveform(Number value) : m_value(std::move(value)) {}
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
 private:
     Number m_value;
 };
 
-/** A live parameter as a signal, so a channel can follow a value fed from outside. */
-class ParamSignal : public Signal
+/** A live parameter as a waveform, so a channel can follow a value fed from outside. */
+class ParamWaveform : public Waveform
 {
 public:
     /** `value` must be bound to a parameter; its curve maps the parameter's value. */
-    explicit ParamSignal(Number value) : m_value(std::move(value)) {}
+    explicit ParamWaveform(Number value) : m_value(std::move(value)) {}
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
 private:
@@ -68,14 +68,14 @@ private:
 };
 
 /** A linear ramp from a start value to `to` over `time` seconds, then held. */
-class RampSignal : public Signal
+class RampWaveform : public Waveform
 {
 public:
-    RampSignal(Number to, Number time, StartValue from)
+    RampWaveform(Number to, Number time, StartValue from)
         : m_to(std::move(to)), m_time(std::move(time)), m_from(std::move(from))
     {}
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     double duration(const double *params) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
@@ -89,14 +89,14 @@ private:
  * A piecewise-linear envelope through (time, value) points with non-decreasing times, held
  * at the last value; before the first point it ramps from its start value at time 0.
  */
-class KeyframesSignal : public Signal
+class KeyframesWaveform : public Waveform
 {
 public:
-    KeyframesSignal(std::vector<std::pair<double, double>> points, StartValue from)
+    KeyframesWaveform(std::vector<std::pair<double, double>> points, StartValue from)
         : m_points(std::move(points)), m_from(std::move(from))
     {}
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     double duration(const double *params) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 

@@ -20,7 +20,7 @@ constexpr double TwoPi = 6.283185307179586;
 double advancePhase(double &phase, double freq, double dt)
 {
     phase += std::max(freq, 0.0) * std::max(dt, 0.0);
-    const double tolerance = Signal::TimeTolerance * std::max(freq, 0.0);
+    const double tolerance = Waveform::TimeTolerance * std::max(freq, 0.0);
     const double wraps = std::floor(phase + tolerance);
     phase = std::max(phase - wraps, 0.0);
     return wraps;
@@ -28,17 +28,17 @@ double advancePhase(double &phase, double freq, double dt)
 
 } // namespace
 
-SineSignal::SineSignal(Number freq, Number amp, Number offset, Number phase)
+SineWaveform::SineWaveform(Number freq, Number amp, Number offset, Number phase)
     : m_freq(std::move(freq)), m_amp(std::move(amp)), m_offset(std::move(offset)),
       m_phase(std::move(phase))
 {}
 
-QString SineSignal::type() const
+QString SineWaveform::type() const
 {
     return QStringLiteral("sine");
 }
 
-double SineSignal::sample(const SignalContext &ctx) const
+double SineWaveform::sample(const WaveformContext &ctx) const
 {
     double &phase = ctx.state[m_stateOffset];
     advancePhase(phase, m_freq.value(ctx.params), ctx.dt);
@@ -46,7 +46,7 @@ double SineSignal::sample(const SignalContext &ctx) const
     return m_offset.value(ctx.params) + m_amp.value(ctx.params) * std::sin(angle);
 }
 
-QJsonValue SineSignal::toJson(const ParamTable &params) const
+QJsonValue SineWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("freq"), m_freq.toJson(params)}};
@@ -56,27 +56,27 @@ QJsonValue SineSignal::toJson(const ParamTable &params) const
     return o;
 }
 
-SquareSignal::SquareSignal(Number freq, Number duty, Number high, Number low)
+SquareWaveform::SquareWaveform(Number freq, Number duty, Number high, Number low)
     : m_freq(std::move(freq)), m_duty(std::move(duty)), m_high(std::move(high)),
       m_low(std::move(low))
 {}
 
-QString SquareSignal::type() const
+QString SquareWaveform::type() const
 {
     return QStringLiteral("square");
 }
 
-double SquareSignal::sample(const SignalContext &ctx) const
+double SquareWaveform::sample(const WaveformContext &ctx) const
 {
     double &phase = ctx.state[m_stateOffset];
     const double freq = m_freq.value(ctx.params);
     advancePhase(phase, freq, ctx.dt);
     const double duty = std::clamp(m_duty.value(ctx.params), 0.0, 1.0);
-    const bool high = phase + Signal::TimeTolerance * std::max(freq, 0.0) < duty;
+    const bool high = phase + Waveform::TimeTolerance * std::max(freq, 0.0) < duty;
     return high ? m_high.value(ctx.params) : m_low.value(ctx.params);
 }
 
-QJsonValue SquareSignal::toJson(const ParamTable &params) const
+QJsonValue SquareWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("freq"), m_freq.toJson(params)}};
@@ -86,16 +86,16 @@ QJsonValue SquareSignal::toJson(const ParamTable &params) const
     return o;
 }
 
-PulsesSignal::PulsesSignal(Number rate, Number width, Number amp)
+PulsesWaveform::PulsesWaveform(Number rate, Number width, Number amp)
     : m_rate(std::move(rate)), m_width(std::move(width)), m_amp(std::move(amp))
 {}
 
-QString PulsesSignal::type() const
+QString PulsesWaveform::type() const
 {
     return QStringLiteral("pulses");
 }
 
-double PulsesSignal::sample(const SignalContext &ctx) const
+double PulsesWaveform::sample(const WaveformContext &ctx) const
 {
     double &phase = ctx.state[m_stateOffset];
     double &sinceStart = ctx.state[m_stateOffset + 1];
@@ -106,10 +106,10 @@ double PulsesSignal::sample(const SignalContext &ctx) const
         sinceStart = phase / rate;
     }
     const double width = std::max(m_width.value(ctx.params), 0.0);
-    return sinceStart + Signal::TimeTolerance < width ? m_amp.value(ctx.params) : 0.0;
+    return sinceStart + Waveform::TimeTolerance < width ? m_amp.value(ctx.params) : 0.0;
 }
 
-QJsonValue PulsesSignal::toJson(const ParamTable &params) const
+QJsonValue PulsesWaveform::toJson(const ParamTable &params) const
 {
     QJsonObject o{{QStringLiteral("type"), type()},
                   {QStringLiteral("rate"), m_rate.toJson(params)},

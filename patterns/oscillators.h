@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "signal.h"
+#include "waveform.h"
 
 namespace semhap {
 
@@ -10,12 +10,12 @@ namespace semhap {
 // frequency bound to a live parameter changes the period from then on without a jump.
 
 /** offset + amp·sin(2π(phase + phase offset)): a smooth periodic wave. */
-class SineSignal : public Signal
+class SineWaveform : public Waveform
 {
 public:
-    SineSignal(Number freq, Number amp, Number offset, Number phase);
+    SineWaveform(Number freq, Number amp, Number offset, Number phase);
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
 protected:
@@ -29,12 +29,12 @@ private:
 };
 
 /** `high` for the first `duty` of each cycle and `low` for the rest, starting high. */
-class SquareSignal : public Signal
+class SquareWaveform : public Waveform
 {
 public:
-    SquareSignal(Number freq, Number duty, Number high, Number low);
+    SquareWaveform(Number freq, Number duty, Number high, Number low);
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
 protected:
@@ -51,12 +51,12 @@ private:
  * A pulse of `amp` lasting `width` seconds at the start of each cycle of `rate` Hz, the
  * first at time 0: the width stays in seconds however the rate moves.
  */
-class PulsesSignal : public Signal
+class PulsesWaveform : public Waveform
 {
 public:
-    PulsesSignal(Number rate, Number width, Number amp);
+    PulsesWaveform(Number rate, Number width, Number amp);
     QString type() const override;
-    double sample(const SignalContext &ctx) const override;
+    double sample(const WaveformContext &ctx) const override;
     QJsonValue toJson(const ParamTable &params) const override;
 
 protected:

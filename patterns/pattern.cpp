@@ -3,7 +3,7 @@
 
 #include "envelopes.h"
 #include "jsonreader.h"
-#include "signalparser.h"
+#include "waveformparser.h"
 
 #include <QJsonArray>
 
@@ -14,7 +14,7 @@ namespace semhap {
 namespace {
 
 /** Fills `pattern`'s declared parameters from the optional `"params"` object. */
-bool readParams(const QJsonObject &json, SignalParser &reader, ParamTable &params)
+bool readParams(const QJsonObject &json, WaveformParser &reader, ParamTable &params)
 {
     const QLatin1String key("params");
     if (!json.contains(key))
@@ -37,7 +37,7 @@ bool readParams(const QJsonObject &json, SignalParser &reader, ParamTable &param
     return true;
 }
 
-bool readChannels(const QJsonObject &track, const QString &pointer, SignalParser &reader,
+bool readChannels(const QJsonObject &track, const QString &pointer, WaveformParser &reader,
                   QStringList *channels)
 {
     const QLatin1String key("channels");
@@ -62,9 +62,9 @@ bool readChannels(const QJsonObject &track, const QString &pointer, SignalParser
     return true;
 }
 
-/** Parses one of a track's signals; an absent one stays null. */
-bool readSignal(const QJsonObject &track, const QString &pointer, QLatin1String key,
-                SignalParser &parser, SignalPtr *out)
+/** Parses one of a track's waveforms; an absent one stays null. */
+bool readWaveform(const QJsonObject &track, const QString &pointer, QLatin1String key,
+                  WaveformParser &parser, WaveformPtr *out)
 {
     if (!track.contains(key))
         return true;
@@ -72,7 +72,7 @@ bool readSignal(const QJsonObject &track, const QString &pointer, QLatin1String 
     return *out != nullptr;
 }
 
-bool readTrack(const QJsonValue &json, const QString &pointer, SignalParser &parser,
+bool readTrack(const QJsonValue &json, const QString &pointer, WaveformParser &parser,
                const ParamTable &params, PatternTrack *track)
 {
     if (!json.isObject())
@@ -84,9 +84,9 @@ bool readTrack(const QJsonValue &json, const QString &pointer, SignalParser &par
                           {QLatin1String("channels"), QLatin1String("attack"),
                            QLatin1String("sustain"), releaseKey}) ||
         !readChannels(object, pointer, parser, &track->channels) ||
-        !readSignal(object, pointer, QLatin1String("attack"), parser, &track->attack) ||
-        !readSignal(object, pointer, QLatin1String("sustain"), parser, &track->sustain) ||
-        !readSignal(object, pointer, releaseKey, parser, &track->release)) {
+        !readWaveform(object, pointer, QLatin1String("attack"), parser, &track->attack) ||
+        !readWaveform(object, pointer, QLatin1String("sustain"), parser, &track->sustain) ||
+        !readWaveform(object, pointer, releaseKey, parser, &track->release)) {
         return false;
     }
     if (track->release && std::isinf(track->release->duration(params.defaults().data()))) {
@@ -94,12 +94,12 @@ bool readTrack(const QJsonValue &json, const QString &pointer, SignalParser &par
                            QStringLiteral("a release must end, but this one lasts forever"));
     }
     if (!track->sustain)
-        track->sustain = std::make_unique<ConstSignal>(0.0);
+        track->sustain = std::make_unique<ConstWaveform>(0.0);
 
     int stateSize = 0;
-    for (const SignalPtr *signal : {&track->attack, &track->sustain, &track->release}) {
-        if (*signal)
-            (*signal)->assignState(stateSize);
+    for (const WaveformPtr *waveform : {&track->attack, &track->sustain, &track->release}) {
+        if (*waveform)
+            (*waveform)->assignState(stateSize);
     }
     track->stateSize = stateSize;
     return true;
@@ -111,7 +111,7 @@ std::shared_ptr<const Pattern> Pattern::fromJson(const QJsonObject &json, const 
                                                  LoadError *error)
 {
     auto pattern = std::make_shared<Pattern>();
-    SignalParser parser(pattern->m_params, file);
+    WaveformParser parser(pattern->m_params, file);
     const QString root = QStringLiteral("");
     const QLatin1String formatKey("format");
     const QLatin1String descriptionKey("description");

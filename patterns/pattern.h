@@ -2,7 +2,7 @@
 #pragma once
 
 #include "loaderror.h"
-#include "signal.h"
+#include "waveform.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -16,15 +16,15 @@ namespace semhap {
 /**
  * One track of a pattern: the channels it drives and its lifecycle. The attack plays from
  * begin, the sustain follows it while the pattern is active, the release plays from end;
- * each starts from wherever the track's value is (SignalContext::from).
+ * each starts from wherever the track's value is (WaveformContext::from).
  */
 struct PatternTrack
 {
     QStringList channels; ///< channel names of the pattern's model; `{"*"}` means all
-    SignalPtr attack;     ///< may be null: begin goes straight to the sustain
-    SignalPtr sustain;    ///< never null (a missing sustain parses as the constant 0)
-    SignalPtr release;    ///< may be null: end drops to 0 at once; otherwise finite
-    int stateSize = 0;    ///< state slots of the three signals together
+    WaveformPtr attack;   ///< may be null: begin goes straight to the sustain
+    WaveformPtr sustain;  ///< never null (a missing sustain parses as the constant 0)
+    WaveformPtr release;  ///< may be null: end drops to 0 at once; otherwise finite
+    int stateSize = 0;    ///< state slots of the three waveforms together
 };
 
 /**

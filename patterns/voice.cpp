@@ -16,7 +16,7 @@ Voice::Voice(PatternPtr pattern)
     }
 }
 
-const Signal *Voice::segmentSignal(const PatternTrack &def, Phase phase)
+const Waveform *Voice::segmentWaveform(const PatternTrack &def, Phase phase)
 {
     switch (phase) {
     case Phase::Attack:
@@ -36,19 +36,19 @@ void Voice::startSegment(TrackState &track, const PatternTrack &def, Phase phase
     track.phase = phase;
     track.segmentStart = t;
     track.segmentPeak = track.peak;
-    segmentSignal(def, phase)->reset(m_state.data() + track.stateOffset);
+    segmentWaveform(def, phase)->reset(m_state.data() + track.stateOffset);
 }
 
-double Voice::sampleSegment(TrackState &track, const Signal &signal, double local, double dt)
+double Voice::sampleSegment(TrackState &track, const Waveform &waveform, double local, double dt)
 {
-    SignalContext ctx;
+    WaveformContext ctx;
     ctx.t = std::max(local, 0.0);
     ctx.dt = std::max(dt, 0.0);
     ctx.from = track.from;
     ctx.peak = track.segmentPeak;
     ctx.params = m_params.data();
     ctx.state = m_state.data() + track.stateOffset;
-    const double value = signal.sample(ctx);
+    const double value = waveform.sample(ctx);
     track.peak = std::max(track.peak, value);
     return value;
 }
@@ -59,17 +59,17 @@ void Voice::advanceTrack(size_t index, double t)
     const PatternTrack &def = m_pattern->tracks()[index];
     double previous = std::max(m_lastT, track.segmentStart);
     while (track.phase != Phase::Idle) {
-        const Signal &signal = *segmentSignal(def, track.phase);
+        const Waveform &waveform = *segmentWaveform(def, track.phase);
         const double local = t - track.segmentStart;
         const double length =
-            track.phase == Phase::Sustain ? Signal::Forever : signal.duration(m_params.data());
-        if (local < length - Signal::TimeTolerance) {
-            track.value = sampleSegment(track, signal, local, t - previous);
+            track.phase == Phase::Sustain ? Waveform::Forever : waveform.duration(m_params.data());
+        if (local < length - Waveform::TimeTolerance) {
+            track.value = sampleSegment(track, waveform, local, t - previous);
             return;
         }
         // The segment ended between samples: finish it exactly at its end.
         const double end = track.segmentStart + length;
-        const double last = sampleSegment(track, signal, length, end - previous);
+        const double last = sampleSegment(track, waveform, length, end - previous);
         if (track.phase == Phase::Release) {
             track.phase = Phase::Idle;
             break;

@@ -9,7 +9,7 @@ namespace semhap {
 
 /**
  * One playing instance of a pattern: its lifecycle per track, its live parameter values and
- * its signal state. All memory is taken in the constructor; begin, end, setParam and
+ * its waveform state. All memory is taken in the constructor; begin, end, setParam and
  * advance never allocate, so a voice can sit on the real-time path.
  *
  * Time is absolute (seconds, never decreasing across calls). begin/end/setParam at time t
@@ -63,16 +63,16 @@ private:
         double segmentStart = 0.0; ///< absolute time the current segment began
         double from = 0.0;         ///< value when the segment began
         double peak = 0.0;         ///< highest value since the last begin
-        double segmentPeak = 0.0;  ///< peak when the segment began (SignalContext::peak)
+        double segmentPeak = 0.0;  ///< peak when the segment began (WaveformContext::peak)
         double value = 0.0;        ///< value at the last sample
         int stateOffset = 0;       ///< first state slot of this track
     };
 
     void advanceTrack(size_t index, double t);
     void startSegment(TrackState &track, const PatternTrack &def, Phase phase, double t);
-    /** Samples `signal` for `track` at `local` seconds into its segment, `dt` after the last. */
-    double sampleSegment(TrackState &track, const Signal &signal, double local, double dt);
-    static const Signal *segmentSignal(const PatternTrack &def, Phase phase);
+    /** Samples `waveform` for `track` at `local` seconds into its segment, `dt` after the last. */
+    double sampleSegment(TrackState &track, const Waveform &waveform, double local, double dt);
+    static const Waveform *segmentWaveform(const PatternTrack &def, Phase phase);
 
     PatternPtr m_pattern;
     std::vector<TrackState> m_tracks;

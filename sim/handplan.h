@@ -41,7 +41,12 @@ public:
 private:
     struct Segment
     {
-        enum Kind { Move, Grip, Wait } kind;
+        enum Kind
+        {
+            Move,
+            Grip,
+            Wait
+        } kind;
         std::array<double, 3> to{};
         double force = 0.0;
         double seconds = 0.0;

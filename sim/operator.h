@@ -52,7 +52,7 @@ QStringList operatorNames();
  * variation, ignoring feedback) or `reactive` (the same, reacting to what it feels after
  * `reactionTime` seconds). Null with `error` for an unknown name or a scene it cannot do.
  */
-std::unique_ptr<Operator> makeOperator(const QString &name, const World &world,
-                                       std::uint64_t seed, double reactionTime, QString *error);
+std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
+                                       double reactionTime, QString *error);
 
 } // namespace semhap

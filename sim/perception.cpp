@@ -22,9 +22,9 @@ Perception::Perception(const Router &router) : m_player(router.player())
             const QString channel = model.channels()[size_t(c)].name;
             const QStringList parts = channel.split(QLatin1Char('.'));
             Gripper hand = Gripper::Right;
-            const bool overlay = parts.size() == 2 && gripperFromName(parts[0], &hand)
-                                 && (parts[1] == QLatin1String("confirm")
-                                     || parts[1] == QLatin1String("warn"));
+            const bool overlay =
+                parts.size() == 2 && gripperFromName(parts[0], &hand) &&
+                (parts[1] == QLatin1String("confirm") || parts[1] == QLatin1String("warn"));
             device.shown.push_back(overlay ? (parts[1] == QLatin1String("warn") ? 1 : 0) : -1);
             device.shownHand.push_back(int(hand));
         }
@@ -70,7 +70,7 @@ void Perception::update()
         else if (device.priority == PlayerInput::Confirmation)
             target = &feeling.confirmation;
         else if (device.priority < 0)
-            continue;  // a fading output whose message is gone still moves the band a little
+            continue; // a fading output whose message is gone still moves the band a little
         *target = std::max(*target, device.level);
     }
 }

@@ -28,11 +28,11 @@ public:
 private:
     struct Device
     {
-        int hand = -1;                        ///< Gripper, or -1 for the overlay or others
-        std::vector<ResponseFilter> filters;  ///< per channel
-        std::vector<int> shown;               ///< overlay: per channel, 0 confirm, 1 warn, -1
+        int hand = -1;                       ///< Gripper, or -1 for the overlay or others
+        std::vector<ResponseFilter> filters; ///< per channel
+        std::vector<int> shown;              ///< overlay: per channel, 0 confirm, 1 warn, -1
         std::vector<int> shownHand;
-        double level = 0.0;                   ///< delivered, max over channels
+        double level = 0.0; ///< delivered, max over channels
         int priority = -1;
     };
 

@@ -21,7 +21,7 @@ double Random::uniform()
 double Random::normal(double mean, double sd)
 {
     constexpr double Pi = 3.14159265358979323846;
-    const double u = 1.0 - uniform();  // (0, 1]: log(u) is finite
+    const double u = 1.0 - uniform(); // (0, 1]: log(u) is finite
     const double v = uniform();
     return mean + sd * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * Pi * v);
 }

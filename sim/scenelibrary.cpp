@@ -40,8 +40,7 @@ int declaredCubes(const QByteArray &xml)
  * Copies the MJCF without the cube bodies from `count` on (and their fragile numerics),
  * setting semhap:cubes to `count`. Streaming, so comments and layout survive.
  */
-bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available,
-               QString *error)
+bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available, QString *error)
 {
     QXmlStreamReader reader(xml);
     QXmlStreamWriter writer(out);
@@ -55,7 +54,8 @@ bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available
             if (tag == QLatin1String("numeric") && name.startsWith(QLatin1String("fragile:")))
                 object = name.mid(8);
             const QRegularExpressionMatch m = cubeName().match(object);
-            if (m.hasMatch() && (tag == QLatin1String("body") || tag == QLatin1String("numeric"))) {
+            if (m.hasMatch() &&
+                (tag == QLatin1String("body") || tag == QLatin1String("numeric"))) {
                 if (tag == QLatin1String("body"))
                     ++*available;
                 if (m.captured(1).toInt() >= count) {
@@ -120,8 +120,8 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
     // in parallel, but compile one at a time.
     static std::mutex compiling;
     const std::lock_guard<std::mutex> lock(compiling);
-    const bool isPath = nameOrPath.contains(QLatin1Char('/'))
-                        || nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
+    const bool isPath = nameOrPath.contains(QLatin1Char('/')) ||
+                        nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
     const QString path =
         isPath ? nameOrPath : QStringLiteral(":/semhap/scenes/%1.xml").arg(nameOrPath);
     QFile file(path);
@@ -137,9 +137,9 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
         // A file on disk compiles from its own folder, so its <include>s and meshes resolve.
         if (isPath) {
             char message[1000] = "";
-            MjModelPtr model(mj_loadXML(QFile::encodeName(QFileInfo(path).absoluteFilePath())
-                                            .constData(),
-                                        nullptr, message, sizeof message));
+            MjModelPtr model(
+                mj_loadXML(QFile::encodeName(QFileInfo(path).absoluteFilePath()).constData(),
+                           nullptr, message, sizeof message));
             if (!model)
                 *error = nameOrPath + QStringLiteral(": ") + oneLine(message);
             return model;

@@ -11,7 +11,7 @@ namespace semhap {
 /** Scene parameters a user may set (semhap run --cubes, the studio's scene picker). */
 struct SceneOptions
 {
-    int cubes = -1;  ///< how many of the scene's cube_K bodies stay in play; -1: its default
+    int cubes = -1; ///< how many of the scene's cube_K bodies stay in play; -1: its default
 };
 
 /**
@@ -24,8 +24,7 @@ class SceneLibrary
 public:
     static QStringList builtinNames();
     /** Compiles a built-in scene or an MJCF file; null with a one-line `error`. */
-    static MjModelPtr load(const QString &nameOrPath, const SceneOptions &options,
-                           QString *error);
+    static MjModelPtr load(const QString &nameOrPath, const SceneOptions &options, QString *error);
 };
 
 } // namespace semhap

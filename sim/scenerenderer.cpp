@@ -26,7 +26,7 @@ struct SceneRenderer::Private
     mjvCamera camera;
     mjrContext context;
     bool initialized = false;
-    std::array<std::vector<int>, 2> gripperBodies;  ///< bodies whose geoms show the overlay
+    std::array<std::vector<int>, 2> gripperBodies; ///< bodies whose geoms show the overlay
 
     Private()
     {
@@ -90,12 +90,13 @@ void SceneRenderer::render(unsigned int target, int width, int height)
     d->option.flags[mjVIS_CONTACTFORCE] = m_showForces;
 
     // mjv_updateScene only reads the state, but its signature is not const.
-    mjv_updateScene(m, const_cast<mjData *>(m_world.data()), &d->option, nullptr, &cam,
-                    mjCAT_ALL, &d->scene);
+    mjv_updateScene(m, const_cast<mjData *>(m_world.data()), &d->option, nullptr, &cam, mjCAT_ALL,
+                    &d->scene);
 
     // The overlay: tint the gripper's geoms; a warning shows over a confirmation.
     const std::array<std::array<double, 2>, 2> levels{
-        {{m_overlay.leftConfirm, m_overlay.leftWarn}, {m_overlay.rightConfirm, m_overlay.rightWarn}}};
+        {{m_overlay.leftConfirm, m_overlay.leftWarn},
+         {m_overlay.rightConfirm, m_overlay.rightWarn}}};
     for (int i = 0; i < d->scene.ngeom; ++i) {
         mjvGeom &geom = d->scene.geoms[i];
         if (geom.objtype != mjOBJ_GEOM)

@@ -66,7 +66,8 @@ void ScriptedOperator::act(World &world)
 std::array<double, 3> ScriptedOperator::placePoint(const World &world)
 {
     if (m_task == Task::BimanualSorting) {
-        const auto container = world.objectPosition(world.objectIndex(QStringLiteral("container")));
+        const auto container =
+            world.objectPosition(world.objectIndex(QStringLiteral("container")));
         return {container[0], container[1], container[2] + ContainerHeight + 0.11};
     }
     // Where the fewest cubes are: the free spot of a 4 x 4 grid farthest from any cube in the
@@ -141,7 +142,8 @@ void ScriptedOperator::planGrasp(World &world)
     world.setTarget(Gripper::Right, wrist);
     // People vary: this trial's pace and the grip it will squeeze with (N, both fingers).
     const double pace = m_random.uniform(0.85, 1.2);
-    const double force = std::clamp(m_random.normal(60.0, 40.0), 4.0, world.maxGrip(Gripper::Right));
+    const double force =
+        std::clamp(m_random.normal(60.0, 40.0), 4.0, world.maxGrip(Gripper::Right));
     m_right.move({pos[0], pos[1], CarryHeight}, 0.3 * pace);
     m_right.move({pos[0], pos[1], pos[2] + PadDrop}, 0.5 * pace);
     m_right.wait(0.1);
@@ -244,8 +246,8 @@ void ScriptedOperator::planHold(World &world)
         Region home;
         const auto pos = world.objectPosition(container);
         world.region(QStringLiteral("home"), &home);
-        const bool back = std::abs(pos[0] - home.center[0]) < 0.01
-                          && std::abs(pos[1] - home.center[1]) < 0.01;
+        const bool back =
+            std::abs(pos[0] - home.center[0]) < 0.01 && std::abs(pos[1] - home.center[1]) < 0.01;
         if (m_left.isIdle() && back && t - m_droppedAt > 2.0) {
             m_hold = Hold::Acquire;
             m_holdStart = t;
@@ -290,7 +292,7 @@ void ScriptedOperator::react(World &world, const Percept &percept)
 {
     const double grip = world.grip(percept.hand);
     if (grip <= 0)
-        return;  // nothing in hand
+        return; // nothing in hand
     HandPlan &plan = percept.hand == Gripper::Right ? m_right : m_left;
     switch (percept.cue) {
     case Cue::Confirmation:
@@ -319,8 +321,8 @@ QStringList operatorNames()
     return {QStringLiteral("scripted"), QStringLiteral("reactive")};
 }
 
-std::unique_ptr<Operator> makeOperator(const QString &name, const World &world,
-                                       std::uint64_t seed, double reactionTime, QString *error)
+std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
+                                       double reactionTime, QString *error)
 {
     if (!operatorNames().contains(name)) {
         *error = QStringLiteral("unknown operator '%1' (operators: %2)")
@@ -329,8 +331,8 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world,
     }
     Region region;
     ScriptedOperator::Task task = ScriptedOperator::Task::BoxAndBlock;
-    if (world.objectIndex(QStringLiteral("container")) >= 0 && world.hasGripper(Gripper::Left)
-        && world.region(QStringLiteral("home"), &region)) {
+    if (world.objectIndex(QStringLiteral("container")) >= 0 && world.hasGripper(Gripper::Left) &&
+        world.region(QStringLiteral("home"), &region)) {
         task = ScriptedOperator::Task::BimanualSorting;
     } else if (!world.region(QStringLiteral("place"), &region)) {
         *error = QStringLiteral("%1: the %2 operator needs sites 'pick' and 'place' (or a "

@@ -24,7 +24,11 @@ namespace semhap {
 class ScriptedOperator : public Operator
 {
 public:
-    enum class Task { BoxAndBlock, BimanualSorting };
+    enum class Task
+    {
+        BoxAndBlock,
+        BimanualSorting
+    };
 
     ScriptedOperator(Task task, std::uint64_t seed, bool reactive, double reactionTime);
 
@@ -33,7 +37,13 @@ public:
     void feel(Gripper hand, const Feeling &feeling, double t) override;
 
 private:
-    enum class Cue { Confirmation, Warning, Pressure, HighPressure };
+    enum class Cue
+    {
+        Confirmation,
+        Warning,
+        Pressure,
+        HighPressure
+    };
     struct Percept
     {
         double due;
@@ -65,10 +75,15 @@ private:
     HandPlan m_left{Gripper::Left};
     std::array<HandState, 2> m_hands{};
     std::deque<Percept> m_percepts;
-    int m_target = -1;  ///< the cube the right hand is reaching for, until it descends
+    int m_target = -1; ///< the cube the right hand is reaching for, until it descends
 
     // Bimanual: the holding hand's state.
-    enum class Hold { Acquire, Holding, Dropped } m_hold = Hold::Acquire;
+    enum class Hold
+    {
+        Acquire,
+        Holding,
+        Dropped
+    } m_hold = Hold::Acquire;
     double m_holdStart = 0.0;
     double m_holdGrip = 0.0;
     double m_slipAfter = 12.0;

@@ -21,11 +21,11 @@ struct RunOptions
     QString scene = QStringLiteral("box_and_block");
     SceneOptions sceneOptions;
     QString router = QStringLiteral("C3");
-    QStringList overrides;  ///< NODE.PARAM=VALUE
+    QStringList overrides; ///< NODE.PARAM=VALUE
     QString operatorName = QStringLiteral("scripted");
     std::uint64_t seed = 1;
-    double duration = 60.0;      ///< simulated seconds
-    double reactionTime = 0.25;  ///< the reactive operator's delay (s)
+    double duration = 60.0;     ///< simulated seconds
+    double reactionTime = 0.25; ///< the reactive operator's delay (s)
 };
 
 /** Receives a run's streams: contact frames besides the pipeline's events and frames. */

@@ -32,8 +32,7 @@ QJsonValue mean(double sum, double count)
 
 } // namespace
 
-TaskMonitor::TaskMonitor(const World &world)
-    : m_transferred(world.objects().size(), false)
+TaskMonitor::TaskMonitor(const World &world) : m_transferred(world.objects().size(), false)
 {
     m_hasPlace = world.region(QStringLiteral("place"), &m_place);
     m_container = world.objectIndex(QStringLiteral("container"));
@@ -119,9 +118,9 @@ void TaskMonitor::observeTransfers(const World &world)
         bool arrived = false;
         if (m_container >= 0) {
             // Inside the held container (within its walls, above its floor), swaying with it.
-            arrived = containerHeld && std::abs(pos[0] - container[0]) < ContainerHalf
-                      && std::abs(pos[1] - container[1]) < ContainerHalf
-                      && pos[2] > container[2] && pos[2] < container[2] + ContainerHeight;
+            arrived = containerHeld && std::abs(pos[0] - container[0]) < ContainerHalf &&
+                      std::abs(pos[1] - container[1]) < ContainerHalf && pos[2] > container[2] &&
+                      pos[2] < container[2] + ContainerHeight;
         } else if (m_hasPlace) {
             arrived = m_place.contains(pos) && speed(world.objectVelocity(int(i))) < AtRest;
         }

@@ -64,12 +64,12 @@ struct World::Private
     MjModelPtr model;
     MjDataPtr data;
     std::array<Hand, 2> hands;
-    std::array<Tip, 4> tips;            ///< gripper * 2 + finger (0 left, 1 right)
-    std::vector<int> tipOfGeom;         ///< per geom: its tip, or -1
-    std::vector<long> taxelStamp;       ///< per geom: the step it was last counted in
-    std::vector<int> objectOfBody;      ///< per body: its object index, or -1
-    std::vector<double> gripOnObject;   ///< per object: tip force this step
-    std::vector<int> overForceSteps;    ///< per object: steps in a row above its limit
+    std::array<Tip, 4> tips;          ///< gripper * 2 + finger (0 left, 1 right)
+    std::vector<int> tipOfGeom;       ///< per geom: its tip, or -1
+    std::vector<long> taxelStamp;     ///< per geom: the step it was last counted in
+    std::vector<int> objectOfBody;    ///< per body: its object index, or -1
+    std::vector<double> gripOnObject; ///< per object: tip force this step
+    std::vector<int> overForceSteps;  ///< per object: steps in a row above its limit
     long stepCount = 0;
     std::chrono::steady_clock::duration physics{};
 
@@ -105,8 +105,8 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         h.actuators[1] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.right"));
         for (int finger = 0; finger < 2; ++finger)
             h.slides[finger] = m->actuator_trnid[2 * h.actuators[finger]];
-        h.present = h.body >= 0 && target >= 0 && m->body_mocapid[target] >= 0
-                    && h.actuators[0] >= 0 && h.actuators[1] >= 0;
+        h.present = h.body >= 0 && target >= 0 && m->body_mocapid[target] >= 0 &&
+                    h.actuators[0] >= 0 && h.actuators[1] >= 0;
         if (h.body >= 0 && !h.present) {
             *error = QStringLiteral("%1: gripper '%2' needs a mocap body %2.target and "
                                     "actuators %2.grip.left, %2.grip.right (see sim/README.md)")
@@ -138,8 +138,8 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
     p.objectOfBody.assign(size_t(m->nbody), -1);
     for (int body = 1; body < m->nbody; ++body) {
         const int joint = m->body_jntadr[body];
-        if (m->body_parentid[body] != 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE
-            || body == p.hands[0].body || body == p.hands[1].body)
+        if (m->body_parentid[body] != 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE ||
+            body == p.hands[0].body || body == p.hands[1].body)
             continue;
         SceneObject object;
         object.name = name(m, mjOBJ_BODY, body);
@@ -207,14 +207,14 @@ void World::Private::extract(World &world, double t)
         const int tip1 = tipOfGeom[size_t(contact.geom1)];
         const int tip2 = tipOfGeom[size_t(contact.geom2)];
         if ((tip1 < 0) == (tip2 < 0))
-            continue;  // no fingertip, or two fingertips touching each other
+            continue; // no fingertip, or two fingertips touching each other
         const bool tipIsFirst = tip1 >= 0;
         Tip &tip = tips[size_t(tipIsFirst ? tip1 : tip2)];
         const int taxel = tipIsFirst ? contact.geom1 : contact.geom2;
         const int other = tipIsFirst ? contact.geom2 : contact.geom1;
         const int root = m->body_rootid[m->geom_bodyid[other]];
         if (root == tip.gripperBody)
-            continue;  // the gripper's own parts
+            continue; // the gripper's own parts
         const int object = objectOfBody[size_t(root)];
         const int actor = object >= 0 ? world.m_objects[size_t(object)].actor : -1;
 
@@ -274,8 +274,8 @@ void World::Private::extract(World &world, double t)
             int bestContacts = -1;
             for (int i = 0; i < tip.touchedCount; ++i) {
                 const Touch &touch = tip.touched[size_t(i)];
-                if (touch.force > bestForce
-                    || (touch.force == bestForce && touch.contacts > bestContacts)) {
+                if (touch.force > bestForce ||
+                    (touch.force == bestForce && touch.contacts > bestContacts)) {
                     bestForce = touch.force;
                     bestContacts = touch.contacts;
                     out.actor = touch.actor;
@@ -284,9 +284,9 @@ void World::Private::extract(World &world, double t)
             // Into the gripper frame: R^T · f (xmat is row-major, body to world).
             out.hasFxyz = true;
             for (int row = 0; row < 3; ++row) {
-                out.fxyz[size_t(row)] = rotation[row] * tip.fworld[0]
-                                        + rotation[3 + row] * tip.fworld[1]
-                                        + rotation[6 + row] * tip.fworld[2];
+                out.fxyz[size_t(row)] = rotation[row] * tip.fworld[0] +
+                                        rotation[3 + row] * tip.fworld[1] +
+                                        rotation[6 + row] * tip.fworld[2];
             }
         }
     }
@@ -385,8 +385,9 @@ double World::fingerTravel(Gripper gripper) const
 {
     const Private::Hand &h = d->hands[size_t(gripper)];
     const mjModel *m = d->model.get();
-    return (d->data->qpos[m->jnt_qposadr[h.slides[0]]] + d->data->qpos[m->jnt_qposadr[h.slides[1]]])
-           / 2;
+    return (d->data->qpos[m->jnt_qposadr[h.slides[0]]] +
+            d->data->qpos[m->jnt_qposadr[h.slides[1]]]) /
+           2;
 }
 
 Pose World::gripperPose(Gripper gripper) const

@@ -33,9 +33,9 @@ struct Region
 struct SceneObject
 {
     QString name;
-    int body = -1;              ///< MuJoCo body id
-    int actor = -1;             ///< ActorTable id, as contact frames name it
-    double fragileForce = 0.0;  ///< grip force that fractures it (N); 0: not fragile
+    int body = -1;             ///< MuJoCo body id
+    int actor = -1;            ///< ActorTable id, as contact frames name it
+    double fragileForce = 0.0; ///< grip force that fractures it (N); 0: not fragile
     bool broken = false;
 };
 
@@ -44,7 +44,7 @@ struct Fracture
 {
     double t = 0.0;
     int object = -1;
-    double force = 0.0;  ///< the grip force on it when it broke (N)
+    double force = 0.0; ///< the grip force on it when it broke (N)
 };
 
 /**

@@ -189,9 +189,9 @@ void TestPattern::errors_data()
                                            "name, got a string";
     QTest::newRow("unknown track key") << head + R"("tracks":[{"channels":["*"],"sustian":1}]})"
                                        << "FILE: /tracks/0: unknown key 'sustian'";
-    QTest::newRow("unknown signal type")
+    QTest::newRow("unknown waveform type")
         << head + R"("tracks":[{"channels":["*"]},{"channels":["*"],"sustain":{"type":"saw"}}]})"
-        << "FILE: /tracks/1/sustain/type: unknown signal type 'saw'";
+        << "FILE: /tracks/1/sustain/type: unknown waveform type 'saw'";
     QTest::newRow("unknown parameter")
         << head + R"("tracks":[{"channels":["*"],)"
                   R"("sustain":{"type":"pulses","rate":{"param":"speed"},"width":0.1}}]})"

@@ -131,11 +131,11 @@ void TestSimRun::runIsDeterministic()
     QList<QByteArray> outputs[2];
     for (int i = 0; i < 2; ++i) {
         const QString prefix = dir.filePath(QString::number(i));
-        const CliResult r = semhapRun({"run", "--scene", "box_and_block", "--router", "C3",
-                                       "--operator", "reactive", "--seed", "7", "--duration",
-                                       "8", "--frames", prefix + ".frames", "--events",
-                                       prefix + ".events", "--device-frames",
-                                       prefix + ".devices", "--metrics", prefix + ".json"});
+        const CliResult r =
+            semhapRun({"run", "--scene", "box_and_block", "--router", "C3", "--operator",
+                       "reactive", "--seed", "7", "--duration", "8", "--frames",
+                       prefix + ".frames", "--events", prefix + ".events", "--device-frames",
+                       prefix + ".devices", "--metrics", prefix + ".json"});
         QCOMPARE(r.code, 0);
         for (const char *stream : {".frames", ".events", ".devices"})
             outputs[i].append(readAll(prefix + stream));
@@ -158,7 +158,7 @@ void TestSimRun::runIsDeterministic()
     while (reader.next(&frame))
         ++count;
     QCOMPARE(reader.rejectedCount(), 0);
-    QCOMPARE(count, 4000);  // 8 s at 2 ms, the right gripper only
+    QCOMPARE(count, 4000); // 8 s at 2 ms, the right gripper only
 }
 
 void TestSimRun::containerSlipsWithin10To15Seconds_data()
@@ -202,9 +202,9 @@ void TestSimRun::containerSlipsWithin10To15Seconds()
 
 void TestSimRun::commandLine()
 {
-    const CliResult r = semhapRun({"run", "--scene", "box_and_block", "--router", "C3",
-                                   "--operator", "scripted", "--duration", "12", "--metrics",
-                                   "-"});
+    const CliResult r =
+        semhapRun({"run", "--scene", "box_and_block", "--router", "C3", "--operator", "scripted",
+                   "--duration", "12", "--metrics", "-"});
     QCOMPARE(r.code, 0);
     QCOMPARE(r.err, QByteArray());
     const QJsonObject m = QJsonDocument::fromJson(r.out).object();
@@ -228,8 +228,8 @@ void TestSimRun::commandLineErrors_data()
         << base + QStringList{"--scene", "kitchen"} << 1
         << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block)";
     QTest::newRow("unknown operator")
-        << QStringList{"run", "--scene", "box_and_block", "--router", "C3", "--operator",
-                       "robot", "--duration", "1"}
+        << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
+                       "--operator", "robot",   "--duration",    "1"}
         << 1 << "unknown operator 'robot' (operators: scripted, reactive)";
     QTest::newRow("bad seed") << base + QStringList{"--scene", "box_and_block", "--seed", "1.5"}
                               << 2 << "semhap run: --seed must be a whole number >= 0";
@@ -251,9 +251,9 @@ void TestSimRun::commandLineErrors()
 void TestSimRun::compareShardsMergeToTheWholeGrid()
 {
     QTemporaryDir dir;
-    const QStringList grid{"compare", "--scene", "box_and_block", "--routers", "none,C3",
-                           "--operator", "scripted", "--seeds", "3", "--duration", "2",
-                           "--jobs", "2"};
+    const QStringList grid{
+        "compare", "--scene", "box_and_block", "--routers", "none,C3", "--operator", "scripted",
+        "--seeds", "3",       "--duration",    "2",         "--jobs",  "2"};
     const CliResult whole = semhapRun(grid + QStringList{"--csv", dir.filePath("all.csv")});
     QCOMPARE(whole.code, 0);
     QVERIFY(whole.out.startsWith("metric"));
@@ -261,10 +261,10 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
     QStringList parts;
     for (int i = 1; i <= 3; ++i) {
         parts.append(dir.filePath(QString("part%1.csv").arg(i)));
-        QCOMPARE(semhapRun(grid + QStringList{"--shard", QString("%1/3").arg(i), "--csv",
-                                              parts.last()})
-                     .code,
-                 0);
+        QCOMPARE(
+            semhapRun(grid + QStringList{"--shard", QString("%1/3").arg(i), "--csv", parts.last()})
+                .code,
+            0);
     }
     const CliResult merged =
         semhapRun(QStringList{"compare", "--merge", "--csv", dir.filePath("merged.csv")} + parts);

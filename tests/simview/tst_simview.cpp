@@ -22,8 +22,8 @@ int pixelsNear(const QImage &image, QColor colour)
     for (int y = 0; y < image.height(); ++y) {
         for (int x = 0; x < image.width(); ++x) {
             const QColor c = image.pixelColor(x, y);
-            if (std::abs(c.hueF() - colour.hueF()) < 0.04 && c.saturationF() > 0.6
-                && c.valueF() > 0.25)
+            if (std::abs(c.hueF() - colour.hueF()) < 0.04 && c.saturationF() > 0.6 &&
+                c.valueF() > 0.25)
                 ++count;
         }
     }
@@ -54,7 +54,7 @@ private:
 void TestSimView::initTestCase()
 {
     QSurfaceFormat format;
-    format.setProfile(QSurfaceFormat::CompatibilityProfile);  // MuJoCo needs it
+    format.setProfile(QSurfaceFormat::CompatibilityProfile); // MuJoCo needs it
     format.setDepthBufferSize(24);
     m_surface.setFormat(format);
     m_surface.create();

@@ -31,7 +31,8 @@ void moveTo(World &world, Gripper g, const std::array<double, 3> &to, double sec
     for (int k = 1; k <= steps; ++k) {
         Pose p = from;
         for (int i = 0; i < 3; ++i)
-            p.pos[size_t(i)] = from.pos[size_t(i)] + (to[size_t(i)] - from.pos[size_t(i)]) * k / steps;
+            p.pos[size_t(i)] =
+                from.pos[size_t(i)] + (to[size_t(i)] - from.pos[size_t(i)]) * k / steps;
         world.setTarget(g, p);
         world.step();
     }
@@ -131,8 +132,8 @@ void TestWorld::badScenes_data()
     QTest::newRow("unknown name") << "box_and_blocks" << -1
                                   << "box_and_blocks: no such scene (scenes: bimanual_sorting, "
                                      "box_and_block)";
-    QTest::newRow("too many cubes") << "box_and_block" << 30
-                                    << "box_and_block: asked for 30 cubes, the scene has 24";
+    QTest::newRow("too many cubes")
+        << "box_and_block" << 30 << "box_and_block: asked for 30 cubes, the scene has 24";
     QTest::newRow("missing file") << "/nonexistent/scene.xml" << -1
                                   << "/nonexistent/scene.xml: cannot read: No such file or "
                                      "directory";
@@ -162,8 +163,8 @@ void TestWorld::squeezeReportsForce()
     std::unique_ptr<World> world = loadWorld("box_and_block", 1);
     graspCube(*world, force);
     const ContactFrame &frame = world->frame(Gripper::Right);
-    qDebug() << "F" << frame.totalForce() << "n" << frame.left.n << frame.right.n
-             << "actor" << frame.left.actor << frame.right.actor;
+    qDebug() << "F" << frame.totalForce() << "n" << frame.left.n << frame.right.n << "actor"
+             << frame.left.actor << frame.right.actor;
     QVERIFY(std::abs(frame.totalForce() - force) < 0.05 * force);
     QCOMPARE(frame.left.n, 16);
     QCOMPARE(frame.right.n, 16);

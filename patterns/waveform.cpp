@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "signal.h"
+#include "waveform.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -109,17 +109,17 @@ void insertNumber(QJsonObject &object, const QString &key, const Number &number,
         object.insert(key, number.toJson(params));
 }
 
-void Signal::reset(double *state) const
+void Waveform::reset(double *state) const
 {
     std::fill(state + m_stateOffset, state + m_stateOffset + ownStateSize(), 0.0);
 }
 
-double Signal::duration(const double *) const
+double Waveform::duration(const double *) const
 {
     return Forever;
 }
 
-void Signal::assignState(int &next)
+void Waveform::assignState(int &next)
 {
     m_stateOffset = next;
     next += ownStateSize();

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The signal algebra: samples of every node at chosen times, oscillator edges and phase
 // continuity, curves, JSON round trips and parse errors.
-#include "signal.h"
-#include "signalparser.h"
+#include "waveform.h"
+#include "waveformparser.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -36,7 +36,7 @@ public:
     {
         for (auto it = params.begin(); it != params.end(); ++it)
             m_table.declare(it.key(), it.value().toDouble());
-        SignalParser parser(m_table, QStringLiteral("test.json"));
+        WaveformParser parser(m_table, QStringLiteral("test.json"));
         m_signal = parser.parse(json(text), QString());
         if (!m_signal)
             qFatal("%s", qPrintable(parser.error().toString()));
@@ -49,7 +49,7 @@ public:
 
     double at(double t)
     {
-        SignalContext ctx;
+        WaveformContext ctx;
         ctx.t = t;
         ctx.dt = m_started ? t - m_lastT : 0.0;
         ctx.from = from;
@@ -72,7 +72,7 @@ public:
 
 private:
     ParamTable m_table;
-    SignalPtr m_signal;
+    WaveformPtr m_signal;
     std::vector<double> m_state;
     std::vector<double> m_params;
     double m_lastT = 0.0;
@@ -86,7 +86,7 @@ bool near(double a, double b)
 
 } // namespace
 
-class TestSignal : public QObject
+class TestWaveform : public QObject
 {
     Q_OBJECT
 
@@ -109,7 +109,7 @@ private slots:
     void errors();
 };
 
-void TestSignal::samples_data()
+void TestWaveform::samples_data()
 {
     QTest::addColumn<QByteArray>("signal");
     QTest::addColumn<QVariantMap>("params");
@@ -195,7 +195,7 @@ void TestSignal::samples_data()
         << none << 0.0 << 0.0 << Samples{{0, 0.2}, {0.5, 0.5}, {1, 0.8}};
 }
 
-void TestSignal::samples()
+void TestWaveform::samples()
 {
     QFETCH(QByteArray, signal);
     QFETCH(QVariantMap, params);
@@ -214,12 +214,12 @@ void TestSignal::samples()
     }
 }
 
-void TestSignal::durations_data()
+void TestWaveform::durations_data()
 {
     QTest::addColumn<QByteArray>("signal");
     QTest::addColumn<double>("duration");
 
-    const double endless = Signal::Forever;
+    const double endless = Waveform::Forever;
     QTest::newRow("const") << QByteArray(R"({"type":"const","value":1})") << endless;
     QTest::newRow("ramp") << QByteArray(R"({"type":"ramp","to":1,"time":0.5})") << 0.5;
     QTest::newRow("ramp bound to intensity")
@@ -241,14 +241,14 @@ void TestSignal::durations_data()
         << 0.5;
 }
 
-void TestSignal::durations()
+void TestWaveform::durations()
 {
     QFETCH(QByteArray, signal);
     QFETCH(double, duration);
     QCOMPARE(Player(signal.constData()).duration(), duration);
 }
 
-void TestSignal::curve_data()
+void TestWaveform::curve_data()
 {
     QTest::addColumn<int>("kind"); // 0 identity, 1 linear 18x+2, 2 points
     QTest::addColumn<double>("x");
@@ -264,7 +264,7 @@ void TestSignal::curve_data()
     QTest::newRow("points above the last") << 2 << 3.0 << 20.0;
 }
 
-void TestSignal::curve()
+void TestWaveform::curve()
 {
     QFETCH(int, kind);
     QFETCH(double, x);
@@ -275,7 +275,7 @@ void TestSignal::curve()
     QCOMPARE(curves[kind].map(x), y);
 }
 
-void TestSignal::squareEdges_data()
+void TestWaveform::squareEdges_data()
 {
     QTest::addColumn<double>("duty");
     QTest::addColumn<int>("highSamples"); // per 200-sample period at 1 kHz
@@ -286,7 +286,7 @@ void TestSignal::squareEdges_data()
     QTest::newRow("duty 1") << 1.0 << 200;
 }
 
-void TestSignal::squareEdges()
+void TestWaveform::squareEdges()
 {
     QFETCH(double, duty);
     QFETCH(int, highSamples);
@@ -300,7 +300,7 @@ void TestSignal::squareEdges()
     }
 }
 
-void TestSignal::pulseCount_data()
+void TestWaveform::pulseCount_data()
 {
     QTest::addColumn<double>("intensity");
     QTest::addColumn<int>("pulses");
@@ -311,7 +311,7 @@ void TestSignal::pulseCount_data()
     QTest::newRow("intensity 1 (20 Hz)") << 1.0 << 60;
 }
 
-void TestSignal::pulseCount()
+void TestWaveform::pulseCount()
 {
     QFETCH(double, intensity);
     QFETCH(int, pulses);
@@ -334,7 +334,7 @@ void TestSignal::pulseCount()
         QCOMPARE(length, 25);
 }
 
-void TestSignal::pulsePhaseContinuity_data()
+void TestWaveform::pulsePhaseContinuity_data()
 {
     QTest::addColumn<double>("before");
     QTest::addColumn<double>("after");
@@ -349,7 +349,7 @@ void TestSignal::pulsePhaseContinuity_data()
     QTest::newRow("slowing down inside a pulse") << 1.0 << 0.0 << 10 << QList<int>{0, 410, 910};
 }
 
-void TestSignal::pulsePhaseContinuity()
+void TestWaveform::pulsePhaseContinuity()
 {
     QFETCH(double, before);
     QFETCH(double, after);
@@ -379,7 +379,7 @@ void TestSignal::pulsePhaseContinuity()
         QCOMPARE(length, 25); // the width is in seconds, whatever the rate did
 }
 
-void TestSignal::roundTrip_data()
+void TestWaveform::roundTrip_data()
 {
     QTest::addColumn<QByteArray>("signal");
 
@@ -425,34 +425,34 @@ void TestSignal::roundTrip_data()
         R"({"type":"clip","in":{"type":"const","value":2},"min":-1,"max":0.5})");
 }
 
-void TestSignal::roundTrip()
+void TestWaveform::roundTrip()
 {
     QFETCH(QByteArray, signal);
 
     ParamTable table;
     table.declare(QStringLiteral("ref"), 120);
-    SignalParser parser(table, QStringLiteral("test.json"));
+    WaveformParser parser(table, QStringLiteral("test.json"));
     const QJsonValue source = json(signal.constData());
-    SignalPtr parsed = parser.parse(source, QString());
+    WaveformPtr parsed = parser.parse(source, QString());
     QVERIFY2(parsed, qPrintable(parser.error().toString()));
     const QJsonValue written = parsed->toJson(table);
     QCOMPARE(written, source);
-    SignalPtr reparsed = parser.parse(written, QString());
+    WaveformPtr reparsed = parser.parse(written, QString());
     QVERIFY(reparsed);
     QCOMPARE(reparsed->toJson(table), written);
 }
 
-void TestSignal::errors_data()
+void TestWaveform::errors_data()
 {
     QTest::addColumn<QByteArray>("signal");
     QTest::addColumn<QString>("error");
 
-    QTest::newRow("not an object")
-        << QByteArray(R"({"s":[1]})") << "test.json: /s/0: expected a signal object, got a number";
+    QTest::newRow("not an object") << QByteArray(R"({"s":[1]})")
+                                   << "test.json: /s/0: expected a waveform object, got a number";
     QTest::newRow("no type") << QByteArray(R"({"s":{"value":1}})")
                              << "test.json: /s: missing key 'type'";
     QTest::newRow("unknown type") << QByteArray(R"({"s":{"type":"saw","freq":1}})")
-                                  << "test.json: /s/type: unknown signal type 'saw'";
+                                  << "test.json: /s/type: unknown waveform type 'saw'";
     QTest::newRow("unknown key") << QByteArray(R"({"s":{"type":"square","frq":1}})")
                                  << "test.json: /s: unknown key 'frq'";
     QTest::newRow("missing key") << QByteArray(R"({"s":{"type":"ramp","to":1}})")
@@ -482,11 +482,11 @@ void TestSignal::errors_data()
         << QByteArray(R"({"s":{"type":"keyframes","points":[[1,0,2]]}})")
         << "test.json: /s/points/0: expected a pair [x, y]";
     QTest::newRow("empty of") << QByteArray(R"({"s":{"type":"sum","of":[]}})")
-                              << "test.json: /s/of: expected at least one signal";
+                              << "test.json: /s/of: expected at least one waveform";
     QTest::newRow("endless step in a sequence")
         << QByteArray(R"({"s":{"type":"sequence","of":[{"type":"const","value":1},)"
                       R"({"type":"const","value":0}]}})")
-        << "test.json: /s/of/0: only the last signal "
+        << "test.json: /s/of/0: only the last waveform "
            "of a sequence may last forever";
     QTest::newRow("nested error")
         << QByteArray(R"({"s":{"type":"clip","in":{"type":"sum","of":[{"type":"sine"}]}}})")
@@ -505,13 +505,13 @@ void TestSignal::errors_data()
         << "test.json: /s/max: must not be below min";
 }
 
-void TestSignal::errors()
+void TestWaveform::errors()
 {
     QFETCH(QByteArray, signal);
     QFETCH(QString, error);
 
     const ParamTable table;
-    SignalParser parser(table, QStringLiteral("test.json"));
+    WaveformParser parser(table, QStringLiteral("test.json"));
     const QJsonObject document = json(signal.constData()).toObject();
     const QJsonValue s = document.value(QLatin1String("s"));
     const QJsonValue input = s.isArray() ? s.toArray().at(0) : s;
@@ -520,5 +520,5 @@ void TestSignal::errors()
     QCOMPARE(parser.error().toString(), error);
 }
 
-QTEST_GUILESS_MAIN(TestSignal)
-#include "tst_signal.moc"
+QTEST_GUILESS_MAIN(TestWaveform)
+#include "tst_waveform.moc"

@@ -65,7 +65,7 @@ private:
 };
 
 /**
- * A numeric parameter of a signal: a constant, or a live parameter through a curve.
+ * A numeric parameter of a waveform: a constant, or a live parameter through a curve.
  * JSON: `1.5`, `{"param": "intensity"}`, `{"param": "intensity", "gain": 18, "offset": 2}`
  * or `{"param": "intensity", "curve": [[0, 2], [1, 20]]}`.
  */
@@ -82,7 +82,7 @@ public:
     bool isConstant() const { return m_param < 0; }
     int param() const { return m_param; }
     const Curve &curve() const { return m_curve; }
-    /** The JSON form the signal parser reads back (a number or a `{"param": …}` object). */
+    /** The JSON form the waveform parser reads back (a number or a `{"param": …}` object). */
     QJsonValue toJson(const ParamTable &params) const;
 
 private:
@@ -95,35 +95,35 @@ private:
 void insertNumber(QJsonObject &object, const QString &key, const Number &number,
                   const ParamTable &params, double defaultValue);
 
-/** Everything a signal needs to produce one sample. */
-struct SignalContext
+/** Everything a waveform needs to produce one sample. */
+struct WaveformContext
 {
-    double t = 0.0;                 ///< seconds since this signal started
+    double t = 0.0;                 ///< seconds since this waveform started
     double dt = 0.0;                ///< seconds since the previous sample, 0 on the first
-    double from = 0.0;              ///< the track's value when this signal started
+    double from = 0.0;              ///< the track's value when this waveform started
     double peak = 0.0;              ///< the track's highest value from the last begin
-                                    ///< to the start of this signal
+                                    ///< to the start of this waveform
     const double *params = nullptr; ///< live parameter values, indexed as the ParamTable
-    double *state = nullptr;        ///< the voice's state slots for the whole signal tree
+    double *state = nullptr;        ///< the voice's state slots for the whole waveform tree
 };
 
 /**
- * A waveform as a value: samples `value(t)` from a context. Signals are immutable and
+ * A waveform as a value: samples `value(t)` from a context. Waveforms are immutable and
  * shared; whatever changes while one plays (oscillator phase, the current step of a
  * sequence) lives in the voice's state slots, so sampling never allocates.
  */
-class Signal
+class Waveform
 {
 public:
-    virtual ~Signal() = default;
+    virtual ~Waveform() = default;
 
     /** The type name used in JSON (`"const"`, `"ramp"`, …). */
     virtual QString type() const = 0;
     /** One sample at ctx.t; advances the state by ctx.dt. */
-    virtual double sample(const SignalContext &ctx) const = 0;
-    /** Puts this node's state (and its children's) back to the start of the signal. */
+    virtual double sample(const WaveformContext &ctx) const = 0;
+    /** Puts this node's state (and its children's) back to the start of the waveform. */
     virtual void reset(double *state) const;
-    /** Length in seconds under the given parameters; infinity for signals that never end. */
+    /** Length in seconds under the given parameters; infinity for waveforms that never end. */
     virtual double duration(const double *params) const;
     /** Serialises to the JSON form the parser reads. */
     virtual QJsonValue toJson(const ParamTable &params) const = 0;
@@ -146,6 +146,6 @@ protected:
     int m_stateOffset = 0;
 };
 
-using SignalPtr = std::unique_ptr<Signal>;
+using WaveformPtr = std::unique_ptr<Waveform>;
 
 } // namespace semhap

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "signalparser.h"
+#include "waveformparser.h"
 
 #include "combinators.h"
 #include "oscillators.h"
@@ -11,12 +11,12 @@
 
 namespace semhap {
 
-SignalParser::SignalParser(const ParamTable &params, const QString &file)
+WaveformParser::WaveformParser(const ParamTable &params, const QString &file)
     : JsonReader(file), m_params(params)
 {}
 
-bool SignalParser::pairs(const QJsonValue &json, const QString &pointer,
-                         std::vector<std::pair<double, double>> *out)
+bool WaveformParser::pairs(const QJsonValue &json, const QString &pointer,
+                           std::vector<std::pair<double, double>> *out)
 {
     if (!json.isArray())
         return fail(pointer, QStringLiteral("expected an array, got ") + jsonTypeName(json));
@@ -40,8 +40,8 @@ bool SignalParser::pairs(const QJsonValue &json, const QString &pointer,
     return true;
 }
 
-bool SignalParser::bound(const QJsonObject &object, const QString &pointer, QLatin1String nameKey,
-                         Number *out)
+bool WaveformParser::bound(const QJsonObject &object, const QString &pointer,
+                           QLatin1String nameKey, Number *out)
 {
     const QJsonValue name = object.value(nameKey);
     if (!name.isString()) {
@@ -90,7 +90,7 @@ bool SignalParser::bound(const QJsonObject &object, const QString &pointer, QLat
     return true;
 }
 
-bool SignalParser::parseNumber(const QJsonValue &json, const QString &pointer, Number *out)
+bool WaveformParser::parseNumber(const QJsonValue &json, const QString &pointer, Number *out)
 {
     if (json.isDouble()) {
         double value = 0.0;
@@ -112,7 +112,7 @@ bool SignalParser::parseNumber(const QJsonValue &json, const QString &pointer, N
     return bound(object, pointer, QLatin1String("param"), out);
 }
 
-bool SignalParser::checkRange(const Number &number, const QString &pointer, Range range)
+bool WaveformParser::checkRange(const Number &number, const QString &pointer, Range range)
 {
     if (!number.isConstant())
         return true;
@@ -135,16 +135,17 @@ bool SignalParser::checkRange(const Number &number, const QString &pointer, Rang
     return true;
 }
 
-bool SignalParser::number(const QJsonObject &object, const QString &pointer, QLatin1String key,
-                          Range range, Number *out)
+bool WaveformParser::number(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                            Range range, Number *out)
 {
     const QString at = jsonPointerChild(pointer, key);
     return require(object, pointer, key) && parseNumber(object.value(key), at, out) &&
            checkRange(*out, at, range);
 }
 
-bool SignalParser::optionalNumber(const QJsonObject &object, const QString &pointer,
-                                  QLatin1String key, Range range, double defaultValue, Number *out)
+bool WaveformParser::optionalNumber(const QJsonObject &object, const QString &pointer,
+                                    QLatin1String key, Range range, double defaultValue,
+                                    Number *out)
 {
     if (!object.contains(key)) {
         *out = Number(defaultValue);
@@ -153,7 +154,7 @@ bool SignalParser::optionalNumber(const QJsonObject &object, const QString &poin
     return number(object, pointer, key, range, out);
 }
 
-bool SignalParser::startValue(const QJsonObject &object, const QString &pointer, StartValue *out)
+bool WaveformParser::startValue(const QJsonObject &object, const QString &pointer, StartValue *out)
 {
     const QLatin1String key("from");
     const QJsonValue from = object.value(key);
@@ -177,8 +178,8 @@ bool SignalParser::startValue(const QJsonObject &object, const QString &pointer,
     return true;
 }
 
-bool SignalParser::children(const QJsonObject &object, const QString &pointer,
-                            std::vector<SignalPtr> *out)
+bool WaveformParser::children(const QJsonObject &object, const QString &pointer,
+                              std::vector<WaveformPtr> *out)
 {
     const QLatin1String key("of");
     if (!checkKeys(object, pointer, {QLatin1String("type"), key}) ||
@@ -190,9 +191,9 @@ bool SignalParser::children(const QJsonObject &object, const QString &pointer,
         return fail(at, QStringLiteral("expected an array, got ") + jsonTypeName(of));
     const QJsonArray array = of.toArray();
     if (array.isEmpty())
-        return fail(at, QStringLiteral("expected at least one signal"));
+        return fail(at, QStringLiteral("expected at least one waveform"));
     for (int i = 0; i < array.size(); ++i) {
-        SignalPtr child = parse(array.at(i), jsonPointerChild(at, i));
+        WaveformPtr child = parse(array.at(i), jsonPointerChild(at, i));
         if (!child)
             return false;
         out->push_back(std::move(child));
@@ -200,26 +201,26 @@ bool SignalParser::children(const QJsonObject &object, const QString &pointer,
     return true;
 }
 
-SignalPtr SignalParser::parse(const QJsonValue &json, const QString &pointer)
+WaveformPtr WaveformParser::parse(const QJsonValue &json, const QString &pointer)
 {
-    using Parse = SignalPtr (SignalParser::*)(const QJsonObject &, const QString &);
+    using Parse = WaveformPtr (WaveformParser::*)(const QJsonObject &, const QString &);
     static const std::pair<QLatin1String, Parse> parsers[] = {
-        {QLatin1String("const"), &SignalParser::parseConst},
-        {QLatin1String("param"), &SignalParser::parseParam},
-        {QLatin1String("ramp"), &SignalParser::parseRamp},
-        {QLatin1String("keyframes"), &SignalParser::parseKeyframes},
-        {QLatin1String("sine"), &SignalParser::parseSine},
-        {QLatin1String("square"), &SignalParser::parseSquare},
-        {QLatin1String("pulses"), &SignalParser::parsePulses},
-        {QLatin1String("sum"), &SignalParser::parseSum},
-        {QLatin1String("product"), &SignalParser::parseProduct},
-        {QLatin1String("sequence"), &SignalParser::parseSequence},
-        {QLatin1String("scale"), &SignalParser::parseScale},
-        {QLatin1String("clip"), &SignalParser::parseClip},
+        {QLatin1String("const"), &WaveformParser::parseConst},
+        {QLatin1String("param"), &WaveformParser::parseParam},
+        {QLatin1String("ramp"), &WaveformParser::parseRamp},
+        {QLatin1String("keyframes"), &WaveformParser::parseKeyframes},
+        {QLatin1String("sine"), &WaveformParser::parseSine},
+        {QLatin1String("square"), &WaveformParser::parseSquare},
+        {QLatin1String("pulses"), &WaveformParser::parsePulses},
+        {QLatin1String("sum"), &WaveformParser::parseSum},
+        {QLatin1String("product"), &WaveformParser::parseProduct},
+        {QLatin1String("sequence"), &WaveformParser::parseSequence},
+        {QLatin1String("scale"), &WaveformParser::parseScale},
+        {QLatin1String("clip"), &WaveformParser::parseClip},
     };
 
     if (!json.isObject()) {
-        fail(pointer, QStringLiteral("expected a signal object, got ") + jsonTypeName(json));
+        fail(pointer, QStringLiteral("expected a waveform object, got ") + jsonTypeName(json));
         return nullptr;
     }
     const QJsonObject object = json.toObject();
@@ -236,21 +237,21 @@ SignalPtr SignalParser::parse(const QJsonValue &json, const QString &pointer)
         if (type.toString() == name)
             return (this->*parser)(object, pointer);
     }
-    fail(typePointer, QStringLiteral("unknown signal type ") + quoted(type.toString()));
+    fail(typePointer, QStringLiteral("unknown waveform type ") + quoted(type.toString()));
     return nullptr;
 }
 
-SignalPtr SignalParser::parseConst(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseConst(const QJsonObject &object, const QString &pointer)
 {
     Number value;
     if (!checkKeys(object, pointer, {QLatin1String("type"), QLatin1String("value")}) ||
         !number(object, pointer, QLatin1String("value"), Range::Any, &value)) {
         return nullptr;
     }
-    return std::make_unique<ConstSignal>(value);
+    return std::make_unique<ConstWaveform>(value);
 }
 
-SignalPtr SignalParser::parseParam(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseParam(const QJsonObject &object, const QString &pointer)
 {
     Number value;
     if (!checkKeys(object, pointer,
@@ -260,10 +261,10 @@ SignalPtr SignalParser::parseParam(const QJsonObject &object, const QString &poi
         !bound(object, pointer, QLatin1String("name"), &value)) {
         return nullptr;
     }
-    return std::make_unique<ParamSignal>(value);
+    return std::make_unique<ParamWaveform>(value);
 }
 
-SignalPtr SignalParser::parseRamp(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseRamp(const QJsonObject &object, const QString &pointer)
 {
     Number to;
     Number time;
@@ -276,10 +277,10 @@ SignalPtr SignalParser::parseRamp(const QJsonObject &object, const QString &poin
         !startValue(object, pointer, &from)) {
         return nullptr;
     }
-    return std::make_unique<RampSignal>(to, time, from);
+    return std::make_unique<RampWaveform>(to, time, from);
 }
 
-SignalPtr SignalParser::parseKeyframes(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseKeyframes(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String key("points");
     std::vector<std::pair<double, double>> points;
@@ -303,10 +304,10 @@ SignalPtr SignalParser::parseKeyframes(const QJsonObject &object, const QString 
             return nullptr;
         }
     }
-    return std::make_unique<KeyframesSignal>(std::move(points), from);
+    return std::make_unique<KeyframesWaveform>(std::move(points), from);
 }
 
-SignalPtr SignalParser::parseSine(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseSine(const QJsonObject &object, const QString &pointer)
 {
     Number freq;
     Number amp;
@@ -321,10 +322,10 @@ SignalPtr SignalParser::parseSine(const QJsonObject &object, const QString &poin
         !optionalNumber(object, pointer, QLatin1String("phase"), Range::Any, 0.0, &phase)) {
         return nullptr;
     }
-    return std::make_unique<SineSignal>(freq, amp, offset, phase);
+    return std::make_unique<SineWaveform>(freq, amp, offset, phase);
 }
 
-SignalPtr SignalParser::parseSquare(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseSquare(const QJsonObject &object, const QString &pointer)
 {
     Number freq;
     Number duty;
@@ -339,10 +340,10 @@ SignalPtr SignalParser::parseSquare(const QJsonObject &object, const QString &po
         !optionalNumber(object, pointer, QLatin1String("low"), Range::Any, 0.0, &low)) {
         return nullptr;
     }
-    return std::make_unique<SquareSignal>(freq, duty, high, low);
+    return std::make_unique<SquareWaveform>(freq, duty, high, low);
 }
 
-SignalPtr SignalParser::parsePulses(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parsePulses(const QJsonObject &object, const QString &pointer)
 {
     Number rate;
     Number width;
@@ -355,41 +356,41 @@ SignalPtr SignalParser::parsePulses(const QJsonObject &object, const QString &po
         !optionalNumber(object, pointer, QLatin1String("amp"), Range::Any, 1.0, &amp)) {
         return nullptr;
     }
-    return std::make_unique<PulsesSignal>(rate, width, amp);
+    return std::make_unique<PulsesWaveform>(rate, width, amp);
 }
 
-SignalPtr SignalParser::parseSum(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseSum(const QJsonObject &object, const QString &pointer)
 {
-    std::vector<SignalPtr> of;
+    std::vector<WaveformPtr> of;
     if (!children(object, pointer, &of))
         return nullptr;
-    return std::make_unique<SumSignal>(std::move(of));
+    return std::make_unique<SumWaveform>(std::move(of));
 }
 
-SignalPtr SignalParser::parseProduct(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseProduct(const QJsonObject &object, const QString &pointer)
 {
-    std::vector<SignalPtr> of;
+    std::vector<WaveformPtr> of;
     if (!children(object, pointer, &of))
         return nullptr;
-    return std::make_unique<ProductSignal>(std::move(of));
+    return std::make_unique<ProductWaveform>(std::move(of));
 }
 
-SignalPtr SignalParser::parseSequence(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseSequence(const QJsonObject &object, const QString &pointer)
 {
-    std::vector<SignalPtr> of;
+    std::vector<WaveformPtr> of;
     if (!children(object, pointer, &of))
         return nullptr;
     for (size_t i = 0; i + 1 < of.size(); ++i) {
         if (std::isinf(of[i]->duration(m_params.defaults().data()))) {
             fail(jsonPointerChild(jsonPointerChild(pointer, QStringLiteral("of")), int(i)),
-                 QStringLiteral("only the last signal of a sequence may last forever"));
+                 QStringLiteral("only the last waveform of a sequence may last forever"));
             return nullptr;
         }
     }
-    return std::make_unique<SequenceSignal>(std::move(of));
+    return std::make_unique<SequenceWaveform>(std::move(of));
 }
 
-SignalPtr SignalParser::parseScale(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseScale(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String inKey("in");
     Number gain;
@@ -404,13 +405,13 @@ SignalPtr SignalParser::parseScale(const QJsonObject &object, const QString &poi
         !optionalNumber(object, pointer, QLatin1String("offset"), Range::Any, 0.0, &offset)) {
         return nullptr;
     }
-    SignalPtr in = parse(object.value(inKey), jsonPointerChild(pointer, inKey));
+    WaveformPtr in = parse(object.value(inKey), jsonPointerChild(pointer, inKey));
     if (!in)
         return nullptr;
-    return std::make_unique<ScaleSignal>(std::move(in), gain, div, offset);
+    return std::make_unique<ScaleWaveform>(std::move(in), gain, div, offset);
 }
 
-SignalPtr SignalParser::parseClip(const QJsonObject &object, const QString &pointer)
+WaveformPtr WaveformParser::parseClip(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String inKey("in");
     Number min;
@@ -427,10 +428,10 @@ SignalPtr SignalParser::parseClip(const QJsonObject &object, const QString &poin
              QStringLiteral("must not be below min"));
         return nullptr;
     }
-    SignalPtr in = parse(object.value(inKey), jsonPointerChild(pointer, inKey));
+    WaveformPtr in = parse(object.value(inKey), jsonPointerChild(pointer, inKey));
     if (!in)
         return nullptr;
-    return std::make_unique<ClipSignal>(std::move(in), min, max);
+    return std::make_unique<ClipWaveform>(std::move(in), min, max);
 }
 
 } // namespace semhap
