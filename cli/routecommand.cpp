@@ -2,6 +2,7 @@
 #include "routecommand.h"
 
 #include "contactframereader.h"
+#include "devicebindings.h"
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
@@ -110,19 +111,11 @@ int RouteCommand::execute(const QCommandLineParser &parser)
         return ExitInvalidInput;
 
     DeviceManager devices;
-    for (const QString &binding : parser.values(QStringLiteral("bind"))) {
-        QString name;
-        QString uri;
-        QString reason;
-        if (!DeviceManager::parseBinding(binding, &name, &uri, &reason))
-            return usageError(reason);
-        const int device = router->player().deviceIndex(name);
-        if (device < 0)
-            return inputError(tr("--bind %1: the router has no device '%2'").arg(binding, name));
-        devices.bind(name, uri,
-                     std::make_shared<const DeviceModel>(router->player().deviceModel(device)),
-                     &reason);
-    }
+    QString message;
+    bool usage = false;
+    if (!bindDevices(parser.values(QStringLiteral("bind")), router->player(), devices, &message,
+                     &usage))
+        return usage ? usageError(message) : inputError(message);
     const bool realTime = !devices.boundNames().isEmpty();
     if (realTime) {
         EmergencyStop::install();

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "runcommand.h"
 
+#include "devicebindings.h"
+#include "devicemanager.h"
+#include "deviceoutputsink.h"
+#include "emergencystop.h"
 #include "jsonlineswriter.h"
 #include "simrun.h"
 
@@ -56,6 +60,23 @@ private:
     JsonLinesWriter m_deviceWriter;
 };
 
+/** Sends the run's device frames to bound bands, and everything on to the writer. */
+class BoundSink : public RunSink
+{
+public:
+    BoundSink(DeviceOutputSink &devices, StreamWriter &writer)
+        : m_devices(devices), m_writer(writer)
+    {
+    }
+    void onContactFrame(const ContactFrame &frame) override { m_writer.onContactFrame(frame); }
+    void onEvent(const SemanticEvent &event) override { m_devices.onEvent(event); }
+    void onDeviceFrame(const DeviceFrame &frame) override { m_devices.onDeviceFrame(frame); }
+
+private:
+    DeviceOutputSink &m_devices;
+    StreamWriter &m_writer;
+};
+
 } // namespace
 
 QString RunCommand::summary() const
@@ -92,6 +113,10 @@ void RunCommand::configure(QCommandLineParser &parser)
     parser.addOption(
         {QStringLiteral("device-frames"), tr("Where to write the device frames."), tr("FILE|-")});
     parser.addOption({QStringLiteral("realtime"), tr("Run at the speed of the wall clock.")});
+    parser.addOption({QStringLiteral("bind"),
+                      tr("Send a device's output to a band, e.g. right.vibro=serial:/dev/ttyACM0 "
+                         "(repeatable); implies --realtime."),
+                      tr("NAME=URI")});
 }
 
 int RunCommand::execute(const QCommandLineParser &parser)
@@ -146,13 +171,27 @@ int RunCommand::execute(const QCommandLineParser &parser)
             return ExitInvalidInput;
     }
     StreamWriter writer(*run, devices[1], devices[2], devices[3]);
+    DeviceManager bands;
+    QString message;
+    bool usage = false;
+    if (!bindDevices(parser.values(QStringLiteral("bind")), run->pipeline().router().player(),
+                     bands, &message, &usage))
+        return usage ? usageError(message) : inputError(message);
+    const bool bound = !bands.boundNames().isEmpty();
+    if (bound) {
+        EmergencyStop::install();
+        bands.armAll(true);
+    }
+    DeviceOutputSink output(run->pipeline().router().player(), bands, &writer);
+    BoundSink sink(output, writer);
 
     const bool progress = isatty(fileno(stderr)) && m_io.err != nullptr;
     QElapsedTimer wall;
     wall.start();
     qint64 lastDraw = -1000;
-    while (run->step(writer)) {
-        if (parser.isSet(QStringLiteral("realtime"))) {
+    const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound;
+    while (run->step(sink)) {
+        if (realtime) {
             const qint64 ahead = qint64(run->time() * 1000) - wall.elapsed();
             if (ahead > 1)
                 QThread::msleep(quint64(ahead));
@@ -173,6 +212,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     }
     if (progress)
         m_io.err->write("\r\033[K");
+    bands.stopAll();
 
     const double wallSeconds = double(wall.elapsed()) / 1000;
     QJsonObject metrics = run->metrics();

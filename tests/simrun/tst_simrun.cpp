@@ -233,6 +233,12 @@ void TestSimRun::commandLineErrors_data()
         << 1 << "unknown operator 'robot' (operators: scripted, reactive)";
     QTest::newRow("bad seed") << base + QStringList{"--scene", "box_and_block", "--seed", "1.5"}
                               << 2 << "semhap run: --seed must be a whole number >= 0";
+    QTest::newRow("malformed binding")
+        << base + QStringList{"--scene", "box_and_block", "--bind", "right.vibro"} << 2
+        << "semhap run: right.vibro: a binding is NAME=URI (right.vibro=serial:/dev/ttyACM0)";
+    QTest::newRow("binding of no device")
+        << base + QStringList{"--scene", "box_and_block", "--bind", "left.foo=udp:127.0.0.1:9"}
+        << 1 << "--bind left.foo=udp:127.0.0.1:9: the router has no device 'left.foo'";
     QTest::newRow("too many cubes")
         << base + QStringList{"--scene", "box_and_block", "--cubes", "99"} << 1
         << "box_and_block: asked for 99 cubes, the scene has 24";
