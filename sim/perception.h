@@ -20,6 +20,14 @@ namespace semhap {
 class Perception : public PipelineSink
 {
 public:
+    /** A cue counts as perceived from this level of full scale on. */
+    static constexpr double Noticeable = 0.25;
+    /**
+     * Pulses of one warning come at least this often (the Geiger's slowest rate is 2 Hz):
+     * a pulsed warning is one cue while its pulses keep coming.
+     */
+    static constexpr double PulseGap = 0.6;
+
     explicit Perception(const Router &router);
 
     void onDeviceFrame(const DeviceFrame &frame) override;

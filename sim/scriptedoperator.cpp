@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "scriptedoperator.h"
 
+#include "perception.h"
 #include "world.h"
 
 #include <algorithm>
@@ -18,18 +19,11 @@ constexpr double ReleaseHeight = 0.19;
 // How far from a cube's centre the fingers come down, and the room they need there.
 constexpr double FingerReach = 0.04;
 constexpr double MinClearance = 0.008;
-// Pulses of one warning come at least this often (the Geiger's slowest rate is 2 Hz): a
-// pulsed warning is one cue, not one per pulse.
-constexpr double CueGap = 0.6;
 constexpr double OpenGrip = -20.0;
-// A cue counts as perceived above this level.
-constexpr double Noticeable = 0.25;
 // Sensory baseline: pressure (F / ref) at which a person stops closing, and eases off.
 constexpr double EnoughPressure = 0.3;
 constexpr double TooMuchPressure = 0.65;
-// The container's grip: what holds it (m g / mu, empty) and how the hold drifts.
-constexpr double ContainerHoldLimit = 0.3 * 9.81 / 0.1;
-constexpr double ContainerHeight = 0.09;
+constexpr double Gravity = 9.81;
 // How high the left hand lifts the container off its base.
 constexpr double HoldLift = 0.06;
 
@@ -66,9 +60,9 @@ void ScriptedOperator::act(World &world)
 std::array<double, 3> ScriptedOperator::placePoint(const World &world)
 {
     if (m_task == Task::BimanualSorting) {
-        const auto container =
-            world.objectPosition(world.objectIndex(QStringLiteral("container")));
-        return {container[0], container[1], container[2] + ContainerHeight + 0.11};
+        const int container = world.objectIndex(QStringLiteral("container"));
+        const auto pos = world.objectPosition(container);
+        return {pos[0], pos[1], pos[2] + world.objects()[size_t(container)].upper[2] + 0.11};
     }
     // Where the fewest cubes are: the free spot of a 4 x 4 grid farthest from any cube in the
     // place region, released above the rim so the fingers never land on a cube.
@@ -198,9 +192,11 @@ void ScriptedOperator::planHold(World &world)
 {
     const double t = world.time();
     const int container = world.objectIndex(QStringLiteral("container"));
-    const int actor = world.objects()[size_t(container)].actor;
+    const SceneObject &object = world.objects()[size_t(container)];
     const ContactFrame &frame = world.frame(Gripper::Left);
-    const bool held = frame.left.actor == actor && frame.right.actor == actor;
+    const bool held = frame.left.actor == object.actor && frame.right.actor == object.actor;
+    // The grip that just holds the empty container: its weight over its friction.
+    const double holdLimit = object.mass * Gravity / object.friction;
     switch (m_hold) {
     case Hold::Acquire:
         if (m_left.isIdle()) {
@@ -212,7 +208,7 @@ void ScriptedOperator::planHold(World &world)
                 break;
             }
             const auto pos = world.objectPosition(container);
-            const double gripZ = pos[2] + ContainerHeight - 0.02 + PadDrop;
+            const double gripZ = pos[2] + object.upper[2] - 0.02 + PadDrop;
             m_holdGrip = m_random.normal(46.0, 3.0);
             m_left.grip(OpenGrip, 0.1);
             m_left.move({pos[0], pos[1], 0.3}, 0.8);
@@ -227,8 +223,7 @@ void ScriptedOperator::planHold(World &world)
         // The hand relaxes without noticing: the grip drifts down to what just holds the
         // empty container after m_slipAfter seconds, and the wrist sways a few millimetres.
         const double s = (t - m_holdStart) / m_slipAfter;
-        world.setGrip(Gripper::Left,
-                      std::max(0.0, m_holdGrip - (m_holdGrip - ContainerHoldLimit) * s));
+        world.setGrip(Gripper::Left, std::max(0.0, m_holdGrip - (m_holdGrip - holdLimit) * s));
         Pose target = world.target(Gripper::Left);
         target.pos[0] = m_holdPos[0] + 0.004 * std::sin(2 * Pi * t / 5.0 + m_wobblePhase[0]);
         target.pos[1] = m_holdPos[1] + 0.003 * std::sin(2 * Pi * t / 7.0 + m_wobblePhase[1]);
@@ -280,9 +275,9 @@ void ScriptedOperator::feel(Gripper hand, const Feeling &feeling, double t)
         feeling.pressure >= TooMuchPressure ? 1.0 : 0.0};
     HandState &state = m_hands[size_t(hand)];
     for (size_t cue = 0; cue < levels.size(); ++cue) {
-        if (levels[cue] < Noticeable)
+        if (levels[cue] < Perception::Noticeable)
             continue;
-        if (t - state.lastFelt[cue] > CueGap)
+        if (t - state.lastFelt[cue] > Perception::PulseGap)
             m_percepts.push_back({t + m_reactionTime, hand, Cue(cue)});
         state.lastFelt[cue] = t;
     }

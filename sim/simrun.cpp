@@ -5,13 +5,6 @@
 
 namespace semhap {
 
-namespace {
-
-// A warning counts as perceived from this level on (as the operators' Noticeable).
-constexpr double Perceptible = 0.25;
-
-} // namespace
-
 std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error)
 {
     std::unique_ptr<SimRun> run(new SimRun);
@@ -67,8 +60,8 @@ bool SimRun::step(RunSink &sink)
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         const Feeling feeling = m_perception->feeling(g);
         m_operator->feel(g, feeling, t);
-        m_task->setWarningFelt(g, std::max(feeling.warning, feeling.shownWarning) >= Perceptible,
-                               t);
+        m_task->setWarningFelt(
+            g, std::max(feeling.warning, feeling.shownWarning) >= Perception::Noticeable, t);
     }
     ++m_steps;
     return !isDone();

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "taskmonitor.h"
 
+#include "perception.h"
+
 #include <cmath>
 
 namespace semhap {
 
 namespace {
 
-// Pulses of one warning come at least this often (the Geiger's slowest rate is 2 Hz).
-constexpr double WarningGap = 0.6;
 // Steps a grasped object must be out of the fingertips before the grasp counts as over.
 constexpr int GraspLostSteps = 25;
 // An object counts as come to rest below this speed (m/s).
@@ -17,8 +17,6 @@ constexpr double AtRest = 0.05;
 // has fallen this far (m) below where it was held.
 constexpr double LostAfter = 0.25;
 constexpr double FallenBy = 0.02;
-constexpr double ContainerHalf = 0.045;
-constexpr double ContainerHeight = 0.09;
 
 double speed(const std::array<double, 3> &v)
 {
@@ -44,7 +42,7 @@ void TaskMonitor::observe(World &world)
 {
     for (const Fracture &fracture : world.fractures()) {
         ++m_broken;
-        if (m_lastFelt >= 0 && fracture.t - m_lastFelt <= WarningGap) {
+        if (m_lastFelt >= 0 && fracture.t - m_lastFelt <= Perception::PulseGap) {
             ++m_warnedBreaks;
             m_leadTimeSum += fracture.t - m_warningSince;
         }
@@ -61,7 +59,7 @@ void TaskMonitor::setWarningFelt(Gripper hand, bool felt, double t)
     // pulsed warning (Geiger, 5 Hz) is one warning while its pulses keep coming.
     if (hand != Gripper::Right || !felt)
         return;
-    if (m_lastFelt < 0 || t - m_lastFelt > WarningGap)
+    if (m_lastFelt < 0 || t - m_lastFelt > Perception::PulseGap)
         m_warningSince = t;
     m_lastFelt = t;
 }
@@ -105,11 +103,9 @@ void TaskMonitor::observeGrasp(World &world)
 void TaskMonitor::observeTransfers(const World &world)
 {
     std::array<double, 3> container{};
-    bool containerHeld = false;
-    if (m_container >= 0) {
+    const SceneObject *walls = m_container >= 0 ? &world.objects()[size_t(m_container)] : nullptr;
+    if (walls)
         container = world.objectPosition(m_container);
-        containerHeld = m_containerHeld;
-    }
     for (size_t i = 0; i < world.objects().size(); ++i) {
         const SceneObject &object = world.objects()[i];
         if (m_transferred[i] || object.broken || int(i) == m_grasped || int(i) == m_container)
@@ -118,9 +114,9 @@ void TaskMonitor::observeTransfers(const World &world)
         bool arrived = false;
         if (m_container >= 0) {
             // Inside the held container (within its walls, above its floor), swaying with it.
-            arrived = containerHeld && std::abs(pos[0] - container[0]) < ContainerHalf &&
-                      std::abs(pos[1] - container[1]) < ContainerHalf && pos[2] > container[2] &&
-                      pos[2] < container[2] + ContainerHeight;
+            arrived = m_containerHeld && std::abs(pos[0] - container[0]) < walls->upper[0] &&
+                      std::abs(pos[1] - container[1]) < walls->upper[1] && pos[2] > container[2] &&
+                      pos[2] < container[2] + walls->upper[2];
         } else if (m_hasPlace) {
             arrived = m_place.contains(pos) && speed(world.objectVelocity(int(i))) < AtRest;
         }

@@ -148,6 +148,29 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         const int numeric = id(m, mjOBJ_NUMERIC, QStringLiteral("fragile:") + object.name);
         if (numeric >= 0)
             object.fragileForce = m->numeric_data[m->numeric_adr[numeric]];
+        object.mass = m->body_subtreemass[body];
+        // Its extent and grip, for operators and tasks that must know how big and how
+        // slippery it is (boxes exactly, other shapes by their bounding sphere).
+        bool first = true;
+        for (int geom = 0; geom < m->ngeom; ++geom) {
+            if (m->geom_bodyid[geom] != body)
+                continue;
+            object.friction = first ? m->geom_friction[3 * geom]
+                                    : std::min(object.friction, m->geom_friction[3 * geom]);
+            for (int axis = 0; axis < 3; ++axis) {
+                const double half = m->geom_type[geom] == mjGEOM_BOX
+                                        ? m->geom_size[3 * geom + axis]
+                                        : m->geom_rbound[geom];
+                const double centre = m->geom_pos[3 * geom + axis];
+                const double low = centre - half;
+                const double high = centre + half;
+                object.lower[size_t(axis)] =
+                    first ? low : std::min(object.lower[size_t(axis)], low);
+                object.upper[size_t(axis)] =
+                    first ? high : std::max(object.upper[size_t(axis)], high);
+            }
+            first = false;
+        }
         p.objectOfBody[size_t(body)] = int(world->m_objects.size());
         world->m_objects.push_back(object);
     }

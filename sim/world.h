@@ -37,6 +37,10 @@ struct SceneObject
     int actor = -1;            ///< ActorTable id, as contact frames name it
     double fragileForce = 0.0; ///< grip force that fractures it (N); 0: not fragile
     bool broken = false;
+    double mass = 0.0;             ///< kg
+    double friction = 1.0;         ///< the lowest sliding friction of its geoms
+    std::array<double, 3> lower{}; ///< the box around its geoms, in its body frame
+    std::array<double, 3> upper{};
 };
 
 /** A fracture: a fragile object gripped harder than it can take. */
