@@ -206,13 +206,11 @@ int CompareCommand::execute(const QCommandLineParser &parser)
 
     // The grid, in a fixed order so that shard I of N is the same slice on every machine.
     std::vector<RunOptions> grid;
+    int index = 0;
     for (const QString &router : routers) {
         for (int seed = 1; seed <= int(seeds); ++seed) {
-            if (int(grid.size() + 1) % shards != shard % shards) {
-                grid.emplace_back(); // not ours: a placeholder keeps the index
-                grid.back().duration = -1;
+            if (index++ % shards != shard - 1)
                 continue;
-            }
             RunOptions options;
             options.scene = parser.value(QStringLiteral("scene"));
             options.router = router;
@@ -223,10 +221,12 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             grid.push_back(options);
         }
     }
-    // Check the inputs once, up front, so a typo is one message and not one per run.
+    // Check each router once, up front, so a typo is one message and not one per run.
+    QStringList checked;
     for (const RunOptions &options : grid) {
-        if (options.duration < 0)
+        if (checked.contains(options.router))
             continue;
+        checked.append(options.router);
         QString error;
         RunOptions probe = options;
         probe.duration = 0;
@@ -241,13 +241,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             return ExitInvalidInput;
     }
     std::vector<Row> rows(grid.size());
-    std::vector<bool> done(grid.size(), false);
     std::atomic<size_t> next{0};
     const auto worker = [&] {
         for (size_t i = next++; i < grid.size(); i = next++) {
             const RunOptions &options = grid[i];
-            if (options.duration < 0)
-                continue;
             QString error;
             std::unique_ptr<SimRun> run = SimRun::create(options, &error);
             RunSink sink;
@@ -266,7 +263,6 @@ int CompareCommand::execute(const QCommandLineParser &parser)
                 row.metrics.push_back(v.isDouble() ? v.toDouble() : std::nan(""));
             }
             rows[i] = row;
-            done[i] = true;
         }
     };
     std::vector<std::thread> threads;
@@ -275,18 +271,13 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     for (std::thread &thread : threads)
         thread.join();
 
-    std::vector<Row> finished;
-    for (size_t i = 0; i < rows.size(); ++i) {
-        if (done[i])
-            finished.push_back(rows[i]);
-    }
     if (csv) {
         csv->write(csvHeader());
-        for (const Row &row : finished)
+        for (const Row &row : rows)
             csv->write(csvLine(row));
     }
     if (!csv || parser.value(QStringLiteral("csv")) != QLatin1String("-"))
-        m_out << table(finished);
+        m_out << table(rows);
     return ExitOk;
 }
 
