@@ -116,7 +116,7 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
 <mujoco model="{model}">
   <compiler autolimits="true" angle="radian"/>
   <option timestep="0.002" cone="elliptic" impratio="10" jacobian="sparse" gravity="0 0 -9.81"/>
-  <size nconmax="{nconmax}" njmax="{njmax}" nstack="3000000"/>
+  <size nconmax="{nconmax}" njmax="{njmax}" nstack="1000000"/>
   <visual>
     <global offwidth="1920" offheight="1080"/>
     <quality shadowsize="2048"/>
@@ -140,7 +140,7 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
 def box_and_block(max_cubes=24):
     pile, fragile = cubes(max_cubes, -0.15, 0.0,
                           (CUBE + 0.001, 3 * CUBE + 0.003, 5 * CUBE + 0.005))
-    return HEADER.format(model="box_and_block", nconmax=800, njmax=4000, taxel=TAXEL_R) + f"""
+    return HEADER.format(model="box_and_block", nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
   <custom>
     <numeric name="semhap:cubes" data="12"/>
 {fragile}
@@ -179,7 +179,7 @@ def bimanual_sorting(max_cubes=16):
                      f'pos="{x:.4f} {y:.4f} {height / 2:.4f}" '
                      f'size="{sx:.4f} {sy:.4f} {height / 2:.4f}" mass="0.07" '
                      f'friction="0.1 0.005 0.0001" {OBJECT_CONTACT} rgba="0.4 0.65 0.7 1"/>')
-    return HEADER.format(model="bimanual_sorting", nconmax=800, njmax=4000, taxel=TAXEL_R) + f"""
+    return HEADER.format(model="bimanual_sorting", nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
   <custom>
     <numeric name="semhap:cubes" data="12"/>
 {fragile}
