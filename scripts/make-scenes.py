@@ -137,17 +137,23 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
   </asset>"""
 
 
-def box_and_block(max_cubes=24):
-    pile, fragile = cubes(max_cubes, -0.15, 0.0,
-                          (CUBE + 0.001, 3 * CUBE + 0.003, 5 * CUBE + 0.005))
-    return HEADER.format(model="box_and_block", nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
+def opening(model, fragile):
+    """Everything a scene has before its own bodies: options, assets, the cube count and
+    fragile thresholds, light and floor."""
+    return HEADER.format(model=model, nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
   <custom>
     <numeric name="semhap:cubes" data="12"/>
 {fragile}
   </custom>
   <worldbody>
     <light pos="0 -0.3 1.2" dir="0 0.2 -1" diffuse="0.8 0.8 0.8"/>
-    <geom name="floor" type="plane" size="1 1 0.05" material="floor"/>
+    <geom name="floor" type="plane" size="1 1 0.05" material="floor"/>"""
+
+
+def box_and_block(max_cubes=24):
+    pile, fragile = cubes(max_cubes, -0.15, 0.0,
+                          (CUBE + 0.001, 3 * CUBE + 0.003, 5 * CUBE + 0.005))
+    return opening("box_and_block", fragile) + f"""
 {open_box("box.a", -0.15, 0.0, 0.26, 0.06, 0.01, "0.55 0.42 0.3 1")}
 {open_box("box.b", 0.15, 0.0, 0.26, 0.06, 0.01, "0.55 0.42 0.3 1")}
     <geom name="partition" type="box" pos="0 0 0.075" size="0.005 0.14 0.075"
@@ -179,14 +185,7 @@ def bimanual_sorting(max_cubes=16):
                      f'pos="{x:.4f} {y:.4f} {height / 2:.4f}" '
                      f'size="{sx:.4f} {sy:.4f} {height / 2:.4f}" mass="0.07" '
                      f'friction="0.1 0.005 0.0001" {OBJECT_CONTACT} rgba="0.4 0.65 0.7 1"/>')
-    return HEADER.format(model="bimanual_sorting", nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
-  <custom>
-    <numeric name="semhap:cubes" data="12"/>
-{fragile}
-  </custom>
-  <worldbody>
-    <light pos="0 -0.3 1.2" dir="0 0.2 -1" diffuse="0.8 0.8 0.8"/>
-    <geom name="floor" type="plane" size="1 1 0.05" material="floor"/>
+    return opening("bimanual_sorting", fragile) + f"""
     <geom name="container.base" type="cylinder" pos="-0.2 0 0.01" size="0.06 0.01"
           rgba="0.45 0.45 0.5 1"/>
 {open_box("box.cubes", 0.2, 0.0, 0.26, 0.04, 0.01, "0.55 0.42 0.3 1")}
