@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#include "livehistory.h"
+
+#include <algorithm>
+
+namespace semhap {
+
+LiveHistory::LiveHistory(QObject *parent) : QObject(parent) {}
+
+void LiveHistory::start(const std::vector<LiveDevice> &devices,
+                        const std::array<GripperThresholds, 2> &thresholds,
+                        const QStringList &nodeIds)
+{
+    for (auto &series : m_frames)
+        series.clear();
+    m_events.clear();
+    m_spans.clear();
+    m_devices = devices;
+    m_deviceFrames.assign(devices.size(), LiveSeries<DeviceFrame>());
+    m_thresholds = thresholds;
+    m_nodeIds = nodeIds;
+    m_metrics = QJsonObject();
+    m_now = 0.0;
+    m_dirty = false;
+    emit reset();
+}
+
+void LiveHistory::append(const ContactFrame &frame)
+{
+    m_frames[size_t(frame.gripper)].append(frame);
+    m_now = std::max(m_now, frame.t);
+    m_dirty = true;
+}
+
+void LiveHistory::append(const SemanticEvent &event)
+{
+    m_events.append(event);
+    m_now = std::max(m_now, event.t);
+    m_dirty = true;
+    const QString node = nodeName(event.node);
+    if (event.phase == EventPhase::Begin) {
+        MessageSpan span;
+        span.gripper = event.gripper;
+        span.node = node;
+        span.message = event.message;
+        span.category = event.category;
+        span.begin = event.t;
+        span.end = event.t;
+        span.peak = event.intensity;
+        m_spans.push_back(span);
+        return;
+    }
+    // The newest open span of this detector and message.
+    for (auto it = m_spans.rbegin(); it != m_spans.rend(); ++it) {
+        if (!it->active || it->node != node || it->message != event.message)
+            continue;
+        it->end = event.t;
+        it->peak = std::max(it->peak, event.intensity);
+        it->active = event.phase != EventPhase::End;
+        break;
+    }
+}
+
+void LiveHistory::append(const DeviceFrame &frame)
+{
+    if (frame.device < 0 || size_t(frame.device) >= m_deviceFrames.size())
+        return;
+    m_deviceFrames[size_t(frame.device)].append(frame);
+    m_now = std::max(m_now, frame.t);
+    m_dirty = true;
+}
+
+void LiveHistory::setMetrics(const QJsonObject &metrics)
+{
+    if (metrics == m_metrics)
+        return;
+    m_metrics = metrics;
+    emit metricsChanged();
+}
+
+void LiveHistory::commit()
+{
+    if (!m_dirty)
+        return;
+    m_dirty = false;
+    const double oldest = m_now - m_keepSeconds;
+    for (auto &series : m_frames)
+        series.trimBefore(oldest);
+    m_events.trimBefore(oldest);
+    for (auto &series : m_deviceFrames)
+        series.trimBefore(oldest);
+    // Open spans grow with time even without events.
+    for (auto &span : m_spans) {
+        if (span.active)
+            span.end = m_now;
+    }
+    m_spans.erase(std::remove_if(m_spans.begin(), m_spans.end(),
+                                 [oldest](const MessageSpan &s) {
+                                     return !s.active && s.end < oldest;
+                                 }),
+                  m_spans.end());
+    emit updated();
+}
+
+void LiveHistory::setKeepSeconds(double seconds)
+{
+    m_keepSeconds = std::max(1.0, seconds);
+}
+
+QString LiveHistory::nodeName(int node) const
+{
+    return node >= 0 && node < m_nodeIds.size() ? m_nodeIds[node] : QString();
+}
+
+} // namespace semhap

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "contactframe.h"
+#include "deviceframe.h"
+#include "semanticevent.h"
+
+#include <QJsonObject>
+#include <QObject>
+#include <QStringList>
+
+#include <array>
+#include <deque>
+#include <vector>
+
+namespace semhap {
+
+/** The active detectors' thresholds for one gripper, drawn as lines on its plots. */
+struct GripperThresholds
+{
+    bool hasForce = false;
+    double grasp = 0.0;
+    double breakForce = 0.0; ///< the force detector's `break`
+    double max = 0.0;
+    bool hasSlip = false;
+    double loss = 0.0;
+    double min = 0.0;
+};
+
+/** One device of the running router, as the panels list it. */
+struct LiveDevice
+{
+    QString name;  ///< the router's device name (`right.vibro`)
+    QString model; ///< the device model's name
+    QStringList channels;
+};
+
+/** A semantic message from its begin to its end (open while `active`). */
+struct MessageSpan
+{
+    Gripper gripper = Gripper::Right;
+    QString node; ///< the detector's node id
+    Message message = Message::Grasp;
+    Category category = Category::Confirmation;
+    double begin = 0.0;
+    double end = 0.0; ///< the latest time seen while active
+    bool active = true;
+    double peak = 0.0; ///< the highest intensity it reached
+};
+
+/**
+ * A growing series the GUI reads by running index: values keep their index while the
+ * oldest are trimmed, so a view remembers where it stopped and reads only what is new.
+ */
+template<typename T>
+class LiveSeries
+{
+public:
+    qint64 begin() const { return m_first; }
+    qint64 end() const { return m_first + qint64(m_values.size()); }
+    const T &at(qint64 index) const { return m_values[size_t(index - m_first)]; }
+    bool isEmpty() const { return m_values.empty(); }
+    const T &last() const { return m_values.back(); }
+    void append(const T &value) { m_values.push_back(value); }
+    /** Drops the values older than `t` (by their `t`). */
+    void trimBefore(double t)
+    {
+        while (!m_values.empty() && m_values.front().t < t) {
+            m_values.pop_front();
+            ++m_first;
+        }
+    }
+    void clear()
+    {
+        m_first += qint64(m_values.size());
+        m_values.clear();
+    }
+
+private:
+    std::deque<T> m_values;
+    qint64 m_first = 0;
+};
+
+/**
+ * What the studio has seen of the running pipeline — contact frames per gripper, semantic
+ * events and the message spans they make, device frames per device, the task metrics —
+ * kept for the last `keepSeconds()` of pipeline time. GUI thread only: the engine fills it
+ * from its lock-free feed at display rate and calls commit(), and every panel reads it.
+ */
+class LiveHistory : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit LiveHistory(QObject *parent = nullptr);
+
+    /** Forgets everything and describes the new run; emits `reset()`. */
+    void start(const std::vector<LiveDevice> &devices,
+               const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
+
+    void append(const ContactFrame &frame);
+    void append(const SemanticEvent &event);
+    void append(const DeviceFrame &frame);
+    void setMetrics(const QJsonObject &metrics);
+    /** Trims what is older than the kept window and emits `updated()` if anything came. */
+    void commit();
+
+    /** How much pipeline time is kept (s); at least the plots' widest window. */
+    double keepSeconds() const { return m_keepSeconds; }
+    void setKeepSeconds(double seconds);
+
+    /** The latest pipeline time seen (s). */
+    double now() const { return m_now; }
+
+    const LiveSeries<ContactFrame> &frames(Gripper gripper) const
+    {
+        return m_frames[size_t(gripper)];
+    }
+    const LiveSeries<SemanticEvent> &events() const { return m_events; }
+    const std::vector<MessageSpan> &spans() const { return m_spans; }
+    const std::vector<LiveDevice> &devices() const { return m_devices; }
+    const LiveSeries<DeviceFrame> &deviceFrames(int device) const
+    {
+        return m_deviceFrames[size_t(device)];
+    }
+    const std::array<GripperThresholds, 2> &thresholds() const { return m_thresholds; }
+    /** The detector's node id of an event (`right.force`). */
+    QString nodeName(int node) const;
+    const QJsonObject &metrics() const { return m_metrics; }
+
+signals:
+    /** A new run started: views drop what they show. */
+    void reset();
+    /** New data arrived (at most once per display frame). */
+    void updated();
+    void metricsChanged();
+
+private:
+    std::array<LiveSeries<ContactFrame>, 2> m_frames;
+    LiveSeries<SemanticEvent> m_events;
+    std::vector<MessageSpan> m_spans;
+    std::vector<LiveDevice> m_devices;
+    std::vector<LiveSeries<DeviceFrame>> m_deviceFrames;
+    std::array<GripperThresholds, 2> m_thresholds{};
+    QStringList m_nodeIds;
+    QJsonObject m_metrics;
+    double m_keepSeconds = 120.0;
+    double m_now = 0.0;
+    bool m_dirty = false;
+};
+
+} // namespace semhap

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "livefeed.h"
+#include "livehistory.h"
+#include "simrun.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace semhap {
+
+class DeviceManager;
+class DeviceOutputSink;
+class ManualOperator;
+class SceneFeed;
+
+/**
+ * The studio's running session: a SimRun stepped on its own pipeline thread at a chosen
+ * speed of real time, its streams handed to the GUI through a LiveFeed and drained into
+ * the LiveHistory at display rate, its device frames sent to the DeviceManager's bound
+ * transports. The pipeline never waits for the GUI; the GUI waits for the pipeline only to
+ * change the run's set-up (load, reset, rebind), and then only until the current tick ends.
+ */
+class SimEngine : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit SimEngine(QObject *parent = nullptr);
+    ~SimEngine() override;
+
+    /**
+     * Stops the current run and loads `options` (scene, router, seed, operator); devices of
+     * the router without a binding are bound to `virtual:NAME`. Paused afterwards. False
+     * with a one-line `error`, keeping the previous run.
+     */
+    bool load(const RunOptions &options, QString *error);
+    /** Loads the current options again from the start. */
+    bool reset(QString *error);
+    const RunOptions &options() const { return m_options; }
+    bool isLoaded() const { return m_run != nullptr; }
+
+    void run();
+    void pause();
+    bool isRunning() const { return m_running.load(); }
+    /** While paused: one display frame's worth of steps (1/60 s of simulated time). */
+    void step();
+
+    /** Simulated seconds per real second (1 = real time). */
+    double speed() const { return m_speed.load(); }
+    void setSpeed(double speed);
+
+    /** Hands the grippers to the user (ManualOperator) or back to the run's own operator. */
+    void setManual(bool manual);
+    bool isManual() const { return m_manual.load(); }
+    /** The user's pose-and-grip input; valid while loaded. */
+    ManualOperator *manualOperator() const { return m_manualOperator.get(); }
+
+    /** Binds a router device name to a transport at a tick boundary. */
+    bool bindDevice(const QString &name, const QString &uri, QString *error);
+    DeviceManager &devices() { return *m_devices; }
+    /** Sends zero to every device now, from any thread; works even while the run is busy. */
+    void stopAll();
+
+    LiveHistory &history() { return m_history; }
+    /** The scene snapshots the viewport draws; null until loaded. */
+    SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
+    /** The loaded world (read it on the GUI thread only while paused). */
+    const World *world() const;
+
+    double simTime() const { return m_simTime.load(); }
+    /** Simulated seconds per wall second over the last second of running. */
+    double realtimeFactor() const { return m_realtimeFactor.load(); }
+    /** Values the feed dropped because the GUI fell behind. */
+    quint64 dropped() const { return m_feed.dropped(); }
+
+signals:
+    void loaded();
+    void runningChanged(bool running);
+    void manualChanged(bool manual);
+    /** The run reached its duration. */
+    void finished();
+    void speedChanged(double speed);
+
+private:
+    class Worker;
+    struct Setup;
+
+    void stopThread();
+    void startThread();
+    void drain();
+
+    RunOptions m_options;
+    std::unique_ptr<DeviceManager> m_devices;
+    std::unique_ptr<SimRun> m_run;
+    std::unique_ptr<ManualOperator> m_manualOperator;
+    std::unique_ptr<SceneFeed> m_sceneFeed;
+    std::unique_ptr<DeviceOutputSink> m_output;
+    LiveFeed m_feed;
+    LiveHistory m_history;
+    QTimer m_drainTimer;
+    std::thread m_thread;
+    std::mutex m_setupMutex; ///< held by the pipeline thread per batch of ticks
+    std::atomic<bool> m_quit{false};
+    std::atomic<bool> m_running{false};
+    std::atomic<bool> m_manual{false};
+    std::atomic<int> m_pendingSteps{0};
+    std::atomic<double> m_speed{1.0};
+    std::atomic<double> m_simTime{0.0};
+    std::atomic<double> m_realtimeFactor{0.0};
+};
+
+} // namespace semhap
