@@ -6,6 +6,7 @@
 
 namespace semhap {
 
+class SceneFeed;
 class World;
 
 /** Where the camera looks from: an orbit around a point. */
@@ -18,25 +19,14 @@ struct OrbitCamera
 };
 
 /**
- * Draws a World with MuJoCo's renderer into the caller's current OpenGL context: MuJoCo
- * renders offscreen (so its shadow pass survives) and the result is blitted into the
- * target framebuffer. The visual overlay device is shown on the grippers — confirmation in
- * blue, warning in orange (Okabe–Ito colours, told apart with the common colour-vision
- * deficiencies), at the channel's level, so a blinking channel blinks — and contact forces
- * can be drawn as arrows. No widgets: the studio's viewport wraps this.
+ * Draws a SceneFeed's newest picture with MuJoCo's renderer into the caller's current
+ * OpenGL context: MuJoCo renders offscreen (so its shadow pass survives) and the result is
+ * blitted into the target framebuffer, from the caller's orbit camera. No widgets: the
+ * studio's viewport wraps this.
  */
 class SceneRenderer
 {
 public:
-    /** Overlay channels in the overlay model's order: left/right confirm and warn. */
-    struct Overlay
-    {
-        double leftConfirm = 0.0;
-        double leftWarn = 0.0;
-        double rightConfirm = 0.0;
-        double rightWarn = 0.0;
-    };
-
     explicit SceneRenderer(const World &world);
     ~SceneRenderer();
 
@@ -49,12 +39,12 @@ public:
     bool isInitialized() const;
 
     OrbitCamera &camera() { return m_camera; }
-    void setOverlay(const Overlay &overlay) { m_overlay = overlay; }
-    void setShowForces(bool show) { m_showForces = show; }
-    bool showForces() const { return m_showForces; }
 
-    /** Renders the world's current state into framebuffer `target` (width × height). */
-    void render(unsigned int target, int width, int height);
+    /**
+     * Renders the feed's newest picture into framebuffer `target` (width × height); false
+     * (drawing nothing) until the feed has one.
+     */
+    bool render(SceneFeed &feed, unsigned int target, int width, int height);
 
     /** The largest image the offscreen buffer holds (the scene's offwidth × offheight). */
     std::array<int, 2> maxSize() const;
@@ -64,8 +54,6 @@ private:
     std::unique_ptr<Private> d;
     const World &m_world;
     OrbitCamera m_camera;
-    Overlay m_overlay;
-    bool m_showForces = false;
 };
 
 } // namespace semhap

@@ -7,8 +7,7 @@ namespace semhap {
 
 LiveFeed::LiveFeed(std::size_t capacity)
     : m_frames(capacity), m_events(capacity), m_deviceFrames(capacity)
-{
-}
+{}
 
 void LiveFeed::count(bool pushed)
 {

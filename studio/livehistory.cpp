@@ -94,11 +94,10 @@ void LiveHistory::commit()
         if (span.active)
             span.end = m_now;
     }
-    m_spans.erase(std::remove_if(m_spans.begin(), m_spans.end(),
-                                 [oldest](const MessageSpan &s) {
-                                     return !s.active && s.end < oldest;
-                                 }),
-                  m_spans.end());
+    m_spans.erase(
+        std::remove_if(m_spans.begin(), m_spans.end(),
+                       [oldest](const MessageSpan &s) { return !s.active && s.end < oldest; }),
+        m_spans.end());
     emit updated();
 }
 

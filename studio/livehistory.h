@@ -52,8 +52,7 @@ struct MessageSpan
  * A growing series the GUI reads by running index: values keep their index while the
  * oldest are trimmed, so a view remembers where it stopped and reads only what is new.
  */
-template<typename T>
-class LiveSeries
+template<typename T> class LiveSeries
 {
 public:
     qint64 begin() const { return m_first; }

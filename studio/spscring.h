@@ -12,8 +12,7 @@ namespace semhap {
  * pushes, the GUI thread pops at display rate. A full queue refuses the value (the caller
  * counts it) rather than making the producer wait.
  */
-template<typename T>
-class SpscRing
+template<typename T> class SpscRing
 {
 public:
     /** Holds up to `capacity` values (rounded up to a power of two). */

@@ -2,6 +2,7 @@
 // The scene renderer in a real OpenGL context (run under Xvfb): it draws the scene, the
 // overlay tints the gripper in its colour, and grabs are opaque. The images are saved
 // beside the test binary to be looked at.
+#include "scenefeed.h"
 #include "scenerenderer.h"
 #include "world.h"
 
@@ -38,16 +39,18 @@ class TestSimView : public QObject
 
 private slots:
     void initTestCase();
+    void feedHandsOverTheNewestPicture();
     void rendersTheScene();
     void overlayTintsTheGripper_data();
     void overlayTintsTheGripper();
 
 private:
-    QImage render(const SceneRenderer::Overlay &overlay, const QString &name);
+    QImage render(const SceneOverlay &overlay, const QString &name);
 
     QOffscreenSurface m_surface;
     QOpenGLContext m_context;
     std::unique_ptr<World> m_world;
+    std::unique_ptr<SceneFeed> m_feed;
     std::unique_ptr<SceneRenderer> m_renderer;
 };
 
@@ -66,6 +69,7 @@ void TestSimView::initTestCase()
     QVERIFY2(m_world, qPrintable(error));
     for (int k = 0; k < 50; ++k)
         m_world->step();
+    m_feed = std::make_unique<SceneFeed>(*m_world);
     m_renderer = std::make_unique<SceneRenderer>(*m_world);
     m_renderer->initialize();
     QVERIFY(m_renderer->isInitialized());
@@ -73,14 +77,34 @@ void TestSimView::initTestCase()
     m_renderer->camera().distance = 0.75;
 }
 
-QImage TestSimView::render(const SceneRenderer::Overlay &overlay, const QString &name)
+QImage TestSimView::render(const SceneOverlay &overlay, const QString &name)
 {
     QOpenGLFramebufferObject fbo(800, 600, QOpenGLFramebufferObject::CombinedDepthStencil);
-    m_renderer->setOverlay(overlay);
-    m_renderer->render(fbo.handle(), fbo.width(), fbo.height());
+    m_feed->capture(*m_world, overlay);
+    if (!m_renderer->render(*m_feed, fbo.handle(), fbo.width(), fbo.height()))
+        return QImage();
     const QImage image = fbo.toImage();
     image.save(QString("%1/simview-%2.png").arg(QCoreApplication::applicationDirPath(), name));
     return image;
+}
+
+void TestSimView::feedHandsOverTheNewestPicture()
+{
+    SceneFeed feed(*m_world);
+    QVERIFY(feed.wantsCapture()); // a new viewport wants its first picture
+    QVERIFY(!feed.takeLatest());
+    QVERIFY(!feed.hasPicture());
+    QOpenGLFramebufferObject fbo(64, 48);
+    QVERIFY(!m_renderer->render(feed, fbo.handle(), fbo.width(), fbo.height()));
+
+    feed.capture(*m_world, {});
+    QVERIFY(!feed.wantsCapture());
+    feed.capture(*m_world, {}); // the renderer was slow: only the newest counts
+    QVERIFY(feed.takeLatest());
+    QVERIFY(!feed.takeLatest());
+    QVERIFY(feed.hasPicture());
+    feed.request();
+    QVERIFY(feed.wantsCapture());
 }
 
 void TestSimView::rendersTheScene()
@@ -115,7 +139,7 @@ void TestSimView::overlayTintsTheGripper()
     QFETCH(double, warn);
     QFETCH(QColor, colour);
     const QImage plain = render({}, "plain");
-    SceneRenderer::Overlay overlay;
+    SceneOverlay overlay;
     overlay.rightConfirm = confirm;
     overlay.rightWarn = warn;
     const QImage tinted = render(overlay, QTest::currentDataTag());
