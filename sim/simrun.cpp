@@ -43,7 +43,8 @@ bool SimRun::step(RunSink &sink)
 {
     if (isDone())
         return false;
-    m_operator->act(*m_world);
+    Operator &driver = m_override ? *m_override : *m_operator;
+    driver.act(*m_world);
     m_world->step();
     Tee tee(*m_perception, sink);
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
@@ -59,7 +60,7 @@ bool SimRun::step(RunSink &sink)
     const double t = m_world->frame(Gripper::Right).t;
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         const Feeling feeling = m_perception->feeling(g);
-        m_operator->feel(g, feeling, t);
+        driver.feel(g, feeling, t);
         m_task->setWarningFelt(
             g, std::max(feeling.warning, feeling.shownWarning) >= Perception::Noticeable, t);
     }

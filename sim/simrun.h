@@ -55,6 +55,14 @@ public:
     /** The task metrics so far. */
     QJsonObject metrics() const { return m_task->metrics(); }
 
+    /**
+     * Drives the grippers with `op` instead of the run's own operator while it is set (the
+     * studio's user taking over); null gives them back. Not owned.
+     */
+    void setOperatorOverride(Operator *op) { m_override = op; }
+    /** What each hand perceives of the device output (the overlay is drawn from it). */
+    const Perception &perception() const { return *m_perception; }
+
     World &world() { return *m_world; }
     Pipeline &pipeline() { return *m_pipeline; }
     const RunOptions &options() const { return m_options; }
@@ -83,6 +91,7 @@ private:
     std::unique_ptr<World> m_world;
     std::unique_ptr<Pipeline> m_pipeline;
     std::unique_ptr<Operator> m_operator;
+    Operator *m_override = nullptr;
     std::unique_ptr<Perception> m_perception;
     std::unique_ptr<TaskMonitor> m_task;
     long m_steps = 0;

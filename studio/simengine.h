@@ -89,11 +89,23 @@ signals:
     void speedChanged(double speed);
 
 private:
-    class Worker;
-    struct Setup;
+    /** Routes one step's streams: contact frames to the feed, the rest to the devices. */
+    class StepSink : public RunSink
+    {
+    public:
+        explicit StepSink(SimEngine &engine) : m_engine(engine) {}
+        void onContactFrame(const ContactFrame &frame) override;
+        void onEvent(const SemanticEvent &event) override;
+        void onDeviceFrame(const DeviceFrame &frame) override;
+
+    private:
+        SimEngine &m_engine;
+    };
 
     void stopThread();
     void startThread();
+    void loop();
+    void stepOnce();
     void drain();
 
     RunOptions m_options;
@@ -103,6 +115,7 @@ private:
     std::unique_ptr<SceneFeed> m_sceneFeed;
     std::unique_ptr<DeviceOutputSink> m_output;
     LiveFeed m_feed;
+    StepSink m_sink{*this};
     LiveHistory m_history;
     QTimer m_drainTimer;
     std::thread m_thread;
@@ -110,6 +123,9 @@ private:
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_running{false};
     std::atomic<bool> m_manual{false};
+    std::atomic<int> m_speedEpoch{0}; ///< bumped on each speed change: the pacing restarts
+    int m_generation = 0;             ///< bumped on each load: late metrics are dropped
+    double m_nextMetrics = 0.0;       ///< pipeline thread: when metrics go out next
     std::atomic<int> m_pendingSteps{0};
     std::atomic<double> m_speed{1.0};
     std::atomic<double> m_simTime{0.0};

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: MIT
+#include "simengine.h"
+
+#include "devicemanager.h"
+#include "deviceoutputsink.h"
+#include "forcedetector.h"
+#include "manualoperator.h"
+#include "scenefeed.h"
+#include "slipdetector.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/** Display frames per second the step() button advances by. */
+constexpr double StepRate = 60.0;
+/** Task metrics go to the GUI this often (simulated seconds). */
+constexpr double MetricsPeriod = 0.25;
+/** The most simulated time one batch catches up before pacing gives up and restarts (s). */
+constexpr double MaxLag = 0.2;
+
+double seconds(Clock::duration d)
+{
+    return std::chrono::duration<double>(d).count();
+}
+
+/** The thresholds each gripper's detectors fire at, from the router's graph. */
+std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph)
+{
+    std::array<GripperThresholds, 2> result{};
+    for (const RouterNode &node : graph.nodes) {
+        Gripper gripper = Gripper::Right;
+        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper))
+            continue;
+        QJsonObject params = node.params;
+        params.remove(QLatin1String("gripper"));
+        QString key;
+        QString reason;
+        GripperThresholds &t = result[size_t(gripper)];
+        if (node.type == QLatin1String("force")) {
+            ForceDetector::Params p;
+            if (!p.read(params, &key, &reason))
+                continue;
+            t.hasForce = true;
+            t.grasp = p.grasp;
+            t.breakForce = p.brk;
+            t.max = p.max;
+        } else if (node.type == QLatin1String("slip")) {
+            SlipDetector::Params p;
+            if (!p.read(params, &key, &reason))
+                continue;
+            t.hasSlip = true;
+            t.loss = p.loss;
+            t.min = p.min;
+        }
+    }
+    return result;
+}
+
+std::vector<LiveDevice> devicesOf(const Player &player)
+{
+    std::vector<LiveDevice> devices;
+    for (int d = 0; d < player.deviceCount(); ++d)
+        devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
+                           player.deviceModel(d).channelNames()});
+    return devices;
+}
+
+} // namespace
+
+void SimEngine::StepSink::onContactFrame(const ContactFrame &frame)
+{
+    m_engine.m_feed.push(frame);
+}
+
+void SimEngine::StepSink::onEvent(const SemanticEvent &event)
+{
+    m_engine.m_output->onEvent(event);
+}
+
+void SimEngine::StepSink::onDeviceFrame(const DeviceFrame &frame)
+{
+    m_engine.m_output->onDeviceFrame(frame);
+}
+
+SimEngine::SimEngine(QObject *parent)
+    : QObject(parent), m_devices(std::make_unique<DeviceManager>())
+{
+    m_drainTimer.setInterval(16);
+    connect(&m_drainTimer, &QTimer::timeout, this, &SimEngine::drain);
+    m_drainTimer.start();
+}
+
+SimEngine::~SimEngine()
+{
+    stopThread();
+    m_devices->stopAll();
+}
+
+bool SimEngine::load(const RunOptions &options, QString *error)
+{
+    std::unique_ptr<SimRun> run = SimRun::create(options, error);
+    if (!run)
+        return false;
+    stopThread();
+    const bool wasRunning = m_running.exchange(false);
+    if (wasRunning)
+        emit runningChanged(false);
+    m_output.reset();
+    m_sceneFeed.reset();
+    m_run = std::move(run);
+    m_options = options;
+    ++m_generation;
+
+    // The router's devices keep a band the user bound to them when the model still fits;
+    // the others play on virtual devices, which show in the studio like real ones.
+    const Player &player = m_run->pipeline().router().player();
+    for (int d = 0; d < player.deviceCount(); ++d) {
+        const QString &name = player.deviceName(d);
+        const DeviceModel &model = player.deviceModel(d);
+        const auto bound = m_devices->status();
+        const bool keep = std::any_of(bound.begin(), bound.end(), [&](const BoundDevice &b) {
+            return b.name == name && b.model == model.name();
+        });
+        if (!keep)
+            m_devices->bind(name, QStringLiteral("virtual:") + name,
+                            std::make_shared<const DeviceModel>(model), error);
+    }
+    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+    m_manualOperator = std::make_unique<ManualOperator>();
+    if (m_manual.exchange(false))
+        emit manualChanged(false);
+    m_sceneFeed = std::make_unique<SceneFeed>(m_run->world());
+    m_simTime = m_run->time();
+    m_realtimeFactor = 0.0;
+    m_nextMetrics = 0.0;
+    m_pendingSteps = 0;
+
+    drain(); // whatever the old run left in the feed goes before the new history starts
+    m_history.start(devicesOf(player), thresholdsOf(m_run->pipeline().router().graph()),
+                    m_run->pipeline().router().nodeIds());
+    m_history.setMetrics(m_run->metrics());
+    startThread();
+    emit loaded();
+    return true;
+}
+
+bool SimEngine::reset(QString *error)
+{
+    const bool wasRunning = isRunning();
+    if (!load(m_options, error))
+        return false;
+    if (wasRunning)
+        run();
+    return true;
+}
+
+const World *SimEngine::world() const
+{
+    return m_run ? &m_run->world() : nullptr;
+}
+
+void SimEngine::run()
+{
+    if (!m_run || m_run->isDone() || m_running.exchange(true))
+        return;
+    emit runningChanged(true);
+}
+
+void SimEngine::pause()
+{
+    if (m_running.exchange(false))
+        emit runningChanged(false);
+}
+
+void SimEngine::step()
+{
+    if (!m_run || isRunning())
+        return;
+    const int steps = int(std::lround(1.0 / StepRate / m_run->world().timestep()));
+    m_pendingSteps.fetch_add(std::max(1, steps));
+}
+
+void SimEngine::setSpeed(double speed)
+{
+    speed = std::clamp(speed, 0.01, 100.0);
+    if (speed == m_speed.load())
+        return;
+    m_speed = speed;
+    ++m_speedEpoch;
+    emit speedChanged(speed);
+}
+
+void SimEngine::setManual(bool manual)
+{
+    if (m_manual.exchange(manual) != manual)
+        emit manualChanged(manual);
+}
+
+bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *error)
+{
+    if (!m_run) {
+        *error = tr("nothing is loaded");
+        return false;
+    }
+    const Player &player = m_run->pipeline().router().player();
+    const int device = player.deviceIndex(name);
+    if (device < 0) {
+        *error = tr("the router has no device '%1'").arg(name);
+        return false;
+    }
+    // At a tick boundary: the output sink holds the transports it sends to.
+    std::lock_guard<std::mutex> lock(m_setupMutex);
+    if (!m_devices->bind(name, uri,
+                         std::make_shared<const DeviceModel>(player.deviceModel(device)), error))
+        return false;
+    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+    return true;
+}
+
+void SimEngine::stopAll()
+{
+    pause();
+    m_devices->stopAll();
+}
+
+void SimEngine::drain()
+{
+    m_feed.drainInto(m_history);
+    m_history.commit();
+}
+
+void SimEngine::startThread()
+{
+    m_quit = false;
+    m_thread = std::thread([this] { loop(); });
+}
+
+void SimEngine::stopThread()
+{
+    if (!m_thread.joinable())
+        return;
+    m_quit = true;
+    m_thread.join();
+}
+
+void SimEngine::loop()
+{
+    const double dt = m_run->world().timestep();
+    Clock::time_point anchorWall = Clock::now();
+    double anchorSim = m_run->time();
+    int epoch = m_speedEpoch.load();
+    bool wasRunning = false;
+    Clock::time_point rateWall = anchorWall;
+    double rateSim = anchorSim;
+
+    while (!m_quit.load()) {
+        const bool running = m_running.load();
+        const Clock::time_point now = Clock::now();
+        long steps = 0;
+        if (running) {
+            if (!wasRunning || epoch != m_speedEpoch.load()) {
+                epoch = m_speedEpoch.load();
+                anchorWall = now;
+                anchorSim = m_run->time();
+            }
+            const double target = anchorSim + m_speed.load() * seconds(now - anchorWall);
+            steps = std::lround(std::floor((target - m_run->time()) / dt));
+            if (double(steps) * dt > MaxLag) {
+                // Slower than asked: run flat out from here instead of chasing the past.
+                steps = std::lround(MaxLag / dt);
+                anchorWall = now;
+                anchorSim = m_run->time() + double(steps) * dt;
+            }
+        } else {
+            steps = m_pendingSteps.exchange(0);
+        }
+        wasRunning = running;
+
+        if (steps > 0) {
+            std::lock_guard<std::mutex> lock(m_setupMutex);
+            for (long k = 0; k < steps && !m_run->isDone(); ++k)
+                stepOnce();
+        } else {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        if (m_run->isDone() && m_running.exchange(false)) {
+            QMetaObject::invokeMethod(
+                this,
+                [this] {
+                    emit runningChanged(false);
+                    emit finished();
+                },
+                Qt::QueuedConnection);
+        }
+
+        const double wall = seconds(now - rateWall);
+        if (wall >= 0.5) {
+            m_realtimeFactor = running ? (m_run->time() - rateSim) / wall : 0.0;
+            rateWall = now;
+            rateSim = m_run->time();
+        }
+    }
+}
+
+void SimEngine::stepOnce()
+{
+    const bool manual = m_manual.load(std::memory_order_relaxed);
+    m_run->setOperatorOverride(manual ? m_manualOperator.get() : nullptr);
+    m_run->step(m_sink);
+    const double t = m_run->time();
+    m_simTime.store(t, std::memory_order_relaxed);
+    if (m_sceneFeed->wantsCapture()) {
+        const Perception &perception = m_run->perception();
+        const Feeling left = perception.feeling(Gripper::Left);
+        const Feeling right = perception.feeling(Gripper::Right);
+        m_sceneFeed->capture(m_run->world(), {left.shownConfirmation, left.shownWarning,
+                                              right.shownConfirmation, right.shownWarning});
+    }
+    if (t >= m_nextMetrics) {
+        m_nextMetrics = t + MetricsPeriod;
+        const QJsonObject metrics = m_run->metrics();
+        const int generation = m_generation;
+        QMetaObject::invokeMethod(
+            this,
+            [this, metrics, generation] {
+                if (generation == m_generation)
+                    m_history.setMetrics(metrics);
+            },
+            Qt::QueuedConnection);
+    }
+}
+
+} // namespace semhap
