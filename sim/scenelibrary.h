@@ -2,17 +2,12 @@
 #pragma once
 
 #include "mujocohandles.h"
+#include "sceneoptions.h"
 
 #include <QString>
 #include <QStringList>
 
 namespace semhap {
-
-/** Scene parameters a user may set (semhap run --cubes, the studio's scene picker). */
-struct SceneOptions
-{
-    int cubes = -1; ///< how many of the scene's cube_K bodies stay in play; -1: its default
-};
 
 /**
  * The bundled scenes (`:/semhap/scenes/NAME.xml`) and the loader of scene files. A scene

@@ -2,6 +2,7 @@
 #include "world.h"
 
 #include "mujocohandles.h"
+#include "scenelibrary.h"
 
 #include <QByteArray>
 
@@ -80,6 +81,11 @@ struct World::Private
 World::World() : d(std::make_unique<Private>()) {}
 
 World::~World() = default;
+
+QStringList World::builtinScenes()
+{
+    return SceneLibrary::builtinNames();
+}
 
 std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions &options,
                                    QString *error)

@@ -3,13 +3,18 @@
 
 #include "actortable.h"
 #include "contactframe.h"
-#include "scenelibrary.h"
+#include "sceneoptions.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <array>
 #include <memory>
 #include <vector>
+
+// MuJoCo's handles, for the renderer in sim/ (its header stays out of the others' way).
+struct mjModel_;
+struct mjData_;
 
 namespace semhap {
 
@@ -62,6 +67,8 @@ public:
     /** Loads a scene (built-in name or MJCF path); null with a one-line `error`. */
     static std::unique_ptr<World> load(const QString &nameOrPath, const SceneOptions &options,
                                        QString *error);
+    /** The bundled scenes' names, for pickers that must not see MuJoCo's headers. */
+    static QStringList builtinScenes();
     ~World();
 
     const QString &sceneName() const { return m_sceneName; }
@@ -106,8 +113,8 @@ public:
     const std::vector<Fracture> &fractures() const { return m_fractures; }
 
     /** The MuJoCo model and state, for the renderer (sim/ only). */
-    const struct mjModel_ *model() const;
-    const struct mjData_ *data() const;
+    const mjModel_ *model() const;
+    const mjData_ *data() const;
 
 private:
     World();
