@@ -1,0 +1,523 @@
+// SPDX-License-Identifier: MIT
+#include "mainwindow.h"
+
+#include "devicemanager.h"
+#include "devicespanel.h"
+#include "eventlogpanel.h"
+#include "keyboardteleop.h"
+#include "metricspanel.h"
+#include "plotpanel.h"
+#include "poseinput.h"
+#include "preferencesdialog.h"
+#include "routergraph.h"
+#include "simviewport.h"
+#include "world.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace semhap {
+
+namespace {
+
+/** The speeds the toolbar offers, slowest first; real time is the default. */
+constexpr double Speeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0};
+constexpr int RealTimeIndex = 3;
+constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
+
+/** Layouts saved by another version of the docks are not restored. */
+constexpr int LayoutVersion = 1;
+
+QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content,
+                      QWidget *parent)
+{
+    auto *dock = new QDockWidget(title, parent);
+    dock->setObjectName(name);
+    dock->setWidget(content);
+    return dock;
+}
+
+} // namespace
+
+MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
+    : QMainWindow(parent), m_options(options)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    m_viewport = new SimViewport(this);
+    setCentralWidget(m_viewport);
+    m_teleop = new KeyboardTeleop(this);
+    m_viewport->setTeleop(m_teleop);
+    m_poseInput = new PoseInput(this);
+
+    createActions();
+    createToolBar();
+    createDocks();
+    createMenus();
+    createStatusBar();
+    connectEngine();
+    m_defaultState = saveState(LayoutVersion);
+    restoreLayout();
+    if (!options.size.isEmpty())
+        resize(options.size);
+
+    m_engine.setSpeed(options.speed);
+    if (openRun(options.run) && options.autoRun)
+        m_engine.run();
+    if (options.posePort > 0) {
+        QString error;
+        if (!m_poseInput->listen(quint16(options.posePort), QHostAddress::LocalHost, &error))
+            statusBar()->showMessage(tr("Network pose input is off: %1").arg(error), 10000);
+    }
+}
+
+MainWindow::~MainWindow()
+{
+    // Before the engine goes: nothing may still write to its operator.
+    delete m_poseInput;
+    m_poseInput = nullptr;
+}
+
+bool MainWindow::openRun(const RunOptions &options)
+{
+    QString error;
+    if (!m_engine.load(options, &error)) {
+        showError(tr("Could not open %1 with %2").arg(options.scene, options.router), error);
+        syncPickers();
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::createActions()
+{
+    const auto action = [this](const QString &text, const QString &name,
+                               const QKeySequence &shortcut) {
+        auto *a = new QAction(text, this);
+        a->setObjectName(name);
+        a->setShortcut(shortcut);
+        if (!shortcut.isEmpty())
+            a->setToolTip(QStringLiteral("%1 (%2)").arg(text, shortcut.toString(
+                                                                 QKeySequence::NativeText)));
+        addAction(a);
+        return a;
+    };
+    m_runAction = action(tr("Run"), QStringLiteral("runAction"), Qt::Key_F5);
+    m_runAction->setCheckable(true);
+    m_runAction->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+    connect(m_runAction, &QAction::triggered, this, &MainWindow::toggleRunning);
+    m_stepAction = action(tr("Step"), QStringLiteral("stepAction"), Qt::Key_F6);
+    m_stepAction->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
+    connect(m_stepAction, &QAction::triggered, &m_engine, &SimEngine::step);
+    m_resetAction = action(tr("Reset"), QStringLiteral("resetAction"),
+                           QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_resetAction->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
+    connect(m_resetAction, &QAction::triggered, this, [this] {
+        QString error;
+        if (!m_engine.reset(&error))
+            showError(tr("Could not reset the run"), error);
+    });
+    m_slowerAction = action(tr("Slower"), QStringLiteral("slowerAction"),
+                            QKeySequence(Qt::CTRL | Qt::Key_Minus));
+    connect(m_slowerAction, &QAction::triggered, this,
+            [this] { setSpeedIndex(m_speedPicker->currentIndex() - 1); });
+    m_fasterAction = action(tr("Faster"), QStringLiteral("fasterAction"),
+                            QKeySequence(Qt::CTRL | Qt::Key_Plus));
+    connect(m_fasterAction, &QAction::triggered, this,
+            [this] { setSpeedIndex(m_speedPicker->currentIndex() + 1); });
+    m_realTimeAction = action(tr("Real time"), QStringLiteral("realTimeAction"),
+                              QKeySequence(Qt::CTRL | Qt::Key_0));
+    connect(m_realTimeAction, &QAction::triggered, this,
+            [this] { setSpeedIndex(RealTimeIndex); });
+
+    // Stop-all works from anywhere in the application, whatever has the focus.
+    m_stopAllAction = action(tr("Stop all"), QStringLiteral("stopAllAction"), Qt::Key_Escape);
+    m_stopAllAction->setShortcutContext(Qt::ApplicationShortcut);
+    m_stopAllAction->setToolTip(
+        tr("Pause the run and send every device to zero now (Esc, from anywhere)"));
+    connect(m_stopAllAction, &QAction::triggered, this, [this] {
+        m_engine.stopAll();
+        statusBar()->showMessage(tr("Stopped: every device was sent to zero."), 5000);
+    });
+
+    m_teleopAction = action(tr("Drive"), QStringLiteral("teleopAction"),
+                            QKeySequence(Qt::CTRL | Qt::Key_T));
+    m_teleopAction->setCheckable(true);
+    m_teleopAction->setToolTip(tr("Take the grippers over from the scripted operator "
+                                  "(Ctrl+T); any key or pose input does it too"));
+    connect(m_teleopAction, &QAction::toggled, &m_engine, &SimEngine::setManual);
+    m_forcesAction = action(tr("Contact forces"), QStringLiteral("forcesAction"),
+                            QKeySequence(Qt::CTRL | Qt::Key_F));
+    m_forcesAction->setCheckable(true);
+    m_forcesAction->setToolTip(tr("Show contact forces as arrows in the viewport"));
+    connect(m_forcesAction, &QAction::toggled, m_viewport, &SimViewport::setShowForces);
+    m_resetCameraAction = action(tr("Reset camera"), QStringLiteral("resetCameraAction"),
+                                 QKeySequence(Qt::CTRL | Qt::Key_Home));
+    connect(m_resetCameraAction, &QAction::triggered, m_viewport, &SimViewport::resetCamera);
+
+    m_openSceneAction = action(tr("Open scene…"), QStringLiteral("openSceneAction"),
+                               QKeySequence::Open);
+    connect(m_openSceneAction, &QAction::triggered, this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(),
+                                                          tr("MuJoCo scenes (*.xml)"));
+        if (file.isEmpty())
+            return;
+        RunOptions options = m_engine.options();
+        options.scene = file;
+        openRun(options);
+    });
+    m_openRouterAction = action(tr("Open router…"), QStringLiteral("openRouterAction"),
+                                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+    connect(m_openRouterAction, &QAction::triggered, this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Open router"), QString(),
+                                                          tr("semhap routers (*.json)"));
+        if (file.isEmpty())
+            return;
+        RunOptions options = m_engine.options();
+        options.router = file;
+        openRun(options);
+    });
+    m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
+                                 QKeySequence::Preferences);
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+    connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::showPreferences);
+    m_resetLayoutAction = action(tr("Reset layout"), QStringLiteral("resetLayoutAction"), {});
+    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+    m_quitAction = action(tr("Quit"), QStringLiteral("quitAction"), QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+    m_aboutAction = action(tr("About semhap"), QStringLiteral("aboutAction"), {});
+    connect(m_aboutAction, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About semhap"),
+                           tr("<p><b>semhap studio</b> %1</p><p>Semantic haptic feedback for "
+                              "robot teleoperation: contact forces become confirmations and "
+                              "exceptions, routed to patterns on wristbands.</p>")
+                               .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::createToolBar()
+{
+    QToolBar *bar = addToolBar(tr("Run"));
+    bar->setObjectName(QStringLiteral("runToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->addAction(m_runAction);
+    bar->addAction(m_stepAction);
+    bar->addAction(m_resetAction);
+    bar->addSeparator();
+
+    m_speedPicker = new QComboBox(bar);
+    m_speedPicker->setObjectName(QStringLiteral("speedPicker"));
+    m_speedPicker->setToolTip(tr("Simulated seconds per real second (Ctrl+- / Ctrl++)"));
+    for (double speed : Speeds) {
+        m_speedPicker->addItem(speed == 1.0 ? tr("Real time")
+                                            : tr("%1× speed").arg(QLocale().toString(speed)),
+                               speed);
+    }
+    m_speedPicker->setCurrentIndex(RealTimeIndex);
+    connect(m_speedPicker, &QComboBox::activated, this, &MainWindow::setSpeedIndex);
+    bar->addWidget(m_speedPicker);
+    bar->addSeparator();
+
+    bar->addWidget(new QLabel(tr("Scene:"), bar));
+    m_scenePicker = new QComboBox(bar);
+    m_scenePicker->setObjectName(QStringLiteral("scenePicker"));
+    m_scenePicker->setToolTip(tr("The task to simulate"));
+    for (const QString &name : World::builtinScenes())
+        m_scenePicker->addItem(name, name);
+    connect(m_scenePicker, &QComboBox::activated, this, &MainWindow::pickScene);
+    bar->addWidget(m_scenePicker);
+
+    bar->addWidget(new QLabel(tr("Router:"), bar));
+    m_routerPicker = new QComboBox(bar);
+    m_routerPicker->setObjectName(QStringLiteral("routerPicker"));
+    m_routerPicker->setToolTip(tr("Which feedback design turns events into patterns"));
+    for (const QString &name : RouterPresets::names())
+        m_routerPicker->addItem(name, name);
+    connect(m_routerPicker, &QComboBox::activated, this, &MainWindow::pickRouter);
+    bar->addWidget(m_routerPicker);
+    bar->addSeparator();
+    bar->addAction(m_teleopAction);
+    bar->addAction(m_forcesAction);
+
+    // Kept apart and in a colour of its own, so it is found without looking.
+    auto *spacer = new QWidget(bar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    bar->addWidget(spacer);
+    bar->addAction(m_stopAllAction);
+    if (QWidget *button = bar->widgetForAction(m_stopAllAction)) {
+        button->setObjectName(QStringLiteral("stopAllButton"));
+        button->setStyleSheet(QStringLiteral(
+            "QToolButton { background: #D55E00; color: white; font-weight: bold;"
+            " border-radius: 4px; padding: 4px 14px; }"
+            "QToolButton:pressed { background: #A04600; }"));
+    }
+}
+
+void MainWindow::createDocks()
+{
+    m_plots = new PlotPanel(m_engine.history(), this);
+    m_eventLog = new EventLogPanel(m_engine.history(), this);
+    m_devicesPanel = new DevicesPanel(m_engine.devices(), m_engine.history(), this);
+    m_metricsPanel = new MetricsPanel(m_engine.history(), this);
+
+    setDockNestingEnabled(true);
+    QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
+    QDockWidget *events =
+        makeDock(tr("Events"), QStringLiteral("eventsDock"), m_eventLog, this);
+    QDockWidget *devices =
+        makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
+    QDockWidget *metrics =
+        makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
+    addDockWidget(Qt::RightDockWidgetArea, plots);
+    addDockWidget(Qt::BottomDockWidgetArea, events);
+    addDockWidget(Qt::BottomDockWidgetArea, devices);
+    addDockWidget(Qt::BottomDockWidgetArea, metrics);
+    tabifyDockWidget(events, devices);
+    tabifyDockWidget(devices, metrics);
+    events->raise();
+    // The plots take the larger share of the width, the viewport the rest.
+    resizeDocks({plots}, {width() * 55 / 100}, Qt::Horizontal);
+    resizeDocks({events}, {height() * 28 / 100}, Qt::Vertical);
+
+    connect(m_eventLog, &EventLogPanel::eventActivated, m_plots, &PlotPanel::setCursorTime);
+    connect(m_devicesPanel, &DevicesPanel::bindRequested, this,
+            [this](const QString &name, const QString &uri) {
+                QString error;
+                if (!m_engine.bindDevice(name, uri, &error))
+                    showError(tr("Could not connect %1 to %2").arg(name, uri), error);
+                m_devicesPanel->refresh();
+            });
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_openSceneAction);
+    file->addAction(m_openRouterAction);
+    file->addSeparator();
+    file->addAction(m_preferencesAction);
+    file->addSeparator();
+    file->addAction(m_quitAction);
+
+    QMenu *run = menuBar()->addMenu(tr("&Run"));
+    run->addAction(m_runAction);
+    run->addAction(m_stepAction);
+    run->addAction(m_resetAction);
+    run->addSeparator();
+    run->addAction(m_slowerAction);
+    run->addAction(m_realTimeAction);
+    run->addAction(m_fasterAction);
+    run->addSeparator();
+    run->addAction(m_teleopAction);
+    run->addAction(m_stopAllAction);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_forcesAction);
+    view->addAction(m_resetCameraAction);
+    view->addSeparator();
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    view->addAction(m_resetLayoutAction);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_aboutAction);
+}
+
+void MainWindow::createStatusBar()
+{
+    const auto label = [this](const QString &name) {
+        auto *l = new QLabel(this);
+        l->setObjectName(name);
+        statusBar()->addPermanentWidget(l);
+        return l;
+    };
+    m_operatorLabel = label(QStringLiteral("operatorLabel"));
+    m_devicesLabel = label(QStringLiteral("devicesLabel"));
+    m_timeLabel = label(QStringLiteral("timeLabel"));
+    m_rateLabel = label(QStringLiteral("rateLabel"));
+    m_statusTimer.setInterval(250);
+    connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    m_statusTimer.start();
+}
+
+void MainWindow::connectEngine()
+{
+    connect(&m_engine, &SimEngine::loaded, this, [this] {
+        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
+        m_teleop->setTarget(m_engine.world(), m_engine.manualOperator());
+        m_poseInput->setOperator(m_engine.manualOperator());
+        m_devicesPanel->refresh();
+        syncPickers();
+        updateTitle();
+        updateStatus();
+    });
+    connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
+        m_runAction->setChecked(running);
+        m_runAction->setText(running ? tr("Pause") : tr("Run"));
+        m_runAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause
+                                                           : QStyle::SP_MediaPlay));
+        m_stepAction->setEnabled(!running);
+        updateStatus();
+    });
+    connect(&m_engine, &SimEngine::manualChanged, this, [this](bool manual) {
+        m_teleopAction->setChecked(manual);
+        m_viewport->setDriving(manual);
+        updateStatus();
+    });
+    connect(&m_engine, &SimEngine::finished, this, [this] {
+        statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
+    });
+    // Any teleoperation input hands the grippers to the user.
+    connect(m_teleop, &KeyboardTeleop::engaged, this, [this] { m_engine.setManual(true); });
+    connect(m_poseInput, &PoseInput::engaged, this, [this] { m_engine.setManual(true); });
+}
+
+void MainWindow::toggleRunning()
+{
+    if (m_engine.isRunning())
+        m_engine.pause();
+    else
+        m_engine.run();
+    m_runAction->setChecked(m_engine.isRunning());
+}
+
+void MainWindow::setSpeedIndex(int index)
+{
+    index = std::clamp(index, 0, SpeedCount - 1);
+    m_speedPicker->setCurrentIndex(index);
+    m_engine.setSpeed(Speeds[index]);
+}
+
+void MainWindow::pickScene(int index)
+{
+    RunOptions options = m_engine.options();
+    options.scene = m_scenePicker->itemData(index).toString();
+    options.sceneOptions = SceneOptions();
+    const bool running = m_engine.isRunning();
+    if (openRun(options) && running)
+        m_engine.run();
+}
+
+void MainWindow::pickRouter(int index)
+{
+    RunOptions options = m_engine.options();
+    options.router = m_routerPicker->itemData(index).toString();
+    options.overrides.clear();
+    const bool running = m_engine.isRunning();
+    if (openRun(options) && running)
+        m_engine.run();
+}
+
+void MainWindow::syncPickers()
+{
+    // A file opened from disk shows as an extra entry, so the picker never lies.
+    const auto sync = [](QComboBox *picker, const QString &value) {
+        int index = picker->findData(value);
+        if (index < 0) {
+            picker->addItem(QFileInfo(value).fileName(), value);
+            index = picker->count() - 1;
+        }
+        picker->setCurrentIndex(index);
+    };
+    sync(m_scenePicker, m_engine.options().scene);
+    sync(m_routerPicker, m_engine.options().router);
+    int speed = RealTimeIndex;
+    for (int i = 0; i < SpeedCount; ++i) {
+        if (std::abs(Speeds[i] - m_engine.speed()) < 1e-9)
+            speed = i;
+    }
+    m_speedPicker->setCurrentIndex(speed);
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("semhap studio — %1 · %2")
+                       .arg(QFileInfo(m_engine.options().scene).completeBaseName(),
+                            QFileInfo(m_engine.options().router).completeBaseName()));
+}
+
+void MainWindow::updateStatus()
+{
+    const QLocale locale;
+    m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
+    m_rateLabel->setText(m_engine.isRunning()
+                             ? tr("%1× real time")
+                                   .arg(locale.toString(m_engine.realtimeFactor(), 'f', 2))
+                             : tr("paused"));
+    m_operatorLabel->setText(m_engine.isManual() ? tr("You are driving")
+                                                 : tr("Operator: %1")
+                                                       .arg(m_engine.options().operatorName));
+    int connected = 0;
+    int virtualCount = 0;
+    int down = 0;
+    for (const BoundDevice &device : m_engine.devices().status()) {
+        if (device.uri.startsWith(QLatin1String("virtual:")))
+            ++virtualCount;
+        else if (device.status.connected)
+            ++connected;
+        else
+            ++down;
+    }
+    QString devices = tr("Devices: %1 virtual, %2 connected").arg(virtualCount).arg(connected);
+    if (down > 0)
+        devices += tr(", %1 not connected").arg(down);
+    m_devicesLabel->setText(devices);
+}
+
+void MainWindow::showError(const QString &what, const QString &error)
+{
+    statusBar()->showMessage(QStringLiteral("%1: %2").arg(what, error), 15000);
+    // Not modal: a running session keeps going while the message is read.
+    auto *box = new QMessageBox(QMessageBox::Warning, tr("semhap studio"), what,
+                                QMessageBox::Ok, this);
+    box->setInformativeText(error);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::showPreferences()
+{
+    PreferencesDialog dialog(this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    if (dialog.languageChanged())
+        emit languageChangeRequested(dialog.language());
+}
+
+void MainWindow::restoreLayout()
+{
+    if (!m_options.restoreLayout)
+        return;
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), LayoutVersion);
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState, LayoutVersion);
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        dock->show();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    m_engine.stopAll();
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState(LayoutVersion));
+    event->accept();
+}
+
+} // namespace semhap

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "simengine.h"
+#include "studiooptions.h"
+
+#include <QMainWindow>
+
+class QActionGroup;
+class QComboBox;
+class QLabel;
+
+namespace semhap {
+
+class DevicesPanel;
+class EventLogPanel;
+class KeyboardTeleop;
+class MetricsPanel;
+class PlotPanel;
+class PoseInput;
+class SimViewport;
+
+/**
+ * The studio's window: the simulation viewport in the middle, docks for the live plots,
+ * the event log, the devices and the task metrics, a toolbar that runs, pauses, steps,
+ * resets and paces the run and picks scene and router, and a stop-all that always works.
+ * The dock layout is saved on close and restored on the next start.
+ */
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(const StudioOptions &options, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    SimEngine &engine() { return m_engine; }
+    SimViewport *viewport() const { return m_viewport; }
+    PlotPanel *plots() const { return m_plots; }
+    EventLogPanel *eventLog() const { return m_eventLog; }
+    DevicesPanel *devicesPanel() const { return m_devicesPanel; }
+    MetricsPanel *metricsPanel() const { return m_metricsPanel; }
+    QComboBox *scenePicker() const { return m_scenePicker; }
+    QComboBox *routerPicker() const { return m_routerPicker; }
+    QComboBox *speedPicker() const { return m_speedPicker; }
+
+    /** Loads a run (scene, router, ...) and shows what went wrong, if anything. */
+    bool openRun(const RunOptions &options);
+
+signals:
+    /** The user chose another interface language (its code, empty: the system's). */
+    void languageChangeRequested(const QString &language);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createActions();
+    void createToolBar();
+    void createDocks();
+    void createMenus();
+    void createStatusBar();
+    void connectEngine();
+    void restoreLayout();
+    void resetLayout();
+    void updateStatus();
+    void updateTitle();
+    void syncPickers();
+    void showError(const QString &what, const QString &error);
+    void pickScene(int index);
+    void pickRouter(int index);
+    void setSpeedIndex(int index);
+    void showPreferences();
+    void toggleRunning();
+
+    StudioOptions m_options;
+    SimEngine m_engine;
+    SimViewport *m_viewport = nullptr;
+    KeyboardTeleop *m_teleop = nullptr;
+    PoseInput *m_poseInput = nullptr;
+    PlotPanel *m_plots = nullptr;
+    EventLogPanel *m_eventLog = nullptr;
+    DevicesPanel *m_devicesPanel = nullptr;
+    MetricsPanel *m_metricsPanel = nullptr;
+    QComboBox *m_scenePicker = nullptr;
+    QComboBox *m_routerPicker = nullptr;
+    QComboBox *m_speedPicker = nullptr;
+    QLabel *m_timeLabel = nullptr;
+    QLabel *m_rateLabel = nullptr;
+    QLabel *m_operatorLabel = nullptr;
+    QLabel *m_devicesLabel = nullptr;
+    QTimer m_statusTimer;
+    QByteArray m_defaultState; ///< the dock layout as built, for "Reset layout"
+
+    QAction *m_runAction = nullptr;
+    QAction *m_stepAction = nullptr;
+    QAction *m_resetAction = nullptr;
+    QAction *m_slowerAction = nullptr;
+    QAction *m_fasterAction = nullptr;
+    QAction *m_realTimeAction = nullptr;
+    QAction *m_stopAllAction = nullptr;
+    QAction *m_teleopAction = nullptr;
+    QAction *m_forcesAction = nullptr;
+    QAction *m_openSceneAction = nullptr;
+    QAction *m_openRouterAction = nullptr;
+    QAction *m_preferencesAction = nullptr;
+    QAction *m_resetLayoutAction = nullptr;
+    QAction *m_resetCameraAction = nullptr;
+    QAction *m_quitAction = nullptr;
+    QAction *m_aboutAction = nullptr;
+};
+
+} // namespace semhap

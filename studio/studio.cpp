@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+#include "studio.h"
+
+#include "mainwindow.h"
+#include "preferencesdialog.h"
+
+#include <QApplication>
+#include <QLibraryInfo>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace semhap {
+
+Studio::Studio(const StudioOptions &options, QObject *parent)
+    : QObject(parent), m_options(options)
+{
+    QString language = options.language;
+    if (language.isEmpty())
+        language = PreferencesDialog::savedLanguage();
+    install(language);
+}
+
+Studio::~Studio() = default;
+
+void Studio::install(const QString &language)
+{
+    QCoreApplication::removeTranslator(&m_translator);
+    QCoreApplication::removeTranslator(&m_qtTranslator);
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    // English is the source language: it needs no file, and other locales fall back to it.
+    m_language = QStringLiteral("en");
+    if (m_translator.load(locale, QStringLiteral("semhap"), QStringLiteral("_"),
+                          QStringLiteral(":/i18n"))) {
+        QCoreApplication::installTranslator(&m_translator);
+        m_language = locale.name().section(QLatin1Char('_'), 0, 0);
+    }
+    // Qt's own strings (standard buttons, dialogs), where the system has them.
+    if (m_qtTranslator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QCoreApplication::installTranslator(&m_qtTranslator);
+    QLocale::setDefault(QLocale(m_language));
+}
+
+void Studio::buildWindow()
+{
+    m_window = std::make_unique<MainWindow>(m_options);
+    connect(m_window.get(), &MainWindow::languageChangeRequested, this, &Studio::setLanguage,
+            Qt::QueuedConnection);
+    m_window->show();
+}
+
+void Studio::start()
+{
+    buildWindow();
+    if (m_options.quitAfter < 0)
+        return;
+    QTimer::singleShot(int(m_options.quitAfter * 1000), this, [this] {
+        int code = 0;
+        if (!m_options.screenshot.isEmpty()) {
+            QString error;
+            if (screenshot(m_window.get(), m_options.screenshot, &error)) {
+                std::printf("%s\n", qPrintable(m_options.screenshot));
+            } else {
+                std::fprintf(stderr, "semhap-studio: %s\n", qPrintable(error));
+                code = 1;
+            }
+        }
+        m_window->close();
+        QCoreApplication::exit(code);
+    });
+}
+
+void Studio::setLanguage(const QString &language)
+{
+    // The new window opens where the old one was, with its layout (saved on close).
+    m_options.size = QSize();
+    m_options.restoreLayout = true;
+    if (m_window)
+        m_window->close();
+    m_window.reset();
+    install(language);
+    buildWindow();
+    emit windowRebuilt();
+}
+
+bool Studio::screenshot(QWidget *window, const QString &path, QString *error)
+{
+    const QPixmap image = window->grab();
+    if (image.isNull() || !image.save(path, "PNG")) {
+        *error = tr("%1: could not write the screenshot").arg(path);
+        return false;
+    }
+    return true;
+}
+
+} // namespace semhap

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// The studio's command line: defaults are the embedded ones (box_and_block, C3, scripted,
+// running at real time), every option reaches its field, and bad values say what is wrong.
+#include "studiooptions.h"
+
+#include <QTest>
+
+using namespace semhap;
+
+class TestStudioOptions : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void defaults();
+    void options();
+    void rejects_data();
+    void rejects();
+    void help();
+};
+
+namespace {
+
+bool parse(const QStringList &args, StudioOptions *options, QString *message)
+{
+    bool help = false;
+    return StudioOptions::parse(args, options, message, &help);
+}
+
+} // namespace
+
+void TestStudioOptions::defaults()
+{
+    StudioOptions o;
+    QString message;
+    QVERIFY2(parse({}, &o, &message), qPrintable(message));
+    QCOMPARE(o.run.scene, QString("box_and_block"));
+    QCOMPARE(o.run.router, QString("C3"));
+    QCOMPARE(o.run.operatorName, QString("scripted"));
+    QVERIFY(o.run.duration >= 3600.0); // the studio runs until stopped
+    QVERIFY(o.autoRun);
+    QCOMPARE(o.speed, 1.0);
+    QVERIFY(o.screenshot.isEmpty());
+    QVERIFY(o.quitAfter < 0);
+    QVERIFY(o.restoreLayout);
+    QCOMPARE(o.posePort, 9870);
+}
+
+void TestStudioOptions::options()
+{
+    StudioOptions o;
+    QString message;
+    QVERIFY2(parse({"--scene", "bimanual_sorting", "--router", "C1", "--operator", "reactive",
+                    "--seed", "7", "--cubes", "4", "--speed", "0.5", "--paused", "--screenshot",
+                    "a.png", "--quit-after", "2.5", "--size", "1920x1080", "--language", "de",
+                    "--pose-port", "0", "--default-layout"},
+                   &o, &message),
+             qPrintable(message));
+    QCOMPARE(o.run.scene, QString("bimanual_sorting"));
+    QCOMPARE(o.run.router, QString("C1"));
+    QCOMPARE(o.run.operatorName, QString("reactive"));
+    QCOMPARE(o.run.seed, std::uint64_t(7));
+    QCOMPARE(o.run.sceneOptions.cubes, 4);
+    QCOMPARE(o.speed, 0.5);
+    QVERIFY(!o.autoRun);
+    QCOMPARE(o.screenshot, QString("a.png"));
+    QCOMPARE(o.quitAfter, 2.5);
+    QCOMPARE(o.size, QSize(1920, 1080));
+    QCOMPARE(o.language, QString("de"));
+    QCOMPARE(o.posePort, 0);
+    QVERIFY(!o.restoreLayout);
+
+    // A screenshot alone grabs once the studio has run a moment.
+    QVERIFY(parse({"--screenshot", "b.png"}, &o, &message));
+    QVERIFY(o.quitAfter > 0);
+}
+
+void TestStudioOptions::rejects_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("unknown option") << QStringList{"--bogus"} << "bogus";
+    QTest::newRow("missing value") << QStringList{"--scene"} << "scene";
+    QTest::newRow("speed not a number") << QStringList{"--speed", "fast"} << "--speed";
+    QTest::newRow("speed too high") << QStringList{"--speed", "1000"} << "0.01 to 100";
+    QTest::newRow("negative seed") << QStringList{"--seed", "-1"} << "--seed";
+    QTest::newRow("bad size") << QStringList{"--size", "big"} << "WIDTHxHEIGHT";
+    QTest::newRow("tiny size") << QStringList{"--size", "10x10"} << "10x10";
+    QTest::newRow("language") << QStringList{"--language", "fr"} << "en or de";
+    QTest::newRow("port") << QStringList{"--pose-port", "70000"} << "--pose-port";
+    QTest::newRow("positional") << QStringList{"scene.xml"} << "scene.xml";
+}
+
+void TestStudioOptions::rejects()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    StudioOptions o;
+    QString message;
+    bool help = true;
+    QVERIFY(!StudioOptions::parse(args, &o, &message, &help));
+    QVERIFY(!help);
+    QVERIFY2(message.contains(expected), qPrintable(message));
+}
+
+void TestStudioOptions::help()
+{
+    StudioOptions o;
+    QString message;
+    bool help = false;
+    QVERIFY(!StudioOptions::parse({"--help"}, &o, &message, &help));
+    QVERIFY(help);
+    QVERIFY(message.contains("--screenshot"));
+    QVERIFY(message.contains("--router"));
+}
+
+QTEST_GUILESS_MAIN(TestStudioOptions)
+#include "tst_studiooptions.moc"
