@@ -51,9 +51,9 @@ QString statusDetails(const BoundDevice &bound)
     parts.append(DevicesPanel::tr("%1 frames/s").arg(s.framesPerSecond, 0, 'f', 0));
     if (s.roundTripMs >= 0.0)
         parts.append(DevicesPanel::tr("RTT %1 ms").arg(s.roundTripMs, 0, 'f', 1));
-    parts.append(DevicesPanel::tr("%n error(s)", nullptr, int(s.errors)));
+    parts.append(DevicesPanel::tr("errors: %1").arg(s.errors));
     if (s.reconnects > 0)
-        parts.append(DevicesPanel::tr("%n reconnect(s)", nullptr, int(s.reconnects)));
+        parts.append(DevicesPanel::tr("reconnects: %1").arg(s.reconnects));
     parts.append(s.armed ? DevicesPanel::tr("armed") : DevicesPanel::tr("disarmed"));
     QString text = parts.join(QStringLiteral(" · "));
     if (!s.connected && !s.lastError.isEmpty())
@@ -84,7 +84,8 @@ struct DevicesPanel::Row
 DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget *parent)
     : QWidget(parent), m_manager(manager), m_history(history), m_present(new QTreeWidget(this)),
       m_address(new QLineEdit(this)), m_message(new QLabel(this)), m_armed(new QLabel(this)),
-      m_pollTimer(new QTimer(this)), m_statusTimer(new QTimer(this))
+      m_pollTimer(new QTimer(this)), m_statusTimer(new QTimer(this)),
+      m_splitter(new QSplitter(Qt::Vertical, this))
 {
     // What is present.
     m_present->setObjectName(QStringLiteral("presentList"));
@@ -142,15 +143,14 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget
     routerLayout->addLayout(armRow);
     routerLayout->addWidget(armNote);
 
-    auto *splitter = new QSplitter(Qt::Vertical, this);
-    splitter->addWidget(presentBox);
-    splitter->addWidget(routerBox);
-    splitter->setStretchFactor(0, 1);
-    splitter->setStretchFactor(1, 3);
-    splitter->setChildrenCollapsible(false);
+    m_splitter->addWidget(presentBox);
+    m_splitter->addWidget(routerBox);
+    m_splitter->setStretchFactor(0, 1);
+    m_splitter->setStretchFactor(1, 3);
+    m_splitter->setChildrenCollapsible(false);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addWidget(splitter);
+    layout->addWidget(m_splitter);
 
     connect(add, &QPushButton::clicked, this, &DevicesPanel::addAddress);
     connect(m_address, &QLineEdit::returnPressed, this, &DevicesPanel::addAddress);
@@ -179,6 +179,17 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget
 }
 
 DevicesPanel::~DevicesPanel() = default;
+
+void DevicesPanel::showEvent(QShowEvent *event)
+{
+    // A quarter for the listing: the splitter would give it its (tall) size hint.
+    if (!m_splitterPlaced) {
+        m_splitterPlaced = true;
+        const int height = m_splitter->height();
+        m_splitter->setSizes({height / 4, height - height / 4});
+    }
+    QWidget::showEvent(event);
+}
 
 void DevicesPanel::rescan()
 {

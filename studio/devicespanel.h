@@ -9,6 +9,7 @@
 
 class QLabel;
 class QLineEdit;
+class QSplitter;
 class QTimer;
 class QTreeWidget;
 class QVBoxLayout;
@@ -45,6 +46,9 @@ signals:
      */
     void bindRequested(const QString &name, const QString &uri);
 
+protected:
+    void showEvent(QShowEvent *event) override;
+
 private:
     struct Row;
 
@@ -63,6 +67,8 @@ private:
     QLabel *m_armed = nullptr;
     QTimer *m_pollTimer = nullptr;
     QTimer *m_statusTimer = nullptr;
+    QSplitter *m_splitter = nullptr;
+    bool m_splitterPlaced = false;
     std::vector<std::unique_ptr<Row>> m_rows;
     QStringList m_presentUris;
 };

@@ -13,6 +13,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace semhap {
 
 /** Hides events that do not match the panel's choices (-1 means any) and text. */
@@ -113,15 +115,21 @@ EventLogPanel::EventLogPanel(LiveHistory &history, QWidget *parent)
     m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     m_view->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     QHeaderView *header = m_view->horizontalHeader();
-    header->setStretchLastSection(false);
-    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setSectionResizeMode(QHeaderView::Fixed);
     header->setSectionResizeMode(EventLogModel::DetectorColumn, QHeaderView::Stretch);
-    const int digit = fontMetrics().horizontalAdvance(QLatin1Char('0'));
-    header->resizeSection(EventLogModel::TimeColumn, digit * 9);
-    header->resizeSection(EventLogModel::GripperColumn, digit * 8);
-    header->resizeSection(EventLogModel::MessageColumn, digit * 10);
-    header->resizeSection(EventLogModel::PhaseColumn, digit * 8);
-    header->resizeSection(EventLogModel::IntensityColumn, digit * 9);
+    // Widths from the header and a widest value, not measured rows: appends stay cheap.
+    const QList<QPair<int, QString>> widest = {
+        {EventLogModel::TimeColumn, QStringLiteral("000.000")},
+        {EventLogModel::GripperColumn, gripperName(Gripper::Right)},
+        {EventLogModel::MessageColumn, QStringLiteral("WW ") + messageName(Message::Break)},
+        {EventLogModel::PhaseColumn, eventPhaseName(EventPhase::Update)},
+        {EventLogModel::IntensityColumn, QStringLiteral("0.00")}};
+    for (const auto &[column, sample] : widest) {
+        const QString title = m_model->headerData(column, Qt::Horizontal).toString();
+        header->resizeSection(column, std::max(header->fontMetrics().horizontalAdvance(title),
+                                               fontMetrics().horizontalAdvance(sample)) +
+                                          16);
+    }
 
     auto *top = new QHBoxLayout;
     top->addWidget(m_text, 1);

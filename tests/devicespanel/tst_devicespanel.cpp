@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 
 #include <atomic>
@@ -131,6 +132,7 @@ private slots:
     void addAddress_data();
     void addAddress();
     void connectToEmulator();
+    void screenshot();
 };
 
 void TestDevicesPanel::addAddress_data()
@@ -232,6 +234,70 @@ void TestDevicesPanel::connectToEmulator()
     QVERIFY(!f.child<QPushButton>(QStringLiteral("disconnect:") + Band)->isEnabled());
     // The band's watchdog takes it to rest once the host has gone.
     QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+/** With SEMHAP_SCREENSHOTS=DIR: the panel of a bimanual run, for docs/screenshots. */
+void TestDevicesPanel::screenshot()
+{
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (dir.isEmpty())
+        QSKIP("set SEMHAP_SCREENSHOTS to a folder to write the screenshot");
+    EmulatorOptions options;
+    options.model = DeviceModelLibrary::builtin(QStringLiteral("pneumatic6"));
+    options.udp = true;
+    Emulator emulator(options);
+    QString error;
+    QVERIFY2(emulator.open(&error), qPrintable(error));
+    std::atomic<bool> quit{false};
+    std::thread thread([&] { emulator.run([&] { return quit.load(); }); });
+
+    LiveHistory history;
+    DeviceManager manager;
+    const DeviceModelPtr air = options.model;
+    const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+    history.start({{QStringLiteral("right.air"), air->name(), air->channelNames()},
+                   {QStringLiteral("left.air"), air->name(), air->channelNames()},
+                   {QStringLiteral("right.vibro"), lra4->name(), lra4->channelNames()}},
+                  {}, {});
+    manager.addConfigured(emulator.uri());
+    manager.bind(QStringLiteral("right.air"), emulator.uri(), air, &error);
+    manager.bind(QStringLiteral("left.air"), QStringLiteral("virtual:left.air"), air, &error);
+    manager.bind(QStringLiteral("right.vibro"), QStringLiteral("udp:127.0.0.1:9"), lra4, &error);
+    manager.armAll(true);
+    const std::vector<std::vector<double>> levels = {
+        {0.62, 0.58, 0.4, 0.0, 0.12, 0.3}, {0.2, 0.2, 0.2, 0.2, 0.2, 0.2}, {0.8, 0.0, 0.8, 0.0}};
+    for (int d = 0; d < 3; ++d) {
+        DeviceFrame frame;
+        frame.t = 12.5;
+        frame.device = d;
+        frame.channelCount = int(levels[size_t(d)].size());
+        std::copy(levels[size_t(d)].begin(), levels[size_t(d)].end(), frame.values.begin());
+        history.append(frame);
+    }
+    history.commit();
+    // Keep the band fed at 100 frames/s, as a run would.
+    QTimer feed;
+    QObject::connect(&feed, &QTimer::timeout, [&] {
+        DeviceFrame frame;
+        frame.channelCount = int(levels[0].size());
+        std::copy(levels[0].begin(), levels[0].end(), frame.values.begin());
+        manager.transport(QStringLiteral("right.air"))->send(frame);
+    });
+    feed.start(10);
+    DevicesPanel panel(manager, history);
+    for (const QSize size : {QSize(420, 600), QSize(640, 800)}) {
+        panel.resize(size);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTRY_COMPARE_WITH_TIMEOUT(
+            panel.findChild<QLabel *>(QStringLiteral("state:right.air"))->text(),
+            QStringLiteral("connected"), 5000);
+        QTest::qWait(1200); // a second of rates
+        QVERIFY(panel.grab().save(
+            QStringLiteral("%1/devices-%2x%3.png").arg(dir).arg(size.width()).arg(size.height())));
+    }
+    quit = true;
+    thread.join();
 }
 
 QTEST_MAIN(TestDevicesPanel)

@@ -9,6 +9,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
@@ -103,9 +104,11 @@ private slots:
     void clickReportsTheTime();
     void followKeepsTheNewestInView();
     void resetClears();
+    void longRunStaysCapped();
     void metrics_data();
     void metrics();
     void metricsRowsFollowTheKeys();
+    void screenshot();
 };
 
 void TestEventLog::rowsShowTheEvents()
@@ -276,6 +279,33 @@ void TestEventLog::resetClears()
     QCOMPARE(visibleTimes(panel.view()), QStringList{"1.000"});
 }
 
+void TestEventLog::longRunStaysCapped()
+{
+    LiveHistory history;
+    startRun(history);
+    EventLogPanel panel(history);
+    panel.resize(640, 800);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QElapsedTimer clock;
+    clock.start();
+    const int updates = 300;
+    for (int u = 0; u < updates; ++u) {
+        for (int i = 0; i < 50; ++i)
+            history.append(makeEvent(u * 0.05 + i * 0.001, Gripper::Right, 1, DetectorKind::Force,
+                                     Message::Grasp, EventPhase::Update, 0.5));
+        history.commit();
+        QCoreApplication::processEvents();
+    }
+    const double perUpdateMs = double(clock.elapsed()) / updates;
+    qInfo("%d events in %d updates: %.2f ms per update, repaints included", updates * 50, updates,
+          perUpdateMs);
+    QCOMPARE(panel.model()->rowCount(), panel.model()->maxRows());
+    QCOMPARE(panel.model()->maxRows(), 10000);
+    QCOMPARE(panel.view()->verticalScrollBar()->value(),
+             panel.view()->verticalScrollBar()->maximum());
+}
+
 void TestEventLog::metrics_data()
 {
     QTest::addColumn<QString>("key");
@@ -350,6 +380,72 @@ void TestEventLog::metricsRowsFollowTheKeys()
     // A new run forgets them.
     history.start({}, {}, {});
     QTRY_VERIFY(!panel.findChild<QLabel *>(QStringLiteral("custom.left")));
+}
+
+/** With SEMHAP_SCREENSHOTS=DIR: the log and the metrics of a minute's run, for the docs. */
+void TestEventLog::screenshot()
+{
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (dir.isEmpty())
+        QSKIP("set SEMHAP_SCREENSHOTS to a folder to write the screenshot");
+    LiveHistory history;
+    startRun(history);
+    EventLogPanel log(history);
+    MetricsPanel metrics(history);
+    // Cycles of a transfer: grasp with updates, now and then a slip or a break warning.
+    for (int cycle = 0; cycle < 12; ++cycle) {
+        const double t0 = cycle * 4.7;
+        const Gripper hand = cycle % 3 == 2 ? Gripper::Left : Gripper::Right;
+        const int node = hand == Gripper::Left ? 0 : 1;
+        history.append(makeEvent(t0, hand, node, DetectorKind::Force, Message::Grasp,
+                                 EventPhase::Begin, 0.42));
+        history.append(makeEvent(t0 + 0.35, hand, node, DetectorKind::Force, Message::Grasp,
+                                 EventPhase::Update, 0.61));
+        if (cycle % 4 == 1) {
+            history.append(makeEvent(t0 + 1.2, Gripper::Right, 2, DetectorKind::Slip,
+                                     Message::Slip, EventPhase::Begin, 0.73));
+            history.append(makeEvent(t0 + 1.55, Gripper::Right, 2, DetectorKind::Slip,
+                                     Message::Slip, EventPhase::End, 0.2));
+        }
+        if (cycle % 5 == 3) {
+            history.append(makeEvent(t0 + 1.8, hand, node, DetectorKind::Force, Message::Break,
+                                     EventPhase::Begin, 0.88));
+            history.append(makeEvent(t0 + 2.1, hand, node, DetectorKind::Force, Message::Break,
+                                     EventPhase::End, 1.0));
+        }
+        history.append(makeEvent(t0 + 2.9, hand, node, DetectorKind::Force, Message::Grasp,
+                                 EventPhase::End, 0.35));
+        history.commit();
+    }
+    history.setMetrics(QJsonObject{{"cubes_transferred", 9},
+                                   {"cubes_dropped", 1},
+                                   {"cubes_broken", 2},
+                                   {"grasps", 12},
+                                   {"average_grasp_force", 6.834},
+                                   {"grasps_per_transfer", 12.0 / 9.0},
+                                   {"average_peak_grasp_force", 11.27},
+                                   {"warning_lead_time", 0.412},
+                                   {"breaks_warned_share", 0.5},
+                                   {"sim_seconds", 56.4},
+                                   {"wall_seconds", 57.1},
+                                   {"realtime_factor", 0.988},
+                                   {"scene", "box_and_block"},
+                                   {"router", "C3"},
+                                   {"operator", "scripted"},
+                                   {"seed", 7}});
+    for (const QSize size : {QSize(420, 600), QSize(640, 800)}) {
+        for (QWidget *panel : {static_cast<QWidget *>(&log), static_cast<QWidget *>(&metrics)}) {
+            panel->resize(size);
+            panel->show();
+            QVERIFY(QTest::qWaitForWindowExposed(panel));
+            const QString name =
+                panel == &log ? QStringLiteral("eventlog") : QStringLiteral("metrics");
+            QVERIFY(panel->grab().save(QStringLiteral("%1/%2-%3x%4.png")
+                                           .arg(dir, name)
+                                           .arg(size.width())
+                                           .arg(size.height())));
+        }
+    }
 }
 
 QTEST_MAIN(TestEventLog)
