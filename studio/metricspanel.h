@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QJsonValue>
+#include <QWidget>
+
+class QFormLayout;
+class QLabel;
+
+namespace semhap {
+
+class LiveHistory;
+
+/**
+ * The task metrics of the running session (TaskMonitor's, docs/metrics.md) as a live form:
+ * human labels for the keys the studio knows, raw keys for others, nested objects
+ * flattened as `a.b`, and each value formatted for its kind (counts, rates, seconds).
+ */
+class MetricsPanel : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit MetricsPanel(LiveHistory &history, QWidget *parent = nullptr);
+
+    /** The label shown for a (flattened) metrics key: a translated name, or the key. */
+    static QString label(const QString &key);
+    /** A metric's value as shown: counts as integers, rates to 2 decimals, units added. */
+    static QString format(const QString &key, const QJsonValue &value);
+
+    /** Reads the history's metrics again (connected to `metricsChanged()`). */
+    void refresh();
+
+private:
+    LiveHistory &m_history;
+    QFormLayout *m_form = nullptr;
+    QLabel *m_empty = nullptr;
+    QStringList m_keys; ///< the rows shown, in order
+};
+
+} // namespace semhap

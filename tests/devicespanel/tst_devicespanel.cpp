@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: MIT
+// The devices panel end to end without hardware: an emulated band on UDP loopback is added
+// through the panel's address field, chosen in the router device's row and connected with
+// the row's button; its state, the frames reaching the band, the level meters, arming and
+// the fall back to the virtual device on disconnect are checked in the panel.
+#include "devicemanager.h"
+#include "devicespanel.h"
+#include "emulator.h"
+#include "levelmeter.h"
+#include "livehistory.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+#include <QTreeWidget>
+
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+using namespace semhap;
+
+namespace {
+
+const QString Band = QStringLiteral("right.vibro");
+
+/** An emulated lra4 band serving UDP loopback on its own thread while the test runs. */
+class EmulatedBand
+{
+public:
+    EmulatedBand() : m_emulator(options()) {}
+    ~EmulatedBand()
+    {
+        m_quit = true;
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    bool start(QString *error)
+    {
+        if (!m_emulator.open(error))
+            return false;
+        m_thread = std::thread([this] { m_emulator.run([this] { return m_quit.load(); }); });
+        return true;
+    }
+    QString uri() const { return m_emulator.uri(); }
+    Emulator::State state() const { return m_emulator.state(); }
+
+private:
+    static EmulatorOptions options()
+    {
+        EmulatorOptions options;
+        options.model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+        options.udp = true;
+        return options;
+    }
+
+    Emulator m_emulator;
+    std::atomic<bool> m_quit{false};
+    std::thread m_thread;
+};
+
+/** A panel on a one-device run whose bind requests the manager carries out at once. */
+struct Fixture
+{
+    LiveHistory history;
+    DeviceManager manager;
+    DevicesPanel panel{manager, history};
+
+    Fixture()
+    {
+        const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+        history.start({{Band, lra4->name(), lra4->channelNames()}}, {}, {});
+        QObject::connect(
+            &panel, &DevicesPanel::bindRequested, &panel,
+            [this](const QString &name, const QString &uri) {
+                QString error;
+                for (const LiveDevice &device : history.devices()) {
+                    if (device.name == name)
+                        manager.bind(name, uri, DeviceModelLibrary::builtin(device.model), &error);
+                }
+                panel.refresh();
+            });
+        panel.resize(420, 600);
+        panel.show();
+    }
+    template<typename T> T *child(const QString &name) const { return panel.findChild<T *>(name); }
+    void click(const QString &button) const
+    {
+        QTest::mouseClick(child<QPushButton>(button), Qt::LeftButton);
+    }
+    void addAddress(const QString &uri) const
+    {
+        QTest::keyClicks(child<QLineEdit>(QStringLiteral("address")), uri);
+        click(QStringLiteral("addButton"));
+    }
+    QStringList presentUris() const
+    {
+        QStringList uris;
+        const auto *list = child<QTreeWidget>(QStringLiteral("presentList"));
+        for (int i = 0; i < list->topLevelItemCount(); ++i)
+            uris.append(list->topLevelItem(i)->text(1));
+        return uris;
+    }
+    QString state() const { return child<QLabel>(QStringLiteral("state:") + Band)->text(); }
+};
+
+/** Picks `text` in an editable combo box with the arrow keys, as a user would. */
+bool choose(QComboBox *box, const QString &text)
+{
+    box->setFocus();
+    for (const Qt::Key key : {Qt::Key_Up, Qt::Key_Down}) {
+        for (int i = 0; i <= box->count(); ++i) {
+            if (box->currentText() == text)
+                return true;
+            QTest::keyClick(box, key);
+        }
+    }
+    return box->currentText() == text;
+}
+
+} // namespace
+
+class TestDevicesPanel : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void addAddress_data();
+    void addAddress();
+    void connectToEmulator();
+    void screenshot();
+};
+
+void TestDevicesPanel::addAddress_data()
+{
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("listed"); ///< empty: rejected with a message
+    QTest::newRow("udp") << "udp:127.0.0.1:9000"
+                         << "udp:127.0.0.1:9000";
+    QTest::newRow("pty") << "serial:/dev/pts/3"
+                         << "serial:/dev/pts/3";
+    QTest::newRow("virtual") << " virtual:x "
+                             << "virtual:x";
+    QTest::newRow("bad scheme") << "usb:1"
+                                << "";
+    QTest::newRow("no port") << "udp:127.0.0.1"
+                             << "";
+}
+
+void TestDevicesPanel::addAddress()
+{
+    QFETCH(QString, typed);
+    QFETCH(QString, listed);
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.panel));
+    f.addAddress(typed);
+    auto *message = f.child<QLabel>(QStringLiteral("message"));
+    QCOMPARE(message->isVisible(), listed.isEmpty());
+    if (listed.isEmpty()) {
+        QVERIFY(!message->text().isEmpty());
+        return;
+    }
+    QVERIFY(f.presentUris().contains(listed));
+    QCOMPARE(f.presentUris().last(), listed);
+    QVERIFY(f.child<QComboBox>(QStringLiteral("uri:") + Band)->findText(listed) >= 0);
+    QVERIFY(f.child<QLineEdit>(QStringLiteral("address"))->text().isEmpty());
+}
+
+void TestDevicesPanel::connectToEmulator()
+{
+    EmulatedBand band;
+    QString error;
+    QVERIFY2(band.start(&error), qPrintable(error));
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.panel));
+    QCOMPARE(f.state(), QStringLiteral("not bound"));
+
+    f.addAddress(band.uri());
+    QVERIFY(f.presentUris().contains(band.uri()));
+    QVERIFY(choose(f.child<QComboBox>(QStringLiteral("uri:") + Band), band.uri()));
+    QSignalSpy requested(&f.panel, &DevicesPanel::bindRequested);
+    f.click(QStringLiteral("connect:") + Band);
+    QCOMPARE(requested.count(), 1);
+    QCOMPARE(requested[0][0].toString(), Band);
+    QCOMPARE(requested[0][1].toString(), band.uri());
+    QVERIFY(f.manager.transport(Band));
+    QCOMPARE(f.manager.transport(Band)->uri(), band.uri());
+    QTRY_COMPARE_WITH_TIMEOUT(f.state(), QStringLiteral("connected"), 5000);
+    QTRY_VERIFY(f.child<QLabel>(QStringLiteral("details:") + Band)
+                    ->text()
+                    .contains(QStringLiteral("RTT")));
+
+    // Real bands start disarmed: nothing reaches the motors until armed.
+    auto *details = f.child<QLabel>(QStringLiteral("details:") + Band);
+    QVERIFY(details->text().contains(QStringLiteral("disarmed")));
+    f.click(QStringLiteral("armAll"));
+    QVERIFY(f.manager.transport(Band)->isArmed());
+    QCOMPARE(f.child<QLabel>(QStringLiteral("armedSummary"))->text(),
+             QStringLiteral("1 of 1 armed"));
+    QVERIFY(!details->text().contains(QStringLiteral("disarmed")));
+
+    DeviceFrame frame;
+    frame.t = 0.5;
+    frame.device = 0;
+    frame.channelCount = 4;
+    frame.values = {0.5, 0.25, 0.0, 1.0};
+    f.manager.transport(Band)->send(frame);
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints.size() == 4 &&
+                                 std::abs(band.state().setpoints[0] - 0.5) < 1e-3 &&
+                                 std::abs(band.state().setpoints[3] - 1.0) < 1e-3,
+                             3000);
+
+    // The meters show the newest frame the history holds.
+    auto *meter = f.child<LevelMeter>(QStringLiteral("levels:") + Band);
+    QCOMPARE(int(meter->channels().size()), 4);
+    f.history.append(frame);
+    frame.t = 0.6;
+    frame.values = {0.1, 0.2, 0.3, 0.4};
+    f.history.append(frame);
+    f.history.commit();
+    QCOMPARE(meter->values(), std::vector<double>({0.1, 0.2, 0.3, 0.4}));
+
+    // Disconnecting falls back to the virtual device: the run keeps going.
+    f.click(QStringLiteral("disconnect:") + Band);
+    QCOMPARE(requested.count(), 2);
+    QCOMPARE(f.manager.transport(Band)->uri(), QStringLiteral("virtual:") + Band);
+    QCOMPARE(f.state(), QStringLiteral("connected"));
+    QCOMPARE(f.child<QComboBox>(QStringLiteral("uri:") + Band)->currentText(),
+             QStringLiteral("virtual:") + Band);
+    QVERIFY(!f.child<QPushButton>(QStringLiteral("disconnect:") + Band)->isEnabled());
+    // The band's watchdog takes it to rest once the host has gone.
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+/** With SEMHAP_SCREENSHOTS=DIR: the panel of a bimanual run, for docs/screenshots. */
+void TestDevicesPanel::screenshot()
+{
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (dir.isEmpty())
+        QSKIP("set SEMHAP_SCREENSHOTS to a folder to write the screenshot");
+    EmulatorOptions options;
+    options.model = DeviceModelLibrary::builtin(QStringLiteral("pneumatic6"));
+    options.udp = true;
+    Emulator emulator(options);
+    QString error;
+    QVERIFY2(emulator.open(&error), qPrintable(error));
+    std::atomic<bool> quit{false};
+    std::thread thread([&] { emulator.run([&] { return quit.load(); }); });
+
+    LiveHistory history;
+    DeviceManager manager;
+    const DeviceModelPtr air = options.model;
+    const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+    history.start({{QStringLiteral("right.air"), air->name(), air->channelNames()},
+                   {QStringLiteral("left.air"), air->name(), air->channelNames()},
+                   {QStringLiteral("right.vibro"), lra4->name(), lra4->channelNames()}},
+                  {}, {});
+    manager.addConfigured(emulator.uri());
+    manager.bind(QStringLiteral("right.air"), emulator.uri(), air, &error);
+    manager.bind(QStringLiteral("left.air"), QStringLiteral("virtual:left.air"), air, &error);
+    manager.bind(QStringLiteral("right.vibro"), QStringLiteral("udp:127.0.0.1:9"), lra4, &error);
+    manager.armAll(true);
+    const std::vector<std::vector<double>> levels = {
+        {0.62, 0.58, 0.4, 0.0, 0.12, 0.3}, {0.2, 0.2, 0.2, 0.2, 0.2, 0.2}, {0.8, 0.0, 0.8, 0.0}};
+    for (int d = 0; d < 3; ++d) {
+        DeviceFrame frame;
+        frame.t = 12.5;
+        frame.device = d;
+        frame.channelCount = int(levels[size_t(d)].size());
+        std::copy(levels[size_t(d)].begin(), levels[size_t(d)].end(), frame.values.begin());
+        history.append(frame);
+    }
+    history.commit();
+    // Keep the band fed at 100 frames/s, as a run would.
+    QTimer feed;
+    QObject::connect(&feed, &QTimer::timeout, [&] {
+        DeviceFrame frame;
+        frame.channelCount = int(levels[0].size());
+        std::copy(levels[0].begin(), levels[0].end(), frame.values.begin());
+        manager.transport(QStringLiteral("right.air"))->send(frame);
+    });
+    feed.start(10);
+    DevicesPanel panel(manager, history);
+    for (const QSize size : {QSize(420, 600), QSize(640, 800)}) {
+        panel.resize(size);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTRY_COMPARE_WITH_TIMEOUT(
+            panel.findChild<QLabel *>(QStringLiteral("state:right.air"))->text(),
+            QStringLiteral("connected"), 5000);
+        QTest::qWait(1200); // a second of rates
+        QVERIFY(panel.grab().save(
+            QStringLiteral("%1/devices-%2x%3.png").arg(dir).arg(size.width()).arg(size.height())));
+    }
+    quit = true;
+    thread.join();
+}
+
+QTEST_MAIN(TestDevicesPanel)
+#include "tst_devicespanel.moc"
