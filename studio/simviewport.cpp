@@ -153,11 +153,11 @@ OrbitCamera SimViewport::defaultCamera(const World &world)
     OrbitCamera camera;
     if (lowX > highX)
         return camera;
-    camera.lookAt = {(lowX + highX) / 2, (lowY + highY) / 2, 0.1};
+    camera.lookAt = {(lowX + highX) / 2, (lowY + highY) / 2, 0.12};
     const double halfWidth = std::max((highX - lowX) / 2, (highY - lowY) / 2);
-    camera.distance = std::clamp(0.35 + 1.6 * halfWidth, Nearest, Farthest);
+    camera.distance = std::clamp(0.25 + 1.6 * halfWidth, Nearest, Farthest);
     camera.azimuth = 90.0;
-    camera.elevation = -32.0;
+    camera.elevation = -35.0;
     return camera;
 }
 
