@@ -41,10 +41,4 @@ Pose turnedAboutVertical(const Pose &pose, double yaw)
     return turned;
 }
 
-double yawOf(const Pose &pose)
-{
-    const auto &q = pose.quat;
-    return std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
-}
-
 } // namespace semhap

@@ -27,7 +27,4 @@ std::array<double, 4> yawQuaternion(double yaw);
 /** `pose` turned about the vertical axis through its position by `yaw` radians. */
 Pose turnedAboutVertical(const Pose &pose, double yaw);
 
-/** The heading (radians) of a pose's x axis in the horizontal plane. */
-double yawOf(const Pose &pose);
-
 } // namespace semhap
