@@ -57,6 +57,8 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     setCentralWidget(m_viewport);
     m_teleop = new KeyboardTeleop(this);
     m_viewport->setTeleop(m_teleop);
+    // The world runs on the engine's thread: a takeover reads it between two ticks.
+    m_teleop->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
 
     createActions();
@@ -74,9 +76,10 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     if (openRun(options.run) && options.autoRun)
         m_engine.run();
     if (options.posePort > 0) {
-        QString error;
-        if (!m_poseInput->listen(quint16(options.posePort), QHostAddress::LocalHost, &error))
-            statusBar()->showMessage(tr("Network pose input is off: %1").arg(error), 10000);
+        if (!m_poseInput->listen(quint16(options.posePort)))
+            statusBar()->showMessage(tr("Network pose input is off: %1")
+                                         .arg(m_poseInput->errorString()),
+                                     10000);
     }
 }
 
@@ -355,8 +358,10 @@ void MainWindow::connectEngine()
 {
     connect(&m_engine, &SimEngine::loaded, this, [this] {
         m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
-        m_teleop->setTarget(m_engine.world(), m_engine.manualOperator());
+        m_teleop->setOperator(m_engine.manualOperator());
+        m_teleop->setWorld(m_engine.world());
         m_poseInput->setOperator(m_engine.manualOperator());
+        m_poseInput->setWorld(m_engine.world());
         m_devicesPanel->refresh();
         syncPickers();
         updateTitle();
@@ -372,7 +377,7 @@ void MainWindow::connectEngine()
     });
     connect(&m_engine, &SimEngine::manualChanged, this, [this](bool manual) {
         m_teleopAction->setChecked(manual);
-        m_viewport->setDriving(manual);
+        m_viewport->setManualControl(manual);
         updateStatus();
     });
     connect(&m_engine, &SimEngine::finished, this, [this] {

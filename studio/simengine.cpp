@@ -223,6 +223,14 @@ bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *err
     return true;
 }
 
+std::array<HandCommand, 2> SimEngine::handCommands()
+{
+    if (!m_run)
+        return {};
+    std::lock_guard<std::mutex> lock(m_setupMutex);
+    return currentCommands(m_run->world());
+}
+
 void SimEngine::stopAll()
 {
     pause();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "handcommand.h"
 #include "livefeed.h"
 #include "livehistory.h"
 #include "simrun.h"
@@ -61,6 +62,8 @@ public:
     bool isManual() const { return m_manual.load(); }
     /** The user's pose-and-grip input; valid while loaded. */
     ManualOperator *manualOperator() const { return m_manualOperator.get(); }
+    /** Each hand's target and grip now, read between two ticks: where a takeover starts. */
+    std::array<HandCommand, 2> handCommands();
 
     /** Binds a router device name to a transport at a tick boundary. */
     bool bindDevice(const QString &name, const QString &uri, QString *error);

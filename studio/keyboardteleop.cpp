@@ -1,0 +1,350 @@
+// SPDX-License-Identifier: MIT
+#include "keyboardteleop.h"
+
+#include "manualoperator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace semhap {
+
+namespace {
+
+constexpr double Pi = 3.14159265358979323846;
+constexpr double TickSeconds = 1.0 / 60.0;
+// Room around the task's regions, and the wrist's heights: at the lowest the pads (6 cm
+// below the wrist) touch the table, at the highest a carried cube clears every stack.
+constexpr double Margin = 0.12;
+constexpr double LowestWrist = 0.06;
+constexpr double HighestWrist = 0.45;
+// A long stall (a breakpoint) must not turn into a jump; a slow software-GL frame may.
+constexpr double LongestTick = 0.25;
+
+} // namespace
+
+KeyboardTeleop::KeyboardTeleop(QObject *parent) : QObject(parent)
+{
+    m_timer.setInterval(int(TickSeconds * 1000));
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &KeyboardTeleop::tick);
+}
+
+KeyboardTeleop::~KeyboardTeleop() = default;
+
+void KeyboardTeleop::setWorld(const World *world)
+{
+    releaseAll();
+    m_world = world;
+    m_engaged = false;
+    m_hands = {};
+    if (!world) {
+        emit changed();
+        return;
+    }
+    m_hands = currentCommands(*world);
+    m_active = m_hands[size_t(Gripper::Right)].present ? Gripper::Right : Gripper::Left;
+
+    // The workspace: every region of the task and every hand's start, with room around.
+    std::array<double, 3> lower{1e9, 1e9, 0.0};
+    std::array<double, 3> upper{-1e9, -1e9, 0.0};
+    auto include = [&](const std::array<double, 3> &lo, const std::array<double, 3> &hi) {
+        for (size_t axis = 0; axis < 2; ++axis) {
+            lower[axis] = std::min(lower[axis], lo[axis]);
+            upper[axis] = std::max(upper[axis], hi[axis]);
+        }
+    };
+    for (const char *name : {"pick", "place", "home"}) {
+        Region region;
+        if (!world->region(QLatin1String(name), &region))
+            continue;
+        std::array<double, 3> lo{}, hi{};
+        for (size_t axis = 0; axis < 3; ++axis) {
+            lo[axis] = region.center[axis] - region.half[axis];
+            hi[axis] = region.center[axis] + region.half[axis];
+        }
+        include(lo, hi);
+    }
+    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
+        const HandCommand &command = m_hands[size_t(hand)];
+        m_maxGrip[size_t(hand)] = command.present ? world->maxGrip(hand) : 0.0;
+        m_setpoint[size_t(hand)] = std::min(DefaultGrip, m_maxGrip[size_t(hand)]);
+        if (command.present)
+            include(command.target.pos, command.target.pos);
+    }
+    for (size_t axis = 0; axis < 2; ++axis) {
+        m_workspace.center[axis] = (lower[axis] + upper[axis]) / 2;
+        m_workspace.half[axis] = (upper[axis] - lower[axis]) / 2 + Margin;
+    }
+    m_workspace.center[2] = (LowestWrist + HighestWrist) / 2;
+    m_workspace.half[2] = (HighestWrist - LowestWrist) / 2;
+    emit changed();
+}
+
+void KeyboardTeleop::setStartSource(std::function<std::array<HandCommand, 2>()> source)
+{
+    m_startSource = std::move(source);
+}
+
+bool KeyboardTeleop::hasBothHands() const
+{
+    return m_hands[0].present && m_hands[1].present;
+}
+
+bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
+{
+    if (key == Qt::Key_Shift) {
+        m_slow = true;
+        return false;
+    }
+    m_slow = modifiers.testFlag(Qt::ShiftModifier);
+    if (!m_world || !m_hands[size_t(m_active)].present)
+        return false;
+
+    Action action = ActionCount;
+    switch (key) {
+    case Qt::Key_W:
+        action = Away;
+        break;
+    case Qt::Key_S:
+        action = Toward;
+        break;
+    case Qt::Key_A:
+        action = Left;
+        break;
+    case Qt::Key_D:
+        action = Right;
+        break;
+    case Qt::Key_R:
+    case Qt::Key_Up:
+    case Qt::Key_PageUp:
+        action = Up;
+        break;
+    case Qt::Key_F:
+    case Qt::Key_Down:
+    case Qt::Key_PageDown:
+        action = Down;
+        break;
+    case Qt::Key_Q:
+    case Qt::Key_Left:
+        action = TurnLeft;
+        break;
+    case Qt::Key_E:
+    case Qt::Key_Right:
+        action = TurnRight;
+        break;
+    case Qt::Key_Space:
+    case Qt::Key_G:
+        engage();
+        m_closed[size_t(m_active)] = !m_closed[size_t(m_active)];
+        updateTimer();
+        emit changed();
+        return true;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        adjustGrip(1);
+        return true;
+    case Qt::Key_Minus:
+        adjustGrip(-1);
+        return true;
+    case Qt::Key_Tab:
+    case Qt::Key_Backtab:
+        if (!hasBothHands())
+            return false;
+        engage();
+        m_active = m_active == Gripper::Right ? Gripper::Left : Gripper::Right;
+        emit changed();
+        return true;
+    default:
+        return false;
+    }
+
+    engage();
+    if (!m_held[action]) {
+        m_held[action] = true;
+        // A tap shorter than a tick still moves: one tick's worth now.
+        std::array<bool, ActionCount> tap{};
+        tap[action] = true;
+        if (move(tap, TickSeconds)) {
+            send(m_active);
+            emit changed();
+        }
+    }
+    updateTimer();
+    return true;
+}
+
+bool KeyboardTeleop::release(int key)
+{
+    switch (key) {
+    case Qt::Key_Shift:
+        m_slow = false;
+        return false;
+    case Qt::Key_W:
+        m_held[Away] = false;
+        break;
+    case Qt::Key_S:
+        m_held[Toward] = false;
+        break;
+    case Qt::Key_A:
+        m_held[Left] = false;
+        break;
+    case Qt::Key_D:
+        m_held[Right] = false;
+        break;
+    case Qt::Key_R:
+    case Qt::Key_Up:
+    case Qt::Key_PageUp:
+        m_held[Up] = false;
+        break;
+    case Qt::Key_F:
+    case Qt::Key_Down:
+    case Qt::Key_PageDown:
+        m_held[Down] = false;
+        break;
+    case Qt::Key_Q:
+    case Qt::Key_Left:
+        m_held[TurnLeft] = false;
+        break;
+    case Qt::Key_E:
+    case Qt::Key_Right:
+        m_held[TurnRight] = false;
+        break;
+    default:
+        return false;
+    }
+    updateTimer();
+    return true;
+}
+
+void KeyboardTeleop::releaseAll()
+{
+    m_held = {};
+    m_slow = false;
+    updateTimer();
+}
+
+void KeyboardTeleop::adjustGrip(int notches)
+{
+    const size_t hand = size_t(m_active);
+    if (!m_world || !m_hands[hand].present || notches == 0)
+        return;
+    engage();
+    m_setpoint[hand] =
+        std::clamp(m_setpoint[hand] + notches * GripStep, GripStep, m_maxGrip[hand]);
+    updateTimer();
+    emit changed();
+}
+
+void KeyboardTeleop::disengage()
+{
+    releaseAll();
+    m_engaged = false;
+    emit changed();
+}
+
+void KeyboardTeleop::engage()
+{
+    if (m_engaged)
+        return;
+    m_engaged = true;
+    // Take over where the hands are now, so nothing jumps.
+    m_hands = m_startSource ? m_startSource() : currentCommands(*m_world);
+    for (size_t hand = 0; hand < 2; ++hand) {
+        m_closed[hand] = m_hands[hand].grip > 0;
+        if (m_closed[hand])
+            m_setpoint[hand] = std::clamp(m_hands[hand].grip, GripStep, m_maxGrip[hand]);
+        if (m_hands[hand].present)
+            send(Gripper(hand));
+    }
+    m_clock.start();
+    emit engaged();
+}
+
+void KeyboardTeleop::tick()
+{
+    const double seconds = std::min(double(m_clock.restart()) / 1000.0, LongestTick);
+    advance(seconds);
+}
+
+void KeyboardTeleop::advance(double seconds)
+{
+    if (!m_engaged)
+        return;
+    const bool moved = move(m_held, seconds);
+    if (moved)
+        send(m_active);
+    if (ramp(seconds) || moved)
+        emit changed();
+    updateTimer();
+}
+
+bool KeyboardTeleop::move(const std::array<bool, ActionCount> &held, double seconds)
+{
+    HandCommand &hand = m_hands[size_t(m_active)];
+    const double step = Speed * seconds * (m_slow ? SlowFactor : 1.0);
+    // Along the table axes nearest the view: a slanted camera still moves the hand straight.
+    const double azimuth = Pi / 2 * std::round(m_viewAzimuth / 90.0);
+    const double awayX = std::round(std::cos(azimuth));
+    const double awayY = std::round(std::sin(azimuth));
+    const double forward = (held[Away] ? 1 : 0) - (held[Toward] ? 1 : 0);
+    const double right = (held[Right] ? 1 : 0) - (held[Left] ? 1 : 0);
+    const double up = (held[Up] ? 1 : 0) - (held[Down] ? 1 : 0);
+    const double turn = (held[TurnLeft] ? 1 : 0) - (held[TurnRight] ? 1 : 0);
+    if (forward == 0 && right == 0 && up == 0 && turn == 0)
+        return false;
+
+    const std::array<double, 3> delta{step * (forward * awayX + right * awayY),
+                                      step * (forward * awayY - right * awayX), step * up};
+    for (size_t axis = 0; axis < 3; ++axis) {
+        const double lo = m_workspace.center[axis] - m_workspace.half[axis];
+        const double hi = m_workspace.center[axis] + m_workspace.half[axis];
+        hand.target.pos[axis] = std::clamp(hand.target.pos[axis] + delta[axis], lo, hi);
+    }
+    if (turn != 0)
+        hand.target = turnedAboutVertical(hand.target, turn * TurnRate * seconds);
+    return true;
+}
+
+bool KeyboardTeleop::ramp(double seconds)
+{
+    bool changed = false;
+    for (size_t index = 0; index < 2; ++index) {
+        HandCommand &hand = m_hands[index];
+        const double goal = m_closed[index] ? m_setpoint[index] : OpenGrip;
+        if (!hand.present || hand.grip == goal)
+            continue;
+        const double step = GripRate * seconds;
+        hand.grip =
+            hand.grip < goal ? std::min(goal, hand.grip + step) : std::max(goal, hand.grip - step);
+        if (m_operator)
+            m_operator->setGrip(Gripper(index), hand.grip);
+        changed = true;
+    }
+    return changed;
+}
+
+void KeyboardTeleop::send(Gripper hand)
+{
+    if (!m_operator)
+        return;
+    m_operator->setTarget(hand, m_hands[size_t(hand)].target);
+    m_operator->setGrip(hand, m_hands[size_t(hand)].grip);
+}
+
+void KeyboardTeleop::updateTimer()
+{
+    bool busy = std::any_of(m_held.begin(), m_held.end(), [](bool held) { return held; });
+    for (size_t hand = 0; hand < 2; ++hand) {
+        const double goal = m_closed[hand] ? m_setpoint[hand] : OpenGrip;
+        busy = busy || (m_engaged && m_hands[hand].present && m_hands[hand].grip != goal);
+    }
+    if (busy && !m_timer.isActive()) {
+        m_clock.restart();
+        m_timer.start();
+    } else if (!busy) {
+        m_timer.stop();
+    }
+}
+
+} // namespace semhap

@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: MIT
+#include "simviewport.h"
+
+#include "keyboardteleop.h"
+#include "scenefeed.h"
+#include "world.h"
+
+#include <QAction>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+constexpr double Pi = 3.14159265358979323846;
+constexpr int FrameMs = 16;
+// Degrees of orbit per pixel dragged, and the zoom per wheel notch.
+constexpr double OrbitPerPixel = 0.4;
+constexpr double ZoomPerNotch = 0.9;
+// Limits: close enough to see the pads, far enough for any scene; never under the table.
+constexpr double Nearest = 0.2;
+constexpr double Farthest = 4.0;
+constexpr double Lowest = -89.0;
+constexpr double Highest = 0.0;
+constexpr double PanRange = 1.5;
+// MuJoCo's default vertical field of view (degrees): a pan moves with the mouse.
+constexpr double FieldOfView = 45.0;
+
+const QColor Background(0x2b, 0x2f, 0x33);
+
+double clampAngle(double degrees)
+{
+    return std::remainder(degrees, 360.0);
+}
+
+} // namespace
+
+SimViewport::SimViewport(QWidget *parent)
+    : QOpenGLWidget(parent), m_resetCamera(new QAction(tr("Reset camera"), this)),
+      m_showForcesAction(new QAction(tr("Show contact forces"), this))
+{
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setProfile(QSurfaceFormat::CompatibilityProfile); // MuJoCo's fixed-function GL
+    format.setDepthBufferSize(24);
+    setFormat(format);
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(320, 240);
+
+    m_resetCamera->setShortcut(Qt::Key_Home);
+    m_resetCamera->setShortcutContext(Qt::WidgetShortcut);
+    connect(m_resetCamera, &QAction::triggered, this, &SimViewport::resetCamera);
+    addAction(m_resetCamera);
+    m_showForcesAction->setCheckable(true);
+    connect(m_showForcesAction, &QAction::toggled, this, &SimViewport::setShowForces);
+
+    m_frameTimer.setInterval(FrameMs);
+    connect(&m_frameTimer, &QTimer::timeout, this, &SimViewport::frame);
+}
+
+SimViewport::~SimViewport()
+{
+    releaseRenderer();
+}
+
+void SimViewport::setScene(const World *world, SceneFeed *feed)
+{
+    m_world = world;
+    m_feed = world ? feed : nullptr;
+    if (m_feed)
+        m_feed->setShowForces(m_showForces);
+    if (isValid()) {
+        makeCurrent();
+        createRenderer();
+        doneCurrent();
+    }
+    if (m_teleop)
+        m_teleop->setWorld(world);
+    m_home = world ? defaultCamera(*world) : OrbitCamera();
+    changeCamera(m_home);
+}
+
+void SimViewport::setTeleop(KeyboardTeleop *teleop)
+{
+    if (m_teleop)
+        disconnect(m_teleop, nullptr, this, nullptr);
+    m_teleop = teleop;
+    if (!teleop)
+        return;
+    teleop->setWorld(m_world);
+    teleop->setViewAzimuth(m_camera.azimuth);
+    connect(teleop, &KeyboardTeleop::changed, this, qOverload<>(&SimViewport::update));
+    // Any teleoperation input hands the grippers to the user.
+    connect(teleop, &KeyboardTeleop::engaged, this, [this] { setManualControl(true); });
+    connect(teleop, &QObject::destroyed, this, [this] { m_teleop = nullptr; });
+}
+
+void SimViewport::setShowForces(bool show)
+{
+    m_showForces = show;
+    m_showForcesAction->setChecked(show);
+    if (m_feed)
+        m_feed->setShowForces(show);
+}
+
+void SimViewport::setManualControl(bool manual)
+{
+    if (m_manual == manual)
+        return;
+    m_manual = manual;
+    if (!manual && m_teleop)
+        m_teleop->disengage(); // taking over again starts from where the script left off
+    update();
+}
+
+void SimViewport::setCamera(const OrbitCamera &camera)
+{
+    changeCamera(camera);
+}
+
+void SimViewport::resetCamera()
+{
+    changeCamera(m_home);
+}
+
+OrbitCamera SimViewport::defaultCamera(const World &world)
+{
+    // The box around the task's regions and the grippers, seen from the front (looking
+    // along +y, so the scene's x runs left to right) and a little from above.
+    double lowX = 1e9, highX = -1e9, lowY = 1e9, highY = -1e9;
+    auto include = [&](double x, double y, double halfX, double halfY) {
+        lowX = std::min(lowX, x - halfX);
+        highX = std::max(highX, x + halfX);
+        lowY = std::min(lowY, y - halfY);
+        highY = std::max(highY, y + halfY);
+    };
+    for (const char *name : {"pick", "place", "home"}) {
+        Region region;
+        if (world.region(QLatin1String(name), &region))
+            include(region.center[0], region.center[1], region.half[0], region.half[1]);
+    }
+    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
+        if (world.hasGripper(hand))
+            include(world.target(hand).pos[0], world.target(hand).pos[1], 0.06, 0.06);
+    }
+    OrbitCamera camera;
+    if (lowX > highX)
+        return camera;
+    camera.lookAt = {(lowX + highX) / 2, (lowY + highY) / 2, 0.12};
+    const double halfWidth = std::max((highX - lowX) / 2, (highY - lowY) / 2);
+    camera.distance = std::clamp(0.25 + 1.6 * halfWidth, Nearest, Farthest);
+    camera.azimuth = 90.0;
+    camera.elevation = -35.0;
+    return camera;
+}
+
+void SimViewport::changeCamera(const OrbitCamera &camera)
+{
+    m_camera = camera;
+    m_camera.distance = std::clamp(camera.distance, Nearest, Farthest);
+    m_camera.elevation = std::clamp(camera.elevation, Lowest, Highest);
+    m_camera.azimuth = clampAngle(camera.azimuth);
+    for (size_t axis = 0; axis < 3; ++axis) {
+        m_camera.lookAt[axis] = std::clamp(camera.lookAt[axis], m_home.lookAt[axis] - PanRange,
+                                           m_home.lookAt[axis] + PanRange);
+    }
+    if (m_teleop)
+        m_teleop->setViewAzimuth(m_camera.azimuth);
+    update();
+    emit cameraChanged();
+}
+
+void SimViewport::initializeGL()
+{
+    // A move to another top-level window brings a new context: free MuJoCo's GL resources
+    // while the old one lives, and make them again here.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &SimViewport::releaseRenderer,
+            Qt::UniqueConnection);
+    createRenderer();
+}
+
+void SimViewport::createRenderer()
+{
+    m_renderer.reset();
+    if (!m_world)
+        return;
+    m_renderer = std::make_unique<SceneRenderer>(*m_world);
+    m_renderer->initialize();
+}
+
+void SimViewport::releaseRenderer()
+{
+    if (!m_renderer)
+        return;
+    makeCurrent();
+    m_renderer.reset();
+    doneCurrent();
+}
+
+void SimViewport::paintGL()
+{
+    // MuJoCo's drawing is native GL inside the painter's frame: the painter then knows that
+    // every piece of GL state it cached (program, textures, arrays) must be set again.
+    QPainter painter(this);
+    painter.beginNativePainting();
+    QOpenGLExtraFunctions *gl = context()->extraFunctions();
+    // MuJoCo draws fixed-function: no shader program or vertex arrays of the painter's.
+    gl->glUseProgram(0);
+    gl->glBindVertexArray(0);
+    gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
+    gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    for (GLuint attribute = 0; attribute < 3; ++attribute)
+        gl->glDisableVertexAttribArray(attribute);
+    gl->glActiveTexture(GL_TEXTURE0);
+
+    bool drawn = false;
+    if (m_renderer && m_feed) {
+        m_renderer->camera() = m_camera;
+        const qreal ratio = devicePixelRatioF();
+        drawn = m_renderer->render(*m_feed, defaultFramebufferObject(),
+                                   int(std::lround(width() * ratio)),
+                                   int(std::lround(height() * ratio)));
+    }
+    if (drawn) {
+        ++m_renderedFrames;
+    } else {
+        gl->glClearColor(float(Background.redF()), float(Background.greenF()),
+                         float(Background.blueF()), 1.0f);
+        gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    // What MuJoCo leaves that the painter does not reset: culling, depth, pixel unpacking
+    // (its glyph uploads).
+    gl->glDisable(GL_CULL_FACE);
+    gl->glDisable(GL_DEPTH_TEST);
+    gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    painter.endNativePainting();
+    drawOverlay(painter, drawn);
+}
+
+void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
+{
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    if (!hasPicture) {
+        font.setPointSizeF(font.pointSizeF() * 1.3);
+        painter.setFont(font);
+        painter.setPen(QColor(0xe8, 0xe8, 0xe8));
+        const QString text = m_world ? tr("Waiting for the simulation…") : tr("No scene loaded");
+        painter.drawText(rect(), Qt::AlignCenter, text);
+        return;
+    }
+
+    QStringList lines;
+    QString title;
+    if (m_manual) {
+        const Gripper hand = m_teleop ? m_teleop->activeHand() : Gripper::Right;
+        title = hand == Gripper::Right ? tr("You are driving (right hand)")
+                                       : tr("You are driving (left hand)");
+        if (m_teleop && m_teleop->command(hand).present) {
+            const double grip = m_teleop->command(hand).grip;
+            lines << (m_teleop->isClosed(hand)
+                          ? tr("Grip: closed, %1 N").arg(grip, 0, 'f', 0)
+                          : tr("Grip: open (closes to %1 N)")
+                                .arg(m_teleop->gripSetpoint(hand), 0, 'f', 0));
+        }
+        lines << tr("W A S D move · R F up/down · Q E turn · Space grip · +/- force");
+        if (m_teleop && m_teleop->hasBothHands())
+            lines << tr("Tab: switch hand");
+    } else {
+        title = tr("Scripted operator");
+        if (m_teleop)
+            lines << tr("Click here and press W A S D to take over");
+    }
+
+    QFont bold = font;
+    bold.setBold(true);
+    const QFontMetrics boldMetrics(bold);
+    const QFontMetrics metrics(font);
+    const int pad = metrics.height() / 2;
+    int textWidth = boldMetrics.horizontalAdvance(title);
+    for (const QString &line : lines)
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
+    const int textHeight = boldMetrics.height() + int(lines.size()) * metrics.height();
+    const QRectF box(pad, pad, textWidth + 2 * pad, textHeight + pad * 3 / 2);
+
+    QPainterPath path;
+    path.addRoundedRect(box, pad / 2.0, pad / 2.0);
+    // Dark grey with a light rim: readable over the floor and over the black sky alike.
+    painter.fillPath(path, QColor(0x20, 0x22, 0x25, 200));
+    painter.setPen(QPen(QColor(255, 255, 255, 90), 1));
+    painter.drawPath(path);
+    painter.setPen(Qt::white);
+    painter.setFont(bold);
+    int y = int(box.top()) + pad * 3 / 4 + boldMetrics.ascent();
+    painter.drawText(int(box.left()) + pad, y, title);
+    painter.setFont(font);
+    painter.setPen(QColor(0xdd, 0xdd, 0xdd));
+    y += boldMetrics.descent();
+    for (const QString &line : lines) {
+        y += metrics.height();
+        painter.drawText(int(box.left()) + pad, y, line);
+    }
+}
+
+void SimViewport::frame()
+{
+    if (!m_feed)
+        return;
+    m_feed->request();
+    // Redraw only when the simulation sent something new (a paused run costs nothing).
+    if (m_feed->takeLatest())
+        update();
+}
+
+void SimViewport::showEvent(QShowEvent *event)
+{
+    QOpenGLWidget::showEvent(event);
+    m_frameTimer.start();
+}
+
+void SimViewport::hideEvent(QHideEvent *event)
+{
+    m_frameTimer.stop();
+    QOpenGLWidget::hideEvent(event);
+}
+
+void SimViewport::mousePressEvent(QMouseEvent *event)
+{
+    m_lastMouse = event->position().toPoint();
+    m_panning = event->button() == Qt::RightButton ||
+                (event->button() == Qt::LeftButton && event->modifiers() & Qt::ShiftModifier);
+    event->accept();
+}
+
+void SimViewport::mouseMoveEvent(QMouseEvent *event)
+{
+    if (!(event->buttons() & (Qt::LeftButton | Qt::RightButton)))
+        return;
+    const QPoint now = event->position().toPoint();
+    const double dx = now.x() - m_lastMouse.x();
+    const double dy = now.y() - m_lastMouse.y();
+    m_lastMouse = now;
+    OrbitCamera camera = m_camera;
+    if (m_panning) {
+        // The point under the mouse stays under it: scale pixels to metres at the target.
+        const double scale =
+            2 * camera.distance * std::tan(FieldOfView / 2 * Pi / 180) / std::max(1, height());
+        const double az = camera.azimuth * Pi / 180;
+        const double el = camera.elevation * Pi / 180;
+        const std::array<double, 3> right{std::sin(az), -std::cos(az), 0.0};
+        const std::array<double, 3> up{-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
+                                       std::cos(el)};
+        for (size_t axis = 0; axis < 3; ++axis)
+            camera.lookAt[axis] += scale * (-dx * right[axis] + dy * up[axis]);
+    } else {
+        camera.azimuth -= OrbitPerPixel * dx;
+        camera.elevation -= OrbitPerPixel * dy;
+    }
+    changeCamera(camera);
+}
+
+void SimViewport::mouseReleaseEvent(QMouseEvent *event)
+{
+    m_panning = event->buttons() & Qt::RightButton;
+}
+
+void SimViewport::mouseDoubleClickEvent(QMouseEvent *event)
+{
+    if (event->button() == Qt::LeftButton)
+        resetCamera();
+}
+
+void SimViewport::wheelEvent(QWheelEvent *event)
+{
+    const double notches = event->angleDelta().y() / 120.0;
+    if (event->modifiers() & Qt::ControlModifier) {
+        // Ctrl + wheel: the grip force, a whole step per notch.
+        if (m_teleop)
+            m_teleop->adjustGrip(int(std::lround(notches)));
+    } else {
+        OrbitCamera camera = m_camera;
+        camera.distance *= std::pow(ZoomPerNotch, notches);
+        changeCamera(camera);
+    }
+    event->accept();
+}
+
+void SimViewport::keyPressEvent(QKeyEvent *event)
+{
+    // Auto-repeat would make a held key stutter: the teleop integrates held keys itself.
+    if (m_teleop && (event->isAutoRepeat() || m_teleop->press(event->key(), event->modifiers())))
+        event->accept();
+    else
+        QOpenGLWidget::keyPressEvent(event);
+}
+
+void SimViewport::keyReleaseEvent(QKeyEvent *event)
+{
+    if (m_teleop && (event->isAutoRepeat() || m_teleop->release(event->key())))
+        event->accept();
+    else
+        QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void SimViewport::focusOutEvent(QFocusEvent *event)
+{
+    // A key released elsewhere never reaches us: stop, or the hand drifts on.
+    if (m_teleop)
+        m_teleop->releaseAll();
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+bool SimViewport::focusNextPrevChild(bool next)
+{
+    // With two hands, Tab switches between them instead of leaving the viewport.
+    if (m_teleop && m_teleop->hasBothHands())
+        return false;
+    return QOpenGLWidget::focusNextPrevChild(next);
+}
+
+} // namespace semhap

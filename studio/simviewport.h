@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "scenerenderer.h"
+
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QTimer>
+
+#include <memory>
+
+class QAction;
+class QPainter;
+
+namespace semhap {
+
+class KeyboardTeleop;
+class SceneFeed;
+class World;
+
+/**
+ * The simulation as a picture: draws a SceneFeed's newest capture at display rate with
+ * MuJoCo's renderer, lets the mouse orbit, pan and zoom the camera, shows who drives the
+ * grippers in a small overlay, and forwards teleoperation keys to a KeyboardTeleop. It only
+ * asks the feed for pictures; the simulation thread captures them.
+ */
+class SimViewport : public QOpenGLWidget
+{
+    Q_OBJECT
+
+public:
+    explicit SimViewport(QWidget *parent = nullptr);
+    ~SimViewport() override;
+
+    /**
+     * The world to draw and the feed its pictures come through (both null to clear; both
+     * must outlive the viewport or be cleared first). Resets the camera to the scene's view.
+     */
+    void setScene(const World *world, SceneFeed *feed);
+    /** Where teleoperation keys go (null: nowhere); it is given the scene. Not owned. */
+    void setTeleop(KeyboardTeleop *teleop);
+    KeyboardTeleop *teleop() const { return m_teleop; }
+
+    /** Draws contact forces as arrows. */
+    void setShowForces(bool show);
+    bool showForces() const { return m_showForces; }
+    /** Whether the user drives the grippers (the overlay says so) or the scripted operator. */
+    void setManualControl(bool manual);
+    bool isManualControl() const { return m_manual; }
+
+    const OrbitCamera &camera() const { return m_camera; }
+    void setCamera(const OrbitCamera &camera);
+    /** Back to the scene's default view (also a double-click). */
+    void resetCamera();
+    /** A view that frames the scene's task: its regions and grippers, from the front. */
+    static OrbitCamera defaultCamera(const World &world);
+
+    /** Actions for the main window's menus: reset the camera, show contact forces. */
+    QAction *resetCameraAction() const { return m_resetCamera; }
+    QAction *showForcesAction() const { return m_showForcesAction; }
+
+    /** Frames drawn from a picture so far (tests, a frame-rate readout). */
+    quint64 renderedFrames() const { return m_renderedFrames; }
+
+signals:
+    void cameraChanged();
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void keyReleaseEvent(QKeyEvent *event) override;
+    void focusOutEvent(QFocusEvent *event) override;
+    bool focusNextPrevChild(bool next) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    /** Makes a renderer for the scene in the current context (MuJoCo's GL resources). */
+    void createRenderer();
+    /** Frees MuJoCo's GL resources while their context is still there. */
+    void releaseRenderer();
+    void frame();
+    void changeCamera(const OrbitCamera &camera);
+    void drawOverlay(QPainter &painter, bool hasPicture);
+
+    const World *m_world = nullptr;
+    SceneFeed *m_feed = nullptr;
+    KeyboardTeleop *m_teleop = nullptr;
+    std::unique_ptr<SceneRenderer> m_renderer;
+    OrbitCamera m_camera;
+    OrbitCamera m_home;
+    QTimer m_frameTimer;
+    QAction *m_resetCamera;
+    QAction *m_showForcesAction;
+    QPoint m_lastMouse;
+    bool m_panning = false;
+    bool m_showForces = false;
+    bool m_manual = false;
+    quint64 m_renderedFrames = 0;
+};
+
+} // namespace semhap

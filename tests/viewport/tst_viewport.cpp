@@ -1,0 +1,437 @@
+// SPDX-License-Identifier: MIT
+// The simulation viewport in a real window with OpenGL (run under Xvfb): it draws the
+// scene, the mouse moves the camera, teleoperation keys move the active gripper's target
+// through a ManualOperator. Screenshots are saved beside the test binary to be looked at.
+#include "keyboardteleop.h"
+#include "manualoperator.h"
+#include "scenefeed.h"
+#include "simviewport.h"
+#include "world.h"
+
+#include <QAction>
+#include <QSet>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+/** A world, its feed and the operator the keys drive: what the engine will own. */
+struct Scene
+{
+    std::unique_ptr<World> world;
+    std::unique_ptr<SceneFeed> feed;
+    ManualOperator manual;
+};
+
+std::unique_ptr<Scene> loadScene(const QString &name, int steps)
+{
+    auto scene = std::make_unique<Scene>();
+    QString error;
+    scene->world = World::load(name, SceneOptions(), &error);
+    if (!scene->world) {
+        qWarning("%s", qPrintable(error));
+        return nullptr;
+    }
+    for (int k = 0; k < steps; ++k)
+        scene->world->step();
+    scene->feed = std::make_unique<SceneFeed>(*scene->world);
+    return scene;
+}
+
+double yaw(const Pose &pose)
+{
+    const auto &q = pose.quat;
+    return std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
+}
+
+} // namespace
+
+class TestViewport : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void waitsForThePicture();
+    void drawsTheScene();
+    void survivesAMoveToAnotherWindow();
+    void leftDragOrbits();
+    void rightDragPans();
+    void wheelZooms();
+    void doubleClickResetsTheCamera();
+    void keysMoveTheActiveHand_data();
+    void keysMoveTheActiveHand();
+    void gripKeysRampTheGrip();
+    void forcesToggleReachesTheFeed();
+    void tabSwitchesHands();
+    void screenshots_data();
+    void screenshots();
+
+private:
+    /** Runs the event loop for `ms`, capturing whenever the viewport asks (the sim thread). */
+    void pump(int ms, const SceneOverlay &overlay = {});
+    QImage grab();
+
+    std::unique_ptr<Scene> m_scene;
+    SimViewport m_viewport;
+    KeyboardTeleop m_teleop;
+};
+
+void TestViewport::pump(int ms, const SceneOverlay &overlay)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < ms) {
+        if (m_scene->feed->wantsCapture())
+            m_scene->feed->capture(*m_scene->world, overlay);
+        QTest::qWait(5);
+    }
+}
+
+QImage TestViewport::grab()
+{
+    const QImage image = m_viewport.grabFramebuffer();
+    return image.convertToFormat(QImage::Format_ARGB32);
+}
+
+void TestViewport::initTestCase()
+{
+    m_scene = loadScene("box_and_block", 50);
+    QVERIFY(m_scene);
+    m_teleop.setOperator(&m_scene->manual);
+    m_viewport.setTeleop(&m_teleop);
+    m_viewport.resize(800, 600);
+    m_viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&m_viewport));
+    m_viewport.activateWindow();
+    m_viewport.setFocus();
+    QVERIFY(QTest::qWaitForWindowActive(&m_viewport));
+}
+
+void TestViewport::waitsForThePicture()
+{
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    QTest::qWait(50); // no capture: the simulation has not answered yet
+    QCOMPARE(m_viewport.renderedFrames(), quint64(0));
+    const QImage image = grab();
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 4) {
+        for (int x = 0; x < image.width(); x += 4)
+            colours.insert(image.pixel(x, y));
+    }
+    QVERIFY2(colours.size() < 100, "only the background and the waiting text");
+}
+
+void TestViewport::drawsTheScene()
+{
+    pump(200);
+    QVERIFY(m_viewport.renderedFrames() > 0);
+    const QImage image = grab();
+    QCOMPARE(image.size(), QSize(800, 600));
+    QSet<QRgb> colours;
+    bool opaque = true;
+    for (int y = 0; y < image.height(); y += 4) {
+        for (int x = 0; x < image.width(); x += 4) {
+            colours.insert(image.pixel(x, y) & 0xffffff);
+            opaque = opaque && qAlpha(image.pixel(x, y)) == 255;
+        }
+    }
+    QVERIFY2(colours.size() > 100, "the image is (nearly) uniform: nothing was drawn");
+    QVERIFY(opaque);
+    // Frames keep coming: the painter's overlay does not break MuJoCo's next frame.
+    const quint64 before = m_viewport.renderedFrames();
+    m_scene->world->step();
+    pump(200);
+    QVERIFY(m_viewport.renderedFrames() > before);
+    const QImage again = grab();
+    QSet<QRgb> colours2;
+    for (int y = 0; y < again.height(); y += 4) {
+        for (int x = 0; x < again.width(); x += 4)
+            colours2.insert(again.pixel(x, y) & 0xffffff);
+    }
+    QVERIFY(colours2.size() > 100);
+
+    // How fast the viewport draws with the simulation always answering (software GL here).
+    const quint64 start = m_viewport.renderedFrames();
+    pump(1000);
+    qInfo("%llu frames/s at 800x600", m_viewport.renderedFrames() - start);
+}
+
+void TestViewport::survivesAMoveToAnotherWindow()
+{
+    // A floating dock: the viewport gets a new top-level window and a new GL context, and
+    // MuJoCo's resources must be made again in it.
+    QWidget window;
+    window.resize(820, 620);
+    m_viewport.setParent(&window);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    m_scene->world->step();
+    const quint64 before = m_viewport.renderedFrames();
+    pump(300);
+    QVERIFY(m_viewport.renderedFrames() > before);
+    QSet<QRgb> colours;
+    const QImage image = grab();
+    for (int y = 0; y < image.height(); y += 4) {
+        for (int x = 0; x < image.width(); x += 4)
+            colours.insert(image.pixel(x, y) & 0xffffff);
+    }
+    QVERIFY(colours.size() > 100);
+
+    m_viewport.setParent(nullptr);
+    m_viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&m_viewport));
+    m_viewport.activateWindow();
+    m_viewport.setFocus();
+    QVERIFY(QTest::qWaitForWindowActive(&m_viewport));
+    m_scene->world->step();
+    const quint64 back = m_viewport.renderedFrames();
+    pump(300);
+    QVERIFY(m_viewport.renderedFrames() > back);
+}
+
+void TestViewport::leftDragOrbits()
+{
+    m_viewport.resetCamera();
+    const OrbitCamera before = m_viewport.camera();
+    QSignalSpy changed(&m_viewport, &SimViewport::cameraChanged);
+    QTest::mousePress(&m_viewport, Qt::LeftButton, {}, QPoint(400, 300));
+    QTest::mouseMove(&m_viewport, QPoint(450, 320));
+    QTest::mouseMove(&m_viewport, QPoint(500, 340));
+    QTest::mouseRelease(&m_viewport, Qt::LeftButton, {}, QPoint(500, 340));
+    QVERIFY(changed.count() > 0);
+    QVERIFY(std::abs(m_viewport.camera().azimuth - before.azimuth) > 10);
+    QVERIFY(m_viewport.camera().elevation < before.elevation); // dragged down: from higher
+    QCOMPARE(m_viewport.camera().distance, before.distance);
+
+    // Dragging far down stops looking straight down, never from under the table.
+    QTest::mousePress(&m_viewport, Qt::LeftButton, {}, QPoint(400, 10));
+    QTest::mouseMove(&m_viewport, QPoint(400, 590));
+    QTest::mouseRelease(&m_viewport, Qt::LeftButton, {}, QPoint(400, 590));
+    QVERIFY(m_viewport.camera().elevation >= -89.0);
+    QTest::mousePress(&m_viewport, Qt::LeftButton, {}, QPoint(400, 590));
+    QTest::mouseMove(&m_viewport, QPoint(400, 10));
+    QTest::mouseRelease(&m_viewport, Qt::LeftButton, {}, QPoint(400, 10));
+    QVERIFY(m_viewport.camera().elevation <= 0.0);
+}
+
+void TestViewport::rightDragPans()
+{
+    m_viewport.resetCamera();
+    const OrbitCamera before = m_viewport.camera();
+    QTest::mousePress(&m_viewport, Qt::RightButton, {}, QPoint(400, 300));
+    QTest::mouseMove(&m_viewport, QPoint(300, 300));
+    QTest::mouseRelease(&m_viewport, Qt::RightButton, {}, QPoint(300, 300));
+    const OrbitCamera after = m_viewport.camera();
+    QCOMPARE(after.azimuth, before.azimuth);
+    // Looking along +y, dragging the scene left moves the look-at point right (+x).
+    QVERIFY(after.lookAt[0] > before.lookAt[0] + 0.05);
+    QVERIFY(std::abs(after.lookAt[1] - before.lookAt[1]) < 1e-9);
+}
+
+void TestViewport::wheelZooms()
+{
+    m_viewport.resetCamera();
+    const double before = m_viewport.camera().distance;
+    auto wheel = [this](int notches, Qt::KeyboardModifiers modifiers) {
+        const QPointF at(400, 300);
+        QWheelEvent event(at, m_viewport.mapToGlobal(at), QPoint(), QPoint(0, 120 * notches),
+                          Qt::NoButton, modifiers, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&m_viewport, &event);
+    };
+    wheel(2, Qt::NoModifier);
+    QVERIFY(m_viewport.camera().distance < before * 0.85);
+    for (int k = 0; k < 60; ++k)
+        wheel(-1, Qt::NoModifier);
+    QVERIFY(m_viewport.camera().distance <= 4.0);
+
+    // Ctrl + wheel is the grip force, not the zoom.
+    const double distance = m_viewport.camera().distance;
+    const double grip = m_teleop.gripSetpoint(Gripper::Right);
+    wheel(1, Qt::ControlModifier);
+    QCOMPARE(m_viewport.camera().distance, distance);
+    QCOMPARE(m_teleop.gripSetpoint(Gripper::Right), grip + KeyboardTeleop::GripStep);
+    m_viewport.resetCamera();
+}
+
+void TestViewport::doubleClickResetsTheCamera()
+{
+    const OrbitCamera home = m_viewport.camera();
+    QTest::mousePress(&m_viewport, Qt::LeftButton, {}, QPoint(400, 300));
+    QTest::mouseMove(&m_viewport, QPoint(600, 200));
+    QTest::mouseRelease(&m_viewport, Qt::LeftButton, {}, QPoint(600, 200));
+    QVERIFY(m_viewport.camera().azimuth != home.azimuth);
+    QTest::mouseDClick(&m_viewport, Qt::LeftButton, {}, QPoint(600, 200));
+    QCOMPARE(m_viewport.camera().azimuth, home.azimuth);
+    QCOMPARE(m_viewport.camera().elevation, home.elevation);
+    QCOMPARE(m_viewport.camera().distance, home.distance);
+}
+
+void TestViewport::keysMoveTheActiveHand_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::addColumn<int>("axis"); // 0..2: position x, y, z; 3: yaw
+    QTest::addColumn<int>("sign");
+    // The default view looks along +y: away is +y, right is +x.
+    QTest::newRow("W: away") << int(Qt::Key_W) << 1 << 1;
+    QTest::newRow("S: toward") << int(Qt::Key_S) << 1 << -1;
+    QTest::newRow("A: left") << int(Qt::Key_A) << 0 << -1;
+    QTest::newRow("D: right") << int(Qt::Key_D) << 0 << 1;
+    QTest::newRow("R: up") << int(Qt::Key_R) << 2 << 1;
+    QTest::newRow("F: down") << int(Qt::Key_F) << 2 << -1;
+    QTest::newRow("Up arrow: up") << int(Qt::Key_Up) << 2 << 1;
+    QTest::newRow("Q: turn left") << int(Qt::Key_Q) << 3 << 1;
+    QTest::newRow("E: turn right") << int(Qt::Key_E) << 3 << -1;
+    QTest::newRow("Right arrow: turn right") << int(Qt::Key_Right) << 3 << -1;
+}
+
+void TestViewport::keysMoveTheActiveHand()
+{
+    QFETCH(int, key);
+    QFETCH(int, axis);
+    QFETCH(int, sign);
+    m_viewport.resetCamera();
+    m_viewport.setManualControl(false); // the script drives; the key takes over
+    World &world = *m_scene->world;
+    const Pose before = world.target(Gripper::Right);
+    QSignalSpy engaged(&m_teleop, &KeyboardTeleop::engaged);
+
+    QTest::keyPress(&m_viewport, Qt::Key(key));
+    QTest::qWait(150);
+    QTest::keyRelease(&m_viewport, Qt::Key(key));
+    QCOMPARE(engaged.count(), 1);
+    QVERIFY(m_viewport.isManualControl());
+    m_scene->manual.act(world);
+    const Pose after = world.target(Gripper::Right);
+
+    for (int a = 0; a < 3; ++a) {
+        const double moved = after.pos[size_t(a)] - before.pos[size_t(a)];
+        if (a == axis)
+            QVERIFY2(moved * sign > 0.002, qPrintable(QString("moved %1 m").arg(moved)));
+        else
+            QVERIFY2(std::abs(moved) < 1e-9, qPrintable(QString("axis %1: %2").arg(a).arg(moved)));
+    }
+    const double turned = std::remainder(yaw(after) - yaw(before), 2 * M_PI);
+    if (axis == 3)
+        QVERIFY2(turned * sign > 0.02, qPrintable(QString("turned %1 rad").arg(turned)));
+    else
+        QVERIFY(std::abs(turned) < 1e-9);
+
+    // Released: the hand stays.
+    QTest::qWait(60);
+    m_scene->manual.act(world);
+    QCOMPARE(world.target(Gripper::Right).pos, after.pos);
+}
+
+void TestViewport::gripKeysRampTheGrip()
+{
+    m_viewport.setManualControl(false);
+    World &world = *m_scene->world;
+    QVERIFY(world.grip(Gripper::Right) <= 0);
+    QTest::keyClick(&m_viewport, Qt::Key_Space);
+    QVERIFY(m_teleop.isClosed(Gripper::Right));
+    // A ramp, not a step: shortly after, the grip is on its way up.
+    m_scene->manual.act(world);
+    QVERIFY(world.grip(Gripper::Right) < m_teleop.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, m_teleop.gripSetpoint(Gripper::Right));
+    m_scene->manual.act(world);
+    QCOMPARE(world.grip(Gripper::Right), m_teleop.gripSetpoint(Gripper::Right));
+
+    QTest::keyClick(&m_viewport, Qt::Key_Plus);
+    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, m_teleop.gripSetpoint(Gripper::Right));
+    m_scene->manual.act(world);
+    QVERIFY(world.grip(Gripper::Right) > KeyboardTeleop::DefaultGrip);
+
+    QTest::keyClick(&m_viewport, Qt::Key_G);
+    QVERIFY(!m_teleop.isClosed(Gripper::Right));
+    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, KeyboardTeleop::OpenGrip);
+}
+
+void TestViewport::forcesToggleReachesTheFeed()
+{
+    QVERIFY(!m_scene->feed->showForces());
+    m_viewport.showForcesAction()->trigger();
+    QVERIFY(m_viewport.showForces());
+    QVERIFY(m_scene->feed->showForces());
+    m_viewport.setShowForces(false);
+    QVERIFY(!m_scene->feed->showForces());
+    QVERIFY(!m_viewport.showForcesAction()->isChecked());
+}
+
+void TestViewport::tabSwitchesHands()
+{
+    // box_and_block has one hand: Tab is left to the focus chain.
+    QVERIFY(!m_teleop.hasBothHands());
+
+    auto bimanual = loadScene("bimanual_sorting", 50);
+    QVERIFY(bimanual);
+    std::swap(m_scene, bimanual);
+    m_teleop.setOperator(&m_scene->manual);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    m_viewport.setManualControl(false);
+    QVERIFY(m_teleop.hasBothHands());
+    QCOMPARE(m_teleop.activeHand(), Gripper::Right);
+    QSignalSpy engaged(&m_teleop, &KeyboardTeleop::engaged);
+
+    QTest::keyClick(&m_viewport, Qt::Key_Tab);
+    QCOMPARE(m_teleop.activeHand(), Gripper::Left);
+    QCOMPARE(engaged.count(), 1);
+    QVERIFY(m_viewport.hasFocus()); // Tab did not move the focus away
+
+    World &world = *m_scene->world;
+    const Pose left = world.target(Gripper::Left);
+    const Pose right = world.target(Gripper::Right);
+    QTest::keyPress(&m_viewport, Qt::Key_D);
+    QTest::qWait(100);
+    QTest::keyRelease(&m_viewport, Qt::Key_D);
+    m_scene->manual.act(world);
+    QVERIFY(world.target(Gripper::Left).pos[0] > left.pos[0] + 0.005);
+    QCOMPARE(world.target(Gripper::Right).pos, right.pos);
+
+    QTest::keyClick(&m_viewport, Qt::Key_Tab);
+    QCOMPARE(m_teleop.activeHand(), Gripper::Right);
+    std::swap(m_scene, bimanual);
+    m_teleop.setOperator(&m_scene->manual);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+}
+
+void TestViewport::screenshots_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<bool>("confirm");
+    QTest::addColumn<bool>("manual");
+    QTest::newRow("box_and_block") << "box_and_block" << true << true;
+    QTest::newRow("bimanual_sorting") << "bimanual_sorting" << false << false;
+}
+
+void TestViewport::screenshots()
+{
+    QFETCH(QString, scene);
+    QFETCH(bool, confirm);
+    QFETCH(bool, manual);
+    auto shown = loadScene(scene, 500); // a second: everything has settled
+    QVERIFY(shown);
+    std::swap(m_scene, shown);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    m_viewport.setManualControl(manual);
+    m_viewport.setShowForces(true);
+    m_viewport.resize(1280, 800);
+    SceneOverlay overlay;
+    overlay.rightConfirm = confirm ? 1.0 : 0.0;
+    pump(300, overlay);
+    const QImage image = grab();
+    QCOMPARE(image.size(), QSize(1280, 800));
+    image.save(QString("%1/viewport-%2.png").arg(QCoreApplication::applicationDirPath(), scene));
+    m_viewport.setShowForces(false);
+    m_viewport.setManualControl(false);
+    std::swap(m_scene, shown);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    m_viewport.resize(800, 600);
+}
+
+QTEST_MAIN(TestViewport)
+#include "tst_viewport.moc"
