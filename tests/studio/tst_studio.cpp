@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: MIT
+// The studio as a user meets it (run under Xvfb: the viewport needs OpenGL): it opens on
+// the embedded defaults and runs; scene and router pickers, run/step/speed, the stop-all
+// key and teleoperation drive the engine; the layout is saved and restored; German can be
+// switched on in the preferences; `--screenshot` grabs the window and quits.
+#include "devicemanager.h"
+#include "eventlogmodel.h"
+#include "eventlogpanel.h"
+#include "mainwindow.h"
+#include "plotpanel.h"
+#include "preferencesdialog.h"
+#include "simviewport.h"
+#include "studio.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QImage>
+#include <QLabel>
+#include <QProcess>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <qcustomplot.h>
+
+using namespace semhap;
+
+class TestStudio : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void opensOnTheDefaultsAndRuns();
+    void picksSceneAndRouter();
+    void runStepAndSpeedFromTheKeyboard();
+    void timeWindowFollowsTheSpinBox();
+    void stopAllWorksFromAnywhere();
+    void aKeyInTheViewportTakesOver();
+    void eventLogMovesThePlotCursor();
+    void layoutIsSavedAndRestored();
+    void switchesToGerman();
+    void screenshotHook();
+
+private:
+    StudioOptions options() const;
+    QTemporaryDir m_config;
+};
+
+void TestStudio::initTestCase()
+{
+    QVERIFY(m_config.isValid());
+    QCoreApplication::setOrganizationName("semhap");
+    QCoreApplication::setApplicationName("semhap-studio-test");
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_config.path());
+}
+
+void TestStudio::init()
+{
+    QSettings().clear();
+}
+
+StudioOptions TestStudio::options() const
+{
+    StudioOptions o;
+    QString message;
+    bool help = false;
+    // Fast, so the first grasp comes soon; no network input, so tests can run side by side.
+    StudioOptions::parse({"--speed", "4", "--pose-port", "0", "--size", "1280x800"}, &o,
+                         &message, &help);
+    return o;
+}
+
+void TestStudio::opensOnTheDefaultsAndRuns()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
+    QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
+    QVERIFY(window.engine().isRunning());
+    QVERIFY(!window.engine().isManual());
+    for (const LiveDevice &device : window.engine().history().devices())
+        QCOMPARE(window.engine().devices().transport(device.name)->uri(),
+                 "virtual:" + device.name);
+
+    // Events reach the log and data the plots.
+    QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    QVERIFY(plot);
+    int points = 0;
+    for (int g = 0; g < plot->graphCount(); ++g)
+        points += plot->graph(g)->dataCount();
+    QVERIFY2(points > 100, qPrintable(QString::number(points)));
+    QVERIFY(window.findChild<QLabel *>("timeLabel")->text().startsWith("t = "));
+    QVERIFY(window.windowTitle().contains("box_and_block"));
+}
+
+void TestStudio::picksSceneAndRouter()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy loaded(&window.engine(), &SimEngine::loaded);
+
+    QComboBox *scene = window.scenePicker();
+    scene->setFocus();
+    const int bimanual = scene->findData("bimanual_sorting");
+    QVERIFY(bimanual >= 0);
+    while (scene->currentIndex() != bimanual)
+        QTest::keyClick(scene, bimanual > scene->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(window.engine().options().scene, QString("bimanual_sorting"));
+
+    QComboBox *router = window.routerPicker();
+    router->setFocus();
+    const int c1 = router->findData("C1");
+    QVERIFY(c1 >= 0);
+    while (router->currentIndex() != c1)
+        QTest::keyClick(router, c1 > router->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(window.engine().options().router, QString("C1"));
+    QVERIFY(loaded.count() >= 2);
+    QVERIFY(window.engine().isRunning()); // picking keeps a running session running
+
+    // The bimanual scene has a left hand: its frames and the slip detector show up.
+    QVERIFY(window.engine().history().thresholds()[size_t(Gripper::Left)].hasSlip);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.engine().history().frames(Gripper::Left).isEmpty(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
+    QVERIFY(window.windowTitle().contains("C1"));
+}
+
+void TestStudio::runStepAndSpeedFromTheKeyboard()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.engine().isRunning());
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(!window.engine().isRunning());
+    QTest::qWait(50);
+    const double t = window.engine().simTime();
+    QTest::keyClick(&window, Qt::Key_F6);
+    QTRY_VERIFY(window.engine().simTime() > t);
+    QVERIFY(!window.engine().isRunning());
+
+    QCOMPARE(window.engine().speed(), 4.0);
+    QTest::keyClick(&window, Qt::Key_Minus, Qt::ControlModifier);
+    QCOMPARE(window.engine().speed(), 2.0);
+    QTest::keyClick(&window, Qt::Key_0, Qt::ControlModifier);
+    QCOMPARE(window.engine().speed(), 1.0);
+    QCOMPARE(window.speedPicker()->currentData().toDouble(), 1.0);
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(window.engine().isRunning());
+
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
+    QVERIFY(window.engine().simTime() < 0.5);
+}
+
+void TestStudio::timeWindowFollowsTheSpinBox()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *spin = window.plots()->findChild<QAbstractSpinBox *>();
+    QVERIFY(spin);
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, "30");
+    QTest::keyClick(spin, Qt::Key_Enter);
+    QTRY_COMPARE(window.plots()->windowSeconds(), 30.0);
+    QVERIFY(window.engine().history().keepSeconds() >= 30.0);
+}
+
+void TestStudio::stopAllWorksFromAnywhere()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.engine().isRunning());
+    // With the focus in a text field of a dock, Esc still stops everything.
+    auto *filter = window.eventLog()->findChild<QLineEdit *>("filterText");
+    QVERIFY(filter);
+    filter->setFocus();
+    QTest::keyClick(filter, Qt::Key_Escape);
+    QVERIFY(!window.engine().isRunning());
+    window.engine().run();
+    QTest::mouseClick(window.findChild<QWidget *>("stopAllButton"), Qt::LeftButton);
+    QVERIFY(!window.engine().isRunning());
+}
+
+void TestStudio::aKeyInTheViewportTakesOver()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *teleop = window.findChild<QAction *>("teleopAction");
+    QVERIFY(!teleop->isChecked());
+    window.viewport()->setFocus();
+    QTest::keyPress(window.viewport(), Qt::Key_W);
+    QTest::qWait(100);
+    QTest::keyRelease(window.viewport(), Qt::Key_W);
+    QTRY_VERIFY(window.engine().isManual());
+    QVERIFY(teleop->isChecked());
+    QTRY_COMPARE(window.findChild<QLabel *>("operatorLabel")->text(), QString("You are driving"));
+    // The toolbar toggle hands the grippers back.
+    teleop->trigger();
+    QVERIFY(!window.engine().isManual());
+}
+
+void TestStudio::eventLogMovesThePlotCursor()
+{
+    MainWindow window(options());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
+    window.engine().pause();
+    QTableView *table = window.eventLog()->findChild<QTableView *>("eventTable");
+    QVERIFY(table);
+    window.findChild<QDockWidget *>("eventsDock")->raise();
+    const QModelIndex first = table->model()->index(0, 1);
+    const QRect cell = table->visualRect(first);
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell.center());
+    QTRY_VERIFY(window.plots()->isPaused());
+    const double t = first.data(EventLogModel::TimeRole).toDouble();
+    QCOMPARE(window.plots()->cursorTime(), t);
+}
+
+void TestStudio::layoutIsSavedAndRestored()
+{
+    StudioOptions o = options();
+    {
+        MainWindow window(o);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.findChild<QDockWidget *>("metricsDock")->close();
+        window.close();
+    }
+    MainWindow window(o);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
+    QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
+    window.findChild<QAction *>("resetLayoutAction")->trigger();
+    QVERIFY(!window.findChild<QDockWidget *>("metricsDock")->isHidden());
+}
+
+void TestStudio::switchesToGerman()
+{
+    Studio studio(options());
+    studio.start();
+    QCOMPARE(studio.language(), QString("en"));
+    QVERIFY(QTest::qWaitForWindowExposed(studio.window()));
+    QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
+             QString("Plots"));
+    QSignalSpy rebuilt(&studio, &Studio::windowRebuilt);
+
+    // The preferences dialog is modal: answer it once it is up.
+    QTimer::singleShot(0, this, [] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QComboBox *picker = dialog->languagePicker();
+        picker->setFocus();
+        while (picker->currentData().toString() != "de")
+            QTest::keyClick(picker, Qt::Key_Down);
+        QTest::keyClick(dialog, Qt::Key_Return);
+    });
+    studio.window()->findChild<QAction *>("preferencesAction")->trigger();
+    QTRY_COMPARE(rebuilt.count(), 1);
+    QCOMPARE(studio.language(), QString("de"));
+    QCOMPARE(PreferencesDialog::savedLanguage(), QString("de"));
+    MainWindow *window = studio.window();
+    QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
+    QCOMPARE(window->findChild<QAction *>("stopAllAction")->text(), QString("Alles stoppen"));
+    QCOMPARE(window->findChild<QDockWidget *>("eventsDock")->windowTitle(),
+             QString("Ereignisse"));
+    studio.setLanguage("en");
+    QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
+             QString("Plots"));
+}
+
+void TestStudio::screenshotHook()
+{
+    QTemporaryDir dir;
+    const QString png = dir.filePath("studio.png");
+    QProcess studio;
+    studio.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("QT_QPA_PLATFORM", "xcb");
+    env.insert("XDG_CONFIG_HOME", dir.path());
+    studio.setProcessEnvironment(env);
+    studio.start(SEMHAP_STUDIO_BINARY, {"--screenshot", png, "--quit-after", "2", "--size",
+                                        "1280x800", "--pose-port", "0"});
+    QVERIFY(studio.waitForFinished(60000));
+    QCOMPARE(studio.exitCode(), 0);
+    QCOMPARE(QString::fromUtf8(studio.readAllStandardOutput()).trimmed(), png);
+    const QImage image(png);
+    QCOMPARE(image.size(), QSize(1280, 800));
+
+    // A router that does not load leaves the window open with the reason; a malformed
+    // option is refused at once with exit code 2.
+    studio.start(SEMHAP_STUDIO_BINARY, {"--router", "C9", "--quit-after", "0.5",
+                                        "--pose-port", "0"});
+    QVERIFY(studio.waitForFinished(60000));
+    QCOMPARE(studio.exitCode(), 0); // the window opens and says what is wrong
+    studio.start(SEMHAP_STUDIO_BINARY, {"--speed", "fast"});
+    QVERIFY(studio.waitForFinished(60000));
+    QCOMPARE(studio.exitCode(), 2);
+}
+
+QTEST_MAIN(TestStudio)
+#include "tst_studio.moc"
