@@ -247,7 +247,7 @@ static std::vector<Gripper> shownGrippers(const LiveHistory &history)
     for (Gripper gripper : {Gripper::Right, Gripper::Left}) {
         const GripperThresholds &thresholds = history.thresholds()[size_t(gripper)];
         const auto &frames = history.frames(gripper);
-        if (thresholds.hasForce || thresholds.hasSlip || frames.end() > 0)
+        if (thresholds.hasForce || thresholds.hasSlip || !frames.isEmpty())
             shown.push_back(gripper);
     }
     return shown;
