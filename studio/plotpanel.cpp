@@ -211,6 +211,8 @@ PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
     connect(m_plot, &QCustomPlot::mousePress, this, &PlotPanel::onMousePress);
     connect(m_plot, &QCustomPlot::mouseMove, this, &PlotPanel::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
+    // Pixels are known only once the plot is laid out (after a resize, say).
+    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
     connect(&m_history, &LiveHistory::reset, this, [this] {
         m_cursorTime = std::numeric_limits<double>::quiet_NaN();
         rebuild();
@@ -314,6 +316,7 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     bold.setBold(true);
     titleItem->setFont(bold);
     titleItem->setBrush(QColor(255, 255, 255, 200));
+    titleItem->setLayer(QStringLiteral("legend"));
     return rect;
 }
 
@@ -361,11 +364,18 @@ void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString
           value);
     place(line->point2, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords, 1.0,
           value);
-    QCPItemText *label = addText(m_plot, rect, name, Qt::AlignRight | Qt::AlignBottom);
-    label->setLayer(QStringLiteral("spans"));
-    label->setColor(color.darker(130));
-    place(label->position, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords,
-          1.0, value);
+    // Named on the right axis, beside the plot, where no data, legend or span can hide it.
+    QCPAxis *names = rect->axis(QCPAxis::atRight);
+    auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
+    if (!ticker) {
+        ticker.reset(new QCPAxisTickerText);
+        ticker->setSubTickCount(0);
+        names->setTicker(ticker);
+        names->setVisible(true);
+        names->setTickLabels(true);
+        names->setBasePen(Qt::NoPen);
+    }
+    ticker->addTick(value, name);
 }
 
 /** The gripper's name as shown (the data keep the untranslated one). */
@@ -427,6 +437,7 @@ void PlotPanel::addDevice(int device)
         info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
     plot->rect = addRect(title, 2);
     plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
+    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
         const QString &name = info.channels[channel];
         const QColor color = palette[size_t(channel) % std::size(palette)];
@@ -535,7 +546,7 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
         brush = QBrush(hatch, Qt::BDiagPattern);
     } else {
         QColor fill = color;
-        fill.setAlpha(span.category == Category::Exception ? 70 : 45);
+        fill.setAlpha(span.category == Category::Exception ? 70 : 32);
         brush = QBrush(fill);
     }
     const QString id =
@@ -614,6 +625,13 @@ void PlotPanel::syncSpans()
     m_spans.erase(gone, m_spans.end());
 }
 
+/** Sets the rect's value range on both sides, so the threshold names stay at their lines. */
+static void setValueRange(QCPAxisRect *rect, double lower, double upper)
+{
+    rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
+    rect->axis(QCPAxis::atRight)->setRange(lower, upper);
+}
+
 void PlotPanel::fitValueAxes()
 {
     if (m_rects.empty())
@@ -626,9 +644,10 @@ void PlotPanel::fitValueAxes()
     };
     for (auto &plot : m_grippers) {
         const double force = visibleTop(plot->sum, std::max(1.0, plot->thresholdTop));
-        plot->forceRect->axis(QCPAxis::atLeft)->setRange(0.0, force * 1.12);
+        // Headroom above the data for the title, the legend and the span labels.
+        setValueRange(plot->forceRect, 0.0, force * 1.3);
         const double count = visibleTop(plot->count, std::max(4.0, plot->countTop));
-        plot->countRect->axis(QCPAxis::atLeft)->setRange(0.0, std::ceil(count * 1.15));
+        setValueRange(plot->countRect, 0.0, std::ceil(count * 1.3));
     }
     for (auto &plot : m_devices) {
         // Normalised outputs keep a fixed 0..1 scale so devices compare at a glance; a
@@ -643,8 +662,8 @@ void PlotPanel::fitValueAxes()
                 high = std::max(high, range.upper);
             }
         }
-        const double pad = 0.06 * (high - low);
-        plot->rect->axis(QCPAxis::atLeft)->setRange(low - pad, high + pad);
+        const double span = high - low;
+        setValueRange(plot->rect, low - 0.06 * span, high + 0.4 * span);
     }
 }
 
@@ -709,12 +728,19 @@ void PlotPanel::updateCursor()
     }
     m_readout->setText(lines.join(QLatin1Char('\n')));
     m_readout->adjustSize();
+    placeReadout();
+}
 
+void PlotPanel::placeReadout()
+{
+    if (std::isnan(m_cursorTime) || m_rects.empty())
+        return;
+    const double t = m_cursorTime;
     QCPAxis *time = m_rects.front()->axis(QCPAxis::atBottom);
     const int x = int(time->coordToPixel(t));
-    const QRect area = m_plot->rect();
+    // Right of the cursor, or left of it where it would cover the threshold names.
     int left = x + 10;
-    if (left + m_readout->width() > area.right())
+    if (left + m_readout->width() > m_rects.front()->right())
         left = x - 10 - m_readout->width();
     m_readout->move(std::max(0, left), m_rects.front()->top() + 2);
     m_readout->setVisible(time->range().contains(t));

@@ -86,6 +86,7 @@ private:
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);
     void updateCursor();
+    void placeReadout();
 
     void onMousePress(QMouseEvent *event);
     void onMouseMove(QMouseEvent *event);
