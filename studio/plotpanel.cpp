@@ -1,0 +1,947 @@
+// SPDX-License-Identifier: MIT
+#include "plotpanel.h"
+
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QSpinBox>
+#include <QTextStream>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+
+namespace semhap {
+
+namespace {
+
+// Okabe–Ito: readable for the common colour-vision deficiencies.
+const QColor Blue(0x00, 0x72, 0xB2);
+const QColor Orange(0xE6, 0x9F, 0x00);
+const QColor Vermillion(0xD5, 0x5E, 0x00);
+const QColor Green(0x00, 0x9E, 0x73);
+const QColor Sky(0x56, 0xB4, 0xE9);
+const QColor Purple(0xCC, 0x79, 0xA7);
+const QColor Yellow(0xF0, 0xE4, 0x42);
+const QColor Black(0x00, 0x00, 0x00);
+
+constexpr double MinWindow = 2.0;
+constexpr double MaxWindow = 120.0;
+
+/** The latest sample at or before `t`, or null when the series starts after it. */
+template<typename T> const T *sampleAt(const LiveSeries<T> &series, double t)
+{
+    qint64 lo = series.begin();
+    qint64 hi = series.end();
+    // First index whose time is after t.
+    while (lo < hi) {
+        const qint64 mid = lo + (hi - lo) / 2;
+        if (series.at(mid).t <= t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo > series.begin() ? &series.at(lo - 1) : nullptr;
+}
+
+void place(QCPItemPosition *position, QCPAxisRect *rect, QCPItemPosition::PositionType typeX,
+           QCPItemPosition::PositionType typeY, double x, double y)
+{
+    position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    position->setAxisRect(rect);
+    position->setTypeX(typeX);
+    position->setTypeY(typeY);
+    position->setCoords(x, y);
+}
+
+/** A vertical line at time `t` across `rect`. */
+QCPItemStraightLine *addTimeLine(QCustomPlot *plot, QCPAxisRect *rect, double t, const QPen &pen)
+{
+    auto *line = new QCPItemStraightLine(plot);
+    line->setClipAxisRect(rect);
+    line->setPen(pen);
+    line->setSelectable(false);
+    place(line->point1, rect, QCPItemPosition::ptPlotCoords, QCPItemPosition::ptAxisRectRatio, t,
+          0.0);
+    place(line->point2, rect, QCPItemPosition::ptPlotCoords, QCPItemPosition::ptAxisRectRatio, t,
+          1.0);
+    return line;
+}
+
+void moveTimeLine(QCPItemStraightLine *line, double t)
+{
+    line->point1->setCoords(t, 0.0);
+    line->point2->setCoords(t, 1.0);
+}
+
+QCPItemText *addText(QCustomPlot *plot, QCPAxisRect *rect, const QString &text,
+                     Qt::Alignment alignment)
+{
+    auto *item = new QCPItemText(plot);
+    item->setClipAxisRect(rect);
+    item->setSelectable(false);
+    item->setText(text);
+    item->setPositionAlignment(alignment);
+    item->setPadding(QMargins(3, 1, 3, 1));
+    return item;
+}
+
+QString number(double value)
+{
+    return QLocale::c().toString(value, 'g', 10);
+}
+
+} // namespace
+
+struct PlotPanel::GripperPlot
+{
+    Gripper gripper = Gripper::Right;
+    QCPAxisRect *forceRect = nullptr;
+    QCPAxisRect *countRect = nullptr;
+    QCPGraph *left = nullptr;
+    QCPGraph *right = nullptr;
+    QCPGraph *sum = nullptr;
+    QCPGraph *count = nullptr;
+    double thresholdTop = 0.0; ///< the highest force threshold, kept in view
+    double countTop = 0.0;     ///< the highest count threshold, kept in view
+    qint64 next = 0;           ///< the history index not yet plotted
+};
+
+struct PlotPanel::DevicePlot
+{
+    int device = 0;
+    QCPAxisRect *rect = nullptr;
+    std::vector<QCPGraph *> graphs;
+    qint64 next = 0;
+};
+
+/** The items showing one MessageSpan on its gripper's two rects. */
+struct PlotPanel::SpanView
+{
+    Gripper gripper = Gripper::Right;
+    QString node;
+    Message message = Message::Grasp;
+    double begin = 0.0;
+    std::array<QCPItemRect *, 2> shades{};
+    std::array<QCPItemStraightLine *, 2> beginLines{};
+    std::array<QCPItemStraightLine *, 2> endLines{};
+    QCPItemText *label = nullptr;
+    bool seen = false;
+
+    bool shows(const MessageSpan &span) const
+    {
+        return span.gripper == gripper && span.node == node && span.message == message &&
+               span.begin == begin;
+    }
+};
+
+PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
+    : QWidget(parent), m_history(history), m_cursorTime(std::numeric_limits<double>::quiet_NaN())
+{
+    m_pauseButton = new QToolButton(this);
+    m_pauseButton->setText(tr("Pause"));
+    m_pauseButton->setToolTip(tr("Freeze the view; data keep being recorded"));
+    m_pauseButton->setCheckable(true);
+    m_liveButton = new QToolButton(this);
+    m_liveButton->setText(tr("Live"));
+    m_liveButton->setToolTip(tr("Follow the newest data again"));
+    m_windowSpin = new QSpinBox(this);
+    m_windowSpin->setRange(int(MinWindow), int(MaxWindow));
+    m_windowSpin->setValue(int(m_windowSeconds));
+    m_windowSpin->setSuffix(tr(" s"));
+    m_windowSpin->setKeyboardTracking(false);
+    m_windowSpin->setToolTip(tr("Width of the live time window"));
+    auto *windowLabel = new QLabel(tr("&Window:"), this);
+    windowLabel->setBuddy(m_windowSpin);
+    auto *csvButton = new QToolButton(this);
+    csvButton->setText(tr("Export CSV…"));
+    csvButton->setToolTip(tr("Save the visible time range as CSV"));
+    auto *pngButton = new QToolButton(this);
+    pngButton->setText(tr("Export PNG…"));
+    pngButton->setToolTip(tr("Save the plots as an image"));
+
+    auto *toolbar = new QHBoxLayout;
+    toolbar->addWidget(m_pauseButton);
+    toolbar->addWidget(m_liveButton);
+    toolbar->addSpacing(12);
+    toolbar->addWidget(windowLabel);
+    toolbar->addWidget(m_windowSpin);
+    toolbar->addStretch(1);
+    toolbar->addWidget(csvButton);
+    toolbar->addWidget(pngButton);
+
+    m_plot = new QCustomPlot(this);
+    m_plot->setAutoAddPlottableToLegend(false);
+    // Fast polylines draw long non-antialiased graphs several times faster.
+    m_plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
+    m_plot->addLayer(QStringLiteral("spans"), m_plot->layer(QStringLiteral("grid")),
+                     QCustomPlot::limAbove);
+    m_plot->setToolTip(tr("Click to place the cursor; when paused, drag to pan (Shift+drag "
+                          "moves the cursor) and use the wheel to zoom"));
+
+    m_readout = new QLabel(m_plot);
+    m_readout->setObjectName(QStringLiteral("cursorReadout"));
+    m_readout->setStyleSheet(
+        QStringLiteral("QLabel { background: rgba(255, 255, 255, 225); border: 1px solid #888;"
+                       " padding: 3px; color: black; }"));
+    m_readout->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_readout->hide();
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addLayout(toolbar);
+    layout->addWidget(m_plot, 1);
+
+    connect(m_pauseButton, &QToolButton::toggled, this, &PlotPanel::setPaused);
+    connect(m_liveButton, &QToolButton::clicked, this, &PlotPanel::goLive);
+    connect(m_windowSpin, qOverload<int>(&QSpinBox::valueChanged), this,
+            [this](int seconds) { setWindowSeconds(seconds); });
+    connect(csvButton, &QToolButton::clicked, this, &PlotPanel::exportCsvDialog);
+    connect(pngButton, &QToolButton::clicked, this, &PlotPanel::exportPngDialog);
+    connect(m_plot, &QCustomPlot::mousePress, this, &PlotPanel::onMousePress);
+    connect(m_plot, &QCustomPlot::mouseMove, this, &PlotPanel::onMouseMove);
+    connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
+    // Pixels are known only once the plot is laid out (after a resize, say).
+    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
+    connect(&m_history, &LiveHistory::reset, this, [this] {
+        m_cursorTime = std::numeric_limits<double>::quiet_NaN();
+        rebuild();
+        goLive();
+    });
+    connect(&m_history, &LiveHistory::updated, this, &PlotPanel::onUpdated);
+
+    if (m_history.keepSeconds() < m_windowSeconds)
+        m_history.setKeepSeconds(m_windowSeconds);
+    rebuild();
+    onUpdated();
+}
+
+PlotPanel::~PlotPanel() = default;
+
+void PlotPanel::clearPlots()
+{
+    m_plot->clearItems();
+    m_plot->clearGraphs();
+    m_plot->plotLayout()->clear();
+    delete m_marginGroup;
+    m_marginGroup = new QCPMarginGroup(m_plot);
+    m_rects.clear();
+    m_grippers.clear();
+    m_devices.clear();
+    m_spans.clear();
+    m_cursorLines.clear();
+}
+
+/** The grippers worth a plot, right first: with a detector or with contact data. */
+static std::vector<Gripper> shownGrippers(const LiveHistory &history)
+{
+    std::vector<Gripper> shown;
+    for (Gripper gripper : {Gripper::Right, Gripper::Left}) {
+        const GripperThresholds &thresholds = history.thresholds()[size_t(gripper)];
+        const auto &frames = history.frames(gripper);
+        if (thresholds.hasForce || thresholds.hasSlip || !frames.isEmpty())
+            shown.push_back(gripper);
+    }
+    return shown;
+}
+
+bool PlotPanel::needsRebuild() const
+{
+    const std::vector<Gripper> shown = shownGrippers(m_history);
+    if (shown.size() != m_grippers.size())
+        return true;
+    for (size_t i = 0; i < shown.size(); ++i) {
+        if (shown[i] != m_grippers[i]->gripper)
+            return true;
+    }
+    return false;
+}
+
+void PlotPanel::rebuild()
+{
+    clearPlots();
+    for (Gripper gripper : shownGrippers(m_history))
+        addGripper(gripper);
+    for (int device = 0; device < int(m_history.devices().size()); ++device)
+        addDevice(device);
+    if (m_rects.empty())
+        return;
+    QCPAxis *timeAxis = m_rects.back()->axis(QCPAxis::atBottom);
+    timeAxis->setTickLabels(true);
+    timeAxis->setLabel(tr("pipeline time (s)"));
+    QPen cursorPen(QColor(0x33, 0x33, 0x33));
+    cursorPen.setWidthF(1.5);
+    for (QCPAxisRect *rect : m_rects) {
+        QCPItemStraightLine *line = addTimeLine(m_plot, rect, 0.0, cursorPen);
+        line->setObjectName(QStringLiteral("cursor"));
+        line->setVisible(false);
+        m_cursorLines.push_back(line);
+    }
+    updateInteractions();
+}
+
+QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
+{
+    auto *rect = new QCPAxisRect(m_plot);
+    rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_marginGroup);
+    rect->setRangeDrag(Qt::Horizontal);
+    rect->setRangeZoom(Qt::Horizontal);
+    rect->setMinimumSize(0, 50);
+    QCPAxis *time = rect->axis(QCPAxis::atBottom);
+    time->setTickLabels(false);
+    time->setPadding(0);
+    connect(time, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
+            &PlotPanel::onTimeRangeChanged);
+    if (!m_rects.empty())
+        time->setRange(m_rects.front()->axis(QCPAxis::atBottom)->range());
+    const int row = m_plot->plotLayout()->rowCount();
+    m_plot->plotLayout()->addElement(row, 0, rect);
+    m_plot->plotLayout()->setRowStretchFactor(row, stretch);
+    m_rects.push_back(rect);
+
+    QCPItemText *titleItem = addText(m_plot, rect, title, Qt::AlignLeft | Qt::AlignTop);
+    place(titleItem->position, rect, QCPItemPosition::ptAxisRectRatio,
+          QCPItemPosition::ptAxisRectRatio, 0.0, 0.0);
+    QFont bold = titleItem->font();
+    bold.setBold(true);
+    titleItem->setFont(bold);
+    titleItem->setBrush(QColor(255, 255, 255, 200));
+    titleItem->setLayer(QStringLiteral("legend"));
+    return rect;
+}
+
+QCPGraph *PlotPanel::addGraph(QCPAxisRect *rect, const QString &id, const QString &name,
+                              const QColor &color, double width)
+{
+    QCPGraph *graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    graph->setObjectName(id);
+    graph->setName(name);
+    QPen pen(color);
+    pen.setWidthF(width);
+    graph->setPen(pen);
+    graph->setAntialiased(false);
+    graph->setAdaptiveSampling(true);
+    QCPLegend *legend = nullptr;
+    if (rect->insetLayout()->elementCount() > 0)
+        legend = qobject_cast<QCPLegend *>(rect->insetLayout()->elementAt(0));
+    if (!legend) {
+        legend = new QCPLegend;
+        rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+        legend->setLayer(QStringLiteral("legend"));
+        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+        legend->setBrush(QColor(255, 255, 255, 200));
+        legend->setBorderPen(QPen(QColor(0xAA, 0xAA, 0xAA)));
+        legend->setRowSpacing(0);
+        legend->setColumnSpacing(6);
+        legend->setIconSize(16, 8);
+        legend->setMargins(QMargins(4, 1, 4, 1));
+    }
+    graph->addToLegend(legend);
+    return graph;
+}
+
+void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString &name,
+                             double value, const QColor &color)
+{
+    QPen pen(color, 1.0, Qt::DashLine);
+    auto *line = new QCPItemStraightLine(m_plot);
+    line->setObjectName(id);
+    line->setClipAxisRect(rect);
+    line->setLayer(QStringLiteral("spans"));
+    line->setPen(pen);
+    line->setSelectable(false);
+    place(line->point1, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords, 0.0,
+          value);
+    place(line->point2, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords, 1.0,
+          value);
+    // Named on the right axis, beside the plot, where no data, legend or span can hide it.
+    QCPAxis *names = rect->axis(QCPAxis::atRight);
+    auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
+    if (!ticker) {
+        ticker.reset(new QCPAxisTickerText);
+        ticker->setSubTickCount(0);
+        names->setTicker(ticker);
+        names->setVisible(true);
+        names->setTickLabels(true);
+        names->setBasePen(Qt::NoPen);
+    }
+    ticker->addTick(value, name);
+}
+
+/** The gripper's name as shown (the data keep the untranslated one). */
+static QString gripperTitle(Gripper gripper)
+{
+    return gripper == Gripper::Right ? PlotPanel::tr("right gripper")
+                                     : PlotPanel::tr("left gripper");
+}
+
+void PlotPanel::addGripper(Gripper gripper)
+{
+    auto plot = std::make_unique<GripperPlot>();
+    plot->gripper = gripper;
+    const QString id = gripperName(gripper);
+    const GripperThresholds &thresholds = m_history.thresholds()[size_t(gripper)];
+
+    plot->forceRect = addRect(tr("%1: force").arg(gripperTitle(gripper)), 3);
+    plot->forceRect->axis(QCPAxis::atLeft)->setLabel(tr("F (N)"));
+    plot->left =
+        addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left finger"), Sky, 1.0);
+    plot->right =
+        addGraph(plot->forceRect, id + QStringLiteral(".right.f"), tr("right finger"), Green, 1.0);
+    plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 2.0);
+    if (thresholds.hasForce) {
+        const QString format = tr("%1 %2 N");
+        addThreshold(plot->forceRect, id + QStringLiteral(".grasp"),
+                     format.arg(tr("grasp"), number(thresholds.grasp)), thresholds.grasp, Blue);
+        addThreshold(plot->forceRect, id + QStringLiteral(".break"),
+                     format.arg(tr("break"), number(thresholds.breakForce)), thresholds.breakForce,
+                     Orange);
+        addThreshold(plot->forceRect, id + QStringLiteral(".max"),
+                     format.arg(tr("max"), number(thresholds.max)), thresholds.max, Vermillion);
+        plot->thresholdTop = std::max({thresholds.grasp, thresholds.breakForce, thresholds.max});
+    }
+
+    plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 2);
+    plot->countRect->axis(QCPAxis::atLeft)->setLabel(tr("N"));
+    plot->count = addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"),
+                           Purple.darker(140), 1.5);
+    if (thresholds.hasSlip) {
+        const QString format = tr("%1 %2");
+        addThreshold(plot->countRect, id + QStringLiteral(".loss"),
+                     format.arg(tr("loss"), number(thresholds.loss)), thresholds.loss, Vermillion);
+        addThreshold(plot->countRect, id + QStringLiteral(".min"),
+                     format.arg(tr("min"), number(thresholds.min)), thresholds.min, Purple);
+        plot->countTop = std::max(thresholds.loss, thresholds.min);
+    }
+    plot->next = m_history.frames(gripper).begin();
+    m_grippers.push_back(std::move(plot));
+}
+
+void PlotPanel::addDevice(int device)
+{
+    static const QColor palette[] = {Blue, Orange, Green, Vermillion, Sky, Purple, Black, Yellow};
+    const LiveDevice &info = m_history.devices()[size_t(device)];
+    auto plot = std::make_unique<DevicePlot>();
+    plot->device = device;
+    const QString title =
+        info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
+    plot->rect = addRect(title, 2);
+    plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
+    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
+    for (int channel = 0; channel < int(info.channels.size()); ++channel) {
+        const QString &name = info.channels[channel];
+        const QColor color = palette[size_t(channel) % std::size(palette)];
+        // Past the palette, dashes keep channels apart.
+        QCPGraph *graph =
+            addGraph(plot->rect, info.name + QLatin1Char('.') + name, name, color, 1.0);
+        if (channel >= int(std::size(palette))) {
+            QPen pen = graph->pen();
+            pen.setStyle(Qt::DashLine);
+            graph->setPen(pen);
+        }
+        plot->graphs.push_back(graph);
+    }
+    plot->next = m_history.deviceFrames(device).begin();
+    m_devices.push_back(std::move(plot));
+}
+
+void PlotPanel::onUpdated()
+{
+    if (needsRebuild())
+        rebuild();
+    appendNew();
+    syncSpans();
+    if (m_paused && !m_rects.empty()) {
+        const QCPRange range = m_rects.front()->axis(QCPAxis::atBottom)->range();
+        setTimeRange(range.lower, range.upper);
+    } else {
+        const double now = m_history.now();
+        setTimeRange(now - m_windowSeconds, now);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotPanel::appendNew()
+{
+    QVector<QCPGraphData> left, right, sum, count;
+    for (auto &plot : m_grippers) {
+        const LiveSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
+        left.clear();
+        right.clear();
+        sum.clear();
+        count.clear();
+        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
+            const ContactFrame &frame = frames.at(i);
+            left.append(QCPGraphData(frame.t, frame.left.f));
+            right.append(QCPGraphData(frame.t, frame.right.f));
+            sum.append(QCPGraphData(frame.t, frame.totalForce()));
+            count.append(QCPGraphData(frame.t, frame.totalContacts()));
+        }
+        plot->next = frames.end();
+        plot->left->data()->add(left, true);
+        plot->right->data()->add(right, true);
+        plot->sum->data()->add(sum, true);
+        plot->count->data()->add(count, true);
+    }
+    std::vector<QVector<QCPGraphData>> channels;
+    for (auto &plot : m_devices) {
+        const LiveSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
+        channels.assign(plot->graphs.size(), QVector<QCPGraphData>());
+        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
+            const DeviceFrame &frame = frames.at(i);
+            const size_t n = std::min(channels.size(), size_t(frame.channelCount));
+            for (size_t c = 0; c < n; ++c)
+                channels[c].append(QCPGraphData(frame.t, frame.values[c]));
+        }
+        plot->next = frames.end();
+        for (size_t c = 0; c < channels.size(); ++c)
+            plot->graphs[c]->data()->add(channels[c], true);
+    }
+    // The history forgot what is older; so do the graphs.
+    const double oldest = m_history.now() - m_history.keepSeconds();
+    for (int i = 0; i < m_plot->graphCount(); ++i)
+        m_plot->graph(i)->data()->removeBefore(oldest);
+}
+
+/** The message as the plots label it. */
+static QString messageTitle(Message message)
+{
+    switch (message) {
+    case Message::Grasp:
+        return PlotPanel::tr("grasp");
+    case Message::Break:
+        return PlotPanel::tr("break");
+    case Message::Slip:
+        return PlotPanel::tr("slip");
+    }
+    return QString();
+}
+
+PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const GripperPlot &plot)
+{
+    SpanView view;
+    view.gripper = span.gripper;
+    view.node = span.node;
+    view.message = span.message;
+    view.begin = span.begin;
+    // Confirmations blue, exceptions orange; slip hatched vermillion so it never reads as
+    // a break even without colour.
+    QColor color = Blue;
+    QBrush brush;
+    if (span.category == Category::Exception)
+        color = span.message == Message::Slip ? Vermillion : Orange;
+    if (span.message == Message::Slip) {
+        QColor hatch = color;
+        hatch.setAlpha(140);
+        brush = QBrush(hatch, Qt::BDiagPattern);
+    } else {
+        QColor fill = color;
+        fill.setAlpha(span.category == Category::Exception ? 70 : 32);
+        brush = QBrush(fill);
+    }
+    const QString id =
+        QStringLiteral("span.%1.%2").arg(gripperName(span.gripper), messageName(span.message));
+    const std::array<QCPAxisRect *, 2> rects = {plot.forceRect, plot.countRect};
+    for (size_t i = 0; i < rects.size(); ++i) {
+        auto *shade = new QCPItemRect(m_plot);
+        shade->setObjectName(id);
+        shade->setClipAxisRect(rects[i]);
+        shade->setLayer(QStringLiteral("spans"));
+        shade->setPen(Qt::NoPen);
+        shade->setBrush(brush);
+        shade->setSelectable(false);
+        place(shade->topLeft, rects[i], QCPItemPosition::ptPlotCoords,
+              QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
+        place(shade->bottomRight, rects[i], QCPItemPosition::ptPlotCoords,
+              QCPItemPosition::ptAxisRectRatio, span.end, 1.0);
+        view.shades[i] = shade;
+        view.beginLines[i] = addTimeLine(m_plot, rects[i], span.begin, QPen(color, 1.0));
+        view.endLines[i] = addTimeLine(m_plot, rects[i], span.end, QPen(color, 1.0));
+        view.beginLines[i]->setLayer(QStringLiteral("spans"));
+        view.endLines[i]->setLayer(QStringLiteral("spans"));
+    }
+    view.label =
+        addText(m_plot, plot.forceRect, messageTitle(span.message), Qt::AlignLeft | Qt::AlignTop);
+    view.label->setObjectName(id);
+    view.label->setColor(color.darker(150));
+    QFont font = view.label->font();
+    font.setBold(true);
+    view.label->setFont(font);
+    view.label->setBrush(QColor(255, 255, 255, 170));
+    // One row per message below the rect's title, so overlapping spans stay readable.
+    place(view.label->position, plot.forceRect, QCPItemPosition::ptPlotCoords,
+          QCPItemPosition::ptAxisRectRatio, span.begin, 0.14 + 0.13 * int(span.message));
+    return view;
+}
+
+void PlotPanel::placeSpan(const SpanView &view, const MessageSpan &span)
+{
+    for (size_t i = 0; i < view.shades.size(); ++i) {
+        view.shades[i]->bottomRight->setCoords(span.end, 1.0);
+        moveTimeLine(view.endLines[i], span.end);
+        view.endLines[i]->setVisible(!span.active);
+    }
+}
+
+void PlotPanel::syncSpans()
+{
+    for (SpanView &view : m_spans)
+        view.seen = false;
+    for (const MessageSpan &span : m_history.spans()) {
+        const auto plot = std::find_if(m_grippers.begin(), m_grippers.end(),
+                                       [&](const auto &p) { return p->gripper == span.gripper; });
+        if (plot == m_grippers.end())
+            continue;
+        auto view = std::find_if(m_spans.begin(), m_spans.end(),
+                                 [&](const SpanView &v) { return v.shows(span); });
+        if (view == m_spans.end()) {
+            m_spans.push_back(makeSpanView(span, **plot));
+            view = m_spans.end() - 1;
+        }
+        view->seen = true;
+        placeSpan(*view, span);
+    }
+    // Spans the history forgot.
+    const auto gone =
+        std::partition(m_spans.begin(), m_spans.end(), [](const SpanView &v) { return v.seen; });
+    for (auto it = gone; it != m_spans.end(); ++it) {
+        for (size_t i = 0; i < it->shades.size(); ++i) {
+            m_plot->removeItem(it->shades[i]);
+            m_plot->removeItem(it->beginLines[i]);
+            m_plot->removeItem(it->endLines[i]);
+        }
+        m_plot->removeItem(it->label);
+    }
+    m_spans.erase(gone, m_spans.end());
+}
+
+/** Sets the rect's value range on both sides, so the threshold names stay at their lines. */
+static void setValueRange(QCPAxisRect *rect, double lower, double upper)
+{
+    rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
+    rect->axis(QCPAxis::atRight)->setRange(lower, upper);
+}
+
+void PlotPanel::fitValueAxes()
+{
+    if (m_rects.empty())
+        return;
+    const QCPRange visible = m_rects.front()->axis(QCPAxis::atBottom)->range();
+    const auto visibleTop = [&visible](QCPGraph *graph, double floor) {
+        bool found = false;
+        const QCPRange range = graph->getValueRange(found, QCP::sdBoth, visible);
+        return found ? std::max(floor, range.upper) : floor;
+    };
+    for (auto &plot : m_grippers) {
+        const double force = visibleTop(plot->sum, std::max(1.0, plot->thresholdTop));
+        // Headroom above the data for the title, the legend and the span labels.
+        setValueRange(plot->forceRect, 0.0, force * 1.3);
+        const double count = visibleTop(plot->count, std::max(4.0, plot->countTop));
+        setValueRange(plot->countRect, 0.0, std::ceil(count * 1.3));
+    }
+    for (auto &plot : m_devices) {
+        // Normalised outputs keep a fixed 0..1 scale so devices compare at a glance; a
+        // model with a wider range widens it.
+        double low = 0.0;
+        double high = 1.0;
+        for (QCPGraph *graph : plot->graphs) {
+            bool found = false;
+            const QCPRange range = graph->getValueRange(found, QCP::sdBoth, visible);
+            if (found) {
+                low = std::min(low, range.lower);
+                high = std::max(high, range.upper);
+            }
+        }
+        const double span = high - low;
+        setValueRange(plot->rect, low - 0.06 * span, high + 0.4 * span);
+    }
+}
+
+void PlotPanel::setTimeRange(double lower, double upper)
+{
+    m_syncingRange = true;
+    for (QCPAxisRect *rect : m_rects)
+        rect->axis(QCPAxis::atBottom)->setRange(lower, upper);
+    m_syncingRange = false;
+    // Labels of spans that began before the view stay at its left edge.
+    for (SpanView &view : m_spans)
+        view.label->position->setCoords(std::max(view.begin, lower),
+                                        view.label->position->coords().y());
+    fitValueAxes();
+    updateCursor();
+}
+
+void PlotPanel::onTimeRangeChanged(const QCPRange &range)
+{
+    if (m_syncingRange)
+        return;
+    setTimeRange(range.lower, range.upper);
+}
+
+void PlotPanel::updateCursor()
+{
+    const bool placed = !std::isnan(m_cursorTime);
+    for (QCPItemStraightLine *line : m_cursorLines) {
+        line->setVisible(placed);
+        if (placed)
+            moveTimeLine(line, m_cursorTime);
+    }
+    if (!placed || m_rects.empty()) {
+        m_readout->hide();
+        return;
+    }
+    const double t = m_cursorTime;
+    QStringList lines;
+    lines << tr("t = %1 s").arg(QLocale().toString(t, 'f', 3));
+    for (const auto &plot : m_grippers) {
+        const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+        if (!frame)
+            continue;
+        lines << tr("%1: F %2 N (left %3, right %4), N %5")
+                     .arg(gripperTitle(plot->gripper))
+                     .arg(QLocale().toString(frame->totalForce(), 'f', 2))
+                     .arg(QLocale().toString(frame->left.f, 'f', 2))
+                     .arg(QLocale().toString(frame->right.f, 'f', 2))
+                     .arg(frame->totalContacts());
+    }
+    for (const auto &plot : m_devices) {
+        const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
+        if (!frame)
+            continue;
+        const LiveDevice &info = m_history.devices()[size_t(plot->device)];
+        QStringList values;
+        const int n = std::min(frame->channelCount, int(info.channels.size()));
+        for (int c = 0; c < n; ++c)
+            values << tr("%1 %2").arg(info.channels[c],
+                                      QLocale().toString(frame->values[size_t(c)], 'f', 2));
+        lines << tr("%1: %2").arg(info.name, values.join(QStringLiteral(", ")));
+    }
+    m_readout->setText(lines.join(QLatin1Char('\n')));
+    m_readout->adjustSize();
+    placeReadout();
+}
+
+void PlotPanel::placeReadout()
+{
+    if (std::isnan(m_cursorTime) || m_rects.empty())
+        return;
+    const double t = m_cursorTime;
+    QCPAxis *time = m_rects.front()->axis(QCPAxis::atBottom);
+    const int x = int(time->coordToPixel(t));
+    // Right of the cursor, or left of it where it would cover the threshold names.
+    int left = x + 10;
+    if (left + m_readout->width() > m_rects.front()->right())
+        left = x - 10 - m_readout->width();
+    m_readout->move(std::max(0, left), m_rects.front()->top() + 2);
+    m_readout->setVisible(time->range().contains(t));
+}
+
+void PlotPanel::onMousePress(QMouseEvent *event)
+{
+    if (event->button() != Qt::LeftButton || m_rects.empty())
+        return;
+    const bool inside = std::any_of(m_rects.begin(), m_rects.end(), [event](QCPAxisRect *r) {
+        return r->rect().contains(event->pos());
+    });
+    if (!inside)
+        return;
+    // Live, a drag can only mean the cursor; paused, a plain drag pans and Shift picks the
+    // cursor. The plot sees the press after this signal, so switching drag off works now.
+    if (!m_paused || event->modifiers().testFlag(Qt::ShiftModifier)) {
+        m_draggingCursor = true;
+        m_plot->setInteraction(QCP::iRangeDrag, false);
+    }
+    placeCursorAt(event->pos().x());
+}
+
+void PlotPanel::onMouseMove(QMouseEvent *event)
+{
+    if (m_draggingCursor && event->buttons().testFlag(Qt::LeftButton))
+        placeCursorAt(event->pos().x());
+}
+
+void PlotPanel::onMouseRelease(QMouseEvent *)
+{
+    if (!m_draggingCursor)
+        return;
+    m_draggingCursor = false;
+    updateInteractions();
+}
+
+void PlotPanel::placeCursorAt(int pixelX)
+{
+    m_cursorTime = m_rects.front()->axis(QCPAxis::atBottom)->pixelToCoord(pixelX);
+    updateCursor();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotPanel::updateInteractions()
+{
+    m_plot->setInteractions(m_paused ? QCP::iRangeDrag | QCP::iRangeZoom : QCP::Interactions());
+}
+
+void PlotPanel::setWindowSeconds(double seconds)
+{
+    m_windowSeconds = std::clamp(seconds, MinWindow, MaxWindow);
+    {
+        const QSignalBlocker blocker(m_windowSpin);
+        m_windowSpin->setValue(int(std::lround(m_windowSeconds)));
+    }
+    if (m_history.keepSeconds() < m_windowSeconds)
+        m_history.setKeepSeconds(m_windowSeconds);
+    double upper = m_history.now();
+    if (m_paused && !m_rects.empty())
+        upper = m_rects.front()->axis(QCPAxis::atBottom)->range().upper;
+    setTimeRange(upper - m_windowSeconds, upper);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotPanel::setPaused(bool paused)
+{
+    m_paused = paused;
+    {
+        const QSignalBlocker blocker(m_pauseButton);
+        m_pauseButton->setChecked(paused);
+    }
+    updateInteractions();
+    if (!paused) {
+        const double now = m_history.now();
+        setTimeRange(now - m_windowSeconds, now);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotPanel::goLive()
+{
+    setPaused(false);
+}
+
+void PlotPanel::setCursorTime(double t)
+{
+    setPaused(true);
+    if (!m_rects.empty()) {
+        const QCPRange range = m_rects.front()->axis(QCPAxis::atBottom)->range();
+        if (!range.contains(t))
+            setTimeRange(t - range.size() / 2, t + range.size() / 2);
+    }
+    m_cursorTime = t;
+    updateCursor();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+bool PlotPanel::exportCsv(const QString &path, QString *error) const
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        if (error)
+            *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    const QCPRange visible = m_rects.empty()
+                                 ? QCPRange(m_history.now() - m_windowSeconds, m_history.now())
+                                 : m_rects.front()->axis(QCPAxis::atBottom)->range();
+
+    QStringList header{QStringLiteral("t")};
+    for (const auto &plot : m_grippers) {
+        const QString id = gripperName(plot->gripper);
+        for (const char *column : {".F", ".left.f", ".right.f", ".N"})
+            header << id + QLatin1String(column);
+    }
+    for (const auto &plot : m_devices) {
+        const LiveDevice &info = m_history.devices()[size_t(plot->device)];
+        for (const QString &channel : info.channels)
+            header << info.name + QLatin1Char('.') + channel;
+    }
+
+    // Rows at the contact frames' times (both grippers' merged) — the pipeline's tick —
+    // or at the device frames' times when no gripper has data. Every other series shows
+    // its latest sample at or before the row's time, as a sample-and-hold reading of the
+    // plot would; a cell stays empty before a series' first sample.
+    std::vector<double> times;
+    const auto collect = [&](const auto &series) {
+        for (qint64 i = series.begin(); i < series.end(); ++i) {
+            const double t = series.at(i).t;
+            if (t >= visible.lower && t <= visible.upper)
+                times.push_back(t);
+        }
+    };
+    for (const auto &plot : m_grippers)
+        collect(m_history.frames(plot->gripper));
+    if (times.empty()) {
+        for (const auto &plot : m_devices)
+            collect(m_history.deviceFrames(plot->device));
+    }
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+
+    QTextStream out(&file);
+    out << header.join(QLatin1Char(',')) << '\n';
+    QStringList cells;
+    for (double t : times) {
+        cells.clear();
+        cells << number(t);
+        for (const auto &plot : m_grippers) {
+            const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+            if (frame) {
+                cells << number(frame->totalForce()) << number(frame->left.f)
+                      << number(frame->right.f) << QString::number(frame->totalContacts());
+            } else {
+                cells << QString() << QString() << QString() << QString();
+            }
+        }
+        for (const auto &plot : m_devices) {
+            const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
+            const int n = int(m_history.devices()[size_t(plot->device)].channels.size());
+            for (int c = 0; c < n; ++c)
+                cells << (frame && c < frame->channelCount ? number(frame->values[size_t(c)])
+                                                           : QString());
+        }
+        out << cells.join(QLatin1Char(',')) << '\n';
+    }
+    out.flush();
+    if (out.status() != QTextStream::Ok) {
+        if (error)
+            *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool PlotPanel::exportPng(const QString &path, QString *error)
+{
+    if (m_plot->savePng(path))
+        return true;
+    if (error)
+        *error = tr("Cannot write %1").arg(path);
+    return false;
+}
+
+void PlotPanel::exportCsvDialog()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Plots as CSV"), QString(),
+                                                      tr("CSV files (*.csv)"));
+    QString error;
+    if (!path.isEmpty() && !exportCsv(path, &error))
+        QMessageBox::warning(this, tr("Export CSV"), error);
+}
+
+void PlotPanel::exportPngDialog()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Plots as PNG"), QString(),
+                                                      tr("PNG images (*.png)"));
+    QString error;
+    if (!path.isEmpty() && !exportPng(path, &error))
+        QMessageBox::warning(this, tr("Export PNG"), error);
+}
+
+} // namespace semhap

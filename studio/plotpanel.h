@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "livehistory.h"
+
+#include <QWidget>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+class QCPAbstractItem;
+class QCPAxisRect;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPMarginGroup;
+class QCPRange;
+class QCustomPlot;
+class QLabel;
+class QMouseEvent;
+class QSpinBox;
+class QToolButton;
+
+namespace semhap {
+
+/**
+ * The studio's live plots: per gripper its fingertip forces and contact count with the
+ * detectors' thresholds and the messages as shaded spans, and per device its channel
+ * outputs, on one shared scrolling time axis. It reads only what is new in a LiveHistory
+ * on each `updated()`, and can pause, inspect a moment with a cursor and export what it
+ * shows.
+ */
+class PlotPanel : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit PlotPanel(LiveHistory &history, QWidget *parent = nullptr);
+    ~PlotPanel() override;
+
+    /** The live view's width in pipeline seconds (2–120); the history keeps at least it. */
+    double windowSeconds() const { return m_windowSeconds; }
+    bool isPaused() const { return m_paused; }
+    /** The cursor's time, or NaN while there is none. */
+    double cursorTime() const { return m_cursorTime; }
+
+    /**
+     * Writes the visible time range as CSV (`t`, then one column per plotted series) so a
+     * moment seen live can be analysed elsewhere; false with `error` when it cannot write.
+     */
+    bool exportCsv(const QString &path, QString *error) const;
+    /** Saves the plots as they are shown, for reports. */
+    bool exportPng(const QString &path, QString *error);
+
+public slots:
+    void setWindowSeconds(double seconds);
+    /** Freezes the view (data keep coming into the history) or follows it again. */
+    void setPaused(bool paused);
+    /** Follows the newest data again. */
+    void goLive();
+    /** Pauses, brings `t` into view and places the cursor there (the event log's jump). */
+    void setCursorTime(double t);
+
+private:
+    struct GripperPlot;
+    struct DevicePlot;
+    struct SpanView;
+
+    void rebuild();
+    void clearPlots();
+    void addGripper(Gripper gripper);
+    void addDevice(int device);
+    QCPAxisRect *addRect(const QString &label, int stretch);
+    QCPGraph *addGraph(QCPAxisRect *rect, const QString &id, const QString &name,
+                       const QColor &color, double width);
+    void addThreshold(QCPAxisRect *rect, const QString &id, const QString &name, double value,
+                      const QColor &color);
+    bool needsRebuild() const;
+
+    void onUpdated();
+    void appendNew();
+    void syncSpans();
+    SpanView makeSpanView(const MessageSpan &span, const GripperPlot &plot);
+    void placeSpan(const SpanView &view, const MessageSpan &span);
+    void fitValueAxes();
+    void setTimeRange(double lower, double upper);
+    void onTimeRangeChanged(const QCPRange &range);
+    void updateCursor();
+    void placeReadout();
+
+    void onMousePress(QMouseEvent *event);
+    void onMouseMove(QMouseEvent *event);
+    void onMouseRelease(QMouseEvent *event);
+    void placeCursorAt(int pixelX);
+    void updateInteractions();
+    void exportCsvDialog();
+    void exportPngDialog();
+
+    LiveHistory &m_history;
+    QCustomPlot *m_plot = nullptr;
+    QToolButton *m_pauseButton = nullptr;
+    QToolButton *m_liveButton = nullptr;
+    QSpinBox *m_windowSpin = nullptr;
+    QLabel *m_readout = nullptr;
+    QCPMarginGroup *m_marginGroup = nullptr;
+
+    std::vector<QCPAxisRect *> m_rects;
+    std::vector<std::unique_ptr<GripperPlot>> m_grippers;
+    std::vector<std::unique_ptr<DevicePlot>> m_devices;
+    std::vector<SpanView> m_spans;
+    std::vector<QCPItemStraightLine *> m_cursorLines;
+
+    double m_windowSeconds = 10.0;
+    bool m_paused = false;
+    double m_cursorTime;
+    bool m_draggingCursor = false;
+    bool m_syncingRange = false;
+};
+
+} // namespace semhap

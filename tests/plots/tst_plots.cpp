@@ -1,0 +1,438 @@
+// SPDX-License-Identifier: MIT
+// PlotPanel fed from a LiveHistory directly: the graphs, threshold lines and message spans
+// it draws, and its controls driven as a user would (spin box, clicks, buttons).
+#include "livehistory.h"
+#include "plotpanel.h"
+
+#include <QFile>
+#include <QLabel>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <qcustomplot.h>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+constexpr int Ticks = 50; // frames at k / 10 s: 0 .. 5 s
+
+// The synthetic run: F = 5 t (left 2 t, right 3 t), 32 contacts; the device's ch0 = t / 10,
+// ch1 = 0.5, at twice the contact rate.
+double leftForce(double t)
+{
+    return 2.0 * t;
+}
+double rightForce(double t)
+{
+    return 3.0 * t;
+}
+
+ContactFrame frameAt(double t, Gripper gripper)
+{
+    ContactFrame frame;
+    frame.t = t;
+    frame.gripper = gripper;
+    frame.left.f = leftForce(t);
+    frame.left.n = 16;
+    frame.right.f = rightForce(t);
+    frame.right.n = 16;
+    return frame;
+}
+
+SemanticEvent eventAt(double t, int node, Message message, EventPhase phase)
+{
+    SemanticEvent event;
+    event.t = t;
+    event.node = node;
+    event.detector = message == Message::Slip ? DetectorKind::Slip : DetectorKind::Force;
+    event.message = message;
+    event.category = categoryOf(message);
+    event.phase = phase;
+    return event;
+}
+
+GripperThresholds rightThresholds()
+{
+    GripperThresholds thresholds;
+    thresholds.hasForce = true;
+    thresholds.grasp = 5.0;
+    thresholds.breakForce = 80.0;
+    thresholds.max = 100.0;
+    thresholds.hasSlip = true;
+    thresholds.loss = 24.0;
+    thresholds.min = 8.0;
+    return thresholds;
+}
+
+void startRun(LiveHistory &history)
+{
+    std::array<GripperThresholds, 2> thresholds{};
+    thresholds[size_t(Gripper::Right)] = rightThresholds();
+    history.start({{QStringLiteral("right.vibro"), QStringLiteral("vibro"), {"ch0", "ch1"}}},
+                  thresholds, {"right.force", "right.slip"});
+}
+
+void appendTicks(LiveHistory &history, int from, int to)
+{
+    for (int k = from; k <= to; ++k) {
+        history.append(frameAt(k / 10.0, Gripper::Right));
+        // Device frames in between, never after the newest contact frame (which is now).
+        for (int half = k == 0 ? 0 : 1; half >= 0; --half) {
+            DeviceFrame device;
+            device.t = (2 * k - half) / 20.0;
+            device.device = 0;
+            device.channelCount = 2;
+            device.values[0] = device.t / 10.0;
+            device.values[1] = 0.5;
+            history.append(device);
+        }
+    }
+}
+
+void fill(LiveHistory &history)
+{
+    startRun(history);
+    appendTicks(history, 0, Ticks);
+    const std::pair<Message, std::pair<double, double>> spans[] = {
+        {Message::Grasp, {1.0, 2.0}}, {Message::Break, {3.0, 3.5}}, {Message::Slip, {4.0, 4.5}}};
+    for (const auto &[message, times] : spans) {
+        const int node = message == Message::Slip ? 1 : 0;
+        history.append(eventAt(times.first, node, message, EventPhase::Begin));
+        history.append(eventAt(times.second, node, message, EventPhase::End));
+    }
+    history.commit();
+}
+
+template<typename T> T *itemNamed(QCustomPlot *plot, const QString &name)
+{
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        auto *item = qobject_cast<T *>(plot->item(i));
+        if (item && item->objectName() == name)
+            return item;
+    }
+    return nullptr;
+}
+
+QCPGraph *graphNamed(QCustomPlot *plot, const QString &name)
+{
+    for (int i = 0; i < plot->graphCount(); ++i) {
+        if (plot->graph(i)->objectName() == name)
+            return plot->graph(i);
+    }
+    return nullptr;
+}
+
+} // namespace
+
+class TestPlots : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+    void graphsHoldData_data();
+    void graphsHoldData();
+    void thresholdLines_data();
+    void thresholdLines();
+    void spans_data();
+    void spans();
+    void onlyNewSamplesAppended();
+    void bimanualRightFirst();
+    void windowSpinBox_data();
+    void windowSpinBox();
+    void clickPlacesCursor_data();
+    void clickPlacesCursor();
+    void setCursorTimePauses();
+    void exportCsv();
+    void exportPng();
+    void resetClears();
+
+private:
+    QCPAxis *timeAxis() const { return m_plot->axisRect(0)->axis(QCPAxis::atBottom); }
+
+    std::unique_ptr<LiveHistory> m_history;
+    std::unique_ptr<PlotPanel> m_panel;
+    QCustomPlot *m_plot = nullptr;
+};
+
+void TestPlots::init()
+{
+    QLocale::setDefault(QLocale::c());
+    m_history = std::make_unique<LiveHistory>();
+    m_panel = std::make_unique<PlotPanel>(*m_history);
+    m_panel->resize(1280, 800);
+    m_plot = m_panel->findChild<QCustomPlot *>();
+    QVERIFY(m_plot);
+    fill(*m_history);
+    m_panel->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_panel.get()));
+    m_plot->replot(); // lays the rects out, so pixels map to times
+}
+
+void TestPlots::cleanup()
+{
+    m_panel.reset();
+    m_history.reset();
+}
+
+void TestPlots::graphsHoldData_data()
+{
+    QTest::addColumn<QString>("graph");
+    QTest::addColumn<int>("count");
+    QTest::addColumn<double>("key");
+    QTest::addColumn<double>("value");
+    QTest::newRow("sum") << "right.F" << Ticks + 1 << 2.0 << 10.0;
+    QTest::newRow("left finger") << "right.left.f" << Ticks + 1 << 2.0 << 4.0;
+    QTest::newRow("right finger") << "right.right.f" << Ticks + 1 << 2.0 << 6.0;
+    QTest::newRow("contacts") << "right.N" << Ticks + 1 << 2.0 << 32.0;
+    QTest::newRow("device ch0") << "right.vibro.ch0" << 2 * Ticks + 1 << 2.5 << 0.25;
+    QTest::newRow("device ch1") << "right.vibro.ch1" << 2 * Ticks + 1 << 2.5 << 0.5;
+}
+
+void TestPlots::graphsHoldData()
+{
+    QFETCH(QString, graph);
+    QFETCH(int, count);
+    QFETCH(double, key);
+    QFETCH(double, value);
+    QCPGraph *g = graphNamed(m_plot, graph);
+    QVERIFY(g);
+    QCOMPARE(g->dataCount(), count);
+    const auto it = g->data()->findBegin(key, false);
+    QCOMPARE(it->key, key);
+    QCOMPARE(it->value, value);
+    QVERIFY(!graphNamed(m_plot, "left.F")); // no detector and no data on the left
+}
+
+void TestPlots::thresholdLines_data()
+{
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<double>("value");
+    QTest::newRow("grasp") << "right.grasp" << 5.0;
+    QTest::newRow("break") << "right.break" << 80.0;
+    QTest::newRow("max") << "right.max" << 100.0;
+    QTest::newRow("loss") << "right.loss" << 24.0;
+    QTest::newRow("min") << "right.min" << 8.0;
+}
+
+void TestPlots::thresholdLines()
+{
+    QFETCH(QString, line);
+    QFETCH(double, value);
+    auto *item = itemNamed<QCPItemStraightLine>(m_plot, line);
+    QVERIFY(item);
+    QCOMPARE(item->point1->coords().y(), value);
+    QCOMPARE(item->point2->coords().y(), value);
+    QVERIFY(item->pen().style() == Qt::DashLine);
+    // The value axis keeps the highest threshold in view.
+    QVERIFY(item->point1->valueAxis()->range().contains(value));
+}
+
+void TestPlots::spans_data()
+{
+    QTest::addColumn<QString>("span");
+    QTest::addColumn<QString>("label");
+    QTest::addColumn<QColor>("color");
+    QTest::addColumn<int>("pattern");
+    QTest::addColumn<double>("begin");
+    QTest::addColumn<double>("end");
+    QTest::newRow("grasp: confirmation")
+        << "span.right.grasp"
+        << "grasp" << QColor(0x0072B2) << int(Qt::SolidPattern) << 1.0 << 2.0;
+    QTest::newRow("break: exception")
+        << "span.right.break"
+        << "break" << QColor(0xE69F00) << int(Qt::SolidPattern) << 3.0 << 3.5;
+    QTest::newRow("slip: hatched exception")
+        << "span.right.slip"
+        << "slip" << QColor(0xD55E00) << int(Qt::BDiagPattern) << 4.0 << 4.5;
+}
+
+void TestPlots::spans()
+{
+    QFETCH(QString, span);
+    QFETCH(QString, label);
+    QFETCH(QColor, color);
+    QFETCH(int, pattern);
+    QFETCH(double, begin);
+    QFETCH(double, end);
+    auto *shade = itemNamed<QCPItemRect>(m_plot, span);
+    QVERIFY(shade);
+    QCOMPARE(shade->brush().color().rgb(), color.rgb());
+    QVERIFY(shade->brush().color().alpha() < 255); // the data stay visible through it
+    QCOMPARE(int(shade->brush().style()), pattern);
+    QCOMPARE(shade->topLeft->coords().x(), begin);
+    QCOMPARE(shade->bottomRight->coords().x(), end);
+    auto *text = itemNamed<QCPItemText>(m_plot, span);
+    QVERIFY(text);
+    QCOMPARE(text->text(), label);
+}
+
+void TestPlots::onlyNewSamplesAppended()
+{
+    appendTicks(*m_history, Ticks + 1, Ticks + 10);
+    m_history->commit();
+    QCPGraph *g = graphNamed(m_plot, "right.F");
+    QCOMPARE(g->dataCount(), Ticks + 11);
+    QCOMPARE((g->data()->constEnd() - 1)->key, (Ticks + 10) / 10.0);
+    // The live view follows the newest data.
+    QCOMPARE(timeAxis()->range().upper, (Ticks + 10) / 10.0);
+}
+
+void TestPlots::bimanualRightFirst()
+{
+    m_history->append(frameAt(5.1, Gripper::Left));
+    m_history->commit();
+    QCPGraph *right = graphNamed(m_plot, "right.F");
+    QCPGraph *left = graphNamed(m_plot, "left.F");
+    QVERIFY(right && left);
+    QCOMPARE(left->dataCount(), 1);
+    QCOMPARE(right->dataCount(), Ticks + 1); // the rebuilt plot reads the history again
+    m_plot->replot();
+    QVERIFY(right->keyAxis()->axisRect()->top() < left->keyAxis()->axisRect()->top());
+}
+
+void TestPlots::windowSpinBox_data()
+{
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<double>("seconds");
+    QTest::newRow("30 s") << "30" << 30.0;
+    QTest::newRow("2 s") << "2" << 2.0;
+    QTest::newRow("above the maximum") << "500" << 50.0; // the spin box refuses the last 0
+}
+
+void TestPlots::windowSpinBox()
+{
+    QFETCH(QString, typed);
+    QFETCH(double, seconds);
+    auto *spin = m_panel->findChild<QSpinBox *>();
+    QVERIFY(spin);
+    spin->setFocus();
+    QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(spin, typed);
+    QTest::keyClick(spin, Qt::Key_Return);
+    QCOMPARE(m_panel->windowSeconds(), seconds);
+    QCOMPARE(timeAxis()->range().size(), seconds);
+    QCOMPARE(timeAxis()->range().upper, Ticks / 10.0);
+    QVERIFY(m_history->keepSeconds() >= seconds);
+}
+
+void TestPlots::clickPlacesCursor_data()
+{
+    QTest::addColumn<double>("t");
+    QTest::newRow("in the grasp") << 1.55;
+    QTest::newRow("in the break") << 3.25;
+}
+
+void TestPlots::clickPlacesCursor()
+{
+    QFETCH(double, t);
+    QCPAxisRect *rect = m_plot->axisRect(0);
+    const QPoint at(int(std::lround(timeAxis()->coordToPixel(t))), rect->center().y());
+    QTest::mouseClick(m_plot, Qt::LeftButton, Qt::NoModifier, at);
+    QVERIFY(std::abs(m_panel->cursorTime() - t) < 0.02);
+    // Sample and hold: the readout shows the last frame at or before the cursor.
+    const double sample = std::floor(m_panel->cursorTime() * 10.0) / 10.0;
+    auto *readout = m_plot->findChild<QLabel *>("cursorReadout");
+    QVERIFY(readout && readout->isVisible());
+    const QString text = readout->text();
+    QVERIFY2(text.contains(QString::number(5.0 * sample, 'f', 2) + " N"), qPrintable(text));
+    QVERIFY2(text.contains("N 32"), qPrintable(text));
+    const double ch0 = std::floor(m_panel->cursorTime() * 20) / 20.0 / 10.0;
+    QVERIFY2(text.contains("ch0 " + QString::number(ch0, 'f', 2)), qPrintable(text));
+    auto *cursor = itemNamed<QCPItemStraightLine>(m_plot, "cursor");
+    QVERIFY(cursor && cursor->visible());
+    QCOMPARE(cursor->point1->coords().x(), m_panel->cursorTime());
+}
+
+void TestPlots::setCursorTimePauses()
+{
+    m_panel->setWindowSeconds(2.0); // 3 .. 5 s
+    m_panel->setCursorTime(1.0);
+    QVERIFY(m_panel->isPaused());
+    auto *pause = m_panel->findChild<QToolButton *>();
+    QVERIFY(pause->isChecked());
+    QVERIFY(timeAxis()->range().contains(1.0));
+    QCOMPARE(m_panel->cursorTime(), 1.0);
+    const QCPRange frozen = timeAxis()->range();
+
+    // Data keep coming; the paused view stays.
+    appendTicks(*m_history, Ticks + 1, Ticks + 20);
+    m_history->commit();
+    QCOMPARE(timeAxis()->range(), frozen);
+    QCOMPARE(graphNamed(m_plot, "right.F")->dataCount(), Ticks + 21);
+
+    QToolButton *live = nullptr;
+    for (auto *button : m_panel->findChildren<QToolButton *>()) {
+        if (button->text() == "Live")
+            live = button;
+    }
+    QVERIFY(live);
+    QTest::mouseClick(live, Qt::LeftButton);
+    QVERIFY(!m_panel->isPaused());
+    QCOMPARE(timeAxis()->range().upper, (Ticks + 20) / 10.0);
+}
+
+void TestPlots::exportCsv()
+{
+    m_panel->setWindowSeconds(2.0); // rows at 3.0, 3.1, ... 5.0
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plots.csv");
+    QString error;
+    QVERIFY2(m_panel->exportCsv(path, &error), qPrintable(error));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.value(0),
+             "t,right.F,right.left.f,right.right.f,right.N,right.vibro.ch0,right.vibro.ch1");
+    QCOMPARE(lines.size(), 1 + 21);
+    for (int row = 1; row < lines.size(); ++row) {
+        const QStringList cells = lines[row].split(',');
+        QCOMPARE(cells.size(), 7);
+        const double t = cells[0].toDouble();
+        QCOMPARE(t, (29 + row) / 10.0);
+        QCOMPARE(cells[1].toDouble(), leftForce(t) + rightForce(t));
+        QCOMPARE(cells[2].toDouble(), leftForce(t));
+        QCOMPARE(cells[3].toDouble(), rightForce(t));
+        QCOMPARE(cells[4].toInt(), 32);
+        QCOMPARE(cells[5].toDouble(), t / 10.0);
+        QCOMPARE(cells[6].toDouble(), 0.5);
+    }
+    QVERIFY(!m_panel->exportCsv(dir.filePath("missing/plots.csv"), &error));
+    QVERIFY(!error.isEmpty());
+}
+
+void TestPlots::exportPng()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plots.png");
+    QString error;
+    QVERIFY2(m_panel->exportPng(path, &error), qPrintable(error));
+    QImage image(path);
+    QCOMPARE(image.size(), m_plot->size());
+}
+
+void TestPlots::resetClears()
+{
+    m_panel->setCursorTime(2.0);
+    m_history->start({}, {}, {});
+    QCOMPARE(m_plot->graphCount(), 0);
+    QCOMPARE(m_plot->itemCount(), 0);
+    QCOMPARE(m_plot->axisRectCount(), 0);
+    QVERIFY(!m_panel->isPaused());
+    QVERIFY(std::isnan(m_panel->cursorTime()));
+
+    // The next run's data show again.
+    startRun(*m_history);
+    appendTicks(*m_history, 0, 3);
+    m_history->commit();
+    QCOMPARE(graphNamed(m_plot, "right.F")->dataCount(), 4);
+}
+
+QTEST_MAIN(TestPlots)
+#include "tst_plots.moc"
