@@ -32,11 +32,12 @@ function(semhap_strict_target target)
     endif()
 endfunction()
 
-# semhap_add_test(name LIBS lib... [LABELS label...] [SOURCES extra...])
+# semhap_add_test(name LIBS lib... [LABELS label...] [SOURCES extra...] [ALLOW_FOREACH])
+# ALLOW_FOREACH: for tests that include <qcustomplot.h> (see STYLE.md).
 # Builds tests/<name>/tst_<name>.cpp into tst_<name> and registers it with CTest.
 # Tests read their golden files from SEMHAP_TEST_DATA (the test's own folder).
 function(semhap_add_test name)
-    cmake_parse_arguments(arg "" "" "LIBS;LABELS;SOURCES" ${ARGN})
+    cmake_parse_arguments(arg "ALLOW_FOREACH" "" "LIBS;LABELS;SOURCES" ${ARGN})
     # The sanitizer build runs only the tests labelled "sanitize": build only those.
     if(SEMHAP_SANITIZE AND NOT "sanitize" IN_LIST arg_LABELS)
         return()
@@ -47,7 +48,11 @@ function(semhap_add_test name)
     target_compile_definitions(${target} PRIVATE
         SEMHAP_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/${name}"
         SEMHAP_RESOURCES="${SEMHAP_SOURCE_DIR}/resources")
-    semhap_strict_target(${target} ALLOW_ASCII)
+    if(arg_ALLOW_FOREACH)
+        semhap_strict_target(${target} ALLOW_ASCII ALLOW_FOREACH)
+    else()
+        semhap_strict_target(${target} ALLOW_ASCII)
+    endif()
     add_test(NAME ${name} COMMAND ${target})
     set_tests_properties(${name} PROPERTIES
         LABELS "${arg_LABELS}" TIMEOUT 300

@@ -33,6 +33,8 @@ struct LiveDevice
     QString name;  ///< the router's device name (`right.vibro`)
     QString model; ///< the device model's name
     QStringList channels;
+    /** Its hand is not in the scene (`left.*` on a one-handed task): it never plays. */
+    bool idle = false;
 };
 
 /** A semantic message from its begin to its end (open while `active`). */

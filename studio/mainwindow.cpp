@@ -67,6 +67,8 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     createMenus();
     createStatusBar();
     connectEngine();
+    resize(options.size.isEmpty() ? QSize(1280, 800) : options.size);
+    applyDefaultSizes();
     m_defaultState = saveState(LayoutVersion);
     restoreLayout();
     if (!options.size.isEmpty())
@@ -281,6 +283,10 @@ void MainWindow::createDocks()
         makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
     QDockWidget *metrics =
         makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
+    // The plots run the full height on the right; the log, devices and metrics share the
+    // space under the viewport.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     addDockWidget(Qt::RightDockWidgetArea, plots);
     addDockWidget(Qt::BottomDockWidgetArea, events);
     addDockWidget(Qt::BottomDockWidgetArea, devices);
@@ -288,9 +294,6 @@ void MainWindow::createDocks()
     tabifyDockWidget(events, devices);
     tabifyDockWidget(devices, metrics);
     events->raise();
-    // The plots take the larger share of the width, the viewport the rest.
-    resizeDocks({plots}, {width() * 55 / 100}, Qt::Horizontal);
-    resizeDocks({events}, {height() * 28 / 100}, Qt::Vertical);
 
     connect(m_eventLog, &EventLogPanel::eventActivated, m_plots, &PlotPanel::setCursorTime);
     connect(m_devicesPanel, &DevicesPanel::bindRequested, this,
@@ -500,6 +503,16 @@ void MainWindow::showPreferences()
         emit languageChangeRequested(dialog.language());
 }
 
+void MainWindow::applyDefaultSizes()
+{
+    // The plots take a bit more than half the width; the docks under the viewport a third
+    // of the height.
+    resizeDocks({findChild<QDockWidget *>(QStringLiteral("plotsDock"))}, {width() * 52 / 100},
+                Qt::Horizontal);
+    resizeDocks({findChild<QDockWidget *>(QStringLiteral("eventsDock"))}, {height() * 30 / 100},
+                Qt::Vertical);
+}
+
 void MainWindow::restoreLayout()
 {
     if (!m_options.restoreLayout)
@@ -514,6 +527,7 @@ void MainWindow::resetLayout()
     restoreState(m_defaultState, LayoutVersion);
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         dock->show();
+    applyDefaultSizes();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -61,6 +61,7 @@ private:
     void createMenus();
     void createStatusBar();
     void connectEngine();
+    void applyDefaultSizes();
     void restoreLayout();
     void resetLayout();
     void updateStatus();

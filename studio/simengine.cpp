@@ -62,12 +62,17 @@ std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph)
     return result;
 }
 
-std::vector<LiveDevice> devicesOf(const Player &player)
+std::vector<LiveDevice> devicesOf(const Player &player, const World &world)
 {
     std::vector<LiveDevice> devices;
-    for (int d = 0; d < player.deviceCount(); ++d)
-        devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
-                           player.deviceModel(d).channelNames()});
+    for (int d = 0; d < player.deviceCount(); ++d) {
+        LiveDevice device{player.deviceName(d), player.deviceModel(d).name(),
+                          player.deviceModel(d).channelNames()};
+        Gripper hand = Gripper::Right;
+        device.idle = gripperFromName(device.name.section(QLatin1Char('.'), 0, 0), &hand) &&
+                      !world.hasGripper(hand);
+        devices.push_back(device);
+    }
     return devices;
 }
 
@@ -142,7 +147,13 @@ bool SimEngine::load(const RunOptions &options, QString *error)
     m_pendingSteps = 0;
 
     drain(); // whatever the old run left in the feed goes before the new history starts
-    m_history.start(devicesOf(player), thresholdsOf(m_run->pipeline().router().graph()),
+    // Detectors of a hand the scene does not have never fire: their plots would stay empty.
+    std::array<GripperThresholds, 2> thresholds = thresholdsOf(m_run->pipeline().router().graph());
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (!m_run->world().hasGripper(g))
+            thresholds[size_t(g)] = GripperThresholds();
+    }
+    m_history.start(devicesOf(player, m_run->world()), thresholds,
                     m_run->pipeline().router().nodeIds());
     m_history.setMetrics(m_run->metrics());
     startThread();
