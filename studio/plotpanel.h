@@ -3,6 +3,8 @@
 
 #include "livehistory.h"
 
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 
 #include <map>
@@ -78,6 +80,8 @@ private:
     bool needsRebuild() const;
 
     void onUpdated();
+    /** Replots at the next event loop turn, at most ~33 times a second. */
+    void requestReplot();
     void appendNew();
     void syncSpans();
     SpanView makeSpanView(const MessageSpan &span, const GripperPlot &plot);
@@ -109,6 +113,8 @@ private:
     std::vector<std::unique_ptr<DevicePlot>> m_devices;
     std::vector<SpanView> m_spans;
     std::vector<QCPItemStraightLine *> m_cursorLines;
+    QTimer m_replotTimer;
+    QElapsedTimer m_sinceReplot;
 
     double m_windowSeconds = 10.0;
     bool m_paused = false;
