@@ -424,8 +424,8 @@ void PlotPanel::addGripper(Gripper gripper)
 
     plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 2);
     plot->countRect->axis(QCPAxis::atLeft)->setLabel(tr("N"));
-    plot->count = addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"),
-                           Purple.darker(140), 1.0);
+    plot->count =
+        addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"), Black, 1.0);
     if (thresholds.hasSlip) {
         const QString format = tr("%1 %2");
         addThreshold(plot->countRect, id + QStringLiteral(".loss"),
