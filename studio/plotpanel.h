@@ -37,11 +37,13 @@ class PlotPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Shows `history`, which must outlive the panel. */
     explicit PlotPanel(LiveHistory &history, QWidget *parent = nullptr);
     ~PlotPanel() override;
 
     /** The live view's width in pipeline seconds (2–120); the history keeps at least it. */
     double windowSeconds() const { return m_windowSeconds; }
+    /** True while the view is frozen for inspection. */
     bool isPaused() const { return m_paused; }
     /** The cursor's time, or NaN while there is none. */
     double cursorTime() const { return m_cursorTime; }
@@ -55,6 +57,7 @@ public:
     bool exportPng(const QString &path, QString *error);
 
 public slots:
+    /** Sets the live window (clamped to 2–120 s) and keeps the history at least as long. */
     void setWindowSeconds(double seconds);
     /** Freezes the view (data keep coming into the history) or follows it again. */
     void setPaused(bool paused);
