@@ -3,6 +3,8 @@
 
 #include "livehistory.h"
 
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 
 #include <map>
@@ -35,11 +37,13 @@ class PlotPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Shows `history`, which must outlive the panel. */
     explicit PlotPanel(LiveHistory &history, QWidget *parent = nullptr);
     ~PlotPanel() override;
 
     /** The live view's width in pipeline seconds (2–120); the history keeps at least it. */
     double windowSeconds() const { return m_windowSeconds; }
+    /** True while the view is frozen for inspection. */
     bool isPaused() const { return m_paused; }
     /** The cursor's time, or NaN while there is none. */
     double cursorTime() const { return m_cursorTime; }
@@ -53,6 +57,7 @@ public:
     bool exportPng(const QString &path, QString *error);
 
 public slots:
+    /** Sets the live window (clamped to 2–120 s) and keeps the history at least as long. */
     void setWindowSeconds(double seconds);
     /** Freezes the view (data keep coming into the history) or follows it again. */
     void setPaused(bool paused);
@@ -78,6 +83,8 @@ private:
     bool needsRebuild() const;
 
     void onUpdated();
+    /** Replots at the next event loop turn, at most ~33 times a second. */
+    void requestReplot();
     void appendNew();
     void syncSpans();
     SpanView makeSpanView(const MessageSpan &span, const GripperPlot &plot);
@@ -109,6 +116,8 @@ private:
     std::vector<std::unique_ptr<DevicePlot>> m_devices;
     std::vector<SpanView> m_spans;
     std::vector<QCPItemStraightLine *> m_cursorLines;
+    QTimer m_replotTimer;
+    QElapsedTimer m_sinceReplot;
 
     double m_windowSeconds = 10.0;
     bool m_paused = false;
