@@ -283,8 +283,11 @@ void PlotPanel::rebuild()
     clearPlots();
     for (Gripper gripper : shownGrippers(m_history))
         addGripper(gripper);
-    for (int device = 0; device < int(m_history.devices().size()); ++device)
-        addDevice(device);
+    // A device of a hand the scene lacks never plays: its rect would only take room.
+    for (int device = 0; device < int(m_history.devices().size()); ++device) {
+        if (!m_history.devices()[size_t(device)].idle)
+            addDevice(device);
+    }
     if (m_rects.empty())
         return;
     QCPAxis *timeAxis = m_rects.back()->axis(QCPAxis::atBottom);
@@ -403,7 +406,7 @@ void PlotPanel::addGripper(Gripper gripper)
     const QString id = gripperName(gripper);
     const GripperThresholds &thresholds = m_history.thresholds()[size_t(gripper)];
 
-    plot->forceRect = addRect(tr("%1: force").arg(gripperTitle(gripper)), 3);
+    plot->forceRect = addRect(tr("%1: force").arg(gripperTitle(gripper)), 5);
     plot->forceRect->axis(QCPAxis::atLeft)->setLabel(tr("F (N)"));
     plot->left =
         addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left finger"), Sky, 1.0);
@@ -422,7 +425,7 @@ void PlotPanel::addGripper(Gripper gripper)
         plot->thresholdTop = std::max({thresholds.grasp, thresholds.breakForce, thresholds.max});
     }
 
-    plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 2);
+    plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 3);
     plot->countRect->axis(QCPAxis::atLeft)->setLabel(tr("N"));
     plot->count =
         addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"), Black, 1.0);

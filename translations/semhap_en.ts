@@ -1,4 +1,996 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="en_GB" sourcelanguage="en_GB">
+<context>
+    <name>StudioOptions</name>
+    <message>
+        <source>semhap studio: watch and tune semantic haptic feedback on a simulated task.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene: a bundled name or an MJCF file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router: a preset name or a semhap.router/1 file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>router</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who drives until you take over: scripted or reactive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The operator&apos;s seed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes in play (default: the scene&apos;s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open paused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grab the whole window to this PNG, then quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file.png</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grab (with --screenshot) and quit after this many seconds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seconds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Window size, e.g. 1280x800.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WxH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>User interface language: en or de.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UDP port of the network pose input (0: off).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore the saved window layout.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1: expected a number from %2 to %3, got &apos;%4&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--size: expected WIDTHxHEIGHT such as 1280x800, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--language: expected en or de, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::DevicesPanel</name>
+    <message>
+        <source>not bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RTT %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>errors: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reconnects: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>armed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disarmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>retrying: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>URI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>VID:PID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An address that cannot be discovered: a UDP band, a pseudo-terminal or a virtual device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rescan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Present devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arm all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disarm all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real bands start disarmed: they output nothing until armed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The URI to drive %1: pick a present device or type one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fall back to the virtual device virtual:%1; the run goes on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no transport</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 armed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::EventLogModel</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::EventLogPanel</name>
+    <message>
+        <source>Follow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter (detector, message, …)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the newest event in view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All grippers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All categories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirmation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exception</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All phases</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Begin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::MainWindow</name>
+    <message>
+        <source>Network pose input is off: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open %1 with %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not reset the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slower</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Faster</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause the run and send every device to zero now (Esc, from anywhere)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped: every device was sent to zero.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take the grippers over from the scripted operator (Ctrl+T); any key or pose input does it too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show contact forces as arrows in the viewport</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open scene…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MuJoCo scenes (*.xml)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open router…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open router</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap routers (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preferences…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About semhap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;semhap studio&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Semantic haptic feedback for robot teleoperation: contact forces become confirmations and exceptions, routed to patterns on wristbands.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1× speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The task to simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which feedback design turns events into patterns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Task metrics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not connect %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run reached its end. Reset to run it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studio — %1 · %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1× real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>You are driving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operator: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices: %1 virtual, %2 connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studio</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::MetricsPanel</name>
+    <message>
+        <source>Cubes transferred</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes broken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes dropped (slipped out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps per transfer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average grasp force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average peak grasp force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warning lead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Breaks warned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Containers dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transfers per container cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wall time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real-time factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No metrics yet: they appear while a task runs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::PlotPanel</name>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Freeze the view; data keep being recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the newest data again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width of the live time window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the visible time range as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the plots as an image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click to place the cursor; when paused, drag to pan (Shift+drag moves the cursor) and use the wheel to zoom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pipeline time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left finger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right finger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F (sum)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>grasp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>break</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N (contacts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loss</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: F %2 N (left %3, right %4), N %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Plots as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Plots as PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::PoseInput</name>
+    <message>
+        <source>%1 bytes, larger than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not JSON: %1 at byte %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a JSON object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;hand&apos;: expected &quot;left&quot; or &quot;right&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;pos&apos;: expected an array of 3 numbers (metres)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;pos&apos;: %1 is beyond %2 m from the origin (positions are in metres)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;quat&apos;: expected an array of 4 numbers [w, x, y, z], not all 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;yaw&apos;: expected a number (radians)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;grip&apos;: expected a number (newtons)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown key &apos;%1&apos; (expected hand, pos, quat or yaw, grip)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;hand&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>keys &apos;quat&apos; and &apos;yaw&apos;: give one of them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;hand&apos;: this scene has no %1 gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>key &apos;pos&apos; is needed before the %1 hand can be turned on its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>datagram %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interface language:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SimEngine</name>
+    <message>
+        <source>nothing is loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the router has no device &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SimViewport</name>
+    <message>
+        <source>Reset camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show contact forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for the simulation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No scene loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>You are driving (right hand)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>You are driving (left hand)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip: closed, %1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip: open (closes to %1 N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>W A S D move · R F up/down · Q E turn · Space grip · +/- force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tab: switch hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scripted operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click here and press W A S D to take over</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::Studio</name>
+    <message>
+        <source>%1: could not write the screenshot</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
 </TS>
