@@ -19,6 +19,8 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace semhap {
 
 namespace {
@@ -217,16 +219,35 @@ void DevicesPanel::rescan()
     }
 }
 
+void DevicesPanel::resizeEvent(QResizeEvent *event)
+{
+    // Side by side in a wide dock (under the viewport), stacked in a tall one.
+    const bool wide = width() > 3 * height() / 2;
+    m_splitter->setOrientation(wide ? Qt::Horizontal : Qt::Vertical);
+    m_splitter->setStretchFactor(0, wide ? 2 : 1);
+    QWidget::resizeEvent(event);
+}
+
 void DevicesPanel::rebuildRows()
 {
     for (auto &row : m_rows)
         delete row->uri->parentWidget(); // the row's group box
     m_rows.clear();
-    for (const LiveDevice &device : m_history.devices()) {
+    // The devices that can play first; those of a hand the scene lacks after them.
+    std::vector<const LiveDevice *> devices;
+    for (const LiveDevice &device : m_history.devices())
+        devices.push_back(&device);
+    std::stable_partition(devices.begin(), devices.end(),
+                          [](const LiveDevice *d) { return !d->idle; });
+    for (const LiveDevice *entry : devices) {
+        const LiveDevice &device = *entry;
         auto row = std::make_unique<Row>();
         row->name = device.name;
         row->model = device.model;
-        auto *box = new QGroupBox(tr("%1 — %2").arg(device.name, device.model));
+        auto *box = new QGroupBox(
+            device.idle
+                ? tr("%1 — %2 (its hand is not in this scene)").arg(device.name, device.model)
+                : tr("%1 — %2").arg(device.name, device.model));
         row->uri = new QComboBox(box);
         row->uri->setObjectName(QStringLiteral("uri:") + device.name);
         row->uri->setEditable(true);

@@ -29,8 +29,8 @@ int main(int argc, char *argv[])
     bool help = false;
     if (!semhap::StudioOptions::parse(QApplication::arguments().mid(1), &options, &message,
                                       &help)) {
-        std::fprintf(help ? stdout : stderr, "%s%s", help ? "" : "semhap-studio: ",
-                     qPrintable(message));
+        std::fprintf(help ? stdout : stderr, "%s%s",
+                     help ? "" : "semhap-studio: ", qPrintable(message));
         if (!help)
             std::fprintf(stderr, "\n");
         return help ? 0 : 2;

@@ -38,8 +38,7 @@ constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 1;
 
-QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content,
-                      QWidget *parent)
+QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
     auto *dock = new QDockWidget(title, parent);
     dock->setObjectName(name);
@@ -79,9 +78,8 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
         m_engine.run();
     if (options.posePort > 0) {
         if (!m_poseInput->listen(quint16(options.posePort)))
-            statusBar()->showMessage(tr("Network pose input is off: %1")
-                                         .arg(m_poseInput->errorString()),
-                                     10000);
+            statusBar()->showMessage(
+                tr("Network pose input is off: %1").arg(m_poseInput->errorString()), 10000);
     }
 }
 
@@ -111,8 +109,8 @@ void MainWindow::createActions()
         a->setObjectName(name);
         a->setShortcut(shortcut);
         if (!shortcut.isEmpty())
-            a->setToolTip(QStringLiteral("%1 (%2)").arg(text, shortcut.toString(
-                                                                 QKeySequence::NativeText)));
+            a->setToolTip(
+                QStringLiteral("%1 (%2)").arg(text, shortcut.toString(QKeySequence::NativeText)));
         addAction(a);
         return a;
     };
@@ -123,8 +121,8 @@ void MainWindow::createActions()
     m_stepAction = action(tr("Step"), QStringLiteral("stepAction"), Qt::Key_F6);
     m_stepAction->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
     connect(m_stepAction, &QAction::triggered, &m_engine, &SimEngine::step);
-    m_resetAction = action(tr("Reset"), QStringLiteral("resetAction"),
-                           QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_resetAction =
+        action(tr("Reset"), QStringLiteral("resetAction"), QKeySequence(Qt::CTRL | Qt::Key_R));
     m_resetAction->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
     connect(m_resetAction, &QAction::triggered, this, [this] {
         QString error;
@@ -141,8 +139,7 @@ void MainWindow::createActions()
             [this] { setSpeedIndex(m_speedPicker->currentIndex() + 1); });
     m_realTimeAction = action(tr("Real time"), QStringLiteral("realTimeAction"),
                               QKeySequence(Qt::CTRL | Qt::Key_0));
-    connect(m_realTimeAction, &QAction::triggered, this,
-            [this] { setSpeedIndex(RealTimeIndex); });
+    connect(m_realTimeAction, &QAction::triggered, this, [this] { setSpeedIndex(RealTimeIndex); });
 
     // Stop-all works from anywhere in the application, whatever has the focus.
     m_stopAllAction = action(tr("Stop all"), QStringLiteral("stopAllAction"), Qt::Key_Escape);
@@ -154,8 +151,8 @@ void MainWindow::createActions()
         statusBar()->showMessage(tr("Stopped: every device was sent to zero."), 5000);
     });
 
-    m_teleopAction = action(tr("Drive"), QStringLiteral("teleopAction"),
-                            QKeySequence(Qt::CTRL | Qt::Key_T));
+    m_teleopAction =
+        action(tr("Drive"), QStringLiteral("teleopAction"), QKeySequence(Qt::CTRL | Qt::Key_T));
     m_teleopAction->setCheckable(true);
     m_teleopAction->setToolTip(tr("Take the grippers over from the scripted operator "
                                   "(Ctrl+T); any key or pose input does it too"));
@@ -169,8 +166,8 @@ void MainWindow::createActions()
                                  QKeySequence(Qt::CTRL | Qt::Key_Home));
     connect(m_resetCameraAction, &QAction::triggered, m_viewport, &SimViewport::resetCamera);
 
-    m_openSceneAction = action(tr("Open scene…"), QStringLiteral("openSceneAction"),
-                               QKeySequence::Open);
+    m_openSceneAction =
+        action(tr("Open scene…"), QStringLiteral("openSceneAction"), QKeySequence::Open);
     connect(m_openSceneAction, &QAction::triggered, this, [this] {
         const QString file = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(),
                                                           tr("MuJoCo scenes (*.xml)"));
@@ -191,8 +188,8 @@ void MainWindow::createActions()
         options.router = file;
         openRun(options);
     });
-    m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
-                                 QKeySequence::Preferences);
+    m_preferencesAction =
+        action(tr("Preferences…"), QStringLiteral("preferencesAction"), QKeySequence::Preferences);
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::showPreferences);
     m_resetLayoutAction = action(tr("Reset layout"), QStringLiteral("resetLayoutAction"), {});
@@ -261,10 +258,10 @@ void MainWindow::createToolBar()
     bar->addAction(m_stopAllAction);
     if (QWidget *button = bar->widgetForAction(m_stopAllAction)) {
         button->setObjectName(QStringLiteral("stopAllButton"));
-        button->setStyleSheet(QStringLiteral(
-            "QToolButton { background: #D55E00; color: white; font-weight: bold;"
-            " border-radius: 4px; padding: 4px 14px; }"
-            "QToolButton:pressed { background: #A04600; }"));
+        button->setStyleSheet(
+            QStringLiteral("QToolButton { background: #D55E00; color: white; font-weight: bold;"
+                           " border-radius: 4px; padding: 4px 14px; }"
+                           "QToolButton:pressed { background: #A04600; }"));
     }
 }
 
@@ -277,8 +274,7 @@ void MainWindow::createDocks()
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
-    QDockWidget *events =
-        makeDock(tr("Events"), QStringLiteral("eventsDock"), m_eventLog, this);
+    QDockWidget *events = makeDock(tr("Events"), QStringLiteral("eventsDock"), m_eventLog, this);
     QDockWidget *devices =
         makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
     QDockWidget *metrics =
@@ -373,8 +369,8 @@ void MainWindow::connectEngine()
     connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
         m_runAction->setChecked(running);
         m_runAction->setText(running ? tr("Pause") : tr("Run"));
-        m_runAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause
-                                                           : QStyle::SP_MediaPlay));
+        m_runAction->setIcon(
+            style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
         m_stepAction->setEnabled(!running);
         updateStatus();
     });
@@ -459,13 +455,13 @@ void MainWindow::updateStatus()
 {
     const QLocale locale;
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
-    m_rateLabel->setText(m_engine.isRunning()
-                             ? tr("%1× real time")
-                                   .arg(locale.toString(m_engine.realtimeFactor(), 'f', 2))
-                             : tr("paused"));
-    m_operatorLabel->setText(m_engine.isManual() ? tr("You are driving")
-                                                 : tr("Operator: %1")
-                                                       .arg(m_engine.options().operatorName));
+    m_rateLabel->setText(
+        m_engine.isRunning()
+            ? tr("%1× real time").arg(locale.toString(m_engine.realtimeFactor(), 'f', 2))
+            : tr("paused"));
+    m_operatorLabel->setText(m_engine.isManual()
+                                 ? tr("You are driving")
+                                 : tr("Operator: %1").arg(m_engine.options().operatorName));
     int connected = 0;
     int virtualCount = 0;
     int down = 0;
@@ -487,8 +483,8 @@ void MainWindow::showError(const QString &what, const QString &error)
 {
     statusBar()->showMessage(QStringLiteral("%1: %2").arg(what, error), 15000);
     // Not modal: a running session keeps going while the message is read.
-    auto *box = new QMessageBox(QMessageBox::Warning, tr("semhap studio"), what,
-                                QMessageBox::Ok, this);
+    auto *box =
+        new QMessageBox(QMessageBox::Warning, tr("semhap studio"), what, QMessageBox::Ok, this);
     box->setInformativeText(error);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();

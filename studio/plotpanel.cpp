@@ -310,7 +310,8 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_marginGroup);
     rect->setRangeDrag(Qt::Horizontal);
     rect->setRangeZoom(Qt::Horizontal);
-    rect->setMinimumSize(0, 50);
+    // The forces and counts keep room to read; device rects may shrink to a strip.
+    rect->setMinimumSize(0, stretch >= 3 ? 60 : 24);
     QCPAxis *time = rect->axis(QCPAxis::atBottom);
     time->setTickLabels(false);
     time->setPadding(0);
@@ -449,9 +450,9 @@ void PlotPanel::addDevice(int device)
     plot->device = device;
     const QString title =
         info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
-    plot->rect = addRect(title, 2);
+    plot->rect = addRect(title, 1);
     plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
-    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(3);
+    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(2);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
         const QString &name = info.channels[channel];
         const QColor color = palette[size_t(channel) % std::size(palette)];

@@ -12,8 +12,7 @@
 
 namespace semhap {
 
-Studio::Studio(const StudioOptions &options, QObject *parent)
-    : QObject(parent), m_options(options)
+Studio::Studio(const StudioOptions &options, QObject *parent) : QObject(parent), m_options(options)
 {
     QString language = options.language;
     if (language.isEmpty())

@@ -25,16 +25,16 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     const QCommandLineOption scene({QStringLiteral("scene")},
-                                   tr("Scene: a bundled name or an MJCF file."),
-                                   tr("scene"), o.run.scene);
+                                   tr("Scene: a bundled name or an MJCF file."), tr("scene"),
+                                   o.run.scene);
     const QCommandLineOption router({QStringLiteral("router")},
                                     tr("Router: a preset name or a semhap.router/1 file."),
                                     tr("router"), o.run.router);
     const QCommandLineOption op({QStringLiteral("operator")},
                                 tr("Who drives until you take over: scripted or reactive."),
                                 tr("name"), o.run.operatorName);
-    const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."),
-                                  tr("n"), QString::number(o.run.seed));
+    const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."), tr("n"),
+                                  QString::number(o.run.seed));
     const QCommandLineOption cubes({QStringLiteral("cubes")},
                                    tr("Cubes in play (default: the scene's)."), tr("n"));
     const QCommandLineOption speed({QStringLiteral("speed")},
@@ -48,8 +48,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                        tr("Grab (with --screenshot) and quit after this "
                                           "many seconds."),
                                        tr("seconds"));
-    const QCommandLineOption size({QStringLiteral("size")},
-                                  tr("Window size, e.g. 1280x800."), tr("WxH"));
+    const QCommandLineOption size({QStringLiteral("size")}, tr("Window size, e.g. 1280x800."),
+                                  tr("WxH"));
     const QCommandLineOption language({QStringLiteral("language")},
                                       tr("User interface language: en or de."), tr("code"));
     const QCommandLineOption posePort({QStringLiteral("pose-port")},
@@ -57,8 +57,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                       tr("port"), QString::number(o.posePort));
     const QCommandLineOption defaultLayout({QStringLiteral("default-layout")},
                                            tr("Ignore the saved window layout."));
-    parser.addOptions({scene, router, op, seed, cubes, speed, paused, screenshot, quitAfter,
-                       size, language, posePort, defaultLayout});
+    parser.addOptions({scene, router, op, seed, cubes, speed, paused, screenshot, quitAfter, size,
+                       language, posePort, defaultLayout});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
         *message = parser.errorText();
         return false;
@@ -78,7 +78,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
 
     // One reader for every number, so each bad value is reported the same way.
     const auto number = [&](const QCommandLineOption &option, double low, double high,
-                             double *value) {
+                            double *value) {
         bool ok = false;
         const QString text = parser.value(option);
         const double v = text.toDouble(&ok);

@@ -15,14 +15,14 @@ struct StudioOptions
     Q_DECLARE_TR_FUNCTIONS(StudioOptions)
 
 public:
-    RunOptions run;           ///< scene, router, operator, seed; endless by default
-    bool autoRun = true;      ///< start running at once (`--paused` turns it off)
-    double speed = 1.0;       ///< simulated seconds per real second
-    QString screenshot;       ///< grab the window to this PNG, then quit
-    double quitAfter = -1.0;  ///< seconds after start to grab and quit; < 0: never
-    QSize size;               ///< window size for screenshots; empty: the saved layout's
-    QString language;         ///< "en", "de"; empty: the saved setting or the system's
-    int posePort = 9870;      ///< UDP port of the network pose-and-grip input; 0: off
+    RunOptions run;            ///< scene, router, operator, seed; endless by default
+    bool autoRun = true;       ///< start running at once (`--paused` turns it off)
+    double speed = 1.0;        ///< simulated seconds per real second
+    QString screenshot;        ///< grab the window to this PNG, then quit
+    double quitAfter = -1.0;   ///< seconds after start to grab and quit; < 0: never
+    QSize size;                ///< window size for screenshots; empty: the saved layout's
+    QString language;          ///< "en", "de"; empty: the saved setting or the system's
+    int posePort = 9870;       ///< UDP port of the network pose-and-grip input; 0: off
     bool restoreLayout = true; ///< `--default-layout` ignores the saved one
 
     /**

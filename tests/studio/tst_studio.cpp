@@ -45,6 +45,8 @@ private slots:
     void layoutIsSavedAndRestored();
     void switchesToGerman();
     void screenshotHook();
+    void screenshotsOfEveryPanel_data();
+    void screenshotsOfEveryPanel();
 
 private:
     StudioOptions options() const;
@@ -70,8 +72,8 @@ StudioOptions TestStudio::options() const
     QString message;
     bool help = false;
     // Fast, so the first grasp comes soon; no network input, so tests can run side by side.
-    StudioOptions::parse({"--speed", "4", "--pose-port", "0", "--size", "1280x800"}, &o,
-                         &message, &help);
+    StudioOptions::parse({"--speed", "4", "--pose-port", "0", "--size", "1280x800"}, &o, &message,
+                         &help);
     return o;
 }
 
@@ -80,6 +82,8 @@ void TestStudio::opensOnTheDefaultsAndRuns()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
@@ -105,6 +109,8 @@ void TestStudio::picksSceneAndRouter()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QSignalSpy loaded(&window.engine(), &SimEngine::loaded);
 
     QComboBox *scene = window.scenePicker();
@@ -137,6 +143,8 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QVERIFY(window.engine().isRunning());
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(!window.engine().isRunning());
@@ -164,6 +172,8 @@ void TestStudio::timeWindowFollowsTheSpinBox()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     auto *spin = window.plots()->findChild<QAbstractSpinBox *>();
     QVERIFY(spin);
     spin->setFocus();
@@ -179,6 +189,8 @@ void TestStudio::stopAllWorksFromAnywhere()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QVERIFY(window.engine().isRunning());
     // With the focus in a text field of a dock, Esc still stops everything.
     auto *filter = window.eventLog()->findChild<QLineEdit *>("filterText");
@@ -196,6 +208,8 @@ void TestStudio::aKeyInTheViewportTakesOver()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     auto *teleop = window.findChild<QAction *>("teleopAction");
     QVERIFY(!teleop->isChecked());
     window.viewport()->setFocus();
@@ -215,6 +229,8 @@ void TestStudio::eventLogMovesThePlotCursor()
     MainWindow window(options());
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     window.engine().pause();
     QTableView *table = window.eventLog()->findChild<QTableView *>("eventTable");
@@ -235,12 +251,16 @@ void TestStudio::layoutIsSavedAndRestored()
         MainWindow window(o);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
         window.findChild<QDockWidget *>("metricsDock")->close();
         window.close();
     }
     MainWindow window(o);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
     QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
     QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
     window.findChild<QAction *>("resetLayoutAction")->trigger();
@@ -275,8 +295,7 @@ void TestStudio::switchesToGerman()
     MainWindow *window = studio.window();
     QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
     QCOMPARE(window->findChild<QAction *>("stopAllAction")->text(), QString("Alles stoppen"));
-    QCOMPARE(window->findChild<QDockWidget *>("eventsDock")->windowTitle(),
-             QString("Ereignisse"));
+    QCOMPARE(window->findChild<QDockWidget *>("eventsDock")->windowTitle(), QString("Ereignisse"));
     studio.setLanguage("en");
     QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
              QString("Plots"));
@@ -302,13 +321,49 @@ void TestStudio::screenshotHook()
 
     // A router that does not load leaves the window open with the reason; a malformed
     // option is refused at once with exit code 2.
-    studio.start(SEMHAP_STUDIO_BINARY, {"--router", "C9", "--quit-after", "0.5",
-                                        "--pose-port", "0"});
+    studio.start(SEMHAP_STUDIO_BINARY,
+                 {"--router", "C9", "--quit-after", "0.5", "--pose-port", "0"});
     QVERIFY(studio.waitForFinished(60000));
     QCOMPARE(studio.exitCode(), 0); // the window opens and says what is wrong
     studio.start(SEMHAP_STUDIO_BINARY, {"--speed", "fast"});
     QVERIFY(studio.waitForFinished(60000));
     QCOMPARE(studio.exitCode(), 2);
+}
+
+void TestStudio::screenshotsOfEveryPanel_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("scene");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting";
+}
+
+// Pictures of the window with each bottom dock raised, to be looked at (beside the test
+// binary, or in $SEMHAP_SCREENSHOTS); the test checks they are the asked size.
+void TestStudio::screenshotsOfEveryPanel()
+{
+    QFETCH(QSize, size);
+    QFETCH(QString, scene);
+    StudioOptions o = options();
+    o.size = size;
+    o.run.scene = scene;
+    o.speed = 2.0;
+    MainWindow window(o);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > 12.0, 30000);
+    const QString dir = qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")
+                            ? qEnvironmentVariable("SEMHAP_SCREENSHOTS")
+                            : QCoreApplication::applicationDirPath();
+    for (const QString dock : {"eventsDock", "devicesDock", "metricsDock"}) {
+        window.findChild<QDockWidget *>(dock)->raise();
+        QTest::qWait(300);
+        const QString path =
+            QString("%1/studio-%2-%3.png").arg(dir, QTest::currentDataTag(), dock.chopped(4));
+        QString error;
+        QVERIFY2(Studio::screenshot(&window, path, &error), qPrintable(error));
+        QCOMPARE(QImage(path).size(), size);
+    }
 }
 
 QTEST_MAIN(TestStudio)

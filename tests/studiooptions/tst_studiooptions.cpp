@@ -50,10 +50,18 @@ void TestStudioOptions::options()
 {
     StudioOptions o;
     QString message;
-    QVERIFY2(parse({"--scene", "bimanual_sorting", "--router", "C1", "--operator", "reactive",
-                    "--seed", "7", "--cubes", "4", "--speed", "0.5", "--paused", "--screenshot",
-                    "a.png", "--quit-after", "2.5", "--size", "1920x1080", "--language", "de",
-                    "--pose-port", "0", "--default-layout"},
+    QVERIFY2(parse({"--scene",    "bimanual_sorting",
+                    "--router",   "C1",
+                    "--operator", "reactive",
+                    "--seed",     "7",
+                    "--cubes",    "4",
+                    "--speed",    "0.5",
+                    "--paused",   "--screenshot",
+                    "a.png",      "--quit-after",
+                    "2.5",        "--size",
+                    "1920x1080",  "--language",
+                    "de",         "--pose-port",
+                    "0",          "--default-layout"},
                    &o, &message),
              qPrintable(message));
     QCOMPARE(o.run.scene, QString("bimanual_sorting"));
