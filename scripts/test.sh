@@ -22,7 +22,7 @@ xvfb="xvfb-run -a -s '-screen 0 1600x1200x24'"
 
 echo "== sanitizer build (ASan + UBSan) and fuzzers"
 CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-asan" \
-    -DSEMHAP_SANITIZE=ON -DSEMHAP_FUZZ=ON -DSEMHAP_BUILD_BENCH=OFF
+    -DSEMHAP_SANITIZE=ON -DSEMHAP_FUZZ=ON -DSEMHAP_BUILD_BENCH=OFF -DSEMHAP_BUILD_STUDIO=OFF
 (cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --output-on-failure -j "$jobs" -L sanitize)
