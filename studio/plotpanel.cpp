@@ -450,7 +450,7 @@ void PlotPanel::addDevice(int device)
     plot->device = device;
     const QString title =
         info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
-    plot->rect = addRect(title, 1);
+    plot->rect = addRect(title, 2);
     plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
     plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(2);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
