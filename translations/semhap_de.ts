@@ -5,992 +5,992 @@
     <name>StudioOptions</name>
     <message>
         <source>semhap studio: watch and tune semantic haptic feedback on a simulated task.</source>
-        <translation type="unfinished"></translation>
+        <translation>semhap studio: semantische haptische Rückmeldung an einer simulierten Aufgabe beobachten und abstimmen.</translation>
     </message>
     <message>
         <source>Scene: a bundled name or an MJCF file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene: ein mitgelieferter Name oder eine MJCF-Datei.</translation>
     </message>
     <message>
         <source>scene</source>
-        <translation type="unfinished"></translation>
+        <translation>szene</translation>
     </message>
     <message>
         <source>Router: a preset name or a semhap.router/1 file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Router: ein Vorlagenname oder eine semhap.router/1-Datei.</translation>
     </message>
     <message>
         <source>router</source>
-        <translation type="unfinished"></translation>
+        <translation>router</translation>
     </message>
     <message>
         <source>Who drives until you take over: scripted or reactive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wer steuert, bis Sie übernehmen: scripted oder reactive.</translation>
     </message>
     <message>
         <source>name</source>
-        <translation type="unfinished"></translation>
+        <translation>name</translation>
     </message>
     <message>
         <source>The operator&apos;s seed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert des Bedieners.</translation>
     </message>
     <message>
         <source>n</source>
-        <translation type="unfinished"></translation>
+        <translation>n</translation>
     </message>
     <message>
         <source>Cubes in play (default: the scene&apos;s).</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzahl der Würfel (Standard: wie in der Szene).</translation>
     </message>
     <message>
         <source>Simulated seconds per real second.</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde.</translation>
     </message>
     <message>
         <source>factor</source>
-        <translation type="unfinished"></translation>
+        <translation>faktor</translation>
     </message>
     <message>
         <source>Open paused.</source>
-        <translation type="unfinished"></translation>
+        <translation>Angehalten starten.</translation>
     </message>
     <message>
         <source>Grab the whole window to this PNG, then quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das ganze Fenster in diese PNG-Datei aufnehmen, dann beenden.</translation>
     </message>
     <message>
         <source>file.png</source>
-        <translation type="unfinished"></translation>
+        <translation>datei.png</translation>
     </message>
     <message>
         <source>Grab (with --screenshot) and quit after this many seconds.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach so vielen Sekunden aufnehmen (mit --screenshot) und beenden.</translation>
     </message>
     <message>
         <source>seconds</source>
-        <translation type="unfinished"></translation>
+        <translation>sekunden</translation>
     </message>
     <message>
         <source>Window size, e.g. 1280x800.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fenstergröße, z. B. 1280x800.</translation>
     </message>
     <message>
         <source>WxH</source>
-        <translation type="unfinished"></translation>
+        <translation>BxH</translation>
     </message>
     <message>
         <source>User interface language: en or de.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sprache der Oberfläche: en oder de.</translation>
     </message>
     <message>
         <source>code</source>
-        <translation type="unfinished"></translation>
+        <translation>code</translation>
     </message>
     <message>
         <source>UDP port of the network pose input (0: off).</source>
-        <translation type="unfinished"></translation>
+        <translation>UDP-Port der Posen-Eingabe über das Netzwerk (0: aus).</translation>
     </message>
     <message>
         <source>port</source>
-        <translation type="unfinished"></translation>
+        <translation>port</translation>
     </message>
     <message>
         <source>Ignore the saved window layout.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das gespeicherte Fensterlayout ignorieren.</translation>
     </message>
     <message>
         <source>unexpected argument &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>unerwartetes Argument &apos;%1&apos;</translation>
     </message>
     <message>
         <source>--%1: expected a number from %2 to %3, got &apos;%4&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1: Zahl von %2 bis %3 erwartet, erhalten: &apos;%4&apos;</translation>
     </message>
     <message>
         <source>--size: expected WIDTHxHEIGHT such as 1280x800, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--size: BREITExHÖHE wie 1280x800 erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
     <message>
         <source>--language: expected en or de, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--language: en oder de erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
     <name>semhap::DevicesPanel</name>
     <message>
         <source>not bound</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht zugeordnet</translation>
     </message>
     <message>
         <source>connected</source>
-        <translation type="unfinished"></translation>
+        <translation>verbunden</translation>
     </message>
     <message>
         <source>connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>verbindet</translation>
     </message>
     <message>
         <source>disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>getrennt</translation>
     </message>
     <message>
         <source>%1 frames/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Frames/s</translation>
     </message>
     <message>
         <source>RTT %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>RTT %1 ms</translation>
     </message>
     <message>
         <source>errors: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler: %1</translation>
     </message>
     <message>
         <source>reconnects: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuverbindungen: %1</translation>
     </message>
     <message>
         <source>armed</source>
-        <translation type="unfinished"></translation>
+        <translation>freigegeben</translation>
     </message>
     <message>
         <source>disarmed</source>
-        <translation type="unfinished"></translation>
+        <translation>gesperrt</translation>
     </message>
     <message>
         <source>retrying: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>neuer Versuch: %1</translation>
     </message>
     <message>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>Typ</translation>
     </message>
     <message>
         <source>URI</source>
-        <translation type="unfinished"></translation>
+        <translation>URI</translation>
     </message>
     <message>
         <source>Description</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschreibung</translation>
     </message>
     <message>
         <source>VID:PID</source>
-        <translation type="unfinished"></translation>
+        <translation>VID:PID</translation>
     </message>
     <message>
         <source>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</source>
-        <translation type="unfinished"></translation>
+        <translation>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</translation>
     </message>
     <message>
         <source>An address that cannot be discovered: a UDP band, a pseudo-terminal or a virtual device</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Adresse, die nicht automatisch gefunden werden kann: ein UDP-Armband, ein Pseudo-Terminal oder ein virtuelles Gerät</translation>
     </message>
     <message>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinzufügen</translation>
     </message>
     <message>
         <source>Rescan</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu suchen</translation>
     </message>
     <message>
         <source>Present devices</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhandene Geräte</translation>
     </message>
     <message>
         <source>Arm all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle freigeben</translation>
     </message>
     <message>
         <source>Disarm all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle sperren</translation>
     </message>
     <message>
         <source>Real bands start disarmed: they output nothing until armed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Echte Armbänder starten gesperrt: Sie geben nichts aus, bis sie freigegeben werden.</translation>
     </message>
     <message>
         <source>Router devices</source>
-        <translation type="unfinished"></translation>
+        <translation>Router-Geräte</translation>
     </message>
     <message>
         <source>%1 — %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — %2</translation>
     </message>
     <message>
         <source>The URI to drive %1: pick a present device or type one</source>
-        <translation type="unfinished"></translation>
+        <translation>Die URI, über die %1 angesteuert wird: ein vorhandenes Gerät wählen oder eine URI eingeben</translation>
     </message>
     <message>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbinden</translation>
     </message>
     <message>
         <source>Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>Trennen</translation>
     </message>
     <message>
         <source>Fall back to the virtual device virtual:%1; the run goes on</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf das virtuelle Gerät virtual:%1 zurückschalten; der Lauf geht weiter</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>no transport</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Transport</translation>
     </message>
     <message>
         <source>%1 of %2 armed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 freigegeben</translation>
     </message>
 </context>
 <context>
     <name>semhap::EventLogModel</name>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>Gripper</source>
-        <translation type="unfinished"></translation>
+        <translation>Greifer</translation>
     </message>
     <message>
         <source>Detector</source>
-        <translation type="unfinished"></translation>
+        <translation>Detektor</translation>
     </message>
     <message>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Nachricht</translation>
     </message>
     <message>
         <source>Phase</source>
-        <translation type="unfinished"></translation>
+        <translation>Phase</translation>
     </message>
     <message>
         <source>Intensity</source>
-        <translation type="unfinished"></translation>
+        <translation>Intensität</translation>
     </message>
 </context>
 <context>
     <name>semhap::EventLogPanel</name>
     <message>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Folgen</translation>
     </message>
     <message>
         <source>Filter (detector, message, …)</source>
-        <translation type="unfinished"></translation>
+        <translation>Filter (Detektor, Nachricht, …)</translation>
     </message>
     <message>
         <source>Keep the newest event in view</source>
-        <translation type="unfinished"></translation>
+        <translation>Das neueste Ereignis sichtbar halten</translation>
     </message>
     <message>
         <source>All grippers</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Greifer</translation>
     </message>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts</translation>
     </message>
     <message>
         <source>All categories</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Kategorien</translation>
     </message>
     <message>
         <source>Confirmation</source>
-        <translation type="unfinished"></translation>
+        <translation>Bestätigung</translation>
     </message>
     <message>
         <source>Exception</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausnahme</translation>
     </message>
     <message>
         <source>All phases</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Phasen</translation>
     </message>
     <message>
         <source>Begin</source>
-        <translation type="unfinished"></translation>
+        <translation>Beginn</translation>
     </message>
     <message>
         <source>Update</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktualisierung</translation>
     </message>
     <message>
         <source>End</source>
-        <translation type="unfinished"></translation>
+        <translation>Ende</translation>
     </message>
 </context>
 <context>
     <name>semhap::MainWindow</name>
     <message>
         <source>Network pose input is off: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Posen-Eingabe über das Netzwerk ist aus: %1</translation>
     </message>
     <message>
         <source>Could not open %1 with %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mit %2 konnte nicht geöffnet werden</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Starten</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <source>Could not reset the run</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Lauf konnte nicht zurückgesetzt werden</translation>
     </message>
     <message>
         <source>Slower</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamer</translation>
     </message>
     <message>
         <source>Faster</source>
-        <translation type="unfinished"></translation>
+        <translation>Schneller</translation>
     </message>
     <message>
         <source>Real time</source>
-        <translation type="unfinished"></translation>
+        <translation>Echtzeit</translation>
     </message>
     <message>
         <source>Stop all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alles stoppen</translation>
     </message>
     <message>
         <source>Pause the run and send every device to zero now (Esc, from anywhere)</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Lauf anhalten und jedes Gerät sofort auf null setzen (Esc, von überall)</translation>
     </message>
     <message>
         <source>Stopped: every device was sent to zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>Gestoppt: Jedes Gerät wurde auf null gesetzt.</translation>
     </message>
     <message>
         <source>Drive</source>
-        <translation type="unfinished"></translation>
+        <translation>Steuern</translation>
     </message>
     <message>
         <source>Take the grippers over from the scripted operator (Ctrl+T); any key or pose input does it too</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Greifer vom skriptgesteuerten Bediener übernehmen (Strg+T); jede Taste und jede Posen-Eingabe tut das ebenfalls</translation>
     </message>
     <message>
         <source>Contact forces</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontaktkräfte</translation>
     </message>
     <message>
         <source>Show contact forces as arrows in the viewport</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontaktkräfte als Pfeile in der Szenenansicht zeigen</translation>
     </message>
     <message>
         <source>Reset camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Kamera zurücksetzen</translation>
     </message>
     <message>
         <source>Open scene…</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene öffnen…</translation>
     </message>
     <message>
         <source>Open scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene öffnen</translation>
     </message>
     <message>
         <source>MuJoCo scenes (*.xml)</source>
-        <translation type="unfinished"></translation>
+        <translation>MuJoCo-Szenen (*.xml)</translation>
     </message>
     <message>
         <source>Open router…</source>
-        <translation type="unfinished"></translation>
+        <translation>Router öffnen…</translation>
     </message>
     <message>
         <source>Open router</source>
-        <translation type="unfinished"></translation>
+        <translation>Router öffnen</translation>
     </message>
     <message>
         <source>semhap routers (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>semhap-Router (*.json)</translation>
     </message>
     <message>
         <source>Preferences…</source>
-        <translation type="unfinished"></translation>
+        <translation>Einstellungen…</translation>
     </message>
     <message>
         <source>Reset layout</source>
-        <translation type="unfinished"></translation>
+        <translation>Layout zurücksetzen</translation>
     </message>
     <message>
         <source>Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>Beenden</translation>
     </message>
     <message>
         <source>About semhap</source>
-        <translation type="unfinished"></translation>
+        <translation>Über semhap</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;semhap studio&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Semantic haptic feedback for robot teleoperation: contact forces become confirmations and exceptions, routed to patterns on wristbands.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;semhap studio&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Semantische haptische Rückmeldung für die Fernsteuerung von Robotern: Kontaktkräfte werden zu Bestätigungen und Ausnahmen, die als Muster auf Armbänder geleitet werden.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde (Strg+- / Strg++)</translation>
     </message>
     <message>
         <source>%1× speed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1× Tempo</translation>
     </message>
     <message>
         <source>Scene:</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene:</translation>
     </message>
     <message>
         <source>The task to simulate</source>
-        <translation type="unfinished"></translation>
+        <translation>Die zu simulierende Aufgabe</translation>
     </message>
     <message>
         <source>Router:</source>
-        <translation type="unfinished"></translation>
+        <translation>Router:</translation>
     </message>
     <message>
         <source>Which feedback design turns events into patterns</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Rückmeldungsdesign, das Ereignisse in Muster umsetzt</translation>
     </message>
     <message>
         <source>Plots</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme</translation>
     </message>
     <message>
         <source>Events</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignisse</translation>
     </message>
     <message>
         <source>Devices</source>
-        <translation type="unfinished"></translation>
+        <translation>Geräte</translation>
     </message>
     <message>
         <source>Task metrics</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufgabenmetriken</translation>
     </message>
     <message>
         <source>Could not connect %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht mit %2 verbunden werden</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>&amp;Run</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lauf</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten</translation>
     </message>
     <message>
         <source>The run reached its end. Reset to run it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Lauf ist zu Ende. Zum erneuten Starten zurücksetzen.</translation>
     </message>
     <message>
         <source>semhap studio — %1 · %2</source>
-        <translation type="unfinished"></translation>
+        <translation>semhap studio — %1 · %2</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>%1× real time</source>
-        <translation type="unfinished"></translation>
+        <translation>%1× Echtzeit</translation>
     </message>
     <message>
         <source>paused</source>
-        <translation type="unfinished"></translation>
+        <translation>angehalten</translation>
     </message>
     <message>
         <source>You are driving</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie steuern</translation>
     </message>
     <message>
         <source>Operator: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bediener: %1</translation>
     </message>
     <message>
         <source>Devices: %1 virtual, %2 connected</source>
-        <translation type="unfinished"></translation>
+        <translation>Geräte: %1 virtuell, %2 verbunden</translation>
     </message>
     <message>
         <source>, %1 not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>, %1 nicht verbunden</translation>
     </message>
     <message>
         <source>semhap studio</source>
-        <translation type="unfinished"></translation>
+        <translation>semhap studio</translation>
     </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
     <message>
         <source>Cubes transferred</source>
-        <translation type="unfinished"></translation>
+        <translation>Transportierte Würfel</translation>
     </message>
     <message>
         <source>Cubes broken</source>
-        <translation type="unfinished"></translation>
+        <translation>Zerbrochene Würfel</translation>
     </message>
     <message>
         <source>Cubes dropped (slipped out)</source>
-        <translation type="unfinished"></translation>
+        <translation>Verlorene Würfel (herausgerutscht)</translation>
     </message>
     <message>
         <source>Grasps</source>
-        <translation type="unfinished"></translation>
+        <translation>Griffe</translation>
     </message>
     <message>
         <source>Grasps per transfer</source>
-        <translation type="unfinished"></translation>
+        <translation>Griffe pro Transport</translation>
     </message>
     <message>
         <source>Average grasp force</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittlere Griffkraft</translation>
     </message>
     <message>
         <source>Average peak grasp force</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittlere Spitzen-Griffkraft</translation>
     </message>
     <message>
         <source>Warning lead time</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwarnzeit</translation>
     </message>
     <message>
         <source>Breaks warned</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorgewarnte Brüche</translation>
     </message>
     <message>
         <source>Containers dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>Fallen gelassene Behälter</translation>
     </message>
     <message>
         <source>Transfers per container cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>Transporte pro Behälterzyklus</translation>
     </message>
     <message>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Zeit</translation>
     </message>
     <message>
         <source>Wall time</source>
-        <translation type="unfinished"></translation>
+        <translation>Reale Zeit</translation>
     </message>
     <message>
         <source>Real-time factor</source>
-        <translation type="unfinished"></translation>
+        <translation>Echtzeitfaktor</translation>
     </message>
     <message>
         <source>Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene</translation>
     </message>
     <message>
         <source>Router</source>
-        <translation type="unfinished"></translation>
+        <translation>Router</translation>
     </message>
     <message>
         <source>Operator</source>
-        <translation type="unfinished"></translation>
+        <translation>Bediener</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert</translation>
     </message>
     <message>
         <source>No metrics yet: they appear while a task runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Metriken: Sie erscheinen, während eine Aufgabe läuft.</translation>
     </message>
     <message>
         <source>n/a</source>
-        <translation type="unfinished"></translation>
+        <translation>k. A.</translation>
     </message>
     <message>
         <source>yes</source>
-        <translation type="unfinished"></translation>
+        <translation>ja</translation>
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished"></translation>
+        <translation>nein</translation>
     </message>
     <message>
         <source>%1×</source>
-        <translation type="unfinished"></translation>
+        <translation>%1×</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>%1 N</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 N</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
 </context>
 <context>
     <name>semhap::PlotPanel</name>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten</translation>
     </message>
     <message>
         <source>Freeze the view; data keep being recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Ansicht einfrieren; Daten werden weiter aufgezeichnet</translation>
     </message>
     <message>
         <source>Live</source>
-        <translation type="unfinished"></translation>
+        <translation>Live</translation>
     </message>
     <message>
         <source>Follow the newest data again</source>
-        <translation type="unfinished"></translation>
+        <translation>Wieder den neuesten Daten folgen</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>Width of the live time window</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite des Live-Zeitfensters</translation>
     </message>
     <message>
         <source>&amp;Window:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zeitfenster:</translation>
     </message>
     <message>
         <source>Export CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV exportieren…</translation>
     </message>
     <message>
         <source>Save the visible time range as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Den sichtbaren Zeitbereich als CSV speichern</translation>
     </message>
     <message>
         <source>Export PNG…</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG exportieren…</translation>
     </message>
     <message>
         <source>Save the plots as an image</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Diagramme als Bild speichern</translation>
     </message>
     <message>
         <source>Click to place the cursor; when paused, drag to pan (Shift+drag moves the cursor) and use the wheel to zoom</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken setzt den Cursor; im angehaltenen Zustand verschiebt Ziehen die Ansicht (Umschalt+Ziehen bewegt den Cursor) und das Mausrad zoomt</translation>
     </message>
     <message>
         <source>pipeline time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pipeline-Zeit (s)</translation>
     </message>
     <message>
         <source>right gripper</source>
-        <translation type="unfinished"></translation>
+        <translation>rechter Greifer</translation>
     </message>
     <message>
         <source>left gripper</source>
-        <translation type="unfinished"></translation>
+        <translation>linker Greifer</translation>
     </message>
     <message>
         <source>%1: force</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Kraft</translation>
     </message>
     <message>
         <source>F (N)</source>
-        <translation type="unfinished"></translation>
+        <translation>F (N)</translation>
     </message>
     <message>
         <source>left finger</source>
-        <translation type="unfinished"></translation>
+        <translation>linker Finger</translation>
     </message>
     <message>
         <source>right finger</source>
-        <translation type="unfinished"></translation>
+        <translation>rechter Finger</translation>
     </message>
     <message>
         <source>F (sum)</source>
-        <translation type="unfinished"></translation>
+        <translation>F (Summe)</translation>
     </message>
     <message>
         <source>%1 %2 N</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 N</translation>
     </message>
     <message>
         <source>grasp</source>
-        <translation type="unfinished"></translation>
+        <translation>Griff</translation>
     </message>
     <message>
         <source>break</source>
-        <translation type="unfinished"></translation>
+        <translation>Bruch</translation>
     </message>
     <message>
         <source>max</source>
-        <translation type="unfinished"></translation>
+        <translation>max</translation>
     </message>
     <message>
         <source>%1: contacts</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Kontakte</translation>
     </message>
     <message>
         <source>N</source>
-        <translation type="unfinished"></translation>
+        <translation>N</translation>
     </message>
     <message>
         <source>N (contacts)</source>
-        <translation type="unfinished"></translation>
+        <translation>N (Kontakte)</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>loss</source>
-        <translation type="unfinished"></translation>
+        <translation>Verlust</translation>
     </message>
     <message>
         <source>min</source>
-        <translation type="unfinished"></translation>
+        <translation>min</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>output</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausgabe</translation>
     </message>
     <message>
         <source>slip</source>
-        <translation type="unfinished"></translation>
+        <translation>Rutschen</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>%1: F %2 N (left %3, right %4), N %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: F %2 N (links %3, rechts %4), N %5</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>Cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>Export Plots as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme als CSV exportieren</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
         <source>Export CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV exportieren</translation>
     </message>
     <message>
         <source>Export Plots as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme als PNG exportieren</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
         <source>Export PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG exportieren</translation>
     </message>
 </context>
 <context>
     <name>semhap::PoseInput</name>
     <message>
         <source>%1 bytes, larger than the limit of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Bytes, mehr als die Grenze von %2</translation>
     </message>
     <message>
         <source>not JSON: %1 at byte %2</source>
-        <translation type="unfinished"></translation>
+        <translation>kein JSON: %1 bei Byte %2</translation>
     </message>
     <message>
         <source>expected a JSON object</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON-Objekt erwartet</translation>
     </message>
     <message>
         <source>key &apos;hand&apos;: expected &quot;left&quot; or &quot;right&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;hand&apos;: &quot;left&quot; oder &quot;right&quot; erwartet</translation>
     </message>
     <message>
         <source>key &apos;pos&apos;: expected an array of 3 numbers (metres)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;pos&apos;: Array aus 3 Zahlen erwartet (Meter)</translation>
     </message>
     <message>
         <source>key &apos;pos&apos;: %1 is beyond %2 m from the origin (positions are in metres)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;pos&apos;: %1 liegt mehr als %2 m vom Ursprung entfernt (Positionen sind in Metern)</translation>
     </message>
     <message>
         <source>key &apos;quat&apos;: expected an array of 4 numbers [w, x, y, z], not all 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;quat&apos;: Array aus 4 Zahlen [w, x, y, z] erwartet, nicht alle 0</translation>
     </message>
     <message>
         <source>key &apos;yaw&apos;: expected a number (radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;yaw&apos;: Zahl erwartet (Radiant)</translation>
     </message>
     <message>
         <source>key &apos;grip&apos;: expected a number (newtons)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;grip&apos;: Zahl erwartet (Newton)</translation>
     </message>
     <message>
         <source>unknown key &apos;%1&apos; (expected hand, pos, quat or yaw, grip)</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Schlüssel &apos;%1&apos; (erwartet: hand, pos, quat oder yaw, grip)</translation>
     </message>
     <message>
         <source>key &apos;hand&apos; is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;hand&apos; fehlt</translation>
     </message>
     <message>
         <source>keys &apos;quat&apos; and &apos;yaw&apos;: give one of them</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;quat&apos; und &apos;yaw&apos;: nur einen von beiden angeben</translation>
     </message>
     <message>
         <source>key &apos;hand&apos;: this scene has no %1 gripper</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;hand&apos;: Diese Szene hat keinen Greifer &apos;%1&apos;</translation>
     </message>
     <message>
         <source>key &apos;pos&apos; is needed before the %1 hand can be turned on its own</source>
-        <translation type="unfinished"></translation>
+        <translation>Schlüssel &apos;pos&apos; wird benötigt, bevor die Hand &apos;%1&apos; allein gedreht werden kann</translation>
     </message>
     <message>
         <source>datagram %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Datagramm %1: %2</translation>
     </message>
 </context>
 <context>
     <name>semhap::PreferencesDialog</name>
     <message>
         <source>Preferences</source>
-        <translation type="unfinished"></translation>
+        <translation>Einstellungen</translation>
     </message>
     <message>
         <source>System language</source>
-        <translation type="unfinished"></translation>
+        <translation>Systemsprache</translation>
     </message>
     <message>
         <source>Interface language:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sprache der Oberfläche:</translation>
     </message>
     <message>
         <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Fenster wird in der neuen Sprache neu aufgebaut; der Lauf beginnt wieder von vorn.</translation>
     </message>
 </context>
 <context>
     <name>semhap::SimEngine</name>
     <message>
         <source>nothing is loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>nichts geladen</translation>
     </message>
     <message>
         <source>the router has no device &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>der Router hat kein Gerät &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
     <name>semhap::SimViewport</name>
     <message>
         <source>Reset camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Kamera zurücksetzen</translation>
     </message>
     <message>
         <source>Show contact forces</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontaktkräfte zeigen</translation>
     </message>
     <message>
         <source>Waiting for the simulation…</source>
-        <translation type="unfinished"></translation>
+        <translation>Warten auf die Simulation…</translation>
     </message>
     <message>
         <source>No scene loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Szene geladen</translation>
     </message>
     <message>
         <source>You are driving (right hand)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie steuern (rechte Hand)</translation>
     </message>
     <message>
         <source>You are driving (left hand)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie steuern (linke Hand)</translation>
     </message>
     <message>
         <source>Grip: closed, %1 N</source>
-        <translation type="unfinished"></translation>
+        <translation>Griff: geschlossen, %1 N</translation>
     </message>
     <message>
         <source>Grip: open (closes to %1 N)</source>
-        <translation type="unfinished"></translation>
+        <translation>Griff: offen (schließt mit %1 N)</translation>
     </message>
     <message>
         <source>W A S D move · R F up/down · Q E turn · Space grip · +/- force</source>
-        <translation type="unfinished"></translation>
+        <translation>W A S D bewegen · R F hoch/runter · Q E drehen · Leertaste greifen · +/- Kraft</translation>
     </message>
     <message>
         <source>Tab: switch hand</source>
-        <translation type="unfinished"></translation>
+        <translation>Tab: Hand wechseln</translation>
     </message>
     <message>
         <source>Scripted operator</source>
-        <translation type="unfinished"></translation>
+        <translation>Skriptgesteuerter Bediener</translation>
     </message>
     <message>
         <source>Click here and press W A S D to take over</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier klicken und W A S D drücken, um zu übernehmen</translation>
     </message>
 </context>
 <context>
     <name>semhap::Studio</name>
     <message>
         <source>%1: could not write the screenshot</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Bildschirmfoto konnte nicht geschrieben werden</translation>
     </message>
 </context>
 </TS>
