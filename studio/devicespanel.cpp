@@ -12,6 +12,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
@@ -50,9 +51,10 @@ QString statusDetails(const BoundDevice &bound)
 {
     const TransportStatus &s = bound.status;
     QStringList parts;
-    parts.append(DevicesPanel::tr("%1 frames/s").arg(s.framesPerSecond, 0, 'f', 0));
+    parts.append(
+        DevicesPanel::tr("%1 frames/s").arg(QLocale().toString(s.framesPerSecond, 'f', 0)));
     if (s.roundTripMs >= 0.0)
-        parts.append(DevicesPanel::tr("RTT %1 ms").arg(s.roundTripMs, 0, 'f', 1));
+        parts.append(DevicesPanel::tr("RTT %1 ms").arg(QLocale().toString(s.roundTripMs, 'f', 1)));
     parts.append(DevicesPanel::tr("errors: %1").arg(s.errors));
     if (s.reconnects > 0)
         parts.append(DevicesPanel::tr("reconnects: %1").arg(s.reconnects));

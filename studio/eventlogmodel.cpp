@@ -4,6 +4,7 @@
 #include "livehistory.h"
 
 #include <QColor>
+#include <QLocale>
 #include <QPainter>
 #include <QPixmap>
 
@@ -110,7 +111,7 @@ QString EventLogModel::displayText(const Row &row, int column) const
     const SemanticEvent &event = row.event;
     switch (column) {
     case TimeColumn:
-        return QString::number(event.t, 'f', 3);
+        return QLocale().toString(event.t, 'f', 3);
     case GripperColumn:
         return gripperName(event.gripper);
     case DetectorColumn:
@@ -121,7 +122,7 @@ QString EventLogModel::displayText(const Row &row, int column) const
     case PhaseColumn:
         return eventPhaseName(event.phase);
     case IntensityColumn:
-        return QString::number(event.intensity, 'f', 2);
+        return QLocale().toString(event.intensity, 'f', 2);
     default:
         return QString();
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "levelmeter.h"
 
+#include <QLocale>
 #include <QPainter>
 
 #include <algorithm>
@@ -81,7 +82,7 @@ void LevelMeter::paintEvent(QPaintEvent *)
         painter.drawRect(track.adjusted(0, 0, -1, -1));
         painter.setPen(palette().color(QPalette::WindowText));
         painter.drawText(QRect(track.right() + 6, y, valueWidth, h),
-                         Qt::AlignRight | Qt::AlignVCenter, QString::number(value, 'f', 2));
+                         Qt::AlignRight | Qt::AlignVCenter, QLocale().toString(value, 'f', 2));
     }
 }
 

@@ -94,7 +94,8 @@ bool MainWindow::openRun(const RunOptions &options)
 {
     QString error;
     if (!m_engine.load(options, &error)) {
-        showError(tr("Could not open %1 with %2").arg(options.scene, options.router), error);
+        showError(tr("Could not load scene %1 with router %2").arg(options.scene, options.router),
+                  error);
         syncPickers();
         return false;
     }
@@ -209,7 +210,7 @@ void MainWindow::createActions()
 
 void MainWindow::createToolBar()
 {
-    QToolBar *bar = addToolBar(tr("Run"));
+    QToolBar *bar = addToolBar(tr("Simulation"));
     bar->setObjectName(QStringLiteral("runToolBar"));
     bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     bar->addAction(m_runAction);

@@ -7,6 +7,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QLabel>
+#include <QLocale>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
@@ -169,17 +170,17 @@ QString MetricsPanel::format(const QString &key, const QJsonValue &value)
     const KnownMetric *metric = known(key);
     switch (metric ? metric->kind : guessKind(key, number)) {
     case Kind::Count:
-        return QString::number(std::llround(number));
+        return QLocale().toString(std::llround(number));
     case Kind::Ratio:
-        return QString::number(number, 'f', 2);
+        return QLocale().toString(number, 'f', 2);
     case Kind::Factor:
-        return tr("%1×").arg(number, 0, 'f', 2);
+        return tr("%1×").arg(QLocale().toString(number, 'f', 2));
     case Kind::Seconds:
-        return tr("%1 s").arg(number, 0, 'f', 2);
+        return tr("%1 s").arg(QLocale().toString(number, 'f', 2));
     case Kind::Newtons:
-        return tr("%1 N").arg(number, 0, 'f', 2);
+        return tr("%1 N").arg(QLocale().toString(number, 'f', 2));
     case Kind::Share:
-        return tr("%1 %").arg(number * 100.0, 0, 'f', 0);
+        return tr("%1 %").arg(QLocale().toString(number * 100.0, 'f', 0));
     case Kind::Text:
         return value.toVariant().toString();
     }

@@ -246,6 +246,10 @@
         <source>%1 of %2 armed</source>
         <translation>%1 von %2 freigegeben</translation>
     </message>
+    <message>
+        <source>%1 — %2 (its hand is not in this scene)</source>
+        <translation>%1 — %2 (seine Hand ist nicht in dieser Szene)</translation>
+    </message>
 </context>
 <context>
     <name>semhap::EventLogModel</name>
@@ -342,10 +346,6 @@
     <message>
         <source>Network pose input is off: %1</source>
         <translation>Posen-Eingabe über das Netzwerk ist aus: %1</translation>
-    </message>
-    <message>
-        <source>Could not open %1 with %2</source>
-        <translation>%1 mit %2 konnte nicht geöffnet werden</translation>
     </message>
     <message>
         <source>Run</source>
@@ -554,6 +554,14 @@
     <message>
         <source>semhap studio</source>
         <translation>semhap studio</translation>
+    </message>
+    <message>
+        <source>Could not load scene %1 with router %2</source>
+        <translation>Szene %1 mit Router %2 konnte nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
     </message>
 </context>
 <context>

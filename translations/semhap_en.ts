@@ -246,6 +246,10 @@
         <source>%1 of %2 armed</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 — %2 (its hand is not in this scene)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::EventLogModel</name>
@@ -341,10 +345,6 @@
     <name>semhap::MainWindow</name>
     <message>
         <source>Network pose input is off: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not open %1 with %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -553,6 +553,14 @@
     </message>
     <message>
         <source>semhap studio</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not load scene %1 with router %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
