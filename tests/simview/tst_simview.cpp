@@ -2,6 +2,7 @@
 // The scene renderer in a real OpenGL context (run under Xvfb): it draws the scene, the
 // overlay tints the gripper in its colour, and grabs are opaque. The images are saved
 // beside the test binary to be looked at.
+#include "imagechecks.h"
 #include "scenefeed.h"
 #include "scenerenderer.h"
 #include "world.h"
@@ -9,7 +10,6 @@
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
-#include <QSet>
 #include <QTest>
 
 using namespace semhap;
@@ -110,16 +110,8 @@ void TestSimView::feedHandsOverTheNewestPicture()
 void TestSimView::rendersTheScene()
 {
     const QImage image = render({}, "plain");
-    QSet<QRgb> colours;
-    bool opaque = true;
-    for (int y = 0; y < image.height(); y += 4) {
-        for (int x = 0; x < image.width(); x += 4) {
-            colours.insert(image.pixel(x, y) & 0xffffff);
-            opaque = opaque && qAlpha(image.pixel(x, y)) == 255;
-        }
-    }
-    QVERIFY2(colours.size() > 100, "the image is (nearly) uniform: nothing was drawn");
-    QVERIFY(opaque);
+    QString why;
+    QVERIFY2(looksDrawn(image, &why), qPrintable(why));
 }
 
 void TestSimView::overlayTintsTheGripper_data()

@@ -53,6 +53,20 @@ private:
     QTemporaryDir m_config;
 };
 
+namespace {
+
+/** Shows the window and makes it active: shortcuts go to the active window only. */
+bool open(MainWindow &window)
+{
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return false;
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
+} // namespace
+
 void TestStudio::initTestCase()
 {
     QVERIFY(m_config.isValid());
@@ -80,10 +94,7 @@ StudioOptions TestStudio::options() const
 void TestStudio::opensOnTheDefaultsAndRuns()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
@@ -107,10 +118,7 @@ void TestStudio::opensOnTheDefaultsAndRuns()
 void TestStudio::picksSceneAndRouter()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QSignalSpy loaded(&window.engine(), &SimEngine::loaded);
 
     QComboBox *scene = window.scenePicker();
@@ -141,10 +149,7 @@ void TestStudio::picksSceneAndRouter()
 void TestStudio::runStepAndSpeedFromTheKeyboard()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QVERIFY(window.engine().isRunning());
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(!window.engine().isRunning());
@@ -170,10 +175,7 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
 void TestStudio::timeWindowFollowsTheSpinBox()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     auto *spin = window.plots()->findChild<QAbstractSpinBox *>();
     QVERIFY(spin);
     spin->setFocus();
@@ -187,10 +189,7 @@ void TestStudio::timeWindowFollowsTheSpinBox()
 void TestStudio::stopAllWorksFromAnywhere()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QVERIFY(window.engine().isRunning());
     // With the focus in a text field of a dock, Esc still stops everything.
     auto *filter = window.eventLog()->findChild<QLineEdit *>("filterText");
@@ -206,10 +205,7 @@ void TestStudio::stopAllWorksFromAnywhere()
 void TestStudio::aKeyInTheViewportTakesOver()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     auto *teleop = window.findChild<QAction *>("teleopAction");
     QVERIFY(!teleop->isChecked());
     window.viewport()->setFocus();
@@ -227,10 +223,7 @@ void TestStudio::aKeyInTheViewportTakesOver()
 void TestStudio::eventLogMovesThePlotCursor()
 {
     MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     window.engine().pause();
     QTableView *table = window.eventLog()->findChild<QTableView *>("eventTable");
@@ -249,18 +242,12 @@ void TestStudio::layoutIsSavedAndRestored()
     StudioOptions o = options();
     {
         MainWindow window(o);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        window.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(open(window));
         window.findChild<QDockWidget *>("metricsDock")->close();
         window.close();
     }
     MainWindow window(o);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(open(window));
     QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
     QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
     window.findChild<QAction *>("resetLayoutAction")->trigger();

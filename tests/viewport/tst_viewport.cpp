@@ -2,6 +2,7 @@
 // The simulation viewport in a real window with OpenGL (run under Xvfb): it draws the
 // scene, the mouse moves the camera, teleoperation keys move the active gripper's target
 // through a ManualOperator. Screenshots are saved beside the test binary to be looked at.
+#include "imagechecks.h"
 #include "keyboardteleop.h"
 #include "manualoperator.h"
 #include "scenefeed.h"
@@ -132,16 +133,8 @@ void TestViewport::drawsTheScene()
     QVERIFY(m_viewport.renderedFrames() > 0);
     const QImage image = grab();
     QCOMPARE(image.size(), QSize(800, 600));
-    QSet<QRgb> colours;
-    bool opaque = true;
-    for (int y = 0; y < image.height(); y += 4) {
-        for (int x = 0; x < image.width(); x += 4) {
-            colours.insert(image.pixel(x, y) & 0xffffff);
-            opaque = opaque && qAlpha(image.pixel(x, y)) == 255;
-        }
-    }
-    QVERIFY2(colours.size() > 100, "the image is (nearly) uniform: nothing was drawn");
-    QVERIFY(opaque);
+    QString why;
+    QVERIFY2(looksDrawn(image, &why), qPrintable(why));
     // Frames keep coming: the painter's overlay does not break MuJoCo's next frame.
     const quint64 before = m_viewport.renderedFrames();
     m_scene->world->step();
