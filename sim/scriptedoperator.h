@@ -90,7 +90,6 @@ private:
     double m_droppedAt = 0.0;
     std::array<double, 3> m_holdPos{};
     std::array<double, 2> m_wobblePhase{};
-    double m_nextGlance = 4.0;
 };
 
 } // namespace semhap
