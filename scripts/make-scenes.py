@@ -131,6 +131,9 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
     </default>
   </default>
   <asset>
+    <!-- A pale sky, so the viewport shows no black void above the floor. -->
+    <texture name="sky" type="skybox" builtin="gradient" rgb1="0.93 0.95 0.97"
+             rgb2="0.62 0.70 0.80" width="256" height="256"/>
     <texture name="grid" type="2d" builtin="checker" rgb1="0.82 0.84 0.86" rgb2="0.74 0.76 0.78"
              width="512" height="512"/>
     <material name="floor" texture="grid" texrepeat="8 8" reflectance="0.05"/>
