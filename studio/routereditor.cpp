@@ -52,6 +52,11 @@ public:
         setDragEnabled(true);
         setDragDropMode(DragOnly);
         setSelectionMode(SingleSelection);
+        // Columns of entries: the ten types fit in a short strip beside the inspector.
+        setFlow(TopToBottom);
+        setWrapping(true);
+        setResizeMode(Adjust);
+        setSpacing(1);
     }
 
 protected:
@@ -154,8 +159,8 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
     auto *bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_palette);
     bottom->addWidget(m_inspector);
-    bottom->setStretchFactor(0, 1);
-    bottom->setStretchFactor(1, 2);
+    bottom->setStretchFactor(0, 2);
+    bottom->setStretchFactor(1, 3);
     auto *canvas = new QWidget(this);
     auto *canvasLayout = new QVBoxLayout(canvas);
     canvasLayout->setContentsMargins(0, 0, 0, 0);
@@ -170,7 +175,7 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
     split->setStretchFactor(0, 6);
     split->setStretchFactor(1, 1);
     split->setStretchFactor(2, 3);
-    split->setSizes({440, 60, 220});
+    split->setSizes({500, 60, 170});
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
