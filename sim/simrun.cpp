@@ -68,4 +68,16 @@ bool SimRun::step(RunSink &sink)
     return !isDone();
 }
 
+void SimRun::setRouter(std::unique_ptr<Router> router, RunSink &sink)
+{
+    EventBuffer events;
+    if (m_pipeline->router().isStarted())
+        m_pipeline->router().endAll(m_pipeline->now(), events);
+    for (const SemanticEvent &event : events)
+        sink.onEvent(event);
+    // The perception reads the player of the router it was made for: replace both together.
+    m_perception = std::make_unique<Perception>(*router);
+    m_pipeline = std::make_unique<Pipeline>(std::move(router));
+}
+
 } // namespace semhap

@@ -63,6 +63,13 @@ public:
     /** What each hand perceives of the device output (the overlay is drawn from it). */
     const Perception &perception() const { return *m_perception; }
 
+    /**
+     * Swaps the router between two steps (the studio's live edits): the old router's active
+     * messages end now, their End events going to `sink`, and the new one starts with the
+     * next frame in a fresh pipeline and perception; world, operator and task go on.
+     */
+    void setRouter(std::unique_ptr<Router> router, RunSink &sink);
+
     World &world() { return *m_world; }
     Pipeline &pipeline() { return *m_pipeline; }
     const RunOptions &options() const { return m_options; }

@@ -168,6 +168,7 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget
         refresh();
     });
     connect(&m_history, &LiveHistory::reset, this, &DevicesPanel::rebuildRows);
+    connect(&m_history, &LiveHistory::routerChanged, this, &DevicesPanel::rebuildRows);
     connect(&m_history, &LiveHistory::updated, this, &DevicesPanel::showLevels);
     connect(m_pollTimer, &QTimer::timeout, this, [this] {
         QStringList added;

@@ -18,11 +18,44 @@ void LiveHistory::start(const std::vector<LiveDevice> &devices,
     m_devices = devices;
     m_deviceFrames.assign(devices.size(), LiveSeries<DeviceFrame>());
     m_thresholds = thresholds;
-    m_nodeIds = nodeIds;
+    m_nodeIds.clear();
+    m_nodeMap.clear();
+    mapNodes(nodeIds);
     m_metrics = QJsonObject();
     m_now = 0.0;
     m_dirty = false;
     emit reset();
+}
+
+void LiveHistory::setRouter(const std::vector<LiveDevice> &devices,
+                            const std::array<GripperThresholds, 2> &thresholds,
+                            const QStringList &nodeIds)
+{
+    std::vector<LiveSeries<DeviceFrame>> series(devices.size());
+    for (size_t d = 0; d < devices.size(); ++d) {
+        for (size_t old = 0; old < m_devices.size(); ++old) {
+            if (m_devices[old].name == devices[d].name)
+                series[d] = std::move(m_deviceFrames[old]);
+        }
+    }
+    m_devices = devices;
+    m_deviceFrames = std::move(series);
+    m_thresholds = thresholds;
+    m_nodeMap.clear();
+    mapNodes(nodeIds);
+    emit routerChanged();
+}
+
+void LiveHistory::mapNodes(const QStringList &nodeIds)
+{
+    for (const QString &id : nodeIds) {
+        int index = int(m_nodeIds.indexOf(id));
+        if (index < 0) {
+            index = int(m_nodeIds.size());
+            m_nodeIds.append(id);
+        }
+        m_nodeMap.push_back(index);
+    }
 }
 
 void LiveHistory::append(const ContactFrame &frame)
@@ -32,8 +65,12 @@ void LiveHistory::append(const ContactFrame &frame)
     m_dirty = true;
 }
 
-void LiveHistory::append(const SemanticEvent &event)
+void LiveHistory::append(const SemanticEvent &routed)
 {
+    SemanticEvent event = routed;
+    event.node = routed.node >= 0 && size_t(routed.node) < m_nodeMap.size()
+                     ? m_nodeMap[size_t(routed.node)]
+                     : -1;
     m_events.append(event);
     m_now = std::max(m_now, event.t);
     m_dirty = true;

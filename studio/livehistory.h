@@ -99,7 +99,18 @@ public:
     void start(const std::vector<LiveDevice> &devices,
                const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
 
+    /**
+     * Describes a router swapped into the running session (the router editor's Apply),
+     * keeping the contact frames, events and spans seen so far: device series carry over by
+     * device name, and events keep naming the detectors they came from. Emits
+     * `routerChanged()`. Drain the old router's output first: frames and events appended
+     * afterwards are read with the new router's numbering.
+     */
+    void setRouter(const std::vector<LiveDevice> &devices,
+                   const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
+
     void append(const ContactFrame &frame);
+    /** Keeps `event`, its `node` renumbered from the running router's to the history's. */
     void append(const SemanticEvent &event);
     void append(const DeviceFrame &frame);
     void setMetrics(const QJsonObject &metrics);
@@ -125,25 +136,30 @@ public:
         return m_deviceFrames[size_t(device)];
     }
     const std::array<GripperThresholds, 2> &thresholds() const { return m_thresholds; }
-    /** The detector's node id of an event (`right.force`). */
+    /** The detector's node id of an event (`right.force`), under any router of the session. */
     QString nodeName(int node) const;
     const QJsonObject &metrics() const { return m_metrics; }
 
 signals:
     /** A new run started: views drop what they show. */
     void reset();
+    /** The router changed while the session goes on: views rebuild what depends on it. */
+    void routerChanged();
     /** New data arrived (at most once per display frame). */
     void updated();
     void metricsChanged();
 
 private:
+    void mapNodes(const QStringList &nodeIds);
+
     std::array<LiveSeries<ContactFrame>, 2> m_frames;
     LiveSeries<SemanticEvent> m_events;
     std::vector<MessageSpan> m_spans;
     std::vector<LiveDevice> m_devices;
     std::vector<LiveSeries<DeviceFrame>> m_deviceFrames;
     std::array<GripperThresholds, 2> m_thresholds{};
-    QStringList m_nodeIds;
+    QStringList m_nodeIds;      ///< every detector id seen this session; events index it
+    std::vector<int> m_nodeMap; ///< the running router's node index -> index in m_nodeIds
     QJsonObject m_metrics;
     double m_keepSeconds = 120.0;
     double m_now = 0.0;

@@ -9,6 +9,7 @@
 #include "plotpanel.h"
 #include "poseinput.h"
 #include "preferencesdialog.h"
+#include "routereditor.h"
 #include "routergraph.h"
 #include "simviewport.h"
 #include "world.h"
@@ -36,7 +37,7 @@ constexpr int RealTimeIndex = 3;
 constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** Layouts saved by another version of the docks are not restored. */
-constexpr int LayoutVersion = 1;
+constexpr int LayoutVersion = 2;
 
 QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
@@ -272,6 +273,11 @@ void MainWindow::createDocks()
     m_eventLog = new EventLogPanel(m_engine.history(), this);
     m_devicesPanel = new DevicesPanel(m_engine.devices(), m_engine.history(), this);
     m_metricsPanel = new MetricsPanel(m_engine.history(), this);
+    m_routerEditor = new RouterEditor(this);
+    m_routerEditor->setHistory(&m_engine.history());
+    m_routerEditor->setApplyFunction([this](const RouterGraph &graph, QString *error) {
+        return m_engine.setRouter(graph, error);
+    });
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
@@ -284,7 +290,12 @@ void MainWindow::createDocks()
     // space under the viewport.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    QDockWidget *router =
+        makeDock(tr("Router"), QStringLiteral("routerDock"), m_routerEditor, this);
     addDockWidget(Qt::RightDockWidgetArea, plots);
+    addDockWidget(Qt::RightDockWidgetArea, router);
+    tabifyDockWidget(plots, router);
+    plots->raise();
     addDockWidget(Qt::BottomDockWidgetArea, events);
     addDockWidget(Qt::BottomDockWidgetArea, devices);
     addDockWidget(Qt::BottomDockWidgetArea, metrics);
@@ -363,9 +374,16 @@ void MainWindow::connectEngine()
         m_poseInput->setOperator(m_engine.manualOperator());
         m_poseInput->setWorld(m_engine.world());
         m_devicesPanel->refresh();
+        syncRouterEditor();
         syncPickers();
         updateTitle();
         updateStatus();
+    });
+    connect(&m_engine, &SimEngine::routerChanged, this, [this] {
+        m_devicesPanel->refresh();
+        syncRouterEditor();
+        syncPickers();
+        updateTitle();
     });
     connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
         m_runAction->setChecked(running);
@@ -443,6 +461,14 @@ void MainWindow::syncPickers()
             speed = i;
     }
     m_speedPicker->setCurrentIndex(speed);
+}
+
+void MainWindow::syncRouterEditor()
+{
+    // After Apply the editor holds the running graph already, with its undo history.
+    const RouterGraph &running = m_engine.routerGraph();
+    if (running.toJson() != m_routerEditor->graph().toJson())
+        m_routerEditor->setGraph(running);
 }
 
 void MainWindow::updateTitle()

@@ -18,6 +18,7 @@ class KeyboardTeleop;
 class MetricsPanel;
 class PlotPanel;
 class PoseInput;
+class RouterEditor;
 class SimViewport;
 
 /**
@@ -40,6 +41,7 @@ public:
     EventLogPanel *eventLog() const { return m_eventLog; }
     DevicesPanel *devicesPanel() const { return m_devicesPanel; }
     MetricsPanel *metricsPanel() const { return m_metricsPanel; }
+    RouterEditor *routerEditor() const { return m_routerEditor; }
     QComboBox *scenePicker() const { return m_scenePicker; }
     QComboBox *routerPicker() const { return m_routerPicker; }
     QComboBox *speedPicker() const { return m_speedPicker; }
@@ -67,6 +69,8 @@ private:
     void updateStatus();
     void updateTitle();
     void syncPickers();
+    /** Shows the running router in the editor unless the editor already holds it. */
+    void syncRouterEditor();
     void showError(const QString &what, const QString &error);
     void pickScene(int index);
     void pickRouter(int index);
@@ -83,6 +87,7 @@ private:
     EventLogPanel *m_eventLog = nullptr;
     DevicesPanel *m_devicesPanel = nullptr;
     MetricsPanel *m_metricsPanel = nullptr;
+    RouterEditor *m_routerEditor = nullptr;
     QComboBox *m_scenePicker = nullptr;
     QComboBox *m_routerPicker = nullptr;
     QComboBox *m_speedPicker = nullptr;

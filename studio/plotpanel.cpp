@@ -226,6 +226,11 @@ PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
         rebuild();
         goLive();
     });
+    // A router swapped into the running session: other devices and thresholds, same time.
+    connect(&m_history, &LiveHistory::routerChanged, this, [this] {
+        rebuild();
+        onUpdated();
+    });
     connect(&m_history, &LiveHistory::updated, this, &PlotPanel::onUpdated);
     m_replotTimer.setSingleShot(true);
     connect(&m_replotTimer, &QTimer::timeout, this, &PlotPanel::requestReplot);

@@ -109,6 +109,14 @@ SimEngine::~SimEngine()
 
 bool SimEngine::load(const RunOptions &options, QString *error)
 {
+    if (!start(options, error))
+        return false;
+    emit loaded();
+    return true;
+}
+
+bool SimEngine::start(const RunOptions &options, QString *error)
+{
     std::unique_ptr<SimRun> run = SimRun::create(options, error);
     if (!run)
         return false;
@@ -122,20 +130,9 @@ bool SimEngine::load(const RunOptions &options, QString *error)
     m_options = options;
     ++m_generation;
 
-    // The router's devices keep a band the user bound to them when the model still fits;
-    // the others play on virtual devices, which show in the studio like real ones.
+    m_appliedGraph.reset();
     const Player &player = m_run->pipeline().router().player();
-    for (int d = 0; d < player.deviceCount(); ++d) {
-        const QString &name = player.deviceName(d);
-        const DeviceModel &model = player.deviceModel(d);
-        const auto bound = m_devices->status();
-        const bool keep = std::any_of(bound.begin(), bound.end(), [&](const BoundDevice &b) {
-            return b.name == name && b.model == model.name();
-        });
-        if (!keep)
-            m_devices->bind(name, QStringLiteral("virtual:") + name,
-                            std::make_shared<const DeviceModel>(model), error);
-    }
+    bindRouterDevices(player, error);
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
     m_manualOperator = std::make_unique<ManualOperator>();
     if (m_manual.exchange(false))
@@ -147,25 +144,103 @@ bool SimEngine::load(const RunOptions &options, QString *error)
     m_pendingSteps = 0;
 
     drain(); // whatever the old run left in the feed goes before the new history starts
+    m_history.start(devicesOf(player, m_run->world()), shownThresholds(),
+                    m_run->pipeline().router().nodeIds());
+    m_history.setMetrics(m_run->metrics());
+    startThread();
+    return true;
+}
+
+void SimEngine::bindRouterDevices(const Player &player, QString *error)
+{
+    // The router's devices keep a band the user bound to them when the model still fits;
+    // the others play on virtual devices, which show in the studio like real ones.
+    for (int d = 0; d < player.deviceCount(); ++d) {
+        const QString &name = player.deviceName(d);
+        const DeviceModel &model = player.deviceModel(d);
+        const auto bound = m_devices->status();
+        const bool keep = std::any_of(bound.begin(), bound.end(), [&](const BoundDevice &b) {
+            return b.name == name && b.model == model.name();
+        });
+        if (!keep)
+            m_devices->bind(name, QStringLiteral("virtual:") + name,
+                            std::make_shared<const DeviceModel>(model), error);
+    }
+}
+
+bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
+{
+    if (!m_run) {
+        *error = tr("nothing is loaded");
+        return false;
+    }
+    LoadError loadError;
+    std::unique_ptr<Router> router = Router::compile(graph, &loadError);
+    if (!router) {
+        *error = loadError.toString();
+        return false;
+    }
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        // The old router's devices fall silent now; a device the new router keeps goes on
+        // with the new router's frames from the next tick.
+        const Player &old = m_run->pipeline().router().player();
+        for (int d = 0; d < old.deviceCount(); ++d) {
+            DeviceFrame silence;
+            silence.t = m_run->pipeline().now();
+            silence.device = d;
+            silence.channelCount = old.deviceModel(d).channelCount();
+            for (int c = 0; c < silence.channelCount; ++c)
+                silence.values[size_t(c)] = old.deviceModel(d).channels()[size_t(c)].min;
+            m_output->onDeviceFrame(silence);
+        }
+        m_run->setRouter(std::move(router), m_sink);
+        const Player &player = m_run->pipeline().router().player();
+        QString bindError;
+        bindRouterDevices(player, &bindError);
+        m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+        // What the old router sent is read with its numbering, before the history switches;
+        // the feed is drained on this thread only, so nothing newer slips in before that.
+        m_feed.drainInto(m_history);
+    }
+    m_history.commit();
+    const Player &player = m_run->pipeline().router().player();
+    m_history.setRouter(devicesOf(player, m_run->world()), shownThresholds(),
+                        m_run->pipeline().router().nodeIds());
+    m_appliedGraph = std::make_unique<RouterGraph>(graph);
+    // A graph from a file or preset is named by it; an untitled one runs over the last.
+    if (!graph.file.isEmpty())
+        m_options.router = graph.file;
+    m_options.overrides.clear();
+    emit routerChanged();
+    return true;
+}
+
+const RouterGraph &SimEngine::routerGraph() const
+{
+    return m_run->pipeline().router().graph();
+}
+
+std::array<GripperThresholds, 2> SimEngine::shownThresholds()
+{
     // Detectors of a hand the scene does not have never fire: their plots would stay empty.
     std::array<GripperThresholds, 2> thresholds = thresholdsOf(m_run->pipeline().router().graph());
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         if (!m_run->world().hasGripper(g))
             thresholds[size_t(g)] = GripperThresholds();
     }
-    m_history.start(devicesOf(player, m_run->world()), thresholds,
-                    m_run->pipeline().router().nodeIds());
-    m_history.setMetrics(m_run->metrics());
-    startThread();
-    emit loaded();
-    return true;
+    return thresholds;
 }
 
 bool SimEngine::reset(QString *error)
 {
     const bool wasRunning = isRunning();
-    if (!load(m_options, error))
+    std::unique_ptr<RouterGraph> applied = std::move(m_appliedGraph);
+    if (!start(m_options, error))
         return false;
+    if (applied && !setRouter(*applied, error))
+        return false;
+    emit loaded();
     if (wasRunning)
         run();
     return true;

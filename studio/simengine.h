@@ -42,7 +42,18 @@ public:
      * with a one-line `error`, keeping the previous run.
      */
     bool load(const RunOptions &options, QString *error);
-    /** Loads the current options again from the start. */
+    /**
+     * Swaps `graph` in as the running router (the router editor's Apply) without stopping
+     * the run: compiled here on the caller's thread, swapped in at a tick boundary. The old
+     * router's messages end, its devices are sent to zero; the new router's devices keep
+     * matching bindings (else `virtual:NAME`); the history keeps what it has seen. False
+     * with the compiler's `error`, keeping the router that runs.
+     */
+    bool setRouter(const RouterGraph &graph, QString *error);
+    /** The graph of the router that runs (valid while loaded). */
+    const RouterGraph &routerGraph() const;
+
+    /** Loads the current options again from the start, with the router last applied. */
     bool reset(QString *error);
     const RunOptions &options() const { return m_options; }
     bool isLoaded() const { return m_run != nullptr; }
@@ -90,6 +101,8 @@ signals:
     /** The run reached its duration. */
     void finished();
     void speedChanged(double speed);
+    /** setRouter() swapped the router (options().router names it). */
+    void routerChanged();
 
 private:
     /** Routes one step's streams: contact frames to the feed, the rest to the devices. */
@@ -105,6 +118,10 @@ private:
         SimEngine &m_engine;
     };
 
+    void bindRouterDevices(const Player &player, QString *error);
+    std::array<GripperThresholds, 2> shownThresholds();
+    /** load() without the signal. */
+    bool start(const RunOptions &options, QString *error);
     void stopThread();
     void startThread();
     void loop();
@@ -112,6 +129,8 @@ private:
     void drain();
 
     RunOptions m_options;
+    /** The graph setRouter() applied since the last load: what reset() runs again. */
+    std::unique_ptr<RouterGraph> m_appliedGraph;
     std::unique_ptr<DeviceManager> m_devices;
     std::unique_ptr<SimRun> m_run;
     std::unique_ptr<ManualOperator> m_manualOperator;

@@ -1,0 +1,939 @@
+// SPDX-License-Identifier: MIT
+#include "routereditor.h"
+
+#include "livehistory.h"
+#include "patternlibrary.h"
+#include "router.h"
+#include "routercommands.h"
+#include "routernodes.h"
+#include "routerscene.h"
+#include "routerwireitem.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGraphicsView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
+#include <QToolTip>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace semhap {
+
+namespace {
+
+constexpr char RouterMime[] = "application/x-semhap-router";
+
+/** The palette: node types that drag onto the canvas as their type name. */
+class NodePalette : public QListWidget
+{
+public:
+    explicit NodePalette(QWidget *parent) : QListWidget(parent)
+    {
+        setDragEnabled(true);
+        setDragDropMode(DragOnly);
+        setSelectionMode(SingleSelection);
+        // Columns of entries: the ten types fit in a short strip beside the inspector.
+        setFlow(TopToBottom);
+        setWrapping(true);
+        setResizeMode(Adjust);
+        setSpacing(1);
+    }
+
+protected:
+    QStringList mimeTypes() const override { return {QLatin1String(RouterScene::NodeTypeMime)}; }
+    QMimeData *mimeData(const QList<QListWidgetItem *> &items) const override
+    {
+        if (items.isEmpty())
+            return nullptr;
+        auto *mime = new QMimeData;
+        mime->setData(QLatin1String(RouterScene::NodeTypeMime),
+                      items.front()->data(Qt::UserRole).toString().toUtf8());
+        return mime;
+    }
+};
+
+/** Numbers in the user's locale, without group separators that would read as decimals. */
+QLocale numberLocale()
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
+    return locale;
+}
+
+/** A parameter's value as the inspector shows it. */
+QString valueText(const QJsonValue &value)
+{
+    if (value.isUndefined() || value.isNull())
+        return QString();
+    if (value.isString())
+        return value.toString();
+    if (value.isDouble())
+        return numberLocale().toString(value.toDouble(), 'g', 12);
+    const QJsonDocument doc =
+        value.isArray() ? QJsonDocument(value.toArray()) : QJsonDocument(value.toObject());
+    return QString::fromUtf8(doc.toJson(QJsonDocument::Compact));
+}
+
+/** What the user typed as a parameter: a number, JSON, or a plain string; empty: unset. */
+QJsonValue parseValue(const QString &text)
+{
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty())
+        return QJsonValue(QJsonValue::Undefined);
+    bool ok = false;
+    const double number = numberLocale().toDouble(trimmed, &ok);
+    if (ok)
+        return number;
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArrayLiteral("[") + trimmed.toUtf8() +
+                                                      QByteArrayLiteral("]"));
+    if (doc.isArray() && doc.array().size() == 1)
+        return doc.array().at(0);
+    return trimmed;
+}
+
+bool isPath(const QString &name)
+{
+    return name.contains(QLatin1Char('/')) || name.endsWith(QLatin1String(".json"));
+}
+
+} // namespace
+
+RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("routerEditor"));
+    m_scene = new RouterScene(this);
+    m_view = new QGraphicsView(m_scene, this);
+    m_view->setObjectName(QStringLiteral("routerView"));
+    m_view->setRenderHint(QPainter::Antialiasing);
+    m_view->setDragMode(QGraphicsView::RubberBandDrag);
+    m_view->setAcceptDrops(true);
+    m_view->setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    m_undo = new QUndoStack(this);
+
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("routerStatus"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_errorList = new QListWidget(this);
+    m_errorList->setObjectName(QStringLiteral("routerErrors"));
+    m_errorList->setWordWrap(true);
+    m_inspector = new QWidget(this);
+    m_inspector->setObjectName(QStringLiteral("routerInspector"));
+    auto *inspectorLayout = new QVBoxLayout(m_inspector);
+    inspectorLayout->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea(m_inspector);
+    scroll->setObjectName(QStringLiteral("inspectorScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    inspectorLayout->addWidget(scroll);
+    m_palette = new NodePalette(this);
+    m_palette->setObjectName(QStringLiteral("routerPalette"));
+    createPalette();
+    m_autoApply = new QCheckBox(tr("Auto-apply"), this);
+    m_autoApply->setObjectName(QStringLiteral("autoApply"));
+    m_autoApply->setToolTip(tr("Send every edit that compiles to the running session"));
+
+    auto *toolbar = new QToolBar(this);
+    toolbar->setObjectName(QStringLiteral("routerToolBar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto *bottom = new QSplitter(Qt::Horizontal, this);
+    bottom->addWidget(m_palette);
+    bottom->addWidget(m_inspector);
+    bottom->setStretchFactor(0, 2);
+    bottom->setStretchFactor(1, 3);
+    auto *canvas = new QWidget(this);
+    auto *canvasLayout = new QVBoxLayout(canvas);
+    canvasLayout->setContentsMargins(0, 0, 0, 0);
+    canvasLayout->setSpacing(2);
+    canvasLayout->addWidget(m_view, 1);
+    canvasLayout->addWidget(m_status);
+    auto *split = new QSplitter(Qt::Vertical, this);
+    split->setObjectName(QStringLiteral("routerSplit"));
+    split->addWidget(canvas);
+    split->addWidget(m_errorList);
+    split->addWidget(bottom);
+    split->setStretchFactor(0, 6);
+    split->setStretchFactor(1, 1);
+    split->setStretchFactor(2, 3);
+    split->setSizes({500, 60, 170});
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(toolbar);
+    layout->addWidget(split, 1);
+
+    m_validateTimer = new QTimer(this);
+    m_validateTimer->setSingleShot(true);
+    m_validateTimer->setInterval(150);
+    connect(m_validateTimer, &QTimer::timeout, this, [this] {
+        validate();
+        if (m_autoApply->isChecked() && m_errors.isEmpty() && m_apply)
+            apply();
+    });
+
+    const QList<QAction *> tools = createActions();
+    toolbar->addAction(tools.front());
+    if (auto *button = qobject_cast<QToolButton *>(toolbar->widgetForAction(tools.front())))
+        button->setPopupMode(QToolButton::InstantPopup);
+    toolbar->addSeparator();
+    for (QAction *action : tools.mid(1))
+        toolbar->addAction(action);
+    auto *spacer = new QWidget(toolbar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    toolbar->addWidget(spacer);
+    toolbar->addWidget(m_autoApply);
+    toolbar->addAction(m_applyAction);
+    if (QWidget *button = toolbar->widgetForAction(m_applyAction))
+        button->setObjectName(QStringLiteral("applyButton"));
+
+    connect(m_scene, &RouterScene::graphChanged, this, &RouterEditor::onGraphChanged);
+    connect(m_scene, &QGraphicsScene::selectionChanged, this, &RouterEditor::scheduleInspector);
+    connect(m_scene, &RouterScene::connectRequested, this, [this](const RouterLink &link) {
+        QString reason;
+        connectPorts(link, &reason);
+    });
+    connect(m_scene, &RouterScene::connectRefused, this,
+            [this](const QString &reason, const QPointF &scenePos) {
+                showStatus(tr("Not connected: %1").arg(reason), true);
+                const QPoint at = m_view->viewport()->mapToGlobal(m_view->mapFromScene(scenePos));
+                QToolTip::showText(at, reason, m_view);
+            });
+    connect(m_scene, &RouterScene::nodesMoved, this,
+            [this](const QStringList &ids, const QList<QPointF> &from, const QList<QPointF> &to) {
+                m_undo->push(new MoveNodesCommand(m_scene, ids, from, to));
+            });
+    connect(m_scene, &RouterScene::nodeDropped, this,
+            [this](const QString &type, const QPointF &pos) { addNode(type, pos); });
+    connect(m_palette, &QListWidget::itemDoubleClicked, this, [this](QListWidgetItem *item) {
+        // Beside the view's centre, stepping aside from nodes already there.
+        QPointF pos = m_view->mapToScene(m_view->viewport()->rect().center()) -
+                      QPointF(RouterNodeItem::Width / 2, 40);
+        const auto occupied = [this](const QPointF &p) {
+            for (const RouterNode &node : m_scene->graph().nodes) {
+                if ((RouterScene::nodePos(node) - p).manhattanLength() < 8)
+                    return true;
+            }
+            return false;
+        };
+        while (occupied(pos))
+            pos += QPointF(28, 28);
+        addNode(item->data(Qt::UserRole).toString(), pos);
+    });
+    connect(m_errorList, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
+        const QString id = item->data(Qt::UserRole).toString();
+        if (RouterNodeItem *node = m_scene->nodeItem(id)) {
+            m_scene->clearSelection();
+            node->setSelected(true);
+            m_view->centerOn(node);
+        }
+    });
+    connect(m_errorList, &QListWidget::itemClicked, m_errorList, &QListWidget::itemActivated);
+
+    setGraph(RouterGraph());
+}
+
+RouterEditor::~RouterEditor() = default;
+
+void RouterEditor::createPalette()
+{
+    for (const RouterNodeType &type : routerNodeTypes()) {
+        auto *item = new QListWidgetItem(type.type, m_palette);
+        item->setData(Qt::UserRole, type.type);
+        item->setToolTip(type.description);
+        QPixmap swatch(12, 12);
+        swatch.fill(RouterNodeItem::kindColor(type.type));
+        item->setIcon(QIcon(swatch));
+    }
+    m_palette->setToolTip(tr("Drag a node type onto the canvas, or double-click it"));
+}
+
+QList<QAction *> RouterEditor::createActions()
+{
+    // The document menu: new, templates, open, save.
+    auto *fileAction = new QAction(tr("Router"), this);
+    fileAction->setObjectName(QStringLiteral("routerMenuAction"));
+    auto *menu = new QMenu(this);
+    menu->setObjectName(QStringLiteral("routerMenu"));
+    fileAction->setMenu(menu);
+    const auto item = [this](QMenu *into, const QString &text, std::function<void()> slot) {
+        QAction *action = into->addAction(text);
+        connect(action, &QAction::triggered, this, std::move(slot));
+        return action;
+    };
+    item(menu, tr("New (empty)"), [this] {
+        QString error;
+        newFromPreset(QString(), &error);
+    });
+    QMenu *presets = menu->addMenu(tr("New from preset"));
+    presets->setObjectName(QStringLiteral("presetMenu"));
+    for (const QString &name : RouterPresets::names()) {
+        item(presets, name, [this, name] {
+            QString error;
+            if (!newFromPreset(name, &error))
+                showStatus(error, true);
+        });
+    }
+    menu->addSeparator();
+    item(menu, tr("Open…"), [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open router"), m_path,
+                                                          tr("semhap routers (*.json)"));
+        QString error;
+        if (!path.isEmpty() && !openFile(path, &error))
+            showStatus(error, true);
+    });
+    QAction *save = item(menu, tr("Save…"), [this] { exportDialog(false); });
+    save->setShortcut(QKeySequence::Save);
+    save->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(save);
+    item(menu, tr("Save self-contained…"), [this] { exportDialog(true); });
+    addAction(fileAction);
+
+    QAction *undo = m_undo->createUndoAction(this, tr("Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(undo);
+    QAction *redo = m_undo->createRedoAction(this, tr("Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(redo);
+    auto *arrangeAction = new QAction(tr("Arrange"), this);
+    arrangeAction->setToolTip(tr("Lay the nodes out in columns: detectors, logic, patterns, "
+                                 "devices"));
+    connect(arrangeAction, &QAction::triggered, this, &RouterEditor::arrange);
+    addAction(arrangeAction);
+    auto *fit = new QAction(tr("Fit"), this);
+    fit->setToolTip(tr("Show the whole graph"));
+    connect(fit, &QAction::triggered, this, &RouterEditor::fitView);
+    addAction(fit);
+
+    // Canvas keys: only while the canvas has the focus, so text fields keep theirs.
+    const auto canvasAction = [this](const QString &text, const QKeySequence &key,
+                                     void (RouterEditor::*slot)()) {
+        auto *action = new QAction(text, m_view);
+        action->setShortcut(key);
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        connect(action, &QAction::triggered, this, slot);
+        m_view->addAction(action);
+    };
+    canvasAction(tr("Delete"), QKeySequence::Delete, &RouterEditor::deleteSelection);
+    canvasAction(tr("Delete"), QKeySequence(Qt::Key_Backspace), &RouterEditor::deleteSelection);
+    canvasAction(tr("Copy"), QKeySequence::Copy, &RouterEditor::copySelection);
+    canvasAction(tr("Paste"), QKeySequence::Paste, &RouterEditor::paste);
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    m_applyAction = new QAction(tr("Apply"), this);
+    m_applyAction->setObjectName(QStringLiteral("applyAction"));
+    m_applyAction->setToolTip(tr("Make this graph the running router"));
+    m_applyAction->setEnabled(false);
+    connect(m_applyAction, &QAction::triggered, this, &RouterEditor::apply);
+    return {fileAction, undo, redo, arrangeAction, fit};
+}
+
+void RouterEditor::setGraph(const RouterGraph &graph)
+{
+    m_scene->setGraph(graph);
+    m_undo->clear();
+    m_inspected.clear();
+    scheduleInspector();
+    fitView();
+    validate();
+}
+
+const RouterGraph &RouterEditor::graph() const
+{
+    return m_scene->graph();
+}
+
+QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
+{
+    if (!routerNodeType(type))
+        return QString();
+    RouterNode node;
+    node.id = m_scene->uniqueId(type);
+    node.type = type;
+    node.ui = {{QStringLiteral("x"), scenePos.x()}, {QStringLiteral("y"), scenePos.y()}};
+    m_undo->push(new AddNodeCommand(m_scene, node));
+    m_scene->clearSelection();
+    m_scene->nodeItem(node.id)->setSelected(true);
+    return node.id;
+}
+
+bool RouterEditor::connectPorts(const RouterLink &link, QString *reason)
+{
+    *reason = m_scene->checkLink(link);
+    if (!reason->isEmpty()) {
+        showStatus(tr("Not connected: %1").arg(*reason), true);
+        return false;
+    }
+    m_undo->push(new ConnectCommand(m_scene, link));
+    showStatus(tr("Connected %1 to %2").arg(link.from, link.to), false);
+    return true;
+}
+
+void RouterEditor::setParam(const QString &id, const QString &key, const QJsonValue &value)
+{
+    const int index = graph().nodeIndex(id);
+    if (index < 0)
+        return;
+    const QJsonObject &params = graph().nodes[size_t(index)].params;
+    if (params.value(key) == value)
+        return;
+    m_undo->push(new SetParamCommand(m_scene, id, key, value));
+}
+
+bool RouterEditor::renameNode(const QString &id, const QString &newId, QString *reason)
+{
+    if (newId == id)
+        return true;
+    if (newId.isEmpty() || newId.contains(QLatin1Char(':')) ||
+        std::any_of(newId.begin(), newId.end(), [](QChar c) { return c.isSpace(); })) {
+        *reason = tr("'%1' is not a valid id (non-empty, no ':' or spaces)").arg(newId);
+        return false;
+    }
+    if (graph().nodeIndex(newId) >= 0) {
+        *reason = tr("there is already a node '%1'").arg(newId);
+        return false;
+    }
+    m_undo->push(new RenameNodeCommand(m_scene, id, newId));
+    return true;
+}
+
+void RouterEditor::deleteSelection()
+{
+    const QStringList ids = m_scene->selectedNodeIds();
+    const std::vector<int> links = m_scene->selectedLinks();
+    if (ids.isEmpty() && links.empty())
+        return;
+    m_undo->push(new RemoveCommand(m_scene, ids, links));
+}
+
+void RouterEditor::copySelection()
+{
+    const QStringList ids = m_scene->selectedNodeIds();
+    if (ids.isEmpty())
+        return;
+    RouterGraph copy;
+    for (const RouterNode &node : graph().nodes) {
+        if (ids.contains(node.id))
+            copy.nodes.push_back(node);
+    }
+    for (const RouterLink &link : graph().links) {
+        if (ids.contains(link.from) && ids.contains(link.to))
+            copy.links.push_back(link);
+    }
+    const QByteArray json = QJsonDocument(copy.toJson()).toJson(QJsonDocument::Indented);
+    auto *mime = new QMimeData;
+    mime->setData(QLatin1String(RouterMime), json);
+    mime->setText(QString::fromUtf8(json));
+    QApplication::clipboard()->setMimeData(mime);
+    showStatus(tr("Copied %n node(s)", nullptr, int(ids.size())), false);
+}
+
+void RouterEditor::paste()
+{
+    const QMimeData *mime = QApplication::clipboard()->mimeData();
+    if (!mime)
+        return;
+    const QByteArray json = mime->hasFormat(QLatin1String(RouterMime))
+                                ? mime->data(QLatin1String(RouterMime))
+                                : mime->text().toUtf8();
+    RouterGraph pasted;
+    LoadError error;
+    if (!RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), tr("clipboard"), &pasted,
+                               &error)) {
+        showStatus(tr("Nothing to paste: %1").arg(error.toString()), true);
+        return;
+    }
+    QHash<QString, QString> ids;
+    m_undo->beginMacro(tr("Paste"));
+    for (RouterNode node : pasted.nodes) {
+        const QString id = m_scene->uniqueId(node.id);
+        ids.insert(node.id, id);
+        node.id = id;
+        const QPointF pos = RouterScene::nodePos(node) + QPointF(40, 40);
+        node.ui.insert(QStringLiteral("x"), pos.x());
+        node.ui.insert(QStringLiteral("y"), pos.y());
+        m_undo->push(new AddNodeCommand(m_scene, node));
+    }
+    for (RouterLink link : pasted.links) {
+        link.from = ids.value(link.from, link.from);
+        link.to = ids.value(link.to, link.to);
+        m_undo->push(new ConnectCommand(m_scene, link));
+    }
+    m_undo->endMacro();
+    m_scene->clearSelection();
+    for (const QString &id : ids) {
+        if (RouterNodeItem *item = m_scene->nodeItem(id))
+            item->setSelected(true);
+    }
+}
+
+void RouterEditor::arrange()
+{
+    QStringList ids;
+    QList<QPointF> from;
+    QList<QPointF> to;
+    for (const auto &[id, pos] : m_scene->arrangedPositions()) {
+        const QPointF now = RouterScene::nodePos(graph().nodes[size_t(graph().nodeIndex(id))]);
+        if (now != pos) {
+            ids.append(id);
+            from.append(now);
+            to.append(pos);
+        }
+    }
+    if (ids.isEmpty())
+        return;
+    auto *command = new MoveNodesCommand(m_scene, ids, from, to);
+    command->setText(tr("Arrange"));
+    m_undo->push(command);
+    fitView();
+}
+
+void RouterEditor::fitView()
+{
+    const QRectF bounds = m_scene->itemsBoundingRect().adjusted(-16, -16, 16, 16);
+    if (bounds.isEmpty()) {
+        m_view->resetTransform();
+        return;
+    }
+    m_view->setSceneRect(bounds.united(m_view->sceneRect()));
+    m_view->fitInView(bounds, Qt::KeepAspectRatio);
+    // Small graphs stay at their natural size rather than blown up.
+    if (m_view->transform().m11() > 1.0) {
+        m_view->resetTransform();
+        m_view->centerOn(bounds.center());
+    }
+}
+
+bool RouterEditor::openFile(const QString &path, QString *error)
+{
+    RouterGraph graph;
+    LoadError loadError;
+    if (!RouterGraph::fromFile(path, &graph, &loadError)) {
+        *error = loadError.toString();
+        return false;
+    }
+    m_path = path;
+    setGraph(graph);
+    showStatus(tr("Opened %1").arg(QDir::toNativeSeparators(path)), false);
+    return true;
+}
+
+bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *error)
+{
+    RouterGraph graph = this->graph();
+    if (selfContained) {
+        // The user's own patterns and models go into the file; built-ins are everywhere.
+        for (RouterNode &node : graph.nodes) {
+            const bool pattern = node.type == QLatin1String("pattern");
+            if (!pattern && node.type != QLatin1String("device"))
+                continue;
+            const QString key = pattern ? QStringLiteral("pattern") : QStringLiteral("model");
+            const QString name = node.params.value(key).toString();
+            if (name.isEmpty() || !isPath(name))
+                continue;
+            const QString file = QDir(graph.baseDir).filePath(name);
+            LoadError loadError;
+            QString embeddedName;
+            if (pattern) {
+                PatternPtr p = Pattern::fromFile(file, &loadError);
+                if (p) {
+                    embeddedName = p->name();
+                    if (std::none_of(graph.patterns.begin(), graph.patterns.end(),
+                                     [&](const PatternPtr &e) { return e->name() == p->name(); }))
+                        graph.patterns.push_back(p);
+                }
+            } else {
+                DeviceModelPtr m = DeviceModel::fromFile(file, &loadError);
+                if (m) {
+                    embeddedName = m->name();
+                    if (std::none_of(
+                            graph.models.begin(), graph.models.end(),
+                            [&](const DeviceModelPtr &e) { return e->name() == m->name(); }))
+                        graph.models.push_back(m);
+                }
+            }
+            if (embeddedName.isEmpty()) {
+                *error = tr("cannot embed %1: %2").arg(name, loadError.toString());
+                return false;
+            }
+            node.params.insert(key, embeddedName);
+        }
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        *error = tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+        return false;
+    }
+    file.write(QJsonDocument(graph.toJson()).toJson(QJsonDocument::Indented));
+    if (!file.flush()) {
+        *error = tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+        return false;
+    }
+    m_path = path;
+    m_undo->setClean();
+    showStatus(tr("Saved %1").arg(QDir::toNativeSeparators(path)), false);
+    return true;
+}
+
+void RouterEditor::exportDialog(bool selfContained)
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, selfContained ? tr("Save self-contained router") : tr("Save router"), m_path,
+        tr("semhap routers (*.json)"));
+    QString error;
+    if (!path.isEmpty() && !saveFile(path, selfContained, &error))
+        showStatus(error, true);
+}
+
+bool RouterEditor::newFromPreset(const QString &name, QString *error)
+{
+    RouterGraph graph;
+    if (!name.isEmpty()) {
+        LoadError loadError;
+        if (!RouterPresets::preset(name, &graph, &loadError)) {
+            *error = loadError.toString();
+            return false;
+        }
+    } else {
+        graph.name = tr("untitled");
+    }
+    m_path.clear();
+    setGraph(graph);
+    return true;
+}
+
+QStringList RouterEditor::validate()
+{
+    // The compiler stops at the first problem; taking the culprit out and compiling again
+    // finds the next, so every broken node is marked at once.
+    RouterGraph graph = this->graph();
+    std::vector<int> linkIndex(graph.links.size());
+    for (size_t j = 0; j < linkIndex.size(); ++j)
+        linkIndex[j] = int(j);
+    QHash<QString, QString> nodeErrors;
+    QHash<int, QString> linkErrors;
+    m_errors.clear();
+    m_errorList->clear();
+    for (int round = 0; round < 32; ++round) {
+        LoadError error;
+        if (Router::compile(graph, &error))
+            break;
+        const QStringList tokens = error.pointer.split(QLatin1Char('/'));
+        const int index = tokens.size() > 2 ? tokens[2].toInt() : -1;
+        auto *item = new QListWidgetItem(error.reason, m_errorList);
+        item->setForeground(QColor(0xD5, 0x5E, 0x00).darker(130));
+        m_errors.append(error.reason);
+        if (tokens.value(1) == QLatin1String("nodes") && index >= 0 &&
+            size_t(index) < graph.nodes.size()) {
+            const QString id = graph.nodes[size_t(index)].id;
+            nodeErrors.insert(id, error.reason);
+            item->setData(Qt::UserRole, id);
+            graph.nodes.erase(graph.nodes.begin() + index);
+            for (size_t j = graph.links.size(); j-- > 0;) {
+                if (graph.links[j].from == id || graph.links[j].to == id) {
+                    graph.links.erase(graph.links.begin() + long(j));
+                    linkIndex.erase(linkIndex.begin() + long(j));
+                }
+            }
+        } else if (tokens.value(1) == QLatin1String("links") && index >= 0 &&
+                   size_t(index) < graph.links.size()) {
+            linkErrors.insert(linkIndex[size_t(index)], error.reason);
+            item->setData(Qt::UserRole, graph.links[size_t(index)].to);
+            graph.links.erase(graph.links.begin() + index);
+            linkIndex.erase(linkIndex.begin() + index);
+        } else {
+            break;
+        }
+    }
+    m_scene->setErrors(nodeErrors, linkErrors);
+    m_errorList->setVisible(!m_errors.isEmpty());
+    m_applyAction->setEnabled(m_apply && m_errors.isEmpty());
+    return m_errors;
+}
+
+void RouterEditor::setApplyFunction(ApplyFunction apply)
+{
+    m_apply = std::move(apply);
+    m_applyAction->setEnabled(m_apply && m_errors.isEmpty());
+}
+
+bool RouterEditor::apply()
+{
+    if (!m_apply)
+        return false;
+    m_validateTimer->stop();
+    if (!validate().isEmpty()) {
+        showStatus(tr("Not applied: %1").arg(m_errors.front()), true);
+        return false;
+    }
+    QString error;
+    if (!m_apply(graph(), &error)) {
+        showStatus(tr("Not applied: %1").arg(error), true);
+        return false;
+    }
+    showStatus(tr("Applied: the running session uses this router now."), false);
+    emit applied();
+    return true;
+}
+
+void RouterEditor::setAutoApply(bool on)
+{
+    m_autoApply->setChecked(on);
+}
+
+void RouterEditor::setHistory(LiveHistory *history)
+{
+    if (m_history)
+        disconnect(m_history, nullptr, this, nullptr);
+    m_history = history;
+    m_scene->clearActivity();
+    if (!history)
+        return;
+    m_nextEvent = history->events().end();
+    connect(history, &LiveHistory::updated, this, &RouterEditor::onHistoryUpdated);
+    connect(history, &LiveHistory::reset, this, [this] {
+        m_nextEvent = m_history->events().begin();
+        m_scene->clearActivity();
+    });
+}
+
+void RouterEditor::onHistoryUpdated()
+{
+    const LiveSeries<SemanticEvent> &events = m_history->events();
+    // Hidden: nothing to draw, and what passed meanwhile is not worth replaying.
+    if (!isVisible()) {
+        m_nextEvent = events.end();
+        return;
+    }
+    for (qint64 i = std::max(m_nextEvent, events.begin()); i < events.end(); ++i) {
+        const SemanticEvent &event = events.at(i);
+        m_scene->showEvent(m_history->nodeName(event.node), event);
+    }
+    m_nextEvent = events.end();
+    const std::vector<LiveDevice> &devices = m_history->devices();
+    for (size_t d = 0; d < devices.size(); ++d) {
+        const LiveSeries<DeviceFrame> &frames = m_history->deviceFrames(int(d));
+        double level = 0.0;
+        if (!frames.isEmpty()) {
+            const DeviceFrame &frame = frames.last();
+            for (int c = 0; c < frame.channelCount; ++c)
+                level = std::max(level, frame.values[size_t(c)]);
+        }
+        m_scene->setDeviceLevel(devices[d].name, std::clamp(level, 0.0, 1.0));
+    }
+}
+
+void RouterEditor::showStatus(const QString &text, bool warning)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(warning ? QStringLiteral("QLabel { color: #A04600; }") : QString());
+}
+
+void RouterEditor::onGraphChanged()
+{
+    m_validateTimer->start();
+    scheduleInspector();
+}
+
+void RouterEditor::scheduleInspector()
+{
+    if (m_inspectorPending)
+        return;
+    m_inspectorPending = true;
+    // Later: the field that made the edit may still be inside its signal.
+    QTimer::singleShot(0, this, [this] {
+        m_inspectorPending = false;
+        rebuildInspector();
+    });
+}
+
+void RouterEditor::rebuildInspector()
+{
+    const QStringList ids = m_scene->selectedNodeIds();
+    const int index = ids.size() == 1 ? graph().nodeIndex(ids.front()) : -1;
+    auto *scroll = m_inspector->findChild<QScrollArea *>(QStringLiteral("inspectorScroll"));
+    if (index >= 0) {
+        const RouterNode &node = graph().nodes[size_t(index)];
+        // Unchanged: keep the fields, and the focus the user is typing in.
+        if (scroll->widget() && m_inspected == node.id && m_inspectedNode.type == node.type &&
+            m_inspectedNode.params == node.params)
+            return;
+        m_inspected = node.id;
+        m_inspectedNode = node;
+    } else {
+        m_inspected.clear();
+    }
+
+    auto *page = new QWidget;
+    auto *form = new QFormLayout(page);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    if (index < 0) {
+        auto *hint = new QLabel(ids.isEmpty() ? tr("Select a node to edit its parameters.")
+                                              : tr("%n nodes selected.", nullptr, int(ids.size())),
+                                page);
+        hint->setWordWrap(true);
+        form->addRow(hint);
+        scroll->setWidget(page);
+        return;
+    }
+    const RouterNode &node = graph().nodes[size_t(index)];
+    const RouterNodeType *type = routerNodeType(node.type);
+    auto *title = new QLabel(
+        type ? QStringLiteral("<b>%1</b> — %2").arg(node.type, type->description) : node.type,
+        page);
+    title->setWordWrap(true);
+    form->addRow(title);
+    auto *idEdit = new QLineEdit(node.id, page);
+    idEdit->setObjectName(QStringLiteral("nodeId"));
+    idEdit->setToolTip(tr("The name events and devices carry"));
+    const QString id = node.id;
+    connect(idEdit, &QLineEdit::editingFinished, this, [this, idEdit, id] {
+        QString reason;
+        if (!renameNode(id, idEdit->text().trimmed(), &reason)) {
+            showStatus(reason, true);
+            idEdit->setText(id);
+        }
+    });
+    form->addRow(tr("id"), idEdit);
+
+    QStringList keys = type ? type->params : QStringList();
+    if (node.type == QLatin1String("pattern")) {
+        // A pattern's own parameters may be set on the node: their defaults for this voice.
+        const QString name = node.params.value(QLatin1String("pattern")).toString();
+        PatternPtr pattern;
+        for (const PatternPtr &embedded : graph().patterns) {
+            if (embedded->name() == name)
+                pattern = embedded;
+        }
+        if (!pattern && !name.isEmpty() && !isPath(name))
+            pattern = PatternLibrary::builtin(name);
+        for (int p = 0; pattern && p < pattern->params().size(); ++p)
+            keys.append(pattern->params().name(p));
+    }
+    for (auto it = node.params.begin(); it != node.params.end(); ++it) {
+        if (!keys.contains(it.key()))
+            keys.append(it.key()); // unknown: shown so it can be cleared
+    }
+    for (const QString &key : keys)
+        addField(form, node, key);
+    scroll->setWidget(page);
+}
+
+void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key)
+{
+    const QJsonValue value = node.params.value(key);
+    const bool detector = node.type == QLatin1String("force") ||
+                          node.type == QLatin1String("slip") ||
+                          node.type == QLatin1String("signal");
+    const QString any = tr("(any)");
+    const QString none = tr("(none)");
+    const QString standard = tr("(default)");
+    QString unset;
+    QStringList choices;
+    bool editable = false;
+    if (key == QLatin1String("gripper")) {
+        unset = detector ? none : any;
+        choices = {gripperName(Gripper::Left), gripperName(Gripper::Right)};
+    } else if (key == QLatin1String("message") && node.type == QLatin1String("filter")) {
+        unset = any;
+        choices = {messageName(Message::Grasp), messageName(Message::Break),
+                   messageName(Message::Slip)};
+    } else if (key == QLatin1String("category")) {
+        unset = any;
+        choices = {categoryName(Category::Confirmation), categoryName(Category::Exception)};
+    } else if (key == QLatin1String("mode")) {
+        unset = standard;
+        choices = {QStringLiteral("block"), QStringLiteral("open")};
+    } else if (key == QLatin1String("quantity")) {
+        unset = none;
+        choices = SignalNode::quantityNames();
+    } else if (key == QLatin1String("policy")) {
+        unset = standard;
+        choices = {QStringLiteral("priority"), QStringLiteral("max"), QStringLiteral("sum")};
+    } else if (key == QLatin1String("pattern") && node.type == QLatin1String("pattern")) {
+        editable = true;
+        for (const PatternPtr &pattern : graph().patterns)
+            choices.append(pattern->name());
+        choices.append(PatternLibrary::builtinNames());
+    } else if (key == QLatin1String("model") && node.type == QLatin1String("device")) {
+        editable = true;
+        for (const DeviceModelPtr &model : graph().models)
+            choices.append(model->name());
+        choices.append(DeviceModelLibrary::builtinNames());
+    }
+    const QString id = node.id;
+    const QString objectName = QStringLiteral("param:") + key;
+    if (!unset.isEmpty() || editable) {
+        auto *combo = new QComboBox(form->parentWidget());
+        combo->setObjectName(objectName);
+        combo->setEditable(editable);
+        combo->setInsertPolicy(QComboBox::NoInsert);
+        if (!editable)
+            combo->addItem(unset, QString());
+        for (const QString &choice : choices)
+            combo->addItem(choice, choice);
+        const QString current = valueText(value);
+        int at = combo->findData(current);
+        if (at < 0 && !current.isEmpty()) {
+            combo->addItem(current, current); // a list, a path: shown as it is
+            at = combo->count() - 1;
+        }
+        if (editable)
+            combo->setEditText(current);
+        else
+            combo->setCurrentIndex(std::max(at, 0));
+        if (editable) {
+            connect(combo, &QComboBox::textActivated, this,
+                    [this, id, key](const QString &text) { commitText(id, key, text); });
+            connect(combo->lineEdit(), &QLineEdit::editingFinished, this,
+                    [this, id, key, combo] { commitText(id, key, combo->currentText()); });
+        } else {
+            connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {
+                commitText(id, key, combo->itemData(i).toString());
+            });
+        }
+        form->addRow(key, combo);
+        return;
+    }
+    auto *edit = new QLineEdit(valueText(value), form->parentWidget());
+    edit->setObjectName(objectName);
+    edit->setPlaceholderText(standard);
+    edit->setToolTip(tr("A number, a name or JSON (lists, curves); empty: the default"));
+    connect(edit, &QLineEdit::editingFinished, this,
+            [this, id, key, edit] { commitText(id, key, edit->text()); });
+    form->addRow(key, edit);
+}
+
+void RouterEditor::commitText(const QString &id, const QString &key, const QString &text)
+{
+    const int index = graph().nodeIndex(id);
+    if (index < 0)
+        return;
+    const QJsonValue value = parseValue(text);
+    // A numeric-looking pattern or model name is still a name.
+    const bool name = key == QLatin1String("pattern") || key == QLatin1String("model");
+    setParam(id, key, name && !value.isUndefined() ? QJsonValue(text.trimmed()) : value);
+}
+
+} // namespace semhap

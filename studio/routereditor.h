@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "routergraph.h"
+
+#include <QHash>
+#include <QWidget>
+
+#include <functional>
+
+class QAction;
+class QCheckBox;
+class QFormLayout;
+class QGraphicsView;
+class QLabel;
+class QListWidget;
+class QListWidgetItem;
+class QTimer;
+class QUndoStack;
+class QWidget;
+
+namespace semhap {
+
+class LiveHistory;
+class RouterScene;
+
+/**
+ * The router node editor: a palette of node types, the graph on a canvas (drag from a port
+ * to a port to link, with the reason shown when a link is refused), an inspector for the
+ * selected node's parameters, the compiler's errors marked on the nodes and listed, undo and
+ * redo of every edit, copy and paste, open and save (optionally self-contained), the presets
+ * as templates, and Apply to the running session with its live activity shown on the wires.
+ */
+class RouterEditor : public QWidget
+{
+    Q_OBJECT
+
+public:
+    /** Sends a graph to the running session; false with a one-line error. */
+    using ApplyFunction = std::function<bool(const RouterGraph &graph, QString *error)>;
+
+    explicit RouterEditor(QWidget *parent = nullptr);
+    ~RouterEditor() override;
+
+    /** Shows `graph` as a fresh document (the undo history starts again). */
+    void setGraph(const RouterGraph &graph);
+    /** The document being edited. */
+    const RouterGraph &graph() const;
+
+    /** Adds a node of `type` at `scenePos` (the palette's drop, double-click); its id. */
+    QString addNode(const QString &type, const QPointF &scenePos);
+    /** Links two ports if the compiler's rules allow it, else false with the reason. */
+    bool connectPorts(const RouterLink &link, QString *reason);
+    /** Sets a node parameter (undefined: back to the default), as the inspector does. */
+    void setParam(const QString &id, const QString &key, const QJsonValue &value);
+    /** Renames a node, keeping its links; false with the reason when the id is not free. */
+    bool renameNode(const QString &id, const QString &newId, QString *reason);
+    /** Deletes the selected nodes (with their links) and wires. */
+    void deleteSelection();
+    /** Copies the selected nodes and the links among them to the clipboard as JSON. */
+    void copySelection();
+    /** Pastes nodes copied from a router (ids made unique, shifted so they show). */
+    void paste();
+    /** Lays the nodes out in columns by kind, as one undoable move. */
+    void arrange();
+    /** Zooms the view to show the whole graph. */
+    void fitView();
+
+    /** Opens a `semhap.router/1` file as a fresh document. */
+    bool openFile(const QString &path, QString *error);
+    /**
+     * Saves the document with node positions; self-contained embeds the user patterns and
+     * device models it uses (not the built-ins), so it runs the same elsewhere.
+     */
+    bool saveFile(const QString &path, bool selfContained, QString *error);
+    /** Starts a fresh document from a preset (`C3`), or an empty one for an empty name. */
+    bool newFromPreset(const QString &name, QString *error);
+
+    /** Compiles the graph now and marks what is wrong; the list of problems, first first. */
+    QStringList validate();
+    QStringList errors() const { return m_errors; }
+
+    /** Where Apply sends the graph; without one Apply is disabled. */
+    void setApplyFunction(ApplyFunction apply);
+    /** Sends the graph to the session; false (with the reason shown) when it cannot. */
+    bool apply();
+    /** Applies every edit that compiles, shortly after it is made. */
+    void setAutoApply(bool on);
+    /** Shows the live activity of the session in `history` (null: none). */
+    void setHistory(LiveHistory *history);
+
+    RouterScene *scene() const { return m_scene; }
+    QGraphicsView *view() const { return m_view; }
+    QListWidget *palette() const { return m_palette; }
+    QUndoStack *undoStack() const { return m_undo; }
+    /** The form of the selected node's parameters. */
+    QWidget *inspector() const { return m_inspector; }
+    /** The line that says why a link was refused, or what Apply did. */
+    QLabel *statusLabel() const { return m_status; }
+
+signals:
+    /** The graph was applied to the session. */
+    void applied();
+
+private:
+    /** Makes the editor's actions; returns the toolbar's, in order. */
+    QList<QAction *> createActions();
+    void createPalette();
+    void rebuildInspector();
+    void scheduleInspector();
+    void addField(QFormLayout *form, const RouterNode &node, const QString &key);
+    void commitText(const QString &id, const QString &key, const QString &text);
+    void showStatus(const QString &text, bool warning);
+    void onGraphChanged();
+    void onHistoryUpdated();
+    void exportDialog(bool selfContained);
+
+    RouterScene *m_scene = nullptr;
+    QGraphicsView *m_view = nullptr;
+    QListWidget *m_palette = nullptr;
+    QWidget *m_inspector = nullptr;
+    QListWidget *m_errorList = nullptr;
+    QLabel *m_status = nullptr;
+    QCheckBox *m_autoApply = nullptr;
+    QUndoStack *m_undo = nullptr;
+    QAction *m_applyAction = nullptr;
+    QTimer *m_validateTimer = nullptr;
+
+    ApplyFunction m_apply;
+    LiveHistory *m_history = nullptr;
+    qint64 m_nextEvent = 0;
+    QStringList m_errors;
+    QString m_inspected; ///< id of the node the inspector shows
+    RouterNode m_inspectedNode;
+    bool m_inspectorPending = false;
+    QString m_path; ///< the file last opened or saved
+};
+
+} // namespace semhap

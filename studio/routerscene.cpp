@@ -1,0 +1,677 @@
+// SPDX-License-Identifier: MIT
+#include "routerscene.h"
+
+#include "patternlibrary.h"
+#include "routerwireitem.h"
+
+#include <QDir>
+#include <QGraphicsPathItem>
+#include <QGraphicsSceneDragDropEvent>
+#include <QGraphicsSceneMouseEvent>
+#include <QJsonArray>
+#include <QLocale>
+#include <QMimeData>
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+namespace semhap {
+
+namespace {
+
+constexpr double ColumnSpacing = 230.0;
+constexpr double RowGap = 18.0;
+
+/** The layout column of a node type: where events come from, logic, sources, devices. */
+int columnOf(const QString &type)
+{
+    if (type == QLatin1String("force") || type == QLatin1String("slip") ||
+        type == QLatin1String("signal"))
+        return 0;
+    if (type == QLatin1String("pattern") || type == QLatin1String("proportional"))
+        return 2;
+    if (type == QLatin1String("device"))
+        return 3;
+    return 1;
+}
+
+/** The node's parameters worth reading on the canvas. */
+QString summaryOf(const RouterNode &node)
+{
+    QStringList parts;
+    for (const char *key :
+         {"pattern", "model", "gripper", "message", "category", "mode", "quantity"}) {
+        const QJsonValue v = node.params.value(QLatin1String(key));
+        if (v.isString())
+            parts.append(v.toString());
+        else if (v.isArray()) {
+            QStringList names;
+            for (const QJsonValue &item : v.toArray())
+                names.append(item.toString());
+            parts.append(names.join(QLatin1Char('|')));
+        }
+    }
+    return parts.join(QStringLiteral(" · "));
+}
+
+/** Whether a filter node's params let the event's message through. */
+bool filterPasses(const QJsonObject &params, const SemanticEvent &event)
+{
+    const auto matches = [&params](const char *key, const QString &name) {
+        const QJsonValue v = params.value(QLatin1String(key));
+        if (v.isUndefined())
+            return true;
+        const QJsonArray list = v.isArray() ? v.toArray() : QJsonArray{v};
+        return list.contains(QJsonValue(name));
+    };
+    return matches("message", messageName(event.message)) &&
+           matches("category", categoryName(event.category)) &&
+           matches("gripper", gripperName(event.gripper));
+}
+
+QColor categoryColor(Category category)
+{
+    return category == Category::Confirmation ? QColor(0x00, 0x72, 0xB2)
+                                              : QColor(0xE6, 0x9F, 0x00);
+}
+
+} // namespace
+
+RouterScene::RouterScene(QObject *parent) : QGraphicsScene(parent)
+{
+    setBackgroundBrush(QColor(0xF2, 0xF2, 0xF2));
+    m_fadeTimer.setInterval(33);
+    connect(&m_fadeTimer, &QTimer::timeout, this, &RouterScene::fade);
+}
+
+QPointF RouterScene::nodePos(const RouterNode &node)
+{
+    return {node.ui.value(QLatin1String("x")).toDouble(),
+            node.ui.value(QLatin1String("y")).toDouble()};
+}
+
+void RouterScene::setGraph(const RouterGraph &graph)
+{
+    clearSelection();
+    for (RouterWireItem *wire : m_wires)
+        delete wire;
+    m_wires.clear();
+    for (RouterNodeItem *item : m_items)
+        delete item;
+    m_items.clear();
+    m_nodeErrors.clear();
+    m_linkErrors.clear();
+    m_active.clear();
+    m_graph = graph;
+    bool missing = false;
+    for (const RouterNode &node : m_graph.nodes) {
+        missing = missing || !node.ui.contains(QLatin1String("x")) ||
+                  !node.ui.contains(QLatin1String("y"));
+    }
+    // A graph without positions (the presets) is laid out; one with some keeps them.
+    if (missing) {
+        const std::map<QString, QPointF> positions = arrangedPositions();
+        for (RouterNode &node : m_graph.nodes) {
+            if (node.ui.contains(QLatin1String("x")) && node.ui.contains(QLatin1String("y")))
+                continue;
+            const QPointF p = positions.at(node.id);
+            node.ui.insert(QStringLiteral("x"), p.x());
+            node.ui.insert(QStringLiteral("y"), p.y());
+        }
+    }
+    for (const RouterNode &node : m_graph.nodes)
+        m_items.push_back(makeItem(node));
+    rebuildWires();
+    emit graphChanged();
+}
+
+RouterNodeItem *RouterScene::makeItem(const RouterNode &node)
+{
+    auto *item = new RouterNodeItem(node.id, node.type);
+    addItem(item);
+    refreshNode(item, node);
+    item->setPos(nodePos(node));
+    connect(item, &RouterNodeItem::moved, this, [this, item] { updateWires(item); });
+    return item;
+}
+
+void RouterScene::refreshNode(RouterNodeItem *item, const RouterNode &node)
+{
+    item->setId(node.id);
+    item->setSummary(summaryOf(node));
+    item->setPorts(inputsOf(node), outputsOf(node));
+    item->setError(m_nodeErrors.value(node.id));
+}
+
+void RouterScene::insertNode(int index, const RouterNode &node)
+{
+    m_graph.nodes.insert(m_graph.nodes.begin() + index, node);
+    m_items.insert(m_items.begin() + index, makeItem(node));
+    rebuildWires();
+    emit graphChanged();
+}
+
+void RouterScene::removeNode(int index)
+{
+    delete m_items[size_t(index)];
+    m_items.erase(m_items.begin() + index);
+    m_graph.nodes.erase(m_graph.nodes.begin() + index);
+    rebuildWires();
+    emit graphChanged();
+}
+
+void RouterScene::insertLink(int index, const RouterLink &link)
+{
+    m_graph.links.insert(m_graph.links.begin() + index, link);
+    rebuildWires();
+    emit graphChanged();
+}
+
+void RouterScene::removeLink(int index)
+{
+    m_graph.links.erase(m_graph.links.begin() + index);
+    rebuildWires();
+    emit graphChanged();
+}
+
+void RouterScene::setNodeParams(const QString &id, const QJsonObject &params)
+{
+    const int index = m_graph.nodeIndex(id);
+    m_graph.nodes[size_t(index)].params = params;
+    refreshNode(m_items[size_t(index)], m_graph.nodes[size_t(index)]);
+    // A pattern node's ports follow its pattern's parameters.
+    rebuildWires();
+    emit graphChanged();
+}
+
+void RouterScene::setNodePos(const QString &id, const QPointF &pos)
+{
+    const int index = m_graph.nodeIndex(id);
+    RouterNode &node = m_graph.nodes[size_t(index)];
+    node.ui.insert(QStringLiteral("x"), pos.x());
+    node.ui.insert(QStringLiteral("y"), pos.y());
+    m_items[size_t(index)]->setPos(pos);
+    emit graphChanged();
+}
+
+void RouterScene::renameNode(const QString &from, const QString &to)
+{
+    const int index = m_graph.nodeIndex(from);
+    m_graph.nodes[size_t(index)].id = to;
+    for (RouterLink &link : m_graph.links) {
+        if (link.from == from)
+            link.from = to;
+        if (link.to == from)
+            link.to = to;
+    }
+    if (m_active.contains(from))
+        m_active.insert(to, m_active.take(from));
+    refreshNode(m_items[size_t(index)], m_graph.nodes[size_t(index)]);
+    rebuildWires();
+    emit graphChanged();
+}
+
+RouterNodeItem *RouterScene::nodeItem(const QString &id) const
+{
+    const int index = m_graph.nodeIndex(id);
+    return index < 0 ? nullptr : m_items[size_t(index)];
+}
+
+RouterWireItem *RouterScene::wireItem(int index) const
+{
+    return index >= 0 && size_t(index) < m_wires.size() ? m_wires[size_t(index)] : nullptr;
+}
+
+QStringList RouterScene::selectedNodeIds() const
+{
+    QStringList ids;
+    for (const RouterNodeItem *item : m_items) {
+        if (item->isSelected())
+            ids.append(item->id());
+    }
+    return ids;
+}
+
+std::vector<int> RouterScene::selectedLinks() const
+{
+    std::vector<int> links;
+    for (size_t j = 0; j < m_wires.size(); ++j) {
+        if (m_wires[j] && m_wires[j]->isSelected())
+            links.push_back(int(j));
+    }
+    return links;
+}
+
+std::vector<PortSpec> RouterScene::inputsOf(const RouterNode &node) const
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    if (!type)
+        return {};
+    std::vector<PortSpec> inputs = type->inputs;
+    if (node.type != QLatin1String("pattern"))
+        return inputs;
+    // As the compiler resolves it: embedded by name, then built-in, then a file.
+    const QString name = node.params.value(QLatin1String("pattern")).toString();
+    PatternPtr pattern;
+    for (const PatternPtr &embedded : m_graph.patterns) {
+        if (embedded->name() == name)
+            pattern = embedded;
+    }
+    if (!pattern && !name.isEmpty()) {
+        LoadError error;
+        const bool path = name.contains(QLatin1Char('/')) || name.endsWith(QLatin1String(".json"));
+        pattern = PatternLibrary::load(path ? QDir(m_graph.baseDir).filePath(name) : name, &error);
+    }
+    if (pattern) {
+        for (int p = 0; p < pattern->params().size(); ++p) {
+            if (p != ParamTable::Intensity)
+                inputs.push_back({pattern->params().name(p), PortType::Signal, false});
+        }
+    }
+    return inputs;
+}
+
+std::vector<PortSpec> RouterScene::outputsOf(const RouterNode &node) const
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    return type ? type->outputs : std::vector<PortSpec>();
+}
+
+QString RouterScene::portName(const QString &node, const QString &port, bool output) const
+{
+    if (!port.isEmpty())
+        return port;
+    const int index = m_graph.nodeIndex(node);
+    if (index < 0)
+        return QString();
+    const std::vector<PortSpec> ports =
+        output ? outputsOf(m_graph.nodes[size_t(index)]) : inputsOf(m_graph.nodes[size_t(index)]);
+    return ports.empty() ? QString() : ports.front().name;
+}
+
+bool RouterScene::reaches(const QString &from, const QString &to) const
+{
+    std::vector<QString> stack{from};
+    std::set<QString> seen;
+    while (!stack.empty()) {
+        const QString node = stack.back();
+        stack.pop_back();
+        if (node == to)
+            return true;
+        if (!seen.insert(node).second)
+            continue;
+        for (const RouterLink &link : m_graph.links) {
+            if (link.from == node)
+                stack.push_back(link.to);
+        }
+    }
+    return false;
+}
+
+QString RouterScene::checkLink(const RouterLink &link) const
+{
+    const int fromIndex = m_graph.nodeIndex(link.from);
+    const int toIndex = m_graph.nodeIndex(link.to);
+    if (fromIndex < 0 || toIndex < 0)
+        return tr("there is no node '%1'").arg(fromIndex < 0 ? link.from : link.to);
+    const RouterNode &from = m_graph.nodes[size_t(fromIndex)];
+    const RouterNode &to = m_graph.nodes[size_t(toIndex)];
+    const QString fromPort = portName(link.from, link.fromPort, true);
+    const QString toPort = portName(link.to, link.toPort, false);
+    const std::vector<PortSpec> outputs = outputsOf(from);
+    const std::vector<PortSpec> inputs = inputsOf(to);
+    const auto out = std::find_if(outputs.begin(), outputs.end(),
+                                  [&](const PortSpec &p) { return p.name == fromPort; });
+    const auto in = std::find_if(inputs.begin(), inputs.end(),
+                                 [&](const PortSpec &p) { return p.name == toPort; });
+    if (out == outputs.end())
+        return tr("node '%1' (%2) has no output '%3'").arg(from.id, from.type, fromPort);
+    if (in == inputs.end())
+        return tr("node '%1' (%2) has no input '%3'").arg(to.id, to.type, toPort);
+    if (from.id == to.id)
+        return tr("a node cannot feed itself");
+    if (out->type != in->type) {
+        const auto article = [](PortType type) {
+            switch (type) {
+            case PortType::Event:
+                return tr("an event");
+            case PortType::Signal:
+                return tr("a signal");
+            case PortType::Voice:
+                return tr("a voice");
+            }
+            return QString();
+        };
+        return tr("%1 output cannot feed %2 input: '%3' (%4) sends %5, '%6' (%7) takes %8")
+            .arg(article(out->type), article(in->type), from.id, from.type,
+                 portTypeName(out->type), to.id, to.type, portTypeName(in->type));
+    }
+    for (const RouterLink &other : m_graph.links) {
+        if (other.to != to.id || portName(other.to, other.toPort, false) != toPort)
+            continue;
+        if (other.from == from.id && portName(other.from, other.fromPort, true) == fromPort)
+            return tr("'%1' already feeds '%2:%3'").arg(from.id, to.id, toPort);
+        if (!in->multiple)
+            return tr("'%1:%2' takes a single link and already has one").arg(to.id, toPort);
+    }
+    if (reaches(to.id, from.id))
+        return tr("this link would make a cycle: '%1' already feeds '%2'").arg(to.id, from.id);
+    return QString();
+}
+
+QString RouterScene::uniqueId(const QString &base) const
+{
+    if (m_graph.nodeIndex(base) < 0)
+        return base;
+    for (int n = 2;; ++n) {
+        const QString id = base + QString::number(n);
+        if (m_graph.nodeIndex(id) < 0)
+            return id;
+    }
+}
+
+std::map<QString, QPointF> RouterScene::arrangedPositions() const
+{
+    // Each column in graph order for the first, then by the mean row of what feeds each
+    // node, so wires run mostly straight; nodes nothing feeds go last.
+    std::array<std::vector<int>, 4> columns;
+    for (size_t i = 0; i < m_graph.nodes.size(); ++i)
+        columns[size_t(columnOf(m_graph.nodes[i].type))].push_back(int(i));
+    std::map<QString, double> rowOf;
+    std::map<QString, QPointF> positions;
+    double tallest = 0.0;
+    std::array<double, 4> heights{};
+    const auto nodeHeight = [this](int i) {
+        const RouterNode &node = m_graph.nodes[size_t(i)];
+        const size_t rows =
+            std::max<size_t>({inputsOf(node).size(), outputsOf(node).size(), size_t(1)});
+        return 36.0 + double(rows) * 18.0 + 18.0;
+    };
+    for (size_t c = 0; c < columns.size(); ++c) {
+        std::vector<std::pair<double, int>> order;
+        for (size_t k = 0; k < columns[c].size(); ++k) {
+            const int i = columns[c][k];
+            double sum = 0.0;
+            int count = 0;
+            for (const RouterLink &link : m_graph.links) {
+                if (link.to == m_graph.nodes[size_t(i)].id && rowOf.count(link.from)) {
+                    sum += rowOf[link.from];
+                    ++count;
+                }
+            }
+            order.emplace_back(count ? sum / count : 1e6 + double(k), i);
+        }
+        std::stable_sort(order.begin(), order.end(),
+                         [](const auto &a, const auto &b) { return a.first < b.first; });
+        double y = 0.0;
+        for (size_t r = 0; r < order.size(); ++r) {
+            const int i = order[r].second;
+            rowOf[m_graph.nodes[size_t(i)].id] = double(r);
+            positions[m_graph.nodes[size_t(i)].id] = QPointF(double(c) * ColumnSpacing, y);
+            y += nodeHeight(i) + RowGap;
+        }
+        heights[c] = y;
+        tallest = std::max(tallest, y);
+    }
+    // Columns centred on the tallest one.
+    for (auto &[id, p] : positions) {
+        const int c = int(p.x() / ColumnSpacing + 0.5);
+        p.setY(p.y() + (tallest - heights[size_t(c)]) / 2);
+    }
+    return positions;
+}
+
+void RouterScene::rebuildWires()
+{
+    for (RouterWireItem *wire : m_wires)
+        delete wire;
+    m_wires.clear();
+    for (size_t j = 0; j < m_graph.links.size(); ++j) {
+        const RouterLink &link = m_graph.links[j];
+        RouterNodeItem *from = nodeItem(link.from);
+        RouterNodeItem *to = nodeItem(link.to);
+        const QString fromPort = portName(link.from, link.fromPort, true);
+        const QString toPort = portName(link.to, link.toPort, false);
+        RouterWireItem *wire = nullptr;
+        if (from && to) {
+            const auto out = std::find_if(from->outputs().begin(), from->outputs().end(),
+                                          [&](const PortSpec &p) { return p.name == fromPort; });
+            const bool hasIn = std::any_of(to->inputs().begin(), to->inputs().end(),
+                                           [&](const PortSpec &p) { return p.name == toPort; });
+            if (out != from->outputs().end() && hasIn) {
+                wire = new RouterWireItem(from, fromPort, to, toPort, out->type);
+                wire->setError(m_linkErrors.value(int(j)));
+                addItem(wire);
+            }
+        }
+        m_wires.push_back(wire);
+    }
+}
+
+void RouterScene::updateWires(RouterNodeItem *item)
+{
+    for (RouterWireItem *wire : m_wires) {
+        if (wire && (wire->fromNode() == item || wire->toNode() == item))
+            wire->updatePath();
+    }
+}
+
+void RouterScene::setErrors(const QHash<QString, QString> &nodeErrors,
+                            const QHash<int, QString> &linkErrors)
+{
+    m_nodeErrors = nodeErrors;
+    m_linkErrors = linkErrors;
+    for (RouterNodeItem *item : m_items)
+        item->setError(nodeErrors.value(item->id()));
+    for (size_t j = 0; j < m_wires.size(); ++j) {
+        if (m_wires[j])
+            m_wires[j]->setError(linkErrors.value(int(j)));
+    }
+}
+
+bool RouterScene::portUnder(const QPointF &scenePos, RouterPort *port) const
+{
+    for (QGraphicsItem *item : items(scenePos, Qt::IntersectsItemBoundingRect)) {
+        if (auto *node = dynamic_cast<RouterNodeItem *>(item)) {
+            if (node->portAt(scenePos, port))
+                return true;
+        }
+    }
+    return false;
+}
+
+void RouterScene::mousePressEvent(QGraphicsSceneMouseEvent *event)
+{
+    RouterPort port;
+    if (event->button() == Qt::LeftButton && portUnder(event->scenePos(), &port)) {
+        m_dragging = true;
+        m_dragFrom = port;
+        m_dragWire =
+            addPath(QPainterPath(), QPen(RouterNodeItem::portColor(port.type), 2.0, Qt::DashLine));
+        m_dragWire->setZValue(2.0);
+        event->accept();
+        return;
+    }
+    QGraphicsScene::mousePressEvent(event);
+    m_pressPositions.clear();
+    for (const RouterNodeItem *item : m_items)
+        m_pressPositions[item->id()] = item->pos();
+}
+
+void RouterScene::mouseMoveEvent(QGraphicsSceneMouseEvent *event)
+{
+    if (!m_dragging) {
+        QGraphicsScene::mouseMoveEvent(event);
+        return;
+    }
+    const RouterNodeItem *from = nodeItem(m_dragFrom.node);
+    const QPointF anchor = from->portScenePos(m_dragFrom.port, m_dragFrom.output);
+    m_dragWire->setPath(m_dragFrom.output ? RouterWireItem::curve(anchor, event->scenePos())
+                                          : RouterWireItem::curve(event->scenePos(), anchor));
+}
+
+void RouterScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
+{
+    if (!m_dragging) {
+        QGraphicsScene::mouseReleaseEvent(event);
+        QStringList ids;
+        QList<QPointF> from;
+        QList<QPointF> to;
+        for (const RouterNodeItem *item : m_items) {
+            const auto it = m_pressPositions.find(item->id());
+            if (it != m_pressPositions.end() && it->second != item->pos()) {
+                ids.append(item->id());
+                from.append(it->second);
+                to.append(item->pos());
+            }
+        }
+        m_pressPositions.clear();
+        if (!ids.isEmpty())
+            emit nodesMoved(ids, from, to);
+        return;
+    }
+    m_dragging = false;
+    delete m_dragWire;
+    m_dragWire = nullptr;
+    RouterPort target;
+    if (!portUnder(event->scenePos(), &target))
+        return; // dropped on nothing: no link asked for
+    if (target.output == m_dragFrom.output) {
+        emit connectRefused(m_dragFrom.output ? tr("an output connects to an input, not to "
+                                                   "another output")
+                                              : tr("an input connects to an output, not to "
+                                                   "another input"),
+                            event->scenePos());
+        return;
+    }
+    const RouterPort &out = m_dragFrom.output ? m_dragFrom : target;
+    const RouterPort &in = m_dragFrom.output ? target : m_dragFrom;
+    // Default ports stay implicit, as the presets write them.
+    const auto explicitName = [this](const RouterPort &port) {
+        return portName(port.node, QString(), port.output) == port.port ? QString() : port.port;
+    };
+    const RouterLink link{out.node, explicitName(out), in.node, explicitName(in)};
+    const QString reason = checkLink(link);
+    if (!reason.isEmpty())
+        emit connectRefused(reason, event->scenePos());
+    else
+        emit connectRequested(link);
+}
+
+void RouterScene::dragEnterEvent(QGraphicsSceneDragDropEvent *event)
+{
+    event->setAccepted(event->mimeData()->hasFormat(QLatin1String(NodeTypeMime)));
+}
+
+void RouterScene::dragMoveEvent(QGraphicsSceneDragDropEvent *event)
+{
+    event->setAccepted(event->mimeData()->hasFormat(QLatin1String(NodeTypeMime)));
+}
+
+void RouterScene::dropEvent(QGraphicsSceneDragDropEvent *event)
+{
+    const QByteArray type = event->mimeData()->data(QLatin1String(NodeTypeMime));
+    if (type.isEmpty())
+        return;
+    event->acceptProposedAction();
+    emit nodeDropped(QString::fromUtf8(type), event->scenePos());
+}
+
+void RouterScene::showEvent(const QString &detector, const SemanticEvent &event)
+{
+    const QString message = messageName(event.message);
+    const QString key = detector + QLatin1Char('/') + message;
+    const QColor color = categoryColor(event.category);
+    std::vector<QString> stack{detector};
+    std::set<QString> seen;
+    while (!stack.empty()) {
+        const QString node = stack.back();
+        stack.pop_back();
+        if (!seen.insert(node).second)
+            continue;
+        QMap<QString, double> &active = m_active[node];
+        if (event.phase == EventPhase::End)
+            active.remove(key);
+        else
+            active.insert(key, event.intensity);
+        refreshState(node);
+        for (size_t j = 0; j < m_graph.links.size(); ++j) {
+            const RouterLink &link = m_graph.links[j];
+            if (link.from != node)
+                continue;
+            const int to = m_graph.nodeIndex(link.to);
+            if (to < 0)
+                continue;
+            const RouterNode &target = m_graph.nodes[size_t(to)];
+            if (target.type == QLatin1String("filter") && !filterPasses(target.params, event))
+                continue;
+            if (m_wires[j])
+                m_wires[j]->flash(color);
+            stack.push_back(link.to);
+        }
+    }
+    if (!m_fadeTimer.isActive())
+        m_fadeTimer.start();
+}
+
+void RouterScene::refreshState(const QString &id)
+{
+    RouterNodeItem *item = nodeItem(id);
+    if (!item)
+        return;
+    if (item->nodeType() == QLatin1String("device")) {
+        const double level = m_deviceLevels.value(id, 0.0);
+        item->setState(level > 0.0 ? tr("output %1").arg(QLocale().toString(level, 'f', 2))
+                                   : QString(),
+                       level);
+        return;
+    }
+    const QMap<QString, double> active = m_active.value(id);
+    QStringList messages;
+    double level = 0.0;
+    for (auto it = active.begin(); it != active.end(); ++it) {
+        const QString message = it.key().section(QLatin1Char('/'), -1);
+        if (!messages.contains(message))
+            messages.append(message);
+        level = std::max(level, it.value());
+    }
+    item->setState(messages.isEmpty() ? QString()
+                                      : tr("%1 %2").arg(messages.join(QLatin1Char('+')),
+                                                        QLocale().toString(level, 'f', 2)),
+                   messages.isEmpty() ? -1.0 : level);
+}
+
+void RouterScene::setDeviceLevel(const QString &device, double level)
+{
+    m_deviceLevels.insert(device, level);
+    refreshState(device);
+}
+
+void RouterScene::clearActivity()
+{
+    m_active.clear();
+    m_deviceLevels.clear();
+    for (const RouterNodeItem *item : m_items)
+        refreshState(item->id());
+}
+
+void RouterScene::fade()
+{
+    bool lit = false;
+    for (RouterWireItem *wire : m_wires) {
+        if (wire && wire->glow() > 0.0) {
+            wire->update();
+            lit = true;
+        }
+    }
+    // One more repaint after the last glow ended clears it.
+    if (!lit)
+        m_fadeTimer.stop();
+    for (RouterWireItem *wire : m_wires) {
+        if (wire && !lit)
+            wire->update();
+    }
+}
+
+} // namespace semhap

@@ -1,0 +1,631 @@
+// SPDX-License-Identifier: MIT
+// The router node editor driven like a user: nodes from the palette, names and parameters
+// typed into the inspector, wires dragged between ports; the graph it makes must route the
+// bundled trace exactly like the C3 preset. Also: refused links say why, undo and redo
+// restore the exact graph, files round-trip, and the engine swaps routers while running.
+#include "contactframereader.h"
+#include "devicemanager.h"
+#include "livehistory.h"
+#include "mainwindow.h"
+#include "pipeline.h"
+#include "routereditor.h"
+#include "routernodeitem.h"
+#include "routerscene.h"
+#include "routerwireitem.h"
+#include "simengine.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QGraphicsView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+using namespace semhap;
+
+namespace {
+
+const QString Trace = QStringLiteral(SEMHAP_RESOURCES "/traces/demo.jsonl");
+
+RouterGraph preset(const QString &name)
+{
+    RouterGraph graph;
+    LoadError error;
+    if (!RouterPresets::preset(name, &graph, &error))
+        qFatal("%s", qPrintable(error.toString()));
+    return graph;
+}
+
+/** Nodes and links only, without editor positions: what decides how a graph routes. */
+QJsonObject routing(const RouterGraph &graph)
+{
+    QJsonObject json = graph.toJson();
+    QJsonArray nodes;
+    for (const QJsonValue &node : json.value("nodes").toArray()) {
+        QJsonObject o = node.toObject();
+        o.remove("ui");
+        nodes.append(o);
+    }
+    return {{"nodes", nodes}, {"links", json.value("links")}};
+}
+
+struct Routed
+{
+    std::vector<SemanticEvent> events;
+    std::vector<DeviceFrame> frames;
+    QStringList devices;
+};
+
+class Recorder : public PipelineSink
+{
+public:
+    explicit Recorder(Routed &r) : m_r(r) {}
+    void onEvent(const SemanticEvent &e) override { m_r.events.push_back(e); }
+    void onDeviceFrame(const DeviceFrame &f) override { m_r.frames.push_back(f); }
+
+private:
+    Routed &m_r;
+};
+
+/** Routes the demo trace through `graph`, as `semhap route` does. */
+Routed route(const RouterGraph &graph)
+{
+    LoadError error;
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    if (!router)
+        qFatal("%s", qPrintable(error.toString()));
+    Routed routed;
+    for (int d = 0; d < router->player().deviceCount(); ++d)
+        routed.devices.append(router->player().deviceName(d));
+    Pipeline pipeline(std::move(router));
+    QFile file(Trace);
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("cannot read the trace");
+    ContactFrameReader reader(&file, Trace);
+    Recorder sink(routed);
+    ContactFrame frame;
+    while (reader.next(&frame))
+        pipeline.process(frame, sink);
+    pipeline.flush(sink);
+    return routed;
+}
+
+/** The editor in a window of its own, laid out and shown. */
+struct Fixture
+{
+    Fixture()
+    {
+        editor.resize(1100, 900);
+        editor.show();
+        editor.activateWindow();
+        // Shortcuts (undo, delete, copy) need the active window.
+        if (!QTest::qWaitForWindowActive(&editor))
+            qFatal("the editor did not show");
+    }
+    QPoint at(const QPointF &scenePos) const { return editor.view()->mapFromScene(scenePos); }
+    QWidget *canvas() const { return editor.view()->viewport(); }
+
+    /** Double-clicks a node type in the palette; the new node's id. */
+    QString addFromPalette(const QString &type)
+    {
+        QListWidget *palette = editor.palette();
+        const QList<QListWidgetItem *> items = palette->findItems(type, Qt::MatchExactly);
+        if (items.size() != 1)
+            qFatal("no palette entry %s", qPrintable(type));
+        palette->scrollToItem(items.front());
+        const QPoint center = palette->visualItemRect(items.front()).center();
+        // A double-click is a click and a second press within the interval.
+        QTest::mouseClick(palette->viewport(), Qt::LeftButton, {}, center);
+        QTest::mouseDClick(palette->viewport(), Qt::LeftButton, {}, center);
+        settle();
+        const QStringList selected = editor.scene()->selectedNodeIds();
+        return selected.size() == 1 ? selected.front() : QString();
+    }
+
+    /** Clicks a node's title, which selects it and shows it in the inspector. */
+    void select(const QString &id)
+    {
+        RouterNodeItem *item = editor.scene()->nodeItem(id);
+        editor.view()->ensureVisible(item);
+        QTest::mouseClick(canvas(), Qt::LeftButton, {}, at(item->mapToScene(QPointF(60, 10))));
+        settle();
+    }
+
+    /** Types `text` into an inspector field and presses Return. */
+    void type(const QString &field, const QString &text)
+    {
+        QWidget *widget = editor.inspector()->findChild<QWidget *>(field);
+        if (!widget)
+            qFatal("no inspector field %s", qPrintable(field));
+        auto *combo = qobject_cast<QComboBox *>(widget);
+        QWidget *target = combo && combo->isEditable() ? combo->lineEdit() : widget;
+        target->setFocus();
+        if (!combo || combo->isEditable())
+            QTest::keyClick(target, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(target, text);
+        if (!combo || combo->isEditable())
+            QTest::keyClick(target, Qt::Key_Return);
+        settle();
+    }
+
+    /** Drags a wire from one port to another. */
+    void drag(const QPointF &from, const QPointF &to)
+    {
+        const QPoint a = at(from);
+        const QPoint b = at(to);
+        QTest::mousePress(canvas(), Qt::LeftButton, {}, a);
+        QTest::mouseMove(canvas(), (a + b) / 2);
+        QTest::mouseMove(canvas(), b);
+        QTest::mouseRelease(canvas(), Qt::LeftButton, {}, b);
+        settle();
+    }
+    void wire(const QString &from, const QString &fromPort, const QString &to,
+              const QString &toPort, bool toOutput = false)
+    {
+        RouterScene *scene = editor.scene();
+        drag(scene->nodeItem(from)->portScenePos(fromPort, true),
+             scene->nodeItem(to)->portScenePos(toPort, toOutput));
+    }
+
+    static void settle()
+    {
+        for (int i = 0; i < 3; ++i)
+            QCoreApplication::processEvents();
+    }
+
+    RouterEditor editor;
+};
+
+QString text(const QJsonValue &value)
+{
+    if (value.isString())
+        return value.toString();
+    if (value.isDouble())
+        return QLocale().toString(value.toDouble(), 'g', 12);
+    return QString::fromUtf8(QJsonDocument(value.toArray()).toJson(QJsonDocument::Compact));
+}
+
+} // namespace
+
+class TestRouterEditor : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void buildsC3ByMouse();
+    void refusedLinkSaysWhy_data();
+    void refusedLinkSaysWhy();
+    void undoRedoRestoresTheExactGraph();
+    void deleteCopyPaste();
+    void marksValidationErrors();
+    void presetsLaidOutInColumns();
+    void saveOpenRoundTrip();
+    void selfContainedEmbedsUserPatterns();
+    void engineSwapsWhileRunning();
+    void liveActivityLightsWires();
+    void screenshot();
+};
+
+void TestRouterEditor::initTestCase()
+{
+    QCoreApplication::setOrganizationName("semhap");
+    QCoreApplication::setApplicationName("semhap-routereditor-test");
+}
+
+void TestRouterEditor::buildsC3ByMouse()
+{
+    Fixture f;
+    const RouterGraph c3 = preset("C3");
+    // Every node from the palette, named and set up in the inspector with the keyboard.
+    for (const RouterNode &node : c3.nodes) {
+        const QString id = f.addFromPalette(node.type);
+        QVERIFY2(!id.isEmpty(), qPrintable(node.type));
+        QCOMPARE(f.editor.inspector()->findChild<QLineEdit *>("nodeId")->text(), id);
+        f.type("nodeId", node.id);
+        QVERIFY2(f.editor.graph().nodeIndex(node.id) >= 0, qPrintable(node.id));
+        for (auto it = node.params.begin(); it != node.params.end(); ++it)
+            f.type("param:" + it.key(), text(it.value()));
+    }
+    // Arranged with the toolbar button, then every wire dragged from port to port.
+    QToolButton *arrange = nullptr;
+    for (QToolButton *button : f.editor.findChildren<QToolButton *>()) {
+        if (button->text() == RouterEditor::tr("Arrange"))
+            arrange = button;
+    }
+    QVERIFY(arrange);
+    QTest::mouseClick(arrange, Qt::LeftButton);
+    Fixture::settle();
+    for (const RouterLink &link : c3.links) {
+        RouterScene *scene = f.editor.scene();
+        f.wire(link.from, scene->nodeItem(link.from)->outputs().front().name, link.to,
+               scene->nodeItem(link.to)->inputs().front().name);
+    }
+    // Wires between default ports keep them implicit, as the preset writes them.
+    QCOMPARE(f.editor.graph().links.size(), c3.links.size());
+
+    QCOMPARE(f.editor.validate(), QStringList());
+    QCOMPARE(QJsonDocument(routing(f.editor.graph())).toJson(),
+             QJsonDocument(routing(c3)).toJson());
+
+    const Routed built = route(f.editor.graph());
+    const Routed expected = route(c3);
+    QVERIFY(expected.events.size() > 10);
+    QCOMPARE(built.devices, expected.devices);
+    QCOMPARE(built.events.size(), expected.events.size());
+    for (size_t i = 0; i < built.events.size(); ++i) {
+        const SemanticEvent &a = built.events[i];
+        const SemanticEvent &e = expected.events[i];
+        QVERIFY(a.t == e.t && a.node == e.node && a.message == e.message && a.phase == e.phase &&
+                a.intensity == e.intensity && a.gripper == e.gripper);
+    }
+    QCOMPARE(built.frames.size(), expected.frames.size());
+    for (size_t i = 0; i < built.frames.size(); ++i) {
+        QCOMPARE(built.frames[i].t, expected.frames[i].t);
+        QCOMPARE(built.frames[i].device, expected.frames[i].device);
+        QVERIFY(built.frames[i].values == expected.frames[i].values);
+    }
+}
+
+void TestRouterEditor::refusedLinkSaysWhy_data()
+{
+    QTest::addColumn<QString>("from");
+    QTest::addColumn<QString>("fromPort");
+    QTest::addColumn<QString>("to");
+    QTest::addColumn<QString>("toPort");
+    QTest::addColumn<bool>("toOutput");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("event into a device") << "right.force"
+                                         << "events"
+                                         << "right.air"
+                                         << "in" << false
+                                         << "an event output cannot feed a voice input: "
+                                            "'right.force' (force) sends event, 'right.air' "
+                                            "(device) takes voice";
+    QTest::newRow("voice into a filter")
+        << "right.squeeze"
+        << "out"
+        << "left.warn"
+        << "in" << false << "a voice output cannot feed an event input";
+    QTest::newRow("output to output") << "right.force"
+                                      << "events"
+                                      << "right.confirm"
+                                      << "out" << true << "an output connects to an input";
+    QTest::newRow("itself") << "right.confirm"
+                            << "out"
+                            << "right.confirm"
+                            << "in" << false << "a node cannot feed itself";
+    QTest::newRow("twice") << "right.force"
+                           << "events"
+                           << "right.confirm"
+                           << "in" << false << "'right.force' already feeds 'right.confirm:in'";
+    QTest::newRow("cycle") << "right.warn"
+                           << "out"
+                           << "right.confirm"
+                           << "in" << false << "";
+}
+
+void TestRouterEditor::refusedLinkSaysWhy()
+{
+    QFETCH(QString, from);
+    QFETCH(QString, fromPort);
+    QFETCH(QString, to);
+    QFETCH(QString, toPort);
+    QFETCH(bool, toOutput);
+    QFETCH(QString, reason);
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    if (reason.isEmpty()) {
+        // right.confirm -> right.warn first; then right.warn -> right.confirm closes a loop.
+        f.wire("right.confirm", "out", "right.warn", "in");
+        reason = "this link would make a cycle: 'right.confirm' already feeds 'right.warn'";
+    }
+    const QJsonObject before = f.editor.graph().toJson();
+    f.wire(from, fromPort, to, toPort, toOutput);
+    QCOMPARE(f.editor.graph().toJson(), before);
+    const QString status = f.editor.statusLabel()->text();
+    QVERIFY2(status.contains(reason), qPrintable(status));
+}
+
+void TestRouterEditor::undoRedoRestoresTheExactGraph()
+{
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    std::vector<QJsonObject> states{f.editor.graph().toJson()};
+    const auto record = [&] {
+        QVERIFY(f.editor.graph().toJson() != states.back());
+        states.push_back(f.editor.graph().toJson());
+    };
+    const QString gate = f.addFromPalette("gate");
+    record();
+    f.type("param:mode", "open");
+    record();
+    f.type("nodeId", "right.gate");
+    record();
+    f.wire("right.force", "events", "right.gate", "in");
+    record();
+    f.select("right.squeeze");
+    f.type("param:pattern", "air.pulse5hz");
+    record();
+    // Moving a node by its title.
+    RouterNodeItem *item = f.editor.scene()->nodeItem("left.slip");
+    const QPoint grab = f.at(item->mapToScene(QPointF(80, 8)));
+    QTest::mousePress(f.canvas(), Qt::LeftButton, {}, grab);
+    QTest::mouseMove(f.canvas(), grab + QPoint(20, 20));
+    QTest::mouseMove(f.canvas(), grab + QPoint(60, 45));
+    QTest::mouseRelease(f.canvas(), Qt::LeftButton, {}, grab + QPoint(60, 45));
+    Fixture::settle();
+    record();
+    // Deleting a node with the Delete key takes its links along.
+    f.select("right.warn");
+    f.editor.view()->setFocus();
+    QTest::keyClick(f.editor.view(), Qt::Key_Delete);
+    Fixture::settle();
+    record();
+    QCOMPARE(f.editor.graph().nodeIndex("right.warn"), -1);
+
+    QUndoStack *undo = f.editor.undoStack();
+    QCOMPARE(undo->count(), int(states.size()) - 1);
+    for (size_t k = states.size() - 1; k > 0; --k) {
+        f.editor.setFocus();
+        QTest::keyClick(&f.editor, Qt::Key_Z, Qt::ControlModifier);
+        Fixture::settle();
+        QCOMPARE(f.editor.graph().toJson(), states[k - 1]);
+    }
+    for (size_t k = 1; k < states.size(); ++k) {
+        undo->redo();
+        QCOMPARE(f.editor.graph().toJson(), states[k]);
+    }
+}
+
+void TestRouterEditor::deleteCopyPaste()
+{
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    const size_t nodes = f.editor.graph().nodes.size();
+    const size_t links = f.editor.graph().links.size();
+    // Two linked nodes, selected with Ctrl+click, copied and pasted with the keyboard.
+    f.select("right.confirm");
+    RouterNodeItem *squeeze = f.editor.scene()->nodeItem("right.squeeze");
+    QTest::mouseClick(f.canvas(), Qt::LeftButton, Qt::ControlModifier,
+                      f.at(squeeze->mapToScene(QPointF(60, 10))));
+    QCOMPARE(f.editor.scene()->selectedNodeIds(), QStringList({"right.confirm", "right.squeeze"}));
+    f.editor.view()->setFocus();
+    QTest::keyClick(f.editor.view(), Qt::Key_C, Qt::ControlModifier);
+    QTest::keyClick(f.editor.view(), Qt::Key_V, Qt::ControlModifier);
+    Fixture::settle();
+    QCOMPARE(f.editor.graph().nodes.size(), nodes + 2);
+    QCOMPARE(f.editor.graph().links.size(), links + 1);
+    QCOMPARE(f.editor.scene()->selectedNodeIds(),
+             QStringList({"right.confirm2", "right.squeeze2"}));
+    const RouterLink &pasted = f.editor.graph().links.back();
+    QCOMPARE(pasted.from, "right.confirm2");
+    QCOMPARE(pasted.to, "right.squeeze2");
+    // One undo takes the whole paste back.
+    f.editor.undoStack()->undo();
+    QCOMPARE(f.editor.graph().nodes.size(), nodes);
+    QCOMPARE(f.editor.graph().links.size(), links);
+}
+
+void TestRouterEditor::marksValidationErrors()
+{
+    Fixture f;
+    RouterGraph graph = preset("C3");
+    graph.nodes[size_t(graph.nodeIndex("right.force"))].params.insert("grasp", 90);
+    graph.nodes[size_t(graph.nodeIndex("left.geiger"))].params.insert("pattern", "no.such");
+    f.editor.setGraph(graph);
+    const QStringList errors = f.editor.errors();
+    QCOMPARE(errors.size(), 2);
+    QVERIFY2(errors[0].contains("right.force"), qPrintable(errors[0]));
+    QVERIFY2(errors[1].contains("unknown pattern 'no.such'"), qPrintable(errors[1]));
+    RouterNodeItem *force = f.editor.scene()->nodeItem("right.force");
+    QCOMPARE(force->error(), errors[0]);
+    QCOMPARE(force->toolTip(), errors[0]);
+    QVERIFY(f.editor.scene()->nodeItem("left.slip")->error().isEmpty());
+    // Fixing it in the inspector clears the mark.
+    f.select("right.force");
+    f.type("param:grasp", "20");
+    QTRY_VERIFY(force->error().isEmpty());
+    QCOMPARE(f.editor.errors().size(), 1);
+}
+
+void TestRouterEditor::presetsLaidOutInColumns()
+{
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    const auto x = [&](const QString &id) { return f.editor.scene()->nodeItem(id)->pos().x(); };
+    QVERIFY(x("right.force") < x("right.confirm"));
+    QVERIFY(x("right.confirm") < x("right.squeeze"));
+    QVERIFY(x("right.squeeze") < x("right.air"));
+    // No two nodes overlap.
+    const auto &nodes = f.editor.graph().nodes;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        for (size_t j = i + 1; j < nodes.size(); ++j) {
+            const RouterNodeItem *a = f.editor.scene()->nodeItem(nodes[i].id);
+            const RouterNodeItem *b = f.editor.scene()->nodeItem(nodes[j].id);
+            QVERIFY2(!a->sceneBoundingRect()
+                          .adjusted(6, 3, -6, -3)
+                          .intersects(b->sceneBoundingRect().adjusted(6, 3, -6, -3)),
+                     qPrintable(nodes[i].id + " " + nodes[j].id));
+        }
+    }
+    // Positions go into the document, so a saved file keeps them.
+    for (const RouterNode &node : nodes)
+        QVERIFY(node.ui.contains("x") && node.ui.contains("y"));
+}
+
+void TestRouterEditor::saveOpenRoundTrip()
+{
+    QTemporaryDir dir;
+    Fixture f;
+    f.editor.setGraph(preset("C2"));
+    const QJsonObject saved = f.editor.graph().toJson();
+    QString error;
+    QVERIFY2(f.editor.saveFile(dir.filePath("mine.json"), false, &error), qPrintable(error));
+    f.editor.setGraph(preset("C3"));
+    QVERIFY2(f.editor.openFile(dir.filePath("mine.json"), &error), qPrintable(error));
+    QCOMPARE(f.editor.graph().toJson(), saved);
+    QCOMPARE(f.editor.graph().file, dir.filePath("mine.json"));
+    QVERIFY(!f.editor.openFile(dir.filePath("missing.json"), &error));
+    QVERIFY2(error.contains("missing.json"), qPrintable(error));
+}
+
+void TestRouterEditor::selfContainedEmbedsUserPatterns()
+{
+    QTemporaryDir dir;
+    QFile builtin(SEMHAP_RESOURCES "/patterns/vib.geiger.json");
+    QVERIFY(builtin.open(QIODevice::ReadOnly));
+    QJsonObject pattern = QJsonDocument::fromJson(builtin.readAll()).object();
+    pattern.insert("name", "my.warning");
+    QFile user(dir.filePath("my.warning.json"));
+    QVERIFY(user.open(QIODevice::WriteOnly));
+    user.write(QJsonDocument(pattern).toJson());
+    user.close();
+
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    f.editor.setParam("right.geiger", "pattern", user.fileName());
+    QCOMPARE(f.editor.validate(), QStringList());
+    QString error;
+    QVERIFY2(f.editor.saveFile(dir.filePath("portable.json"), true, &error), qPrintable(error));
+    QVERIFY(QFile::remove(user.fileName()));
+    RouterGraph loaded;
+    LoadError loadError;
+    QVERIFY(RouterGraph::fromFile(dir.filePath("portable.json"), &loaded, &loadError));
+    QCOMPARE(loaded.patterns.size(), size_t(1));
+    QCOMPARE(loaded.patterns.front()->name(), "my.warning");
+    QCOMPARE(loaded.nodes[size_t(loaded.nodeIndex("right.geiger"))].params.value("pattern"),
+             "my.warning");
+    QVERIFY2(Router::compile(loaded, &loadError), qPrintable(loadError.toString()));
+    // The editor offers the embedded pattern by name.
+    QVERIFY(f.editor.openFile(dir.filePath("portable.json"), &error));
+    f.select("right.geiger");
+    auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
+    QVERIFY(combo);
+    QVERIFY(combo->findText("my.warning") >= 0);
+}
+
+void TestRouterEditor::engineSwapsWhileRunning()
+{
+    SimEngine engine;
+    RunOptions options;
+    options.duration = 3600.0;
+    QString error;
+    QVERIFY2(engine.load(options, &error), qPrintable(error));
+    engine.setSpeed(8.0);
+    engine.run();
+    QTRY_VERIFY_WITH_TIMEOUT(!engine.history().events().isEmpty(), 30000);
+    const LiveHistory &history = engine.history();
+    const qint64 firstFrame = history.frames(Gripper::Right).begin();
+    const qint64 framesBefore = history.frames(Gripper::Right).end();
+    const qint64 eventsBefore = history.events().end();
+    QSignalSpy reset(&engine.history(), &LiveHistory::reset);
+    QSignalSpy changed(&engine.history(), &LiveHistory::routerChanged);
+    QSignalSpy routerChanged(&engine, &SimEngine::routerChanged);
+
+    // A broken graph is refused and the run keeps its router.
+    RouterGraph broken = preset("C4");
+    broken.nodes[0].params.insert("grasp", "lots");
+    QVERIFY(!engine.setRouter(broken, &error));
+    QVERIFY2(error.contains("grasp"), qPrintable(error));
+    QCOMPARE(engine.routerGraph().name, "C3");
+
+    RouterGraph c4 = preset("C4");
+    QVERIFY2(engine.setRouter(c4, &error), qPrintable(error));
+    QCOMPARE(engine.routerGraph().name, "C4");
+    QCOMPARE(engine.options().router, "C4");
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(routerChanged.count(), 1);
+    QVERIFY(engine.isRunning());
+    // The run goes on: frames keep their history, new events come.
+    QTRY_VERIFY_WITH_TIMEOUT(history.events().end() > eventsBefore + 2, 30000);
+    QVERIFY(history.frames(Gripper::Right).end() > framesBefore);
+    QCOMPARE(history.frames(Gripper::Right).begin(), firstFrame);
+    QCOMPARE(reset.count(), 0);
+    for (const LiveDevice &device : history.devices())
+        QVERIFY2(engine.devices().transport(device.name), qPrintable(device.name));
+    // Every event after the swap names a detector of C4.
+    for (qint64 i = eventsBefore; i < history.events().end(); ++i)
+        QVERIFY(c4.nodeIndex(history.nodeName(history.events().at(i).node)) >= 0);
+    // Reset runs the applied graph again.
+    QVERIFY(engine.reset(&error));
+    QCOMPARE(engine.routerGraph().name, "C4");
+    engine.pause();
+}
+
+void TestRouterEditor::liveActivityLightsWires()
+{
+    Fixture f;
+    LiveHistory history;
+    RouterGraph c3 = preset("C3");
+    f.editor.setGraph(c3);
+    f.editor.setHistory(&history);
+    history.start({}, {}, {"right.force", "left.slip"});
+    SemanticEvent grasp;
+    grasp.t = 1.0;
+    grasp.node = 0;
+    grasp.intensity = 0.5;
+    history.append(grasp);
+    history.commit();
+    RouterScene *scene = f.editor.scene();
+    const auto link = [&](const QString &from, const QString &to) {
+        for (size_t j = 0; j < c3.links.size(); ++j) {
+            if (c3.links[j].from == from && c3.links[j].to == to)
+                return scene->wireItem(int(j));
+        }
+        return static_cast<RouterWireItem *>(nullptr);
+    };
+    QVERIFY(link("right.force", "right.confirm")->glow() > 0.5);
+    QVERIFY(link("right.confirm", "right.squeeze")->glow() > 0.5);
+    QVERIFY(link("right.squeeze", "right.air")->glow() > 0.5);
+    // The warning filter stops a confirmation.
+    QCOMPARE(link("right.warn", "right.geiger")->glow(), 0.0);
+    QCOMPARE(link("left.slip", "left.confirm")->glow(), 0.0);
+    QVERIFY(scene->nodeItem("right.squeeze")->state().contains("grasp"));
+    QTRY_COMPARE_WITH_TIMEOUT(link("right.force", "right.confirm")->glow(), 0.0, 2000);
+    grasp.phase = EventPhase::End;
+    grasp.t = 2.0;
+    history.append(grasp);
+    history.commit();
+    QVERIFY(scene->nodeItem("right.squeeze")->state().isEmpty());
+}
+
+void TestRouterEditor::screenshot()
+{
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (dir.isEmpty())
+        QSKIP("set SEMHAP_SCREENSHOTS=DIR (and run under xvfb with QT_QPA_PLATFORM=xcb)");
+    {
+        Fixture f;
+        f.editor.resize(900, 820);
+        f.editor.setGraph(preset("C3"));
+        f.select("right.force");
+        QTest::qWait(200);
+        QVERIFY(f.editor.grab().save(dir + "/routereditor-alone.png"));
+    }
+    StudioOptions options;
+    options.size = QSize(1280, 800);
+    options.restoreLayout = false;
+    options.posePort = 0;
+    options.speed = 4.0;
+    MainWindow window(options);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    QTest::qWait(6000);
+    window.routerEditor()->fitView();
+    QTest::qWait(300);
+    QVERIFY(window.grab().save(dir + "/routereditor-window.png"));
+}
+
+QTEST_MAIN(TestRouterEditor)
+#include "tst_routereditor.moc"
