@@ -11,6 +11,7 @@
 #include "preferencesdialog.h"
 #include "routergraph.h"
 #include "simviewport.h"
+#include "waveformdesigner.h"
 #include "world.h"
 
 #include <QAction>
@@ -36,7 +37,7 @@ constexpr int RealTimeIndex = 3;
 constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** Layouts saved by another version of the docks are not restored. */
-constexpr int LayoutVersion = 1;
+constexpr int LayoutVersion = 2;
 
 QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
@@ -148,6 +149,7 @@ void MainWindow::createActions()
     m_stopAllAction->setToolTip(
         tr("Pause the run and send every device to zero now (Esc, from anywhere)"));
     connect(m_stopAllAction, &QAction::triggered, this, [this] {
+        m_designer->stopAudition();
         m_engine.stopAll();
         statusBar()->showMessage(tr("Stopped: every device was sent to zero."), 5000);
     });
@@ -272,6 +274,7 @@ void MainWindow::createDocks()
     m_eventLog = new EventLogPanel(m_engine.history(), this);
     m_devicesPanel = new DevicesPanel(m_engine.devices(), m_engine.history(), this);
     m_metricsPanel = new MetricsPanel(m_engine.history(), this);
+    m_designer = new WaveformDesigner(&m_engine.devices(), this);
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
@@ -280,11 +283,17 @@ void MainWindow::createDocks()
         makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
     QDockWidget *metrics =
         makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
+    QDockWidget *patterns =
+        makeDock(tr("Patterns"), QStringLiteral("patternsDock"), m_designer, this);
     // The plots run the full height on the right; the log, devices and metrics share the
     // space under the viewport.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     addDockWidget(Qt::RightDockWidgetArea, plots);
+    // The designer wants the plots' height and width; it sits behind them as a tab.
+    addDockWidget(Qt::RightDockWidgetArea, patterns);
+    tabifyDockWidget(plots, patterns);
+    plots->raise();
     addDockWidget(Qt::BottomDockWidgetArea, events);
     addDockWidget(Qt::BottomDockWidgetArea, devices);
     addDockWidget(Qt::BottomDockWidgetArea, metrics);
@@ -299,7 +308,17 @@ void MainWindow::createDocks()
                 if (!m_engine.bindDevice(name, uri, &error))
                     showError(tr("Could not connect %1 to %2").arg(name, uri), error);
                 m_devicesPanel->refresh();
+                m_designer->refreshDevices();
             });
+    // An audition on a bound device plays alone: the run pauses (docs: studio/README.md).
+    connect(m_designer, &WaveformDesigner::auditionStarting, this, [this] {
+        if (!m_engine.isRunning())
+            return;
+        m_engine.pause();
+        statusBar()->showMessage(tr("The run is paused while you audition a pattern."), 5000);
+    });
+    connect(m_designer, &WaveformDesigner::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 8000); });
 }
 
 void MainWindow::createMenus()
@@ -363,11 +382,14 @@ void MainWindow::connectEngine()
         m_poseInput->setOperator(m_engine.manualOperator());
         m_poseInput->setWorld(m_engine.world());
         m_devicesPanel->refresh();
+        m_designer->refreshDevices();
         syncPickers();
         updateTitle();
         updateStatus();
     });
     connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
+        if (running)
+            m_designer->stopAudition(); // the run's frames and an audition never mix
         m_runAction->setChecked(running);
         m_runAction->setText(running ? tr("Pause") : tr("Run"));
         m_runAction->setIcon(
