@@ -24,6 +24,8 @@ QDoubleSpinBox *makeSpin(const QString &name, const QString &prefix, QWidget *pa
     // valueChanged only on Enter, an arrow step or leaving: one undo step per edit.
     spin->setKeyboardTracking(false);
     spin->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    // The range's widest number would make the form too wide for a dock.
+    spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(QStringLiteral("-000.0000")) + 24);
     return spin;
 }
 
@@ -36,6 +38,8 @@ NumberEdit::NumberEdit(QWidget *parent) : QWidget(parent)
     m_source = new QComboBox(this);
     m_source->setObjectName(QStringLiteral("source"));
     m_source->setToolTip(tr("A fixed value, or a live parameter of the pattern"));
+    m_source->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_source->setMinimumContentsLength(6);
     m_value = makeSpin(QStringLiteral("value"), QString(), this);
     m_gain = makeSpin(QStringLiteral("gain"), tr("× "), this);
     m_gain->setToolTip(tr("Gain: the value is gain × parameter + offset"));

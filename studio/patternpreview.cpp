@@ -97,7 +97,7 @@ void PatternPreview::replot(const DeviceModel &model, double releaseAt)
         time->setRange(0, end);
         value->setRange(low - 0.05 * (high - low), high + 0.1 * (high - low));
         value->setLabel(group.channels.size() == model.channelCount() && g == 0
-                            ? tr("all")
+                            ? tr("all channels")
                             : group.channels.join(QStringLiteral(", ")));
         const bool last = g + 1 == m_groups.size();
         time->setTickLabels(last);
@@ -133,8 +133,8 @@ void PatternPreview::replot(const DeviceModel &model, double releaseAt)
                 auto *label = new QCPItemText(m_plot);
                 label->setClipToAxisRect(false);
                 label->position->setAxes(time, value);
-                label->position->setCoords(releaseAt, value->range().upper);
-                label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+                label->position->setCoords(releaseAt, value->range().lower);
+                label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
                 label->setText(tr(" end"));
                 label->setColor(Marker);
             }

@@ -141,7 +141,7 @@ WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
     top->addWidget(createEditor());
     top->setStretchFactor(0, 0);
     top->setStretchFactor(1, 1);
-    top->setSizes({150, 500});
+    top->setSizes({130, 520});
 
     auto *bottom = new QWidget(this);
     auto *bottomLayout = new QVBoxLayout(bottom);
@@ -322,8 +322,13 @@ QWidget *WaveformDesigner::createEditor()
     scroll->setWidget(m_inspector);
     treePage->addWidget(treeBox);
     treePage->addWidget(scroll);
-    treePage->setStretchFactor(0, 1);
-    treePage->setStretchFactor(1, 1);
+    treePage->setStretchFactor(0, 2);
+    treePage->setStretchFactor(1, 3);
+    treePage->setSizes({200, 300});
+    treePage->setChildrenCollapsible(false);
+    scroll->setMinimumWidth(280);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    treeBox->setMinimumWidth(180);
     m_tabs->addTab(treePage, tr("Signal tree"));
 
     auto *jsonPage = new QWidget(m_tabs);
