@@ -7,8 +7,6 @@
 #include <QJsonObject>
 #include <QLabel>
 
-#include <limits>
-
 namespace semhap {
 
 namespace {

@@ -27,7 +27,6 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QPainter>
-#include <QPainterPath>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
@@ -188,7 +187,7 @@ WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
 
     refreshLibrary();
     refreshDevices();
-    openBuiltin(PatternLibrary::builtinNames().value(0));
+    openBuiltin(QStringLiteral("air.squeeze")); // the canonical confirmation
 }
 
 WaveformDesigner::~WaveformDesigner()
@@ -216,7 +215,8 @@ void WaveformDesigner::createActions()
     };
     action(tr("New"), QStringLiteral("newPattern"), QKeySequence::New,
            &WaveformDesigner::newPattern);
-    action(tr("Open…"), QStringLiteral("openPattern"), QKeySequence::Open, nullptr)
+    // No Ctrl+O: the main window opens scenes with it, and a shared shortcut fires neither.
+    action(tr("Open…"), QStringLiteral("openPattern"), {}, nullptr)
         ->setToolTip(tr("Open a pattern, an AHAP or a .haptic file"));
     connect(findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this,
             [this] {
