@@ -132,8 +132,10 @@ void TestConvert::roundTrip_data()
         {"Event": {"Time": 0.2, "EventType": "HapticTransient"}}]})");
     QTest::newRow("ahap steps") << true << QByteArray(R"({"Pattern": [
         {"Event": {"Time": 0, "EventType": "HapticContinuous", "EventDuration": 2}},
-        {"Parameter": {"ParameterID": "HapticIntensityControl", "Time": 0.5, "ParameterValue": 0.25}},
-        {"Parameter": {"ParameterID": "HapticIntensityControl", "Time": 1.5, "ParameterValue": 0.75}}]})");
+        {"Parameter": {"ParameterID": "HapticIntensityControl", "Time": 0.5,
+                       "ParameterValue": 0.25}},
+        {"Parameter": {"ParameterID": "HapticIntensityControl", "Time": 1.5,
+                       "ParameterValue": 0.75}}]})");
     // Many breakpoints: the export splits the control curve into curves of 16 points.
     QByteArray points;
     for (int i = 0; i <= 40; ++i)
@@ -148,7 +150,8 @@ void TestConvert::roundTrip_data()
     QTest::newRow("haptic file") << false << readFile(Data + QStringLiteral("/buzz.haptic"));
     QTest::newRow("haptic plain") << false << QByteArray(R"({"version": {"major": 1},
         "signals": {"continuous": {"envelopes": {"amplitude": [{"time": 0, "amplitude": 0.2},
-        {"time": 0.4, "amplitude": 1}, {"time": 1.2, "amplitude": 0.3}, {"time": 2, "amplitude": 0}]}}}})");
+        {"time": 0.4, "amplitude": 1}, {"time": 1.2, "amplitude": 0.3},
+        {"time": 2, "amplitude": 0}]}}}})");
 }
 
 void TestConvert::roundTrip()
