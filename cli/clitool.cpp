@@ -2,6 +2,7 @@
 #include "clitool.h"
 
 #include "comparecommand.h"
+#include "convertcommand.h"
 #include "devicescommand.h"
 #include "emulatecommand.h"
 #include "playcommand.h"
@@ -16,10 +17,10 @@ namespace {
 
 const QStringList &commandNames()
 {
-    static const QStringList names{QStringLiteral("route"),    QStringLiteral("render"),
-                                   QStringLiteral("validate"), QStringLiteral("run"),
-                                   QStringLiteral("compare"),  QStringLiteral("play"),
-                                   QStringLiteral("devices"),  QStringLiteral("emulate")};
+    static const QStringList names{
+        QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
+        QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
+        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("convert")};
     return names;
 }
 
@@ -43,6 +44,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<DevicesCommand>(m_io);
     if (name == QLatin1String("emulate"))
         return std::make_unique<EmulateCommand>(m_io);
+    if (name == QLatin1String("convert"))
+        return std::make_unique<ConvertCommand>(m_io);
     return nullptr;
 }
 

@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -176,6 +177,12 @@ double DeviceModel::clamp(int channel, double value) const
     if (!(value >= c.min)) // also maps NaN to the lower limit: never send NaN to hardware
         return c.min;
     return value > c.max ? c.max : value;
+}
+
+double DeviceModel::modulationLimit() const
+{
+    const double quarterRate = m_rate / 4;
+    return m_tau > 0 ? std::min(quarterRate, 1.0 / (2 * Pi * m_tau)) : quarterRate;
 }
 
 std::vector<double> DeviceModel::predict(const std::vector<double> &commanded,

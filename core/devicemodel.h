@@ -53,6 +53,11 @@ public:
     double timeConstant() const { return m_tau; }
 
     double clamp(int channel, double value) const;
+    /**
+     * The fastest amplitude modulation the output still follows (Hz): the lag's corner
+     * frequency, at most a quarter of the rate. Imported sharpness is mapped below it.
+     */
+    double modulationLimit() const;
 
     /**
      * Predicts the delivered output of one channel for a command sampled at `sampleRate`:

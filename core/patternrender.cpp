@@ -45,6 +45,16 @@ bool resolvePatternRoutes(const Pattern &pattern, const DeviceModel &model,
     return true;
 }
 
+void mixVoice(const Voice &voice, const std::vector<PlayerInput::Route> &routes,
+              const DeviceModel &model, double *values)
+{
+    std::fill(values, values + model.channelCount(), -std::numeric_limits<double>::infinity());
+    for (const PlayerInput::Route &route : routes)
+        values[route.channel] = std::max(values[route.channel], voice.value(route.slot));
+    for (int c = 0; c < model.channelCount(); ++c)
+        values[c] = model.clamp(c, std::isinf(values[c]) ? 0.0 : values[c]);
+}
+
 bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
                    const RenderOptions &options, RenderedPattern *result, QString *reason)
 {
@@ -57,6 +67,7 @@ bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
     result->values.assign(size_t(model.channelCount()), std::vector<double>(samples, 0.0));
 
     Voice voice(pattern);
+    std::vector<double> frame(size_t(model.channelCount()));
     voice.setParam(ParamTable::Intensity, options.intensity, 0.0);
     voice.begin(0.0);
     bool released = false;
@@ -68,17 +79,9 @@ bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
         }
         voice.advance(t);
         result->t[k] = t;
-        std::vector<bool> touched(size_t(model.channelCount()), false);
-        for (const PlayerInput::Route &route : routes) {
-            double &cell = result->values[size_t(route.channel)][k];
-            const double v = voice.value(route.slot);
-            cell = touched[size_t(route.channel)] ? std::max(cell, v) : v;
-            touched[size_t(route.channel)] = true;
-        }
-        for (int c = 0; c < model.channelCount(); ++c) {
-            double &cell = result->values[size_t(c)][k];
-            cell = model.clamp(c, cell);
-        }
+        mixVoice(voice, routes, model, frame.data());
+        for (int c = 0; c < model.channelCount(); ++c)
+            result->values[size_t(c)][k] = frame[size_t(c)];
     }
     return true;
 }

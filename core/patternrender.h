@@ -22,6 +22,16 @@ bool resolvePatternRoutes(const Pattern &pattern, const DeviceModel &model,
                           const QStringList &channels, std::vector<PlayerInput::Route> *routes,
                           QString *reason);
 
+class Voice;
+
+/**
+ * One frame of a playing voice on `model`: each channel the largest value of the tracks
+ * routed to it (0 when none is), clamped to the channel's limits. `values` holds
+ * `model.channelCount()` doubles.
+ */
+void mixVoice(const Voice &voice, const std::vector<PlayerInput::Route> &routes,
+              const DeviceModel &model, double *values);
+
 /** How to render a pattern offline (the `render` command, the designer's preview). */
 struct RenderOptions
 {

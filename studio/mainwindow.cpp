@@ -12,6 +12,7 @@
 #include "routereditor.h"
 #include "routergraph.h"
 #include "simviewport.h"
+#include "waveformdesigner.h"
 #include "world.h"
 
 #include <QAction>
@@ -37,7 +38,7 @@ constexpr int RealTimeIndex = 3;
 constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** Layouts saved by another version of the docks are not restored. */
-constexpr int LayoutVersion = 2;
+constexpr int LayoutVersion = 3;
 
 QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
@@ -149,6 +150,7 @@ void MainWindow::createActions()
     m_stopAllAction->setToolTip(
         tr("Pause the run and send every device to zero now (Esc, from anywhere)"));
     connect(m_stopAllAction, &QAction::triggered, this, [this] {
+        m_designer->stopAudition();
         m_engine.stopAll();
         statusBar()->showMessage(tr("Stopped: every device was sent to zero."), 5000);
     });
@@ -278,6 +280,7 @@ void MainWindow::createDocks()
     m_routerEditor->setApplyFunction([this](const RouterGraph &graph, QString *error) {
         return m_engine.setRouter(graph, error);
     });
+    m_designer = new WaveformDesigner(&m_engine.devices(), this);
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
@@ -286,6 +289,8 @@ void MainWindow::createDocks()
         makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
     QDockWidget *metrics =
         makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
+    QDockWidget *patterns =
+        makeDock(tr("Patterns"), QStringLiteral("patternsDock"), m_designer, this);
     // The plots run the full height on the right; the log, devices and metrics share the
     // space under the viewport.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -293,8 +298,12 @@ void MainWindow::createDocks()
     QDockWidget *router =
         makeDock(tr("Router"), QStringLiteral("routerDock"), m_routerEditor, this);
     addDockWidget(Qt::RightDockWidgetArea, plots);
+    // The router editor and the designer want the plots' height and width: they sit
+    // behind them as tabs.
     addDockWidget(Qt::RightDockWidgetArea, router);
     tabifyDockWidget(plots, router);
+    addDockWidget(Qt::RightDockWidgetArea, patterns);
+    tabifyDockWidget(router, patterns);
     plots->raise();
     addDockWidget(Qt::BottomDockWidgetArea, events);
     addDockWidget(Qt::BottomDockWidgetArea, devices);
@@ -310,7 +319,17 @@ void MainWindow::createDocks()
                 if (!m_engine.bindDevice(name, uri, &error))
                     showError(tr("Could not connect %1 to %2").arg(name, uri), error);
                 m_devicesPanel->refresh();
+                m_designer->refreshDevices();
             });
+    // An audition on a bound device plays alone: the run pauses (docs: studio/README.md).
+    connect(m_designer, &WaveformDesigner::auditionStarting, this, [this] {
+        if (!m_engine.isRunning())
+            return;
+        m_engine.pause();
+        statusBar()->showMessage(tr("The run is paused while you audition a pattern."), 5000);
+    });
+    connect(m_designer, &WaveformDesigner::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 8000); });
 }
 
 void MainWindow::createMenus()
@@ -375,6 +394,7 @@ void MainWindow::connectEngine()
         m_poseInput->setWorld(m_engine.world());
         m_devicesPanel->refresh();
         syncRouterEditor();
+        m_designer->refreshDevices();
         syncPickers();
         updateTitle();
         updateStatus();
@@ -386,6 +406,8 @@ void MainWindow::connectEngine()
         updateTitle();
     });
     connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
+        if (running)
+            m_designer->stopAudition(); // the run's frames and an audition never mix
         m_runAction->setChecked(running);
         m_runAction->setText(running ? tr("Pause") : tr("Run"));
         m_runAction->setIcon(

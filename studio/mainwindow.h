@@ -20,12 +20,13 @@ class PlotPanel;
 class PoseInput;
 class RouterEditor;
 class SimViewport;
+class WaveformDesigner;
 
 /**
  * The studio's window: the simulation viewport in the middle, docks for the live plots,
- * the event log, the devices and the task metrics, a toolbar that runs, pauses, steps,
- * resets and paces the run and picks scene and router, and a stop-all that always works.
- * The dock layout is saved on close and restored on the next start.
+ * the event log, the devices, the task metrics and the waveform designer, a toolbar that runs,
+ * pauses, steps, resets and paces the run and picks scene and router, and a stop-all that always
+ * works. The dock layout is saved on close and restored on the next start.
  */
 class MainWindow : public QMainWindow
 {
@@ -42,6 +43,7 @@ public:
     DevicesPanel *devicesPanel() const { return m_devicesPanel; }
     MetricsPanel *metricsPanel() const { return m_metricsPanel; }
     RouterEditor *routerEditor() const { return m_routerEditor; }
+    WaveformDesigner *waveformDesigner() const { return m_designer; }
     QComboBox *scenePicker() const { return m_scenePicker; }
     QComboBox *routerPicker() const { return m_routerPicker; }
     QComboBox *speedPicker() const { return m_speedPicker; }
@@ -88,6 +90,7 @@ private:
     DevicesPanel *m_devicesPanel = nullptr;
     MetricsPanel *m_metricsPanel = nullptr;
     RouterEditor *m_routerEditor = nullptr;
+    WaveformDesigner *m_designer = nullptr;
     QComboBox *m_scenePicker = nullptr;
     QComboBox *m_routerPicker = nullptr;
     QComboBox *m_speedPicker = nullptr;

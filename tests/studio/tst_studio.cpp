@@ -325,8 +325,8 @@ void TestStudio::screenshotsOfEveryPanel_data()
     QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting";
 }
 
-// Pictures of the window with each bottom dock raised, to be looked at (beside the test
-// binary, or in $SEMHAP_SCREENSHOTS); the test checks they are the asked size.
+// Pictures of the window with each bottom dock (and the patterns tab) raised, to be looked at
+// (beside the test binary, or in $SEMHAP_SCREENSHOTS); the test checks they are the asked size.
 void TestStudio::screenshotsOfEveryPanel()
 {
     QFETCH(QSize, size);
@@ -342,7 +342,7 @@ void TestStudio::screenshotsOfEveryPanel()
     const QString dir = qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")
                             ? qEnvironmentVariable("SEMHAP_SCREENSHOTS")
                             : QCoreApplication::applicationDirPath();
-    for (const QString dock : {"eventsDock", "devicesDock", "metricsDock"}) {
+    for (const QString dock : {"eventsDock", "devicesDock", "metricsDock", "patternsDock"}) {
         window.findChild<QDockWidget *>(dock)->raise();
         QTest::qWait(300);
         const QString path =

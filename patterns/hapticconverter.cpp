@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: MIT
+#include "hapticconverter.h"
+
+#include "ahapformat.h"
+#include "jsonreader.h"
+#include "metahapticformat.h"
+#include "pattern.h"
+#include "voice.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+const QLatin1String TrackParts[] = {QLatin1String("attack"), QLatin1String("sustain"),
+                                    QLatin1String("release")};
+
+/**
+ * The amplitude modulation that stands for sharpness: 1 at the start, between 0 and 1 at
+ * `freq` Hz. Its exact form marks it, so an export can take it off again.
+ */
+QJsonObject modulation(double freq)
+{
+    return {{QStringLiteral("type"), QStringLiteral("sine")},
+            {QStringLiteral("freq"), freq},
+            {QStringLiteral("amp"), 0.5},
+            {QStringLiteral("offset"), 0.5},
+            {QStringLiteral("phase"), 0.25}};
+}
+
+bool isModulation(const QJsonValue &json, double *freq)
+{
+    const QJsonObject o = json.toObject();
+    if (o.size() != 5 || o.value(QLatin1String("type")) != QLatin1String("sine") ||
+        !o.value(QLatin1String("freq")).isDouble())
+        return false;
+    *freq = o.value(QLatin1String("freq")).toDouble();
+    return o == modulation(*freq);
+}
+
+/** The waveform without a modulation made by an import (the largest frequency in `freq`). */
+QJsonValue withoutModulation(const QJsonValue &waveform, double *freq)
+{
+    const QJsonObject o = waveform.toObject();
+    if (o.value(QLatin1String("type")) != QLatin1String("product"))
+        return waveform;
+    QJsonArray kept;
+    for (const QJsonValue &child : o.value(QLatin1String("of")).toArray()) {
+        double f = 0.0;
+        if (isModulation(child, &f))
+            *freq = std::max(*freq, f);
+        else
+            kept.append(child);
+    }
+    if (kept.size() == o.value(QLatin1String("of")).toArray().size() || kept.isEmpty())
+        return waveform;
+    if (kept.size() == 1)
+        return kept.first();
+    QJsonObject rest = o;
+    rest.insert(QStringLiteral("of"), kept);
+    return rest;
+}
+
+bool isSilent(const QJsonObject &track)
+{
+    const QJsonValue sustain = track.value(QLatin1String("sustain"));
+    return sustain.isUndefined() ||
+           (sustain.toObject().value(QLatin1String("type")) == QLatin1String("const") &&
+            sustain.toObject().value(QLatin1String("value")) == QJsonValue(0));
+}
+
+QString describe(HapticFileFormat format)
+{
+    switch (format) {
+    case HapticFileFormat::Ahap:
+        return QStringLiteral("AHAP");
+    case HapticFileFormat::MetaHaptic:
+        return QStringLiteral(".haptic");
+    case HapticFileFormat::Semhap:
+        break;
+    }
+    return QStringLiteral("semhap pattern");
+}
+
+} // namespace
+
+bool HapticConverter::formatOf(const QString &path, HapticFileFormat *format, LoadError *error)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("json"))
+        *format = HapticFileFormat::Semhap;
+    else if (suffix == QLatin1String("ahap"))
+        *format = HapticFileFormat::Ahap;
+    else if (suffix == QLatin1String("haptic"))
+        *format = HapticFileFormat::MetaHaptic;
+    else {
+        *error =
+            LoadError::at(path, QString(),
+                          QStringLiteral("unknown file type %1: use .json (semhap pattern), "
+                                         ".ahap (Apple Core Haptics) or .haptic (Meta)")
+                              .arg(quoted(suffix.isEmpty() ? path : QLatin1Char('.') + suffix)));
+        return false;
+    }
+    return true;
+}
+
+bool HapticConverter::readPattern(const QString &path, const ConvertOptions &options,
+                                  QJsonObject *pattern, QStringList *warnings, LoadError *error)
+{
+    HapticFileFormat format;
+    if (!formatOf(path, &format, error))
+        return false;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error =
+            LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
+        return false;
+    }
+    return parsePattern(file.readAll(), path, options, pattern, warnings, error);
+}
+
+bool HapticConverter::parsePattern(const QByteArray &bytes, const QString &file,
+                                   const ConvertOptions &options, QJsonObject *pattern,
+                                   QStringList *warnings, LoadError *error)
+{
+    HapticFileFormat format;
+    QJsonObject json;
+    if (!formatOf(file, &format, error) || !parseJsonObject(bytes, file, &json, error))
+        return false;
+    HapticTimeline timeline;
+    switch (format) {
+    case HapticFileFormat::Semhap:
+        if (!Pattern::fromJson(json, file, error))
+            return false;
+        *pattern = json;
+        return true;
+    case HapticFileFormat::Ahap:
+        if (!AhapFormat::read(json, file, &timeline, warnings, error))
+            return false;
+        break;
+    case HapticFileFormat::MetaHaptic:
+        if (!MetaHapticFormat::read(json, file, &timeline, warnings, error))
+            return false;
+        break;
+    }
+    ConvertOptions named = options;
+    if (named.name.isEmpty())
+        named.name = QFileInfo(file).completeBaseName();
+    *pattern = timelineToPattern(
+        timeline, named,
+        QStringLiteral("%1 %2").arg(describe(format), QFileInfo(file).fileName()));
+    return true;
+}
+
+bool HapticConverter::writePattern(const QJsonObject &pattern, const QString &path,
+                                   const ConvertOptions &options, QStringList *warnings,
+                                   LoadError *error)
+{
+    HapticFileFormat format;
+    QByteArray bytes;
+    if (!formatOf(path, &format, error) ||
+        !serialize(pattern, format, path, options, &bytes, warnings, error))
+        return false;
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        *error =
+            LoadError::at(path, QString(), QStringLiteral("cannot write: ") + file.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool HapticConverter::serialize(const QJsonObject &pattern, HapticFileFormat format,
+                                const QString &file, const ConvertOptions &options,
+                                QByteArray *bytes, QStringList *warnings, LoadError *error)
+{
+    if (format == HapticFileFormat::Semhap) {
+        if (!Pattern::fromJson(pattern, file, error))
+            return false;
+        *bytes = QJsonDocument(pattern).toJson(QJsonDocument::Indented);
+        return true;
+    }
+    HapticTimeline timeline;
+    if (!patternToTimeline(pattern, file, options, &timeline, warnings, error))
+        return false;
+    const QString description =
+        QStringLiteral("semhap pattern %1").arg(pattern.value(QLatin1String("name")).toString());
+    const QJsonObject out = format == HapticFileFormat::Ahap
+                                ? AhapFormat::write(timeline, description)
+                                : MetaHapticFormat::write(timeline, description);
+    *bytes = QJsonDocument(out).toJson(QJsonDocument::Indented);
+    return true;
+}
+
+QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
+                                               const ConvertOptions &options,
+                                               const QString &source)
+{
+    QJsonArray points;
+    const EnvelopeCurve &curve = timeline.intensity;
+    if (curve.isEmpty() || curve.startTime() > 0)
+        points.append(QJsonArray{0.0, curve.isEmpty() ? 0.0 : curve.points().front().v});
+    for (const EnvelopePoint &p : curve.points())
+        points.append(QJsonArray{p.t, p.v});
+    QJsonObject envelope{{QStringLiteral("type"), QStringLiteral("keyframes")},
+                         {QStringLiteral("points"), points}};
+    QJsonValue attack = envelope;
+    QString description =
+        QStringLiteral("Imported from %1: its envelope plays once on begin").arg(source);
+    if (timeline.sharpness > 0 && options.modulationLimit > 0) {
+        const double freq = timeline.sharpness * options.modulationLimit;
+        attack = QJsonObject{{QStringLiteral("type"), QStringLiteral("product")},
+                             {QStringLiteral("of"), QJsonArray{envelope, modulation(freq)}}};
+        description += QStringLiteral("; sharpness %1 as a %2 Hz modulation")
+                           .arg(timeline.sharpness, 0, 'g', 3)
+                           .arg(freq, 0, 'g', 3);
+    }
+    const QString channel = options.channel.isEmpty() ? QStringLiteral("*") : options.channel;
+    return {{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+            {QStringLiteral("name"),
+             options.name.isEmpty() ? QStringLiteral("imported") : options.name},
+            {QStringLiteral("model"), options.model},
+            {QStringLiteral("description"), QString(description + QLatin1Char('.'))},
+            {QStringLiteral("tracks"),
+             QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{channel}},
+                                    {QStringLiteral("attack"), attack},
+                                    {QStringLiteral("sustain"),
+                                     QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
+                                                 {QStringLiteral("value"), 0}}}}}}};
+}
+
+bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QString &file,
+                                        const ConvertOptions &options, HapticTimeline *timeline,
+                                        QStringList *warnings, LoadError *error)
+{
+    if (!Pattern::fromJson(pattern, file, error))
+        return false;
+    const auto warn = [&](const QString &pointer, const QString &reason) {
+        if (warnings)
+            warnings->append(LoadError::at(file, pointer, reason).toString());
+    };
+
+    // Take the modulation standing for sharpness off, so the envelope is exported as such.
+    QJsonObject bare = pattern;
+    QJsonArray tracks = pattern.value(QLatin1String("tracks")).toArray();
+    double freq = 0.0;
+    for (int i = 0; i < tracks.size(); ++i) {
+        QJsonObject track = tracks.at(i).toObject();
+        for (const QLatin1String part : TrackParts) {
+            if (track.contains(part))
+                track.insert(part, withoutModulation(track.value(part), &freq));
+        }
+        tracks[i] = track;
+    }
+    if (options.modulationLimit <= 0)
+        bare = pattern; // sharpness is not mapped: the modulation stays in the envelope
+    else
+        bare.insert(QStringLiteral("tracks"), tracks);
+    timeline->sharpness = options.modulationLimit > 0 && freq > 0
+                              ? std::min(1.0, freq / options.modulationLimit)
+                              : -1.0;
+    const PatternPtr parsed = Pattern::fromJson(bare, file, error);
+    if (!parsed)
+        return false;
+
+    std::vector<int> selected;
+    for (int i = 0; i < int(parsed->tracks().size()); ++i) {
+        const QStringList &channels = parsed->tracks()[size_t(i)].channels;
+        if (options.channel.isEmpty() || channels.contains(options.channel) ||
+            channels == QStringList{QStringLiteral("*")})
+            selected.push_back(i);
+    }
+    if (selected.empty()) {
+        *error = LoadError::at(
+            file, QStringLiteral("/tracks"),
+            QStringLiteral("no track drives channel %1").arg(quoted(options.channel)));
+        return false;
+    }
+    if (selected.size() > 1)
+        warn(QStringLiteral("/tracks"),
+             QStringLiteral("%1 tracks collapse into one envelope (the loudest at each instant); "
+                            "choose one with --channel")
+                 .arg(selected.size()));
+    if (parsed->params().size() > 1)
+        warn(QStringLiteral("/params"),
+             QStringLiteral("rendered with every parameter at its default"));
+
+    // When to end: after the attack, and after a while of sustain if the sustain plays.
+    const double *params = parsed->params().defaults().data();
+    double attackEnd = 0.0;
+    double releaseLength = 0.0;
+    bool silent = true;
+    for (const int i : selected) {
+        const PatternTrack &track = parsed->tracks()[size_t(i)];
+        const QString at = jsonPointerChild(QStringLiteral("/tracks"), i);
+        if (track.attack) {
+            double length = track.attack->duration(params);
+            if (!std::isfinite(length)) {
+                warn(jsonPointerChild(at, QLatin1String("attack")),
+                     QStringLiteral("the attack never ends: rendered for %1 s").arg(DefaultHold));
+                length = DefaultHold;
+            }
+            attackEnd = std::max(attackEnd, length);
+        }
+        if (track.release)
+            releaseLength = std::max(releaseLength, track.release->duration(params));
+        silent = silent && isSilent(tracks.at(i).toObject());
+    }
+    double releaseAt = options.releaseAt;
+    if (releaseAt < 0) {
+        releaseAt = attackEnd;
+        if (!silent) {
+            releaseAt += DefaultHold;
+            warn(QString(), QStringLiteral("the sustain is rendered for %1 s; choose the end "
+                                           "with --release-at")
+                                .arg(DefaultHold));
+        }
+    }
+    const double duration = options.duration >= 0 ? options.duration : releaseAt + releaseLength;
+    if (duration > MaxDuration) {
+        *error = LoadError::at(file, QString(),
+                               QStringLiteral("renders for %1 s, more than %2 s: choose a shorter "
+                                              "end or duration")
+                                   .arg(duration)
+                                   .arg(MaxDuration));
+        return false;
+    }
+
+    Voice voice(parsed);
+    voice.begin(0.0);
+    EnvelopeCurve rendered;
+    bool clipped = false;
+    bool released = false;
+    const auto samples = static_cast<long long>(std::llround(duration * RenderRate));
+    for (long long k = 0; k <= samples; ++k) {
+        const double t = double(k) / RenderRate;
+        if (!released && t >= releaseAt) {
+            voice.end(releaseAt);
+            released = true;
+        }
+        voice.advance(t);
+        double v = 0.0;
+        for (const int i : selected)
+            v = std::max(v, voice.value(i));
+        clipped = clipped || v > 1.0 || v < 0.0;
+        rendered.append(t, std::clamp(v, 0.0, 1.0));
+    }
+    if (clipped)
+        warn(QStringLiteral("/tracks"), QStringLiteral("values outside [0, 1] were clipped"));
+    timeline->intensity = rendered.simplified(HapticTimeline::SimplifyTolerance);
+    return true;
+}
+
+} // namespace semhap

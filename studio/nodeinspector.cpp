@@ -1,0 +1,360 @@
+// SPDX-License-Identifier: MIT
+#include "nodeinspector.h"
+
+#include "numberedit.h"
+#include "patterndocument.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QVBoxLayout>
+
+#include <functional>
+
+namespace semhap {
+
+namespace {
+
+constexpr double Unbounded = 1e6;
+
+QString fieldName(const QString &key)
+{
+    return QStringLiteral("field:") + key;
+}
+
+/** `[[0, 0], [0.5, 1]]` as `0:0, 0.5:1`, short enough for one line. */
+QString pointsText(const QJsonArray &points)
+{
+    QStringList parts;
+    for (const QJsonValue &p : points)
+        parts.append(QStringLiteral("%1:%2").arg(p[0].toDouble()).arg(p[1].toDouble()));
+    return parts.join(QStringLiteral(", "));
+}
+
+QJsonValue pointsJson(const QString &text)
+{
+    QJsonArray points;
+    for (const QString &part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QStringList tv = part.split(QLatin1Char(':'));
+        bool okT = false;
+        bool okV = false;
+        const double t = tv.value(0).trimmed().toDouble(&okT);
+        const double v = tv.value(1).trimmed().toDouble(&okV);
+        if (tv.size() != 2 || !okT || !okV)
+            return QJsonValue(QJsonValue::Null);
+        points.append(QJsonArray{t, v});
+    }
+    return points;
+}
+
+} // namespace
+
+NodeInspector::NodeInspector(PatternDocument &document, QWidget *parent)
+    : QWidget(parent), m_document(document)
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    m_heading = new QLabel(this);
+    m_heading->setObjectName(QStringLiteral("heading"));
+    QFont bold = m_heading->font();
+    bold.setBold(true);
+    m_heading->setFont(bold);
+    layout->addWidget(m_heading);
+    auto *formHolder = new QWidget(this);
+    m_form = new QFormLayout(formHolder);
+    m_form->setContentsMargins(0, 0, 0, 0);
+    m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    layout->addWidget(formHolder);
+    layout->addStretch(1);
+    connect(&m_document, &PatternDocument::changed, this, &NodeInspector::scheduleRebuild);
+    connect(&m_document, &PatternDocument::stateChanged, this, &NodeInspector::scheduleRebuild);
+}
+
+void NodeInspector::setTarget(const QString &pointer)
+{
+    m_pointer = pointer;
+    scheduleRebuild();
+}
+
+void NodeInspector::scheduleRebuild()
+{
+    // Later, not now: the edit that led here may come from a widget the rebuild deletes.
+    if (m_rebuildPending)
+        return;
+    m_rebuildPending = true;
+    QMetaObject::invokeMethod(this, &NodeInspector::rebuild, Qt::QueuedConnection);
+}
+
+QStringList NodeInspector::waveformTypes()
+{
+    return {QStringLiteral("const"),    QStringLiteral("ramp"),   QStringLiteral("keyframes"),
+            QStringLiteral("sine"),     QStringLiteral("square"), QStringLiteral("pulses"),
+            QStringLiteral("param"),    QStringLiteral("sum"),    QStringLiteral("product"),
+            QStringLiteral("sequence"), QStringLiteral("scale"),  QStringLiteral("clip")};
+}
+
+QJsonObject NodeInspector::waveformTemplate(const QString &type, const QJsonValue &previous)
+{
+    const auto node = [](const QString &t,
+                         std::initializer_list<std::pair<QString, QJsonValue>> keys) {
+        QJsonObject o(keys);
+        o.insert(QStringLiteral("type"), t);
+        return o;
+    };
+    const QJsonValue input = previous.isObject()
+                                 ? previous
+                                 : node(QStringLiteral("const"), {{QStringLiteral("value"), 1}});
+    if (type == QLatin1String("ramp"))
+        return node(type, {{QStringLiteral("to"), 1}, {QStringLiteral("time"), 0.5}});
+    if (type == QLatin1String("keyframes"))
+        return node(type,
+                    {{QStringLiteral("points"),
+                      QJsonArray{QJsonArray{0, 0}, QJsonArray{0.2, 1}, QJsonArray{0.5, 0.5}}}});
+    if (type == QLatin1String("sine") || type == QLatin1String("square"))
+        return node(type, {{QStringLiteral("freq"), 5}});
+    if (type == QLatin1String("pulses"))
+        return node(type, {{QStringLiteral("rate"), 5}, {QStringLiteral("width"), 0.025}});
+    if (type == QLatin1String("param"))
+        return node(type, {{QStringLiteral("name"), QStringLiteral("intensity")}});
+    if (type == QLatin1String("sum") || type == QLatin1String("product"))
+        return node(
+            type,
+            {{QStringLiteral("of"),
+              QJsonArray{input, node(QStringLiteral("square"), {{QStringLiteral("freq"), 5}})}}});
+    if (type == QLatin1String("sequence"))
+        return node(type,
+                    {{QStringLiteral("of"),
+                      QJsonArray{node(QStringLiteral("ramp"),
+                                      {{QStringLiteral("to"), 1}, {QStringLiteral("time"), 0.2}}),
+                                 node(QStringLiteral("ramp"), {{QStringLiteral("to"), 0},
+                                                               {QStringLiteral("time"), 0.2}})}}});
+    if (type == QLatin1String("scale") || type == QLatin1String("clip"))
+        return node(type, {{QStringLiteral("in"), input}});
+    return node(QStringLiteral("const"), {{QStringLiteral("value"), 1}});
+}
+
+QStringList NodeInspector::paramNames() const
+{
+    QStringList names{QStringLiteral("intensity")};
+    const QJsonObject params = m_document.json().value(QLatin1String("params")).toObject();
+    for (auto it = params.begin(); it != params.end(); ++it) {
+        if (!names.contains(it.key()))
+            names.append(it.key());
+    }
+    return names;
+}
+
+void NodeInspector::rebuild()
+{
+    m_rebuildPending = false;
+    // Keep the keyboard where it was: the form is rebuilt after every committed edit.
+    QString focusField;
+    QString focusChild;
+    for (QWidget *w = focusWidget(); w && w != this; w = w->parentWidget()) {
+        if (w->objectName().startsWith(QLatin1String("field:"))) {
+            focusField = w->objectName();
+            break;
+        }
+        focusChild = w->objectName();
+    }
+    while (m_form->rowCount() > 0)
+        m_form->removeRow(0);
+
+    const QJsonValue node = m_document.value(m_pointer);
+    setEnabled(!m_document.isReadOnly());
+    if (m_pointer.isEmpty()) {
+        m_heading->setText(tr("Pattern"));
+        addPatternFields();
+    } else if (QRegularExpression(QStringLiteral("^/tracks/\\d+$")).match(m_pointer).hasMatch()) {
+        m_heading->setText(tr("Track %1").arg(m_pointer.section(QLatin1Char('/'), 2).toInt() + 1));
+        addTrackFields();
+    } else if (node.isObject()) {
+        m_heading->setText(tr("Waveform"));
+        addWaveformFields(node.toObject());
+    } else {
+        m_heading->setText(tr("Select a node in the tree"));
+    }
+
+    if (focusField.isEmpty())
+        return;
+    if (auto *field = findChild<QWidget *>(focusField)) {
+        QWidget *target = focusChild.isEmpty() ? field : field->findChild<QWidget *>(focusChild);
+        (target ? target : field)->setFocus();
+    }
+}
+
+void NodeInspector::addPatternFields()
+{
+    const QJsonObject &json = m_document.json();
+    addText(QStringLiteral("name"), tr("Name"), json.value(QLatin1String("name")).toString(),
+            [](const QString &text) { return QJsonValue(text.trimmed()); });
+    addText(QStringLiteral("description"), tr("Description"),
+            json.value(QLatin1String("description")).toString(), [](const QString &text) {
+                return text.trimmed().isEmpty() ? QJsonValue(QJsonValue::Undefined)
+                                                : QJsonValue(text.trimmed());
+            });
+    QStringList params;
+    const QJsonObject declared = json.value(QLatin1String("params")).toObject();
+    for (auto it = declared.begin(); it != declared.end(); ++it)
+        params.append(QStringLiteral("%1=%2").arg(it.key()).arg(it.value().toDouble()));
+    addText(QStringLiteral("params"), tr("Parameters"), params.join(QStringLiteral(", ")),
+            [](const QString &text) {
+                QJsonObject out;
+                for (const QString &part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                    const QString name = part.section(QLatin1Char('='), 0, 0).trimmed();
+                    bool ok = false;
+                    const double value = part.section(QLatin1Char('='), 1).trimmed().toDouble(&ok);
+                    if (name.isEmpty() || !ok)
+                        return QJsonValue(QJsonValue::Null);
+                    out.insert(name, value);
+                }
+                return out.isEmpty() ? QJsonValue(QJsonValue::Undefined) : QJsonValue(out);
+            });
+}
+
+void NodeInspector::addTrackFields()
+{
+    QStringList channels;
+    for (const QJsonValue &c : m_document.value(m_pointer + QStringLiteral("/channels")).toArray())
+        channels.append(c.toString());
+    addText(QStringLiteral("channels"), tr("Channels"), channels.join(QStringLiteral(", ")),
+            [](const QString &text) {
+                QJsonArray out;
+                for (const QString &name : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
+                    out.append(name.trimmed());
+                return out.isEmpty() ? QJsonValue(QJsonArray{QStringLiteral("*")})
+                                     : QJsonValue(out);
+            });
+    m_form->addRow(QString(), new QLabel(tr("* drives every channel of the model"), this));
+}
+
+void NodeInspector::addWaveformFields(const QJsonObject &node)
+{
+    auto *type = new QComboBox(this);
+    type->setObjectName(fieldName(QStringLiteral("type")));
+    type->addItems(waveformTypes());
+    type->setCurrentText(node.value(QLatin1String("type")).toString());
+    type->setToolTip(tr("Changing the type to a combinator keeps this waveform as its input"));
+    connect(type, &QComboBox::activated, this, [this, type, node] {
+        if (type->currentText() != node.value(QLatin1String("type")).toString())
+            m_document.setValue(m_pointer, waveformTemplate(type->currentText(), node));
+    });
+    m_form->addRow(tr("Type"), type);
+
+    const QString kind = node.value(QLatin1String("type")).toString();
+    const double inf = Unbounded;
+    if (kind == QLatin1String("const")) {
+        addNumber(node, QStringLiteral("value"), tr("Value"), 0, -inf, inf);
+    } else if (kind == QLatin1String("param")) {
+        auto *name = new QComboBox(this);
+        name->setObjectName(fieldName(QStringLiteral("name")));
+        name->addItems(paramNames());
+        name->setCurrentText(node.value(QLatin1String("name")).toString());
+        connect(name, &QComboBox::activated, this,
+                [this, name] { edit(QStringLiteral("name"), name->currentText()); });
+        m_form->addRow(tr("Parameter"), name);
+        addNumber(node, QStringLiteral("gain"), tr("Gain"), 1, -inf, inf);
+        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
+    } else if (kind == QLatin1String("ramp")) {
+        addNumber(node, QStringLiteral("to"), tr("To"), 0, -inf, inf);
+        addNumber(node, QStringLiteral("time"), tr("Time (s)"), 0, 0, inf);
+        addStart(node);
+    } else if (kind == QLatin1String("keyframes")) {
+        addText(QStringLiteral("points"), tr("Points (t:v, …)"),
+                pointsText(node.value(QLatin1String("points")).toArray()), pointsJson);
+        addStart(node);
+    } else if (kind == QLatin1String("sine")) {
+        addNumber(node, QStringLiteral("freq"), tr("Frequency (Hz)"), 0, 0, inf);
+        addNumber(node, QStringLiteral("amp"), tr("Amplitude"), 1, -inf, inf);
+        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
+        addNumber(node, QStringLiteral("phase"), tr("Phase (cycles)"), 0, -inf, inf);
+    } else if (kind == QLatin1String("square")) {
+        addNumber(node, QStringLiteral("freq"), tr("Frequency (Hz)"), 0, 0, inf);
+        addNumber(node, QStringLiteral("duty"), tr("Duty"), 0.5, 0, 1);
+        addNumber(node, QStringLiteral("high"), tr("High"), 1, -inf, inf);
+        addNumber(node, QStringLiteral("low"), tr("Low"), 0, -inf, inf);
+    } else if (kind == QLatin1String("pulses")) {
+        addNumber(node, QStringLiteral("rate"), tr("Rate (Hz)"), 0, 0, inf);
+        addNumber(node, QStringLiteral("width"), tr("Width (s)"), 0, 0, inf);
+        addNumber(node, QStringLiteral("amp"), tr("Amplitude"), 1, -inf, inf);
+    } else if (kind == QLatin1String("scale")) {
+        addNumber(node, QStringLiteral("gain"), tr("Gain"), 1, -inf, inf);
+        addNumber(node, QStringLiteral("div"), tr("Divide by"), 1, -inf, inf);
+        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
+    } else if (kind == QLatin1String("clip")) {
+        addNumber(node, QStringLiteral("min"), tr("Minimum"), 0, -inf, inf);
+        addNumber(node, QStringLiteral("max"), tr("Maximum"), 1, -inf, inf);
+    } else {
+        m_form->addRow(QString(),
+                       new QLabel(tr("Its inputs are the children in the tree."), this));
+    }
+}
+
+void NodeInspector::addNumber(const QJsonObject &node, const QString &key, const QString &label,
+                              double defaultValue, double minimum, double maximum)
+{
+    auto *edit = new NumberEdit(this);
+    edit->setObjectName(fieldName(key));
+    // The `param` waveform maps through plain numbers; everywhere else a Number may bind.
+    const bool plain = node.value(QLatin1String("type")) == QLatin1String("param");
+    edit->setNumber(node.contains(key) ? node.value(key) : QJsonValue(defaultValue),
+                    plain ? QStringList() : paramNames(), minimum, maximum);
+    connect(edit, &NumberEdit::edited, this,
+            [this, key](const QJsonValue &value) { this->edit(key, value); });
+    m_form->addRow(label, edit);
+}
+
+void NodeInspector::addStart(const QJsonObject &node)
+{
+    auto *from = new QComboBox(this);
+    from->setObjectName(fieldName(QStringLiteral("from")));
+    from->addItem(tr("current value"), QStringLiteral("current"));
+    from->addItem(tr("peak since begin"), QStringLiteral("peak"));
+    from->addItem(tr("fixed value"), QStringLiteral("value"));
+    const QJsonValue value = node.value(QLatin1String("from"));
+    from->setCurrentIndex(value.isString() || value.isUndefined()
+                              ? std::max(0, from->findData(value.toString()))
+                              : 2);
+    from->setToolTip(tr("Where the envelope starts: the track's value when it began, its "
+                        "peak, or a fixed value"));
+    connect(from, &QComboBox::activated, this, [this, from] {
+        const QString choice = from->currentData().toString();
+        edit(QStringLiteral("from"), choice == QLatin1String("current")
+                                         ? QJsonValue(QJsonValue::Undefined)
+                                     : choice == QLatin1String("peak") ? QJsonValue(choice)
+                                                                       : QJsonValue(0.0));
+    });
+    m_form->addRow(tr("Starts from"), from);
+    if (from->currentIndex() == 2)
+        addNumber(node, QStringLiteral("from"), tr("Start value"), 0, -Unbounded, Unbounded);
+}
+
+void NodeInspector::addText(const QString &key, const QString &label, const QString &text,
+                            const std::function<QJsonValue(const QString &)> &toJson)
+{
+    auto *line = new QLineEdit(text, this);
+    line->setObjectName(fieldName(key));
+    connect(line, &QLineEdit::editingFinished, this, [this, key, line, toJson, text] {
+        if (line->text() == text)
+            return;
+        const QJsonValue value = toJson(line->text());
+        if (value.isNull()) {
+            line->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #E69F00; }"));
+            line->setToolTip(tr("Not understood; nothing was changed"));
+            return;
+        }
+        edit(key, value);
+    });
+    m_form->addRow(label, line);
+}
+
+void NodeInspector::edit(const QString &key, const QJsonValue &value)
+{
+    m_document.setValue(m_pointer + QLatin1Char('/') + key, value);
+}
+
+} // namespace semhap

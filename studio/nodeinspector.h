@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QJsonObject>
+#include <QWidget>
+
+#include <functional>
+
+class QFormLayout;
+class QLabel;
+
+namespace semhap {
+
+class PatternDocument;
+
+/**
+ * The parameters of the node selected in the designer's signal tree, as a form: the
+ * pattern's name and description, a track's channels, or a waveform's type and fields
+ * (numbers with their parameter bindings, start values, keyframes). Each committed edit
+ * is one undoable change of the document.
+ */
+class NodeInspector : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit NodeInspector(PatternDocument &document, QWidget *parent = nullptr);
+
+    /** Shows the node at `pointer` ("" the pattern, "/tracks/0" a track, else a waveform). */
+    void setTarget(const QString &pointer);
+    const QString &target() const { return m_pointer; }
+
+    /** The waveform types the designer offers, in menu order. */
+    static QStringList waveformTypes();
+    /** A new waveform of `type`; a combinator keeps `previous` as its (first) input. */
+    static QJsonObject waveformTemplate(const QString &type, const QJsonValue &previous);
+
+private:
+    void scheduleRebuild();
+    void rebuild();
+    void addPatternFields();
+    void addTrackFields();
+    void addWaveformFields(const QJsonObject &node);
+    void addNumber(const QJsonObject &node, const QString &key, const QString &label,
+                   double defaultValue, double minimum, double maximum);
+    void addStart(const QJsonObject &node);
+    /** A line edit; `toJson` gives null for text it does not understand, undefined to remove. */
+    void addText(const QString &key, const QString &label, const QString &text,
+                 const std::function<QJsonValue(const QString &)> &toJson);
+    void edit(const QString &key, const QJsonValue &value);
+    QStringList paramNames() const;
+
+    PatternDocument &m_document;
+    QString m_pointer;
+    QFormLayout *m_form = nullptr;
+    QLabel *m_heading = nullptr;
+    bool m_rebuildPending = false;
+};
+
+} // namespace semhap

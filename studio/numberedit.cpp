@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+#include "numberedit.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QJsonObject>
+#include <QLabel>
+
+namespace semhap {
+
+namespace {
+
+QDoubleSpinBox *makeSpin(const QString &name, const QString &prefix, QWidget *parent)
+{
+    auto *spin = new QDoubleSpinBox(parent);
+    spin->setObjectName(name);
+    spin->setDecimals(4);
+    spin->setSingleStep(0.05);
+    spin->setRange(-1e6, 1e6);
+    spin->setPrefix(prefix);
+    // valueChanged only on Enter, an arrow step or leaving: one undo step per edit.
+    spin->setKeyboardTracking(false);
+    spin->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    // The range's widest number would make the form too wide for a dock.
+    spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(QStringLiteral("-000.0000")) + 24);
+    return spin;
+}
+
+} // namespace
+
+NumberEdit::NumberEdit(QWidget *parent) : QWidget(parent)
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_source = new QComboBox(this);
+    m_source->setObjectName(QStringLiteral("source"));
+    m_source->setToolTip(tr("A fixed value, or a live parameter of the pattern"));
+    m_source->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_source->setMinimumContentsLength(6);
+    m_value = makeSpin(QStringLiteral("value"), QString(), this);
+    m_gain = makeSpin(QStringLiteral("gain"), tr("× "), this);
+    m_gain->setToolTip(tr("Gain: the value is gain × parameter + offset"));
+    m_offset = makeSpin(QStringLiteral("offset"), tr("+ "), this);
+    m_offset->setToolTip(tr("Offset: the value is gain × parameter + offset"));
+    m_curve = new QLabel(tr("through a curve (edit it in the JSON tab)"), this);
+    layout->addWidget(m_source);
+    layout->addWidget(m_value, 1);
+    layout->addWidget(m_gain, 1);
+    layout->addWidget(m_offset, 1);
+    layout->addWidget(m_curve, 1);
+    connect(m_source, &QComboBox::activated, this, [this] {
+        updateVisibility();
+        commit();
+    });
+    for (QDoubleSpinBox *spin : {m_value, m_gain, m_offset})
+        connect(spin, &QDoubleSpinBox::valueChanged, this, &NumberEdit::commit);
+}
+
+void NumberEdit::setNumber(const QJsonValue &json, const QStringList &params, double minimum,
+                           double maximum)
+{
+    m_updating = true;
+    m_source->clear();
+    m_source->addItem(tr("value"), QString());
+    for (const QString &param : params)
+        m_source->addItem(param, param);
+    m_value->setRange(minimum, maximum);
+    const QJsonObject bound = json.toObject();
+    m_curveJson = bound.value(QLatin1String("curve"));
+    if (json.isObject()) {
+        const QString param = bound.value(QLatin1String("param")).toString();
+        if (m_source->findData(param) < 0)
+            m_source->addItem(param, param);
+        m_source->setCurrentIndex(m_source->findData(param));
+        m_gain->setValue(bound.value(QLatin1String("gain")).toDouble(1.0));
+        m_offset->setValue(bound.value(QLatin1String("offset")).toDouble(0.0));
+    } else {
+        m_source->setCurrentIndex(0);
+        m_value->setValue(json.toDouble());
+        m_gain->setValue(1.0);
+        m_offset->setValue(0.0);
+    }
+    updateVisibility();
+    m_updating = false;
+}
+
+QJsonValue NumberEdit::number() const
+{
+    const QString param = m_source->currentData().toString();
+    if (param.isEmpty())
+        return m_value->value();
+    QJsonObject bound{{QStringLiteral("param"), param}};
+    if (!m_curveJson.isUndefined()) {
+        bound.insert(QStringLiteral("curve"), m_curveJson);
+        return bound;
+    }
+    if (m_gain->value() != 1.0)
+        bound.insert(QStringLiteral("gain"), m_gain->value());
+    if (m_offset->value() != 0.0)
+        bound.insert(QStringLiteral("offset"), m_offset->value());
+    return bound;
+}
+
+void NumberEdit::updateVisibility()
+{
+    const bool bound = !m_source->currentData().toString().isEmpty();
+    const bool curve = bound && !m_curveJson.isUndefined();
+    m_value->setVisible(!bound);
+    m_gain->setVisible(bound && !curve);
+    m_offset->setVisible(bound && !curve);
+    m_curve->setVisible(curve);
+}
+
+void NumberEdit::commit()
+{
+    if (!m_updating)
+        emit edited(number());
+}
+
+} // namespace semhap

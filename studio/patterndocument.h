@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "pattern.h"
+
+#include <QJsonObject>
+#include <QObject>
+#include <QUndoStack>
+
+namespace semhap {
+
+/**
+ * The pattern being designed, as its `semhap.pattern/1` JSON with an undo stack: every edit
+ * (a value at a JSON pointer, or the whole document) is an undoable command, and after
+ * each the JSON is parsed again so views can show the pattern or why it does not load.
+ * Built-in patterns are opened read-only.
+ */
+class PatternDocument : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit PatternDocument(QObject *parent = nullptr);
+
+    /** Starts over with `json` (no undo history): what opening a file or a built-in does. */
+    void reset(const QJsonObject &json, const QString &path, bool readOnly);
+    const QJsonObject &json() const { return m_json; }
+    /** The parsed pattern, or null when the JSON does not load (see error()). */
+    const PatternPtr &pattern() const { return m_pattern; }
+    const LoadError &error() const { return m_error; }
+
+    /** Where the document is saved; empty for a built-in or a new pattern. */
+    const QString &path() const { return m_path; }
+    void setPath(const QString &path);
+    bool isReadOnly() const { return m_readOnly; }
+    bool isModified() const { return !m_undo.isClean(); }
+    QUndoStack *undoStack() { return &m_undo; }
+
+    /** Replaces the whole document, undoably (`text` names the step in the Edit menu). */
+    void setJson(const QJsonObject &json, const QString &text);
+    /**
+     * Sets the value at an RFC 6901 `pointer` (an undefined value removes the key or array
+     * item; one past an array's end appends), undoably.
+     */
+    void setValue(const QString &pointer, const QJsonValue &value);
+    /** The value at `pointer`; undefined when there is none. */
+    QJsonValue value(const QString &pointer) const;
+
+    /** Writes the JSON to `path` (making its folder) and marks the document saved there. */
+    bool save(const QString &path, QString *error);
+
+    /** The value at `pointer` inside `root`. */
+    static QJsonValue valueAt(const QJsonValue &root, const QString &pointer);
+    /** `root` with the value at `pointer` replaced (or removed when `value` is undefined). */
+    static QJsonValue withValue(const QJsonValue &root, const QString &pointer,
+                                const QJsonValue &value);
+
+signals:
+    /** The JSON changed (an edit, an undo, a reset); pattern() and error() are current. */
+    void changed();
+    /** The path, read-only state or saved state changed. */
+    void stateChanged();
+
+private:
+    class SetJsonCommand;
+    friend class SetJsonCommand;
+    void apply(const QJsonObject &json);
+
+    QJsonObject m_json;
+    PatternPtr m_pattern;
+    LoadError m_error;
+    QString m_path;
+    bool m_readOnly = false;
+    QUndoStack m_undo;
+};
+
+} // namespace semhap

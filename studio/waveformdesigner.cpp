@@ -1,0 +1,995 @@
+// SPDX-License-Identifier: MIT
+#include "waveformdesigner.h"
+
+#include "devicemanager.h"
+#include "hapticconverter.h"
+#include "jsonreader.h"
+#include "nodeinspector.h"
+#include "patternauditioner.h"
+#include "patterndocument.h"
+#include "patternlibrary.h"
+#include "patternpreview.h"
+#include "transportfactory.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QPainter>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSlider>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+constexpr int PointerRole = Qt::UserRole;
+constexpr int PathRole = Qt::UserRole + 1; ///< library: a user file's path; empty: built-in
+/** The preview shows at most this long a stretch, whatever the end time. */
+constexpr double MaxPreview = 30.0;
+
+/** A small padlock, drawn so it matches any style: built-ins are read-only. */
+QIcon lockIcon()
+{
+    QPixmap pixmap(16, 16);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(0x55, 0x55, 0x55), 1.6));
+    painter.drawArc(QRectF(4.5, 1.5, 7, 8), 0, 180 * 16);
+    painter.drawLine(QPointF(4.5, 5.5), QPointF(4.5, 7.5));
+    painter.drawLine(QPointF(11.5, 5.5), QPointF(11.5, 7.5));
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0x55, 0x55, 0x55));
+    painter.drawRoundedRect(QRectF(2.5, 7, 11, 8), 1.5, 1.5);
+    return QIcon(pixmap);
+}
+
+/** A number or a bound parameter, compactly: `0.5`, `intensity`, `18·intensity+2`. */
+QString numberText(const QJsonValue &value)
+{
+    if (value.isDouble())
+        return QLocale().toString(value.toDouble(), 'g', 4);
+    if (value.isString())
+        return value.toString();
+    const QJsonObject bound = value.toObject();
+    QString text = bound.value(QLatin1String("param")).toString();
+    if (bound.contains(QLatin1String("curve")))
+        return text + QStringLiteral("→curve");
+    if (bound.contains(QLatin1String("gain")))
+        text = QLocale().toString(bound.value(QLatin1String("gain")).toDouble(), 'g', 4) +
+               QStringLiteral("·") + text;
+    if (bound.contains(QLatin1String("offset")))
+        text += QStringLiteral("+") +
+                QLocale().toString(bound.value(QLatin1String("offset")).toDouble(), 'g', 4);
+    return text;
+}
+
+/** `ramp  to 1, time 0.5`: a waveform's type and its own values, for the tree. */
+QString waveformSummary(const QJsonObject &node)
+{
+    QStringList values;
+    for (auto it = node.begin(); it != node.end(); ++it) {
+        const QString &key = it.key();
+        if (key == QLatin1String("type") || key == QLatin1String("of") ||
+            key == QLatin1String("in"))
+            continue;
+        if (key == QLatin1String("points"))
+            values.append(
+                WaveformDesigner::tr("%n point(s)", nullptr, int(it.value().toArray().size())));
+        else
+            values.append(QStringLiteral("%1 %2").arg(key, numberText(it.value())));
+    }
+    const QString type = node.value(QLatin1String("type")).toString();
+    return values.isEmpty()
+               ? type
+               : QStringLiteral("%1  %2").arg(type, values.join(QStringLiteral(", ")));
+}
+
+} // namespace
+
+WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
+    : QWidget(parent), m_devices(devices),
+      m_userFolder(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                   QStringLiteral("/patterns"))
+{
+    setObjectName(QStringLiteral("waveformDesigner"));
+    m_document = new PatternDocument(this);
+    m_auditioner = new PatternAuditioner(this);
+    m_preview = new PatternPreview(this);
+    m_inspector = new NodeInspector(*m_document, this);
+    m_inspector->setObjectName(QStringLiteral("inspector"));
+
+    createActions();
+    auto *toolBar = new QToolBar(this);
+    toolBar->setObjectName(QStringLiteral("designerToolBar"));
+    toolBar->setIconSize(QSize(16, 16));
+    toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    toolBar->addActions(actions());
+
+    m_banner = new QLabel(this);
+    m_banner->setObjectName(QStringLiteral("banner"));
+    m_banner->setWordWrap(true);
+    m_banner->setStyleSheet(QStringLiteral("QLabel { background: #E3F0FA; border: 1px solid "
+                                           "#0072B2; padding: 4px; }"));
+
+    auto *top = new QSplitter(Qt::Horizontal, this);
+    top->addWidget(createLibrary());
+    top->addWidget(createEditor());
+    top->setStretchFactor(0, 0);
+    top->setStretchFactor(1, 1);
+    top->setSizes({130, 520});
+
+    auto *bottom = new QWidget(this);
+    auto *bottomLayout = new QVBoxLayout(bottom);
+    bottomLayout->setContentsMargins(0, 0, 0, 0);
+    bottomLayout->addWidget(createControls());
+    bottomLayout->addWidget(m_preview, 1);
+
+    auto *split = new QSplitter(Qt::Vertical, this);
+    split->setObjectName(QStringLiteral("designerSplit"));
+    split->addWidget(top);
+    split->addWidget(bottom);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+    split->setChildrenCollapsible(false);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->setSpacing(2);
+    layout->addWidget(toolBar);
+    layout->addWidget(m_banner);
+    layout->addWidget(split, 1);
+
+    connect(m_document, &PatternDocument::changed, this, &WaveformDesigner::onDocumentChanged);
+    connect(m_document, &PatternDocument::stateChanged, this, &WaveformDesigner::onStateChanged);
+    connect(m_auditioner, &PatternAuditioner::playingChanged, this, [this](bool playing) {
+        m_endButton->setEnabled(playing);
+        m_stopButton->setEnabled(playing);
+        if (!playing)
+            m_auditionStatus->setText(tr("Stopped"));
+    });
+    auto *statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, [this] {
+        if (!m_auditioner->isPlaying())
+            return;
+        Transport *transport = auditionTransport();
+        const QString where = m_devicePicker->currentText();
+        QString text = m_auditioner->isActive() ? tr("Playing on %1").arg(where)
+                                                : tr("Releasing on %1").arg(where);
+        if (transport && !transport->isArmed())
+            text += tr(" — disarmed: arm it in the Devices panel to feel it");
+        m_auditionStatus->setText(text);
+    });
+    statusTimer->start(250);
+
+    refreshLibrary();
+    refreshDevices();
+    openBuiltin(QStringLiteral("air.squeeze")); // the canonical confirmation
+}
+
+WaveformDesigner::~WaveformDesigner()
+{
+    m_auditioner->stop();
+}
+
+void WaveformDesigner::createActions()
+{
+    const auto action = [this](const QString &text, const QString &name,
+                               const QKeySequence &shortcut, void (WaveformDesigner::*slot)()) {
+        auto *a = new QAction(text, this);
+        a->setObjectName(name);
+        if (!shortcut.isEmpty()) {
+            a->setShortcut(shortcut);
+            a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+            a->setToolTip(
+                QStringLiteral("%1 (%2)").arg(text.chopped(text.endsWith(QChar(0x2026))),
+                                              shortcut.toString(QKeySequence::NativeText)));
+        }
+        if (slot)
+            connect(a, &QAction::triggered, this, slot);
+        addAction(a);
+        return a;
+    };
+    action(tr("New"), QStringLiteral("newPattern"), QKeySequence::New,
+           &WaveformDesigner::newPattern);
+    // No Ctrl+O: the main window opens scenes with it, and a shared shortcut fires neither.
+    action(tr("Open…"), QStringLiteral("openPattern"), {}, nullptr)
+        ->setToolTip(tr("Open a pattern, an AHAP or a .haptic file"));
+    connect(findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this,
+            [this] {
+                const QString path =
+                    QFileDialog::getOpenFileName(this, tr("Open pattern"), m_userFolder,
+                                                 tr("Patterns and haptic files "
+                                                    "(*.json *.ahap *.haptic)"));
+                QString error;
+                if (!path.isEmpty() && !openFile(path, &error))
+                    reportError(tr("Could not open %1").arg(path), error);
+            });
+    m_saveAction = action(tr("Save"), QStringLiteral("savePattern"), QKeySequence::Save,
+                          &WaveformDesigner::save);
+    action(tr("Save as…"), QStringLiteral("saveAsPattern"), QKeySequence::SaveAs,
+           &WaveformDesigner::saveAs);
+    m_duplicateAction = action(tr("Duplicate"), QStringLiteral("duplicatePattern"), {},
+                               &WaveformDesigner::duplicate);
+    m_duplicateAction->setToolTip(tr("Make an editable copy of this pattern"));
+    action(tr("Import…"), QStringLiteral("importPattern"), {}, &WaveformDesigner::importFile)
+        ->setToolTip(tr("Import an Apple AHAP or a Meta .haptic file as a new pattern"));
+    action(tr("Export…"), QStringLiteral("exportPattern"), {}, &WaveformDesigner::exportFile)
+        ->setToolTip(tr("Export the pattern as AHAP or .haptic (docs/convert.md)"));
+    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("Undo"));
+    m_undoAction->setObjectName(QStringLiteral("undo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(m_undoAction);
+    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("Redo"));
+    m_redoAction->setObjectName(QStringLiteral("redo"));
+    m_redoAction->setShortcut(QKeySequence::Redo);
+    m_redoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(m_redoAction);
+}
+
+QWidget *WaveformDesigner::createLibrary()
+{
+    auto *box = new QWidget(this);
+    auto *layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(new QLabel(tr("Library"), box));
+    m_library = new QListWidget(box);
+    m_library->setObjectName(QStringLiteral("library"));
+    m_library->setToolTip(
+        tr("Built-in patterns (locked) and your own, from %1").arg(m_userFolder));
+    connect(m_library, &QListWidget::itemActivated, this, &WaveformDesigner::openLibraryItem);
+    connect(m_library, &QListWidget::itemClicked, this, &WaveformDesigner::openLibraryItem);
+    layout->addWidget(m_library, 1);
+    return box;
+}
+
+QWidget *WaveformDesigner::createEditor()
+{
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("editorTabs"));
+
+    auto *treePage = new QSplitter(Qt::Horizontal, m_tabs);
+    auto *treeBox = new QWidget(treePage);
+    auto *treeLayout = new QVBoxLayout(treeBox);
+    treeLayout->setContentsMargins(0, 0, 0, 0);
+    m_tree = new QTreeWidget(treeBox);
+    m_tree->setObjectName(QStringLiteral("signalTree"));
+    m_tree->setHeaderHidden(true);
+    m_tree->setColumnCount(1);
+    m_tree->header()->setStretchLastSection(true);
+    connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem *item) {
+        if (!item)
+            return;
+        m_inspector->setTarget(item->data(0, PointerRole).toString());
+        updateStructureButtons();
+    });
+    treeLayout->addWidget(m_tree, 1);
+    auto *buttons = new QGridLayout;
+    const auto button = [treeBox](const QString &text, const QString &name, const QString &tip) {
+        auto *b = new QPushButton(text, treeBox);
+        b->setObjectName(name);
+        b->setToolTip(tip);
+        return b;
+    };
+    m_addTrack = button(tr("Add track"), QStringLiteral("addTrack"),
+                        tr("A new track, driving every channel"));
+    m_addPart = button(tr("Add part"), QStringLiteral("addPart"),
+                       tr("Give the selected track an attack, a sustain or a release"));
+    auto *parts = new QMenu(m_addPart);
+    parts->addAction(tr("Attack"), this, [this] { addPart(QStringLiteral("attack")); });
+    parts->addAction(tr("Sustain"), this, [this] { addPart(QStringLiteral("sustain")); });
+    parts->addAction(tr("Release"), this, [this] { addPart(QStringLiteral("release")); });
+    m_addPart->setMenu(parts);
+    m_addInput = button(tr("Add input"), QStringLiteral("addInput"),
+                        tr("Another input of the selected sum, product or sequence"));
+    m_remove = button(tr("Remove"), QStringLiteral("removeNode"), tr("Remove the selected node"));
+    connect(m_addTrack, &QPushButton::clicked, this, &WaveformDesigner::addTrack);
+    connect(m_addInput, &QPushButton::clicked, this, &WaveformDesigner::addInput);
+    connect(m_remove, &QPushButton::clicked, this, &WaveformDesigner::removeNode);
+    buttons->addWidget(m_addTrack, 0, 0);
+    buttons->addWidget(m_addPart, 0, 1);
+    buttons->addWidget(m_addInput, 1, 0);
+    buttons->addWidget(m_remove, 1, 1);
+    treeLayout->addLayout(buttons);
+
+    auto *scroll = new QScrollArea(treePage);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_inspector);
+    treePage->addWidget(treeBox);
+    treePage->addWidget(scroll);
+    treePage->setStretchFactor(0, 2);
+    treePage->setStretchFactor(1, 3);
+    treePage->setSizes({200, 300});
+    treePage->setChildrenCollapsible(false);
+    scroll->setMinimumWidth(280);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    treeBox->setMinimumWidth(180);
+    m_tabs->addTab(treePage, tr("Signal tree"));
+
+    auto *jsonPage = new QWidget(m_tabs);
+    auto *jsonLayout = new QVBoxLayout(jsonPage);
+    jsonLayout->setContentsMargins(0, 0, 0, 0);
+    m_jsonText = new QPlainTextEdit(jsonPage);
+    m_jsonText->setObjectName(QStringLiteral("jsonText"));
+    m_jsonText->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_jsonText->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_jsonError = new QLabel(jsonPage);
+    m_jsonError->setObjectName(QStringLiteral("jsonError"));
+    m_jsonError->setWordWrap(true);
+    m_jsonError->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    jsonLayout->addWidget(m_jsonText, 1);
+    jsonLayout->addWidget(m_jsonError);
+    auto *debounce = new QTimer(this);
+    debounce->setSingleShot(true);
+    debounce->setInterval(300);
+    connect(debounce, &QTimer::timeout, this, &WaveformDesigner::applyJsonText);
+    connect(m_jsonText, &QPlainTextEdit::textChanged, this, [this, debounce] {
+        if (!m_updatingText)
+            debounce->start();
+    });
+    m_tabs->addTab(jsonPage, tr("JSON"));
+    return m_tabs;
+}
+
+QWidget *WaveformDesigner::createControls()
+{
+    auto *box = new QWidget(this);
+    auto *grid = new QGridLayout(box);
+    grid->setContentsMargins(2, 2, 2, 2);
+
+    m_modelPicker = new QComboBox(box);
+    m_modelPicker->setObjectName(QStringLiteral("modelPicker"));
+    m_modelPicker->addItems(DeviceModelLibrary::builtinNames());
+    m_modelPicker->setToolTip(tr("The device model the pattern is for; the preview predicts "
+                                 "its output"));
+    connect(m_modelPicker, &QComboBox::activated, this, [this] {
+        m_document->setValue(QStringLiteral("/model"), m_modelPicker->currentText());
+    });
+    m_intensity = new QSlider(Qt::Horizontal, box);
+    m_intensity->setObjectName(QStringLiteral("intensity"));
+    m_intensity->setRange(0, 100);
+    m_intensity->setValue(100);
+    m_intensity->setToolTip(tr("The intensity the pattern begins with (preview and audition)"));
+    m_intensityLabel = new QLabel(box);
+    m_intensityLabel->setMinimumWidth(
+        QFontMetrics(font()).horizontalAdvance(QStringLiteral("0.00 ")));
+    connect(m_intensity, &QSlider::valueChanged, this, [this](int value) {
+        m_auditioner->setIntensity(value / 100.0);
+        updatePreview();
+    });
+    m_endAt = new QDoubleSpinBox(box);
+    m_endAt->setObjectName(QStringLiteral("endAt"));
+    m_endAt->setRange(0.0, MaxPreview);
+    m_endAt->setDecimals(2);
+    m_endAt->setSingleStep(0.1);
+    m_endAt->setValue(1.5);
+    m_endAt->setSuffix(tr(" s"));
+    m_endAt->setKeyboardTracking(false);
+    m_endAt->setToolTip(tr("When the preview ends the pattern (its release starts)"));
+    connect(m_endAt, &QDoubleSpinBox::valueChanged, this, &WaveformDesigner::updatePreview);
+    m_hold = new QCheckBox(tr("Hold"), box);
+    m_hold->setObjectName(QStringLiteral("hold"));
+    m_hold->setToolTip(tr("Preview without an end: the sustain goes on"));
+    connect(m_hold, &QCheckBox::toggled, this, [this](bool hold) {
+        m_endAt->setEnabled(!hold);
+        updatePreview();
+    });
+
+    grid->addWidget(new QLabel(tr("Model"), box), 0, 0);
+    grid->addWidget(m_modelPicker, 0, 1);
+    grid->addWidget(new QLabel(tr("Intensity"), box), 0, 2);
+    grid->addWidget(m_intensity, 0, 3);
+    grid->addWidget(m_intensityLabel, 0, 4);
+    grid->addWidget(new QLabel(tr("End at"), box), 0, 5);
+    grid->addWidget(m_endAt, 0, 6);
+    grid->addWidget(m_hold, 0, 7);
+
+    m_devicePicker = new QComboBox(box);
+    m_devicePicker->setObjectName(QStringLiteral("auditionDevice"));
+    m_devicePicker->setToolTip(tr("Where the audition plays: a bound device of the run (the run "
+                                  "pauses), or a virtual one"));
+    m_devicePicker->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_devicePicker->setMinimumContentsLength(12);
+    m_beginButton = new QPushButton(tr("Audition"), box);
+    m_beginButton->setObjectName(QStringLiteral("auditionBegin"));
+    m_beginButton->setToolTip(tr("Begin the pattern on the device now (again: restart it)"));
+    m_beginButton->setStyleSheet(
+        QStringLiteral("QPushButton { color: #0072B2; font-weight: bold; }"));
+    m_endButton = new QPushButton(tr("End"), box);
+    m_endButton->setObjectName(QStringLiteral("auditionEnd"));
+    m_endButton->setToolTip(tr("End the pattern: its release plays"));
+    m_stopButton = new QPushButton(tr("Stop"), box);
+    m_stopButton->setObjectName(QStringLiteral("auditionStop"));
+    m_stopButton->setToolTip(tr("Send the device to zero now (Esc stops everything)"));
+    m_stopButton->setStyleSheet(
+        QStringLiteral("QPushButton { background: #D55E00; color: white; font-weight: bold; "
+                       "border-radius: 3px; padding: 3px 10px; }"
+                       "QPushButton:disabled { background: #E8B79A; }"));
+    m_endButton->setEnabled(false);
+    m_stopButton->setEnabled(false);
+    connect(m_beginButton, &QPushButton::clicked, this, &WaveformDesigner::beginAudition);
+    connect(m_endButton, &QPushButton::clicked, this, &WaveformDesigner::endAudition);
+    connect(m_stopButton, &QPushButton::clicked, this, &WaveformDesigner::stopAudition);
+    m_auditionStatus = new QLabel(tr("Stopped"), box);
+    m_auditionStatus->setObjectName(QStringLiteral("auditionStatus"));
+    m_auditionStatus->setWordWrap(true);
+
+    auto *audition = new QHBoxLayout;
+    audition->addWidget(new QLabel(tr("Audition on"), box));
+    audition->addWidget(m_devicePicker, 1);
+    audition->addWidget(m_beginButton);
+    audition->addWidget(m_endButton);
+    audition->addWidget(m_stopButton);
+    grid->addLayout(audition, 1, 0, 1, 8);
+    grid->addWidget(m_auditionStatus, 2, 0, 1, 8);
+    grid->setColumnStretch(3, 1);
+    return box;
+}
+
+void WaveformDesigner::setUserFolder(const QString &folder)
+{
+    m_userFolder = folder;
+    refreshLibrary();
+}
+
+void WaveformDesigner::refreshLibrary()
+{
+    m_library->clear();
+    for (const QString &name : PatternLibrary::builtinNames()) {
+        auto *item = new QListWidgetItem(lockIcon(), name, m_library);
+        item->setToolTip(tr("Built-in, read-only: duplicate it to edit"));
+    }
+    const QDir folder(m_userFolder);
+    for (const QFileInfo &file :
+         folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        auto *item = new QListWidgetItem(file.completeBaseName(), m_library);
+        item->setData(PathRole, file.absoluteFilePath());
+        item->setToolTip(file.absoluteFilePath());
+    }
+    if (!m_document->path().isEmpty() && !QFileInfo::exists(m_document->path())) {
+        auto *item = new QListWidgetItem(
+            tr("%1 (not saved yet)").arg(QFileInfo(m_document->path()).completeBaseName()),
+            m_library);
+        item->setData(PathRole, m_document->path());
+        QFont italic = item->font();
+        italic.setItalic(true);
+        item->setFont(italic);
+    }
+    // Mark the open pattern.
+    for (int i = 0; i < m_library->count(); ++i) {
+        QListWidgetItem *item = m_library->item(i);
+        const QString path = item->data(PathRole).toString();
+        const bool open =
+            path.isEmpty()
+                ? m_document->isReadOnly() &&
+                      item->text() == m_document->json().value(QLatin1String("name")).toString()
+                : QFileInfo(path) == QFileInfo(m_document->path());
+        if (open)
+            m_library->setCurrentItem(item);
+    }
+}
+
+void WaveformDesigner::refreshDevices()
+{
+    const QString current = m_devicePicker->currentData().toString();
+    m_devicePicker->clear();
+    m_devicePicker->addItem(tr("virtual (audition only)"), QString());
+    if (m_devices) {
+        for (const BoundDevice &device : m_devices->status())
+            m_devicePicker->addItem(QStringLiteral("%1 — %2").arg(device.name, device.model),
+                                    device.name);
+    }
+    m_devicePicker->setCurrentIndex(std::max(0, m_devicePicker->findData(current)));
+}
+
+void WaveformDesigner::openLibraryItem()
+{
+    QListWidgetItem *item = m_library->currentItem();
+    if (!item)
+        return;
+    const QString path = item->data(PathRole).toString();
+    if (path.isEmpty()) {
+        if (!(m_document->isReadOnly() &&
+              m_document->json().value(QLatin1String("name")).toString() == item->text()))
+            openBuiltin(item->text());
+        return;
+    }
+    if (QFileInfo(path) == QFileInfo(m_document->path()))
+        return;
+    QString error;
+    if (!openFile(path, &error))
+        reportError(tr("Could not open %1").arg(path), error);
+}
+
+void WaveformDesigner::openBuiltin(const QString &name)
+{
+    const PatternPtr pattern = PatternLibrary::builtin(name);
+    if (!pattern)
+        return;
+    stopAudition();
+    m_document->reset(pattern->toJson(), QString(), true);
+    selectNode(QString());
+    refreshLibrary();
+}
+
+bool WaveformDesigner::openFile(const QString &path, QString *error)
+{
+    HapticFileFormat format;
+    LoadError loadError;
+    QStringList warnings;
+    QJsonObject json;
+    ConvertOptions options;
+    const DeviceModelPtr model = previewModel();
+    if (model) {
+        options.model = model->name();
+        options.modulationLimit = model->modulationLimit();
+    }
+    if (!HapticConverter::formatOf(path, &format, &loadError) ||
+        !HapticConverter::readPattern(path, options, &json, &warnings, &loadError)) {
+        *error = loadError.toString();
+        return false;
+    }
+    stopAudition();
+    // An import is a new pattern: it is saved into the user folder, not over the source.
+    const bool imported = format != HapticFileFormat::Semhap;
+    m_document->reset(json, imported ? QString() : path, false);
+    if (imported)
+        m_document->setPath(
+            QDir(m_userFolder)
+                .filePath(QFileInfo(path).completeBaseName() + QStringLiteral(".json")));
+    selectNode(QString());
+    refreshLibrary();
+    if (!warnings.isEmpty())
+        emit message(warnings.join(QStringLiteral("; ")));
+    return true;
+}
+
+bool WaveformDesigner::saveFile(const QString &path, QString *error)
+{
+    HapticFileFormat format;
+    LoadError loadError;
+    if (!HapticConverter::formatOf(path, &format, &loadError)) {
+        *error = loadError.toString();
+        return false;
+    }
+    if (format == HapticFileFormat::Semhap) {
+        if (!m_document->pattern()) {
+            *error = m_document->error().toString();
+            return false;
+        }
+        if (!m_document->save(path, error))
+            return false;
+        refreshLibrary();
+        return true;
+    }
+    ConvertOptions options;
+    const DeviceModelPtr model = previewModel();
+    options.modulationLimit = model ? model->modulationLimit() : 0.0;
+    if (!m_hold->isChecked())
+        options.releaseAt = m_endAt->value();
+    QStringList warnings;
+    if (!HapticConverter::writePattern(m_document->json(), path, options, &warnings, &loadError)) {
+        *error = loadError.toString();
+        return false;
+    }
+    emit message(warnings.isEmpty() ? tr("Exported %1").arg(path)
+                                    : warnings.join(QStringLiteral("; ")));
+    return true;
+}
+
+void WaveformDesigner::duplicate()
+{
+    QJsonObject json = m_document->json();
+    const QString base = json.value(QLatin1String("name")).toString();
+    QString name = base + QStringLiteral(".copy");
+    for (int n = 2; QFileInfo::exists(QDir(m_userFolder).filePath(name + QStringLiteral(".json")));
+         ++n)
+        name = QStringLiteral("%1.copy%2").arg(base).arg(n);
+    json.insert(QStringLiteral("name"), name);
+    stopAudition();
+    m_document->reset(json, QDir(m_userFolder).filePath(name + QStringLiteral(".json")), false);
+    // Unsaved until the first save; the undo stack starts dirty so Save is offered.
+    m_document->undoStack()->resetClean();
+    selectNode(QString());
+    refreshLibrary();
+}
+
+void WaveformDesigner::newPattern()
+{
+    const DeviceModelPtr model = previewModel();
+    QString name = QStringLiteral("my.pattern");
+    for (int n = 2; QFileInfo::exists(QDir(m_userFolder).filePath(name + QStringLiteral(".json")));
+         ++n)
+        name = QStringLiteral("my.pattern%1").arg(n);
+    const QJsonObject json{
+        {QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+        {QStringLiteral("name"), name},
+        {QStringLiteral("model"), model ? model->name() : QStringLiteral("lra4")},
+        {QStringLiteral("tracks"),
+         QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                                {QStringLiteral("attack"),
+                                 NodeInspector::waveformTemplate(QStringLiteral("ramp"), {})},
+                                {QStringLiteral("sustain"),
+                                 NodeInspector::waveformTemplate(QStringLiteral("const"), {})},
+                                {QStringLiteral("release"),
+                                 QJsonObject{{QStringLiteral("type"), QStringLiteral("ramp")},
+                                             {QStringLiteral("to"), 0},
+                                             {QStringLiteral("time"), 0.5}}}}}}};
+    stopAudition();
+    m_document->reset(json, QDir(m_userFolder).filePath(name + QStringLiteral(".json")), false);
+    m_document->undoStack()->resetClean();
+    selectNode(QString());
+    refreshLibrary();
+}
+
+void WaveformDesigner::save()
+{
+    if (m_document->isReadOnly() || m_document->path().isEmpty()) {
+        saveAs();
+        return;
+    }
+    QString error;
+    if (!saveFile(m_document->path(), &error))
+        reportError(tr("Could not save"), error);
+    else
+        emit message(tr("Saved %1").arg(m_document->path()));
+}
+
+void WaveformDesigner::saveAs()
+{
+    const QString name = m_document->json().value(QLatin1String("name")).toString();
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save pattern"), QDir(m_userFolder).filePath(name + QStringLiteral(".json")),
+        tr("Patterns (*.json)"));
+    QString error;
+    if (!path.isEmpty() && !saveFile(path, &error))
+        reportError(tr("Could not save %1").arg(path), error);
+}
+
+void WaveformDesigner::importFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import haptic file"), QString(),
+                                                      tr("Haptic files (*.ahap *.haptic)"));
+    QString error;
+    if (!path.isEmpty() && !openFile(path, &error))
+        reportError(tr("Could not import %1").arg(path), error);
+}
+
+void WaveformDesigner::exportFile()
+{
+    const QString name = m_document->json().value(QLatin1String("name")).toString();
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export pattern"), name + QStringLiteral(".ahap"),
+                                     tr("Apple AHAP (*.ahap);;Meta Haptics (*.haptic)"));
+    QString error;
+    if (!path.isEmpty() && !saveFile(path, &error))
+        reportError(tr("Could not export %1").arg(path), error);
+}
+
+void WaveformDesigner::reportError(const QString &what, const QString &error)
+{
+    m_auditionStatus->setText(QStringLiteral("%1: %2").arg(what, error));
+    emit message(QStringLiteral("%1: %2").arg(what, error));
+}
+
+void WaveformDesigner::onDocumentChanged()
+{
+    rebuildTree();
+    updateJsonText();
+    updatePreview();
+    const QString model = m_document->json().value(QLatin1String("model")).toString();
+    if (m_modelPicker->findText(model) >= 0)
+        m_modelPicker->setCurrentText(model);
+}
+
+void WaveformDesigner::onStateChanged()
+{
+    const bool readOnly = m_document->isReadOnly();
+    m_banner->setVisible(readOnly || m_document->isModified() || !m_document->path().isEmpty());
+    if (readOnly)
+        m_banner->setText(tr("<b>%1</b> is built in and read-only. <b>Duplicate</b> it to edit "
+                             "a copy.")
+                              .arg(m_document->json().value(QLatin1String("name")).toString()));
+    else
+        m_banner->setText(tr("%1%2").arg(
+            m_document->path().isEmpty() ? tr("New pattern")
+                                         : QDir::toNativeSeparators(m_document->path()),
+            m_document->isModified() ? tr(" — not saved") : QString()));
+    m_jsonText->setReadOnly(readOnly);
+    m_modelPicker->setEnabled(!readOnly);
+    m_saveAction->setEnabled(!readOnly);
+    for (QPushButton *b : {m_addTrack, m_addPart, m_addInput, m_remove})
+        b->setEnabled(!readOnly);
+    updateStructureButtons();
+}
+
+void WaveformDesigner::rebuildTree()
+{
+    const QString selected =
+        m_tree->currentItem() ? m_tree->currentItem()->data(0, PointerRole).toString() : QString();
+    const QSignalBlocker blocker(m_tree);
+    m_tree->clear();
+    const QJsonObject &json = m_document->json();
+    auto *root =
+        new QTreeWidgetItem(m_tree, {tr("Pattern %1 (%2)")
+                                         .arg(json.value(QLatin1String("name")).toString(),
+                                              json.value(QLatin1String("model")).toString())});
+    root->setData(0, PointerRole, QString());
+    const QJsonArray tracks = json.value(QLatin1String("tracks")).toArray();
+    for (int i = 0; i < tracks.size(); ++i) {
+        const QJsonObject track = tracks.at(i).toObject();
+        QStringList channels;
+        for (const QJsonValue &c : track.value(QLatin1String("channels")).toArray())
+            channels.append(c.toString());
+        const QString pointer = QStringLiteral("/tracks/%1").arg(i);
+        auto *item = new QTreeWidgetItem(
+            root, {tr("Track %1: %2").arg(i + 1).arg(channels.join(QStringLiteral(", ")))});
+        item->setData(0, PointerRole, pointer);
+        const std::pair<QString, QString> parts[] = {{QStringLiteral("attack"), tr("Attack")},
+                                                     {QStringLiteral("sustain"), tr("Sustain")},
+                                                     {QStringLiteral("release"), tr("Release")}};
+        for (const auto &[key, label] : parts) {
+            if (track.contains(key))
+                addTreeNode(item, label, pointer + QLatin1Char('/') + key, track.value(key));
+        }
+    }
+    m_tree->expandAll();
+    m_tree->blockSignals(false);
+    selectNode(selected);
+}
+
+void WaveformDesigner::addTreeNode(QTreeWidgetItem *parent, const QString &label,
+                                   const QString &pointer, const QJsonValue &node)
+{
+    const QJsonObject object = node.toObject();
+    auto *item = new QTreeWidgetItem(
+        parent, {QStringLiteral("%1: %2").arg(label, waveformSummary(object))});
+    item->setData(0, PointerRole, pointer);
+    item->setToolTip(0, QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)));
+    const QJsonArray children = object.value(QLatin1String("of")).toArray();
+    for (int i = 0; i < children.size(); ++i)
+        addTreeNode(item, QString::number(i + 1), pointer + QStringLiteral("/of/%1").arg(i),
+                    children.at(i));
+    if (object.contains(QLatin1String("in")))
+        addTreeNode(item, tr("in"), pointer + QStringLiteral("/in"),
+                    object.value(QLatin1String("in")));
+}
+
+void WaveformDesigner::selectNode(const QString &pointer)
+{
+    QTreeWidgetItem *found = m_tree->topLevelItem(0);
+    for (QTreeWidgetItemIterator it(m_tree); *it; ++it) {
+        if ((*it)->data(0, PointerRole).toString() == pointer)
+            found = *it;
+    }
+    if (found) {
+        m_tree->setCurrentItem(found);
+        m_inspector->setTarget(found->data(0, PointerRole).toString());
+    }
+    updateStructureButtons();
+}
+
+/** What the selected node allows: inputs for list combinators, parts for tracks. */
+void WaveformDesigner::updateStructureButtons()
+{
+    if (m_document->isReadOnly())
+        return;
+    const QString pointer = m_inspector->target();
+    const QString type = m_document->value(pointer + QStringLiteral("/type")).toString();
+    m_addInput->setEnabled(type == QLatin1String("sum") || type == QLatin1String("product") ||
+                           type == QLatin1String("sequence"));
+    m_addPart->setEnabled(pointer.startsWith(QLatin1String("/tracks/")));
+    const bool isTrack = pointer.count(QLatin1Char('/')) == 2;
+    const int tracks = int(m_document->value(QStringLiteral("/tracks")).toArray().size());
+    const bool inList =
+        pointer.section(QLatin1Char('/'), -2, -2) == QLatin1String("of") &&
+        m_document->value(pointer.section(QLatin1Char('/'), 0, -2)).toArray().size() > 1;
+    const bool isPart = pointer.count(QLatin1Char('/')) == 3;
+    m_remove->setEnabled((isTrack && tracks > 1) || isPart || inList);
+}
+
+void WaveformDesigner::addTrack()
+{
+    const int index = int(m_document->value(QStringLiteral("/tracks")).toArray().size());
+    m_document->setValue(
+        QStringLiteral("/tracks/%1").arg(index),
+        QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                    {QStringLiteral("sustain"),
+                     NodeInspector::waveformTemplate(QStringLiteral("const"), {})}});
+    selectNode(QStringLiteral("/tracks/%1").arg(index));
+}
+
+void WaveformDesigner::addPart(const QString &part)
+{
+    const QString track = m_inspector->target().section(QLatin1Char('/'), 0, 2);
+    if (!track.startsWith(QLatin1String("/tracks/")))
+        return;
+    const QString pointer = track + QLatin1Char('/') + part;
+    if (m_document->value(pointer).isUndefined()) {
+        QJsonObject node = NodeInspector::waveformTemplate(
+            part == QLatin1String("sustain") ? QStringLiteral("const") : QStringLiteral("ramp"),
+            {});
+        if (part == QLatin1String("release"))
+            node.insert(QStringLiteral("to"), 0);
+        m_document->setValue(pointer, node);
+    }
+    selectNode(pointer);
+}
+
+void WaveformDesigner::addInput()
+{
+    const QString list = m_inspector->target() + QStringLiteral("/of");
+    const int index = int(m_document->value(list).toArray().size());
+    m_document->setValue(list + QStringLiteral("/%1").arg(index),
+                         NodeInspector::waveformTemplate(QStringLiteral("const"), {}));
+    selectNode(list + QStringLiteral("/%1").arg(index));
+}
+
+void WaveformDesigner::removeNode()
+{
+    const QString pointer = m_inspector->target();
+    if (pointer.isEmpty())
+        return;
+    m_document->setValue(pointer, QJsonValue(QJsonValue::Undefined));
+    selectNode(
+        pointer.section(QLatin1Char('/'), 0, pointer.contains(QLatin1String("/of/")) ? -3 : -2));
+}
+
+void WaveformDesigner::updateJsonText()
+{
+    QJsonObject shown;
+    LoadError ignored;
+    if (parseJsonObject(m_jsonText->toPlainText().toUtf8(), QString(), &shown, &ignored) &&
+        shown == m_document->json()) {
+        m_jsonError->clear();
+        return; // the text already says this: keep the user's cursor and layout
+    }
+    m_updatingText = true;
+    m_jsonText->setPlainText(
+        QString::fromUtf8(QJsonDocument(m_document->json()).toJson(QJsonDocument::Indented)));
+    m_updatingText = false;
+    m_jsonError->setText(m_document->pattern() ? QString() : m_document->error().toString());
+}
+
+void WaveformDesigner::applyJsonText()
+{
+    const QString file = m_document->json().value(QLatin1String("name")).toString();
+    QJsonObject json;
+    LoadError error;
+    if (!parseJsonObject(m_jsonText->toPlainText().toUtf8(), file, &json, &error) ||
+        !Pattern::fromJson(json, file, &error)) {
+        m_jsonError->setText(QStringLiteral("<span style='color:#D55E00'>%1</span>")
+                                 .arg(error.toString().toHtmlEscaped()));
+        return;
+    }
+    m_jsonError->setText(tr("<span style='color:#009E73'>Valid pattern</span>"));
+    m_document->setJson(json, tr("Edit JSON"));
+}
+
+DeviceModelPtr WaveformDesigner::previewModel() const
+{
+    return DeviceModelLibrary::builtin(
+        m_document->json().value(QLatin1String("model")).toString());
+}
+
+void WaveformDesigner::updatePreview()
+{
+    const double intensity = m_intensity->value() / 100.0;
+    m_intensityLabel->setText(QLocale().toString(intensity, 'f', 2));
+    const PatternPtr &pattern = m_document->pattern();
+    if (!pattern) {
+        m_preview->showMessage(m_document->error().toString());
+        return;
+    }
+    const DeviceModelPtr model = previewModel();
+    if (!model) {
+        m_preview->showMessage(tr("Unknown device model '%1' (built-in: %2)")
+                                   .arg(pattern->model(), DeviceModelLibrary::builtinNames().join(
+                                                              QStringLiteral(", "))));
+        return;
+    }
+    RenderOptions options;
+    options.intensity = intensity;
+    const double *params = pattern->params().defaults().data();
+    double release = 0.0;
+    for (const PatternTrack &track : pattern->tracks()) {
+        if (track.release)
+            release = std::max(release, track.release->duration(params));
+    }
+    if (m_hold->isChecked()) {
+        options.duration = m_endAt->value() + 1.0;
+    } else {
+        options.releaseAt = m_endAt->value();
+        options.duration = std::min(MaxPreview, m_endAt->value() + release + 0.5);
+    }
+    m_preview->showPattern(pattern, model, options);
+}
+
+Transport *WaveformDesigner::auditionTransport()
+{
+    const QString name = m_devicePicker->currentData().toString();
+    if (!name.isEmpty())
+        return m_devices ? m_devices->transport(name) : nullptr;
+    return m_virtual.get();
+}
+
+void WaveformDesigner::beginAudition()
+{
+    const QString name = m_devicePicker->currentData().toString();
+    const PatternPtr pattern = m_document->pattern();
+    if (!pattern) {
+        reportError(tr("Cannot audition"), m_document->error().toString());
+        return;
+    }
+    if (name.isEmpty()) {
+        // The virtual device follows the pattern's model, armed: nothing real moves.
+        const DeviceModelPtr model = previewModel();
+        if (!model) {
+            reportError(tr("Cannot audition"),
+                        tr("unknown device model %1").arg(pattern->model()));
+            return;
+        }
+        if (!m_virtual || m_virtual->model().name() != model->name()) {
+            m_auditioner->stop();
+            QString error;
+            m_virtual =
+                TransportFactory::create(QStringLiteral("virtual:audition"), model, &error);
+            if (!m_virtual || !m_virtual->open(&error)) {
+                reportError(tr("Cannot audition"), error);
+                return;
+            }
+            m_virtual->setArmed(true);
+        }
+    } else {
+        emit auditionStarting();
+    }
+    QString reason;
+    const bool started = m_auditioner->begin(
+        pattern,
+        [this, name]() -> Transport * {
+            return name.isEmpty() ? m_virtual.get()
+                                  : (m_devices ? m_devices->transport(name) : nullptr);
+        },
+        m_intensity->value() / 100.0, &reason);
+    if (!started)
+        reportError(tr("Cannot audition on %1").arg(m_devicePicker->currentText()), reason);
+    else
+        m_auditionStatus->setText(tr("Playing on %1").arg(m_devicePicker->currentText()));
+}
+
+void WaveformDesigner::endAudition()
+{
+    m_auditioner->end();
+}
+
+void WaveformDesigner::stopAudition()
+{
+    m_auditioner->stop();
+}
+
+} // namespace semhap

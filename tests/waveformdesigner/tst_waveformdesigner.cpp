@@ -1,0 +1,456 @@
+// SPDX-License-Identifier: MIT
+// The waveform designer driven like a user: editing a ramp in the inspector with the
+// keyboard changes the preview, undo and redo restore the exact JSON, a duplicated built-in
+// saves and opens again, the preview shows the pneumatic band smearing fast pulses, an
+// audition reaches an emulated band over UDP, and an AHAP file imports and exports.
+#include "ahapformat.h"
+#include "devicemanager.h"
+#include "emulator.h"
+#include "jsonreader.h"
+#include "nodeinspector.h"
+#include "numberedit.h"
+#include "patternauditioner.h"
+#include "patterndocument.h"
+#include "patternpreview.h"
+#include "waveformdesigner.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolBar>
+#include <QTreeWidget>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+using namespace semhap;
+
+namespace {
+
+const QString Data = QStringLiteral(SEMHAP_TEST_DATA);
+
+/** An emulated band serving UDP loopback on its own thread while the test runs. */
+class EmulatedBand
+{
+public:
+    explicit EmulatedBand(const QString &model) : m_emulator(options(model)) {}
+    ~EmulatedBand()
+    {
+        m_quit = true;
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    bool start(QString *error)
+    {
+        if (!m_emulator.open(error))
+            return false;
+        m_thread = std::thread([this] { m_emulator.run([this] { return m_quit.load(); }); });
+        return true;
+    }
+    QString uri() const { return m_emulator.uri(); }
+    Emulator::State state() const { return m_emulator.state(); }
+
+private:
+    static EmulatorOptions options(const QString &model)
+    {
+        EmulatorOptions options;
+        options.model = DeviceModelLibrary::builtin(model);
+        options.udp = true;
+        return options;
+    }
+
+    Emulator m_emulator;
+    std::atomic<bool> m_quit{false};
+    std::thread m_thread;
+};
+
+/** A designer on a fresh user folder, shown. */
+struct Fixture
+{
+    QTemporaryDir folder;
+    WaveformDesigner designer;
+
+    explicit Fixture(DeviceManager *devices = nullptr) : designer(devices)
+    {
+        designer.setUserFolder(folder.path());
+        designer.resize(900, 760);
+        designer.show();
+    }
+    template<typename T> T *child(const QString &name) const
+    {
+        return designer.findChild<T *>(name);
+    }
+    void trigger(const QString &action) const
+    {
+        auto *bar = child<QToolBar>(QStringLiteral("designerToolBar"));
+        QWidget *button = bar->widgetForAction(child<QAction>(action));
+        QVERIFY(button && button->isEnabled());
+        QTest::mouseClick(button, Qt::LeftButton);
+    }
+    void clickTreeNode(const QString &pointer) const
+    {
+        QTreeWidget *tree = designer.tree();
+        for (QTreeWidgetItemIterator it(tree); *it; ++it) {
+            if ((*it)->data(0, Qt::UserRole).toString() == pointer) {
+                tree->scrollToItem(*it);
+                QTest::mouseClick(tree->viewport(), Qt::LeftButton, {},
+                                  tree->visualItemRect(*it).center());
+                return;
+            }
+        }
+        QFAIL(qPrintable(QStringLiteral("no tree node %1").arg(pointer)));
+    }
+    /** Types `text` into a number field of the inspector and presses Enter. */
+    void typeNumber(const QString &field, const QString &text) const
+    {
+        QCoreApplication::processEvents(); // the inspector rebuilds queued
+        auto *edit = child<NumberEdit>(QStringLiteral("field:") + field);
+        QVERIFY(edit);
+        auto *spin = edit->findChild<QDoubleSpinBox *>(QStringLiteral("value"));
+        QTest::mouseClick(spin, Qt::LeftButton);
+        QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(spin, text);
+        QTest::keyClick(spin, Qt::Key_Return);
+        QCoreApplication::processEvents();
+    }
+    std::vector<double> graphValues(int graph) const
+    {
+        std::vector<double> values;
+        QCPGraph *g = designer.preview()->plot()->graph(graph);
+        for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it)
+            values.push_back(it->value);
+        return values;
+    }
+};
+
+/** Picks `text` in a combo box with the arrow keys, as a user would. */
+bool choose(QComboBox *box, const QString &text)
+{
+    box->setFocus();
+    for (const Qt::Key key : {Qt::Key_Up, Qt::Key_Down}) {
+        for (int i = 0; i <= box->count(); ++i) {
+            if (box->currentText() == text)
+                return true;
+            QTest::keyClick(box, key);
+        }
+    }
+    return box->currentText() == text;
+}
+
+double peakToPeak(const std::vector<double> &values, const std::vector<double> &t, double from)
+{
+    double low = 1e9;
+    double high = -1e9;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (t[i] >= from) {
+            low = std::min(low, values[i]);
+            high = std::max(high, values[i]);
+        }
+    }
+    return high - low;
+}
+
+} // namespace
+
+class TestWaveformDesigner : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void editRampChangesPreview();
+    void undoRedoRestoresJson();
+    void duplicateSaveOpen();
+    void builtinIsReadOnly();
+    void pneumaticSmearsPulses();
+    void jsonTabShowsErrors();
+    void auditionReachesEmulator();
+    void importAhap();
+    void screenshot();
+};
+
+void TestWaveformDesigner::initTestCase()
+{
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestWaveformDesigner::editRampChangesPreview()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("air.squeeze"));
+    f.trigger(QStringLiteral("duplicatePattern"));
+    QVERIFY(!f.designer.document()->isReadOnly());
+    f.clickTreeNode(QStringLiteral("/tracks/0/attack"));
+    QCOMPARE(f.designer.inspector()->target(), QStringLiteral("/tracks/0/attack"));
+
+    const std::vector<double> before = f.graphValues(0);
+    f.typeNumber(QStringLiteral("time"), QStringLiteral("0.2"));
+    QCOMPARE(f.designer.document()->value(QStringLiteral("/tracks/0/attack/time")).toDouble(),
+             0.2);
+    const std::vector<double> after = f.graphValues(0);
+    QCOMPARE(after.size(), before.size());
+    QVERIFY(after != before);
+    // pneumatic6 at 100 Hz: sample 10 is t = 0.1 s, halfway up the faster ramp.
+    QVERIFY(std::abs(before[10] - 0.2) < 1e-9);
+    QVERIFY(std::abs(after[10] - 0.5) < 1e-9);
+    // The keyboard stays in the field after the rebuild.
+    QCoreApplication::processEvents();
+    QVERIFY(f.child<NumberEdit>(QStringLiteral("field:time"))
+                ->isAncestorOf(QApplication::focusWidget()));
+}
+
+void TestWaveformDesigner::undoRedoRestoresJson()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("vib.rampup"));
+    f.trigger(QStringLiteral("duplicatePattern"));
+    const QJsonObject original = f.designer.document()->json();
+    f.clickTreeNode(QStringLiteral("/tracks/0/release"));
+    f.typeNumber(QStringLiteral("time"), QStringLiteral("1.25"));
+    f.clickTreeNode(QStringLiteral("/tracks/0/attack"));
+    f.typeNumber(QStringLiteral("to"), QStringLiteral("0.75"));
+    const QJsonObject edited = f.designer.document()->json();
+    QCOMPARE(f.designer.document()->undoStack()->count(), 2);
+
+    f.trigger(QStringLiteral("undo"));
+    f.trigger(QStringLiteral("undo"));
+    QCOMPARE(f.designer.document()->json(), original);
+    QCOMPARE(QJsonDocument(f.designer.document()->json()).toJson(),
+             QJsonDocument(original).toJson());
+    f.trigger(QStringLiteral("redo"));
+    f.trigger(QStringLiteral("redo"));
+    QCOMPARE(f.designer.document()->json(), edited);
+    QCOMPARE(f.designer.document()->value(QStringLiteral("/tracks/0/release/time")).toDouble(),
+             1.25);
+}
+
+void TestWaveformDesigner::duplicateSaveOpen()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    auto *library = f.child<QListWidget>(QStringLiteral("library"));
+    const auto clickItem = [&](const QString &text) {
+        const QList<QListWidgetItem *> items = library->findItems(text, Qt::MatchExactly);
+        QCOMPARE(items.size(), 1);
+        library->scrollToItem(items.first());
+        QTest::mouseClick(library->viewport(), Qt::LeftButton, {},
+                          library->visualItemRect(items.first()).center());
+    };
+    clickItem(QStringLiteral("vib.geiger"));
+    QCOMPARE(f.designer.document()->json().value(QLatin1String("name")).toString(),
+             QStringLiteral("vib.geiger"));
+    f.trigger(QStringLiteral("duplicatePattern"));
+    const QString path = f.folder.filePath(QStringLiteral("vib.geiger.copy.json"));
+    QCOMPARE(f.designer.document()->path(), path);
+    QVERIFY(!QFileInfo::exists(path)); // created on first save
+    f.clickTreeNode(QStringLiteral("/tracks/0/sustain"));
+    f.typeNumber(QStringLiteral("width"), QStringLiteral("0.04"));
+    f.trigger(QStringLiteral("savePattern"));
+    QVERIFY(QFileInfo::exists(path));
+    QVERIFY(!f.designer.document()->isModified());
+    const QJsonObject saved = f.designer.document()->json();
+
+    clickItem(QStringLiteral("air.squeeze"));
+    QCOMPARE(f.designer.document()->json().value(QLatin1String("name")).toString(),
+             QStringLiteral("air.squeeze"));
+    clickItem(QStringLiteral("vib.geiger.copy"));
+    QCOMPARE(f.designer.document()->path(), path);
+    QCOMPARE(f.designer.document()->json(), saved);
+    QVERIFY(f.designer.document()->pattern());
+    QVERIFY(!f.designer.document()->isReadOnly());
+}
+
+void TestWaveformDesigner::builtinIsReadOnly()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("air.squeeze"));
+    QVERIFY(f.designer.document()->isReadOnly());
+    QVERIFY(
+        f.child<QLabel>(QStringLiteral("banner"))->text().contains(QStringLiteral("Duplicate")));
+    QVERIFY(!f.designer.inspector()->isEnabled());
+    QVERIFY(f.child<QPlainTextEdit>(QStringLiteral("jsonText"))->isReadOnly());
+    const QJsonObject json = f.designer.document()->json();
+    f.designer.document()->setValue(QStringLiteral("/name"), QStringLiteral("x"));
+    QCOMPARE(f.designer.document()->json(), json);
+}
+
+void TestWaveformDesigner::pneumaticSmearsPulses()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    // vib.geiger at full intensity is 20 Hz pulses of 25 ms; put them on the pneumatic band.
+    f.designer.openBuiltin(QStringLiteral("vib.geiger"));
+    f.trigger(QStringLiteral("duplicatePattern"));
+    QVERIFY(
+        choose(f.child<QComboBox>(QStringLiteral("modelPicker")), QStringLiteral("pneumatic6")));
+    QCOMPARE(f.designer.document()->json().value(QLatin1String("model")).toString(),
+             QStringLiteral("pneumatic6"));
+    QTest::mouseClick(f.child<QCheckBox>(QStringLiteral("hold")), Qt::LeftButton);
+    QVERIFY(f.child<QCheckBox>(QStringLiteral("hold"))->isChecked());
+
+    const PatternPreview *preview = f.designer.preview();
+    QCOMPARE(preview->groupCount(), 1);
+    QCOMPARE(preview->groupChannels(0).size(), 6);
+    const double commanded = peakToPeak(preview->commanded(0), preview->times(), 0.5);
+    const double predicted = peakToPeak(preview->predicted(0), preview->times(), 0.5);
+    qInfo("20 Hz pulses on pneumatic6: commanded p-p %.3f, predicted p-p %.3f", commanded,
+          predicted);
+    QCOMPARE(commanded, 1.0);
+    QVERIFY(predicted < 0.6 * commanded);
+
+    // On the LRA band the same pulses come through almost whole.
+    QVERIFY(choose(f.child<QComboBox>(QStringLiteral("modelPicker")), QStringLiteral("lra4")));
+    const double lra = peakToPeak(preview->predicted(0), preview->times(), 0.5);
+    qInfo("20 Hz pulses on lra4: predicted p-p %.3f", lra);
+    QVERIFY(lra > 0.9);
+}
+
+void TestWaveformDesigner::jsonTabShowsErrors()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("air.squeeze"));
+    f.trigger(QStringLiteral("duplicatePattern"));
+    auto *tabs = f.child<QTabWidget>(QStringLiteral("editorTabs"));
+    tabs->setCurrentIndex(1);
+    auto *text = f.child<QPlainTextEdit>(QStringLiteral("jsonText"));
+    // Find `"time": 0.5` of the attack and make it negative.
+    QTextCursor cursor = text->document()->find(QStringLiteral("\"time\": 0.5"));
+    QVERIFY(!cursor.isNull());
+    cursor.setPosition(cursor.selectionEnd() - 3);
+    text->setTextCursor(cursor);
+    QTest::keyClick(text, Qt::Key_Minus);
+    auto *error = f.child<QLabel>(QStringLiteral("jsonError"));
+    QTRY_VERIFY(error->text().contains(QStringLiteral("/tracks/0/attack/time")));
+    QCOMPARE(f.designer.document()->value(QStringLiteral("/tracks/0/attack/time")).toDouble(),
+             0.5);
+    QTest::keyClick(text, Qt::Key_Backspace);
+    QTRY_VERIFY(error->text().contains(QStringLiteral("Valid")));
+    QTest::keyClick(text, Qt::Key_Delete);
+    QTest::keyClicks(text, QStringLiteral("1"));
+    QTRY_COMPARE(f.designer.document()->value(QStringLiteral("/tracks/0/attack/time")).toDouble(),
+                 1.5);
+}
+
+void TestWaveformDesigner::auditionReachesEmulator()
+{
+    EmulatedBand band(QStringLiteral("lra4"));
+    QString error;
+    QVERIFY2(band.start(&error), qPrintable(error));
+    DeviceManager manager;
+    const QString name = QStringLiteral("right.vibro");
+    QVERIFY2(manager.bind(name, band.uri(), DeviceModelLibrary::builtin(QStringLiteral("lra4")),
+                          &error),
+             qPrintable(error));
+    manager.armAll(true);
+    QTRY_VERIFY_WITH_TIMEOUT(manager.transport(name)->status().responding, 5000);
+
+    Fixture f(&manager);
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.refreshDevices();
+    f.designer.openBuiltin(QStringLiteral("air.squeeze")); // pneumatic6: not for this band
+    auto *device = f.child<QComboBox>(QStringLiteral("auditionDevice"));
+    QVERIFY(choose(device, name + QStringLiteral(" — lra4")));
+    QSignalSpy starting(&f.designer, &WaveformDesigner::auditionStarting);
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QVERIFY(!f.designer.auditioner()->isPlaying());
+    QVERIFY(f.child<QLabel>(QStringLiteral("auditionStatus"))
+                ->text()
+                .contains(QStringLiteral("pneumatic6")));
+
+    // vib.rampup: up to 1 in 0.5 s while held.
+    f.designer.openBuiltin(QStringLiteral("vib.rampup"));
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QVERIFY(f.designer.auditioner()->isPlaying());
+    QCOMPARE(starting.count(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints.size() == 4 && band.state().setpoints[0] > 0.3,
+                             3000);
+    QVERIFY(f.designer.auditioner()->framesSent() > 10);
+    // Stop sends the band to zero at once.
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionStop")), Qt::LeftButton);
+    QVERIFY(!f.designer.auditioner()->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+
+    // Begin, then End: the release plays and the audition stops by itself.
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] > 0.5, 3000);
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionEnd")), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!f.designer.auditioner()->isPlaying(), 3000);
+    QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+void TestWaveformDesigner::importAhap()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    QString error;
+    const QString source = Data + QStringLiteral("/../convert/heartbeat.ahap");
+    QVERIFY2(f.designer.openFile(source, &error), qPrintable(error));
+    PatternDocument *document = f.designer.document();
+    QVERIFY(document->pattern());
+    QVERIFY(!document->isReadOnly());
+    QCOMPARE(document->path(), f.folder.filePath(QStringLiteral("heartbeat.json")));
+    QCOMPARE(document->json().value(QLatin1String("name")).toString(),
+             QStringLiteral("heartbeat"));
+    QVERIFY(f.designer.preview()->groupCount() >= 1);
+    QVERIFY(f.designer.preview()->message().isEmpty());
+
+    // Export again and compare the envelopes.
+    const QString exported = f.folder.filePath(QStringLiteral("again.ahap"));
+    QVERIFY2(f.designer.saveFile(exported, &error), qPrintable(error));
+    QJsonObject in;
+    QJsonObject out;
+    LoadError loadError;
+    QVERIFY(readJsonObjectFile(source, &in, &loadError));
+    QVERIFY(readJsonObjectFile(exported, &out, &loadError));
+    HapticTimeline a;
+    HapticTimeline b;
+    QVERIFY(AhapFormat::read(in, source, &a, nullptr, &loadError));
+    QVERIFY(AhapFormat::read(out, exported, &b, nullptr, &loadError));
+    double worst = 0.0;
+    for (int k = 0; k <= 1200; ++k)
+        worst = std::max(worst,
+                         std::abs(a.intensity.value(k / 1000.0) - b.intensity.value(k / 1000.0)));
+    QVERIFY2(worst < 0.01, qPrintable(QString::number(worst)));
+    QVERIFY(std::abs(a.sharpness - b.sharpness) < 1e-9);
+}
+
+/** With SEMHAP_SCREENSHOTS=DIR: the designer with a built-in open, for docs/screenshots. */
+void TestWaveformDesigner::screenshot()
+{
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (dir.isEmpty())
+        QSKIP("set SEMHAP_SCREENSHOTS to a folder to write the screenshot");
+    Fixture f;
+    f.designer.openBuiltin(QStringLiteral("air.squeeze"));
+    f.clickTreeNode(QStringLiteral("/tracks/0/attack"));
+    for (const QSize size : {QSize(1280, 800), QSize(660, 740)}) {
+        f.designer.resize(size);
+        QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+        QTest::qWait(200);
+        QVERIFY(f.designer.grab().save(QStringLiteral("%1/waveformdesigner-%2x%3.png")
+                                           .arg(dir)
+                                           .arg(size.width())
+                                           .arg(size.height())));
+    }
+}
+
+QTEST_MAIN(TestWaveformDesigner)
+#include "tst_waveformdesigner.moc"
