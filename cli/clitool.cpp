@@ -4,8 +4,11 @@
 #include "comparecommand.h"
 #include "devicescommand.h"
 #include "emulatecommand.h"
+#include "exportcommand.h"
+#include "listencommand.h"
 #include "playcommand.h"
 #include "rendercommand.h"
+#include "replaycommand.h"
 #include "routecommand.h"
 #include "runcommand.h"
 #include "validatecommand.h"
@@ -16,10 +19,11 @@ namespace {
 
 const QStringList &commandNames()
 {
-    static const QStringList names{QStringLiteral("route"),    QStringLiteral("render"),
-                                   QStringLiteral("validate"), QStringLiteral("run"),
-                                   QStringLiteral("compare"),  QStringLiteral("play"),
-                                   QStringLiteral("devices"),  QStringLiteral("emulate")};
+    static const QStringList names{
+        QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
+        QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
+        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("replay"),
+        QStringLiteral("export"),  QStringLiteral("listen")};
     return names;
 }
 
@@ -43,6 +47,12 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<DevicesCommand>(m_io);
     if (name == QLatin1String("emulate"))
         return std::make_unique<EmulateCommand>(m_io);
+    if (name == QLatin1String("replay"))
+        return std::make_unique<ReplayCommand>(m_io);
+    if (name == QLatin1String("export"))
+        return std::make_unique<ExportCommand>(m_io);
+    if (name == QLatin1String("listen"))
+        return std::make_unique<ListenCommand>(m_io);
     return nullptr;
 }
 
