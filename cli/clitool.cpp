@@ -5,8 +5,11 @@
 #include "convertcommand.h"
 #include "devicescommand.h"
 #include "emulatecommand.h"
+#include "exportcommand.h"
+#include "listencommand.h"
 #include "playcommand.h"
 #include "rendercommand.h"
+#include "replaycommand.h"
 #include "routecommand.h"
 #include "runcommand.h"
 #include "validatecommand.h"
@@ -20,7 +23,8 @@ const QStringList &commandNames()
     static const QStringList names{
         QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
         QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
-        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("convert")};
+        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("convert"),
+        QStringLiteral("replay"),  QStringLiteral("export"),  QStringLiteral("listen")};
     return names;
 }
 
@@ -46,6 +50,12 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<EmulateCommand>(m_io);
     if (name == QLatin1String("convert"))
         return std::make_unique<ConvertCommand>(m_io);
+    if (name == QLatin1String("replay"))
+        return std::make_unique<ReplayCommand>(m_io);
+    if (name == QLatin1String("export"))
+        return std::make_unique<ExportCommand>(m_io);
+    if (name == QLatin1String("listen"))
+        return std::make_unique<ListenCommand>(m_io);
     return nullptr;
 }
 

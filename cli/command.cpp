@@ -2,9 +2,12 @@
 #include "command.h"
 
 #include "patternlibrary.h"
+#include "sessionwriter.h"
 
 #include <QFile>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace semhap {
@@ -167,6 +170,19 @@ bool Command::checkSingleStdout(const QStringList &outputs)
     if (outputs.count(QStringLiteral("-")) <= 1)
         return true;
     usageError(tr("at most one output may be '-' (standard output)"));
+    return false;
+}
+
+bool Command::finishSession(SessionWriter &session)
+{
+    QString error;
+    if (session.dropped() > 0)
+        report(tr("%1: %n value(s) dropped: the disk fell behind", nullptr,
+                  int(std::min<quint64>(session.dropped(), INT_MAX)))
+                   .arg(session.path()));
+    if (session.finish(&error))
+        return true;
+    inputError(error);
     return false;
 }
 

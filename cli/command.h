@@ -16,6 +16,8 @@
 
 namespace semhap {
 
+class SessionWriter;
+
 /** Exit codes shared by every command (spec section 5). */
 enum ExitCode
 {
@@ -85,6 +87,9 @@ protected:
      */
     bool renderNamedPattern(const QString &pattern, RenderOptions options,
                             RenderedPattern *rendered, DeviceModelPtr *model);
+
+    /** Closes a recording, reporting dropped values and errors; false after an error line. */
+    bool finishSession(SessionWriter &session);
 
     /** Usage check of the spec: at most one of the outputs may be `-`. */
     bool checkSingleStdout(const QStringList &outputs);

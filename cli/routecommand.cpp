@@ -6,50 +6,13 @@
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
-#include "jsonlineswriter.h"
 #include "pipeline.h"
+#include "streamsink.h"
 
 #include <chrono>
 #include <thread>
 
 namespace semhap {
-
-namespace {
-
-/** Writes what the pipeline produces as JSON Lines, each stream to its own device. */
-class StreamSink : public PipelineSink
-{
-public:
-    StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames)
-        : m_writeEvents(events), m_writeFrames(deviceFrames), m_events(events),
-          m_deviceFrames(deviceFrames)
-    {
-        QStringList devices;
-        for (int d = 0; d < router.player().deviceCount(); ++d)
-            devices.append(router.player().deviceName(d));
-        m_events.setNodeNames(router.nodeIds());
-        m_deviceFrames.setDeviceNames(devices);
-    }
-
-    void onEvent(const SemanticEvent &event) override
-    {
-        if (m_writeEvents)
-            m_events.write(event);
-    }
-    void onDeviceFrame(const DeviceFrame &frame) override
-    {
-        if (m_writeFrames)
-            m_deviceFrames.write(frame);
-    }
-
-private:
-    bool m_writeEvents;
-    bool m_writeFrames;
-    JsonLinesWriter m_events;
-    JsonLinesWriter m_deviceFrames;
-};
-
-} // namespace
 
 QString RouteCommand::summary() const
 {

@@ -6,9 +6,11 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "jsonlineswriter.h"
+#include "sessionwriter.h"
 #include "simrun.h"
 
 #include <QElapsedTimer>
+#include <QFileDevice>
 #include <QJsonDocument>
 #include <QThread>
 
@@ -19,13 +21,14 @@ namespace semhap {
 
 namespace {
 
-/** Writes the run's requested streams as JSON Lines. */
+/** Writes the run's requested streams as JSON Lines, and records them into a session. */
 class StreamWriter : public RunSink
 {
 public:
-    StreamWriter(const SimRun &run, QIODevice *frames, QIODevice *events, QIODevice *devices)
-        : m_frames(frames), m_events(events), m_devices(devices), m_frameWriter(frames),
-          m_eventWriter(events), m_deviceWriter(devices)
+    StreamWriter(const SimRun &run, QIODevice *frames, QIODevice *events, QIODevice *devices,
+                 SessionWriter *session)
+        : m_frames(frames), m_events(events), m_devices(devices), m_session(session),
+          m_frameWriter(frames), m_eventWriter(events), m_deviceWriter(devices)
     {
         const Router &router = const_cast<SimRun &>(run).pipeline().router();
         QStringList names;
@@ -37,24 +40,39 @@ public:
     }
     void onContactFrame(const ContactFrame &frame) override
     {
+        if (m_session)
+            m_session->recordContactFrame(frame, qQNaN());
         if (m_frames)
             m_frameWriter.write(frame);
     }
     void onEvent(const SemanticEvent &event) override
     {
+        if (m_session)
+            m_session->onEvent(event);
         if (m_events)
             m_eventWriter.write(event);
     }
     void onDeviceFrame(const DeviceFrame &frame) override
     {
+        if (m_session)
+            m_session->onDeviceFrame(frame);
         if (m_devices)
             m_deviceWriter.write(frame);
+    }
+    /** Hands what was written on, so a consumer of a real-time run sees it live. */
+    void flush()
+    {
+        for (QIODevice *device : {m_frames, m_events, m_devices}) {
+            if (auto *file = qobject_cast<QFileDevice *>(device))
+                file->flush();
+        }
     }
 
 private:
     QIODevice *m_frames;
     QIODevice *m_events;
     QIODevice *m_devices;
+    SessionWriter *m_session;
     JsonLinesWriter m_frameWriter;
     JsonLinesWriter m_eventWriter;
     JsonLinesWriter m_deviceWriter;
@@ -66,8 +84,7 @@ class BoundSink : public RunSink
 public:
     BoundSink(DeviceOutputSink &devices, StreamWriter &writer)
         : m_devices(devices), m_writer(writer)
-    {
-    }
+    {}
     void onContactFrame(const ContactFrame &frame) override { m_writer.onContactFrame(frame); }
     void onEvent(const SemanticEvent &event) override { m_devices.onEvent(event); }
     void onDeviceFrame(const DeviceFrame &frame) override { m_devices.onDeviceFrame(frame); }
@@ -76,6 +93,28 @@ private:
     DeviceOutputSink &m_devices;
     StreamWriter &m_writer;
 };
+
+/** The session metadata of a run: everything that makes the same run again. */
+SessionInfo sessionInfo(const RunOptions &options, const QCommandLineParser &parser,
+                        const QStringList &bindings)
+{
+    SessionInfo info;
+    info.source = QStringLiteral("run");
+    info.scene = options.scene;
+    info.routerSource = options.router;
+    info.overrides = options.overrides;
+    for (const QString &binding : bindings)
+        info.bindings.insert(binding.section(QLatin1Char('='), 0, 0),
+                             binding.section(QLatin1Char('='), 1));
+    info.operatorName = options.operatorName;
+    info.seed = QString::number(options.seed);
+    info.notes = parser.value(QStringLiteral("notes"));
+    info.extra.insert(QStringLiteral("duration"), QString::number(options.duration));
+    info.extra.insert(QStringLiteral("reaction_time"), QString::number(options.reactionTime));
+    if (options.sceneOptions.cubes >= 0)
+        info.extra.insert(QStringLiteral("cubes"), QString::number(options.sceneOptions.cubes));
+    return info;
+}
 
 } // namespace
 
@@ -117,6 +156,10 @@ void RunCommand::configure(QCommandLineParser &parser)
                       tr("Send a device's output to a band, e.g. right.vibro=serial:/dev/ttyACM0 "
                          "(repeatable); implies --realtime."),
                       tr("NAME=URI")});
+    parser.addOption({QStringLiteral("session"),
+                      tr("Record the run into a new session database (docs/sessions.md)."),
+                      tr("FILE")});
+    parser.addOption({QStringLiteral("notes"), tr("Notes kept with the session."), tr("TEXT")});
 }
 
 int RunCommand::execute(const QCommandLineParser &parser)
@@ -170,13 +213,22 @@ int RunCommand::execute(const QCommandLineParser &parser)
         if (!devices[i])
             return ExitInvalidInput;
     }
-    StreamWriter writer(*run, devices[1], devices[2], devices[3]);
     DeviceManager bands;
     QString message;
     bool usage = false;
-    if (!bindDevices(parser.values(QStringLiteral("bind")), run->pipeline().router().player(),
-                     bands, &message, &usage))
+    const QStringList bindings = parser.values(QStringLiteral("bind"));
+    if (!bindDevices(bindings, run->pipeline().router().player(), bands, &message, &usage))
         return usage ? usageError(message) : inputError(message);
+    std::unique_ptr<SessionWriter> session;
+    if (parser.isSet(QStringLiteral("session"))) {
+        SessionInfo info = sessionInfo(options, parser, bindings);
+        session = SessionWriter::create(parser.value(QStringLiteral("session")), info,
+                                        run->pipeline().router(), &message);
+        if (!session)
+            return inputError(message);
+        session->setActorTable(&run->world().actors());
+    }
+    StreamWriter writer(*run, devices[1], devices[2], devices[3], session.get());
     const bool bound = !bands.boundNames().isEmpty();
     if (bound) {
         EmergencyStop::install();
@@ -195,6 +247,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
             const qint64 ahead = qint64(run->time() * 1000) - wall.elapsed();
             if (ahead > 1)
                 QThread::msleep(quint64(ahead));
+            writer.flush();
         }
         if (progress && wall.elapsed() - lastDraw >= 200) {
             lastDraw = wall.elapsed();
@@ -213,6 +266,8 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (progress)
         m_io.err->write("\r\033[K");
     bands.stopAll();
+    if (session && !finishSession(*session))
+        return ExitInvalidInput;
 
     const double wallSeconds = double(wall.elapsed()) / 1000;
     QJsonObject metrics = run->metrics();

@@ -1,53 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "contactframereader.h"
 
-#include "detectorparams.h"
-#include "jsonreader.h"
-
 #include <QIODevice>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-
-#include <climits>
-#include <cmath>
 
 namespace semhap {
 
 namespace {
-
-/** The offending value as the reason quotes it: numbers short, strings quoted and cut. */
-QString describe(const QJsonValue &value)
-{
-    switch (value.type()) {
-    case QJsonValue::Null:
-        return QStringLiteral("null");
-    case QJsonValue::Bool:
-        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
-    case QJsonValue::Double:
-        return formatNumber(value.toDouble());
-    case QJsonValue::String: {
-        const QString text = value.toString();
-        constexpr int MaxQuoted = 40;
-        if (text.size() > MaxQuoted)
-            return QLatin1Char('"') + text.left(MaxQuoted) + QStringLiteral("...\"");
-        return QLatin1Char('"') + text + QLatin1Char('"');
-    }
-    default:
-        return jsonTypeName(value);
-    }
-}
-
-QString quotedField(const QString &field)
-{
-    return QLatin1Char('"') + field + QLatin1Char('"');
-}
-
-bool fail(QString *reason, const QString &why)
-{
-    *reason = why;
-    return false;
-}
 
 bool isBlank(const QByteArray &line)
 {
@@ -78,7 +36,7 @@ bool ContactFrameReader::next(ContactFrame *frame)
         if (isBlank(line))
             continue;
         QString reason;
-        if (parse(line, frame, &reason)) {
+        if (m_parser.parse(line, frame, &reason)) {
             ++m_frameCount;
             return true;
         }
@@ -111,128 +69,6 @@ ContactFrameReader::LineResult ContactFrameReader::readLine(QByteArray *line)
         start = 3;
     *line = QByteArray::fromRawData(m_buffer.constData() + start, length - start);
     return LineResult::Line;
-}
-
-bool ContactFrameReader::parse(const QByteArray &line, ContactFrame *frame, QString *reason)
-{
-    QJsonParseError error;
-    const QJsonDocument document = QJsonDocument::fromJson(line, &error);
-    if (error.error != QJsonParseError::NoError) {
-        return fail(reason, QStringLiteral("invalid JSON at column %1: %2")
-                                .arg(error.offset + 1)
-                                .arg(error.errorString()));
-    }
-    if (!document.isObject()) {
-        return fail(reason, QStringLiteral("a contact frame must be a JSON object, got %1")
-                                .arg(document.isArray() ? QStringLiteral("an array")
-                                                        : QStringLiteral("a scalar")));
-    }
-    const QJsonObject json = document.object();
-
-    const QJsonValue t = json.value(QLatin1String("t"));
-    if (t.isUndefined())
-        return fail(reason, QStringLiteral("\"t\" is missing"));
-    if (!t.isDouble() || !std::isfinite(t.toDouble()))
-        return fail(reason,
-                    QStringLiteral("\"t\" must be a finite number, got %1").arg(describe(t)));
-
-    const QJsonValue gripperValue = json.value(QLatin1String("gripper"));
-    if (gripperValue.isUndefined())
-        return fail(reason, QStringLiteral("\"gripper\" is missing"));
-    Gripper gripper = Gripper::Right;
-    if (!gripperValue.isString() || !gripperFromName(gripperValue.toString(), &gripper)) {
-        return fail(reason, QStringLiteral("\"gripper\" must be \"left\" or \"right\", got %1")
-                                .arg(describe(gripperValue)));
-    }
-
-    ContactFrame parsed;
-    parsed.t = t.toDouble();
-    parsed.gripper = gripper;
-    QString leftActor;
-    QString rightActor;
-    if (!parseFingertip(json, QLatin1String("left"), &parsed.left, &leftActor, reason) ||
-        !parseFingertip(json, QLatin1String("right"), &parsed.right, &rightActor, reason))
-        return false;
-
-    const size_t g = size_t(gripper);
-    if (m_seen[g] && !(parsed.t > m_lastT[g])) {
-        return fail(reason, QStringLiteral("\"t\" must increase per gripper, got %1 after %2 "
-                                           "for \"%3\"")
-                                .arg(formatNumber(parsed.t), formatNumber(m_lastT[g]),
-                                     gripperName(gripper)));
-    }
-    // Only a valid line may change state: the clock and the actor table.
-    m_seen[g] = true;
-    m_lastT[g] = parsed.t;
-    parsed.left.actor = m_actors.intern(leftActor);
-    parsed.right.actor = m_actors.intern(rightActor);
-    *frame = parsed;
-    return true;
-}
-
-bool ContactFrameReader::parseFingertip(const QJsonObject &json, QLatin1String name,
-                                        Fingertip *tip, QString *actor, QString *reason) const
-{
-    const QJsonValue value = json.value(name);
-    if (value.isUndefined() || value.isNull())
-        return true;
-    if (!value.isObject()) {
-        return fail(reason, QStringLiteral("%1 must be an object or null, got %2")
-                                .arg(quotedField(name), describe(value)));
-    }
-    const QJsonObject object = value.toObject();
-    const QString prefix = name + QLatin1Char('.');
-
-    const QJsonValue f = object.value(QLatin1String("f"));
-    if (f.isUndefined())
-        return fail(reason, QStringLiteral("%1 is missing").arg(quotedField(prefix + u'f')));
-    if (!f.isDouble() || !std::isfinite(f.toDouble()) || f.toDouble() < 0.0) {
-        return fail(reason, QStringLiteral("%1 must be a finite non-negative number, got %2")
-                                .arg(quotedField(prefix + u'f'), describe(f)));
-    }
-
-    const QJsonValue n = object.value(QLatin1String("n"));
-    if (n.isUndefined())
-        return fail(reason, QStringLiteral("%1 is missing").arg(quotedField(prefix + u'n')));
-    const double count = n.toDouble(-1.0);
-    if (!n.isDouble() || !(count >= 0.0) || count > double(INT_MAX) ||
-        count != std::floor(count)) {
-        return fail(reason, QStringLiteral("%1 must be a non-negative integer, got %2")
-                                .arg(quotedField(prefix + u'n'), describe(n)));
-    }
-
-    const QJsonValue actorValue = object.value(QLatin1String("actor"));
-    const QString actorField = quotedField(prefix + QLatin1String("actor"));
-    if (actorValue.isUndefined())
-        return fail(reason, QStringLiteral("%1 is missing").arg(actorField));
-    if (!actorValue.isNull() && (!actorValue.isString() || actorValue.toString().isEmpty())) {
-        return fail(reason, QStringLiteral("%1 must be a non-empty string or null, got %2")
-                                .arg(actorField, describe(actorValue)));
-    }
-
-    const QJsonValue fxyz = object.value(QLatin1String("fxyz"));
-    std::array<double, 3> components{};
-    const bool hasFxyz = !fxyz.isUndefined() && !fxyz.isNull();
-    if (hasFxyz) {
-        const QJsonArray array = fxyz.toArray();
-        bool valid = fxyz.isArray() && array.size() == 3;
-        for (qsizetype i = 0; valid && i < 3; ++i) {
-            components[size_t(i)] = array.at(i).toDouble(qQNaN());
-            valid = array.at(i).isDouble() && std::isfinite(components[size_t(i)]);
-        }
-        if (!valid) {
-            return fail(reason,
-                        QStringLiteral("%1 must be an array of 3 finite numbers, got %2")
-                            .arg(quotedField(prefix + QLatin1String("fxyz")), describe(fxyz)));
-        }
-    }
-
-    tip->f = f.toDouble();
-    tip->n = int(count);
-    tip->hasFxyz = hasFxyz;
-    tip->fxyz = components;
-    *actor = actorValue.toString();
-    return true;
 }
 
 void ContactFrameReader::reject(const QString &reason)

@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "actortable.h"
-#include "contactframe.h"
+#include "contactframeparser.h"
 #include "loaderror.h"
 
 #include <QByteArray>
 #include <QString>
 
-#include <array>
 #include <functional>
 
 class QIODevice;
-class QJsonObject;
 
 namespace semhap {
 
@@ -51,8 +48,8 @@ public:
     const LoadError &lastError() const { return m_lastError; }
 
     /** The actors named so far; frames refer to them by id. */
-    const ActorTable &actors() const { return m_actors; }
-    ActorTable &actors() { return m_actors; }
+    const ActorTable &actors() const { return m_parser.actors(); }
+    ActorTable &actors() { return m_parser.actors(); }
 
 private:
     enum class LineResult
@@ -62,22 +59,17 @@ private:
         End
     };
     LineResult readLine(QByteArray *line);
-    bool parse(const QByteArray &line, ContactFrame *frame, QString *reason);
-    bool parseFingertip(const QJsonObject &json, QLatin1String name, Fingertip *tip,
-                        QString *actor, QString *reason) const;
     void reject(const QString &reason);
 
     QIODevice *m_device;
     QString m_fileName;
     ErrorHandler m_onError;
-    ActorTable m_actors;
+    ContactFrameParser m_parser;
     LoadError m_lastError;
     QByteArray m_buffer; ///< reused for every line, so reading allocates once
     int m_lineNumber = 0;
     int m_frameCount = 0;
     int m_rejectedCount = 0;
-    std::array<double, 2> m_lastT{}; ///< per gripper, for the strictly-increasing rule
-    std::array<bool, 2> m_seen{};
 };
 
 } // namespace semhap

@@ -266,6 +266,7 @@ bool RouterCompiler::buildPattern(int node)
     PatternPtr pattern = findPattern(node, name.toString());
     if (!pattern || !readChannels(node))
         return false;
+    m_router->m_sources[size_t(node)].pattern = pattern;
     if (!info.channels.isEmpty() && pattern->tracks().size() != 1)
         return failNode(node, QStringLiteral("channels"),
                         QStringLiteral("channels can only be remapped for a pattern with one "
@@ -326,6 +327,7 @@ bool RouterCompiler::buildDevice(int node)
     info.model = findModel(node, model.toString());
     if (!info.model)
         return false;
+    m_router->m_sources[size_t(node)].model = info.model;
     const QJsonValue policy = n.params.value(QStringLiteral("policy"));
     if (!policy.isUndefined() && !Player::mixPolicyFromName(policy.toString(), &info.policy))
         return failNode(node, QStringLiteral("policy"),
@@ -648,6 +650,7 @@ std::unique_ptr<Router> RouterCompiler::compile()
     const size_t count = m_graph.nodes.size();
     m_info.resize(count);
     m_router->m_nodes.resize(count);
+    m_router->m_sources.resize(count);
     for (size_t i = 0; i < count; ++i) {
         m_router->m_nodeIds.append(m_graph.nodes[i].id);
         if (!buildNode(int(i)))
@@ -678,12 +681,68 @@ std::unique_ptr<Router> Router::compile(const RouterGraph &graph, LoadError *err
 
 Router::~Router() = default;
 
+namespace {
+
+/**
+ * The name under which `item` is embedded in `list`: its own, unless another item of that
+ * name is there already (two files may name their patterns alike), then a suffixed one.
+ */
+template<typename Ptr, typename Parse>
+QString embed(std::vector<Ptr> &list, const Ptr &item, Parse parse)
+{
+    const QJsonObject json = item->toJson();
+    QString name = item->name();
+    for (int k = 2;; ++k) {
+        const auto same = std::find_if(list.begin(), list.end(),
+                                       [&](const Ptr &p) { return p->name() == name; });
+        if (same == list.end())
+            break;
+        if (*same == item || (*same)->toJson() == json)
+            return name;
+        name = item->name() + QLatin1Char('~') + QString::number(k);
+    }
+    if (name == item->name()) {
+        list.push_back(item);
+        return name;
+    }
+    QJsonObject renamed = json;
+    renamed.insert(QStringLiteral("name"), name);
+    LoadError ignored;
+    list.push_back(parse(renamed, QString(), &ignored));
+    return list.back() ? name : item->name();
+}
+
+} // namespace
+
+RouterGraph Router::selfContained() const
+{
+    RouterGraph graph = m_graph;
+    for (size_t i = 0; i < m_sources.size(); ++i) {
+        QJsonObject &params = graph.nodes[i].params;
+        if (m_sources[i].pattern)
+            params.insert(QStringLiteral("pattern"),
+                          embed(graph.patterns, m_sources[i].pattern, Pattern::fromJson));
+        if (m_sources[i].model)
+            params.insert(QStringLiteral("model"),
+                          embed(graph.models, m_sources[i].model, DeviceModel::fromJson));
+    }
+    // Nothing is left to find on disk.
+    graph.baseDir.clear();
+    return graph;
+}
+
 std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList &overrides,
                                    LoadError *error)
 {
     RouterGraph graph;
     if (!RouterPresets::load(nameOrPath, &graph, error))
         return nullptr;
+    return compileWithOverrides(std::move(graph), overrides, error);
+}
+
+std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringList &overrides,
+                                             LoadError *error)
+{
     for (const QString &assignment : overrides) {
         if (!graph.applyOverride(assignment, error))
             return nullptr;

@@ -49,6 +49,12 @@ public:
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
     const QStringList &nodeIds() const { return m_nodeIds; }
     const RouterGraph &graph() const { return m_graph; }
+    /**
+     * The graph with every pattern and device model it uses embedded (built-ins too, since
+     * they may change between versions) and its nodes naming them: a document that compiles
+     * to the same router on any machine. What a session keeps.
+     */
+    RouterGraph selfContained() const;
 
 private:
     Router() = default;
@@ -59,6 +65,13 @@ private:
     std::vector<DetectorNode *> m_detectors;
     std::vector<SignalNode *> m_signals;
     std::vector<RuntimeNode *> m_timed; ///< nodes that may hold timers
+    /** What a node's pattern or model parameter resolved to, for selfContained(). */
+    struct Sources
+    {
+        PatternPtr pattern; ///< before the node's parameter overrides are baked in
+        DeviceModelPtr model;
+    };
+    std::vector<Sources> m_sources; ///< graph order
     Player m_player;
     bool m_started = false;
     friend class RouterCompiler;
@@ -71,5 +84,8 @@ private:
  */
 std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList &overrides,
                                    LoadError *error);
+/** What loadRouter() does once the graph is loaded (a session's router, an editor's). */
+std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringList &overrides,
+                                             LoadError *error);
 
 } // namespace semhap

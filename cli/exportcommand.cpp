@@ -1,0 +1,288 @@
+// SPDX-License-Identifier: MIT
+#include "exportcommand.h"
+
+#include "jsonlineswriter.h"
+#include "sessionreader.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+#include <map>
+
+namespace semhap {
+
+namespace {
+
+/** A CSV field: quoted when it holds a separator, a quote or a line break (RFC 4180). */
+void appendText(QByteArray &row, const QString &text)
+{
+    const QByteArray utf8 = text.toUtf8();
+    if (utf8.contains(',') || utf8.contains('"') || utf8.contains('\n') || utf8.contains('\r')) {
+        row += '"';
+        row += QByteArray(utf8).replace('"', "\"\"");
+        row += '"';
+    } else {
+        row += utf8;
+    }
+}
+
+/** A CSV number, exact (shortest round trip); empty for none. */
+void appendNumber(QByteArray &row, double value)
+{
+    if (std::isfinite(value))
+        JsonLinesWriter::appendNumber(row, value);
+}
+
+void appendFingertip(QByteArray &row, const Fingertip &tip, const ActorTable &actors)
+{
+    appendNumber(row, tip.f);
+    row += ',';
+    row += QByteArray::number(tip.n);
+    row += ',';
+    appendText(row, actors.name(tip.actor));
+    for (double component : tip.fxyz) {
+        row += ',';
+        if (tip.hasFxyz)
+            appendNumber(row, component);
+    }
+}
+
+} // namespace
+
+QString ExportCommand::summary() const
+{
+    return tr("Exports a session to CSV (one file per stream, for pandas or PlotJuggler) or "
+              "to JSON Lines in the spec's stream formats.");
+}
+
+void ExportCommand::configure(QCommandLineParser &parser)
+{
+    parser.addPositionalArgument(QStringLiteral("session"), tr("The session database."),
+                                 tr("SESSION"));
+    parser.addOption({QStringLiteral("csv"),
+                      tr("Write contact_frames.csv, events.csv, device_frames.csv, "
+                         "operator_input.csv and metadata.json into DIR."),
+                      tr("DIR")});
+    parser.addOption({QStringLiteral("jsonl"),
+                      tr("Write frames.jsonl, events.jsonl and device_frames.jsonl into DIR."),
+                      tr("DIR")});
+}
+
+int ExportCommand::execute(const QCommandLineParser &parser)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty())
+        return usageError(tr("a session file is required"));
+    if (positional.size() > 1)
+        return usageError(tr("unexpected argument '%1'").arg(positional.at(1)));
+    if (!parser.isSet(QStringLiteral("csv")) && !parser.isSet(QStringLiteral("jsonl")))
+        return usageError(tr("--csv DIR or --jsonl DIR is required"));
+    QString error;
+    std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &error);
+    if (!session)
+        return inputError(error);
+    if (parser.isSet(QStringLiteral("csv")) &&
+        !exportCsv(*session, parser.value(QStringLiteral("csv"))))
+        return ExitInvalidInput;
+    if (parser.isSet(QStringLiteral("jsonl")) &&
+        !exportJsonLines(*session, parser.value(QStringLiteral("jsonl"))))
+        return ExitInvalidInput;
+    return ExitOk;
+}
+
+QIODevice *ExportCommand::create(const QString &dir, const QString &name)
+{
+    if (!QDir().mkpath(dir)) {
+        inputError(tr("%1: cannot create the folder").arg(dir));
+        return nullptr;
+    }
+    return openOutput(QDir(dir).filePath(name));
+}
+
+bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
+{
+    QString error;
+    QByteArray row;
+    const auto fail = [this, &error] {
+        inputError(error);
+        return false;
+    };
+
+    QIODevice *frames = create(dir, QStringLiteral("contact_frames.csv"));
+    if (!frames)
+        return false;
+    QByteArray header = "t,gripper";
+    for (const char *tip : {"left", "right"}) {
+        for (const char *column : {"f", "n", "actor", "fx", "fy", "fz"})
+            header += QByteArray(",") + tip + '_' + column;
+    }
+    frames->write(header + ",arrival\n");
+    const bool framesOk = session.readContactFrames(
+        [&](const ContactFrame &frame, double arrival) {
+            row.clear();
+            appendNumber(row, frame.t);
+            row += ',' + gripperName(frame.gripper).toUtf8() + ',';
+            appendFingertip(row, frame.left, session.actors());
+            row += ',';
+            appendFingertip(row, frame.right, session.actors());
+            row += ',';
+            appendNumber(row, arrival);
+            row += '\n';
+            return frames->write(row) == row.size();
+        },
+        &error);
+    if (!framesOk)
+        return fail();
+
+    QIODevice *events = create(dir, QStringLiteral("events.csv"));
+    if (!events)
+        return false;
+    events->write("t,gripper,node,detector,message,category,phase,intensity\n");
+    const bool eventsOk = session.readEvents(
+        [&](const SemanticEvent &event) {
+            row.clear();
+            appendNumber(row, event.t);
+            row += ',' + gripperName(event.gripper).toUtf8() + ',';
+            appendText(row, session.nodeNames().value(event.node));
+            for (const QString &name :
+                 {detectorKindName(event.detector), messageName(event.message),
+                  categoryName(event.category), eventPhaseName(event.phase)})
+                row += ',' + name.toUtf8();
+            row += ',';
+            appendNumber(row, event.intensity);
+            row += '\n';
+            return events->write(row) == row.size();
+        },
+        &error);
+    if (!eventsOk)
+        return fail();
+
+    // One row per instant, one column per device channel: devices at other rates leave
+    // their columns empty, which pandas and PlotJuggler read as missing.
+    QIODevice *devices = create(dir, QStringLiteral("device_frames.csv"));
+    if (!devices)
+        return false;
+    std::vector<int> firstColumn;
+    int columns = 0;
+    header = "t";
+    for (int d = 0; d < session.deviceNames().size(); ++d) {
+        firstColumn.push_back(columns);
+        for (const QString &channel : session.channelNames(d)) {
+            header += ',';
+            appendText(header, session.deviceNames().at(d) + QLatin1Char('.') + channel);
+            ++columns;
+        }
+    }
+    devices->write(header + '\n');
+    std::vector<double> values(size_t(columns), qQNaN());
+    double instant = qQNaN();
+    const auto writeInstant = [&] {
+        if (std::isnan(instant))
+            return true;
+        row.clear();
+        appendNumber(row, instant);
+        for (double value : values) {
+            row += ',';
+            appendNumber(row, value);
+        }
+        row += '\n';
+        std::fill(values.begin(), values.end(), qQNaN());
+        return devices->write(row) == row.size();
+    };
+    const bool devicesOk = session.readDeviceFrames(
+        [&](const DeviceFrame &frame) {
+            if (frame.t != instant && !writeInstant())
+                return false;
+            instant = frame.t;
+            if (size_t(frame.device) >= firstColumn.size())
+                return true; // a device the devices table does not list: no column for it
+            const int count =
+                std::min(frame.channelCount, int(session.channelNames(frame.device).size()));
+            for (int c = 0; c < count; ++c)
+                values[size_t(firstColumn[size_t(frame.device)] + c)] = frame.values[size_t(c)];
+            return true;
+        },
+        &error);
+    if (!devicesOk || !writeInstant())
+        return fail();
+
+    QIODevice *inputs = create(dir, QStringLiteral("operator_input.csv"));
+    if (!inputs)
+        return false;
+    inputs->write("t,hand,x,y,z,qw,qx,qy,qz,grip\n");
+    const bool inputsOk = session.readOperatorInput(
+        [&](const OperatorInput &input) {
+            row.clear();
+            appendNumber(row, input.t);
+            row += ',' + gripperName(input.hand).toUtf8();
+            for (double v : input.pos) {
+                row += ',';
+                appendNumber(row, v);
+            }
+            for (double v : input.quat) {
+                row += ',';
+                appendNumber(row, v);
+            }
+            row += ',';
+            appendNumber(row, input.grip);
+            row += '\n';
+            return inputs->write(row) == row.size();
+        },
+        &error);
+    if (!inputsOk)
+        return fail();
+
+    QIODevice *metadata = create(dir, QStringLiteral("metadata.json"));
+    if (!metadata)
+        return false;
+    QJsonObject json;
+    const QMap<QString, QString> rows = session.info().toMetadata();
+    for (auto it = rows.begin(); it != rows.end(); ++it)
+        json.insert(it.key(), it.value());
+    // The structured values as JSON, not as strings holding JSON.
+    json.insert(QStringLiteral("router"), session.info().router);
+    json.insert(QStringLiteral("bindings"), session.info().bindings);
+    json.insert(QStringLiteral("overrides"), QJsonArray::fromStringList(session.info().overrides));
+    metadata->write(QJsonDocument(json).toJson(QJsonDocument::Indented));
+    return true;
+}
+
+bool ExportCommand::exportJsonLines(SessionReader &session, const QString &dir)
+{
+    QIODevice *framesOut = create(dir, QStringLiteral("frames.jsonl"));
+    QIODevice *eventsOut = framesOut ? create(dir, QStringLiteral("events.jsonl")) : nullptr;
+    QIODevice *devicesOut =
+        eventsOut ? create(dir, QStringLiteral("device_frames.jsonl")) : nullptr;
+    if (!devicesOut)
+        return false;
+    JsonLinesWriter frames(framesOut);
+    frames.setActorTable(&session.actors());
+    QString error;
+    bool ok = session.readContactFrames(
+        [&frames](const ContactFrame &frame, double) { return frames.write(frame); }, &error);
+    // Events and device frames name nodes and devices as read, so read them first.
+    std::vector<SemanticEvent> events;
+    ok = ok && session.readEvents(
+                   [&events](const SemanticEvent &event) {
+                       events.push_back(event);
+                       return true;
+                   },
+                   &error);
+    JsonLinesWriter eventWriter(eventsOut);
+    eventWriter.setNodeNames(session.nodeNames());
+    for (const SemanticEvent &event : events)
+        ok = ok && eventWriter.write(event);
+    JsonLinesWriter deviceWriter(devicesOut);
+    deviceWriter.setDeviceNames(session.deviceNames());
+    ok = ok && session.readDeviceFrames(
+                   [&deviceWriter](const DeviceFrame &frame) { return deviceWriter.write(frame); },
+                   &error);
+    if (!ok)
+        inputError(error.isEmpty() ? tr("%1: cannot write").arg(dir) : error);
+    return ok;
+}
+
+} // namespace semhap

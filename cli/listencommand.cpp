@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+#include "listencommand.h"
+
+#include "devicebindings.h"
+#include "devicemanager.h"
+#include "deviceoutputsink.h"
+#include "emergencystop.h"
+#include "quitsignal.h"
+#include "sessionwriter.h"
+#include "streamsink.h"
+#include "udpframesource.h"
+
+#include <QElapsedTimer>
+#include <QFileDevice>
+
+#include <functional>
+
+namespace semhap {
+
+namespace {
+
+/**
+ * Lets a few rejection lines a second through and counts the rest, so a sender gone wrong
+ * cannot flood the terminal or slow the loop down.
+ */
+class Throttle
+{
+public:
+    static constexpr int LinesPerSecond = 5;
+
+    explicit Throttle(std::function<void(const QString &)> print) : m_print(std::move(print))
+    {
+        m_clock.start();
+    }
+
+    void report(const QString &line)
+    {
+        roll();
+        if (m_printed < LinesPerSecond) {
+            ++m_printed;
+            m_print(line);
+        } else {
+            ++m_suppressed;
+        }
+    }
+    /** Says how many lines were held back, once their second is over. */
+    void roll()
+    {
+        if (m_clock.elapsed() < 1000)
+            return;
+        if (m_suppressed > 0)
+            m_print(ListenCommand::tr("… and %n more rejected in the last second", nullptr,
+                                      m_suppressed));
+        m_clock.restart();
+        m_printed = 0;
+        m_suppressed = 0;
+    }
+
+private:
+    std::function<void(const QString &)> m_print;
+    QElapsedTimer m_clock;
+    int m_printed = 0;
+    int m_suppressed = 0;
+};
+
+void flushAll(std::initializer_list<QIODevice *> devices)
+{
+    for (QIODevice *device : devices) {
+        if (auto *file = qobject_cast<QFileDevice *>(device))
+            file->flush();
+    }
+}
+
+} // namespace
+
+QString ListenCommand::summary() const
+{
+    return tr("Receives contact frames over UDP from another program and runs them through "
+              "detectors, router and devices live, optionally recording a session.");
+}
+
+void ListenCommand::configure(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("udp"),
+                      tr("UDP port to listen on (0: any free port, printed at start)."),
+                      tr("PORT")});
+    parser.addOption({QStringLiteral("bind"),
+                      tr("Address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 "
+                         "for every network)."),
+                      tr("ADDR")});
+    parser.addOption({QStringLiteral("router"), tr("Router preset or router file (default C3)."),
+                      tr("PRESET|FILE")});
+    parser.addOption({QStringLiteral("set"),
+                      tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
+                      tr("NODE.PARAM=VALUE")});
+    parser.addOption({QStringLiteral("events"),
+                      tr("Where to write the semantic events, or - for standard output."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("device-frames"),
+                      tr("Where to write the device frames, or - for standard output."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("session"),
+                      tr("Record into a new session database, with each frame's arrival time."),
+                      tr("FILE")});
+    parser.addOption({QStringLiteral("notes"), tr("Notes kept with the session."), tr("TEXT")});
+    parser.addOption({QStringLiteral("bind-device"),
+                      tr("Send a device's output to a band, e.g. "
+                         "right.vibro=serial:/dev/ttyACM0 (repeatable)."),
+                      tr("NAME=URI")});
+    parser.addOption({QStringLiteral("duration"),
+                      tr("Stop after this many seconds (default: until interrupted)."), tr("S")});
+}
+
+int ListenCommand::execute(const QCommandLineParser &parser)
+{
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    if (!parser.isSet(QStringLiteral("udp")))
+        return usageError(tr("--udp is required"));
+    double port = 0;
+    double duration = 0;
+    if (!numberOption(parser, QStringLiteral("udp"), &port) ||
+        !numberOption(parser, QStringLiteral("duration"), &duration))
+        return ExitUsage;
+    if (port < 0 || port > 65535 || port != std::floor(port))
+        return usageError(tr("--udp must be a port number (0 to 65535)"));
+    if (duration < 0)
+        return usageError(tr("--duration must not be negative"));
+    const QString eventsPath = parser.value(QStringLiteral("events"));
+    const QString framesPath = parser.value(QStringLiteral("device-frames"));
+    if (!checkSingleStdout({eventsPath, framesPath}))
+        return ExitUsage;
+
+    const QString routerName = parser.isSet(QStringLiteral("router"))
+                                   ? parser.value(QStringLiteral("router"))
+                                   : QStringLiteral("C3");
+    const QStringList overrides = parser.values(QStringLiteral("set"));
+    LoadError error;
+    std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error);
+    if (!router)
+        return inputError(error.toString());
+    QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
+    QIODevice *deviceFrames = framesPath.isEmpty() ? nullptr : openOutput(framesPath);
+    if ((!eventsPath.isEmpty() && !events) || (!framesPath.isEmpty() && !deviceFrames))
+        return ExitInvalidInput;
+
+    DeviceManager devices;
+    QString message;
+    bool usage = false;
+    const QStringList bindings = parser.values(QStringLiteral("bind-device"));
+    if (!bindDevices(bindings, router->player(), devices, &message, &usage))
+        return usage ? usageError(message) : inputError(message);
+
+    const QString address = parser.isSet(QStringLiteral("bind"))
+                                ? parser.value(QStringLiteral("bind"))
+                                : QStringLiteral("127.0.0.1");
+    UdpFrameSource source;
+    if (!source.bind(address, int(port), &message))
+        return inputError(message);
+
+    std::unique_ptr<SessionWriter> session;
+    if (parser.isSet(QStringLiteral("session"))) {
+        SessionInfo info;
+        info.source = QStringLiteral("listen");
+        info.routerSource = routerName;
+        info.overrides = overrides;
+        for (const QString &binding : bindings)
+            info.bindings.insert(binding.section(QLatin1Char('='), 0, 0),
+                                 binding.section(QLatin1Char('='), 1));
+        info.notes = parser.value(QStringLiteral("notes"));
+        info.extra.insert(QStringLiteral("udp"),
+                          QStringLiteral("%1:%2").arg(address).arg(source.port()));
+        session = SessionWriter::create(parser.value(QStringLiteral("session")), info, *router,
+                                        &message);
+        if (!session)
+            return inputError(message);
+        session->setActorTable(&source.actors());
+    }
+
+    if (devices.boundNames().isEmpty()) {
+        QuitSignal::install();
+    } else {
+        EmergencyStop::install();
+        devices.armAll(true);
+    }
+    Throttle throttle([this](const QString &line) { report(line); });
+    source.setErrorHandler([&throttle](const QString &line) { throttle.report(line); });
+    report(tr("listening on udp:%1:%2").arg(address).arg(source.port()));
+
+    Pipeline pipeline(std::move(router));
+    StreamSink streams(pipeline.router(), events, deviceFrames, session.get());
+    DeviceOutputSink sink(pipeline.router().player(), devices, &streams);
+    const auto process = [&](const ContactFrame &frame, double arrival) {
+        if (session)
+            session->recordContactFrame(frame, arrival);
+        pipeline.process(frame, sink);
+    };
+    QElapsedTimer wall;
+    wall.start();
+    const qint64 limit = duration > 0 ? qint64(duration * 1000) : -1;
+    while (!QuitSignal::requested() && (limit < 0 || wall.elapsed() < limit)) {
+        const qint64 left = limit < 0 ? 100 : limit - wall.elapsed();
+        if (source.waitForDatagrams(int(std::clamp<qint64>(left, 0, 100))) &&
+            source.poll(process) > 0)
+            flushAll({events, deviceFrames});
+        throttle.roll();
+    }
+    if (source.stats().frames > 0)
+        pipeline.flush(sink);
+    devices.stopAll();
+    if (session && !finishSession(*session))
+        return ExitInvalidInput;
+
+    const UdpFrameSource::Stats &stats = source.stats();
+    report(tr("udp:%1: %2 datagram(s), %3 frame(s), %4 rejected (%5 oversize)")
+               .arg(source.port())
+               .arg(stats.datagrams)
+               .arg(stats.frames)
+               .arg(stats.rejected)
+               .arg(stats.oversize));
+    return ExitOk;
+}
+
+} // namespace semhap

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "jsonlineswriter.h"
+#include "pipeline.h"
+
+class QIODevice;
+
+namespace semhap {
+
+/**
+ * Writes what a pipeline produces as JSON Lines, each stream to its own device (null: not
+ * written); what `route`, `replay` and `listen` share. Optionally also passes everything on.
+ */
+class StreamSink : public PipelineSink
+{
+public:
+    StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames,
+               PipelineSink *next = nullptr);
+
+    void onEvent(const SemanticEvent &event) override;
+    void onDeviceFrame(const DeviceFrame &frame) override;
+
+private:
+    bool m_writeEvents;
+    bool m_writeFrames;
+    JsonLinesWriter m_events;
+    JsonLinesWriter m_deviceFrames;
+    PipelineSink *m_next;
+};
+
+} // namespace semhap

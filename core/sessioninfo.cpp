@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#include "sessioninfo.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+
+namespace semhap {
+
+namespace {
+
+const QString FormatKey = QStringLiteral("format");
+const QString SchemaKey = QStringLiteral("schema_version");
+const QString SourceKey = QStringLiteral("source");
+const QString SceneKey = QStringLiteral("scene");
+const QString RouterKey = QStringLiteral("router");
+const QString RouterSourceKey = QStringLiteral("router_source");
+const QString OverridesKey = QStringLiteral("overrides");
+const QString BindingsKey = QStringLiteral("bindings");
+const QString OperatorKey = QStringLiteral("operator");
+const QString SeedKey = QStringLiteral("seed");
+const QString VersionKey = QStringLiteral("semhap_version");
+const QString StartedKey = QStringLiteral("started_utc");
+const QString EndedKey = QStringLiteral("ended_utc");
+const QString NotesKey = QStringLiteral("notes");
+
+QString compact(const QJsonDocument &document)
+{
+    return QString::fromUtf8(document.toJson(QJsonDocument::Compact));
+}
+
+QString utc(const QDateTime &time)
+{
+    return time.isValid() ? time.toUTC().toString(Qt::ISODateWithMs) : QString();
+}
+
+} // namespace
+
+QMap<QString, QString> SessionInfo::toMetadata() const
+{
+    QMap<QString, QString> rows = extra;
+    rows.insert(FormatKey, QLatin1String(Format));
+    rows.insert(SchemaKey, QString::number(SchemaVersion));
+    rows.insert(SourceKey, source);
+    rows.insert(SceneKey, scene);
+    rows.insert(RouterKey, compact(QJsonDocument(router)));
+    rows.insert(RouterSourceKey, routerSource);
+    rows.insert(OverridesKey, compact(QJsonDocument(QJsonArray::fromStringList(overrides))));
+    rows.insert(BindingsKey, compact(QJsonDocument(bindings)));
+    rows.insert(OperatorKey, operatorName);
+    rows.insert(SeedKey, seed);
+    rows.insert(VersionKey, semhapVersion);
+    rows.insert(StartedKey, utc(started));
+    if (ended.isValid())
+        rows.insert(EndedKey, utc(ended));
+    rows.insert(NotesKey, notes);
+    return rows;
+}
+
+SessionInfo SessionInfo::fromMetadata(const QMap<QString, QString> &rows)
+{
+    SessionInfo info;
+    QMap<QString, QString> rest = rows;
+    const auto take = [&rest](const QString &key) { return rest.take(key); };
+    take(FormatKey);
+    take(SchemaKey);
+    info.source = take(SourceKey);
+    info.scene = take(SceneKey);
+    info.router = QJsonDocument::fromJson(take(RouterKey).toUtf8()).object();
+    info.routerSource = take(RouterSourceKey);
+    for (const QJsonValue &item : QJsonDocument::fromJson(take(OverridesKey).toUtf8()).array())
+        info.overrides.append(item.toString());
+    info.bindings = QJsonDocument::fromJson(take(BindingsKey).toUtf8()).object();
+    info.operatorName = take(OperatorKey);
+    info.seed = take(SeedKey);
+    info.semhapVersion = take(VersionKey);
+    info.started = QDateTime::fromString(take(StartedKey), Qt::ISODateWithMs);
+    info.ended = QDateTime::fromString(take(EndedKey), Qt::ISODateWithMs);
+    info.notes = take(NotesKey);
+    info.extra = rest;
+    return info;
+}
+
+} // namespace semhap

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QDateTime>
+#include <QJsonObject>
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+namespace semhap {
+
+/**
+ * What a session is, beside its streams: where the frames came from, the router that ran
+ * them (self-contained, so the session replays on another machine), the devices it drove,
+ * who operated and with which seed. Stored as the session's `metadata` table, one text
+ * value per key (docs/sessions.md lists the keys).
+ */
+struct SessionInfo
+{
+    static constexpr const char *Format = "semhap.session/1";
+    /** The schema this semhap writes and reads; a session with another is refused. */
+    static constexpr int SchemaVersion = 1;
+
+    QString source;        ///< what produced the frames: `run`, `listen`, `studio`
+    QString scene;         ///< scene name or file, when simulated
+    QJsonObject router;    ///< RouterGraph JSON with its patterns and models embedded
+    QString routerSource;  ///< the preset name or file the router was loaded from
+    QStringList overrides; ///< `NODE.PARAM=VALUE` applied to it
+    QJsonObject bindings;  ///< device name → transport URI
+    QString operatorName;
+    QString seed;
+    QString semhapVersion;
+    QDateTime started; ///< UTC
+    QDateTime ended;   ///< UTC; invalid when the recording did not close (a crash)
+    QString notes;
+    QMap<QString, QString> extra; ///< any other key, kept as is (run options, …)
+
+    /** The metadata table's rows. */
+    QMap<QString, QString> toMetadata() const;
+    /** Reads the rows back; unknown keys go to `extra`. */
+    static SessionInfo fromMetadata(const QMap<QString, QString> &rows);
+};
+
+} // namespace semhap

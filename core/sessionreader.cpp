@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+#include "sessionreader.h"
+
+#include "routergraph.h"
+#include "sessionschema.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+QString sqlError(const QSqlError &error)
+{
+    return error.databaseText().isEmpty() ? error.text() : error.databaseText();
+}
+
+/** The WHERE clause of a time window; infinite bounds are left out. */
+QString window(double from, double to)
+{
+    QStringList terms;
+    if (std::isfinite(from))
+        terms.append(QStringLiteral("t >= :from"));
+    if (std::isfinite(to))
+        terms.append(QStringLiteral("t < :to"));
+    return terms.isEmpty() ? QString()
+                           : QStringLiteral(" WHERE ") + terms.join(QLatin1String(" AND "));
+}
+
+double optional(const QVariant &value)
+{
+    return value.isNull() ? qQNaN() : value.toDouble();
+}
+
+} // namespace
+
+/** The read-only connection, named per reader (Qt SQL keeps connections by name). */
+class SessionReader::Database
+{
+public:
+    explicit Database(const QString &path)
+        : m_name(QStringLiteral("semhap.session.reader.%1").arg(quintptr(this)))
+    {
+        m_db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_name);
+        m_db.setDatabaseName(path);
+        m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
+    }
+    ~Database()
+    {
+        m_db.close();
+        m_db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(m_name);
+    }
+    QSqlDatabase &db() { return m_db; }
+
+private:
+    QString m_name;
+    QSqlDatabase m_db;
+};
+
+SessionReader::~SessionReader() = default;
+
+std::unique_ptr<SessionReader> SessionReader::open(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = path + QStringLiteral(": cannot read: ") + file.errorString();
+        return nullptr;
+    }
+    // SQLite would take an empty or foreign file for a new database: look first.
+    if (file.read(16) != QByteArray("SQLite format 3", 16)) {
+        *error = path + QStringLiteral(": not a semhap session (not an SQLite database)");
+        return nullptr;
+    }
+    file.close();
+    std::unique_ptr<SessionReader> reader(new SessionReader);
+    reader->m_path = path;
+    reader->m_db = std::make_unique<Database>(path);
+    QString reason;
+    if (!reader->load(&reason)) {
+        *error = path + QStringLiteral(": ") + reason;
+        return nullptr;
+    }
+    return reader;
+}
+
+bool SessionReader::load(QString *error)
+{
+    QSqlDatabase &db = m_db->db();
+    if (!db.isValid()) {
+        *error = QStringLiteral("the Qt SQLite driver (QSQLITE) is not available");
+        return false;
+    }
+    if (!db.open()) {
+        *error = QStringLiteral("cannot open: ") + sqlError(db.lastError());
+        return false;
+    }
+    const auto damaged = [error](const QSqlQuery &query) {
+        *error = QStringLiteral("damaged session: ") + sqlError(query.lastError());
+        return false;
+    };
+    QSqlQuery query(db);
+    query.setForwardOnly(true);
+    if (!query.exec(QStringLiteral("SELECT name FROM sqlite_master WHERE type = 'table'")))
+        return damaged(query);
+    QStringList tables;
+    while (query.next())
+        tables.append(query.value(0).toString());
+    if (query.lastError().isValid())
+        return damaged(query);
+    if (!tables.contains(QLatin1String("metadata"))) {
+        *error = QStringLiteral("not a semhap session (no metadata table)");
+        return false;
+    }
+    QMap<QString, QString> rows;
+    if (!query.exec(QStringLiteral("SELECT key, value FROM metadata")))
+        return damaged(query);
+    while (query.next())
+        rows.insert(query.value(0).toString(), query.value(1).toString());
+    if (query.lastError().isValid())
+        return damaged(query);
+    const QString version = rows.value(QStringLiteral("schema_version"));
+    if (version.isEmpty()) {
+        *error = QStringLiteral("not a semhap session (no schema_version in its metadata)");
+        return false;
+    }
+    if (version != QString::number(SessionInfo::SchemaVersion)) {
+        *error = QStringLiteral("session schema version %1 is not supported (this semhap "
+                                "reads %2)")
+                     .arg(version)
+                     .arg(SessionInfo::SchemaVersion);
+        return false;
+    }
+    for (const QString &table : SessionSchema::tables()) {
+        if (!tables.contains(table)) {
+            *error = QStringLiteral("damaged session: table '%1' is missing").arg(table);
+            return false;
+        }
+    }
+    m_info = SessionInfo::fromMetadata(rows);
+    for (const QJsonValue &node : m_info.router.value(QLatin1String("nodes")).toArray())
+        m_nodes.append(node.toObject().value(QLatin1String("id")).toString());
+
+    if (!query.exec(QStringLiteral("SELECT name, channels FROM devices ORDER BY device")))
+        return damaged(query);
+    while (query.next()) {
+        m_devices.append(query.value(0).toString());
+        QStringList channels;
+        const QJsonArray list =
+            QJsonDocument::fromJson(query.value(1).toString().toUtf8()).array();
+        for (const QJsonValue &channel : list)
+            channels.append(channel.toString());
+        m_channels.push_back(channels.mid(0, MaxChannels));
+    }
+    if (query.lastError().isValid())
+        return damaged(query);
+
+    // Counting walks every table's pages: a truncated file shows here, not halfway through.
+    const std::array<std::pair<const char *, qint64 *>, 4> counts{{
+        {"contact_frames", &m_frameCount},
+        {"events", &m_eventCount},
+        {"device_frames", &m_deviceFrameCount},
+        {"operator_input", &m_inputCount},
+    }};
+    for (const auto &[table, count] : counts) {
+        if (!query.exec(QStringLiteral("SELECT count(*) FROM ") + QLatin1String(table)) ||
+            !query.next())
+            return damaged(query);
+        *count = query.value(0).toLongLong();
+    }
+    if (!query.exec(QStringLiteral("SELECT min(t), max(t) FROM contact_frames")) || !query.next())
+        return damaged(query);
+    m_start = query.value(0).toDouble();
+    m_end = query.value(1).toDouble();
+    return true;
+}
+
+bool SessionReader::routerGraph(RouterGraph *graph, LoadError *error) const
+{
+    return RouterGraph::fromJson(m_info.router, m_path, graph, error);
+}
+
+int SessionReader::nodeIndex(const QString &name)
+{
+    int index = int(m_nodes.indexOf(name));
+    if (index < 0) {
+        m_nodes.append(name);
+        index = int(m_nodes.size()) - 1;
+    }
+    return index;
+}
+
+int SessionReader::deviceIndex(const QString &name)
+{
+    int index = int(m_devices.indexOf(name));
+    if (index < 0) {
+        m_devices.append(name);
+        m_channels.emplace_back();
+        index = int(m_devices.size()) - 1;
+    }
+    return index;
+}
+
+namespace {
+
+/** Runs a windowed SELECT; false with the damage as `error`. */
+bool select(QSqlDatabase &db, QSqlQuery *query, const QString &columns, const char *table,
+            double from, double to, QString *error)
+{
+    *query = QSqlQuery(db);
+    query->setForwardOnly(true);
+    query->prepare(QStringLiteral("SELECT ") + columns + QStringLiteral(" FROM ") +
+                   QLatin1String(table) + window(from, to) + QStringLiteral(" ORDER BY rowid"));
+    if (std::isfinite(from))
+        query->bindValue(QStringLiteral(":from"), from);
+    if (std::isfinite(to))
+        query->bindValue(QStringLiteral(":to"), to);
+    if (query->exec())
+        return true;
+    *error = QStringLiteral("damaged session: ") + sqlError(query->lastError());
+    return false;
+}
+
+/** After the rows: false with the damage as `error` when reading stopped on one. */
+bool finished(const QSqlQuery &query, const QString &path, QString *error)
+{
+    if (!query.lastError().isValid())
+        return true;
+    *error = path + QStringLiteral(": damaged session: ") + sqlError(query.lastError());
+    return false;
+}
+
+bool gripperOf(const QVariant &value, Gripper *gripper)
+{
+    return gripperFromName(value.toString(), gripper);
+}
+
+} // namespace
+
+bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error, double from,
+                                      double to)
+{
+    QSqlQuery query;
+    QString reason;
+    if (!select(m_db->db(), &query, QStringLiteral("*"), "contact_frames", from, to, &reason)) {
+        *error = m_path + QStringLiteral(": ") + reason;
+        return false;
+    }
+    const auto fingertip = [&query, this](int column, Fingertip *tip) {
+        tip->f = query.value(column).toDouble();
+        tip->n = query.value(column + 1).toInt();
+        tip->actor = m_actors.intern(query.value(column + 2).toString());
+        tip->hasFxyz = !query.value(column + 3).isNull();
+        for (int i = 0; i < 3; ++i)
+            tip->fxyz[size_t(i)] = tip->hasFxyz ? query.value(column + 3 + i).toDouble() : 0.0;
+    };
+    ContactFrame frame;
+    while (query.next()) {
+        frame.t = query.value(0).toDouble();
+        gripperOf(query.value(1), &frame.gripper);
+        fingertip(2, &frame.left);
+        fingertip(8, &frame.right);
+        if (!visit(frame, optional(query.value(14))))
+            return true;
+    }
+    return finished(query, m_path, error);
+}
+
+bool SessionReader::readEvents(const EventVisitor &visit, QString *error, double from, double to)
+{
+    QSqlQuery query;
+    QString reason;
+    if (!select(m_db->db(), &query, QStringLiteral("*"), "events", from, to, &reason)) {
+        *error = m_path + QStringLiteral(": ") + reason;
+        return false;
+    }
+    SemanticEvent event;
+    while (query.next()) {
+        event.t = query.value(0).toDouble();
+        gripperOf(query.value(1), &event.gripper);
+        event.node = nodeIndex(query.value(2).toString());
+        detectorKindFromName(query.value(3).toString(), &event.detector);
+        messageFromName(query.value(4).toString(), &event.message);
+        categoryFromName(query.value(5).toString(), &event.category);
+        eventPhaseFromName(query.value(6).toString(), &event.phase);
+        event.intensity = query.value(7).toDouble();
+        if (!visit(event))
+            return true;
+    }
+    return finished(query, m_path, error);
+}
+
+bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *error, double from,
+                                     double to)
+{
+    QSqlQuery query;
+    QString reason;
+    if (!select(m_db->db(), &query, QStringLiteral("*"), "device_frames", from, to, &reason)) {
+        *error = m_path + QStringLiteral(": ") + reason;
+        return false;
+    }
+    DeviceFrame frame;
+    while (query.next()) {
+        frame.t = query.value(0).toDouble();
+        frame.device = deviceIndex(query.value(1).toString());
+        frame.values.fill(0.0);
+        frame.channelCount = 0;
+        for (int c = 0; c < MaxChannels && !query.value(2 + c).isNull(); ++c) {
+            frame.values[size_t(c)] = query.value(2 + c).toDouble();
+            frame.channelCount = c + 1;
+        }
+        if (!visit(frame))
+            return true;
+    }
+    return finished(query, m_path, error);
+}
+
+bool SessionReader::readOperatorInput(const InputVisitor &visit, QString *error, double from,
+                                      double to)
+{
+    QSqlQuery query;
+    QString reason;
+    if (!select(m_db->db(), &query, QStringLiteral("*"), "operator_input", from, to, &reason)) {
+        *error = m_path + QStringLiteral(": ") + reason;
+        return false;
+    }
+    OperatorInput input;
+    while (query.next()) {
+        input.t = query.value(0).toDouble();
+        gripperOf(query.value(1), &input.hand);
+        for (int i = 0; i < 3; ++i)
+            input.pos[size_t(i)] = query.value(2 + i).toDouble();
+        for (int i = 0; i < 4; ++i)
+            input.quat[size_t(i)] = query.value(5 + i).toDouble();
+        input.grip = query.value(9).toDouble();
+        if (!visit(input))
+            return true;
+    }
+    return finished(query, m_path, error);
+}
+
+} // namespace semhap

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "actortable.h"
+#include "contactframe.h"
+#include "deviceframe.h"
+#include "operatorinput.h"
+#include "semanticevent.h"
+#include "sessioninfo.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <limits>
+#include <memory>
+
+namespace semhap {
+
+class RouterGraph;
+struct LoadError;
+
+/**
+ * Opens a recorded session (docs/sessions.md) and reads its streams back, whole or within
+ * a time window — what replay, export and the studio's scrubber need. Values come back bit
+ * for bit as they were recorded (except that -0 reads as 0: SQLite stores integral reals
+ * as integers). Opened read-only; a session whose recording was killed opens too.
+ *
+ * Not thread-safe: use one reader from one thread (Qt SQL connections are per thread).
+ */
+class SessionReader
+{
+public:
+    /** Reads a contact frame and its arrival time (NaN when simulated); false stops. */
+    using FrameVisitor = std::function<bool(const ContactFrame &frame, double arrival)>;
+    using EventVisitor = std::function<bool(const SemanticEvent &event)>;
+    using DeviceFrameVisitor = std::function<bool(const DeviceFrame &frame)>;
+    using InputVisitor = std::function<bool(const OperatorInput &input)>;
+
+    static constexpr double Forever = std::numeric_limits<double>::infinity();
+
+    /**
+     * Opens `path` and checks it is a session this semhap reads: an SQLite database with
+     * the schema version and every table. Null with `error` as `FILE: reason`.
+     */
+    static std::unique_ptr<SessionReader> open(const QString &path, QString *error);
+    ~SessionReader();
+
+    const QString &path() const { return m_path; }
+    const SessionInfo &info() const { return m_info; }
+    /** The recorded router, ready to compile (its patterns and models embedded). */
+    bool routerGraph(RouterGraph *graph, LoadError *error) const;
+
+    /** Router node ids: SemanticEvent::node indexes this (the recorded router's order). */
+    const QStringList &nodeNames() const { return m_nodes; }
+    /** Device names: DeviceFrame::device indexes this (the recorded player's order). */
+    const QStringList &deviceNames() const { return m_devices; }
+    /** The channel names of device `device`, in its model's order. */
+    const QStringList &channelNames(int device) const { return m_channels[size_t(device)]; }
+    /** The actors the contact frames name; frames refer to them by id. */
+    const ActorTable &actors() const { return m_actors; }
+
+    qint64 contactFrameCount() const { return m_frameCount; }
+    qint64 eventCount() const { return m_eventCount; }
+    qint64 deviceFrameCount() const { return m_deviceFrameCount; }
+    qint64 operatorInputCount() const { return m_inputCount; }
+    /** The first and last contact frame times (0 when there are none). */
+    double startTime() const { return m_start; }
+    double endTime() const { return m_end; }
+
+    /**
+     * Visits the values with `from <= t < to`, in recorded order. False with `error` when
+     * the database cannot be read (a damaged file); a visitor returning false just stops.
+     */
+    bool readContactFrames(const FrameVisitor &visit, QString *error, double from = -Forever,
+                           double to = Forever);
+    bool readEvents(const EventVisitor &visit, QString *error, double from = -Forever,
+                    double to = Forever);
+    bool readDeviceFrames(const DeviceFrameVisitor &visit, QString *error, double from = -Forever,
+                          double to = Forever);
+    bool readOperatorInput(const InputVisitor &visit, QString *error, double from = -Forever,
+                           double to = Forever);
+
+private:
+    class Database;
+    SessionReader() = default;
+    bool load(QString *error);
+    int nodeIndex(const QString &name);
+    int deviceIndex(const QString &name);
+
+    QString m_path;
+    std::unique_ptr<Database> m_db;
+    SessionInfo m_info;
+    QStringList m_nodes;
+    QStringList m_devices;
+    std::vector<QStringList> m_channels;
+    ActorTable m_actors;
+    qint64 m_frameCount = 0;
+    qint64 m_eventCount = 0;
+    qint64 m_deviceFrameCount = 0;
+    qint64 m_inputCount = 0;
+    double m_start = 0.0;
+    double m_end = 0.0;
+};
+
+} // namespace semhap

@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: MIT
+// Sessions from the command line: run --session records without changing the run's
+// outputs, replay and re-routing give what route gives, export, listen over UDP, and a
+// recording killed with SIGKILL loses at most ~100 ms and still opens.
+#include "clitool.h"
+#include "sessionreader.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QHostAddress>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUdpSocket>
+
+using namespace semhap;
+
+namespace {
+
+const QString Trace = QStringLiteral(SEMHAP_RESOURCES "/traces/demo.jsonl");
+
+struct Result
+{
+    int code;
+    QByteArray out;
+    QByteArray err;
+};
+
+Result semhapRun(const QStringList &arguments)
+{
+    QByteArray in;
+    QBuffer inBuffer(&in);
+    inBuffer.open(QIODevice::ReadOnly);
+    Result r{0, {}, {}};
+    QBuffer outBuffer(&r.out);
+    QBuffer errBuffer(&r.err);
+    outBuffer.open(QIODevice::WriteOnly);
+    errBuffer.open(QIODevice::WriteOnly);
+    CliTool tool({&inBuffer, &outBuffer, &errBuffer});
+    r.code = tool.run(arguments);
+    return r;
+}
+
+QByteArray contents(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("(missing)");
+}
+
+const QStringList RunArgs{"run",        "--scene",  "bimanual_sorting", "--router", "C3",
+                          "--operator", "scripted", "--duration",       "12"};
+
+} // namespace
+
+class TestSessionCli : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void recordingChangesNoOutput();
+    void replayGivesTheRecordedStreams();
+    void rerouteEqualsRoute();
+    void exportCsv();
+    void errors_data();
+    void errors();
+    void listenRunsLikeRoute();
+    void killedRecordingOpens();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_session;
+};
+
+void TestSessionCli::initTestCase()
+{
+    m_session = m_dir.filePath("c3.db");
+    const QStringList outputs{"--events",        m_dir.filePath("with.events"),
+                              "--device-frames", m_dir.filePath("with.devices"),
+                              "--frames",        m_dir.filePath("with.frames")};
+    const Result r = semhapRun(RunArgs + outputs + QStringList{"--session", m_session});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.err, QByteArray());
+}
+
+void TestSessionCli::recordingChangesNoOutput()
+{
+    const Result r =
+        semhapRun(RunArgs + QStringList{"--events", m_dir.filePath("without.events"),
+                                        "--device-frames", m_dir.filePath("without.devices"),
+                                        "--frames", m_dir.filePath("without.frames")});
+    QCOMPARE(r.code, 0);
+    for (const char *stream : {"events", "devices", "frames"}) {
+        const QByteArray with = contents(m_dir.filePath(QString("with.") + stream));
+        QVERIFY(with.count('\n') > 10);
+        QCOMPARE(with, contents(m_dir.filePath(QString("without.") + stream)));
+    }
+}
+
+void TestSessionCli::replayGivesTheRecordedStreams()
+{
+    const Result events = semhapRun({"replay", m_session, "--events", "-"});
+    QCOMPARE(events.code, 0);
+    QCOMPARE(events.out, contents(m_dir.filePath("with.events")));
+    // Both hands took part: the slip detector's events are there too.
+    QVERIFY(events.out.contains("\"left.slip\""));
+    const Result devices = semhapRun({"replay", m_session, "--device-frames", "-"});
+    QCOMPARE(devices.out, contents(m_dir.filePath("with.devices")));
+}
+
+void TestSessionCli::rerouteEqualsRoute()
+{
+    const QString jsonl = m_dir.filePath("jsonl");
+    QCOMPARE(semhapRun({"export", m_session, "--jsonl", jsonl}).code, 0);
+    QCOMPARE(contents(jsonl + "/frames.jsonl"), contents(m_dir.filePath("with.frames")));
+    for (const char *stream : {"--events", "--device-frames"}) {
+        const Result replay = semhapRun({"replay", m_session, "--router", "C1", stream, "-"});
+        const Result route = semhapRun(
+            {"route", "--router", "C1", "--frames", jsonl + "/frames.jsonl", stream, "-"});
+        QCOMPARE(replay.code, 0);
+        QCOMPARE(route.code, 0);
+        QVERIFY(route.out.count('\n') > 10);
+        QCOMPARE(replay.out, route.out);
+    }
+    // C1 confirms on the vibration band where C3 squeezes: a different design indeed.
+    const Result c1 = semhapRun({"replay", m_session, "--router", "C1", "--metrics", "-"});
+    const QJsonObject metrics = QJsonDocument::fromJson(c1.out).object();
+    QCOMPARE(metrics.value("router").toString(), QString("C1"));
+    QVERIFY(metrics.value("messages").toObject().contains("right.force.grasp"));
+}
+
+void TestSessionCli::exportCsv()
+{
+    const QString csv = m_dir.filePath("csv");
+    QCOMPARE(semhapRun({"export", m_session, "--csv", csv}).code, 0);
+    const QList<QByteArray> frames = contents(csv + "/contact_frames.csv").trimmed().split('\n');
+    QCOMPARE(frames.first(), QByteArray("t,gripper,left_f,left_n,left_actor,left_fx,left_fy,"
+                                        "left_fz,right_f,right_n,right_actor,right_fx,right_fy,"
+                                        "right_fz,arrival"));
+    QCOMPARE(frames.size() - 1, contents(m_dir.filePath("with.frames")).count('\n'));
+    const QList<QByteArray> devices = contents(csv + "/device_frames.csv").split('\n');
+    QVERIFY(devices.first().startsWith("t,left.air.b1,"));
+    QVERIFY(devices.first().contains(",right.vibro.m4"));
+    QCOMPARE(devices.first().count(','), 28); // 7 devices, 28 channels
+    const QJsonObject metadata =
+        QJsonDocument::fromJson(contents(csv + "/metadata.json")).object();
+    QCOMPARE(metadata.value("scene").toString(), QString("bimanual_sorting"));
+    QCOMPARE(metadata.value("router").toObject().value("format").toString(),
+             QString("semhap.router/1"));
+    QVERIFY(contents(csv + "/events.csv").startsWith("t,gripper,node,detector,message,"));
+    QCOMPARE(contents(csv + "/operator_input.csv"), QByteArray("t,hand,x,y,z,qw,qx,qy,qz,grip\n"));
+}
+
+void TestSessionCli::errors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("firstLine");
+    QTest::newRow("replay without session")
+        << QStringList{"replay"} << 2 << "semhap replay: a session file is required";
+    QTest::newRow("replay of a trace")
+        << QStringList{"replay", Trace} << 1
+        << Trace + ": not a semhap session (not an SQLite database)";
+    QTest::newRow("replay of nothing")
+        << QStringList{"replay", "/nonexistent.db"} << 1
+        << "/nonexistent.db: cannot read: No such file or directory";
+    QTest::newRow("export without format")
+        << QStringList{"export", Trace} << 2
+        << "semhap export: --csv DIR or --jsonl DIR is required";
+    QTest::newRow("listen without port")
+        << QStringList{"listen"} << 2 << "semhap listen: --udp is required";
+    QTest::newRow("listen on a bad address")
+        << QStringList{"listen", "--udp", "0", "--bind", "localhostt"} << 1
+        << "localhostt: not an IP address";
+}
+
+void TestSessionCli::errors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, code);
+    QFETCH(QString, firstLine);
+    const Result r = semhapRun(args);
+    QCOMPARE(r.code, code);
+    QCOMPARE(QString::fromUtf8(r.err.split('\n').first()), firstLine);
+}
+
+void TestSessionCli::listenRunsLikeRoute()
+{
+    const QString session = m_dir.filePath("live.db");
+    QProcess listen;
+    listen.start(SEMHAP_CLI_BINARY, {"listen", "--udp", "0", "--duration", "5", "--router", "C1",
+                                     "--events", "-", "--session", session});
+    QVERIFY(listen.waitForStarted());
+    QByteArray err;
+    listen.setReadChannel(QProcess::StandardError);
+    while (!err.contains('\n') && listen.waitForReadyRead(5000))
+        err += listen.readAllStandardError();
+    listen.setReadChannel(QProcess::StandardOutput);
+    const QByteArray first = err.left(err.indexOf('\n'));
+    QVERIFY2(first.startsWith("listening on udp:127.0.0.1:"), first.constData());
+    const quint16 port = quint16(first.mid(first.lastIndexOf(':') + 1).toInt());
+
+    QFile trace(Trace);
+    QVERIFY(trace.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = trace.readAll().trimmed().split('\n');
+    QUdpSocket sender;
+    const auto send = [&](const QByteArray &datagram) {
+        sender.writeDatagram(datagram, QHostAddress::LocalHost, port);
+    };
+    send("garbage");
+    // Batches of 4 frames as JSON arrays, then the rest one per datagram.
+    int i = 0;
+    for (; i + 4 <= lines.size() / 2; i += 4) {
+        send('[' + lines.mid(i, 4).join(',') + ']');
+        QThread::usleep(300);
+    }
+    for (; i < lines.size(); ++i) {
+        send(lines[i]);
+        QThread::usleep(100);
+    }
+    send(QByteArray(40000, '{'));
+    QVERIFY(listen.waitForFinished(15000));
+    QCOMPARE(listen.exitCode(), 0);
+    const QByteArray events = listen.readAllStandardOutput();
+    err += listen.readAllStandardError();
+
+    const Result route =
+        semhapRun({"route", "--router", "C1", "--frames", Trace, "--events", "-"});
+    QCOMPARE(events, route.out);
+    const QList<QByteArray> report = err.trimmed().split('\n');
+    QVERIFY2(report.last().endsWith(": 2002 datagram(s), 3200 frame(s), 2 rejected (1 oversize)"),
+             err.constData());
+
+    QString error;
+    auto recorded = SessionReader::open(session, &error);
+    QVERIFY2(recorded, qPrintable(error));
+    QCOMPARE(recorded->contactFrameCount(), qint64(3200));
+    QCOMPARE(recorded->info().source, QString("listen"));
+    double lastArrival = -1;
+    QVERIFY(recorded->readContactFrames(
+        [&](const ContactFrame &, double arrival) {
+            const bool ok = arrival >= lastArrival; // received in order, stamped on arrival
+            lastArrival = arrival;
+            return ok;
+        },
+        &error));
+    QVERIFY(lastArrival > 0);
+}
+
+void TestSessionCli::killedRecordingOpens()
+{
+    // The run paces itself to the wall clock and flushes each tick's frames: the last
+    // frame on its standard output is one it had already handed to the recorder.
+    const QString session = m_dir.filePath("killed.db");
+    QProcess run;
+    run.start(SEMHAP_CLI_BINARY,
+              {"run", "--scene", "box_and_block", "--router", "C3", "--operator", "scripted",
+               "--duration", "60", "--realtime", "--session", session, "--frames", "-"});
+    QVERIFY(run.waitForStarted());
+    QByteArray out;
+    QElapsedTimer clock;
+    while (out.isEmpty() && run.waitForReadyRead(10000))
+        out += run.readAllStandardOutput();
+    clock.start();
+    while (clock.elapsed() < 1500) {
+        run.waitForReadyRead(50);
+        out += run.readAllStandardOutput();
+    }
+    run.kill(); // SIGKILL: no clean-up at all
+    QVERIFY(run.waitForFinished(5000));
+    out += run.readAllStandardOutput();
+    QCOMPARE(run.exitStatus(), QProcess::CrashExit);
+
+    const QList<QByteArray> lines = out.left(out.lastIndexOf('\n')).split('\n');
+    const double reported = QJsonDocument::fromJson(lines.last()).object().value("t").toDouble();
+    QVERIFY2(reported > 1.0, qPrintable(QString::number(reported)));
+
+    QString error;
+    auto killed = SessionReader::open(session, &error);
+    QVERIFY2(killed, qPrintable(error));
+    QVERIFY(!killed->info().ended.isValid()); // it never closed
+    // At most ~100 ms lost (50 ms batches), plus a margin for a busy machine.
+    QVERIFY2(
+        killed->endTime() >= reported - 0.25,
+        qPrintable(
+            QString("recorded up to %1 s, reported %2 s").arg(killed->endTime()).arg(reported)));
+    qInfo("killed at t = %.3f s; the session holds frames up to %.3f s", reported,
+          killed->endTime());
+    killed.reset();
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "check");
+        db.setDatabaseName(session);
+        QVERIFY(db.open());
+        QSqlQuery query(db);
+        QVERIFY(query.exec("PRAGMA integrity_check") && query.next());
+        QCOMPARE(query.value(0).toString(), QString("ok"));
+    }
+    QSqlDatabase::removeDatabase("check");
+}
+
+QTEST_GUILESS_MAIN(TestSessionCli)
+#include "tst_sessioncli.moc"

@@ -1,0 +1,483 @@
+// SPDX-License-Identifier: MIT
+// Sessions: what is recorded reads back bit for bit, damaged files are refused with a clear
+// reason, and the UDP frame source survives garbage, oversize datagrams and floods.
+#include "actortable.h"
+#include "router.h"
+#include "sessionreader.h"
+#include "sessionwriter.h"
+#include "udpframesource.h"
+
+#include <QFile>
+#include <QHostAddress>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUdpSocket>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <thread>
+
+using namespace semhap;
+
+namespace {
+
+bool sameBits(double a, double b)
+{
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+/** A double from anywhere in the range: tiny, huge, subnormal, many digits. */
+double anyDouble(std::mt19937_64 &random)
+{
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-1070, 300);
+    return unit(random) * std::pow(2.0, exponent(random));
+}
+
+struct Recording
+{
+    std::vector<ContactFrame> frames;
+    std::vector<double> arrivals;
+    std::vector<SemanticEvent> events;
+    std::vector<DeviceFrame> deviceFrames;
+    std::vector<OperatorInput> inputs;
+    ActorTable actors;
+};
+
+Recording synthetic(const Router &router, int ticks)
+{
+    std::mt19937_64 random(7);
+    Recording r;
+    const QStringList names{"cube_1", "container", "cube, \"odd\" name"};
+    for (int k = 0; k < ticks; ++k) {
+        for (Gripper g : {Gripper::Left, Gripper::Right}) {
+            ContactFrame frame;
+            frame.t = k * 0.001 + anyDouble(random) * 1e-300;
+            frame.gripper = g;
+            for (Fingertip *tip : {&frame.left, &frame.right}) {
+                tip->f = anyDouble(random);
+                tip->n = int(random() % 40);
+                tip->actor = k % 5 == 0 ? -1 : r.actors.intern(names[int(random() % 3)]);
+                tip->hasFxyz = k % 3 != 0;
+                if (tip->hasFxyz) {
+                    for (double &c : tip->fxyz)
+                        c = (random() % 2 ? -1 : 1) * anyDouble(random);
+                }
+            }
+            r.frames.push_back(frame);
+            r.arrivals.push_back(k % 2 ? qQNaN() : 1000.0 + anyDouble(random));
+        }
+        SemanticEvent event;
+        event.t = k * 0.001;
+        event.gripper = Gripper(k % 2);
+        event.node = int(router.nodeIds().indexOf(k % 2 ? "right.force" : "left.slip"));
+        event.detector = k % 2 ? DetectorKind::Force : DetectorKind::Slip;
+        event.message = Message(k % 3);
+        event.category = categoryOf(event.message);
+        event.phase = EventPhase(k % 3);
+        event.intensity = anyDouble(random);
+        r.events.push_back(event);
+        DeviceFrame device;
+        device.t = k * 0.001;
+        device.device = k % router.player().deviceCount();
+        device.channelCount = router.player().deviceModel(device.device).channelCount();
+        for (int c = 0; c < device.channelCount; ++c)
+            device.values[size_t(c)] = anyDouble(random);
+        r.deviceFrames.push_back(device);
+        OperatorInput input;
+        input.t = k * 0.001;
+        input.hand = Gripper(k % 2);
+        for (double &v : input.pos)
+            v = anyDouble(random);
+        for (double &v : input.quat)
+            v = anyDouble(random);
+        input.grip = -anyDouble(random);
+        r.inputs.push_back(input);
+    }
+    return r;
+}
+
+void record(const QString &path, const Router &router, const Recording &r)
+{
+    QString error;
+    SessionInfo info;
+    info.source = "test";
+    info.notes = "notes, with \"quotes\"";
+    std::unique_ptr<SessionWriter> writer = SessionWriter::create(path, info, router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    writer->setActorTable(&r.actors);
+    for (size_t i = 0; i < r.frames.size(); ++i) {
+        writer->recordContactFrame(r.frames[i], r.arrivals[i]);
+        if (i % 2 == 1) {
+            writer->onEvent(r.events[i / 2]);
+            writer->onDeviceFrame(r.deviceFrames[i / 2]);
+            writer->recordOperatorInput(r.inputs[i / 2]);
+        }
+    }
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+    QCOMPARE(writer->dropped(), quint64(0));
+}
+
+std::unique_ptr<Router> c3()
+{
+    LoadError error;
+    std::unique_ptr<Router> router = loadRouter("C3", {}, &error);
+    if (!router)
+        qFatal("%s", qPrintable(error.toString()));
+    return router;
+}
+
+/** Runs `statements` on a copy of a good session: the ways a file can be wrong. */
+void damage(const QString &path, const QStringList &statements)
+{
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "damage");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        QSqlQuery query(db);
+        for (const QString &statement : statements)
+            QVERIFY2(query.exec(statement), qPrintable(statement));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase("damage");
+}
+
+} // namespace
+
+class TestSessions : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void roundTripIsBitForBit();
+    void negativeZeroReadsAsZero();
+    void metadataAndRouter();
+    void timeWindow();
+    void neverOverwrites();
+    void damagedFiles_data();
+    void damagedFiles();
+    void udpGarbageOversizeAndBatch();
+    void udpFlood();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestSessions::roundTripIsBitForBit()
+{
+    const auto router = c3();
+    const Recording r = synthetic(*router, 3000);
+    const QString path = m_dir.filePath("roundtrip.db");
+    record(path, *router, r);
+
+    QString error;
+    std::unique_ptr<SessionReader> session = SessionReader::open(path, &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->contactFrameCount(), qint64(r.frames.size()));
+    QCOMPARE(session->nodeNames(), router->nodeIds());
+
+    size_t i = 0;
+    QVERIFY(session->readContactFrames(
+        [&](const ContactFrame &frame, double arrival) {
+            const ContactFrame &want = r.frames[i];
+            bool same = sameBits(frame.t, want.t) && frame.gripper == want.gripper &&
+                        (std::isnan(arrival) ? std::isnan(r.arrivals[i])
+                                             : sameBits(arrival, r.arrivals[i]));
+            for (auto [got, expected] :
+                 {std::pair(&frame.left, &want.left), std::pair(&frame.right, &want.right)}) {
+                same = same && sameBits(got->f, expected->f) && got->n == expected->n &&
+                       got->hasFxyz == expected->hasFxyz &&
+                       session->actors().name(got->actor) == r.actors.name(expected->actor);
+                for (size_t c = 0; c < 3 && expected->hasFxyz; ++c)
+                    same = same && sameBits(got->fxyz[c], expected->fxyz[c]);
+            }
+            if (!same)
+                qWarning("contact frame %zu differs", i);
+            ++i;
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.frames.size());
+
+    i = 0;
+    QVERIFY(session->readEvents(
+        [&](const SemanticEvent &e) {
+            const SemanticEvent &want = r.events[i++];
+            return sameBits(e.t, want.t) && e.gripper == want.gripper && e.node == want.node &&
+                   e.detector == want.detector && e.message == want.message &&
+                   e.category == want.category && e.phase == want.phase &&
+                   sameBits(e.intensity, want.intensity);
+        },
+        &error));
+    QCOMPARE(i, r.events.size());
+
+    i = 0;
+    QVERIFY(session->readDeviceFrames(
+        [&](const DeviceFrame &f) {
+            const DeviceFrame &want = r.deviceFrames[i++];
+            bool same = sameBits(f.t, want.t) && f.device == want.device &&
+                        f.channelCount == want.channelCount;
+            for (int c = 0; same && c < f.channelCount; ++c)
+                same = sameBits(f.values[size_t(c)], want.values[size_t(c)]);
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.deviceFrames.size());
+
+    i = 0;
+    QVERIFY(session->readOperatorInput(
+        [&](const OperatorInput &in) {
+            const OperatorInput &want = r.inputs[i++];
+            bool same =
+                sameBits(in.t, want.t) && in.hand == want.hand && sameBits(in.grip, want.grip);
+            for (size_t c = 0; c < 3; ++c)
+                same = same && sameBits(in.pos[c], want.pos[c]);
+            for (size_t c = 0; c < 4; ++c)
+                same = same && sameBits(in.quat[c], want.quat[c]);
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.inputs.size());
+}
+
+void TestSessions::negativeZeroReadsAsZero()
+{
+    // SQLite stores integral reals as integers, so -0 comes back as 0 (equal, not the same
+    // bits); docs/sessions.md says so.
+    const auto router = c3();
+    Recording r;
+    ContactFrame frame;
+    frame.left.hasFxyz = true;
+    frame.left.fxyz = {-0.0, 1.0, -2.0};
+    r.frames.push_back(frame);
+    r.arrivals.push_back(qQNaN());
+    const QString path = m_dir.filePath("zero.db");
+    record(path, *router, r);
+    QString error;
+    auto session = SessionReader::open(path, &error);
+    QVERIFY(session);
+    QVERIFY(session->readContactFrames(
+        [](const ContactFrame &f, double) {
+            return f.left.fxyz[0] == 0.0 && f.left.fxyz[2] == -2.0;
+        },
+        &error));
+}
+
+void TestSessions::metadataAndRouter()
+{
+    const auto router = c3();
+    const QString path = m_dir.filePath("meta.db");
+    record(path, *router, Recording());
+    QString error;
+    auto session = SessionReader::open(path, &error);
+    QVERIFY(session);
+    QCOMPARE(session->info().source, QString("test"));
+    QCOMPARE(session->info().notes, QString("notes, with \"quotes\""));
+    QCOMPARE(session->info().semhapVersion, QString(SEMHAP_VERSION_STRING));
+    QVERIFY(session->info().started.isValid());
+    QVERIFY(session->info().ended >= session->info().started);
+    QCOMPARE(session->deviceNames().size(), router->player().deviceCount());
+    QCOMPARE(session->channelNames(int(session->deviceNames().indexOf("right.vibro"))),
+             QStringList({"m1", "m2", "m3", "m4"}));
+    // The router replays without the presets: every pattern and model is embedded.
+    RouterGraph graph;
+    LoadError loadError;
+    QVERIFY(session->routerGraph(&graph, &loadError));
+    QCOMPARE(graph.models.size(), size_t(4));
+    QVERIFY(graph.patterns.size() >= 2);
+    auto again = Router::compile(graph, &loadError);
+    QVERIFY2(again, qPrintable(loadError.toString()));
+    QCOMPARE(again->nodeIds(), router->nodeIds());
+}
+
+void TestSessions::timeWindow()
+{
+    const auto router = c3();
+    const Recording r = synthetic(*router, 1000);
+    const QString path = m_dir.filePath("window.db");
+    record(path, *router, r);
+    QString error;
+    auto session = SessionReader::open(path, &error);
+    QVERIFY(session);
+    int count = 0;
+    double first = -1;
+    QVERIFY(session->readEvents(
+        [&](const SemanticEvent &e) {
+            if (count++ == 0)
+                first = e.t;
+            return true;
+        },
+        &error, 0.5, 0.6));
+    QCOMPARE(count, 100);
+    QCOMPARE(first, 0.5);
+}
+
+void TestSessions::neverOverwrites()
+{
+    const auto router = c3();
+    const QString path = m_dir.filePath("exists.db");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("precious");
+    file.close();
+    QString error;
+    QVERIFY(!SessionWriter::create(path, SessionInfo(), *router, &error));
+    QCOMPARE(error, path + ": already exists (a session is never overwritten)");
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), QByteArray("precious"));
+}
+
+void TestSessions::damagedFiles_data()
+{
+    QTest::addColumn<QStringList>("statements");
+    QTest::addColumn<QByteArray>("replace"); // the file's bytes instead, when set
+    QTest::addColumn<int>("truncateTo");     // bytes to keep, when > 0
+    QTest::addColumn<QString>("reason");
+
+    QTest::newRow("text file") << QStringList() << QByteArray("{\"t\": 0}\n") << 0
+                               << "not a semhap session (not an SQLite database)";
+    QTest::newRow("empty file") << QStringList() << QByteArray("") << 0
+                                << "not a semhap session (not an SQLite database)";
+    QTest::newRow("other database") << QStringList{"DROP TABLE metadata"} << QByteArray() << 0
+                                    << "not a semhap session (no metadata table)";
+    QTest::newRow("no schema version")
+        << QStringList{"DELETE FROM metadata WHERE key = 'schema_version'"} << QByteArray() << 0
+        << "not a semhap session (no schema_version in its metadata)";
+    QTest::newRow("newer schema")
+        << QStringList{"UPDATE metadata SET value = '7' WHERE key = 'schema_version'"}
+        << QByteArray() << 0 << "session schema version 7 is not supported (this semhap reads 1)";
+    QTest::newRow("missing table") << QStringList{"DROP TABLE events"} << QByteArray() << 0
+                                   << "damaged session: table 'events' is missing";
+    QTest::newRow("truncated") << QStringList() << QByteArray() << 40000
+                               << "damaged session: database disk image is malformed";
+}
+
+void TestSessions::damagedFiles()
+{
+    QFETCH(QStringList, statements);
+    QFETCH(QByteArray, replace);
+    QFETCH(int, truncateTo);
+    QFETCH(QString, reason);
+    const auto router = c3();
+    const QString path = m_dir.filePath(QString("damaged-%1.db").arg(QTest::currentDataTag()));
+    record(path, *router, synthetic(*router, 2000));
+    if (!statements.isEmpty())
+        damage(path, statements);
+    QFile file(path);
+    if (!replace.isNull()) {
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(replace);
+        file.close();
+    }
+    if (truncateTo > 0) {
+        QVERIFY(file.size() > truncateTo * 2);
+        QVERIFY(file.resize(truncateTo));
+    }
+    QString error;
+    QVERIFY(!SessionReader::open(path, &error));
+    QCOMPARE(error, path + ": " + reason);
+}
+
+void TestSessions::udpGarbageOversizeAndBatch()
+{
+    UdpFrameSource source;
+    QString error;
+    QVERIFY2(source.bind("127.0.0.1", 0, &error), qPrintable(error));
+    QStringList rejections;
+    source.setErrorHandler([&](const QString &line) { rejections.append(line); });
+    QUdpSocket sender;
+    const auto send = [&](const QByteArray &datagram) {
+        QCOMPARE(sender.writeDatagram(datagram, QHostAddress::LocalHost, quint16(source.port())),
+                 qint64(datagram.size()));
+    };
+    send("not json at all");
+    send(QByteArray(UdpFrameSource::MaxDatagramSize + 1, ' '));
+    send(
+        "{\"t\": 0, \"gripper\": \"right\", \"left\": {\"f\": 3, \"n\": 2, \"actor\": \"cube\"}}");
+    send("[{\"t\": 0.1, \"gripper\": \"right\"}, 5, {\"t\": 0, \"gripper\": \"left\"},"
+         " {\"t\": 0.05, \"gripper\": \"right\"}]"); // the last goes back in time
+    send("{\"t\": 1, \"gripper\": \"middle\"}");
+    std::vector<ContactFrame> frames;
+    for (int waited = 0; source.stats().datagrams < 5 && waited < 50; ++waited) {
+        source.waitForDatagrams(100);
+        source.poll([&](const ContactFrame &f, double arrival) {
+            QVERIFY(arrival >= 0);
+            frames.push_back(f);
+        });
+    }
+    QCOMPARE(source.stats().datagrams, quint64(5));
+    QCOMPARE(source.stats().frames, quint64(3));
+    QCOMPARE(source.stats().oversize, quint64(1));
+    QCOMPARE(source.stats().rejected, quint64(5));
+    QCOMPARE(frames.size(), size_t(3));
+    QCOMPARE(frames[0].left.f, 3.0);
+    QCOMPARE(source.actors().name(frames[0].left.actor), QString("cube"));
+    QCOMPARE(frames[1].t, 0.1);
+    QCOMPARE(frames[2].gripper, Gripper::Left);
+    const QString prefix = QString("udp:%1: ").arg(source.port());
+    QCOMPARE(rejections.size(), 5);
+    QVERIFY2(rejections[0].startsWith(prefix + "invalid JSON at byte "),
+             qPrintable(rejections[0]));
+    QCOMPARE(rejections[1], prefix + "datagram of 32769 bytes is over the limit of 32768");
+    QCOMPARE(rejections[2], prefix + "[1]: a contact frame must be a JSON object");
+    QVERIFY2(rejections[3].startsWith(prefix + "[3]: \"t\" must increase per gripper"),
+             qPrintable(rejections[3]));
+    QVERIFY(rejections[4].startsWith(prefix + "\"gripper\" must be"));
+}
+
+void TestSessions::udpFlood()
+{
+    // 20 000 datagrams as fast as the receiver drains them: it reads in batches, so each
+    // poll returns promptly however many wait, and every datagram is processed once.
+    constexpr int Total = 20000;
+    std::atomic<int> port{0};
+    std::atomic<quint64> received{0};
+    std::atomic<bool> stop{false};
+    std::atomic<qint64> longestPollNs{0};
+    quint64 frames = 0;
+    quint64 garbage = 0;
+    std::thread receiver([&] {
+        UdpFrameSource source; // lives on this thread, as the docs ask
+        QString error;
+        if (!source.bind("127.0.0.1", 0, &error))
+            return;
+        port = source.port();
+        QElapsedTimer poll;
+        while (!stop.load() || source.waitForDatagrams(200)) {
+            source.waitForDatagrams(20);
+            poll.start();
+            source.poll([](const ContactFrame &, double) {}, 256);
+            longestPollNs = std::max(longestPollNs.load(), poll.nsecsElapsed());
+            received = source.stats().datagrams;
+        }
+        frames = source.stats().frames;
+        garbage = source.stats().rejected;
+    });
+    while (port.load() == 0)
+        QThread::msleep(1);
+    QUdpSocket sender;
+    for (int i = 0; i < Total; ++i) {
+        const QByteArray datagram =
+            i % 10 == 9 ? QByteArray("\x01\x02garbage")
+                        : QStringLiteral("{\"t\": %1, \"gripper\": \"right\"}").arg(i).toUtf8();
+        sender.writeDatagram(datagram, QHostAddress::LocalHost, quint16(port.load()));
+        // Flow control, so the kernel's buffer never overflows: at most 200 in flight.
+        for (int waited = 0; quint64(i) >= received.load() + 200 && waited < 5000; ++waited)
+            QThread::usleep(200);
+    }
+    for (int waited = 0; received.load() < Total && waited < 500; ++waited)
+        QThread::msleep(10);
+    stop = true;
+    receiver.join();
+    QCOMPARE(received.load(), quint64(Total));
+    QCOMPARE(frames, quint64(Total - Total / 10));
+    QCOMPARE(garbage, quint64(Total / 10));
+    QVERIFY2(longestPollNs.load() < 500'000'000, "a poll of 256 datagrams took over 0.5 s");
+}
+
+QTEST_GUILESS_MAIN(TestSessions)
+#include "tst_sessions.moc"
