@@ -5,31 +5,31 @@
     <name>RouterCommands</name>
     <message>
         <source>Add %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hinzufügen</translation>
     </message>
     <message>
         <source>Disconnect</source>
-        <translation type="unfinished">Trennen</translation>
+        <translation>Trennen</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <source>Move</source>
-        <translation type="unfinished"></translation>
+        <translation>Verschieben</translation>
     </message>
     <message>
         <source>Connect %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mit %2 verbinden</translation>
     </message>
     <message>
         <source>Set %1.%2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.%2 setzen</translation>
     </message>
     <message>
         <source>Rename %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 in %2 umbenennen</translation>
     </message>
 </context>
 <context>
@@ -596,15 +596,15 @@
     </message>
     <message>
         <source>Patterns</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster</translation>
     </message>
     <message>
         <source>Router</source>
-        <translation type="unfinished">Router</translation>
+        <translation>Router</translation>
     </message>
     <message>
         <source>The run is paused while you audition a pattern.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Lauf ist angehalten, während Sie ein Muster vorhören.</translation>
     </message>
 </context>
 <context>
@@ -718,223 +718,223 @@
     <name>semhap::NodeInspector</name>
     <message>
         <source>Pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster</translation>
     </message>
     <message>
         <source>Track %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur %1</translation>
     </message>
     <message>
         <source>Waveform</source>
-        <translation type="unfinished"></translation>
+        <translation>Wellenform</translation>
     </message>
     <message>
         <source>Select a node in the tree</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen Knoten im Baum auswählen</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Name</translation>
     </message>
     <message>
         <source>Description</source>
-        <translation type="unfinished">Beschreibung</translation>
+        <translation>Beschreibung</translation>
     </message>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter</translation>
     </message>
     <message>
         <source>Channels</source>
-        <translation type="unfinished"></translation>
+        <translation>Kanäle</translation>
     </message>
     <message>
         <source>* drives every channel of the model</source>
-        <translation type="unfinished"></translation>
+        <translation>* steuert jeden Kanal des Modells an</translation>
     </message>
     <message>
         <source>Changing the type to a combinator keeps this waveform as its input</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird der Typ in einen Kombinator geändert, bleibt diese Wellenform als dessen Eingang erhalten</translation>
     </message>
     <message>
         <source>Type</source>
-        <translation type="unfinished"></translation>
+        <translation>Typ</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Wert</translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter</translation>
     </message>
     <message>
         <source>Gain</source>
-        <translation type="unfinished"></translation>
+        <translation>Verstärkung</translation>
     </message>
     <message>
         <source>Offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Versatz</translation>
     </message>
     <message>
         <source>To</source>
-        <translation type="unfinished"></translation>
+        <translation>Zielwert</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">Zeit (s)</translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>Points (t:v, …)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte (t:v, …)</translation>
     </message>
     <message>
         <source>Frequency (Hz)</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenz (Hz)</translation>
     </message>
     <message>
         <source>Amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Amplitude</translation>
     </message>
     <message>
         <source>Phase (cycles)</source>
-        <translation type="unfinished"></translation>
+        <translation>Phase (Perioden)</translation>
     </message>
     <message>
         <source>Duty</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastgrad</translation>
     </message>
     <message>
         <source>High</source>
-        <translation type="unfinished"></translation>
+        <translation>Hochpegel</translation>
     </message>
     <message>
         <source>Low</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiefpegel</translation>
     </message>
     <message>
         <source>Rate (Hz)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rate (Hz)</translation>
     </message>
     <message>
         <source>Width (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite (s)</translation>
     </message>
     <message>
         <source>Divide by</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilen durch</translation>
     </message>
     <message>
         <source>Minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimum</translation>
     </message>
     <message>
         <source>Maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>Maximum</translation>
     </message>
     <message>
         <source>Its inputs are the children in the tree.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seine Eingänge sind die untergeordneten Knoten im Baum.</translation>
     </message>
     <message>
         <source>current value</source>
-        <translation type="unfinished"></translation>
+        <translation>aktueller Wert</translation>
     </message>
     <message>
         <source>peak since begin</source>
-        <translation type="unfinished"></translation>
+        <translation>Spitzenwert seit Beginn</translation>
     </message>
     <message>
         <source>fixed value</source>
-        <translation type="unfinished"></translation>
+        <translation>fester Wert</translation>
     </message>
     <message>
         <source>Where the envelope starts: the track&apos;s value when it began, its peak, or a fixed value</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo die Hüllkurve beginnt: beim Wert der Spur zu ihrem Beginn, bei ihrem Spitzenwert oder bei einem festen Wert</translation>
     </message>
     <message>
         <source>Starts from</source>
-        <translation type="unfinished"></translation>
+        <translation>Beginnt bei</translation>
     </message>
     <message>
         <source>Start value</source>
-        <translation type="unfinished"></translation>
+        <translation>Anfangswert</translation>
     </message>
     <message>
         <source>Not understood; nothing was changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verstanden; nichts wurde geändert</translation>
     </message>
 </context>
 <context>
     <name>semhap::NumberEdit</name>
     <message>
         <source>A fixed value, or a live parameter of the pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein fester Wert oder ein Live-Parameter des Musters</translation>
     </message>
     <message>
         <source>× </source>
-        <translation type="unfinished"></translation>
+        <translation>× </translation>
     </message>
     <message>
         <source>Gain: the value is gain × parameter + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Verstärkung: Der Wert ist Verstärkung × Parameter + Versatz</translation>
     </message>
     <message>
         <source>+ </source>
-        <translation type="unfinished"></translation>
+        <translation>+ </translation>
     </message>
     <message>
         <source>Offset: the value is gain × parameter + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Versatz: Der Wert ist Verstärkung × Parameter + Versatz</translation>
     </message>
     <message>
         <source>through a curve (edit it in the JSON tab)</source>
-        <translation type="unfinished"></translation>
+        <translation>über eine Kurve (im Reiter JSON bearbeiten)</translation>
     </message>
     <message>
         <source>value</source>
-        <translation type="unfinished"></translation>
+        <translation>Wert</translation>
     </message>
 </context>
 <context>
     <name>semhap::PatternAuditioner</name>
     <message>
         <source>There is no device to play on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt kein Gerät zum Abspielen.</translation>
     </message>
 </context>
 <context>
     <name>semhap::PatternDocument</name>
     <message>
         <source>Edit %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bearbeiten</translation>
     </message>
     <message>
         <source>%1: cannot write: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
     <name>semhap::PatternPreview</name>
     <message>
         <source>all channels</source>
-        <translation type="unfinished"></translation>
+        <translation>alle Kanäle</translation>
     </message>
     <message>
         <source>time since begin (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit seit Beginn (s)</translation>
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert</translation>
     </message>
     <message>
         <source>predicted output</source>
-        <translation type="unfinished"></translation>
+        <translation>vorhergesagte Ausgabe</translation>
     </message>
     <message>
         <source> end</source>
-        <translation type="unfinished"></translation>
+        <translation> Ende</translation>
     </message>
 </context>
 <context>
@@ -1202,256 +1202,256 @@
     <name>semhap::RouterEditor</name>
     <message>
         <source>Auto-apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Automatisch anwenden</translation>
     </message>
     <message>
         <source>Send every edit that compiles to the running session</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Änderung, die sich kompilieren lässt, an die laufende Sitzung senden</translation>
     </message>
     <message>
         <source>Not connected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verbunden: %1</translation>
     </message>
     <message>
         <source>Drag a node type onto the canvas, or double-click it</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen Knotentyp auf die Zeichenfläche ziehen oder doppelklicken</translation>
     </message>
     <message>
         <source>Router</source>
-        <translation type="unfinished">Router</translation>
+        <translation>Router</translation>
     </message>
     <message>
         <source>New (empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu (leer)</translation>
     </message>
     <message>
         <source>New from preset</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu aus Vorlage</translation>
     </message>
     <message>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen…</translation>
     </message>
     <message>
         <source>Open router</source>
-        <translation type="unfinished">Router öffnen</translation>
+        <translation>Router öffnen</translation>
     </message>
     <message>
         <source>semhap routers (*.json)</source>
-        <translation type="unfinished">semhap-Router (*.json)</translation>
+        <translation>semhap-Router (*.json)</translation>
     </message>
     <message>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern…</translation>
     </message>
     <message>
         <source>Save self-contained…</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigenständig speichern…</translation>
     </message>
     <message>
         <source>Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückgängig</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiederholen</translation>
     </message>
     <message>
         <source>Arrange</source>
-        <translation type="unfinished"></translation>
+        <translation>Anordnen</translation>
     </message>
     <message>
         <source>Lay the nodes out in columns: detectors, logic, patterns, devices</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Knoten in Spalten anordnen: Detektoren, Logik, Muster, Geräte</translation>
     </message>
     <message>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Einpassen</translation>
     </message>
     <message>
         <source>Show the whole graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Den ganzen Graphen zeigen</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <source>Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopieren</translation>
     </message>
     <message>
         <source>Paste</source>
-        <translation type="unfinished"></translation>
+        <translation>Einfügen</translation>
     </message>
     <message>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Anwenden</translation>
     </message>
     <message>
         <source>Make this graph the running router</source>
-        <translation type="unfinished"></translation>
+        <translation>Diesen Graphen zum laufenden Router machen</translation>
     </message>
     <message>
         <source>Connected %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mit %2 verbunden</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a valid id (non-empty, no &apos;:&apos; or spaces)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; ist keine gültige ID (nicht leer, ohne &apos;:&apos; und Leerzeichen)</translation>
     </message>
     <message>
         <source>there is already a node &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>es gibt bereits einen Knoten &apos;%1&apos;</translation>
     </message>
     <message numerus="yes">
         <source>Copied %n node(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Knoten kopiert</numerusform>
+            <numerusform>%n Knoten kopiert</numerusform>
         </translation>
     </message>
     <message>
         <source>clipboard</source>
-        <translation type="unfinished"></translation>
+        <translation>Zwischenablage</translation>
     </message>
     <message>
         <source>Nothing to paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nichts einzufügen: %1</translation>
     </message>
     <message>
         <source>Opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geöffnet</translation>
     </message>
     <message>
         <source>cannot embed %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht eingebettet werden: %2</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 gespeichert</translation>
     </message>
     <message>
         <source>Save self-contained router</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigenständigen Router speichern</translation>
     </message>
     <message>
         <source>Save router</source>
-        <translation type="unfinished"></translation>
+        <translation>Router speichern</translation>
     </message>
     <message>
         <source>untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>unbenannt</translation>
     </message>
     <message>
         <source>Not applied: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht angewendet: %1</translation>
     </message>
     <message>
         <source>Applied: the running session uses this router now.</source>
-        <translation type="unfinished"></translation>
+        <translation>Angewendet: Die laufende Sitzung verwendet jetzt diesen Router.</translation>
     </message>
     <message>
         <source>Select a node to edit its parameters.</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen Knoten auswählen, um seine Parameter zu bearbeiten.</translation>
     </message>
     <message numerus="yes">
         <source>%n nodes selected.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Knoten ausgewählt.</numerusform>
+            <numerusform>%n Knoten ausgewählt.</numerusform>
         </translation>
     </message>
     <message>
         <source>The name events and devices carry</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Name, den Ereignisse und Geräte tragen</translation>
     </message>
     <message>
         <source>id</source>
-        <translation type="unfinished"></translation>
+        <translation>id</translation>
     </message>
     <message>
         <source>(any)</source>
-        <translation type="unfinished"></translation>
+        <translation>(beliebig)</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(keine)</translation>
     </message>
     <message>
         <source>(default)</source>
-        <translation type="unfinished"></translation>
+        <translation>(Standard)</translation>
     </message>
     <message>
         <source>A number, a name or JSON (lists, curves); empty: the default</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Zahl, ein Name oder JSON (Listen, Kurven); leer: der Standardwert</translation>
     </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>
     <message>
         <source>there is no node &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>es gibt keinen Knoten &apos;%1&apos;</translation>
     </message>
     <message>
         <source>node &apos;%1&apos; (%2) has no output &apos;%3&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten &apos;%1&apos; (%2) hat keinen Ausgang &apos;%3&apos;</translation>
     </message>
     <message>
         <source>node &apos;%1&apos; (%2) has no input &apos;%3&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten &apos;%1&apos; (%2) hat keinen Eingang &apos;%3&apos;</translation>
     </message>
     <message>
         <source>a node cannot feed itself</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Knoten kann sich nicht selbst speisen</translation>
     </message>
     <message>
         <source>an event</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignis</translation>
     </message>
     <message>
         <source>a signal</source>
-        <translation type="unfinished"></translation>
+        <translation>Signal</translation>
     </message>
     <message>
         <source>a voice</source>
-        <translation type="unfinished"></translation>
+        <translation>Stimmen</translation>
     </message>
     <message>
         <source>%1 output cannot feed %2 input: &apos;%3&apos; (%4) sends %5, &apos;%6&apos; (%7) takes %8</source>
-        <translation type="unfinished"></translation>
+        <translation>ein %1-Ausgang kann keinen %2-Eingang speisen: &apos;%3&apos; (%4) sendet %5, &apos;%6&apos; (%7) erwartet %8</translation>
     </message>
     <message>
         <source>&apos;%1&apos; already feeds &apos;%2:%3&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; speist bereits &apos;%2:%3&apos;</translation>
     </message>
     <message>
         <source>&apos;%1:%2&apos; takes a single link and already has one</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1:%2&apos; nimmt nur eine Verbindung an und hat bereits eine</translation>
     </message>
     <message>
         <source>this link would make a cycle: &apos;%1&apos; already feeds &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>diese Verbindung würde einen Zyklus bilden: &apos;%1&apos; speist bereits &apos;%2&apos;</translation>
     </message>
     <message>
         <source>an output connects to an input, not to another output</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Ausgang wird mit einem Eingang verbunden, nicht mit einem anderen Ausgang</translation>
     </message>
     <message>
         <source>an input connects to an output, not to another input</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Eingang wird mit einem Ausgang verbunden, nicht mit einem anderen Eingang</translation>
     </message>
     <message>
         <source>output %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausgabe %1</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished">%1 %2</translation>
+        <translation>%1 %2</translation>
     </message>
 </context>
 <context>
@@ -1527,330 +1527,330 @@
     <name>semhap::WaveformDesigner</name>
     <message numerus="yes">
         <source>%n point(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
         </translation>
     </message>
     <message>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Gestoppt</translation>
     </message>
     <message>
         <source>Playing on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Spielt auf %1</translation>
     </message>
     <message>
         <source>Releasing on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Klingt auf %1 ab</translation>
     </message>
     <message>
         <source> — disarmed: arm it in the Devices panel to feel it</source>
-        <translation type="unfinished"></translation>
+        <translation> — gesperrt: unter „Geräte“ freigeben, um es zu spüren</translation>
     </message>
     <message>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu</translation>
     </message>
     <message>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen…</translation>
     </message>
     <message>
         <source>Open a pattern, an AHAP or a .haptic file</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Muster, eine AHAP- oder eine .haptic-Datei öffnen</translation>
     </message>
     <message>
         <source>Open pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster öffnen</translation>
     </message>
     <message>
         <source>Patterns and haptic files (*.json *.ahap *.haptic)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster und Haptik-Dateien (*.json *.ahap *.haptic)</translation>
     </message>
     <message>
         <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
         <source>Save</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern</translation>
     </message>
     <message>
         <source>Save as…</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern unter…</translation>
     </message>
     <message>
         <source>Duplicate</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplizieren</translation>
     </message>
     <message>
         <source>Make an editable copy of this pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine bearbeitbare Kopie dieses Musters anlegen</translation>
     </message>
     <message>
         <source>Import…</source>
-        <translation type="unfinished"></translation>
+        <translation>Importieren…</translation>
     </message>
     <message>
         <source>Import an Apple AHAP or a Meta .haptic file as a new pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Apple-AHAP- oder Meta-.haptic-Datei als neues Muster importieren</translation>
     </message>
     <message>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportieren…</translation>
     </message>
     <message>
         <source>Export the pattern as AHAP or .haptic (docs/convert.md)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Muster als AHAP oder .haptic exportieren (docs/convert.md)</translation>
     </message>
     <message>
         <source>Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückgängig</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiederholen</translation>
     </message>
     <message>
         <source>Library</source>
-        <translation type="unfinished"></translation>
+        <translation>Bibliothek</translation>
     </message>
     <message>
         <source>Built-in patterns (locked) and your own, from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Eingebaute Muster (schreibgeschützt) und Ihre eigenen, aus %1</translation>
     </message>
     <message>
         <source>Add track</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue Spur</translation>
     </message>
     <message>
         <source>A new track, driving every channel</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine neue Spur, die jeden Kanal ansteuert</translation>
     </message>
     <message>
         <source>Add part</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Abschnitt</translation>
     </message>
     <message>
         <source>Give the selected track an attack, a sustain or a release</source>
-        <translation type="unfinished"></translation>
+        <translation>Der ausgewählten Spur einen Anstieg, ein Halten oder ein Abklingen hinzufügen</translation>
     </message>
     <message>
         <source>Attack</source>
-        <translation type="unfinished"></translation>
+        <translation>Anstieg</translation>
     </message>
     <message>
         <source>Sustain</source>
-        <translation type="unfinished"></translation>
+        <translation>Halten</translation>
     </message>
     <message>
         <source>Release</source>
-        <translation type="unfinished"></translation>
+        <translation>Abklingen</translation>
     </message>
     <message>
         <source>Add input</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuer Eingang</translation>
     </message>
     <message>
         <source>Another input of the selected sum, product or sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein weiterer Eingang für die ausgewählte Summe (sum), das Produkt (product) oder die Folge (sequence)</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Entfernen</translation>
     </message>
     <message>
         <source>Remove the selected node</source>
-        <translation type="unfinished"></translation>
+        <translation>Den ausgewählten Knoten entfernen</translation>
     </message>
     <message>
         <source>Signal tree</source>
-        <translation type="unfinished"></translation>
+        <translation>Signalbaum</translation>
     </message>
     <message>
         <source>JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON</translation>
     </message>
     <message>
         <source>The device model the pattern is for; the preview predicts its output</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gerätemodell, für das das Muster bestimmt ist; die Vorschau sagt seine Ausgabe voraus</translation>
     </message>
     <message>
         <source>The intensity the pattern begins with (preview and audition)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Intensität, mit der das Muster beginnt (Vorschau und Vorhören)</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"> s</translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>When the preview ends the pattern (its release starts)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wann die Vorschau das Muster beendet (sein Abklingen beginnt)</translation>
     </message>
     <message>
         <source>Hold</source>
-        <translation type="unfinished"></translation>
+        <translation>Halten</translation>
     </message>
     <message>
         <source>Preview without an end: the sustain goes on</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorschau ohne Ende: Das Halten dauert an</translation>
     </message>
     <message>
         <source>Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell</translation>
     </message>
     <message>
         <source>Intensity</source>
-        <translation type="unfinished">Intensität</translation>
+        <translation>Intensität</translation>
     </message>
     <message>
         <source>End at</source>
-        <translation type="unfinished"></translation>
+        <translation>Ende bei</translation>
     </message>
     <message>
         <source>Where the audition plays: a bound device of the run (the run pauses), or a virtual one</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo das Vorhören spielt: ein zugeordnetes Gerät des Laufs (der Lauf hält an) oder ein virtuelles</translation>
     </message>
     <message>
         <source>Audition</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhören</translation>
     </message>
     <message>
         <source>Begin the pattern on the device now (again: restart it)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Muster jetzt auf dem Gerät beginnen (erneut: neu starten)</translation>
     </message>
     <message>
         <source>End</source>
-        <translation type="unfinished">Ende</translation>
+        <translation>Beenden</translation>
     </message>
     <message>
         <source>End the pattern: its release plays</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Muster beenden: Sein Abklingen spielt</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>Send the device to zero now (Esc stops everything)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gerät sofort auf null setzen (Esc stoppt alles)</translation>
     </message>
     <message>
         <source>Audition on</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhören auf</translation>
     </message>
     <message>
         <source>Built-in, read-only: duplicate it to edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Eingebaut, schreibgeschützt: zum Bearbeiten duplizieren</translation>
     </message>
     <message>
         <source>%1 (not saved yet)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (noch nicht gespeichert)</translation>
     </message>
     <message>
         <source>virtual (audition only)</source>
-        <translation type="unfinished"></translation>
+        <translation>virtuell (nur Vorhören)</translation>
     </message>
     <message>
         <source>Exported %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 exportiert</translation>
     </message>
     <message>
         <source>Could not save</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern fehlgeschlagen</translation>
     </message>
     <message>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 gespeichert</translation>
     </message>
     <message>
         <source>Save pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster speichern</translation>
     </message>
     <message>
         <source>Patterns (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster (*.json)</translation>
     </message>
     <message>
         <source>Could not save %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht gespeichert werden</translation>
     </message>
     <message>
         <source>Import haptic file</source>
-        <translation type="unfinished"></translation>
+        <translation>Haptik-Datei importieren</translation>
     </message>
     <message>
         <source>Haptic files (*.ahap *.haptic)</source>
-        <translation type="unfinished"></translation>
+        <translation>Haptik-Dateien (*.ahap *.haptic)</translation>
     </message>
     <message>
         <source>Could not import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht importiert werden</translation>
     </message>
     <message>
         <source>Export pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster exportieren</translation>
     </message>
     <message>
         <source>Apple AHAP (*.ahap);;Meta Haptics (*.haptic)</source>
-        <translation type="unfinished"></translation>
+        <translation>Apple AHAP (*.ahap);;Meta Haptics (*.haptic)</translation>
     </message>
     <message>
         <source>Could not export %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht exportiert werden</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt; is built in and read-only. &lt;b&gt;Duplicate&lt;/b&gt; it to edit a copy.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt; ist eingebaut und schreibgeschützt. &lt;b&gt;Duplizieren&lt;/b&gt; Sie es, um eine Kopie zu bearbeiten.</translation>
     </message>
     <message>
         <source>%1%2</source>
-        <translation type="unfinished">%1%2</translation>
+        <translation>%1%2</translation>
     </message>
     <message>
         <source>New pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Neues Muster</translation>
     </message>
     <message>
         <source> — not saved</source>
-        <translation type="unfinished"></translation>
+        <translation> — nicht gespeichert</translation>
     </message>
     <message>
         <source>Pattern %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muster %1 (%2)</translation>
     </message>
     <message>
         <source>Track %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur %1: %2</translation>
     </message>
     <message>
         <source>in</source>
-        <translation type="unfinished"></translation>
+        <translation>Eingang</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#009E73&apos;&gt;Valid pattern&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;span style=&apos;color:#009E73&apos;&gt;Gültiges Muster&lt;/span&gt;</translation>
     </message>
     <message>
         <source>Edit JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON bearbeiten</translation>
     </message>
     <message>
         <source>Unknown device model &apos;%1&apos; (built-in: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekanntes Gerätemodell &apos;%1&apos; (eingebaut: %2)</translation>
     </message>
     <message>
         <source>Cannot audition</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhören nicht möglich</translation>
     </message>
     <message>
         <source>unknown device model %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekanntes Gerätemodell %1</translation>
     </message>
     <message>
         <source>Cannot audition on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhören auf %1 nicht möglich</translation>
     </message>
 </context>
 </TS>
