@@ -8,6 +8,7 @@
 #include "routernodes.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
+#include "userpatterns.h"
 
 #include <QAction>
 #include <QApplication>
@@ -876,6 +877,8 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
         for (const PatternPtr &pattern : graph().patterns)
             choices.append(pattern->name());
         choices.append(PatternLibrary::builtinNames());
+        // The designer's saved patterns, by path: the router loads them from there.
+        choices.append(userPatternFiles());
     } else if (key == QLatin1String("model") && node.type == QLatin1String("device")) {
         editable = true;
         for (const DeviceModelPtr &model : graph().models)

@@ -10,6 +10,7 @@
 #include "patternlibrary.h"
 #include "patternpreview.h"
 #include "transportfactory.h"
+#include "userpatterns.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -111,9 +112,7 @@ QString waveformSummary(const QJsonObject &node)
 } // namespace
 
 WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
-    : QWidget(parent), m_devices(devices),
-      m_userFolder(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-                   QStringLiteral("/patterns"))
+    : QWidget(parent), m_devices(devices), m_userFolder(userPatternFolder())
 {
     setObjectName(QStringLiteral("waveformDesigner"));
     m_document = new PatternDocument(this);

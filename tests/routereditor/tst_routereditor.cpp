@@ -13,6 +13,7 @@
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "simengine.h"
+#include "userpatterns.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -25,6 +26,7 @@
 #include <QListWidget>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -211,6 +213,7 @@ private slots:
     void presetsLaidOutInColumns();
     void saveOpenRoundTrip();
     void selfContainedEmbedsUserPatterns();
+    void offersTheDesignersPatterns();
     void engineSwapsWhileRunning();
     void liveActivityLightsWires();
     void screenshot();
@@ -512,6 +515,32 @@ void TestRouterEditor::selfContainedEmbedsUserPatterns()
     auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
     QVERIFY(combo);
     QVERIFY(combo->findText("my.warning") >= 0);
+}
+
+void TestRouterEditor::offersTheDesignersPatterns()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QVERIFY(QDir().mkpath(userPatternFolder()));
+    const QString path = userPatternFolder() + "/my.slipwarning.json";
+    QFile::remove(path);
+    QVERIFY(QFile::copy(SEMHAP_RESOURCES "/patterns/vib.geiger.json", path));
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    f.select("left.geiger");
+    auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
+    QVERIFY(combo);
+    const int at = combo->findData(path);
+    QVERIFY2(at >= 0, qPrintable(path));
+    combo->setFocus();
+    while (combo->currentIndex() != at)
+        QTest::keyClick(combo, combo->currentIndex() < at ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(f.editor.graph()
+                     .nodes[size_t(f.editor.graph().nodeIndex("left.geiger"))]
+                     .params.value("pattern")
+                     .toString(),
+                 path);
+    QCOMPARE(f.editor.validate(), QStringList());
+    QFile::remove(path);
 }
 
 void TestRouterEditor::engineSwapsWhileRunning()
