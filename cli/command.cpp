@@ -103,6 +103,19 @@ QIODevice *Command::openInput(const QString &path)
     return m_files.back().get();
 }
 
+void Command::addRoutingOptions(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("events"),
+                      tr("Where to write the semantic events, or - for standard output."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("device-frames"),
+                      tr("Where to write the device frames, or - for standard output."),
+                      tr("FILE|-")});
+    parser.addOption({QStringLiteral("set"),
+                      tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
+                      tr("NODE.PARAM=VALUE")});
+}
+
 void Command::addPatternArguments(QCommandLineParser &parser)
 {
     parser.addPositionalArgument(QStringLiteral("pattern"),

@@ -73,6 +73,11 @@ protected:
     QIODevice *openOutput(const QString &path);
     /** Opens FILE, or standard input for `-`, for reading. Null after printing why. */
     QIODevice *openInput(const QString &path);
+    /**
+     * Declares --events, --device-frames and --set: the outputs and overrides of every
+     * command that routes frames (route, replay, listen).
+     */
+    void addRoutingOptions(QCommandLineParser &parser);
     /** Declares PATTERN|FILE, --intensity and --release-at: what render and play share. */
     void addPatternArguments(QCommandLineParser &parser);
     /**

@@ -19,7 +19,8 @@ bool bindDevices(const QStringList &bindings, const Player &player, DeviceManage
         }
         const int device = player.deviceIndex(name);
         if (device < 0) {
-            *message = QStringLiteral("--bind %1: the router has no device '%2'").arg(binding, name);
+            *message =
+                QStringLiteral("--bind %1: the router has no device '%2'").arg(binding, name);
             return false;
         }
         manager.bind(name, uri, std::make_shared<const DeviceModel>(player.deviceModel(device)),

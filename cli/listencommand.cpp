@@ -90,15 +90,7 @@ void ListenCommand::configure(QCommandLineParser &parser)
                       tr("ADDR")});
     parser.addOption({QStringLiteral("router"), tr("Router preset or router file (default C3)."),
                       tr("PRESET|FILE")});
-    parser.addOption({QStringLiteral("set"),
-                      tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
-                      tr("NODE.PARAM=VALUE")});
-    parser.addOption({QStringLiteral("events"),
-                      tr("Where to write the semantic events, or - for standard output."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("device-frames"),
-                      tr("Where to write the device frames, or - for standard output."),
-                      tr("FILE|-")});
+    addRoutingOptions(parser);
     parser.addOption({QStringLiteral("session"),
                       tr("Record into a new session database, with each frame's arrival time."),
                       tr("FILE")});

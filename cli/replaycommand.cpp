@@ -78,15 +78,7 @@ void ReplayCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("router"),
                       tr("Router preset or file (default: the router the session recorded)."),
                       tr("PRESET|FILE")});
-    parser.addOption({QStringLiteral("set"),
-                      tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
-                      tr("NODE.PARAM=VALUE")});
-    parser.addOption({QStringLiteral("events"),
-                      tr("Where to write the semantic events, or - for standard output."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("device-frames"),
-                      tr("Where to write the device frames, or - for standard output."),
-                      tr("FILE|-")});
+    addRoutingOptions(parser);
     parser.addOption({QStringLiteral("metrics"),
                       tr("Where to write counts and each message's begins and active time "
                          "(JSON), or - for standard output."),

@@ -28,15 +28,7 @@ void RouteCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("frames"),
                       tr("Contact frames to read (JSON Lines), or - for standard input."),
                       tr("FILE|-")});
-    parser.addOption({QStringLiteral("events"),
-                      tr("Where to write the semantic events, or - for standard output."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("device-frames"),
-                      tr("Where to write the device frames, or - for standard output."),
-                      tr("FILE|-")});
-    parser.addOption({QStringLiteral("set"),
-                      tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
-                      tr("NODE.PARAM=VALUE")});
+    addRoutingOptions(parser);
     parser.addOption({QStringLiteral("bind"),
                       tr("Send a device's output to a transport, e.g. "
                          "right.vibro=serial:/dev/ttyACM0 (repeatable). With --bind the run "
