@@ -171,6 +171,9 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
             last = std::max(last, keys.upper);
     }
     QVERIFY2(last <= t + 1e-9 && last > t - 0.05, qPrintable(QString::number(last)));
+    // The documentation's screenshot: SEMHAP_REPLAY_SCREENSHOT=FILE.png.
+    if (qEnvironmentVariableIsSet("SEMHAP_REPLAY_SCREENSHOT"))
+        window.grab().save(qEnvironmentVariable("SEMHAP_REPLAY_SCREENSHOT"));
 
     // Dragging the scrubber back shows less.
     const QPoint start = slider->rect().center();
