@@ -1,9 +1,45 @@
 // SPDX-License-Identifier: MIT
 #include "livehistory.h"
 
+#include "forcedetector.h"
+#include "routergraph.h"
+#include "slipdetector.h"
+
 #include <algorithm>
 
 namespace semhap {
+
+std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph)
+{
+    std::array<GripperThresholds, 2> result{};
+    for (const RouterNode &node : graph.nodes) {
+        Gripper gripper = Gripper::Right;
+        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper))
+            continue;
+        QJsonObject params = node.params;
+        params.remove(QLatin1String("gripper"));
+        QString key;
+        QString reason;
+        GripperThresholds &t = result[size_t(gripper)];
+        if (node.type == QLatin1String("force")) {
+            ForceDetector::Params p;
+            if (!p.read(params, &key, &reason))
+                continue;
+            t.hasForce = true;
+            t.grasp = p.grasp;
+            t.breakForce = p.brk;
+            t.max = p.max;
+        } else if (node.type == QLatin1String("slip")) {
+            SlipDetector::Params p;
+            if (!p.read(params, &key, &reason))
+                continue;
+            t.hasSlip = true;
+            t.loss = p.loss;
+            t.min = p.min;
+        }
+    }
+    return result;
+}
 
 LiveHistory::LiveHistory(QObject *parent) : QObject(parent) {}
 

@@ -27,6 +27,11 @@ struct GripperThresholds
     double min = 0.0;
 };
 
+class RouterGraph;
+
+/** The thresholds each gripper's detectors fire at, read from a router's graph. */
+std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph);
+
 /** One device of the running router, as the panels list it. */
 struct LiveDevice
 {

@@ -9,8 +9,10 @@
 #include "plotpanel.h"
 #include "poseinput.h"
 #include "preferencesdialog.h"
+#include "replaybar.h"
 #include "routereditor.h"
 #include "routergraph.h"
+#include "sessionreplay.h"
 #include "simviewport.h"
 #include "waveformdesigner.h"
 #include "world.h"
@@ -22,9 +24,12 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -39,6 +44,19 @@ constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
+
+/** The record button's red dot. */
+QIcon recordIcon()
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0xD5, 0x5E, 0x00));
+    painter.drawEllipse(QRectF(6, 6, 20, 20));
+    return QIcon(pixmap);
+}
 
 QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
 {
@@ -61,17 +79,20 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     // The world runs on the engine's thread: a takeover reads it between two ticks.
     m_teleop->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
+    m_replay = new SessionReplay(m_engine.history(), this);
 
     createActions();
     createToolBar();
     createDocks();
     createMenus();
     createStatusBar();
+    createReplayBar();
     connectEngine();
     resize(options.size.isEmpty() ? QSize(1280, 800) : options.size);
     applyDefaultSizes();
     m_defaultState = saveState(LayoutVersion);
     restoreLayout();
+    updateMode(); // a layout saved during a replay does not bring its bar back
     if (!options.size.isEmpty())
         resize(options.size);
 
@@ -192,6 +213,24 @@ void MainWindow::createActions()
         options.router = file;
         openRun(options);
     });
+    m_recordAction = action(tr("Record"), QStringLiteral("recordAction"),
+                            QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setIcon(recordIcon());
+    m_recordAction->setToolTip(tr("Record the run into a new session in your data folder "
+                                  "(Ctrl+Shift+R); again to stop"));
+    connect(m_recordAction, &QAction::triggered, this, &MainWindow::toggleRecording);
+    m_openSessionAction = action(tr("Open session…"), QStringLiteral("openSessionAction"),
+                                 QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O));
+    connect(m_openSessionAction, &QAction::triggered, this, [this] {
+        const QString file = QFileDialog::getOpenFileName(
+            this, tr("Open session"),
+            QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                QStringLiteral("/sessions"),
+            tr("semhap sessions (*.db);;All files (*)"));
+        if (!file.isEmpty())
+            openSession(file);
+    });
     m_preferencesAction =
         action(tr("Preferences…"), QStringLiteral("preferencesAction"), QKeySequence::Preferences);
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
@@ -254,6 +293,14 @@ void MainWindow::createToolBar()
     bar->addSeparator();
     bar->addAction(m_teleopAction);
     bar->addAction(m_forcesAction);
+    bar->addSeparator();
+    bar->addAction(m_recordAction);
+    m_notesEdit = new QLineEdit(bar);
+    m_notesEdit->setObjectName(QStringLiteral("sessionNotes"));
+    m_notesEdit->setPlaceholderText(tr("Session notes"));
+    m_notesEdit->setToolTip(tr("Kept with the next recording (participant, condition, …)"));
+    m_notesEdit->setMaximumWidth(180);
+    bar->addWidget(m_notesEdit);
 
     // Kept apart and in a colour of its own, so it is found without looking.
     auto *spacer = new QWidget(bar);
@@ -267,6 +314,20 @@ void MainWindow::createToolBar()
                            " border-radius: 4px; padding: 4px 14px; }"
                            "QToolButton:pressed { background: #A04600; }"));
     }
+}
+
+void MainWindow::createReplayBar()
+{
+    m_replayBar = new ReplayBar(*m_replay, this);
+    m_replayToolBar = new QToolBar(tr("Replay"), this);
+    m_replayToolBar->setObjectName(QStringLiteral("replayToolBar"));
+    m_replayToolBar->setMovable(false);
+    m_replayToolBar->addWidget(m_replayBar);
+    addToolBar(Qt::BottomToolBarArea, m_replayToolBar);
+    m_replayToolBar->hide();
+    m_replayToolBar->toggleViewAction()->setVisible(false); // shown by a replay only
+    connect(m_replayBar, &ReplayBar::closeRequested, this, &MainWindow::closeReplay);
+    connect(m_replayBar, &ReplayBar::rerouteRequested, this, &MainWindow::rerouteReplay);
 }
 
 void MainWindow::createDocks()
@@ -337,6 +398,7 @@ void MainWindow::createMenus()
     QMenu *file = menuBar()->addMenu(tr("&File"));
     file->addAction(m_openSceneAction);
     file->addAction(m_openRouterAction);
+    file->addAction(m_openSessionAction);
     file->addSeparator();
     file->addAction(m_preferencesAction);
     file->addSeparator();
@@ -352,6 +414,7 @@ void MainWindow::createMenus()
     run->addAction(m_fasterAction);
     run->addSeparator();
     run->addAction(m_teleopAction);
+    run->addAction(m_recordAction);
     run->addAction(m_stopAllAction);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
@@ -375,6 +438,8 @@ void MainWindow::createStatusBar()
         statusBar()->addPermanentWidget(l);
         return l;
     };
+    m_recordLabel = label(QStringLiteral("recordLabel"));
+    m_recordLabel->setStyleSheet(QStringLiteral("color: #D55E00; font-weight: bold;"));
     m_operatorLabel = label(QStringLiteral("operatorLabel"));
     m_devicesLabel = label(QStringLiteral("devicesLabel"));
     m_timeLabel = label(QStringLiteral("timeLabel"));
@@ -387,6 +452,8 @@ void MainWindow::createStatusBar()
 void MainWindow::connectEngine()
 {
     connect(&m_engine, &SimEngine::loaded, this, [this] {
+        m_replay->close();
+        m_viewport->setPlaceholder(QString());
         m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
         m_teleop->setOperator(m_engine.manualOperator());
         m_teleop->setWorld(m_engine.world());
@@ -420,12 +487,79 @@ void MainWindow::connectEngine()
         m_viewport->setManualControl(manual);
         updateStatus();
     });
+    connect(&m_engine, &SimEngine::recordingChanged, this, [this](bool recording) {
+        m_recordAction->setChecked(recording);
+        m_recordAction->setText(recording ? tr("Stop recording") : tr("Record"));
+        updateStatus();
+    });
+    connect(m_replay, &SessionReplay::closed, this, &MainWindow::updateMode);
+    connect(m_replay, &SessionReplay::opened, this, &MainWindow::updateMode);
     connect(&m_engine, &SimEngine::finished, this, [this] {
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     // Any teleoperation input hands the grippers to the user.
     connect(m_teleop, &KeyboardTeleop::engaged, this, [this] { m_engine.setManual(true); });
     connect(m_poseInput, &PoseInput::engaged, this, [this] { m_engine.setManual(true); });
+}
+
+void MainWindow::toggleRecording()
+{
+    if (m_engine.isRecording()) {
+        const QString path = m_engine.recordingPath();
+        m_engine.stopRecording();
+        statusBar()->showMessage(tr("Session saved to %1").arg(path), 10000);
+        return;
+    }
+    QString error;
+    if (!m_engine.startRecording(m_engine.defaultRecordingPath(), m_notesEdit->text(), &error)) {
+        m_recordAction->setChecked(false);
+        showError(tr("Could not start recording"), error);
+    }
+}
+
+bool MainWindow::openSession(const QString &path)
+{
+    m_engine.pause();
+    m_engine.stopRecording();
+    QString error;
+    if (!m_replay->open(path, &error)) {
+        showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
+        return false;
+    }
+    // Scene state is not in a session (schema 1): the viewport says so instead.
+    m_viewport->setScene(nullptr, nullptr);
+    m_viewport->setPlaceholder(tr("Replay: no scene state recorded"));
+    m_poseInput->setWorld(nullptr);
+    m_engine.setManual(false);
+    setWindowTitle(tr("semhap studio — replay of %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+void MainWindow::closeReplay()
+{
+    if (!m_replay->isOpen())
+        return;
+    // Loading the run again restarts the history and brings the scene back.
+    QString error;
+    if (!m_engine.reset(&error))
+        showError(tr("Could not reset the run"), error);
+}
+
+void MainWindow::rerouteReplay()
+{
+    QString error;
+    if (!m_replay->reroute(m_routerEditor->graph(), &error))
+        showError(tr("Could not re-route the session"), error);
+}
+
+void MainWindow::updateMode()
+{
+    const bool replaying = m_replay->isOpen();
+    m_replayToolBar->setVisible(replaying);
+    for (QAction *action : {m_runAction, m_stepAction, m_teleopAction, m_recordAction})
+        action->setEnabled(!replaying);
+    m_stepAction->setEnabled(!replaying && !m_engine.isRunning());
+    updateStatus();
 }
 
 void MainWindow::toggleRunning()
@@ -503,6 +637,16 @@ void MainWindow::updateTitle()
 void MainWindow::updateStatus()
 {
     const QLocale locale;
+    m_recordLabel->setVisible(m_engine.isRecording());
+    if (m_engine.isRecording())
+        m_recordLabel->setText(tr("Recording to %1 (%2 dropped)")
+                                   .arg(QFileInfo(m_engine.recordingPath()).fileName())
+                                   .arg(m_engine.recordingDropped()));
+    if (m_replay->isOpen()) {
+        m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_replay->time(), 'f', 2)));
+        m_rateLabel->setText(tr("replay"));
+        return;
+    }
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
     m_rateLabel->setText(
         m_engine.isRunning()

@@ -9,6 +9,8 @@
 class QActionGroup;
 class QComboBox;
 class QLabel;
+class QLineEdit;
+class QToolBar;
 
 namespace semhap {
 
@@ -18,7 +20,9 @@ class KeyboardTeleop;
 class MetricsPanel;
 class PlotPanel;
 class PoseInput;
+class ReplayBar;
 class RouterEditor;
+class SessionReplay;
 class SimViewport;
 class WaveformDesigner;
 
@@ -47,9 +51,19 @@ public:
     QComboBox *scenePicker() const { return m_scenePicker; }
     QComboBox *routerPicker() const { return m_routerPicker; }
     QComboBox *speedPicker() const { return m_speedPicker; }
+    QLineEdit *notesEdit() const { return m_notesEdit; }
+    SessionReplay *replay() const { return m_replay; }
+    ReplayBar *replayBar() const { return m_replayBar; }
 
     /** Loads a run (scene, router, ...) and shows what went wrong, if anything. */
     bool openRun(const RunOptions &options);
+    /**
+     * Opens a recorded session read-only: the run pauses, the replay bar appears and the
+     * plots and the event log follow its scrubber. Shows what went wrong, if anything.
+     */
+    bool openSession(const QString &path);
+    /** Back from a replay to the simulation, loaded again. */
+    void closeReplay();
 
 signals:
     /** The user chose another interface language (its code, empty: the system's). */
@@ -64,6 +78,7 @@ private:
     void createDocks();
     void createMenus();
     void createStatusBar();
+    void createReplayBar();
     void connectEngine();
     void applyDefaultSizes();
     void restoreLayout();
@@ -79,6 +94,10 @@ private:
     void setSpeedIndex(int index);
     void showPreferences();
     void toggleRunning();
+    void toggleRecording();
+    void rerouteReplay();
+    /** Enables what only makes sense on the simulation (run, drive, record). */
+    void updateMode();
 
     StudioOptions m_options;
     SimEngine m_engine;
@@ -94,6 +113,11 @@ private:
     QComboBox *m_scenePicker = nullptr;
     QComboBox *m_routerPicker = nullptr;
     QComboBox *m_speedPicker = nullptr;
+    QLineEdit *m_notesEdit = nullptr;
+    SessionReplay *m_replay = nullptr;
+    ReplayBar *m_replayBar = nullptr;
+    QToolBar *m_replayToolBar = nullptr;
+    QLabel *m_recordLabel = nullptr;
     QLabel *m_timeLabel = nullptr;
     QLabel *m_rateLabel = nullptr;
     QLabel *m_operatorLabel = nullptr;
@@ -112,6 +136,8 @@ private:
     QAction *m_forcesAction = nullptr;
     QAction *m_openSceneAction = nullptr;
     QAction *m_openRouterAction = nullptr;
+    QAction *m_recordAction = nullptr;
+    QAction *m_openSessionAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_resetCameraAction = nullptr;

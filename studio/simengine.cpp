@@ -3,10 +3,15 @@
 
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
-#include "forcedetector.h"
 #include "manualoperator.h"
 #include "scenefeed.h"
-#include "slipdetector.h"
+#include "sessionwriter.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QStandardPaths>
 
 #include <chrono>
 #include <cmath>
@@ -21,45 +26,14 @@ using Clock = std::chrono::steady_clock;
 constexpr double StepRate = 60.0;
 /** Task metrics go to the GUI this often (simulated seconds). */
 constexpr double MetricsPeriod = 0.25;
+/** The user's commanded pose and grip are recorded this often while driving (s). */
+constexpr double InputPeriod = 0.01;
 /** The most simulated time one batch catches up before pacing gives up and restarts (s). */
 constexpr double MaxLag = 0.2;
 
 double seconds(Clock::duration d)
 {
     return std::chrono::duration<double>(d).count();
-}
-
-/** The thresholds each gripper's detectors fire at, from the router's graph. */
-std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph)
-{
-    std::array<GripperThresholds, 2> result{};
-    for (const RouterNode &node : graph.nodes) {
-        Gripper gripper = Gripper::Right;
-        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper))
-            continue;
-        QJsonObject params = node.params;
-        params.remove(QLatin1String("gripper"));
-        QString key;
-        QString reason;
-        GripperThresholds &t = result[size_t(gripper)];
-        if (node.type == QLatin1String("force")) {
-            ForceDetector::Params p;
-            if (!p.read(params, &key, &reason))
-                continue;
-            t.hasForce = true;
-            t.grasp = p.grasp;
-            t.breakForce = p.brk;
-            t.max = p.max;
-        } else if (node.type == QLatin1String("slip")) {
-            SlipDetector::Params p;
-            if (!p.read(params, &key, &reason))
-                continue;
-            t.hasSlip = true;
-            t.loss = p.loss;
-            t.min = p.min;
-        }
-    }
-    return result;
 }
 
 std::vector<LiveDevice> devicesOf(const Player &player, const World &world)
@@ -80,16 +54,22 @@ std::vector<LiveDevice> devicesOf(const Player &player, const World &world)
 
 void SimEngine::StepSink::onContactFrame(const ContactFrame &frame)
 {
+    if (m_engine.m_recorder)
+        m_engine.m_recorder->recordContactFrame(frame, qQNaN());
     m_engine.m_feed.push(frame);
 }
 
 void SimEngine::StepSink::onEvent(const SemanticEvent &event)
 {
+    if (m_engine.m_recorder)
+        m_engine.m_recorder->onEvent(event);
     m_engine.m_output->onEvent(event);
 }
 
 void SimEngine::StepSink::onDeviceFrame(const DeviceFrame &frame)
 {
+    if (m_engine.m_recorder)
+        m_engine.m_recorder->onDeviceFrame(frame);
     m_engine.m_output->onDeviceFrame(frame);
 }
 
@@ -104,6 +84,8 @@ SimEngine::SimEngine(QObject *parent)
 SimEngine::~SimEngine()
 {
     stopThread();
+    if (m_recorder)
+        m_recorder->finish();
     m_devices->stopAll();
 }
 
@@ -121,6 +103,7 @@ bool SimEngine::start(const RunOptions &options, QString *error)
     if (!run)
         return false;
     stopThread();
+    stopRecording();
     const bool wasRunning = m_running.exchange(false);
     if (wasRunning)
         emit runningChanged(false);
@@ -175,6 +158,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         return false;
     }
     LoadError loadError;
+    std::unique_ptr<SessionWriter> recording;
     std::unique_ptr<Router> router = Router::compile(graph, &loadError);
     if (!router) {
         *error = loadError.toString();
@@ -195,6 +179,9 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
             m_output->onDeviceFrame(silence);
         }
         m_run->setRouter(std::move(router), m_sink);
+        // The old router's closing events went into the recording; the new router is
+        // another session.
+        recording = std::move(m_recorder);
         const Player &player = m_run->pipeline().router().player();
         QString bindError;
         bindRouterDevices(player, &bindError);
@@ -204,6 +191,10 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         m_feed.drainInto(m_history);
     }
     m_history.commit();
+    if (recording) {
+        recording->finish();
+        emit recordingChanged(false);
+    }
     const Player &player = m_run->pipeline().router().player();
     m_history.setRouter(devicesOf(player, m_run->world()), shownThresholds(),
                         m_run->pipeline().router().nodeIds());
@@ -408,6 +399,10 @@ void SimEngine::stepOnce()
     m_run->setOperatorOverride(manual ? m_manualOperator.get() : nullptr);
     m_run->step(m_sink);
     const double t = m_run->time();
+    if (manual && m_recorder && t >= m_nextInput) {
+        m_nextInput = t + InputPeriod;
+        recordInput(t);
+    }
     m_simTime.store(t, std::memory_order_relaxed);
     if (m_sceneFeed->wantsCapture()) {
         const Perception &perception = m_run->perception();
@@ -427,6 +422,88 @@ void SimEngine::stepOnce()
                     m_history.setMetrics(metrics);
             },
             Qt::QueuedConnection);
+    }
+}
+
+bool SimEngine::startRecording(const QString &path, const QString &notes, QString *error)
+{
+    if (!m_run) {
+        *error = tr("nothing is loaded");
+        return false;
+    }
+    stopRecording();
+    SessionInfo info;
+    info.source = QStringLiteral("studio");
+    info.scene = m_options.scene;
+    info.routerSource = m_options.router;
+    info.overrides = m_options.overrides;
+    for (const BoundDevice &device : m_devices->status())
+        info.bindings.insert(device.name, device.uri);
+    info.operatorName = m_options.operatorName;
+    info.seed = QString::number(m_options.seed);
+    info.semhapVersion = QCoreApplication::applicationVersion();
+    info.notes = notes;
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    std::unique_ptr<SessionWriter> recorder;
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        recorder = SessionWriter::create(path, info, m_run->pipeline().router(), error);
+        if (!recorder)
+            return false;
+        recorder->setActorTable(&m_run->world().actors());
+        m_recorder = std::move(recorder);
+        m_nextInput = 0.0;
+    }
+    emit recordingChanged(true);
+    return true;
+}
+
+void SimEngine::stopRecording()
+{
+    std::unique_ptr<SessionWriter> recorder;
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        recorder = std::move(m_recorder);
+    }
+    if (!recorder)
+        return;
+    recorder->finish();
+    emit recordingChanged(false);
+}
+
+QString SimEngine::recordingPath() const
+{
+    return m_recorder ? m_recorder->path() : QString();
+}
+
+quint64 SimEngine::recordingDropped() const
+{
+    return m_recorder ? m_recorder->dropped() : 0;
+}
+
+QString SimEngine::defaultRecordingPath() const
+{
+    const auto stem = [](const QString &name) { return QFileInfo(name).completeBaseName(); };
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+           QStringLiteral("/sessions/%1-%2-%3.db")
+               .arg(stem(m_options.scene), stem(m_options.router),
+                    QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+}
+
+void SimEngine::recordInput(double t)
+{
+    const std::array<HandCommand, 2> commands = currentCommands(m_run->world());
+    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
+        const HandCommand &command = commands[size_t(hand)];
+        if (!command.present)
+            continue;
+        OperatorInput input;
+        input.t = t;
+        input.hand = hand;
+        input.pos = command.target.pos;
+        input.quat = command.target.quat;
+        input.grip = command.grip;
+        m_recorder->recordOperatorInput(input);
     }
 }
 

@@ -20,6 +20,7 @@ class DeviceManager;
 class DeviceOutputSink;
 class ManualOperator;
 class SceneFeed;
+class SessionWriter;
 
 /**
  * The studio's running session: a SimRun stepped on its own pipeline thread at a chosen
@@ -94,6 +95,23 @@ public:
     /** Values the feed dropped because the GUI fell behind. */
     quint64 dropped() const { return m_feed.dropped(); }
 
+    /**
+     * Records the running session from the next tick into a new session database at `path`
+     * (never overwritten): contact frames, events, device frames and the user's input while
+     * driving. Stops by itself on load, reset and a router swap (one router per session).
+     * False with a one-line `error`.
+     */
+    bool startRecording(const QString &path, const QString &notes, QString *error);
+    /** Closes the recording's database (its end time stamped); a no-op when not recording. */
+    void stopRecording();
+    bool isRecording() const { return m_recorder != nullptr; }
+    /** The file being recorded to; empty when not recording. */
+    QString recordingPath() const;
+    /** Values the recording dropped because the disk fell behind. */
+    quint64 recordingDropped() const;
+    /** A new file in the user's data folder named after scene, router and the time now. */
+    QString defaultRecordingPath() const;
+
 signals:
     void loaded();
     void runningChanged(bool running);
@@ -103,6 +121,8 @@ signals:
     void speedChanged(double speed);
     /** setRouter() swapped the router (options().router names it). */
     void routerChanged();
+    /** Recording started or stopped (also when a load or router swap ended it). */
+    void recordingChanged(bool recording);
 
 private:
     /** Routes one step's streams: contact frames to the feed, the rest to the devices. */
@@ -127,6 +147,7 @@ private:
     void loop();
     void stepOnce();
     void drain();
+    void recordInput(double t);
 
     RunOptions m_options;
     /** The graph setRouter() applied since the last load: what reset() runs again. */
@@ -137,6 +158,9 @@ private:
     std::unique_ptr<SceneFeed> m_sceneFeed;
     std::unique_ptr<DeviceOutputSink> m_output;
     LiveFeed m_feed;
+    /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
+    std::unique_ptr<SessionWriter> m_recorder;
+    double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};
     LiveHistory m_history;
     QTimer m_drainTimer;

@@ -87,6 +87,12 @@ void SimViewport::setScene(const World *world, SceneFeed *feed)
     changeCamera(m_home);
 }
 
+void SimViewport::setPlaceholder(const QString &text)
+{
+    m_placeholder = text;
+    update();
+}
+
 void SimViewport::setTeleop(KeyboardTeleop *teleop)
 {
     if (m_teleop)
@@ -253,7 +259,9 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
         font.setPointSizeF(font.pointSizeF() * 1.3);
         painter.setFont(font);
         painter.setPen(QColor(0xe8, 0xe8, 0xe8));
-        const QString text = m_world ? tr("Waiting for the simulation…") : tr("No scene loaded");
+        const QString text = m_world                   ? tr("Waiting for the simulation…")
+                             : m_placeholder.isEmpty() ? tr("No scene loaded")
+                                                       : m_placeholder;
         painter.drawText(rect(), Qt::AlignCenter, text);
         return;
     }

@@ -37,6 +37,9 @@ public:
      * must outlive the viewport or be cleared first). Resets the camera to the scene's view.
      */
     void setScene(const World *world, SceneFeed *feed);
+    /** What the viewport says while it has no scene (a replay, a live rig); empty: default. */
+    void setPlaceholder(const QString &text);
+    const QString &placeholder() const { return m_placeholder; }
     /** Where teleoperation keys go (null: nowhere); it is given the scene. Not owned. */
     void setTeleop(KeyboardTeleop *teleop);
     KeyboardTeleop *teleop() const { return m_teleop; }
@@ -90,6 +93,7 @@ private:
     void drawOverlay(QPainter &painter, bool hasPicture);
 
     const World *m_world = nullptr;
+    QString m_placeholder;
     SceneFeed *m_feed = nullptr;
     KeyboardTeleop *m_teleop = nullptr;
     std::unique_ptr<SceneRenderer> m_renderer;

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "replaybar.h"
+
+#include "sessionreplay.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStyle>
+#include <QToolButton>
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+/** The scrubber's resolution: one step per millisecond of session time. */
+constexpr double StepsPerSecond = 1000.0;
+constexpr double Speeds[] = {0.25, 0.5, 1.0, 2.0, 4.0};
+
+} // namespace
+
+ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), m_replay(replay)
+{
+    setObjectName(QStringLiteral("replayBar"));
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(6, 2, 6, 2);
+
+    m_play = new QToolButton(this);
+    m_play->setObjectName(QStringLiteral("replayPlay"));
+    m_play->setToolTip(tr("Play or pause the replay"));
+    connect(m_play, &QToolButton::clicked, this, [this] { setPlaying(!isPlaying()); });
+    layout->addWidget(m_play);
+
+    m_slider = new QSlider(Qt::Horizontal, this);
+    m_slider->setObjectName(QStringLiteral("replaySlider"));
+    m_slider->setToolTip(tr("Session time: drag to scrub"));
+    connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
+        m_replay.seek(m_replay.startTime() + double(value) / StepsPerSecond);
+    });
+    layout->addWidget(m_slider, 1);
+
+    m_time = new QLabel(this);
+    m_time->setObjectName(QStringLiteral("replayTime"));
+    m_time->setMinimumWidth(
+        m_time->fontMetrics().horizontalAdvance(QStringLiteral("0000.00 / 0000.00 s")));
+    layout->addWidget(m_time);
+
+    m_speed = new QComboBox(this);
+    m_speed->setObjectName(QStringLiteral("replaySpeed"));
+    m_speed->setToolTip(tr("Session seconds per real second"));
+    for (double speed : Speeds)
+        m_speed->addItem(tr("%1×").arg(QLocale().toString(speed)), speed);
+    m_speed->setCurrentIndex(2);
+    layout->addWidget(m_speed);
+
+    m_source = new QLabel(this);
+    m_source->setObjectName(QStringLiteral("replaySource"));
+    layout->addWidget(m_source);
+    m_reroute = new QToolButton(this);
+    m_reroute->setObjectName(QStringLiteral("replayReroute"));
+    m_reroute->setText(tr("Re-route with the editor's router"));
+    m_reroute->setToolTip(tr("Run the recorded contact frames through the router in the "
+                             "router editor"));
+    connect(m_reroute, &QToolButton::clicked, this, &ReplayBar::rerouteRequested);
+    layout->addWidget(m_reroute);
+    m_recorded = new QToolButton(this);
+    m_recorded->setObjectName(QStringLiteral("replayRecorded"));
+    m_recorded->setText(tr("Recorded router"));
+    m_recorded->setToolTip(tr("Show the events and device frames the session recorded"));
+    connect(m_recorded, &QToolButton::clicked, &m_replay, &SessionReplay::showRecorded);
+    layout->addWidget(m_recorded);
+    m_close = new QToolButton(this);
+    m_close->setObjectName(QStringLiteral("replayClose"));
+    m_close->setText(tr("Close replay"));
+    connect(m_close, &QToolButton::clicked, this, &ReplayBar::closeRequested);
+    layout->addWidget(m_close);
+
+    m_timer.setInterval(33);
+    connect(&m_timer, &QTimer::timeout, this, &ReplayBar::advance);
+    connect(&m_replay, &SessionReplay::opened, this, &ReplayBar::sessionOpened);
+    connect(&m_replay, &SessionReplay::timeChanged, this, &ReplayBar::showTime);
+    const auto showSource = [this] {
+        m_source->setText(m_replay.isRerouted() ? tr("Showing: re-routed")
+                                                : tr("Showing: recorded"));
+        m_recorded->setEnabled(m_replay.isRerouted());
+    };
+    connect(&m_replay, &SessionReplay::streamsChanged, this, showSource);
+    connect(&m_replay, &SessionReplay::opened, this, showSource);
+    connect(&m_replay, &SessionReplay::closed, this, [this] { setPlaying(false); });
+    setPlaying(false);
+}
+
+void ReplayBar::setPlaying(bool playing)
+{
+    if (playing && m_replay.time() >= m_replay.endTime())
+        m_slider->setValue(0); // from the start again
+    if (playing) {
+        m_clock.start();
+        m_timer.start();
+    } else {
+        m_timer.stop();
+    }
+    m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    m_play->setText(playing ? tr("Pause") : tr("Play"));
+}
+
+void ReplayBar::sessionOpened()
+{
+    const QSignalBlocker block(m_slider);
+    m_slider->setRange(
+        0, int(std::lround((m_replay.endTime() - m_replay.startTime()) * StepsPerSecond)));
+    m_slider->setValue(0);
+    m_slider->setPageStep(int(StepsPerSecond));
+    m_slider->setSingleStep(int(StepsPerSecond / 10));
+    showTime(m_replay.time());
+}
+
+void ReplayBar::showTime(double t)
+{
+    m_time->setText(
+        tr("%1 / %2 s")
+            .arg(QLocale().toString(t, 'f', 2), QLocale().toString(m_replay.endTime(), 'f', 2)));
+    const QSignalBlocker block(m_slider);
+    m_slider->setValue(int(std::lround((t - m_replay.startTime()) * StepsPerSecond)));
+}
+
+void ReplayBar::advance()
+{
+    const double wall = double(m_clock.restart()) / 1000.0;
+    const double t = m_replay.time() + wall * m_speed->currentData().toDouble();
+    m_replay.seek(t);
+    if (t >= m_replay.endTime())
+        setPlaying(false);
+}
+
+} // namespace semhap

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+#include "sessionreplay.h"
+
+#include "pipeline.h"
+#include "router.h"
+#include "routergraph.h"
+#include "sessionreader.h"
+
+#include <algorithm>
+
+namespace semhap {
+
+namespace {
+
+/** Collects a re-routing's streams. */
+class Collector : public PipelineSink
+{
+public:
+    void onEvent(const SemanticEvent &event) override { events.push_back(event); }
+    void onDeviceFrame(const DeviceFrame &frame) override { deviceFrames.push_back(frame); }
+
+    std::vector<SemanticEvent> events;
+    std::vector<DeviceFrame> deviceFrames;
+};
+
+std::vector<LiveDevice> devicesOf(const Player &player)
+{
+    std::vector<LiveDevice> devices;
+    for (int d = 0; d < player.deviceCount(); ++d)
+        devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
+                           player.deviceModel(d).channelNames()});
+    return devices;
+}
+
+/** Appends the values of `values` with `from < t <= to` (sorted by t) to `history`. */
+template<typename T>
+void appendWindow(const std::vector<T> &values, double from, double to, LiveHistory &history)
+{
+    const auto byTime = [](double t, const T &value) { return t < value.t; };
+    auto it = std::upper_bound(values.begin(), values.end(), from, byTime);
+    const auto end = std::upper_bound(it, values.end(), to, byTime);
+    for (; it != end; ++it)
+        history.append(*it);
+}
+
+} // namespace
+
+SessionReplay::SessionReplay(LiveHistory &history, QObject *parent)
+    : QObject(parent), m_history(history)
+{}
+
+bool SessionReplay::open(const QString &path, QString *error)
+{
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, error);
+    if (!reader)
+        return false;
+    std::vector<ContactFrame> frames;
+    Streams recorded;
+    bool read = reader->readContactFrames(
+        [&](const ContactFrame &frame, double) {
+            frames.push_back(frame);
+            return true;
+        },
+        error);
+    read = read && reader->readEvents(
+                       [&](const SemanticEvent &event) {
+                           recorded.events.push_back(event);
+                           return true;
+                       },
+                       error);
+    read = read && reader->readDeviceFrames(
+                       [&](const DeviceFrame &frame) {
+                           recorded.deviceFrames.push_back(frame);
+                           return true;
+                       },
+                       error);
+    if (!read)
+        return false;
+
+    // The recorded router names the devices' models and the detectors' thresholds.
+    RouterGraph graph;
+    LoadError loadError;
+    std::unique_ptr<Router> router;
+    if (reader->routerGraph(&graph, &loadError))
+        router = Router::compile(graph, &loadError);
+    for (int d = 0; d < reader->deviceNames().size(); ++d) {
+        const QString &name = reader->deviceNames().at(d);
+        const int index = router ? router->player().deviceIndex(name) : -1;
+        recorded.devices.push_back(
+            {name, index >= 0 ? router->player().deviceModel(index).name() : QString(),
+             reader->channelNames(d)});
+    }
+    if (router)
+        recorded.thresholds = thresholdsOf(graph);
+    recorded.nodeIds = reader->nodeNames();
+
+    m_path = reader->path();
+    m_frames = std::move(frames);
+    m_recorded = std::move(recorded);
+    m_start = reader->startTime();
+    m_end = reader->endTime();
+    m_shown = m_recorded;
+    m_rerouted = false;
+    refill(m_start);
+    emit opened();
+    emit timeChanged(m_time);
+    return true;
+}
+
+void SessionReplay::close()
+{
+    if (!isOpen())
+        return;
+    m_path.clear();
+    m_frames.clear();
+    m_recorded = Streams();
+    m_shown = Streams();
+    emit closed();
+}
+
+void SessionReplay::seek(double t)
+{
+    if (!isOpen())
+        return;
+    t = std::clamp(t, m_start, m_end);
+    if (t == m_time)
+        return;
+    if (t > m_time) {
+        appendUpTo(m_time, t);
+        m_history.commit();
+        m_time = t;
+    } else {
+        refill(t);
+    }
+    emit timeChanged(m_time);
+}
+
+bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
+{
+    LoadError loadError;
+    std::unique_ptr<Router> router = Router::compile(graph, &loadError);
+    if (!router) {
+        *error = loadError.toString();
+        return false;
+    }
+    Streams streams;
+    streams.devices = devicesOf(router->player());
+    streams.nodeIds = router->nodeIds();
+    streams.thresholds = thresholdsOf(graph);
+    Pipeline pipeline(std::move(router));
+    Collector collector;
+    for (const ContactFrame &frame : m_frames)
+        pipeline.process(frame, collector);
+    pipeline.flush(collector);
+    streams.events = std::move(collector.events);
+    streams.deviceFrames = std::move(collector.deviceFrames);
+    m_shown = std::move(streams);
+    m_rerouted = true;
+    refill(m_time);
+    emit streamsChanged();
+    return true;
+}
+
+void SessionReplay::showRecorded()
+{
+    m_shown = m_recorded;
+    m_rerouted = false;
+    refill(m_time);
+    emit streamsChanged();
+}
+
+void SessionReplay::refill(double t)
+{
+    m_history.start(m_shown.devices, m_shown.thresholds, m_shown.nodeIds);
+    m_time = t;
+    appendUpTo(t - m_history.keepSeconds(), t);
+    m_history.commit();
+}
+
+void SessionReplay::appendUpTo(double from, double to)
+{
+    appendWindow(m_frames, from, to, m_history);
+    appendWindow(m_shown.events, from, to, m_history);
+    appendWindow(m_shown.deviceFrames, from, to, m_history);
+}
+
+} // namespace semhap

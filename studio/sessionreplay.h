@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "livehistory.h"
+
+#include <QObject>
+#include <QString>
+
+#include <vector>
+
+namespace semhap {
+
+class RouterGraph;
+
+/**
+ * A recorded session opened read-only in the studio: its streams are read once, and the
+ * time a scrubber picks fills the LiveHistory with the window the plots and the event log
+ * show, so every live view replays without knowing it. Re-routing runs the recorded
+ * contact frames through another router (the editor's), like `semhap replay --router`.
+ */
+class SessionReplay : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit SessionReplay(LiveHistory &history, QObject *parent = nullptr);
+
+    /** Reads the session at `path` and shows its start. False with a one-line `error`. */
+    bool open(const QString &path, QString *error);
+    void close();
+    bool isOpen() const { return !m_path.isEmpty(); }
+    const QString &path() const { return m_path; }
+
+    double startTime() const { return m_start; }
+    double endTime() const { return m_end; }
+    /** The time shown: the history holds what happened up to it. */
+    double time() const { return m_time; }
+    /** Shows the session up to `t`; forward moves only add what is new. */
+    void seek(double t);
+
+    /**
+     * Runs the recorded contact frames through `graph` and shows its events and device
+     * frames instead of the recorded ones. False with the compiler's `error`.
+     */
+    bool reroute(const RouterGraph &graph, QString *error);
+    /** Back to the events and device frames the session recorded. */
+    void showRecorded();
+    /** Whether the events shown are a re-routing's rather than the recording's. */
+    bool isRerouted() const { return m_rerouted; }
+
+    qsizetype frameCount() const { return qsizetype(m_frames.size()); }
+    /** The events shown: the recording's or the re-routing's. */
+    const std::vector<SemanticEvent> &events() const { return m_shown.events; }
+
+signals:
+    void opened();
+    void closed();
+    void timeChanged(double t);
+    /** The events and device frames shown changed (re-routed or back to the recording). */
+    void streamsChanged();
+
+private:
+    struct Streams
+    {
+        std::vector<SemanticEvent> events;
+        std::vector<DeviceFrame> deviceFrames;
+        std::vector<LiveDevice> devices;
+        std::array<GripperThresholds, 2> thresholds{};
+        QStringList nodeIds;
+    };
+    void refill(double t);
+    void appendUpTo(double from, double to);
+
+    LiveHistory &m_history;
+    QString m_path;
+    std::vector<ContactFrame> m_frames;
+    Streams m_recorded;
+    Streams m_shown;
+    bool m_rerouted = false;
+    double m_start = 0.0;
+    double m_end = 0.0;
+    double m_time = 0.0;
+};
+
+} // namespace semhap

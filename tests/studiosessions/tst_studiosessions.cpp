@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// Sessions in the studio: the engine records what it runs, the window records, reopens and
+// scrubs a session, and re-routing a recording through the editor's router gives what a
+// pipeline gives for the same frames.
+#include "eventlogmodel.h"
+#include "eventlogpanel.h"
+#include "mainwindow.h"
+#include "pipeline.h"
+#include "plotpanel.h"
+#include "replaybar.h"
+#include "router.h"
+#include "routereditor.h"
+#include "routergraph.h"
+#include "sessionreader.h"
+#include "sessionreplay.h"
+#include "simviewport.h"
+
+#include <QLabel>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <qcustomplot.h>
+
+using namespace semhap;
+
+class TestStudioSessions : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void engineRecordsWhatTheHistorySees();
+    void windowRecordsReopensAndScrubs();
+    void reroutesThroughTheEditorsRouter();
+
+private:
+    /** Records about `seconds` of simulated C3 from an engine into a new file. */
+    QString recordFromEngine(double seconds, qint64 *frames, qint64 *events);
+
+    QTemporaryDir m_dir;
+};
+
+namespace {
+
+StudioOptions studioOptions()
+{
+    StudioOptions o;
+    QString message;
+    bool help = false;
+    StudioOptions::parse(
+        {"--speed", "4", "--pose-port", "0", "--size", "1280x800", "--default-layout"}, &o,
+        &message, &help);
+    return o;
+}
+
+bool open(MainWindow &window)
+{
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return false;
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
+/** Events compared by value. */
+bool sameEvents(const std::vector<SemanticEvent> &a, const std::vector<SemanticEvent> &b)
+{
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](const auto &x, const auto &y) {
+               return x.t == y.t && x.node == y.node && x.message == y.message &&
+                      x.phase == y.phase && x.intensity == y.intensity;
+           });
+}
+
+} // namespace
+
+void TestStudioSessions::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QVERIFY(m_dir.isValid());
+}
+
+QString TestStudioSessions::recordFromEngine(double seconds, qint64 *frames, qint64 *events)
+{
+    SimEngine engine;
+    RunOptions options;
+    options.duration = 3600.0;
+    QString error;
+    if (!engine.load(options, &error))
+        return {};
+    const QString path = m_dir.filePath(QStringLiteral("engine-%1.db").arg(seconds));
+    if (!engine.startRecording(path, QStringLiteral("from the test"), &error))
+        return {};
+    engine.setSpeed(8.0);
+    engine.run();
+    if (!QTest::qWaitFor([&] { return engine.simTime() >= seconds; }, 30000))
+        return {};
+    engine.pause();
+    engine.stopRecording();
+    QTest::qWait(100); // the last values drain into the history
+    const LiveHistory &history = engine.history();
+    *frames = history.frames(Gripper::Left).end() + history.frames(Gripper::Right).end();
+    *events = history.events().end();
+    return path;
+}
+
+void TestStudioSessions::engineRecordsWhatTheHistorySees()
+{
+    qint64 frames = 0;
+    qint64 events = 0;
+    const QString path = recordFromEngine(2.5, &frames, &events);
+    QVERIFY(!path.isEmpty());
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QVERIFY(frames > 1000);
+    QCOMPARE(reader->contactFrameCount(), frames);
+    QVERIFY(events > 0);
+    QCOMPARE(reader->eventCount(), events);
+    QCOMPARE(reader->info().source, QString("studio"));
+    QCOMPARE(reader->info().notes, QString("from the test"));
+    QVERIFY(reader->info().ended.isValid());
+    QVERIFY(reader->deviceFrameCount() > 0);
+}
+
+void TestStudioSessions::windowRecordsReopensAndScrubs()
+{
+    MainWindow window(studioOptions());
+    QVERIFY(open(window));
+    QVERIFY(window.engine().isRunning());
+    QTest::keyClicks(window.notesEdit(), "participant 7");
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(window.engine().isRecording());
+    const QString path = window.engine().recordingPath();
+    QVERIFY(path.endsWith(".db"));
+    QTRY_VERIFY(window.findChild<QLabel *>("recordLabel")->text().contains("dropped"));
+    const double from = window.engine().simTime();
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > from + 6.0, 30000);
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(!window.engine().isRecording());
+
+    QVERIFY(window.openSession(path));
+    QVERIFY(!window.engine().isRunning());
+    SessionReplay *replay = window.replay();
+    QVERIFY(replay->isOpen());
+    QVERIFY(window.replayBar()->isVisible());
+    QCOMPARE(window.viewport()->placeholder(), QString("Replay: no scene state recorded"));
+    QVERIFY(replay->endTime() > replay->startTime() + 3.0);
+
+    // Scrub from the keyboard: to the end, then one page (1 s) back.
+    QSlider *slider = window.replayBar()->slider();
+    slider->setFocus();
+    QTest::keyClick(slider, Qt::Key_End);
+    QTest::keyClick(slider, Qt::Key_PageDown);
+    const double t = replay->time();
+    QVERIFY(std::abs(t - (replay->endTime() - 1.0)) < 1e-3);
+    QTRY_VERIFY(window.eventLog()->model()->rowCount() > 0);
+    const EventLogModel *log = window.eventLog()->model();
+    for (int row = 0; row < log->rowCount(); ++row)
+        QVERIFY(log->index(row, 0).data(EventLogModel::TimeRole).toDouble() <= t);
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    QTRY_VERIFY(plot->graphCount() > 0 && plot->graph(0)->dataCount() > 0);
+    double last = -1.0;
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        bool found = false;
+        const QCPRange keys = plot->graph(g)->getKeyRange(found);
+        if (found)
+            last = std::max(last, keys.upper);
+    }
+    QVERIFY2(last <= t + 1e-9 && last > t - 0.05, qPrintable(QString::number(last)));
+    // The documentation's screenshot: SEMHAP_REPLAY_SCREENSHOT=FILE.png.
+    if (qEnvironmentVariableIsSet("SEMHAP_REPLAY_SCREENSHOT"))
+        window.grab().save(qEnvironmentVariable("SEMHAP_REPLAY_SCREENSHOT"));
+
+    // Dragging the scrubber back shows less.
+    const QPoint start = slider->rect().center();
+    QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(4, start.y()));
+    QVERIFY(replay->time() < t);
+
+    // Playing moves on; closing brings the simulation back.
+    QTest::mouseClick(window.replayBar()->playButton(), Qt::LeftButton);
+    const double before = replay->time();
+    QTRY_VERIFY(replay->time() > before + 0.2);
+    QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
+    QVERIFY(!replay->isOpen());
+    QVERIFY(window.engine().world());
+    QVERIFY(!window.replayBar()->isVisible());
+}
+
+void TestStudioSessions::reroutesThroughTheEditorsRouter()
+{
+    qint64 frames = 0;
+    qint64 events = 0;
+    const QString path = recordFromEngine(3.0, &frames, &events);
+    QVERIFY(!path.isEmpty());
+
+    // The reference: the recorded frames through a pipeline with C1.
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    RouterGraph c1;
+    LoadError loadError;
+    QVERIFY(RouterPresets::preset("C1", &c1, &loadError));
+    std::unique_ptr<Router> router = Router::compile(c1, &loadError);
+    QVERIFY(router);
+    Pipeline pipeline(std::move(router));
+    struct : PipelineSink
+    {
+        void onEvent(const SemanticEvent &event) override { events.push_back(event); }
+        std::vector<SemanticEvent> events;
+    } expected;
+    QVERIFY(reader->readContactFrames(
+        [&](const ContactFrame &frame, double) {
+            pipeline.process(frame, expected);
+            return true;
+        },
+        &error));
+    pipeline.flush(expected);
+    QVERIFY(!expected.events.empty());
+
+    MainWindow window(studioOptions());
+    QVERIFY(open(window));
+    QVERIFY(window.openSession(path));
+    SessionReplay *replay = window.replay();
+    QCOMPARE(qint64(replay->events().size()), reader->eventCount());
+    window.routerEditor()->setGraph(c1);
+    QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+    QVERIFY(replay->isRerouted());
+    QVERIFY(sameEvents(replay->events(), expected.events));
+    QVERIFY(window.replayBar()->recordedButton()->isEnabled());
+    QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
+    QVERIFY(!replay->isRerouted());
+    QCOMPARE(qint64(replay->events().size()), reader->eventCount());
+}
+
+QTEST_MAIN(TestStudioSessions)
+#include "tst_studiosessions.moc"
