@@ -43,4 +43,17 @@ void LiveFeed::drainInto(LiveHistory &history)
         history.append(deviceFrame);
 }
 
+void LiveFeed::discard()
+{
+    ContactFrame frame;
+    while (m_frames.pop(&frame)) {
+    }
+    SemanticEvent event;
+    while (m_events.pop(&event)) {
+    }
+    DeviceFrame deviceFrame;
+    while (m_deviceFrames.pop(&deviceFrame)) {
+    }
+}
+
 } // namespace semhap

@@ -32,6 +32,8 @@ public:
     // GUI thread.
     /** Moves everything queued into `history`; does not commit it. */
     void drainInto(LiveHistory &history);
+    /** Drops everything queued (the history shows something else, a replay). */
+    void discard();
     /** Values refused because a queue was full, since construction. */
     quint64 dropped() const { return m_dropped.load(std::memory_order_relaxed); }
 

@@ -2,6 +2,7 @@
 #include "livehistory.h"
 
 #include "forcedetector.h"
+#include "player.h"
 #include "routergraph.h"
 #include "slipdetector.h"
 
@@ -9,12 +10,30 @@
 
 namespace semhap {
 
-std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph)
+bool isIdleDevice(const QString &name, const Hands &present)
+{
+    Gripper hand = Gripper::Right;
+    return gripperFromName(name.section(QLatin1Char('.'), 0, 0), &hand) && !present[size_t(hand)];
+}
+
+std::vector<LiveDevice> liveDevicesOf(const Player &player, const Hands &present)
+{
+    std::vector<LiveDevice> devices;
+    for (int d = 0; d < player.deviceCount(); ++d) {
+        const QString &name = player.deviceName(d);
+        devices.push_back({name, player.deviceModel(d).name(),
+                           player.deviceModel(d).channelNames(), isIdleDevice(name, present)});
+    }
+    return devices;
+}
+
+std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph, const Hands &present)
 {
     std::array<GripperThresholds, 2> result{};
     for (const RouterNode &node : graph.nodes) {
         Gripper gripper = Gripper::Right;
-        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper))
+        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper) ||
+            !present[size_t(gripper)])
             continue;
         QJsonObject params = node.params;
         params.remove(QLatin1String("gripper"));

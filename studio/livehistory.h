@@ -29,9 +29,6 @@ struct GripperThresholds
 
 class RouterGraph;
 
-/** The thresholds each gripper's detectors fire at, read from a router's graph. */
-std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph);
-
 /** One device of the running router, as the panels list it. */
 struct LiveDevice
 {
@@ -41,6 +38,23 @@ struct LiveDevice
     /** Its hand is not in the scene (`left.*` on a one-handed task): it never plays. */
     bool idle = false;
 };
+
+class Player;
+
+/** Which hands a run has, by Gripper: a scene's grippers, or a session's recorded frames. */
+using Hands = std::array<bool, 2>;
+
+/**
+ * The thresholds each present hand's detectors fire at, read from a router's graph; an
+ * absent hand's detectors never fire, so it gets none.
+ */
+std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph, const Hands &present);
+
+/** The player's devices as the panels list them; those of an absent hand are idle. */
+std::vector<LiveDevice> liveDevicesOf(const Player &player, const Hands &present);
+
+/** Whether device `name` (`left.vibro`) belongs to a hand the run does not have. */
+bool isIdleDevice(const QString &name, const Hands &present);
 
 /** A semantic message from its begin to its end (open while `active`). */
 struct MessageSpan

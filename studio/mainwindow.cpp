@@ -519,13 +519,14 @@ void MainWindow::toggleRecording()
 
 bool MainWindow::openSession(const QString &path)
 {
-    m_engine.pause();
     m_engine.stopRecording();
     QString error;
     if (!m_replay->open(path, &error)) {
         showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
         return false;
     }
+    // The history is the replay's from here: the run's last frames must not mix in.
+    m_engine.detachHistory();
     // Scene state is not in a session (schema 1): the viewport says so instead.
     m_viewport->setScene(nullptr, nullptr);
     m_viewport->setPlaceholder(tr("Replay: no scene state recorded"));

@@ -23,15 +23,6 @@ public:
     std::vector<DeviceFrame> deviceFrames;
 };
 
-std::vector<LiveDevice> devicesOf(const Player &player)
-{
-    std::vector<LiveDevice> devices;
-    for (int d = 0; d < player.deviceCount(); ++d)
-        devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
-                           player.deviceModel(d).channelNames()});
-    return devices;
-}
-
 /** Appends the values of `values` with `from < t <= to` (sorted by t) to `history`. */
 template<typename T>
 void appendWindow(const std::vector<T> &values, double from, double to, LiveHistory &history)
@@ -83,19 +74,24 @@ bool SessionReplay::open(const QString &path, QString *error)
     std::unique_ptr<Router> router;
     if (reader->routerGraph(&graph, &loadError))
         router = Router::compile(graph, &loadError);
+    // The hands that recorded frames; the router's detectors of another never fired.
+    Hands hands{false, false};
+    for (const ContactFrame &frame : frames)
+        hands[size_t(frame.gripper)] = true;
     for (int d = 0; d < reader->deviceNames().size(); ++d) {
         const QString &name = reader->deviceNames().at(d);
         const int index = router ? router->player().deviceIndex(name) : -1;
         recorded.devices.push_back(
             {name, index >= 0 ? router->player().deviceModel(index).name() : QString(),
-             reader->channelNames(d)});
+             reader->channelNames(d), isIdleDevice(name, hands)});
     }
     if (router)
-        recorded.thresholds = thresholdsOf(graph);
+        recorded.thresholds = thresholdsOf(graph, hands);
     recorded.nodeIds = reader->nodeNames();
 
     m_path = reader->path();
     m_frames = std::move(frames);
+    m_hands = hands;
     m_recorded = std::move(recorded);
     m_start = reader->startTime();
     m_end = reader->endTime();
@@ -144,9 +140,9 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
         return false;
     }
     Streams streams;
-    streams.devices = devicesOf(router->player());
+    streams.devices = liveDevicesOf(router->player(), m_hands);
     streams.nodeIds = router->nodeIds();
-    streams.thresholds = thresholdsOf(graph);
+    streams.thresholds = thresholdsOf(graph, m_hands);
     Pipeline pipeline(std::move(router));
     Collector collector;
     for (const ContactFrame &frame : m_frames)

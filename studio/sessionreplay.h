@@ -74,6 +74,7 @@ private:
     LiveHistory &m_history;
     QString m_path;
     std::vector<ContactFrame> m_frames;
+    Hands m_hands{true, true}; ///< the hands that recorded frames
     Streams m_recorded;
     Streams m_shown;
     bool m_rerouted = false;

@@ -36,20 +36,6 @@ double seconds(Clock::duration d)
     return std::chrono::duration<double>(d).count();
 }
 
-std::vector<LiveDevice> devicesOf(const Player &player, const World &world)
-{
-    std::vector<LiveDevice> devices;
-    for (int d = 0; d < player.deviceCount(); ++d) {
-        LiveDevice device{player.deviceName(d), player.deviceModel(d).name(),
-                          player.deviceModel(d).channelNames()};
-        Gripper hand = Gripper::Right;
-        device.idle = gripperFromName(device.name.section(QLatin1Char('.'), 0, 0), &hand) &&
-                      !world.hasGripper(hand);
-        devices.push_back(device);
-    }
-    return devices;
-}
-
 } // namespace
 
 void SimEngine::StepSink::onContactFrame(const ContactFrame &frame)
@@ -127,7 +113,8 @@ bool SimEngine::start(const RunOptions &options, QString *error)
     m_pendingSteps = 0;
 
     drain(); // whatever the old run left in the feed goes before the new history starts
-    m_history.start(devicesOf(player, m_run->world()), shownThresholds(),
+    m_historyAttached = true;
+    m_history.start(liveDevicesOf(player, hands()), shownThresholds(),
                     m_run->pipeline().router().nodeIds());
     m_history.setMetrics(m_run->metrics());
     startThread();
@@ -196,7 +183,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         emit recordingChanged(false);
     }
     const Player &player = m_run->pipeline().router().player();
-    m_history.setRouter(devicesOf(player, m_run->world()), shownThresholds(),
+    m_history.setRouter(liveDevicesOf(player, hands()), shownThresholds(),
                         m_run->pipeline().router().nodeIds());
     m_appliedGraph = std::make_unique<RouterGraph>(graph);
     // A graph from a file or preset is named by it; an untitled one runs over the last.
@@ -212,15 +199,15 @@ const RouterGraph &SimEngine::routerGraph() const
     return m_run->pipeline().router().graph();
 }
 
+Hands SimEngine::hands() const
+{
+    const World &world = m_run->world();
+    return {world.hasGripper(Gripper::Left), world.hasGripper(Gripper::Right)};
+}
+
 std::array<GripperThresholds, 2> SimEngine::shownThresholds()
 {
-    // Detectors of a hand the scene does not have never fire: their plots would stay empty.
-    std::array<GripperThresholds, 2> thresholds = thresholdsOf(m_run->pipeline().router().graph());
-    for (Gripper g : {Gripper::Left, Gripper::Right}) {
-        if (!m_run->world().hasGripper(g))
-            thresholds[size_t(g)] = GripperThresholds();
-    }
-    return thresholds;
+    return thresholdsOf(m_run->pipeline().router().graph(), hands());
 }
 
 bool SimEngine::reset(QString *error)
@@ -316,8 +303,18 @@ void SimEngine::stopAll()
 
 void SimEngine::drain()
 {
+    if (!m_historyAttached) {
+        m_feed.discard();
+        return;
+    }
     m_feed.drainInto(m_history);
     m_history.commit();
+}
+
+void SimEngine::detachHistory()
+{
+    pause();
+    m_historyAttached = false;
 }
 
 void SimEngine::startThread()
@@ -418,7 +415,7 @@ void SimEngine::stepOnce()
         QMetaObject::invokeMethod(
             this,
             [this, metrics, generation] {
-                if (generation == m_generation)
+                if (generation == m_generation && m_historyAttached)
                     m_history.setMetrics(metrics);
             },
             Qt::QueuedConnection);

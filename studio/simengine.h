@@ -84,6 +84,11 @@ public:
     void stopAll();
 
     LiveHistory &history() { return m_history; }
+    /**
+     * Pauses the run and stops feeding the history, which then shows something else (a
+     * replay); loading or resetting the run feeds it again.
+     */
+    void detachHistory();
     /** The scene snapshots the viewport draws; null until loaded. */
     SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
     /** The loaded world (read it on the GUI thread only while paused). */
@@ -139,6 +144,8 @@ private:
     };
 
     void bindRouterDevices(const Player &player, QString *error);
+    /** The hands the loaded scene has. */
+    Hands hands() const;
     std::array<GripperThresholds, 2> shownThresholds();
     /** load() without the signal. */
     bool start(const RunOptions &options, QString *error);
@@ -168,6 +175,7 @@ private:
     std::mutex m_setupMutex; ///< held by the pipeline thread per batch of ticks
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_running{false};
+    bool m_historyAttached = true; ///< GUI thread: the feed goes to the history
     std::atomic<bool> m_manual{false};
     std::atomic<int> m_speedEpoch{0}; ///< bumped on each speed change: the pacing restarts
     int m_generation = 0;             ///< bumped on each load: late metrics are dropped

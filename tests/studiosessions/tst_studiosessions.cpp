@@ -172,13 +172,25 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     }
     QVERIFY2(last <= t + 1e-9 && last > t - 0.05, qPrintable(QString::number(last)));
     // The documentation's screenshot: SEMHAP_REPLAY_SCREENSHOT=FILE.png.
-    if (qEnvironmentVariableIsSet("SEMHAP_REPLAY_SCREENSHOT"))
+    if (qEnvironmentVariableIsSet("SEMHAP_REPLAY_SCREENSHOT")) {
+        QTest::qWait(500); // the plots and the viewport repaint on the event loop
         window.grab().save(qEnvironmentVariable("SEMHAP_REPLAY_SCREENSHOT"));
+    }
 
     // Dragging the scrubber back shows less.
     const QPoint start = slider->rect().center();
     QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(4, start.y()));
     QVERIFY(replay->time() < t);
+    // ... in the plots too: nothing after the new time, whatever the run left behind.
+    QTest::qWait(300);
+    double latest = -1.0;
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        bool found = false;
+        const QCPRange keys = plot->graph(g)->getKeyRange(found);
+        if (found)
+            latest = std::max(latest, keys.upper);
+    }
+    QVERIFY2(latest <= replay->time() + 1e-9, qPrintable(QString::number(latest)));
 
     // Playing moves on; closing brings the simulation back.
     QTest::mouseClick(window.replayBar()->playButton(), Qt::LeftButton);
