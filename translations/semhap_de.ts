@@ -606,6 +606,74 @@
         <source>The run is paused while you audition a pattern.</source>
         <translation>Der Lauf ist angehalten, während Sie ein Muster vorhören.</translation>
     </message>
+    <message>
+        <source>Record</source>
+        <translation>Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Record the run into a new session in your data folder (Ctrl+Shift+R); again to stop</source>
+        <translation>Den Lauf in eine neue Sitzung in Ihrem Datenordner aufnehmen (Strg+Umschalt+R); erneut zum Beenden</translation>
+    </message>
+    <message>
+        <source>Open session…</source>
+        <translation>Sitzung öffnen…</translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation>Sitzung öffnen</translation>
+    </message>
+    <message>
+        <source>semhap sessions (*.db);;All files (*)</source>
+        <translation>semhap-Sitzungen (*.db);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation>Sitzungsnotizen</translation>
+    </message>
+    <message>
+        <source>Kept with the next recording (participant, condition, …)</source>
+        <translation>Wird mit der nächsten Aufnahme gespeichert (Versuchsperson, Bedingung, …)</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>Aufnahme beenden</translation>
+    </message>
+    <message>
+        <source>Session saved to %1</source>
+        <translation>Sitzung gespeichert unter %1</translation>
+    </message>
+    <message>
+        <source>Could not start recording</source>
+        <translation>Die Aufnahme konnte nicht gestartet werden</translation>
+    </message>
+    <message>
+        <source>Could not open session %1</source>
+        <translation>Sitzung %1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Replay: no scene state recorded</source>
+        <translation>Wiedergabe: kein Szenenzustand aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>semhap studio — replay of %1</source>
+        <translation>semhap studio — Wiedergabe von %1</translation>
+    </message>
+    <message>
+        <source>Could not re-route the session</source>
+        <translation>Die Sitzung konnte nicht neu geleitet werden</translation>
+    </message>
+    <message>
+        <source>Recording to %1 (%2 dropped)</source>
+        <translation>Aufnahme nach %1 (%2 verworfen)</translation>
+    </message>
+    <message>
+        <source>replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1196,6 +1264,65 @@
     <message>
         <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
         <translation>Das Fenster wird in der neuen Sprache neu aufgebaut; der Lauf beginnt wieder von vorn.</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ReplayBar</name>
+    <message>
+        <source>Play or pause the replay</source>
+        <translation>Wiedergabe abspielen oder anhalten</translation>
+    </message>
+    <message>
+        <source>Session time: drag to scrub</source>
+        <translation>Sitzungszeit: ziehen zum Durchsuchen</translation>
+    </message>
+    <message>
+        <source>Session seconds per real second</source>
+        <translation>Sitzungssekunden pro echter Sekunde</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Re-route with the editor&apos;s router</source>
+        <translation>Mit dem Router des Editors neu leiten</translation>
+    </message>
+    <message>
+        <source>Run the recorded contact frames through the router in the router editor</source>
+        <translation>Die aufgezeichneten Kontakt-Frames durch den Router im Router-Editor leiten</translation>
+    </message>
+    <message>
+        <source>Recorded router</source>
+        <translation>Aufgezeichneter Router</translation>
+    </message>
+    <message>
+        <source>Show the events and device frames the session recorded</source>
+        <translation>Die aufgezeichneten Ereignisse und Geräte-Frames der Sitzung zeigen</translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation>Wiedergabe schließen</translation>
+    </message>
+    <message>
+        <source>Showing: re-routed</source>
+        <translation>Angezeigt: neu geleitet</translation>
+    </message>
+    <message>
+        <source>Showing: recorded</source>
+        <translation>Angezeigt: aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
     </message>
 </context>
 <context>

@@ -606,6 +606,74 @@
         <source>The run is paused while you audition a pattern.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record the run into a new session in your data folder (Ctrl+Shift+R); again to stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open session…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap sessions (*.db);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kept with the next recording (participant, condition, …)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session saved to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not start recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open session %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay: no scene state recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studio — replay of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not re-route the session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording to %1 (%2 dropped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>replay</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1195,6 +1263,65 @@
     </message>
     <message>
         <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ReplayBar</name>
+    <message>
+        <source>Play or pause the replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session time: drag to scrub</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session seconds per real second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-route with the editor&apos;s router</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the recorded contact frames through the router in the router editor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recorded router</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the events and device frames the session recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Showing: re-routed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Showing: recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
