@@ -7,6 +7,7 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "mainwindow.h"
+#include "openwindow.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
 #include "simviewport.h"
@@ -53,20 +54,6 @@ private:
     QTemporaryDir m_config;
 };
 
-namespace {
-
-/** Shows the window and makes it active: shortcuts go to the active window only. */
-bool open(MainWindow &window)
-{
-    window.show();
-    if (!QTest::qWaitForWindowExposed(&window))
-        return false;
-    window.activateWindow();
-    return QTest::qWaitForWindowActive(&window);
-}
-
-} // namespace
-
 void TestStudio::initTestCase()
 {
     QVERIFY(m_config.isValid());
@@ -94,7 +81,7 @@ StudioOptions TestStudio::options() const
 void TestStudio::opensOnTheDefaultsAndRuns()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
@@ -118,7 +105,7 @@ void TestStudio::opensOnTheDefaultsAndRuns()
 void TestStudio::picksSceneAndRouter()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QSignalSpy loaded(&window.engine(), &SimEngine::loaded);
 
     QComboBox *scene = window.scenePicker();
@@ -149,7 +136,7 @@ void TestStudio::picksSceneAndRouter()
 void TestStudio::runStepAndSpeedFromTheKeyboard()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(!window.engine().isRunning());
@@ -175,7 +162,7 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
 void TestStudio::timeWindowFollowsTheSpinBox()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     auto *spin = window.plots()->findChild<QAbstractSpinBox *>();
     QVERIFY(spin);
     spin->setFocus();
@@ -189,7 +176,7 @@ void TestStudio::timeWindowFollowsTheSpinBox()
 void TestStudio::stopAllWorksFromAnywhere()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     // With the focus in a text field of a dock, Esc still stops everything.
     auto *filter = window.eventLog()->findChild<QLineEdit *>("filterText");
@@ -205,7 +192,7 @@ void TestStudio::stopAllWorksFromAnywhere()
 void TestStudio::aKeyInTheViewportTakesOver()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     auto *teleop = window.findChild<QAction *>("teleopAction");
     QVERIFY(!teleop->isChecked());
     window.viewport()->setFocus();
@@ -223,7 +210,7 @@ void TestStudio::aKeyInTheViewportTakesOver()
 void TestStudio::eventLogMovesThePlotCursor()
 {
     MainWindow window(options());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     window.engine().pause();
     QTableView *table = window.eventLog()->findChild<QTableView *>("eventTable");
@@ -242,12 +229,12 @@ void TestStudio::layoutIsSavedAndRestored()
     StudioOptions o = options();
     {
         MainWindow window(o);
-        QVERIFY(open(window));
+        QVERIFY(openWindow(window));
         window.findChild<QDockWidget *>("metricsDock")->close();
         window.close();
     }
     MainWindow window(o);
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
     QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
     window.findChild<QAction *>("resetLayoutAction")->trigger();

@@ -5,6 +5,7 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "mainwindow.h"
+#include "openwindow.h"
 #include "pipeline.h"
 #include "plotpanel.h"
 #include "replaybar.h"
@@ -54,15 +55,6 @@ StudioOptions studioOptions()
         {"--speed", "4", "--pose-port", "0", "--size", "1280x800", "--default-layout"}, &o,
         &message, &help);
     return o;
-}
-
-bool open(MainWindow &window)
-{
-    window.show();
-    if (!QTest::qWaitForWindowExposed(&window))
-        return false;
-    window.activateWindow();
-    return QTest::qWaitForWindowActive(&window);
 }
 
 /** Events compared by value. */
@@ -129,7 +121,7 @@ void TestStudioSessions::engineRecordsWhatTheHistorySees()
 void TestStudioSessions::windowRecordsReopensAndScrubs()
 {
     MainWindow window(studioOptions());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     QTest::keyClicks(window.notesEdit(), "participant 7");
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
@@ -234,7 +226,7 @@ void TestStudioSessions::reroutesThroughTheEditorsRouter()
     QVERIFY(!expected.events.empty());
 
     MainWindow window(studioOptions());
-    QVERIFY(open(window));
+    QVERIFY(openWindow(window));
     QVERIFY(window.openSession(path));
     SessionReplay *replay = window.replay();
     QCOMPARE(qint64(replay->events().size()), reader->eventCount());
