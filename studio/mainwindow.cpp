@@ -479,7 +479,7 @@ void MainWindow::connectEngine()
         m_runAction->setText(running ? tr("Pause") : tr("Run"));
         m_runAction->setIcon(
             style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-        m_stepAction->setEnabled(!running);
+        m_stepAction->setEnabled(!running && !m_replay->isOpen());
         updateStatus();
     });
     connect(&m_engine, &SimEngine::manualChanged, this, [this](bool manual) {

@@ -139,6 +139,9 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     SessionReplay *replay = window.replay();
     QVERIFY(replay->isOpen());
     QVERIFY(window.replayBar()->isVisible());
+    // The run's controls are off while a replay owns the window.
+    for (const char *name : {"runAction", "stepAction", "teleopAction", "recordAction"})
+        QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
     QCOMPARE(window.viewport()->placeholder(), QString("Replay: no scene state recorded"));
     QVERIFY(replay->endTime() > replay->startTime() + 3.0);
 
