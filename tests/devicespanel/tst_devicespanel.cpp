@@ -5,6 +5,7 @@
 // the fall back to the virtual device on disconnect are checked in the panel.
 #include "devicemanager.h"
 #include "devicespanel.h"
+#include "emulatedband.h"
 #include "emulator.h"
 #include "levelmeter.h"
 #include "livehistory.h"
@@ -27,41 +28,6 @@ using namespace semhap;
 namespace {
 
 const QString Band = QStringLiteral("right.vibro");
-
-/** An emulated lra4 band serving UDP loopback on its own thread while the test runs. */
-class EmulatedBand
-{
-public:
-    EmulatedBand() : m_emulator(options()) {}
-    ~EmulatedBand()
-    {
-        m_quit = true;
-        if (m_thread.joinable())
-            m_thread.join();
-    }
-    bool start(QString *error)
-    {
-        if (!m_emulator.open(error))
-            return false;
-        m_thread = std::thread([this] { m_emulator.run([this] { return m_quit.load(); }); });
-        return true;
-    }
-    QString uri() const { return m_emulator.uri(); }
-    Emulator::State state() const { return m_emulator.state(); }
-
-private:
-    static EmulatorOptions options()
-    {
-        EmulatorOptions options;
-        options.model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
-        options.udp = true;
-        return options;
-    }
-
-    Emulator m_emulator;
-    std::atomic<bool> m_quit{false};
-    std::thread m_thread;
-};
 
 /** A panel on a one-device run whose bind requests the manager carries out at once. */
 struct Fixture
@@ -172,7 +138,7 @@ void TestDevicesPanel::addAddress()
 
 void TestDevicesPanel::connectToEmulator()
 {
-    EmulatedBand band;
+    EmulatedBand band(QStringLiteral("lra4"));
     QString error;
     QVERIFY2(band.start(&error), qPrintable(error));
     Fixture f;

@@ -5,6 +5,7 @@
 // audition reaches an emulated band over UDP, and an AHAP file imports and exports.
 #include "ahapformat.h"
 #include "devicemanager.h"
+#include "emulatedband.h"
 #include "emulator.h"
 #include "jsonreader.h"
 #include "nodeinspector.h"
@@ -42,41 +43,6 @@ using namespace semhap;
 namespace {
 
 const QString Data = QStringLiteral(SEMHAP_TEST_DATA);
-
-/** An emulated band serving UDP loopback on its own thread while the test runs. */
-class EmulatedBand
-{
-public:
-    explicit EmulatedBand(const QString &model) : m_emulator(options(model)) {}
-    ~EmulatedBand()
-    {
-        m_quit = true;
-        if (m_thread.joinable())
-            m_thread.join();
-    }
-    bool start(QString *error)
-    {
-        if (!m_emulator.open(error))
-            return false;
-        m_thread = std::thread([this] { m_emulator.run([this] { return m_quit.load(); }); });
-        return true;
-    }
-    QString uri() const { return m_emulator.uri(); }
-    Emulator::State state() const { return m_emulator.state(); }
-
-private:
-    static EmulatorOptions options(const QString &model)
-    {
-        EmulatorOptions options;
-        options.model = DeviceModelLibrary::builtin(model);
-        options.udp = true;
-        return options;
-    }
-
-    Emulator m_emulator;
-    std::atomic<bool> m_quit{false};
-    std::thread m_thread;
-};
 
 /** A designer on a fresh user folder, shown. */
 struct Fixture
