@@ -5,6 +5,7 @@
 #include "devicespanel.h"
 #include "eventlogpanel.h"
 #include "keyboardteleop.h"
+#include "liverigdialog.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
 #include "poseinput.h"
@@ -97,8 +98,13 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
         resize(options.size);
 
     m_engine.setSpeed(options.speed);
-    if (openRun(options.run) && options.autoRun)
+    if (options.live) {
+        // Without the rig, the scene is still there to look at.
+        if (!openLiveRig(options.liveRig))
+            openRun(options.run);
+    } else if (openRun(options.run) && options.autoRun) {
         m_engine.run();
+    }
     if (options.posePort > 0) {
         if (!m_poseInput->listen(quint16(options.posePort)))
             statusBar()->showMessage(
@@ -122,6 +128,20 @@ bool MainWindow::openRun(const RunOptions &options)
         syncPickers();
         return false;
     }
+    return true;
+}
+
+bool MainWindow::openLiveRig(const LiveRigOptions &options)
+{
+    QString error;
+    if (!m_engine.listen(options, &error)) {
+        showError(tr("Could not listen on udp:%1:%2").arg(options.address).arg(options.port),
+                  error);
+        return false;
+    }
+    // Frames come when the rig sends them: holding them back is for Pause.
+    m_engine.run();
+    statusBar()->showMessage(tr("Listening for a live rig on %1").arg(m_engine.liveUri()), 10000);
     return true;
 }
 
@@ -209,9 +229,7 @@ void MainWindow::createActions()
                                                           tr("semhap routers (*.json)"));
         if (file.isEmpty())
             return;
-        RunOptions options = m_engine.options();
-        options.router = file;
-        openRun(options);
+        switchRouter(file);
     });
     m_recordAction = action(tr("Record"), QStringLiteral("recordAction"),
                             QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
@@ -230,6 +248,15 @@ void MainWindow::createActions()
             tr("semhap sessions (*.db);;All files (*)"));
         if (!file.isEmpty())
             openSession(file);
+    });
+    m_listenAction = action(tr("Listen for a live rig…"), QStringLiteral("listenAction"),
+                            QKeySequence(Qt::CTRL | Qt::Key_L));
+    m_listenAction->setToolTip(tr("Run another program's contact frames, sent over UDP, "
+                                  "instead of the scene (Ctrl+L)"));
+    connect(m_listenAction, &QAction::triggered, this, [this] {
+        LiveRigDialog dialog(m_engine.options().router, this);
+        if (dialog.exec() == QDialog::Accepted)
+            openLiveRig(dialog.options());
     });
     m_preferencesAction =
         action(tr("Preferences…"), QStringLiteral("preferencesAction"), QKeySequence::Preferences);
@@ -399,6 +426,7 @@ void MainWindow::createMenus()
     file->addAction(m_openSceneAction);
     file->addAction(m_openRouterAction);
     file->addAction(m_openSessionAction);
+    file->addAction(m_listenAction);
     file->addSeparator();
     file->addAction(m_preferencesAction);
     file->addSeparator();
@@ -453,8 +481,13 @@ void MainWindow::connectEngine()
 {
     connect(&m_engine, &SimEngine::loaded, this, [this] {
         m_replay->close();
-        m_viewport->setPlaceholder(QString());
+        m_viewport->setPlaceholder(
+            m_engine.isLive()
+                ? tr("Live rig on %1\nThe rig draws its own scene.").arg(m_engine.liveUri())
+                : QString());
         m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
+        m_shownRejections = 0;
+        updateMode();
         m_teleop->setOperator(m_engine.manualOperator());
         m_teleop->setWorld(m_engine.world());
         m_poseInput->setOperator(m_engine.manualOperator());
@@ -479,8 +512,7 @@ void MainWindow::connectEngine()
         m_runAction->setText(running ? tr("Pause") : tr("Run"));
         m_runAction->setIcon(
             style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-        m_stepAction->setEnabled(!running && !m_replay->isOpen());
-        updateStatus();
+        updateMode();
     });
     connect(&m_engine, &SimEngine::manualChanged, this, [this](bool manual) {
         m_teleopAction->setChecked(manual);
@@ -556,11 +588,34 @@ void MainWindow::rerouteReplay()
 void MainWindow::updateMode()
 {
     const bool replaying = m_replay->isOpen();
+    const bool simulating = !replaying && !m_engine.isLive();
     m_replayToolBar->setVisible(replaying);
-    for (QAction *action : {m_runAction, m_stepAction, m_teleopAction, m_recordAction})
+    for (QAction *action : {m_runAction, m_recordAction})
         action->setEnabled(!replaying);
-    m_stepAction->setEnabled(!replaying && !m_engine.isRunning());
+    // A live rig keeps its own pace and drives its own grippers.
+    for (QAction *action :
+         {m_teleopAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
+        action->setEnabled(simulating);
+    m_speedPicker->setEnabled(simulating);
+    m_stepAction->setEnabled(simulating && !m_engine.isRunning());
     updateStatus();
+}
+
+void MainWindow::switchRouter(const QString &router)
+{
+    const bool running = m_engine.isRunning();
+    if (m_engine.isLive()) {
+        LiveRigOptions options = m_engine.liveOptions();
+        options.router = router;
+        openLiveRig(options);
+        syncPickers();
+        return;
+    }
+    RunOptions options = m_engine.options();
+    options.router = router;
+    options.overrides.clear();
+    if (openRun(options) && running)
+        m_engine.run();
 }
 
 void MainWindow::toggleRunning()
@@ -591,12 +646,7 @@ void MainWindow::pickScene(int index)
 
 void MainWindow::pickRouter(int index)
 {
-    RunOptions options = m_engine.options();
-    options.router = m_routerPicker->itemData(index).toString();
-    options.overrides.clear();
-    const bool running = m_engine.isRunning();
-    if (openRun(options) && running)
-        m_engine.run();
+    switchRouter(m_routerPicker->itemData(index).toString());
 }
 
 void MainWindow::syncPickers()
@@ -630,6 +680,12 @@ void MainWindow::syncRouterEditor()
 
 void MainWindow::updateTitle()
 {
+    if (m_engine.isLive()) {
+        setWindowTitle(
+            tr("semhap studio — live rig on %1 · %2")
+                .arg(m_engine.liveUri(), QFileInfo(m_engine.options().router).completeBaseName()));
+        return;
+    }
     setWindowTitle(tr("semhap studio — %1 · %2")
                        .arg(QFileInfo(m_engine.options().scene).completeBaseName(),
                             QFileInfo(m_engine.options().router).completeBaseName()));
@@ -649,6 +705,11 @@ void MainWindow::updateStatus()
         return;
     }
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
+    if (m_engine.isLive()) {
+        updateLiveStatus();
+        updateDevicesStatus();
+        return;
+    }
     m_rateLabel->setText(
         m_engine.isRunning()
             ? tr("%1× real time").arg(locale.toString(m_engine.realtimeFactor(), 'f', 2))
@@ -656,6 +717,33 @@ void MainWindow::updateStatus()
     m_operatorLabel->setText(m_engine.isManual()
                                  ? tr("You are driving")
                                  : tr("Operator: %1").arg(m_engine.options().operatorName));
+    updateDevicesStatus();
+}
+
+void MainWindow::updateLiveStatus()
+{
+    const QLocale locale;
+    const LiveRig::Stats stats = m_engine.liveStats();
+    m_operatorLabel->setText(tr("Live rig on %1").arg(m_engine.liveUri()));
+    QString rate = m_engine.isRunning() ? tr("%1 frames/s, jitter %2 ms")
+                                              .arg(locale.toString(stats.framesPerSecond, 'f', 0),
+                                                   locale.toString(stats.jitter * 1000.0, 'f', 1))
+                                        : tr("paused: %n frame(s) held", nullptr,
+                                             int(std::min<quint64>(stats.held, INT_MAX)));
+    if (stats.rejected > 0)
+        rate += tr(" · %n malformed", nullptr, int(std::min<quint64>(stats.rejected, INT_MAX)));
+    m_rateLabel->setText(rate);
+    // The latest rejection says what was wrong with it, as it comes.
+    quint64 rejections = 0;
+    const QString rejection = m_engine.liveRejection(&rejections);
+    if (rejections != m_shownRejections) {
+        m_shownRejections = rejections;
+        statusBar()->showMessage(tr("Malformed datagram: %1").arg(rejection), 5000);
+    }
+}
+
+void MainWindow::updateDevicesStatus()
+{
     int connected = 0;
     int virtualCount = 0;
     int down = 0;

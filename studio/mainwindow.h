@@ -62,8 +62,13 @@ public:
      * plots and the event log follow its scrubber. Shows what went wrong, if anything.
      */
     bool openSession(const QString &path);
-    /** Back from a replay to the simulation, loaded again. */
+    /** Back from a replay to the simulation (or live rig), loaded again. */
     void closeReplay();
+    /**
+     * Listens for a live rig's contact frames instead of running the scene, and runs them.
+     * Shows what went wrong (a port in use), if anything.
+     */
+    bool openLiveRig(const LiveRigOptions &options);
 
 signals:
     /** The user chose another interface language (its code, empty: the system's). */
@@ -84,6 +89,8 @@ private:
     void restoreLayout();
     void resetLayout();
     void updateStatus();
+    void updateLiveStatus();
+    void updateDevicesStatus();
     void updateTitle();
     void syncPickers();
     /** Shows the running router in the editor unless the editor already holds it. */
@@ -96,8 +103,10 @@ private:
     void toggleRunning();
     void toggleRecording();
     void rerouteReplay();
-    /** Enables what only makes sense on the simulation (run, drive, record). */
+    /** Enables what only makes sense on the simulation (step, speed, drive) or not in a replay. */
     void updateMode();
+    /** Runs `router` on what runs now: the scene, or the live rig. */
+    void switchRouter(const QString &router);
 
     StudioOptions m_options;
     SimEngine m_engine;
@@ -123,7 +132,8 @@ private:
     QLabel *m_operatorLabel = nullptr;
     QLabel *m_devicesLabel = nullptr;
     QTimer m_statusTimer;
-    QByteArray m_defaultState; ///< the dock layout as built, for "Reset layout"
+    quint64 m_shownRejections = 0; ///< the live rig's rejections already in the status bar
+    QByteArray m_defaultState;     ///< the dock layout as built, for "Reset layout"
 
     QAction *m_runAction = nullptr;
     QAction *m_stepAction = nullptr;
@@ -138,6 +148,7 @@ private:
     QAction *m_openRouterAction = nullptr;
     QAction *m_recordAction = nullptr;
     QAction *m_openSessionAction = nullptr;
+    QAction *m_listenAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_resetCameraAction = nullptr;

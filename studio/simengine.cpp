@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <future>
 
 namespace semhap {
 
@@ -88,26 +89,101 @@ bool SimEngine::start(const RunOptions &options, QString *error)
     std::unique_ptr<SimRun> run = SimRun::create(options, error);
     if (!run)
         return false;
+    stopSource();
+    m_run = std::move(run);
+    m_options = options;
+    m_sceneFeed = std::make_unique<SceneFeed>(m_run->world());
+    install();
+    startThread();
+    return true;
+}
+
+bool SimEngine::listen(const LiveRigOptions &options, QString *error)
+{
+    const int generation = m_generation;
+    const bool listening = startLive(options, error);
+    if (listening || m_generation != generation)
+        emit loaded(); // when the rig could not reopen its port, the simulation came back
+    return listening;
+}
+
+bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
+{
+    LoadError loadError;
+    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError);
+    if (!router) {
+        *error = loadError.toString();
+        return false;
+    }
+    // A rig on the same port (a reset) has to let go of it before the new one can open it.
+    const bool samePort = m_rig && options.port != 0 && options.port == m_rig->stats().port &&
+                          options.address == m_rig->options().address;
+    if (samePort)
+        stopSource();
+
+    // The socket belongs to the thread that reads it, so the new pipeline thread opens it;
+    // it starts reading only once the old run has stopped and the new one is installed, and
+    // the old run goes on untouched when the port cannot be had.
+    auto rig = std::make_unique<LiveRig>(options, std::move(router));
+    std::promise<QString> opened;
+    std::future<QString> openResult = opened.get_future();
+    std::promise<bool> go;
+    std::thread thread(
+        [this, rig = rig.get(), opened = std::move(opened), start = go.get_future()]() mutable {
+            QString openError;
+            const bool ok = rig->open(&openError);
+            opened.set_value(openError);
+            if (!ok)
+                return;
+            if (start.get())
+                listenLoop();
+            rig->close();
+        });
+    *error = openResult.get();
+    if (!error->isEmpty()) {
+        thread.join();
+        if (samePort) {
+            // Nothing is left to go back to: the simulation comes back instead.
+            QString simError;
+            start(m_options, &simError);
+        }
+        return false;
+    }
+    stopSource();
+    m_rig = std::move(rig);
+    m_options.router = options.router;
+    m_options.overrides = options.overrides;
+    install();
+    m_quit = false;
+    m_thread = std::move(thread);
+    go.set_value(true);
+    return true;
+}
+
+void SimEngine::stopSource()
+{
     stopThread();
     stopRecording();
-    const bool wasRunning = m_running.exchange(false);
-    if (wasRunning)
+    if (m_running.exchange(false))
         emit runningChanged(false);
     m_output.reset();
     m_sceneFeed.reset();
-    m_run = std::move(run);
-    m_options = options;
-    ++m_generation;
+    m_run.reset();
+    m_rig.reset();
+}
 
+void SimEngine::install()
+{
+    ++m_generation;
     m_appliedGraph.reset();
-    const Player &player = m_run->pipeline().router().player();
-    bindRouterDevices(player, error);
+    const Player &player = pipeline().router().player();
+    QString bindError;
+    bindRouterDevices(player, &bindError);
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
     m_manualOperator = std::make_unique<ManualOperator>();
     if (m_manual.exchange(false))
         emit manualChanged(false);
-    m_sceneFeed = std::make_unique<SceneFeed>(m_run->world());
-    m_simTime = m_run->time();
+    m_simTime = m_run ? m_run->time() : 0.0;
     m_realtimeFactor = 0.0;
     m_nextMetrics = 0.0;
     m_pendingSteps = 0;
@@ -115,10 +191,39 @@ bool SimEngine::start(const RunOptions &options, QString *error)
     drain(); // whatever the old run left in the feed goes before the new history starts
     m_historyAttached = true;
     m_history.start(liveDevicesOf(player, hands()), shownThresholds(),
-                    m_run->pipeline().router().nodeIds());
-    m_history.setMetrics(m_run->metrics());
-    startThread();
-    return true;
+                    pipeline().router().nodeIds());
+    // A live rig has no task to count.
+    m_history.setMetrics(m_run ? m_run->metrics() : QJsonObject());
+}
+
+Pipeline &SimEngine::pipeline()
+{
+    return m_run ? m_run->pipeline() : m_rig->pipeline();
+}
+
+LiveRig::Stats SimEngine::liveStats() const
+{
+    return m_rig ? m_rig->stats() : LiveRig::Stats();
+}
+
+QString SimEngine::liveRejection(quint64 *count) const
+{
+    *count = 0;
+    return m_rig ? m_rig->lastRejection(count) : QString();
+}
+
+LiveRigOptions SimEngine::liveOptions() const
+{
+    if (!m_rig)
+        return LiveRigOptions();
+    LiveRigOptions options = m_rig->options();
+    options.port = m_rig->stats().port;
+    return options;
+}
+
+QString SimEngine::liveUri() const
+{
+    return m_rig ? m_rig->uri() : QString();
 }
 
 void SimEngine::bindRouterDevices(const Player &player, QString *error)
@@ -140,7 +245,7 @@ void SimEngine::bindRouterDevices(const Player &player, QString *error)
 
 bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
 {
-    if (!m_run) {
+    if (!isLoaded()) {
         *error = tr("nothing is loaded");
         return false;
     }
@@ -155,21 +260,24 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         std::lock_guard<std::mutex> lock(m_setupMutex);
         // The old router's devices fall silent now; a device the new router keeps goes on
         // with the new router's frames from the next tick.
-        const Player &old = m_run->pipeline().router().player();
+        const Player &old = pipeline().router().player();
         for (int d = 0; d < old.deviceCount(); ++d) {
             DeviceFrame silence;
-            silence.t = m_run->pipeline().now();
+            silence.t = pipeline().now();
             silence.device = d;
             silence.channelCount = old.deviceModel(d).channelCount();
             for (int c = 0; c < silence.channelCount; ++c)
                 silence.values[size_t(c)] = old.deviceModel(d).channels()[size_t(c)].min;
             m_output->onDeviceFrame(silence);
         }
-        m_run->setRouter(std::move(router), m_sink);
+        if (m_run)
+            m_run->setRouter(std::move(router), m_sink);
+        else
+            m_rig->setRouter(std::move(router), m_sink);
         // The old router's closing events went into the recording; the new router is
         // another session.
         recording = std::move(m_recorder);
-        const Player &player = m_run->pipeline().router().player();
+        const Player &player = pipeline().router().player();
         QString bindError;
         bindRouterDevices(player, &bindError);
         m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
@@ -182,9 +290,9 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         recording->finish();
         emit recordingChanged(false);
     }
-    const Player &player = m_run->pipeline().router().player();
+    const Player &player = pipeline().router().player();
     m_history.setRouter(liveDevicesOf(player, hands()), shownThresholds(),
-                        m_run->pipeline().router().nodeIds());
+                        pipeline().router().nodeIds());
     m_appliedGraph = std::make_unique<RouterGraph>(graph);
     // A graph from a file or preset is named by it; an untitled one runs over the last.
     if (!graph.file.isEmpty())
@@ -196,25 +304,28 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
 
 const RouterGraph &SimEngine::routerGraph() const
 {
-    return m_run->pipeline().router().graph();
+    return m_run ? m_run->pipeline().router().graph() : m_rig->pipeline().router().graph();
 }
 
 Hands SimEngine::hands() const
 {
+    if (!m_run)
+        return {true, true};
     const World &world = m_run->world();
     return {world.hasGripper(Gripper::Left), world.hasGripper(Gripper::Right)};
 }
 
 std::array<GripperThresholds, 2> SimEngine::shownThresholds()
 {
-    return thresholdsOf(m_run->pipeline().router().graph(), hands());
+    return thresholdsOf(routerGraph(), hands());
 }
 
 bool SimEngine::reset(QString *error)
 {
     const bool wasRunning = isRunning();
     std::unique_ptr<RouterGraph> applied = std::move(m_appliedGraph);
-    if (!start(m_options, error))
+    const bool started = m_rig ? startLive(liveOptions(), error) : start(m_options, error);
+    if (!started)
         return false;
     if (applied && !setRouter(*applied, error))
         return false;
@@ -231,7 +342,7 @@ const World *SimEngine::world() const
 
 void SimEngine::run()
 {
-    if (!m_run || m_run->isDone() || m_running.exchange(true))
+    if (!isLoaded() || (m_run && m_run->isDone()) || m_running.exchange(true))
         return;
     emit runningChanged(true);
 }
@@ -268,11 +379,11 @@ void SimEngine::setManual(bool manual)
 
 bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *error)
 {
-    if (!m_run) {
+    if (!isLoaded()) {
         *error = tr("nothing is loaded");
         return false;
     }
-    const Player &player = m_run->pipeline().router().player();
+    const Player &player = pipeline().router().player();
     const int device = player.deviceIndex(name);
     if (device < 0) {
         *error = tr("the router has no device '%1'").arg(name);
@@ -390,6 +501,25 @@ void SimEngine::loop()
     }
 }
 
+void SimEngine::listenLoop()
+{
+    /** How long the thread sleeps on the socket before it looks at m_quit again (ms). */
+    constexpr int WaitSlice = 5;
+    const LiveRig::FrameHandler process = [this](const ContactFrame &frame, double arrival) {
+        if (m_recorder)
+            m_recorder->recordContactFrame(frame, arrival);
+        m_feed.push(frame);
+        m_rig->pipeline().process(frame, m_sink);
+        m_simTime.store(frame.t, std::memory_order_relaxed);
+    };
+    while (!m_quit.load()) {
+        m_rig->wait(WaitSlice);
+        // One batch a turn (LiveRig::poll), so a flood cannot keep the set-up locked.
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        m_rig->poll(process, !m_running.load());
+    }
+}
+
 void SimEngine::stepOnce()
 {
     const bool manual = m_manual.load(std::memory_order_relaxed);
@@ -424,30 +554,35 @@ void SimEngine::stepOnce()
 
 bool SimEngine::startRecording(const QString &path, const QString &notes, QString *error)
 {
-    if (!m_run) {
+    if (!isLoaded()) {
         *error = tr("nothing is loaded");
         return false;
     }
     stopRecording();
     SessionInfo info;
     info.source = QStringLiteral("studio");
-    info.scene = m_options.scene;
     info.routerSource = m_options.router;
     info.overrides = m_options.overrides;
     for (const BoundDevice &device : m_devices->status())
         info.bindings.insert(device.name, device.uri);
-    info.operatorName = m_options.operatorName;
-    info.seed = QString::number(m_options.seed);
+    if (m_rig) {
+        // Like `semhap listen --session`: no scene, operator or seed, the rig's address.
+        info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
+    } else {
+        info.scene = m_options.scene;
+        info.operatorName = m_options.operatorName;
+        info.seed = QString::number(m_options.seed);
+    }
     info.semhapVersion = QCoreApplication::applicationVersion();
     info.notes = notes;
     QDir().mkpath(QFileInfo(path).absolutePath());
     std::unique_ptr<SessionWriter> recorder;
     {
         std::lock_guard<std::mutex> lock(m_setupMutex);
-        recorder = SessionWriter::create(path, info, m_run->pipeline().router(), error);
+        recorder = SessionWriter::create(path, info, pipeline().router(), error);
         if (!recorder)
             return false;
-        recorder->setActorTable(&m_run->world().actors());
+        recorder->setActorTable(m_run ? &m_run->world().actors() : &m_rig->actors());
         m_recorder = std::move(recorder);
         m_nextInput = 0.0;
     }
@@ -483,7 +618,7 @@ QString SimEngine::defaultRecordingPath() const
     const auto stem = [](const QString &name) { return QFileInfo(name).completeBaseName(); };
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
            QStringLiteral("/sessions/%1-%2-%3.db")
-               .arg(stem(m_options.scene), stem(m_options.router),
+               .arg(m_rig ? QStringLiteral("live") : stem(m_options.scene), stem(m_options.router),
                     QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
 }
 

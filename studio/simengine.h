@@ -4,6 +4,7 @@
 #include "handcommand.h"
 #include "livefeed.h"
 #include "livehistory.h"
+#include "liverig.h"
 #include "simrun.h"
 
 #include <QObject>
@@ -24,10 +25,11 @@ class SessionWriter;
 
 /**
  * The studio's running session: a SimRun stepped on its own pipeline thread at a chosen
- * speed of real time, its streams handed to the GUI through a LiveFeed and drained into
- * the LiveHistory at display rate, its device frames sent to the DeviceManager's bound
- * transports. The pipeline never waits for the GUI; the GUI waits for the pipeline only to
- * change the run's set-up (load, reset, rebind), and then only until the current tick ends.
+ * speed of real time — or a live rig's frames received on that thread as they come — its
+ * streams handed to the GUI through a LiveFeed and drained into the LiveHistory at display
+ * rate, its device frames sent to the DeviceManager's bound transports. The pipeline never
+ * waits for the GUI; the GUI waits for the pipeline only to change the run's set-up (load,
+ * reset, rebind), and then only until the current batch of ticks ends.
  */
 class SimEngine : public QObject
 {
@@ -44,6 +46,24 @@ public:
      */
     bool load(const RunOptions &options, QString *error);
     /**
+     * Stops the current run and listens for a live rig's contact frames instead (File →
+     * Listen for a live rig): they go through detectors, router and devices like the
+     * simulation's, with plots, log and recording. There is no scene; world() is null.
+     * Paused afterwards (paused, the frames are received and dropped). False with a one-line
+     * `error` (the port is taken, the router does not load), keeping the previous run.
+     */
+    bool listen(const LiveRigOptions &options, QString *error);
+    /** The source is a live rig, not the simulation. */
+    bool isLive() const { return m_rig != nullptr; }
+    /** The live rig's counters (zero when not live). */
+    LiveRig::Stats liveStats() const;
+    /** The live rig's latest rejected datagram and how many so far (empty when not live). */
+    QString liveRejection(quint64 *count) const;
+    /** The live rig's options, with the port it got when any was asked for. */
+    LiveRigOptions liveOptions() const;
+    /** `udp:ADDRESS:PORT` of the live rig; empty when not live. */
+    QString liveUri() const;
+    /**
      * Swaps `graph` in as the running router (the router editor's Apply) without stopping
      * the run: compiled here on the caller's thread, swapped in at a tick boundary. The old
      * router's messages end, its devices are sent to zero; the new router's devices keep
@@ -54,15 +74,19 @@ public:
     /** The graph of the router that runs (valid while loaded). */
     const RouterGraph &routerGraph() const;
 
-    /** Loads the current options again from the start, with the router last applied. */
+    /**
+     * Loads the current options again from the start, with the router last applied; a live
+     * rig starts listening afresh (detectors and history cleared).
+     */
     bool reset(QString *error);
+    /** The simulation's options; while live, `router` and `overrides` are the rig's. */
     const RunOptions &options() const { return m_options; }
-    bool isLoaded() const { return m_run != nullptr; }
+    bool isLoaded() const { return m_run != nullptr || m_rig != nullptr; }
 
     void run();
     void pause();
     bool isRunning() const { return m_running.load(); }
-    /** While paused: one display frame's worth of steps (1/60 s of simulated time). */
+    /** While paused: one display frame's worth of steps (1/60 s of simulated time); not live. */
     void step();
 
     /** Simulated seconds per real second (1 = real time). */
@@ -91,9 +115,10 @@ public:
     void detachHistory();
     /** The scene snapshots the viewport draws; null until loaded. */
     SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
-    /** The loaded world (read it on the GUI thread only while paused). */
+    /** The loaded world (read it on the GUI thread only while paused); null while live. */
     const World *world() const;
 
+    /** Simulated seconds, or the live rig's latest `t`. */
     double simTime() const { return m_simTime.load(); }
     /** Simulated seconds per wall second over the last second of running. */
     double realtimeFactor() const { return m_realtimeFactor.load(); }
@@ -144,14 +169,22 @@ private:
     };
 
     void bindRouterDevices(const Player &player, QString *error);
-    /** The hands the loaded scene has. */
+    /** The hands the loaded scene has; both for a live rig, which may send either. */
     Hands hands() const;
     std::array<GripperThresholds, 2> shownThresholds();
+    Pipeline &pipeline();
     /** load() without the signal. */
     bool start(const RunOptions &options, QString *error);
+    /** listen() without the signal. */
+    bool startLive(const LiveRigOptions &options, QString *error);
+    /** Ends the old run before a new one is installed (both are stopped by then). */
+    void stopSource();
+    /** Binds devices, history and metrics to the newly installed run or rig. */
+    void install();
     void stopThread();
     void startThread();
     void loop();
+    void listenLoop();
     void stepOnce();
     void drain();
     void recordInput(double t);
@@ -160,7 +193,8 @@ private:
     /** The graph setRouter() applied since the last load: what reset() runs again. */
     std::unique_ptr<RouterGraph> m_appliedGraph;
     std::unique_ptr<DeviceManager> m_devices;
-    std::unique_ptr<SimRun> m_run;
+    std::unique_ptr<SimRun> m_run;  ///< the simulation, or
+    std::unique_ptr<LiveRig> m_rig; ///< the live rig
     std::unique_ptr<ManualOperator> m_manualOperator;
     std::unique_ptr<SceneFeed> m_sceneFeed;
     std::unique_ptr<DeviceOutputSink> m_output;

@@ -10,6 +10,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLPaintDevice>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -214,7 +215,13 @@ void SimViewport::paintGL()
 {
     // MuJoCo's drawing is native GL inside the painter's frame: the painter then knows that
     // every piece of GL state it cached (program, textures, arrays) must be set again.
-    QPainter painter(this);
+    // The painter paints the framebuffer, not the widget: while the window is grabbed
+    // (QWidget::grab, screenshots) a painter on the widget is redirected to the grab's
+    // pixmap, under the framebuffer's picture, and the overlay would be lost.
+    const qreal ratio = devicePixelRatioF();
+    QOpenGLPaintDevice device(size() * ratio);
+    device.setDevicePixelRatio(ratio);
+    QPainter painter(&device);
     painter.beginNativePainting();
     QOpenGLExtraFunctions *gl = context()->extraFunctions();
     // MuJoCo draws fixed-function: no shader program or vertex arrays of the painter's.
@@ -229,7 +236,6 @@ void SimViewport::paintGL()
     bool drawn = false;
     if (m_renderer && m_feed) {
         m_renderer->camera() = m_camera;
-        const qreal ratio = devicePixelRatioF();
         drawn = m_renderer->render(*m_feed, defaultFramebufferObject(),
                                    int(std::lround(width() * ratio)),
                                    int(std::lround(height() * ratio)));

@@ -55,10 +55,14 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     const QCommandLineOption posePort({QStringLiteral("pose-port")},
                                       tr("UDP port of the network pose input (0: off)."),
                                       tr("port"), QString::number(o.posePort));
+    const QCommandLineOption listen({QStringLiteral("listen")},
+                                    tr("Start on a live rig: contact frames over UDP on this "
+                                       "port (ADDRESS:PORT to listen beyond this machine)."),
+                                    tr("[address:]port"));
     const QCommandLineOption defaultLayout({QStringLiteral("default-layout")},
                                            tr("Ignore the saved window layout."));
     parser.addOptions({scene, router, op, seed, cubes, speed, paused, screenshot, quitAfter, size,
-                       language, posePort, defaultLayout});
+                       language, posePort, listen, defaultLayout});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
         *message = parser.errorText();
         return false;
@@ -133,6 +137,23 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     if (!number(posePort, 0, 65535, &value))
         return false;
     o.posePort = int(value);
+    if (parser.isSet(listen)) {
+        const QString text = parser.value(listen);
+        const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
+        bool ok = false;
+        const int port = text.mid(colon + 1).toInt(&ok);
+        if (!ok || port < 0 || port > 65535 || colon == 0) {
+            *message = tr("--listen: expected a port or ADDRESS:PORT such as 9871 or "
+                          "0.0.0.0:9871, got '%1'")
+                           .arg(text);
+            return false;
+        }
+        o.live = true;
+        o.liveRig.port = port;
+        if (colon > 0)
+            o.liveRig.address = text.left(colon);
+        o.liveRig.router = o.run.router;
+    }
     o.restoreLayout = !parser.isSet(defaultLayout);
     *options = o;
     return true;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "liverig.h"
 #include "simrun.h"
 
 #include <QCoreApplication>
@@ -23,6 +24,8 @@ public:
     QSize size;                ///< window size for screenshots; empty: the saved layout's
     QString language;          ///< "en", "de"; empty: the saved setting or the system's
     int posePort = 9870;       ///< UDP port of the network pose-and-grip input; 0: off
+    bool live = false;         ///< `--listen`: start on a live rig instead of the scene
+    LiveRigOptions liveRig;    ///< where `--listen` listens (router: `--router`)
     bool restoreLayout = true; ///< `--default-layout` ignores the saved one
 
     /**

@@ -146,6 +146,18 @@
         <source>--language: expected en or de, got &apos;%1&apos;</source>
         <translation>--language: en oder de erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
+    <message>
+        <source>Start on a live rig: contact frames over UDP on this port (ADDRESS:PORT to listen beyond this machine).</source>
+        <translation>Mit einem Live-Rig starten: Kontaktframes per UDP auf diesem Port (ADRESSE:PORT, um über diesen Rechner hinaus zu lauschen).</translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation>[adresse:]port</translation>
+    </message>
+    <message>
+        <source>--listen: expected a port or ADDRESS:PORT such as 9871 or 0.0.0.0:9871, got &apos;%1&apos;</source>
+        <translation>--listen: Port oder ADRESSE:PORT wie 9871 oder 0.0.0.0:9871 erwartet, erhalten: &apos;%1&apos;</translation>
+    </message>
 </context>
 <context>
     <name>semhap::DevicesPanel</name>
@@ -370,6 +382,41 @@
     <message>
         <source>End</source>
         <translation>Ende</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::LiveRigDialog</name>
+    <message>
+        <source>Listen for a live rig</source>
+        <translation>Auf ein Live-Rig lauschen</translation>
+    </message>
+    <message>
+        <source>any free port</source>
+        <translation>beliebiger freier Port</translation>
+    </message>
+    <message>
+        <source>Accept frames from other machines</source>
+        <translation>Frames von anderen Rechnern annehmen</translation>
+    </message>
+    <message>
+        <source>Listen on every network (0.0.0.0) instead of this machine only</source>
+        <translation>In allen Netzen lauschen (0.0.0.0) statt nur auf diesem Rechner</translation>
+    </message>
+    <message>
+        <source>UDP port:</source>
+        <translation>UDP-Port:</translation>
+    </message>
+    <message>
+        <source>Listen</source>
+        <translation>Lauschen</translation>
+    </message>
+    <message>
+        <source>PORT</source>
+        <translation>PORT</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Send contact frames (one JSON object per datagram, or an array of them) to this port; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s.&lt;/p&gt;&lt;p&gt;To try it: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Senden Sie Kontaktframes (ein JSON-Objekt pro Datagramm oder ein Array davon) an diesen Port; sie laufen wie die der Simulation durch die Detektoren, den Router &lt;b&gt;%1&lt;/b&gt; und die Geräte.&lt;/p&gt;&lt;p&gt;Zum Ausprobieren: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -673,6 +720,58 @@
     <message>
         <source>replay</source>
         <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Could not listen on udp:%1:%2</source>
+        <translation>Konnte nicht auf udp:%1:%2 lauschen</translation>
+    </message>
+    <message>
+        <source>Listening for a live rig on %1</source>
+        <translation>Lausche auf ein Live-Rig auf %1</translation>
+    </message>
+    <message>
+        <source>Listen for a live rig…</source>
+        <translation>Auf ein Live-Rig lauschen…</translation>
+    </message>
+    <message>
+        <source>Run another program&apos;s contact frames, sent over UDP, instead of the scene (Ctrl+L)</source>
+        <translation>Die per UDP gesendeten Kontaktframes eines anderen Programms statt der Szene verarbeiten (Strg+L)</translation>
+    </message>
+    <message>
+        <source>Live rig on %1
+The rig draws its own scene.</source>
+        <translation>Live-Rig auf %1
+Das Rig zeichnet seine Szene selbst.</translation>
+    </message>
+    <message>
+        <source>semhap studio — live rig on %1 · %2</source>
+        <translation>semhap studio — Live-Rig auf %1 · %2</translation>
+    </message>
+    <message>
+        <source>Live rig on %1</source>
+        <translation>Live-Rig auf %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s, jitter %2 ms</source>
+        <translation>%1 Frames/s, Jitter %2 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %n frame(s) held</source>
+        <translation>
+            <numerusform>pausiert: %n Frame zurückgehalten</numerusform>
+            <numerusform>pausiert: %n Frames zurückgehalten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · %n malformed</source>
+        <translation>
+            <numerusform> · %n fehlerhaft</numerusform>
+            <numerusform> · %n fehlerhaft</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Malformed datagram: %1</source>
+        <translation>Fehlerhaftes Datagramm: %1</translation>
     </message>
 </context>
 <context>

@@ -146,6 +146,18 @@
         <source>--language: expected en or de, got &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Start on a live rig: contact frames over UDP on this port (ADDRESS:PORT to listen beyond this machine).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--listen: expected a port or ADDRESS:PORT such as 9871 or 0.0.0.0:9871, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::DevicesPanel</name>
@@ -369,6 +381,41 @@
     </message>
     <message>
         <source>End</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::LiveRigDialog</name>
+    <message>
+        <source>Listen for a live rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>any free port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accept frames from other machines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Listen on every network (0.0.0.0) instead of this machine only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UDP port:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Listen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PORT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Send contact frames (one JSON object per datagram, or an array of them) to this port; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s.&lt;/p&gt;&lt;p&gt;To try it: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -672,6 +719,57 @@
     </message>
     <message>
         <source>replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not listen on udp:%1:%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Listening for a live rig on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Listen for a live rig…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run another program&apos;s contact frames, sent over UDP, instead of the scene (Ctrl+L)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig on %1
+The rig draws its own scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studio — live rig on %1 · %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 frames/s, jitter %2 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %n frame(s) held</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · %n malformed</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Malformed datagram: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -44,6 +44,7 @@ void TestStudioOptions::defaults()
     QVERIFY(o.quitAfter < 0);
     QVERIFY(o.restoreLayout);
     QCOMPARE(o.posePort, 9870);
+    QVERIFY(!o.live);
 }
 
 void TestStudioOptions::options()
@@ -78,6 +79,16 @@ void TestStudioOptions::options()
     QCOMPARE(o.posePort, 0);
     QVERIFY(!o.restoreLayout);
 
+    // A live rig: on this machine unless an address is given; the router is --router's.
+    QVERIFY(parse({"--listen", "9900", "--router", "C2"}, &o, &message));
+    QVERIFY(o.live);
+    QCOMPARE(o.liveRig.port, 9900);
+    QCOMPARE(o.liveRig.address, QString("127.0.0.1"));
+    QCOMPARE(o.liveRig.router, QString("C2"));
+    QVERIFY(parse({"--listen", "0.0.0.0:0"}, &o, &message));
+    QCOMPARE(o.liveRig.port, 0);
+    QCOMPARE(o.liveRig.address, QString("0.0.0.0"));
+
     // A screenshot alone grabs once the studio has run a moment.
     QVERIFY(parse({"--screenshot", "b.png"}, &o, &message));
     QVERIFY(o.quitAfter > 0);
@@ -96,6 +107,9 @@ void TestStudioOptions::rejects_data()
     QTest::newRow("tiny size") << QStringList{"--size", "10x10"} << "10x10";
     QTest::newRow("language") << QStringList{"--language", "fr"} << "en or de";
     QTest::newRow("port") << QStringList{"--pose-port", "70000"} << "--pose-port";
+    QTest::newRow("listen port") << QStringList{"--listen", "70000"} << "--listen";
+    QTest::newRow("listen text") << QStringList{"--listen", "rig"} << "ADDRESS:PORT";
+    QTest::newRow("listen no address") << QStringList{"--listen", ":9871"} << "--listen";
     QTest::newRow("positional") << QStringList{"scene.xml"} << "scene.xml";
 }
 

@@ -4,6 +4,7 @@
 // pipeline gives for the same frames.
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
+#include "liverigdialog.h"
 #include "mainwindow.h"
 #include "openwindow.h"
 #include "pipeline.h"
@@ -16,12 +17,18 @@
 #include "sessionreplay.h"
 #include "simviewport.h"
 
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFile>
 #include <QLabel>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QUdpSocket>
 
 #include <qcustomplot.h>
 
@@ -36,6 +43,7 @@ private slots:
     void engineRecordsWhatTheHistorySees();
     void windowRecordsReopensAndScrubs();
     void reroutesThroughTheEditorsRouter();
+    void windowListensToALiveRig();
 
 private:
     /** Records about `seconds` of simulated C3 from an engine into a new file. */
@@ -241,6 +249,91 @@ void TestStudioSessions::reroutesThroughTheEditorsRouter()
     QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
     QVERIFY(!replay->isRerouted());
     QCOMPARE(qint64(replay->events().size()), reader->eventCount());
+}
+
+void TestStudioSessions::windowListensToALiveRig()
+{
+    MainWindow window(studioOptions());
+    QVERIFY(openWindow(window));
+    int port = 0;
+    {
+        QUdpSocket probe; // a port free right now
+        QVERIFY(probe.bind(QHostAddress::LocalHost, 0));
+        port = probe.localPort();
+    }
+
+    // File → Listen for a live rig (Ctrl+L): type the port, keep it on this machine, Listen.
+    QTimer::singleShot(0, this, [port] {
+        auto *dialog = qobject_cast<LiveRigDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QVERIFY(!dialog->networkCheck()->isChecked());
+        QSpinBox *edit = dialog->portEdit();
+        edit->setFocus();
+        edit->selectAll();
+        QTest::keyClicks(edit, QString::number(port));
+        QTest::keyClick(edit, Qt::Key_Return);
+    });
+    QTest::keyClick(&window, Qt::Key_L, Qt::ControlModifier);
+    QVERIFY(window.engine().isLive());
+    QVERIFY(window.engine().isRunning());
+    QCOMPARE(window.engine().liveUri(), QStringLiteral("udp:127.0.0.1:%1").arg(port));
+    QVERIFY(window.windowTitle().contains("live rig"));
+    QVERIFY(window.viewport()->placeholder().startsWith("Live rig on udp:127.0.0.1"));
+    // What only the simulation has is off: stepping, pacing, driving.
+    for (const char *name : {"stepAction", "teleopAction", "fasterAction", "slowerAction"})
+        QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
+    QVERIFY(!window.speedPicker()->isEnabled());
+    QVERIFY(window.findChild<QAction *>("recordAction")->isEnabled());
+
+    // Record while the rig sends a few seconds of the trace and some garbage.
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(window.engine().isRecording());
+    const QString path = window.engine().recordingPath();
+    QVERIFY2(QFileInfo(path).fileName().startsWith("live-C3-"), qPrintable(path));
+    QFile trace(SEMHAP_RESOURCES "/traces/demo.jsonl");
+    QVERIFY(trace.open(QIODevice::ReadOnly));
+    QUdpSocket sender;
+    for (int line = 0; line < 1400 && !trace.atEnd(); ++line) {
+        sender.writeDatagram(trace.readLine(), QHostAddress::LocalHost, quint16(port));
+        if (line % 50 == 49)
+            QTest::qWait(5);
+    }
+    sender.writeDatagram("{\"t\": oops", QHostAddress::LocalHost, quint16(port));
+    QTRY_COMPARE(window.engine().liveStats().frames + window.engine().liveStats().rejected,
+                 quint64(1401));
+    QTRY_VERIFY(window.eventLog()->model()->rowCount() > 0);
+    auto *rate = window.findChild<QLabel *>("rateLabel");
+    QTRY_VERIFY2(rate->text().contains("1 malformed"), qPrintable(rate->text()));
+    QTRY_VERIFY(window.statusBar()->currentMessage().contains("invalid JSON"));
+    QVERIFY(window.findChild<QLabel *>("operatorLabel")->text().contains("Live rig"));
+    if (qEnvironmentVariableIsSet("SEMHAP_LIVE_SCREENSHOT")) {
+        QTest::qWait(500);
+        window.grab().save(qEnvironmentVariable("SEMHAP_LIVE_SCREENSHOT"));
+    }
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(!window.engine().isRecording());
+    QString error;
+    std::unique_ptr<SessionReader> session = SessionReader::open(path, &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->contactFrameCount(), qint64(1400));
+    QVERIFY(session->eventCount() > 0);
+
+    // Stop all holds the rig's frames back: nothing reaches the devices until Run.
+    QTest::keyClick(&window, Qt::Key_Escape);
+    QVERIFY(!window.engine().isRunning());
+    sender.writeDatagram(trace.readLine(), QHostAddress::LocalHost, quint16(port));
+    QTRY_COMPARE(window.engine().liveStats().held, quint64(1));
+
+    // Picking a scene goes back to the simulation.
+    QComboBox *scene = window.scenePicker();
+    scene->setFocus();
+    const int bimanual = scene->findData("bimanual_sorting");
+    while (scene->currentIndex() != bimanual)
+        QTest::keyClick(scene, bimanual > scene->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QVERIFY(!window.engine().isLive());
+    QVERIFY(window.engine().world());
+    QVERIFY(window.viewport()->placeholder().isEmpty());
+    QVERIFY(window.findChild<QAction *>("stepAction")->isEnabled());
 }
 
 QTEST_MAIN(TestStudioSessions)

@@ -71,6 +71,7 @@ private slots:
     void tabSwitchesHands();
     void screenshots_data();
     void screenshots();
+    void showsThePlaceholder();
 
 private:
     /** Runs the event loop for `ms`, capturing whenever the viewport asks (the sim thread). */
@@ -425,6 +426,23 @@ void TestViewport::screenshots()
     std::swap(m_scene, shown);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
     m_viewport.resize(800, 600);
+}
+
+void TestViewport::showsThePlaceholder()
+{
+    // A live rig or a replay without scene state: the viewport says why it shows nothing.
+    m_viewport.setScene(nullptr, nullptr);
+    m_viewport.setPlaceholder("Live rig on udp:127.0.0.1:9871");
+    QTest::qWait(50);
+    const QImage image = grab();
+    const QRgb background = image.pixel(2, 2);
+    int text = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x)
+            text += image.pixel(x, y) != background ? 1 : 0;
+    }
+    QVERIFY2(text > 200, qPrintable(QString::number(text)));
+    image.save(QCoreApplication::applicationDirPath() + "/viewport-placeholder.png");
 }
 
 QTEST_MAIN(TestViewport)

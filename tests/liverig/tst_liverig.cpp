@@ -1,0 +1,439 @@
+// SPDX-License-Identifier: MIT
+// The studio's live-rig source: another program's contact frames over UDP (loopback only)
+// run through detectors, router and devices like the simulation's, with the history fed,
+// malformed datagrams counted and never fatal, a flood that does not stall the GUI, and
+// recordings that keep each frame's arrival time.
+#include "contactframereader.h"
+#include "devicemanager.h"
+#include "routergraph.h"
+#include "sessionreader.h"
+#include "simengine.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUdpSocket>
+
+using namespace semhap;
+
+class TestLiveRig : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void framesRunLikeRoute();
+    void malformedDatagramsAreCounted_data();
+    void malformedDatagramsAreCounted();
+    void floodDoesNotStallTheGui();
+    void pausedHoldsFrames();
+    void recordsArrivalTimes();
+    void portInUseKeepsTheRun();
+    void resetAndRouterSwapKeepListening();
+};
+
+namespace {
+
+const QString Trace = QStringLiteral(SEMHAP_RESOURCES "/traces/demo.jsonl");
+
+/** The trace's first `count` lines, one frame each. */
+QList<QByteArray> traceLines(int count)
+{
+    QFile file(Trace);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QList<QByteArray> lines;
+    while (!file.atEnd() && lines.size() < count)
+        lines << file.readLine().trimmed();
+    return lines;
+}
+
+/** Sends datagrams to the engine's rig on loopback. */
+class Sender
+{
+public:
+    explicit Sender(int port) : m_port(quint16(port)) {}
+
+    void send(const QByteArray &datagram)
+    {
+        m_socket.writeDatagram(datagram, QHostAddress::LocalHost, m_port);
+    }
+    /** `frames` in batches of `batch` (a JSON array each). */
+    void sendBatches(const QList<QByteArray> &frames, int batch)
+    {
+        for (qsizetype i = 0; i < frames.size(); i += batch) {
+            QByteArray datagram = "[";
+            for (qsizetype k = i; k < std::min(frames.size(), i + batch); ++k)
+                datagram += (k > i ? "," : "") + frames[k];
+            send(datagram + "]");
+            // Loopback drops what the receiver's buffer cannot take; a short breath now and
+            // then keeps the count exact without slowing the test down.
+            if ((i / batch) % 64 == 63)
+                QTest::qWait(1);
+        }
+    }
+
+private:
+    QUdpSocket m_socket;
+    quint16 m_port;
+};
+
+LiveRigOptions anyPort(const QString &router = "C3")
+{
+    LiveRigOptions options;
+    options.port = 0;
+    options.router = router;
+    return options;
+}
+
+template<typename T> qint64 count(const LiveSeries<T> &series)
+{
+    return series.end() - series.begin();
+}
+
+bool waitForFrames(SimEngine &engine, quint64 frames)
+{
+    return QTest::qWaitFor(
+        [&] { return engine.liveStats().frames + engine.liveStats().held >= frames; }, 10000);
+}
+
+/** What `semhap route` makes of the same frames: the events and device frames, as text. */
+struct Reference
+{
+    QStringList events;
+    std::vector<double> deviceMax; ///< by device: the largest value sent
+};
+
+Reference route(const QString &router, int frames)
+{
+    QFile file(Trace);
+    file.open(QIODevice::ReadOnly);
+    ContactFrameReader reader(&file, Trace);
+    LoadError error;
+    Pipeline pipeline(loadRouter(router, {}, &error));
+    struct Collect : PipelineSink
+    {
+        Reference *reference;
+        const Router *router;
+        void onEvent(const SemanticEvent &event) override
+        {
+            reference->events << QStringLiteral("%1 %2 %3")
+                                     .arg(event.t)
+                                     .arg(router->nodeIds().at(event.node))
+                                     .arg(int(event.phase));
+        }
+        void onDeviceFrame(const DeviceFrame &frame) override
+        {
+            auto &max = reference->deviceMax[size_t(frame.device)];
+            for (int c = 0; c < frame.channelCount; ++c)
+                max = std::max(max, double(frame.values[size_t(c)]));
+        }
+    } collect;
+    Reference reference;
+    reference.deviceMax.assign(size_t(pipeline.router().player().deviceCount()), 0.0);
+    collect.reference = &reference;
+    collect.router = &pipeline.router();
+    ContactFrame frame;
+    for (int i = 0; i < frames && reader.next(&frame); ++i)
+        pipeline.process(frame, collect);
+    return reference;
+}
+
+} // namespace
+
+void TestLiveRig::initTestCase()
+{
+    QVERIFY(traceLines(10).size() == 10);
+}
+
+void TestLiveRig::framesRunLikeRoute()
+{
+    SimEngine engine;
+    QSignalSpy loaded(&engine, &SimEngine::loaded);
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    QCOMPARE(loaded.count(), 1);
+    QVERIFY(engine.isLive());
+    QVERIFY(!engine.world());
+    QVERIFY(engine.liveUri().startsWith("udp:127.0.0.1:")); // this machine only by default
+    QVERIFY(engine.liveStats().port > 0);
+    engine.run();
+
+    // Five seconds of the trace: a grasp, a break warning and a slip.
+    const QList<QByteArray> lines = traceLines(2000);
+    Sender(engine.liveStats().port).sendBatches(lines, 2);
+    QVERIFY(waitForFrames(engine, quint64(lines.size())));
+    QCOMPARE(engine.liveStats().frames, quint64(lines.size()));
+    QCOMPARE(engine.liveStats().rejected, quint64(0));
+    QTest::qWait(50); // one drain of the feed
+
+    const LiveHistory &history = engine.history();
+    QCOMPARE(count(history.frames(Gripper::Left)) + count(history.frames(Gripper::Right)),
+             qint64(lines.size()));
+    QVERIFY(qAbs(engine.simTime() - 4.995) < 1e-9);
+
+    const Reference reference = route("C3", int(lines.size()));
+    QStringList events;
+    for (qint64 i = history.events().begin(); i < history.events().end(); ++i) {
+        const SemanticEvent &event = history.events().at(i);
+        events << QStringLiteral("%1 %2 %3")
+                      .arg(event.t)
+                      .arg(history.nodeName(event.node))
+                      .arg(int(event.phase));
+    }
+    QVERIFY(events.size() > 5);
+    QCOMPARE(events, reference.events);
+    bool anyOutput = false;
+    for (size_t d = 0; d < history.devices().size(); ++d) {
+        double max = 0.0;
+        const LiveSeries<DeviceFrame> &frames = history.deviceFrames(int(d));
+        for (qint64 i = frames.begin(); i < frames.end(); ++i) {
+            for (int c = 0; c < frames.at(i).channelCount; ++c)
+                max = std::max(max, double(frames.at(i).values[size_t(c)]));
+        }
+        QCOMPARE(max, reference.deviceMax[d]);
+        anyOutput = anyOutput || max > 0.0;
+    }
+    QVERIFY(anyOutput);
+}
+
+void TestLiveRig::malformedDatagramsAreCounted_data()
+{
+    QTest::addColumn<QByteArray>("datagram");
+    QTest::addColumn<QString>("reason");
+    QTest::addColumn<bool>("oversize");
+    QTest::addColumn<int>("rejections");
+    QTest::newRow("garbage") << QByteArray("garbage{") << "invalid JSON" << false << 1;
+    QTest::newRow("truncated") << QByteArray(R"({"t": 1.0, "gripper": "ri)") << "invalid JSON"
+                               << false << 1;
+    QTest::newRow("empty") << QByteArray() << "invalid JSON" << false << 1;
+    QTest::newRow("number") << QByteArray("42") << "invalid JSON" << false << 1;
+    QTest::newRow("array of numbers")
+        << QByteArray("[1, 2]") << "[1]: a contact frame must be a JSON object" << false << 2;
+    QTest::newRow("no gripper") << QByteArray(R"({"t": 9.0, "left": null, "right": null})")
+                                << "gripper" << false << 1;
+    QTest::newRow("binary") << QByteArray("\x00\xff\xfe\x01", 4) << "invalid JSON" << false << 1;
+    QTest::newRow("oversize") << QByteArray(40 * 1024, ' ') << "over the limit" << true << 1;
+}
+
+void TestLiveRig::malformedDatagramsAreCounted()
+{
+    QFETCH(QByteArray, datagram);
+    QFETCH(QString, reason);
+    QFETCH(bool, oversize);
+    QFETCH(int, rejections);
+    SimEngine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    engine.run();
+    Sender sender(engine.liveStats().port);
+    const QList<QByteArray> lines = traceLines(4);
+    sender.send(lines[0]);
+    sender.send(datagram);
+    sender.send(lines[1]);
+    QVERIFY(QTest::qWaitFor([&] { return engine.liveStats().datagrams == 3; }, 5000));
+    const LiveRig::Stats stats = engine.liveStats();
+    QCOMPARE(stats.frames, quint64(2)); // the frames around the bad one went through
+    QCOMPARE(stats.rejected, quint64(rejections));
+    QCOMPARE(stats.oversize, quint64(oversize ? 1 : 0));
+    quint64 count = 0;
+    const QString rejection = engine.liveRejection(&count);
+    QCOMPARE(count, quint64(rejections));
+    QVERIFY2(rejection.contains(reason), qPrintable(rejection));
+    QVERIFY2(rejection.startsWith(QStringLiteral("udp:%1: ").arg(stats.port)),
+             qPrintable(rejection));
+}
+
+void TestLiveRig::floodDoesNotStallTheGui()
+{
+    SimEngine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    engine.run();
+    // The GUI thread's longest pause during a second and a half of frames sent faster than
+    // the rig can parse them, with garbage between.
+    QElapsedTimer clock;
+    clock.start();
+    qint64 last = 0;
+    qint64 longest = 0;
+    QTimer tick;
+    tick.setInterval(5);
+    connect(&tick, &QTimer::timeout, this, [&] {
+        longest = std::max(longest, clock.elapsed() - last);
+        last = clock.elapsed();
+    });
+    tick.start();
+    Sender sender(engine.liveStats().port);
+    quint64 offered = 0;
+    QList<QByteArray> batch;
+    while (clock.elapsed() < 1500) {
+        batch.clear();
+        for (int k = 0; k < 20; ++k, ++offered) {
+            batch << QStringLiteral(R"({"t": %1, "gripper": "right", "left": {"f": 12.5, )"
+                                    R"("n": 16, "actor": "cube_0"}, "right": null})")
+                         .arg(double(offered) * 0.001)
+                         .toUtf8();
+        }
+        sender.sendBatches(batch, 20);
+        if (offered % 2000 == 0) {
+            sender.send("{not json");
+            QTest::qWait(1);
+        }
+    }
+    // Loopback drops what the socket's buffer cannot hold; wait until the rest is read.
+    quint64 seen = 0;
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const quint64 now = engine.liveStats().datagrams;
+            const bool settled = now > 0 && now == seen;
+            seen = now;
+            QTest::qWait(100);
+            return settled;
+        },
+        10000));
+    tick.stop();
+    const LiveRig::Stats stats = engine.liveStats();
+    qInfo("flood: %llu frames offered; %llu datagrams, %llu frames, %llu rejected read; the "
+          "GUI's longest pause %lld ms",
+          offered, stats.datagrams, stats.frames, stats.rejected, longest);
+    QVERIFY(stats.frames > 0);
+    QVERIFY(stats.rejected > 0);
+    // Whatever the loopback buffer dropped, what arrived ran: the history has it.
+    QTest::qWait(50);
+    QVERIFY(count(engine.history().frames(Gripper::Right)) > 0);
+    // Generous: the point is that the GUI never waits for the flood to end.
+    QVERIFY2(longest < 1000, qPrintable(QString::number(longest)));
+}
+
+void TestLiveRig::pausedHoldsFrames()
+{
+    SimEngine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    QVERIFY(!engine.isRunning()); // listen() leaves it paused, like load()
+    const QList<QByteArray> lines = traceLines(100);
+    Sender sender(engine.liveStats().port);
+    sender.sendBatches(lines, 10);
+    QVERIFY(waitForFrames(engine, 100));
+    QCOMPARE(engine.liveStats().held, quint64(100));
+    QTest::qWait(50);
+    QCOMPARE(count(engine.history().frames(Gripper::Right)), qint64(0));
+
+    engine.run();
+    sender.sendBatches(traceLines(200).mid(100), 10);
+    QVERIFY(waitForFrames(engine, 200));
+    QCOMPARE(engine.liveStats().held, quint64(100));
+    QTest::qWait(50);
+    QCOMPARE(count(engine.history().frames(Gripper::Right)), qint64(50));
+}
+
+void TestLiveRig::recordsArrivalTimes()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("rig.db");
+    SimEngine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    engine.run();
+    QVERIFY2(engine.startRecording(path, "rig test", &error), qPrintable(error));
+    const QList<QByteArray> lines = traceLines(1000);
+    Sender(engine.liveStats().port).sendBatches(lines, 4);
+    QVERIFY(waitForFrames(engine, 1000));
+    engine.stopRecording();
+
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->info().source, "studio");
+    QCOMPARE(reader->info().scene, QString());
+    QCOMPARE(reader->info().extra.value("udp"), engine.liveUri().mid(4));
+    QCOMPARE(reader->info().notes, "rig test");
+    QCOMPARE(reader->contactFrameCount(), qint64(1000));
+    QVERIFY(reader->eventCount() > 0);
+    QVERIFY(reader->deviceFrameCount() > 0);
+    double lastArrival = -1.0;
+    int frames = 0;
+    QVERIFY2(reader->readContactFrames(
+                 [&](const ContactFrame &, double arrival) {
+                     if (!(arrival >= lastArrival))
+                         return false;
+                     lastArrival = arrival;
+                     ++frames;
+                     return true;
+                 },
+                 &error),
+             qPrintable(error));
+    QCOMPARE(frames, 1000); // every frame with its arrival time, in order
+    QVERIFY(reader->actors().size() > 0);
+}
+
+void TestLiveRig::portInUseKeepsTheRun()
+{
+    QUdpSocket taken;
+    QVERIFY(taken.bind(QHostAddress::LocalHost, 0));
+    SimEngine engine;
+    QString error;
+    RunOptions run;
+    run.duration = 3600.0;
+    QVERIFY2(engine.load(run, &error), qPrintable(error));
+    engine.step();
+    QVERIFY(QTest::qWaitFor([&] { return engine.simTime() > 0.0; }, 5000));
+    const double before = engine.simTime();
+    QSignalSpy loaded(&engine, &SimEngine::loaded);
+
+    LiveRigOptions options = anyPort();
+    options.port = taken.localPort();
+    QVERIFY(!engine.listen(options, &error));
+    QVERIFY2(error.contains(QString::number(options.port)), qPrintable(error));
+    QCOMPARE(loaded.count(), 0);
+    QVERIFY(!engine.isLive());
+    QVERIFY(engine.world());
+    QCOMPARE(engine.simTime(), before); // the same run, not a new one
+
+    options.address = "not-an-address";
+    options.port = 0;
+    QVERIFY(!engine.listen(options, &error));
+    QVERIFY2(error.contains("not-an-address"), qPrintable(error));
+    options = anyPort("no_such_router");
+    QVERIFY(!engine.listen(options, &error));
+    QVERIFY2(error.contains("no_such_router"), qPrintable(error));
+    QVERIFY(engine.world());
+}
+
+void TestLiveRig::resetAndRouterSwapKeepListening()
+{
+    SimEngine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    engine.run();
+    const int port = engine.liveStats().port;
+    Sender sender(port);
+    sender.sendBatches(traceLines(400), 4);
+    QVERIFY(waitForFrames(engine, 400));
+
+    // A reset starts listening afresh on the same port, running as before.
+    QVERIFY2(engine.reset(&error), qPrintable(error));
+    QVERIFY(engine.isLive());
+    QVERIFY(engine.isRunning());
+    QCOMPARE(engine.liveStats().port, port);
+    QCOMPARE(engine.liveStats().frames, quint64(0));
+    QTest::qWait(50);
+    QCOMPARE(count(engine.history().frames(Gripper::Right)), qint64(0));
+
+    // The router editor's Apply swaps the router while the rig goes on.
+    RouterGraph c1;
+    LoadError loadError;
+    QVERIFY(RouterPresets::preset("C1", &c1, &loadError));
+    QVERIFY2(engine.setRouter(c1, &error), qPrintable(error));
+    QCOMPARE(engine.routerGraph().toJson(), c1.toJson());
+    sender.sendBatches(traceLines(800).mid(400), 4);
+    QVERIFY(waitForFrames(engine, 400));
+    QCOMPARE(engine.liveStats().port, port);
+    QTest::qWait(50);
+    QCOMPARE(count(engine.history().frames(Gripper::Right)), qint64(200)); // half are left's
+}
+
+QTEST_MAIN(TestLiveRig)
+#include "tst_liverig.moc"
