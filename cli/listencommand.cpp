@@ -157,9 +157,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         info.source = QStringLiteral("listen");
         info.routerSource = routerName;
         info.overrides = overrides;
-        for (const QString &binding : bindings)
-            info.bindings.insert(binding.section(QLatin1Char('='), 0, 0),
-                                 binding.section(QLatin1Char('='), 1));
+        info.addBindings(bindings);
         info.notes = parser.value(QStringLiteral("notes"));
         info.extra.insert(QStringLiteral("udp"),
                           QStringLiteral("%1:%2").arg(address).arg(source.port()));

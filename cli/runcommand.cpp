@@ -94,28 +94,6 @@ private:
     StreamWriter &m_writer;
 };
 
-/** The session metadata of a run: everything that makes the same run again. */
-SessionInfo sessionInfo(const RunOptions &options, const QCommandLineParser &parser,
-                        const QStringList &bindings)
-{
-    SessionInfo info;
-    info.source = QStringLiteral("run");
-    info.scene = options.scene;
-    info.routerSource = options.router;
-    info.overrides = options.overrides;
-    for (const QString &binding : bindings)
-        info.bindings.insert(binding.section(QLatin1Char('='), 0, 0),
-                             binding.section(QLatin1Char('='), 1));
-    info.operatorName = options.operatorName;
-    info.seed = QString::number(options.seed);
-    info.notes = parser.value(QStringLiteral("notes"));
-    info.extra.insert(QStringLiteral("duration"), QString::number(options.duration));
-    info.extra.insert(QStringLiteral("reaction_time"), QString::number(options.reactionTime));
-    if (options.sceneOptions.cubes >= 0)
-        info.extra.insert(QStringLiteral("cubes"), QString::number(options.sceneOptions.cubes));
-    return info;
-}
-
 } // namespace
 
 QString RunCommand::summary() const
@@ -221,7 +199,10 @@ int RunCommand::execute(const QCommandLineParser &parser)
         return usage ? usageError(message) : inputError(message);
     std::unique_ptr<SessionWriter> session;
     if (parser.isSet(QStringLiteral("session"))) {
-        SessionInfo info = sessionInfo(options, parser, bindings);
+        SessionInfo info = run->sessionInfo();
+        info.source = QStringLiteral("run");
+        info.addBindings(bindings);
+        info.notes = parser.value(QStringLiteral("notes"));
         session = SessionWriter::create(parser.value(QStringLiteral("session")), info,
                                         run->pipeline().router(), &message);
         if (!session)
@@ -243,6 +224,8 @@ int RunCommand::execute(const QCommandLineParser &parser)
     qint64 lastDraw = -1000;
     const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound;
     while (run->step(sink)) {
+        if (session)
+            run->recordSceneState(*session);
         if (realtime) {
             const qint64 ahead = qint64(run->time() * 1000) - wall.elapsed();
             if (ahead > 1)

@@ -35,6 +35,13 @@ QString utc(const QDateTime &time)
 
 } // namespace
 
+void SessionInfo::addBindings(const QStringList &list)
+{
+    for (const QString &binding : list)
+        bindings.insert(binding.section(QLatin1Char('='), 0, 0),
+                        binding.section(QLatin1Char('='), 1));
+}
+
 QMap<QString, QString> SessionInfo::toMetadata() const
 {
     QMap<QString, QString> rows = extra;

@@ -18,8 +18,10 @@ namespace semhap {
 struct SessionInfo
 {
     static constexpr const char *Format = "semhap.session/1";
-    /** The schema this semhap writes and reads; a session with another is refused. */
-    static constexpr int SchemaVersion = 1;
+    /** The schema this semhap writes; 2 added the scene states. */
+    static constexpr int SchemaVersion = 2;
+    /** The oldest schema this semhap reads; a session outside the two is refused. */
+    static constexpr int OldestSchemaVersion = 1;
 
     QString source;        ///< what produced the frames: `run`, `listen`, `studio`
     QString scene;         ///< scene name or file, when simulated
@@ -34,6 +36,9 @@ struct SessionInfo
     QDateTime ended;   ///< UTC; invalid when the recording did not close (a crash)
     QString notes;
     QMap<QString, QString> extra; ///< any other key, kept as is (run options, …)
+
+    /** Adds `NAME=URI` bindings as given on a command line (`--bind`). */
+    void addBindings(const QStringList &bindings);
 
     /** The metadata table's rows. */
     QMap<QString, QString> toMetadata() const;

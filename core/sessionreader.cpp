@@ -10,6 +10,7 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QtEndian>
 
 #include <cmath>
 
@@ -131,14 +132,18 @@ bool SessionReader::load(QString *error)
         *error = QStringLiteral("not a semhap session (no schema_version in its metadata)");
         return false;
     }
-    if (version != QString::number(SessionInfo::SchemaVersion)) {
+    bool numeric = false;
+    m_schemaVersion = version.toInt(&numeric);
+    if (!numeric || m_schemaVersion < SessionInfo::OldestSchemaVersion ||
+        m_schemaVersion > SessionInfo::SchemaVersion) {
         *error = QStringLiteral("session schema version %1 is not supported (this semhap "
-                                "reads %2)")
+                                "reads %2 to %3)")
                      .arg(version)
+                     .arg(SessionInfo::OldestSchemaVersion)
                      .arg(SessionInfo::SchemaVersion);
         return false;
     }
-    for (const QString &table : SessionSchema::tables()) {
+    for (const QString &table : SessionSchema::tables(m_schemaVersion)) {
         if (!tables.contains(table)) {
             *error = QStringLiteral("damaged session: table '%1' is missing").arg(table);
             return false;
@@ -174,6 +179,11 @@ bool SessionReader::load(QString *error)
             !query.next())
             return damaged(query);
         *count = query.value(0).toLongLong();
+    }
+    if (m_schemaVersion >= 2) {
+        if (!query.exec(QStringLiteral("SELECT count(*) FROM scene_states")) || !query.next())
+            return damaged(query);
+        m_sceneStateCount = query.value(0).toLongLong();
     }
     if (!query.exec(QStringLiteral("SELECT min(t), max(t) FROM contact_frames")) || !query.next())
         return damaged(query);
@@ -344,6 +354,31 @@ bool SessionReader::readOperatorInput(const InputVisitor &visit, QString *error,
             return true;
     }
     return finished(query, m_path, error);
+}
+
+bool SessionReader::readSceneState(double t, SceneState *state, QString *error)
+{
+    if (m_sceneStateCount == 0)
+        return false;
+    // The latest state at or before t; before the first one, the first.
+    QSqlQuery query(m_db->db());
+    query.setForwardOnly(true);
+    query.prepare(QStringLiteral(
+        "SELECT * FROM (SELECT * FROM scene_states WHERE t <= :t ORDER BY t DESC LIMIT 1) "
+        "UNION ALL SELECT * FROM (SELECT * FROM scene_states ORDER BY t LIMIT 1)"));
+    query.bindValue(QStringLiteral(":t"), t);
+    if (!query.exec() || !query.next()) {
+        if (query.lastError().isValid())
+            *error = m_path + QStringLiteral(": damaged session: ") + sqlError(query.lastError());
+        return false;
+    }
+    state->t = query.value(0).toDouble();
+    const QByteArray pose = query.value(1).toByteArray();
+    state->pose.resize(size_t(pose.size()) / sizeof(double));
+    qFromLittleEndian<double>(pose.constData(), qsizetype(state->pose.size()), state->pose.data());
+    for (int i = 0; i < 4; ++i)
+        state->overlay[size_t(i)] = query.value(2 + i).toDouble();
+    return true;
 }
 
 } // namespace semhap

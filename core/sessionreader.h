@@ -5,6 +5,7 @@
 #include "contactframe.h"
 #include "deviceframe.h"
 #include "operatorinput.h"
+#include "scenestate.h"
 #include "semanticevent.h"
 #include "sessioninfo.h"
 
@@ -64,6 +65,10 @@ public:
     qint64 eventCount() const { return m_eventCount; }
     qint64 deviceFrameCount() const { return m_deviceFrameCount; }
     qint64 operatorInputCount() const { return m_inputCount; }
+    /** Scene states recorded (0 for a live rig's session and for schema 1). */
+    qint64 sceneStateCount() const { return m_sceneStateCount; }
+    /** The schema version the session was written with. */
+    int schemaVersion() const { return m_schemaVersion; }
     /** The first and last contact frame times (0 when there are none). */
     double startTime() const { return m_start; }
     double endTime() const { return m_end; }
@@ -80,6 +85,12 @@ public:
                           double to = Forever);
     bool readOperatorInput(const InputVisitor &visit, QString *error, double from = -Forever,
                            double to = Forever);
+    /**
+     * Reads the scene state shown at `t`: the latest recorded at or before it (the first
+     * one before the first). False when there are none, or with `error` when the database
+     * cannot be read.
+     */
+    bool readSceneState(double t, SceneState *state, QString *error);
 
 private:
     class Database;
@@ -99,6 +110,8 @@ private:
     qint64 m_eventCount = 0;
     qint64 m_deviceFrameCount = 0;
     qint64 m_inputCount = 0;
+    qint64 m_sceneStateCount = 0;
+    int m_schemaVersion = 0;
     double m_start = 0.0;
     double m_end = 0.0;
 };

@@ -10,11 +10,14 @@ QString SessionSchema::valueColumn(int channel)
     return QLatin1Char('v') + QString::number(channel);
 }
 
-QStringList SessionSchema::tables()
+QStringList SessionSchema::tables(int version)
 {
-    return {QStringLiteral("metadata"),       QStringLiteral("devices"),
-            QStringLiteral("contact_frames"), QStringLiteral("events"),
-            QStringLiteral("device_frames"),  QStringLiteral("operator_input")};
+    QStringList names{QStringLiteral("metadata"),       QStringLiteral("devices"),
+                      QStringLiteral("contact_frames"), QStringLiteral("events"),
+                      QStringLiteral("device_frames"),  QStringLiteral("operator_input")};
+    if (version >= 2)
+        names.append(QStringLiteral("scene_states"));
+    return names;
 }
 
 QStringList SessionSchema::createStatements()
@@ -41,10 +44,15 @@ QStringList SessionSchema::createStatements()
                        "x REAL NOT NULL, y REAL NOT NULL, z REAL NOT NULL, qw REAL NOT NULL, "
                        "qx REAL NOT NULL, qy REAL NOT NULL, qz REAL NOT NULL, "
                        "grip REAL NOT NULL)"),
+        // The pose is float64 little-endian: World::sceneState()'s numbers (docs/sessions.md).
+        QStringLiteral("CREATE TABLE scene_states (t REAL NOT NULL, pose BLOB NOT NULL, "
+                       "left_confirm REAL NOT NULL, left_warn REAL NOT NULL, "
+                       "right_confirm REAL NOT NULL, right_warn REAL NOT NULL)"),
         QStringLiteral("CREATE INDEX contact_frames_t ON contact_frames (t)"),
         QStringLiteral("CREATE INDEX events_t ON events (t)"),
         QStringLiteral("CREATE INDEX device_frames_t ON device_frames (t)"),
         QStringLiteral("CREATE INDEX operator_input_t ON operator_input (t)"),
+        QStringLiteral("CREATE INDEX scene_states_t ON scene_states (t)"),
     };
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "sessioninfo.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -14,8 +16,11 @@ namespace SessionSchema {
 
 /** Device frame value columns `v0` … `v15`: one per channel, NULL past the model's count. */
 QString valueColumn(int channel);
-/** The tables every session has. */
-QStringList tables();
+/**
+ * The tables a session of schema `version` has: the stream tables in the order the writer
+ * fills them, after `metadata` and `devices`.
+ */
+QStringList tables(int version = SessionInfo::SchemaVersion);
 /** The statements that create an empty session. */
 QStringList createStatements();
 

@@ -12,6 +12,7 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QtEndian>
 
 #include <chrono>
 #include <cmath>
@@ -31,7 +32,7 @@ namespace {
 /** One queued value; `arrival` only means something for contact frames. */
 struct Record
 {
-    std::variant<ContactFrame, SemanticEvent, DeviceFrame, OperatorInput> value;
+    std::variant<ContactFrame, SemanticEvent, DeviceFrame, OperatorInput, SceneState> value;
     double arrival = 0.0;
 };
 
@@ -160,6 +161,7 @@ private:
             m_eventInsert.clear();
             m_deviceInsert.clear();
             m_inputInsert.clear();
+            m_sceneInsert.clear();
             db.close();
         }
         QSqlDatabase::removeDatabase(m_connection);
@@ -233,11 +235,13 @@ private:
         m_eventInsert = QSqlQuery(db);
         m_deviceInsert = QSqlQuery(db);
         m_inputInsert = QSqlQuery(db);
-        const std::array<std::pair<QSqlQuery *, int>, 4> inserts{{
+        m_sceneInsert = QSqlQuery(db);
+        const std::array<std::pair<QSqlQuery *, int>, 5> inserts{{
             {&m_frameInsert, 15},
             {&m_eventInsert, 8},
             {&m_deviceInsert, 2 + MaxChannels},
             {&m_inputInsert, 10},
+            {&m_sceneInsert, 6},
         }};
         const QStringList tables = SessionSchema::tables().mid(2);
         for (size_t i = 0; i < inserts.size(); ++i) {
@@ -351,6 +355,17 @@ private:
         check(m_inputInsert.exec(), m_inputInsert);
     }
 
+    void insert(const SceneState &state, double)
+    {
+        m_sceneInsert.addBindValue(state.t);
+        QByteArray pose(qsizetype(state.pose.size() * sizeof(double)), Qt::Uninitialized);
+        qToLittleEndian<double>(state.pose.data(), qsizetype(state.pose.size()), pose.data());
+        m_sceneInsert.addBindValue(pose);
+        for (double value : state.overlay)
+            m_sceneInsert.addBindValue(value);
+        check(m_sceneInsert.exec(), m_sceneInsert);
+    }
+
     void check(bool ok, const QSqlQuery &query)
     {
         if (!ok && m_error.isEmpty())
@@ -383,6 +398,7 @@ private:
     QSqlQuery m_eventInsert;
     QSqlQuery m_deviceInsert;
     QSqlQuery m_inputInsert;
+    QSqlQuery m_sceneInsert;
     QString m_error;
 };
 
@@ -449,6 +465,12 @@ void SessionWriter::recordContactFrame(const ContactFrame &frame, double arrival
 void SessionWriter::recordOperatorInput(const OperatorInput &input)
 {
     if (!m_thread->push({input, 0.0}))
+        m_dropped.fetch_add(1, std::memory_order_relaxed);
+}
+
+void SessionWriter::recordSceneState(const SceneState &state)
+{
+    if (!m_thread->push({state, 0.0}))
         m_dropped.fetch_add(1, std::memory_order_relaxed);
 }
 

@@ -4,6 +4,7 @@
 #include "contactframe.h"
 #include "operatorinput.h"
 #include "pipeline.h"
+#include "scenestate.h"
 #include "sessioninfo.h"
 
 #include <QString>
@@ -58,6 +59,8 @@ public:
     void recordContactFrame(const ContactFrame &frame, double arrival);
     /** Records what the user commanded a hand. Any thread. */
     void recordOperatorInput(const OperatorInput &input);
+    /** Records where the scene's bodies are (at display rate, for the replay's viewport). */
+    void recordSceneState(const SceneState &state);
     void onEvent(const SemanticEvent &event) override;
     void onDeviceFrame(const DeviceFrame &frame) override;
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "simrun.h"
 
+#include "sessionwriter.h"
+
 #include <cmath>
 
 namespace semhap {
@@ -78,6 +80,45 @@ void SimRun::setRouter(std::unique_ptr<Router> router, RunSink &sink)
     // The perception reads the player of the router it was made for: replace both together.
     m_perception = std::make_unique<Perception>(*router);
     m_pipeline = std::make_unique<Pipeline>(std::move(router));
+}
+
+SceneState SimRun::sceneState() const
+{
+    SceneState state;
+    state.t = time();
+    state.pose = m_world->sceneState();
+    const Feeling left = m_perception->feeling(Gripper::Left);
+    const Feeling right = m_perception->feeling(Gripper::Right);
+    state.overlay = {left.shownConfirmation, left.shownWarning, right.shownConfirmation,
+                     right.shownWarning};
+    return state;
+}
+
+void SimRun::recordSceneState(SessionWriter &session)
+{
+    const double t = time();
+    if (t < m_nextSceneState)
+        return;
+    // On a fixed grid, so the rate is exact; a recording started late begins at once.
+    m_nextSceneState += SceneStatePeriod;
+    if (m_nextSceneState <= t)
+        m_nextSceneState = t + SceneStatePeriod;
+    session.recordSceneState(sceneState());
+}
+
+SessionInfo SimRun::sessionInfo() const
+{
+    SessionInfo info;
+    info.scene = m_options.scene;
+    info.routerSource = m_options.router;
+    info.overrides = m_options.overrides;
+    info.operatorName = m_options.operatorName;
+    info.seed = QString::number(m_options.seed);
+    info.extra.insert(QStringLiteral("duration"), QString::number(m_options.duration));
+    info.extra.insert(QStringLiteral("reaction_time"), QString::number(m_options.reactionTime));
+    if (m_options.sceneOptions.cubes >= 0)
+        info.extra.insert(QStringLiteral("cubes"), QString::number(m_options.sceneOptions.cubes));
+    return info;
 }
 
 } // namespace semhap

@@ -4,6 +4,8 @@
 #include "operator.h"
 #include "perception.h"
 #include "pipeline.h"
+#include "scenestate.h"
+#include "sessioninfo.h"
 #include "taskmonitor.h"
 #include "world.h"
 
@@ -14,6 +16,8 @@
 #include <memory>
 
 namespace semhap {
+
+class SessionWriter;
 
 /** Everything that defines a headless run; same options, same run. */
 struct RunOptions
@@ -62,6 +66,21 @@ public:
     void setOperatorOverride(Operator *op) { m_override = op; }
     /** What each hand perceives of the device output (the overlay is drawn from it). */
     const Perception &perception() const { return *m_perception; }
+    /** A session records the scene state this often (simulated seconds): display rate. */
+    static constexpr double SceneStatePeriod = 1.0 / 30.0;
+    /** Where the scene's bodies are now and the overlay shown, for a session's replay. */
+    SceneState sceneState() const;
+    /**
+     * Records the scene state into `session` when one is due (every SceneStatePeriod of
+     * simulated time, the first at once); call it after each step while recording.
+     */
+    void recordSceneState(SessionWriter &session);
+    /**
+     * What a session records of this run: the scene, the router as loaded, the operator, the
+     * seed and the options that make the same run again. The caller adds source, bindings
+     * and notes.
+     */
+    SessionInfo sessionInfo() const;
 
     /**
      * Swaps the router between two steps (the studio's live edits): the old router's active
@@ -101,6 +120,7 @@ private:
     Operator *m_override = nullptr;
     std::unique_ptr<Perception> m_perception;
     std::unique_ptr<TaskMonitor> m_task;
+    double m_nextSceneState = 0.0;
     long m_steps = 0;
     long m_totalSteps = 0;
 };

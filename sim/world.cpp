@@ -477,6 +477,39 @@ void World::placeObject(int object, const std::array<double, 3> &pos)
     std::fill(qvel, qvel + 6, 0.0);
 }
 
+int World::sceneStateSize() const
+{
+    const mjModel *m = d->model.get();
+    return m->nq + 7 * m->nmocap;
+}
+
+std::vector<double> World::sceneState() const
+{
+    const mjModel *m = d->model.get();
+    const mjData *data = d->data.get();
+    std::vector<double> pose;
+    pose.reserve(size_t(sceneStateSize()));
+    pose.insert(pose.end(), data->qpos, data->qpos + m->nq);
+    pose.insert(pose.end(), data->mocap_pos, data->mocap_pos + 3 * m->nmocap);
+    pose.insert(pose.end(), data->mocap_quat, data->mocap_quat + 4 * m->nmocap);
+    return pose;
+}
+
+bool World::setSceneState(const std::vector<double> &pose)
+{
+    if (int(pose.size()) != sceneStateSize())
+        return false;
+    const mjModel *m = d->model.get();
+    mjData *data = d->data.get();
+    const double *from = pose.data();
+    std::copy_n(from, m->nq, data->qpos);
+    std::copy_n(from + m->nq, 3 * m->nmocap, data->mocap_pos);
+    std::copy_n(from + m->nq + 3 * m->nmocap, 4 * m->nmocap, data->mocap_quat);
+    std::fill_n(data->qvel, m->nv, 0.0);
+    mj_forward(m, data);
+    return true;
+}
+
 const mjModel *World::model() const
 {
     return d->model.get();

@@ -109,6 +109,20 @@ public:
     /** The region of site `name`; false when the scene has no such site. */
     bool region(const QString &name, Region *region) const;
 
+    /**
+     * Where every body is, to draw the scene again later (SceneState::pose): the
+     * generalized positions, then each mocap body's position and quaternion.
+     */
+    std::vector<double> sceneState() const;
+    /** How many numbers sceneState() gives for this scene. */
+    int sceneStateSize() const;
+    /**
+     * Puts the bodies where `pose` says, at rest, and updates what the renderer and the
+     * contact arrows read (a replay's world; it is not stepped afterwards). False when the
+     * pose is not one of this scene's (another scene, another number of cubes).
+     */
+    bool setSceneState(const std::vector<double> &pose);
+
     /** The fractures of the last step. */
     const std::vector<Fracture> &fractures() const { return m_fractures; }
 

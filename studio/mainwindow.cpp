@@ -480,7 +480,10 @@ void MainWindow::createStatusBar()
 void MainWindow::connectEngine()
 {
     connect(&m_engine, &SimEngine::loaded, this, [this] {
+        // The viewport lets go of a replay's scene before the replay frees it.
+        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
         m_replay->close();
+        m_viewport->setCaption(QString());
         m_viewport->setPlaceholder(
             m_engine.isLive()
                 ? tr("Live rig on %1\nThe rig draws its own scene.").arg(m_engine.liveUri())
@@ -552,20 +555,27 @@ void MainWindow::toggleRecording()
 bool MainWindow::openSession(const QString &path)
 {
     m_engine.stopRecording();
+    // The viewport lets go of the scene of a replay already open: opening frees it.
+    m_viewport->setScene(nullptr, nullptr);
     QString error;
-    if (!m_replay->open(path, &error)) {
+    const bool opened = m_replay->open(path, &error);
+    if (!opened)
         showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
+    if (!m_replay->isOpen()) {
+        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
         return false;
     }
     // The history is the replay's from here: the run's last frames must not mix in.
     m_engine.detachHistory();
-    // Scene state is not in a session (schema 1): the viewport says so instead.
-    m_viewport->setScene(nullptr, nullptr);
-    m_viewport->setPlaceholder(tr("Replay: no scene state recorded"));
-    m_poseInput->setWorld(nullptr);
     m_engine.setManual(false);
-    setWindowTitle(tr("semhap studio — replay of %1").arg(QFileInfo(path).fileName()));
-    return true;
+    m_viewport->setScene(m_replay->world(), m_replay->sceneFeed());
+    m_viewport->setPlaceholder(m_replay->sceneNote());
+    m_viewport->setCaption(tr("Replay"));
+    // A replay's bodies go where they were; nobody drives them.
+    m_teleop->setWorld(nullptr);
+    m_poseInput->setWorld(nullptr);
+    setWindowTitle(tr("semhap studio — replay of %1").arg(QFileInfo(m_replay->path()).fileName()));
+    return opened;
 }
 
 void MainWindow::closeReplay()

@@ -4,7 +4,9 @@
 #include "pipeline.h"
 #include "router.h"
 #include "routergraph.h"
+#include "scenefeed.h"
 #include "sessionreader.h"
+#include "world.h"
 
 #include <algorithm>
 
@@ -39,6 +41,8 @@ void appendWindow(const std::vector<T> &values, double from, double to, LiveHist
 SessionReplay::SessionReplay(LiveHistory &history, QObject *parent)
     : QObject(parent), m_history(history)
 {}
+
+SessionReplay::~SessionReplay() = default;
 
 bool SessionReplay::open(const QString &path, QString *error)
 {
@@ -97,6 +101,8 @@ bool SessionReplay::open(const QString &path, QString *error)
     m_end = reader->endTime();
     m_shown = m_recorded;
     m_rerouted = false;
+    m_reader = std::move(reader);
+    loadScene();
     refill(m_start);
     emit opened();
     emit timeChanged(m_time);
@@ -111,6 +117,9 @@ void SessionReplay::close()
     m_frames.clear();
     m_recorded = Streams();
     m_shown = Streams();
+    m_sceneFeed.reset();
+    m_world.reset();
+    m_reader.reset();
     emit closed();
 }
 
@@ -125,6 +134,7 @@ void SessionReplay::seek(double t)
         appendUpTo(m_time, t);
         m_history.commit();
         m_time = t;
+        showScene(t);
     } else {
         refill(t);
     }
@@ -171,6 +181,55 @@ void SessionReplay::refill(double t)
     m_time = t;
     appendUpTo(t - m_history.keepSeconds(), t);
     m_history.commit();
+    showScene(t);
+}
+
+void SessionReplay::loadScene()
+{
+    m_sceneFeed.reset();
+    m_world.reset();
+    m_sceneTime = qQNaN();
+    const SessionInfo &info = m_reader->info();
+    if (m_reader->sceneStateCount() == 0) {
+        m_sceneNote = info.scene.isEmpty() ? tr("Replay: a live rig's session has no scene")
+                                           : tr("Replay: no scene state recorded");
+        return;
+    }
+    SceneOptions options;
+    bool counted = false;
+    const int cubes = info.extra.value(QStringLiteral("cubes")).toInt(&counted);
+    if (counted)
+        options.cubes = cubes;
+    QString error;
+    std::unique_ptr<World> world = World::load(info.scene, options, &error);
+    SceneState first;
+    if (world && m_reader->readSceneState(m_start, &first, &error) &&
+        int(first.pose.size()) != world->sceneStateSize())
+        error = tr("its scene states do not fit scene %1").arg(info.scene);
+    if (!world || !error.isEmpty()) {
+        m_sceneNote = tr("Replay: the scene cannot be shown (%1)").arg(error);
+        return;
+    }
+    m_world = std::move(world);
+    m_sceneFeed = std::make_unique<SceneFeed>(*m_world);
+    m_sceneNote.clear();
+}
+
+void SessionReplay::showScene(double t)
+{
+    if (!m_world)
+        return;
+    SceneState state;
+    QString error;
+    if (!m_reader->readSceneState(t, &state, &error) || state.t == m_sceneTime)
+        return;
+    m_sceneTime = state.t;
+    // The first state was checked to fit when the scene loaded; a row that does not is
+    // skipped, the picture stays.
+    if (!m_world->setSceneState(state.pose))
+        return;
+    const auto &o = state.overlay;
+    m_sceneFeed->capture(*m_world, {o[0], o[1], o[2], o[3]});
 }
 
 void SessionReplay::appendUpTo(double from, double to)

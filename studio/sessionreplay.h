@@ -6,17 +6,24 @@
 #include <QObject>
 #include <QString>
 
+#include <memory>
 #include <vector>
 
 namespace semhap {
 
 class RouterGraph;
+class SceneFeed;
+class SessionReader;
+class World;
 
 /**
  * A recorded session opened read-only in the studio: its streams are read once, and the
  * time a scrubber picks fills the LiveHistory with the window the plots and the event log
  * show, so every live view replays without knowing it. Re-routing runs the recorded
  * contact frames through another router (the editor's), like `semhap replay --router`.
+ *
+ * A simulated session's scene states (schema 2) put the bodies of a world of its own scene
+ * where they were at the time shown, for the viewport: world() and sceneFeed().
  */
 class SessionReplay : public QObject
 {
@@ -24,6 +31,7 @@ class SessionReplay : public QObject
 
 public:
     explicit SessionReplay(LiveHistory &history, QObject *parent = nullptr);
+    ~SessionReplay() override;
 
     /** Reads the session at `path` and shows its start. False with a one-line `error`. */
     bool open(const QString &path, QString *error);
@@ -49,6 +57,12 @@ public:
     bool isRerouted() const { return m_rerouted; }
 
     qsizetype frameCount() const { return qsizetype(m_frames.size()); }
+
+    /** The scene at the time shown; null when the session has none (see sceneNote()). */
+    const World *world() const { return m_world.get(); }
+    SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
+    /** Why there is no scene to show: no states recorded, or the scene does not load. */
+    const QString &sceneNote() const { return m_sceneNote; }
     /** The events shown: the recording's or the re-routing's. */
     const std::vector<SemanticEvent> &events() const { return m_shown.events; }
 
@@ -70,6 +84,10 @@ private:
     };
     void refill(double t);
     void appendUpTo(double from, double to);
+    /** Loads the session's scene when it recorded scene states; else says why not. */
+    void loadScene();
+    /** Puts the scene's bodies where they were at `t` and hands a picture to the viewport. */
+    void showScene(double t);
 
     LiveHistory &m_history;
     QString m_path;
@@ -81,6 +99,12 @@ private:
     double m_start = 0.0;
     double m_end = 0.0;
     double m_time = 0.0;
+
+    std::unique_ptr<SessionReader> m_reader; ///< kept open: scene states are read as needed
+    std::unique_ptr<World> m_world;
+    std::unique_ptr<SceneFeed> m_sceneFeed;
+    QString m_sceneNote;
+    double m_sceneTime = 0.0; ///< the time of the state shown
 };
 
 } // namespace semhap

@@ -530,6 +530,8 @@ void SimEngine::stepOnce()
         m_nextInput = t + InputPeriod;
         recordInput(t);
     }
+    if (m_recorder)
+        m_run->recordSceneState(*m_recorder);
     m_simTime.store(t, std::memory_order_relaxed);
     if (m_sceneFeed->wantsCapture()) {
         const Perception &perception = m_run->perception();
@@ -560,19 +562,20 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
     }
     stopRecording();
     SessionInfo info;
-    info.source = QStringLiteral("studio");
-    info.routerSource = m_options.router;
-    info.overrides = m_options.overrides;
-    for (const BoundDevice &device : m_devices->status())
-        info.bindings.insert(device.name, device.uri);
     if (m_rig) {
         // Like `semhap listen --session`: no scene, operator or seed, the rig's address.
+        info.routerSource = m_options.router;
+        info.overrides = m_options.overrides;
         info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
     } else {
-        info.scene = m_options.scene;
-        info.operatorName = m_options.operatorName;
-        info.seed = QString::number(m_options.seed);
+        info = m_run->sessionInfo();
+        // Applied from the editor: the graph itself is in the session, its name is not.
+        info.routerSource = m_options.router;
+        info.overrides = m_options.overrides;
     }
+    info.source = QStringLiteral("studio");
+    for (const BoundDevice &device : m_devices->status())
+        info.bindings.insert(device.name, device.uri);
     info.semhapVersion = QCoreApplication::applicationVersion();
     info.notes = notes;
     QDir().mkpath(QFileInfo(path).absolutePath());

@@ -94,6 +94,12 @@ void SimViewport::setPlaceholder(const QString &text)
     update();
 }
 
+void SimViewport::setCaption(const QString &text)
+{
+    m_caption = text;
+    update();
+}
+
 void SimViewport::setTeleop(KeyboardTeleop *teleop)
 {
     if (m_teleop)
@@ -274,7 +280,9 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
 
     QStringList lines;
     QString title;
-    if (m_manual) {
+    if (!m_caption.isEmpty()) {
+        title = m_caption;
+    } else if (m_manual) {
         const Gripper hand = m_teleop ? m_teleop->activeHand() : Gripper::Right;
         title = hand == Gripper::Right ? tr("You are driving (right hand)")
                                        : tr("You are driving (left hand)");

@@ -40,6 +40,12 @@ public:
     /** What the viewport says while it has no scene (a replay, a live rig); empty: default. */
     void setPlaceholder(const QString &text);
     const QString &placeholder() const { return m_placeholder; }
+    /**
+     * The heading of the corner box over the picture in place of who drives (a replay);
+     * empty: the driver and the keys.
+     */
+    void setCaption(const QString &text);
+    const QString &caption() const { return m_caption; }
     /** Where teleoperation keys go (null: nowhere); it is given the scene. Not owned. */
     void setTeleop(KeyboardTeleop *teleop);
     KeyboardTeleop *teleop() const { return m_teleop; }
@@ -94,6 +100,7 @@ private:
 
     const World *m_world = nullptr;
     QString m_placeholder;
+    QString m_caption;
     SceneFeed *m_feed = nullptr;
     KeyboardTeleop *m_teleop = nullptr;
     std::unique_ptr<SceneRenderer> m_renderer;

@@ -702,10 +702,6 @@
         <translation>Sitzung %1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <source>Replay: no scene state recorded</source>
-        <translation>Wiedergabe: kein Szenenzustand aufgezeichnet</translation>
-    </message>
-    <message>
         <source>semhap studio — replay of %1</source>
         <translation>semhap studio — Wiedergabe von %1</translation>
     </message>
@@ -1678,6 +1674,25 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SessionReplay</name>
+    <message>
+        <source>Replay: a live rig&apos;s session has no scene</source>
+        <translation>Wiedergabe: Die Sitzung eines Live-Rigs hat keine Szene</translation>
+    </message>
+    <message>
+        <source>Replay: no scene state recorded</source>
+        <translation>Wiedergabe: kein Szenenzustand aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>its scene states do not fit scene %1</source>
+        <translation>seine Szenenzustände passen nicht zur Szene %1</translation>
+    </message>
+    <message>
+        <source>Replay: the scene cannot be shown (%1)</source>
+        <translation>Wiedergabe: Die Szene kann nicht gezeigt werden (%1)</translation>
     </message>
 </context>
 <context>

@@ -702,10 +702,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Replay: no scene state recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>semhap studio — replay of %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1676,6 +1672,25 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SessionReplay</name>
+    <message>
+        <source>Replay: a live rig&apos;s session has no scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay: no scene state recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its scene states do not fit scene %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay: the scene cannot be shown (%1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

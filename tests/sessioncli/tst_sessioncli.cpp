@@ -64,6 +64,7 @@ class TestSessionCli : public QObject
 private slots:
     void initTestCase();
     void recordingChangesNoOutput();
+    void recordsSceneStates();
     void replayGivesTheRecordedStreams();
     void rerouteEqualsRoute();
     void exportCsv();
@@ -100,6 +101,25 @@ void TestSessionCli::recordingChangesNoOutput()
         QVERIFY(with.count('\n') > 10);
         QCOMPARE(with, contents(m_dir.filePath(QString("without.") + stream)));
     }
+}
+
+void TestSessionCli::recordsSceneStates()
+{
+    QString error;
+    std::unique_ptr<SessionReader> session = SessionReader::open(m_session, &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->schemaVersion(), 2);
+    // 30 a simulated second, the first at the first step.
+    const double seconds = session->endTime() - session->startTime();
+    QVERIFY2(std::abs(double(session->sceneStateCount()) - seconds * 30) <= 2,
+             qPrintable(QString::number(session->sceneStateCount())));
+    SceneState first;
+    SceneState last;
+    QVERIFY(session->readSceneState(0.0, &first, &error));
+    QVERIFY(session->readSceneState(1e9, &last, &error));
+    QVERIFY(first.pose.size() > 20);
+    QCOMPARE(last.pose.size(), first.pose.size());
+    QVERIFY(last.pose != first.pose); // the grippers moved
 }
 
 void TestSessionCli::replayGivesTheRecordedStreams()

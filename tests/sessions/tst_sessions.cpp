@@ -158,6 +158,8 @@ private slots:
     void metadataAndRouter();
     void timeWindow();
     void neverOverwrites();
+    void sceneStates();
+    void schemaOneStillOpens();
     void damagedFiles_data();
     void damagedFiles();
     void udpGarbageOversizeAndBatch();
@@ -331,6 +333,69 @@ void TestSessions::neverOverwrites()
     QCOMPARE(file.readAll(), QByteArray("precious"));
 }
 
+void TestSessions::sceneStates()
+{
+    const auto router = c3();
+    const QString path = m_dir.filePath("scene.db");
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    std::mt19937_64 random(11);
+    std::vector<SceneState> states;
+    for (int k = 0; k < 90; ++k) {
+        SceneState state;
+        state.t = 0.5 + k / 30.0;
+        for (int i = 0; i < 37; ++i)
+            state.pose.push_back((random() % 2 ? -1 : 1) * anyDouble(random));
+        state.pose.push_back(-0.0);
+        state.overlay = {k % 2 * 1.0, 0.25, anyDouble(random), 1.0};
+        states.push_back(state);
+        writer->recordSceneState(state);
+    }
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->schemaVersion(), SessionInfo::SchemaVersion);
+    QCOMPARE(reader->sceneStateCount(), qint64(states.size()));
+    const auto check = [&](double t, size_t expected) {
+        SceneState state;
+        QString why;
+        QVERIFY2(reader->readSceneState(t, &state, &why), qPrintable(why));
+        const SceneState &want = states[expected];
+        QCOMPARE(state.t, want.t);
+        QCOMPARE(state.pose.size(), want.pose.size());
+        for (size_t i = 0; i < want.pose.size(); ++i)
+            QVERIFY2(sameBits(state.pose[i], want.pose[i]), qPrintable(QString::number(i)));
+        for (size_t i = 0; i < 4; ++i)
+            QVERIFY(sameBits(state.overlay[i], want.overlay[i]));
+    };
+    check(0.0, 0);                  // before the first: the first
+    check(states[10].t, 10);        // exactly on one
+    check(states[10].t + 0.01, 10); // between two: the one before
+    check(1e9, states.size() - 1);  // after the last: the last
+}
+
+void TestSessions::schemaOneStillOpens()
+{
+    // A session from before scene states: no table, version 1.
+    const auto router = c3();
+    const QString path = m_dir.filePath("schema1.db");
+    const Recording r = synthetic(*router, 200);
+    record(path, *router, r);
+    damage(path, {"DROP TABLE scene_states",
+                  "UPDATE metadata SET value = '1' WHERE key = 'schema_version'"});
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->schemaVersion(), 1);
+    QCOMPARE(reader->sceneStateCount(), qint64(0));
+    QCOMPARE(reader->contactFrameCount(), qint64(r.frames.size()));
+    SceneState state;
+    QVERIFY(!reader->readSceneState(0.0, &state, &error));
+}
+
 void TestSessions::damagedFiles_data()
 {
     QTest::addColumn<QStringList>("statements");
@@ -349,7 +414,15 @@ void TestSessions::damagedFiles_data()
         << "not a semhap session (no schema_version in its metadata)";
     QTest::newRow("newer schema")
         << QStringList{"UPDATE metadata SET value = '7' WHERE key = 'schema_version'"}
-        << QByteArray() << 0 << "session schema version 7 is not supported (this semhap reads 1)";
+        << QByteArray() << 0
+        << "session schema version 7 is not supported (this semhap reads 1 to 2)";
+    QTest::newRow("schema not a number")
+        << QStringList{"UPDATE metadata SET value = 'two' WHERE key = 'schema_version'"}
+        << QByteArray() << 0
+        << "session schema version two is not supported (this semhap reads 1 to 2)";
+    QTest::newRow("missing scene states")
+        << QStringList{"DROP TABLE scene_states"} << QByteArray() << 0
+        << "damaged session: table 'scene_states' is missing";
     QTest::newRow("missing table") << QStringList{"DROP TABLE events"} << QByteArray() << 0
                                    << "damaged session: table 'events' is missing";
     QTest::newRow("truncated") << QStringList() << QByteArray() << 40000
