@@ -86,7 +86,11 @@ void record(const QString &path, double seconds, bool paced)
     Tee tee(*writer);
     const Clock::time_point start = Clock::now();
     long frames = 0;
+    long states = 0;
     double t = 0;
+    // A bimanual scene's state: 100 numbers (qpos and the two mocap wrists) 30 times a second.
+    SceneState state;
+    state.pose.assign(100, 0.25);
     for (long tick = 0;; ++tick) {
         t = double(tick) / 1000;
         if (paced) {
@@ -102,18 +106,24 @@ void record(const QString &path, double seconds, bool paced)
             ++frames;
         }
         pipeline.flush(tee);
+        if (tick % 33 == 0) {
+            state.t = t;
+            writer->recordSceneState(state);
+            ++states;
+        }
     }
     const double produced = std::chrono::duration<double>(Clock::now() - start).count();
     const Clock::time_point closing = Clock::now();
     writer->finish();
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     const double close = std::chrono::duration<double>(Clock::now() - closing).count();
-    const double values = double(frames + tee.events + tee.deviceFrames);
+    const double values = double(frames + tee.events + tee.deviceFrames + states);
     std::printf("%s: %.1f s of session in %.2f s (close %.0f ms)\n",
                 paced ? "recording, real time" : "recording, flat out", t, wall, close * 1000);
-    std::printf("  contact frames %ld (%.0f/s), events %ld, device frames %ld (%.0f/s)\n", frames,
-                double(frames) / produced, tee.events, tee.deviceFrames,
-                double(tee.deviceFrames) / produced);
+    std::printf("  contact frames %ld (%.0f/s), events %ld, device frames %ld (%.0f/s), scene "
+                "states %ld\n",
+                frames, double(frames) / produced, tee.events, tee.deviceFrames,
+                double(tee.deviceFrames) / produced, states);
     std::printf("  values committed %.0f/s of %.0f/s produced, dropped %llu, writer thread "
                 "%.1f%% of a core (%.0f values per CPU second), %.1f MB\n",
                 double(writer->committed()) / wall, values / produced,
