@@ -30,7 +30,6 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -235,16 +234,14 @@ void MainWindow::createActions()
                             QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
     m_recordAction->setCheckable(true);
     m_recordAction->setIcon(recordIcon());
-    m_recordAction->setToolTip(tr("Record the run into a new session in your data folder "
+    m_recordAction->setToolTip(tr("Record the run into a new session in the sessions folder "
                                   "(Ctrl+Shift+R); again to stop"));
     connect(m_recordAction, &QAction::triggered, this, &MainWindow::toggleRecording);
     m_openSessionAction = action(tr("Open session…"), QStringLiteral("openSessionAction"),
                                  QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O));
     connect(m_openSessionAction, &QAction::triggered, this, [this] {
         const QString file = QFileDialog::getOpenFileName(
-            this, tr("Open session"),
-            QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-                QStringLiteral("/sessions"),
+            this, tr("Open session"), PreferencesDialog::sessionsFolder(),
             tr("semhap sessions (*.db);;All files (*)"));
         if (!file.isEmpty())
             openSession(file);
@@ -322,6 +319,13 @@ void MainWindow::createToolBar()
     bar->addAction(m_forcesAction);
     bar->addSeparator();
     bar->addAction(m_recordAction);
+    m_sessionNameEdit = new QLineEdit(bar);
+    m_sessionNameEdit->setObjectName(QStringLiteral("sessionName"));
+    m_sessionNameEdit->setPlaceholderText(tr("Session name"));
+    m_sessionNameEdit->setToolTip(tr("Names the next recording's file (empty: scene, router and "
+                                     "time); File → Preferences says where it goes"));
+    m_sessionNameEdit->setMaximumWidth(140);
+    bar->addWidget(m_sessionNameEdit);
     m_notesEdit = new QLineEdit(bar);
     m_notesEdit->setObjectName(QStringLiteral("sessionNotes"));
     m_notesEdit->setPlaceholderText(tr("Session notes"));
@@ -546,7 +550,9 @@ void MainWindow::toggleRecording()
         return;
     }
     QString error;
-    if (!m_engine.startRecording(m_engine.defaultRecordingPath(), m_notesEdit->text(), &error)) {
+    const QString path = PreferencesDialog::sessionsFolder() + QLatin1Char('/') +
+                         m_engine.recordingFileName(m_sessionNameEdit->text());
+    if (!m_engine.startRecording(path, m_notesEdit->text(), &error)) {
         m_recordAction->setChecked(false);
         showError(tr("Could not start recording"), error);
     }

@@ -52,6 +52,7 @@ public:
     QComboBox *routerPicker() const { return m_routerPicker; }
     QComboBox *speedPicker() const { return m_speedPicker; }
     QLineEdit *notesEdit() const { return m_notesEdit; }
+    QLineEdit *sessionNameEdit() const { return m_sessionNameEdit; }
     SessionReplay *replay() const { return m_replay; }
     ReplayBar *replayBar() const { return m_replayBar; }
 
@@ -123,6 +124,7 @@ private:
     QComboBox *m_routerPicker = nullptr;
     QComboBox *m_speedPicker = nullptr;
     QLineEdit *m_notesEdit = nullptr;
+    QLineEdit *m_sessionNameEdit = nullptr;
     SessionReplay *m_replay = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QToolBar *m_replayToolBar = nullptr;

@@ -4,10 +4,11 @@
 #include <QDialog>
 
 class QComboBox;
+class QLineEdit;
 
 namespace semhap {
 
-/** The studio's settings a user changes rarely: for now, the interface language. */
+/** The studio's settings a user changes rarely: the interface language, where sessions go. */
 class PreferencesDialog : public QDialog
 {
     Q_OBJECT
@@ -20,14 +21,20 @@ public:
     bool languageChanged() const;
 
     QComboBox *languagePicker() const { return m_language; }
+    QLineEdit *sessionsFolderEdit() const { return m_sessionsFolder; }
 
     /** The saved language setting (empty: follow the system). */
     static QString savedLanguage();
+    /** Where recordings go: the saved folder, else `sessions` in the user's data folder. */
+    static QString sessionsFolder();
+    /** The folder recordings go to when the user has not chosen one. */
+    static QString defaultSessionsFolder();
 
 private:
     void save();
 
     QComboBox *m_language = nullptr;
+    QLineEdit *m_sessionsFolder = nullptr;
     QString m_initial;
 };
 

@@ -11,7 +11,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
-#include <QStandardPaths>
+#include <QRegularExpression>
 
 #include <chrono>
 #include <cmath>
@@ -616,13 +616,20 @@ quint64 SimEngine::recordingDropped() const
     return m_recorder ? m_recorder->dropped() : 0;
 }
 
-QString SimEngine::defaultRecordingPath() const
+QString SimEngine::recordingFileName(const QString &name) const
 {
-    const auto stem = [](const QString &name) { return QFileInfo(name).completeBaseName(); };
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-           QStringLiteral("/sessions/%1-%2-%3.db")
-               .arg(m_rig ? QStringLiteral("live") : stem(m_options.scene), stem(m_options.router),
-                    QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    const QString time = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+    QString stem = name.simplified().left(80);
+    static const QRegularExpression unsafe(QStringLiteral(R"([/\\:*?"<>|\x00-\x1f])"));
+    stem.replace(unsafe, QStringLiteral("_"));
+    if (stem.startsWith(QLatin1Char('.')))
+        stem[0] = QLatin1Char('_'); // not a hidden file
+    if (stem.isEmpty()) {
+        const auto base = [](const QString &file) { return QFileInfo(file).completeBaseName(); };
+        stem = (m_rig ? QStringLiteral("live") : base(m_options.scene)) + QLatin1Char('-') +
+               base(m_options.router);
+    }
+    return QStringLiteral("%1-%2.db").arg(stem, time);
 }
 
 void SimEngine::recordInput(double t)

@@ -139,8 +139,12 @@ public:
     QString recordingPath() const;
     /** Values the recording dropped because the disk fell behind. */
     quint64 recordingDropped() const;
-    /** A new file in the user's data folder named after scene, router and the time now. */
-    QString defaultRecordingPath() const;
+    /**
+     * A file name for a new recording: `NAME-yyyyMMdd-HHmmss.db` for the user's session
+     * name (characters a file name cannot hold become `_`), else named after the scene (or
+     * `live`) and the router.
+     */
+    QString recordingFileName(const QString &name = QString()) const;
 
 signals:
     void loaded();

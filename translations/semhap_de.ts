@@ -658,10 +658,6 @@
         <translation>Aufnehmen</translation>
     </message>
     <message>
-        <source>Record the run into a new session in your data folder (Ctrl+Shift+R); again to stop</source>
-        <translation>Den Lauf in eine neue Sitzung in Ihrem Datenordner aufnehmen (Strg+Umschalt+R); erneut zum Beenden</translation>
-    </message>
-    <message>
         <source>Open session…</source>
         <translation>Sitzung öffnen…</translation>
     </message>
@@ -768,6 +764,18 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Malformed datagram: %1</source>
         <translation>Fehlerhaftes Datagramm: %1</translation>
+    </message>
+    <message>
+        <source>Record the run into a new session in the sessions folder (Ctrl+Shift+R); again to stop</source>
+        <translation>Den Lauf in eine neue Sitzung im Sitzungsordner aufzeichnen (Strg+Umschalt+R); erneut zum Beenden</translation>
+    </message>
+    <message>
+        <source>Session name</source>
+        <translation>Sitzungsname</translation>
+    </message>
+    <message>
+        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
+        <translation>Benennt die Datei der nächsten Aufzeichnung (leer: Szene, Router und Zeit); Datei → Einstellungen legt fest, wohin sie geht</translation>
     </message>
 </context>
 <context>
@@ -1357,8 +1365,20 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Sprache der Oberfläche:</translation>
     </message>
     <message>
-        <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
-        <translation>Das Fenster wird in der neuen Sprache neu aufgebaut; der Lauf beginnt wieder von vorn.</translation>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Where recordings go</source>
+        <translation>Wohin Aufzeichnungen gehen</translation>
+    </message>
+    <message>
+        <source>Sessions folder:</source>
+        <translation>Sitzungsordner:</translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
+        <translation>Eine neue Sprache baut das Fenster neu auf, und der Lauf beginnt von vorn. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner.</translation>
     </message>
 </context>
 <context>

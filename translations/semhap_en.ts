@@ -658,10 +658,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Record the run into a new session in your data folder (Ctrl+Shift+R); again to stop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Open session…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -766,6 +762,18 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Malformed datagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record the run into a new session in the sessions folder (Ctrl+Shift+R); again to stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1356,7 +1364,19 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The window is rebuilt in the new language; the run starts again from the beginning.</source>
+        <source>Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where recordings go</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sessions folder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -9,6 +9,7 @@
 #include "openwindow.h"
 #include "pipeline.h"
 #include "plotpanel.h"
+#include "preferencesdialog.h"
 #include "replaybar.h"
 #include "router.h"
 #include "routereditor.h"
@@ -20,8 +21,11 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
+#include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -45,6 +49,7 @@ private slots:
     void windowRecordsReopensAndScrubs();
     void reroutesThroughTheEditorsRouter();
     void windowListensToALiveRig();
+    void cleanupTestCase();
 
 private:
     /** Records about `seconds` of simulated C3 from an engine into a new file. */
@@ -81,6 +86,8 @@ bool sameEvents(const std::vector<SemanticEvent> &a, const std::vector<SemanticE
 void TestStudioSessions::initTestCase()
 {
     QStandardPaths::setTestModeEnabled(true);
+    // Recordings go to the default folder unless a test chooses another.
+    QSettings().remove("sessions/folder");
     QVERIFY(m_dir.isValid());
 }
 
@@ -132,10 +139,29 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     MainWindow window(studioOptions());
     QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
+    // Where recordings go: File → Preferences, typed into the sessions folder field.
+    const QString folder = m_dir.filePath("my sessions");
+    QTimer::singleShot(0, this, [folder] {
+        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QLineEdit *edit = dialog->sessionsFolderEdit();
+        QCOMPARE(edit->text(), QDir::toNativeSeparators(PreferencesDialog::sessionsFolder()));
+        edit->setFocus();
+        edit->selectAll();
+        QTest::keyClicks(edit, folder);
+        dialog->grab().save(QCoreApplication::applicationDirPath() + "/preferences.png");
+        QTest::keyClick(edit, Qt::Key_Return);
+    });
+    window.findChild<QAction *>("preferencesAction")->trigger();
+    QCOMPARE(PreferencesDialog::sessionsFolder(), folder);
+
+    QTest::keyClicks(window.sessionNameEdit(), "p07/baseline");
     QTest::keyClicks(window.notesEdit(), "participant 7");
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(window.engine().isRecording());
     const QString path = window.engine().recordingPath();
+    QCOMPARE(QFileInfo(path).absolutePath(), folder);
+    QVERIFY2(QFileInfo(path).fileName().startsWith("p07_baseline-"), qPrintable(path));
     QVERIFY(path.endsWith(".db"));
     QTRY_VERIFY(window.findChild<QLabel *>("recordLabel")->text().contains("dropped"));
     const double from = window.engine().simTime();
@@ -306,6 +332,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().isRecording());
     const QString path = window.engine().recordingPath();
     QVERIFY2(QFileInfo(path).fileName().startsWith("live-C3-"), qPrintable(path));
+    QCOMPARE(QFileInfo(path).absolutePath(), PreferencesDialog::sessionsFolder());
     QFile trace(SEMHAP_RESOURCES "/traces/demo.jsonl");
     QVERIFY(trace.open(QIODevice::ReadOnly));
     QUdpSocket sender;
@@ -350,6 +377,11 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().world());
     QVERIFY(window.viewport()->placeholder().isEmpty());
     QVERIFY(window.findChild<QAction *>("stepAction")->isEnabled());
+}
+
+void TestStudioSessions::cleanupTestCase()
+{
+    QSettings().remove("sessions/folder"); // it named a folder of this run's
 }
 
 QTEST_MAIN(TestStudioSessions)
