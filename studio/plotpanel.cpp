@@ -457,7 +457,7 @@ void PlotPanel::addDevice(int device)
         info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
     plot->rect = addRect(title, 2);
     plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
-    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(2);
+    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(1);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
         const QString &name = info.channels[channel];
         const QColor color = palette[size_t(channel) % std::size(palette)];
