@@ -66,6 +66,14 @@ def gripper_equality(hand):
     <joint joint1="{hand}.slide.left" joint2="{hand}.slide.right"/>"""
 
 
+def gripper_exclusions(hand):
+    # The two fingers never touch each other (taxels skip each other by contype, links have
+    # no contacts), but without this MuJoCo tests each of their 17 x 17 geom pairs every step:
+    # 2.5 % of box_and_block's mj_step.
+    return f"""
+    <exclude body1="{hand}.finger.left" body2="{hand}.finger.right"/>"""
+
+
 def gripper_actuators(hand, max_force):
     return "".join(
         f'\n    <motor name="{hand}.grip.{side}" joint="{hand}.slide.{side}" gear="1" '
@@ -166,6 +174,8 @@ def box_and_block(max_cubes=24):
 {gripper("right", (-0.15, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>
+  <contact>{gripper_exclusions("right")}
+  </contact>
   <equality>{gripper_equality("right")}
   </equality>
   <actuator>{gripper_actuators("right", 160)}
@@ -204,6 +214,8 @@ def bimanual_sorting(max_cubes=16):
 {gripper("right", (0.2, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>
+  <contact>{gripper_exclusions("left")}{gripper_exclusions("right")}
+  </contact>
   <equality>{gripper_equality("left")}{gripper_equality("right")}
   </equality>
   <actuator>{gripper_actuators("left", 160)}{gripper_actuators("right", 160)}
