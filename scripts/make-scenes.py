@@ -12,6 +12,17 @@ The grippers carry 4x4 taxel pads and follow semhap's naming convention (sim/REA
   site home                 where a dropped container respawns (bimanual_sorting)
   body container            the container the left hand holds (bimanual_sorting)
 Run it after changing a dimension; the scenes are data, committed as generated.
+
+Speed (tests/bench/README.md, bench_sim): most of box_and_block's mj_step was the resting
+pile, ~46 contacts (4 per cube on the floor, 4 per stacked pair) and ~140 constraint rows
+rebuilt and solved every step. semhap's World now puts resting objects to sleep
+(sim/README.md), which roughly halves the cost; what is left is the grasp (32 taxel
+contacts) and whatever is awake near the hand. Tried here and not kept (callgrind counts or
+timings of the same scripted episode): solver CG 4.7x slower, PGS 20x slower; tolerance 1e-5
+or 1e-6 no gain (Newton already stops after 1 iteration on 97 % of steps); pyramidal cones
+2x slower (4 rows per contact instead of 3); dense Jacobian 2.5x slower; the box walls in
+static bodies of their own 0.2 %; solimp power 1 slower; impratio 1 4 % faster but creeps
+more (kept at 10). The timestep stays 2 ms: contact frames are one per step (tests/simrun).
 """
 import os
 

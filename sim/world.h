@@ -109,6 +109,12 @@ public:
     /** The region of site `name`; false when the scene has no such site. */
     bool region(const QString &name, Region *region) const;
 
+    /**
+     * Objects asleep now: at rest with nothing awake near them, they keep their pose without
+     * contacts until something comes near (sim/README.md, "Sleeping objects").
+     */
+    int sleepingObjects() const;
+
     /** The fractures of the last step. */
     const std::vector<Fracture> &fractures() const { return m_fractures; }
 
