@@ -21,6 +21,14 @@ constexpr int FractureSteps = 3;
 constexpr double ParkingDepth = -2.0;
 // Distinct bodies one fingertip is tracked touching at once; more are not told apart.
 constexpr int MaxTouched = 8;
+// Resting objects sleep (sim/README.md, "Sleeping objects"): still for this many steps in a
+// row, slower than these speeds, with nothing awake within WakeMargin.
+constexpr int SleepAfterSteps = 100;
+constexpr double StillSpeed = 0.002;       // m/s
+constexpr double StillAngularSpeed = 0.05; // rad/s
+// Clearance kept between anything awake and a sleeping object, on top of the distance the
+// awake thing covers in two steps: a sleeping object wakes before anything can touch it.
+constexpr double WakeMargin = 0.008; // m
 
 int id(const mjModel *m, mjtObj type, const QString &name)
 {
@@ -32,6 +40,36 @@ QString name(const mjModel *m, mjtObj type, int index)
     const char *text = mj_id2name(m, type, index);
     return text ? QString::fromUtf8(text) : QString();
 }
+
+/** An axis-aligned box in world coordinates. */
+struct Aabb
+{
+    std::array<double, 3> low{};
+    std::array<double, 3> high{};
+
+    bool overlaps(const Aabb &other) const
+    {
+        for (size_t i = 0; i < 3; ++i) {
+            if (low[i] > other.high[i] || other.low[i] > high[i])
+                return false;
+        }
+        return true;
+    }
+    void grow(double by)
+    {
+        for (size_t i = 0; i < 3; ++i) {
+            low[i] -= by;
+            high[i] += by;
+        }
+    }
+    void unite(const Aabb &other)
+    {
+        for (size_t i = 0; i < 3; ++i) {
+            low[i] = std::min(low[i], other.low[i]);
+            high[i] = std::max(high[i], other.high[i]);
+        }
+    }
+};
 
 } // namespace
 
@@ -74,8 +112,48 @@ struct World::Private
     long stepCount = 0;
     std::chrono::steady_clock::duration physics{};
 
+    /** A collidable geom and the contact bits it has while awake. */
+    struct Collider
+    {
+        int geom = -1;
+        int contype = 0;
+        int conaffinity = 0;
+    };
+    /** Per object: whether and since when it rests, and where it sleeps. */
+    struct Rest
+    {
+        bool canSleep = false; ///< a single free body with collidable geoms
+        bool asleep = false;
+        int stillSteps = 0;
+        std::vector<Collider> colliders;
+        std::array<double, 7> qpos{};
+        Aabb box; ///< while asleep: the box around it, margins included
+    };
+    std::vector<Rest> rests; ///< per object
+    /** Collidable geoms that move but never sleep (the grippers'), in body order. */
+    std::vector<int> moverGeoms;
+    int sleeping = 0;          ///< objects asleep now
+    std::vector<Aabb> awake;   ///< scratch: boxes around what is awake
+    std::vector<char> blocked; ///< scratch: per object, stays awake this step
+
     void extract(World &world, double t);
     void checkFractures(World &world, double t);
+    /** The box around a geom and its margin, as placed at the last step's start. */
+    Aabb geomBox(int geom) const;
+    /** An upper bound on the speed of `point`, fixed to `body`. */
+    double speedAt(int body, const double *point) const;
+    /** The box around an object; if `moving`, grown by the wake margin and 2 steps' travel. */
+    Aabb objectBox(const World &world, size_t object, bool moving) const;
+    /** Fills `awake` with the movers and the awake objects (only those `moving` marks). */
+    void collectAwake(const World &world, const std::vector<char> *moving);
+    /** Gives a sleeping object its contacts back (broken ones stay without). */
+    void wake(const World &world, size_t object);
+    /** Before a step: wakes what sleeps near anything awake, and what sleeps near those. */
+    void wakeNearAwake(const World &world);
+    /** After a step: sleeping objects stay exactly where they fell asleep, at rest. */
+    void holdSleeping(const World &world);
+    /** After a step: objects still long enough, with nothing awake near, fall asleep. */
+    void sleepResting(const World &world);
 };
 
 World::World() : d(std::make_unique<Private>()) {}
@@ -183,6 +261,35 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
     p.gripOnObject.assign(world->m_objects.size(), 0.0);
     p.overForceSteps.assign(world->m_objects.size(), 0);
 
+    // Sleeping: objects that are one free body (a joint further down would not stay put)
+    // with collidable geoms; the grippers' collidable geoms are what wakes them.
+    p.rests.resize(world->m_objects.size());
+    p.blocked.assign(world->m_objects.size(), 0);
+    for (size_t i = 0; i < world->m_objects.size(); ++i) {
+        const int body = world->m_objects[i].body;
+        Private::Rest &rest = p.rests[i];
+        bool single = true;
+        for (int b = 1; b < m->nbody; ++b)
+            single = single && (b == body || m->body_rootid[b] != body);
+        for (int geom = 0; geom < m->ngeom; ++geom) {
+            if (m->geom_bodyid[geom] == body &&
+                (m->geom_contype[geom] != 0 || m->geom_conaffinity[geom] != 0))
+                rest.colliders.push_back({geom, m->geom_contype[geom], m->geom_conaffinity[geom]});
+        }
+        rest.canSleep = single && !rest.colliders.empty();
+    }
+    // Whatever else can move and touch them wakes them: the grippers, and any other body
+    // with a joint or a mocap root (a user's scene may have more).
+    for (int geom = 0; geom < m->ngeom; ++geom) {
+        const int body = m->geom_bodyid[geom];
+        const int root = m->body_rootid[body];
+        const int object = p.objectOfBody[size_t(root)];
+        const bool sleeper = object >= 0 && p.rests[size_t(object)].canSleep;
+        const bool moves = m->body_weldid[body] != 0 || m->body_mocapid[root] >= 0;
+        if (!sleeper && moves && (m->geom_contype[geom] != 0 || m->geom_conaffinity[geom] != 0))
+            p.moverGeoms.push_back(geom);
+    }
+
     mj_forward(m, p.data.get());
     // Targets start where the grippers are, so nothing jumps at the first step.
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
@@ -205,13 +312,21 @@ double World::timestep() const
 void World::step()
 {
     const double t = d->data->time;
+    d->wakeNearAwake(*this);
     const auto start = std::chrono::steady_clock::now();
     mj_step(d->model.get(), d->data.get());
     d->physics += std::chrono::steady_clock::now() - start;
+    d->holdSleeping(*this);
     ++d->stepCount;
     m_fractures.clear();
     d->extract(*this, t);
     d->checkFractures(*this, t);
+    d->sleepResting(*this);
+}
+
+int World::sleepingObjects() const
+{
+    return d->sleeping;
 }
 
 double World::physicsSeconds() const
@@ -335,6 +450,7 @@ void World::Private::checkFractures(World &world, double t)
         overForceSteps[i] = gripOnObject[i] > object.fragileForce ? overForceSteps[i] + 1 : 0;
         if (overForceSteps[i] < FractureSteps)
             continue;
+        wake(world, i);
         object.broken = true;
         world.m_fractures.push_back({t, int(i), gripOnObject[i]});
         mjModel *m = model.get();
@@ -346,6 +462,201 @@ void World::Private::checkFractures(World &world, double t)
             }
         }
         world.placeObject(int(i), {0.0, 0.0, ParkingDepth});
+    }
+}
+
+Aabb World::Private::geomBox(int geom) const
+{
+    const mjModel *m = model.get();
+    const mjData *dd = data.get();
+    const mjtNum *centre = dd->geom_xpos + 3 * geom;
+    const mjtNum *size = m->geom_size + 3 * geom;
+    std::array<double, 3> half{};
+    if (m->geom_type[geom] == mjGEOM_BOX) {
+        // The rotated box's extent along each world axis (xmat is row-major, local to world).
+        const mjtNum *r = dd->geom_xmat + 9 * geom;
+        for (size_t i = 0; i < 3; ++i) {
+            half[i] = std::abs(r[3 * i]) * size[0] + std::abs(r[3 * i + 1]) * size[1] +
+                      std::abs(r[3 * i + 2]) * size[2];
+        }
+    } else {
+        const double radius = m->geom_type[geom] == mjGEOM_SPHERE ? size[0] : m->geom_rbound[geom];
+        half = {radius, radius, radius};
+    }
+    Aabb box;
+    for (size_t i = 0; i < 3; ++i) {
+        box.low[i] = centre[i] - half[i] - m->geom_margin[geom];
+        box.high[i] = centre[i] + half[i] + m->geom_margin[geom];
+    }
+    return box;
+}
+
+double World::Private::speedAt(int body, const double *point) const
+{
+    // cvel is [angular; linear] at the subtree centre of mass of the body's root.
+    const mjModel *m = model.get();
+    const mjData *dd = data.get();
+    const mjtNum *v = dd->cvel + 6 * body;
+    const mjtNum *com = dd->subtree_com + 3 * m->body_rootid[body];
+    double arm = 0.0;
+    for (int i = 0; i < 3; ++i)
+        arm += (point[i] - com[i]) * (point[i] - com[i]);
+    return std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) +
+           std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * std::sqrt(arm);
+}
+
+Aabb World::Private::objectBox(const World &world, size_t object, bool moving) const
+{
+    const Rest &rest = rests[object];
+    Aabb box = geomBox(rest.colliders.front().geom);
+    for (const Collider &c : rest.colliders)
+        box.unite(geomBox(c.geom));
+    if (moving) {
+        const int body = world.m_objects[object].body;
+        const mjtNum *centre = data->xpos + 3 * body;
+        box.grow(WakeMargin + 2 * model->opt.timestep * speedAt(body, centre));
+    }
+    return box;
+}
+
+void World::Private::collectAwake(const World &world, const std::vector<char> *moving)
+{
+    const double dt = model->opt.timestep;
+    awake.clear();
+    // One box per moving body (a finger's pad of taxels is one box): fewer tests, a little
+    // more caution.
+    for (size_t k = 0; k < moverGeoms.size();) {
+        const int body = model->geom_bodyid[moverGeoms[k]];
+        Aabb box = geomBox(moverGeoms[k]);
+        double speed = 0.0;
+        for (; k < moverGeoms.size() && model->geom_bodyid[moverGeoms[k]] == body; ++k) {
+            box.unite(geomBox(moverGeoms[k]));
+            speed = std::max(speed, speedAt(body, data->geom_xpos + 3 * moverGeoms[k]));
+        }
+        box.grow(WakeMargin + 2 * dt * speed);
+        awake.push_back(box);
+    }
+    for (size_t i = 0; i < rests.size(); ++i) {
+        if (!rests[i].asleep && !world.m_objects[i].broken && rests[i].canSleep &&
+            (!moving || (*moving)[i]))
+            awake.push_back(objectBox(world, i, true));
+    }
+}
+
+void World::Private::wake(const World &world, size_t object)
+{
+    Rest &rest = rests[object];
+    rest.stillSteps = 0;
+    if (!rest.asleep)
+        return;
+    rest.asleep = false;
+    --sleeping;
+    mjModel *m = model.get();
+    if (world.m_objects[object].broken)
+        return;
+    for (const Collider &c : rest.colliders) {
+        m->geom_contype[c.geom] = c.contype;
+        m->geom_conaffinity[c.geom] = c.conaffinity;
+    }
+}
+
+void World::Private::wakeNearAwake(const World &world)
+{
+    if (sleeping == 0)
+        return;
+    // Positions are those of the last step's start; the margins cover two steps' travel.
+    collectAwake(world, nullptr);
+    bool woke = true;
+    while (woke && sleeping > 0) {
+        woke = false;
+        for (size_t i = 0; i < rests.size(); ++i) {
+            if (!rests[i].asleep)
+                continue;
+            const Aabb &box = rests[i].box;
+            for (const Aabb &other : awake) {
+                if (box.overlaps(other)) {
+                    wake(world, i);
+                    // What it rests on or leans against wakes with it.
+                    awake.push_back(objectBox(world, i, true));
+                    woke = true;
+                    break;
+                }
+            }
+        }
+    }
+}
+
+void World::Private::holdSleeping(const World &world)
+{
+    if (sleeping == 0)
+        return;
+    const mjModel *m = model.get();
+    mjData *dd = data.get();
+    for (size_t i = 0; i < rests.size(); ++i) {
+        if (!rests[i].asleep)
+            continue;
+        const int joint = m->body_jntadr[world.m_objects[i].body];
+        std::copy(rests[i].qpos.begin(), rests[i].qpos.end(), dd->qpos + m->jnt_qposadr[joint]);
+        std::fill_n(dd->qvel + m->jnt_dofadr[joint], 6, 0.0);
+    }
+}
+
+void World::Private::sleepResting(const World &world)
+{
+    mjModel *m = model.get();
+    mjData *dd = data.get();
+    bool candidates = false;
+    for (size_t i = 0; i < rests.size(); ++i) {
+        Rest &rest = rests[i];
+        blocked[i] = 1;
+        if (!rest.canSleep || rest.asleep || world.m_objects[i].broken)
+            continue;
+        const mjtNum *v = dd->qvel + m->jnt_dofadr[m->body_jntadr[world.m_objects[i].body]];
+        const bool still =
+            v[0] * v[0] + v[1] * v[1] + v[2] * v[2] < StillSpeed * StillSpeed &&
+            v[3] * v[3] + v[4] * v[4] + v[5] * v[5] < StillAngularSpeed * StillAngularSpeed;
+        rest.stillSteps = still ? rest.stillSteps + 1 : 0;
+        if (rest.stillSteps >= SleepAfterSteps) {
+            blocked[i] = 0;
+            candidates = true;
+        }
+    }
+    if (!candidates)
+        return;
+    // What is awake and moving keeps the resting objects near it awake, and those keep the
+    // ones near them awake, and so on: objects that touch sleep and wake together.
+    collectAwake(world, &blocked);
+    bool more = true;
+    while (more) {
+        more = false;
+        for (size_t i = 0; i < rests.size(); ++i) {
+            if (blocked[i])
+                continue;
+            const Aabb box = objectBox(world, i, false);
+            for (const Aabb &other : awake) {
+                if (box.overlaps(other)) {
+                    blocked[i] = 1;
+                    awake.push_back(objectBox(world, i, true));
+                    more = true;
+                    break;
+                }
+            }
+        }
+    }
+    for (size_t i = 0; i < rests.size(); ++i) {
+        if (blocked[i])
+            continue;
+        Rest &rest = rests[i];
+        rest.asleep = true;
+        rest.box = objectBox(world, i, false);
+        ++sleeping;
+        const int joint = m->body_jntadr[world.m_objects[i].body];
+        std::copy_n(dd->qpos + m->jnt_qposadr[joint], 7, rest.qpos.begin());
+        std::fill_n(dd->qvel + m->jnt_dofadr[joint], 6, 0.0);
+        for (const Collider &c : rest.colliders) {
+            m->geom_contype[c.geom] = 0;
+            m->geom_conaffinity[c.geom] = 0;
+        }
     }
 }
 
@@ -475,6 +786,7 @@ void World::placeObject(int object, const std::array<double, 3> &pos)
     const mjtNum upright[4] = {1, 0, 0, 0};
     std::copy(upright, upright + 4, qpos + 3);
     std::fill(qvel, qvel + 6, 0.0);
+    d->wake(*this, size_t(object));
 }
 
 int World::sceneStateSize() const

@@ -122,6 +122,11 @@ public:
      * pose is not one of this scene's (another scene, another number of cubes).
      */
     bool setSceneState(const std::vector<double> &pose);
+    /**
+     * Objects asleep now: at rest with nothing awake near them, they keep their pose without
+     * contacts until something comes near (sim/README.md, "Sleeping objects").
+     */
+    int sleepingObjects() const;
 
     /** The fractures of the last step. */
     const std::vector<Fracture> &fractures() const { return m_fractures; }

@@ -56,10 +56,10 @@ void rampGrip(World &world, Gripper g, double force, double seconds)
     }
 }
 
-/** Puts the right gripper's pads around cube_0 (gripper origin 6 cm above the pad centre). */
-void graspCube(World &world, double force)
+/** Puts the right gripper's pads around a cube (gripper origin 6 cm above the pad centre). */
+void graspCube(World &world, double force, int object = 0)
 {
-    const auto cube = world.objectPosition(0);
+    const auto cube = world.objectPosition(object);
     world.setGrip(Gripper::Right, -10);
     moveTo(world, Gripper::Right, {cube[0], cube[1], cube[2] + 0.2}, 0.6);
     moveTo(world, Gripper::Right, {cube[0], cube[1], cube[2] + 0.06}, 0.6);
@@ -90,6 +90,7 @@ private slots:
     void manualInputDrivesTheGripper();
     void sceneStateRoundTrip_data();
     void sceneStateRoundTrip();
+    void restingCubesSleepUntilTouched();
 };
 
 void TestWorld::scenesLoad_data()
@@ -316,6 +317,31 @@ void TestWorld::sceneStateRoundTrip()
     std::unique_ptr<World> fewer = loadWorld(scene, 3);
     QVERIFY(!fewer->setSceneState(state));
     QVERIFY(!shown->setSceneState({}));
+}
+
+void TestWorld::restingCubesSleepUntilTouched()
+{
+    // The pile settles and sleeps; reaching for a top cube wakes it and the cube it rests on,
+    // the grasp then feels as it does on a cube that never slept, and the rest sleep on.
+    std::unique_ptr<World> world = loadWorld("box_and_block");
+    hold(*world, 0.5);
+    QCOMPARE(world->sleepingObjects(), 12);
+    const int top = world->objectIndex("cube_8"); // on cube_0
+    const auto before = world->objectPosition(top);
+    graspCube(*world, 40.0, top);
+    QCOMPARE(world->sleepingObjects(), 10);
+    const ContactFrame &frame = world->frame(Gripper::Right);
+    QVERIFY(std::abs(frame.totalForce() - 40.0) < 2.0);
+    QCOMPARE(frame.left.n, 16);
+    QCOMPARE(frame.right.n, 16);
+    QCOMPARE(frame.left.actor, world->objects()[size_t(top)].actor);
+    // It slept where it came to rest: the grasp found it there.
+    QVERIFY(std::abs(world->objectPosition(top)[0] - before[0]) < 0.002);
+    const auto target = world->target(Gripper::Right).pos;
+    moveTo(*world, Gripper::Right, {target[0], target[1], target[2] + 0.1}, 0.8);
+    hold(*world, 0.5);
+    QVERIFY(world->objectPosition(top)[2] - before[2] > 0.09);
+    QCOMPARE(world->sleepingObjects(), 11); // cube_0, left behind, sleeps again
 }
 
 QTEST_GUILESS_MAIN(TestWorld)
