@@ -21,6 +21,8 @@ constexpr int FractureSteps = 3;
 constexpr double ParkingDepth = -2.0;
 // Distinct bodies one fingertip is tracked touching at once; more are not told apart.
 constexpr int MaxTouched = 8;
+// Steps a fingertip's force is held while its force contacts drop out but it still touches.
+constexpr int MaxForceHoldSteps = 2;
 // Resting objects sleep (sim/README.md, "Sleeping objects"): still for this many steps in a
 // row, slower than these speeds, with nothing awake within WakeMargin.
 constexpr int SleepAfterSteps = 100;
@@ -89,6 +91,10 @@ struct World::Private
         std::array<double, 3> fworld{};
         std::array<Touch, MaxTouched> touched{};
         int touchedCount = 0;
+        // The last force reported, and for how many steps it has been held over a dropout.
+        double heldForce = 0.0;
+        std::array<double, 3> heldFworld{};
+        int heldSteps = 0;
     };
     struct Hand
     {
@@ -396,6 +402,23 @@ void World::Private::extract(World &world, double t)
         for (int axis = 0; axis < 3; ++axis) {
             for (int k = 0; k < 3; ++k)
                 tip.fworld[size_t(k)] += sign * local[axis] * contact.frame[3 * axis + k];
+        }
+    }
+
+    // Robust force: while an object slides, all of a fingertip's force contacts can drop
+    // out for a step or two although its taxels still touch (n holds; sim/README.md). A
+    // force sensor would not see such a gap; the detectors would (a grasp ending and
+    // beginning again, a slip detector reset), so the last force is held over it.
+    for (Tip &tip : tips) {
+        if (tip.force == 0.0 && tip.contacts > 0 && tip.heldForce > 0.0 &&
+            tip.heldSteps < MaxForceHoldSteps) {
+            tip.force = tip.heldForce;
+            tip.fworld = tip.heldFworld;
+            ++tip.heldSteps;
+        } else {
+            tip.heldForce = tip.force;
+            tip.heldFworld = tip.fworld;
+            tip.heldSteps = 0;
         }
     }
 

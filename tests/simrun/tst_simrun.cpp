@@ -91,6 +91,7 @@ private slots:
     void commandLineErrors_data();
     void commandLineErrors();
     void compareShardsMergeToTheWholeGrid();
+    void forceHoldsWhileTouching();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -294,6 +295,52 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
     const CliResult refused = semhapRun({"compare", "--merge", dir.filePath("bad.csv")});
     QCOMPARE(refused.code, 1);
     QVERIFY(refused.err.contains("bad.csv:1: not a semhap compare CSV"));
+}
+
+void TestSimRun::forceHoldsWhileTouching()
+{
+    // The bimanual task's first seconds: the left hand closes on the container and the right
+    // picks a cube, each grasp with a slide that once made force contacts drop out for single
+    // steps (and the detectors end and begin their grasps). The force is held over them.
+    RunOptions options;
+    options.scene = "bimanual_sorting";
+    options.duration = 8.0;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    QVERIFY2(run, qPrintable(error));
+    struct Frames : RunSink
+    {
+        std::array<std::vector<ContactFrame>, 2> byHand;
+        QStringList begins;
+        const Router *router = nullptr;
+        void onContactFrame(const ContactFrame &frame) override
+        {
+            byHand[size_t(frame.gripper)].push_back(frame);
+        }
+        void onEvent(const SemanticEvent &event) override
+        {
+            if (event.phase == EventPhase::Begin && event.message == Message::Grasp)
+                begins << router->nodeIds().at(event.node);
+        }
+    } sink;
+    sink.router = &run->pipeline().router();
+    while (run->step(sink)) {
+    }
+    int touching = 0;
+    for (const std::vector<ContactFrame> &frames : sink.byHand) {
+        for (size_t i = 1; i + 1 < frames.size(); ++i) {
+            const ContactFrame &frame = frames[i];
+            const int n = frame.left.n + frame.right.n;
+            touching += n > 0 ? 1 : 0;
+            const bool dropout = frame.totalForce() == 0.0 && n > 0 &&
+                                 frames[i - 1].totalForce() > 0.0 &&
+                                 frames[i + 1].totalForce() > 0.0;
+            QVERIFY2(!dropout, qPrintable(QString::number(frame.t)));
+        }
+    }
+    QVERIFY(touching > 1000);
+    // One grasp each while the container is held and the first cube picked.
+    QCOMPARE(sink.begins.count("left.slip"), 1);
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
