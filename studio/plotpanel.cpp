@@ -8,6 +8,7 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QMouseEvent>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QTextStream>
 #include <QToolButton>
@@ -208,7 +209,15 @@ PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     layout->addLayout(toolbar);
-    layout->addWidget(m_plot, 1);
+    // Many devices (both hands, a live rig) want more height than a dock has: rather than
+    // squash every rect to a strip, the plot keeps its rects readable and scrolls.
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("plotScroll"));
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(m_plot);
+    layout->addWidget(scroll, 1);
 
     connect(m_pauseButton, &QToolButton::toggled, this, &PlotPanel::setPaused);
     connect(m_liveButton, &QToolButton::clicked, this, &PlotPanel::goLive);
@@ -307,6 +316,7 @@ void PlotPanel::rebuild()
         m_cursorLines.push_back(line);
     }
     updateInteractions();
+    m_plot->updateGeometry(); // the scroll area reads the new rects' minimum height
 }
 
 QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
@@ -315,8 +325,8 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_marginGroup);
     rect->setRangeDrag(Qt::Horizontal);
     rect->setRangeZoom(Qt::Horizontal);
-    // The forces and counts keep room to read; device rects may shrink to a strip.
-    rect->setMinimumSize(0, stretch >= 3 ? 60 : 24);
+    // Each rect keeps room to read its curves and labels; past that the panel scrolls.
+    rect->setMinimumSize(0, stretch >= 5 ? 90 : stretch >= 3 ? 56 : 40);
     QCPAxis *time = rect->axis(QCPAxis::atBottom);
     time->setTickLabels(false);
     time->setPadding(0);

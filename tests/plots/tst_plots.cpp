@@ -6,6 +6,8 @@
 
 #include <QFile>
 #include <QLabel>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
@@ -152,6 +154,7 @@ private slots:
     void exportCsv();
     void exportPng();
     void resetClears();
+    void manyDevicesScroll();
 
 private:
     QCPAxis *timeAxis() const { return m_plot->axisRect(0)->axis(QCPAxis::atBottom); }
@@ -432,6 +435,32 @@ void TestPlots::resetClears()
     appendTicks(*m_history, 0, 3);
     m_history->commit();
     QCOMPARE(graphNamed(m_plot, "right.F")->dataCount(), 4);
+}
+
+void TestPlots::manyDevicesScroll()
+{
+    // Both hands and seven devices (the bimanual task, a live rig) in a short dock: every
+    // rect keeps room to be read and the panel scrolls, rather than squash them to strips.
+    std::array<GripperThresholds, 2> thresholds{};
+    thresholds[size_t(Gripper::Right)] = rightThresholds();
+    thresholds[size_t(Gripper::Left)] = rightThresholds();
+    std::vector<LiveDevice> devices;
+    for (int d = 0; d < 7; ++d)
+        devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
+    m_history->start(devices, thresholds, {"right.force", "right.slip"});
+    m_panel->resize(640, 600);
+    QTest::qWait(50);
+    m_plot->replot();
+    auto *scroll = m_panel->findChild<QScrollArea *>("plotScroll");
+    QVERIFY(scroll);
+    QCOMPARE(m_plot->axisRectCount(), 4 + 7);
+    for (int i = 0; i < m_plot->axisRectCount(); ++i)
+        QVERIFY2(m_plot->axisRect(i)->height() >= 40, qPrintable(QString::number(i)));
+    QVERIFY(scroll->verticalScrollBar()->maximum() > 0);
+    // Tall enough, it fits without scrolling.
+    m_panel->resize(640, 1400);
+    QTest::qWait(50);
+    QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);
 }
 
 QTEST_MAIN(TestPlots)
