@@ -98,7 +98,7 @@ void TestSessionCli::recordingChangesNoOutput()
     QCOMPARE(r.code, 0);
     for (const char *stream : {"events", "devices", "frames"}) {
         const QByteArray with = contents(m_dir.filePath(QString("with.") + stream));
-        QVERIFY(with.count('\n') > 10);
+        QVERIFY(with.count('\n') > 5); // a grasp of each hand and a slip, at least
         QCOMPARE(with, contents(m_dir.filePath(QString("without.") + stream)));
     }
 }
@@ -144,7 +144,7 @@ void TestSessionCli::rerouteEqualsRoute()
             {"route", "--router", "C1", "--frames", jsonl + "/frames.jsonl", stream, "-"});
         QCOMPARE(replay.code, 0);
         QCOMPARE(route.code, 0);
-        QVERIFY(route.out.count('\n') > 10);
+        QVERIFY(route.out.count('\n') > 5);
         QCOMPARE(replay.out, route.out);
     }
     // C1 confirms on the vibration band where C3 squeezes: a different design indeed.
