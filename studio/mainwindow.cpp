@@ -42,6 +42,9 @@ constexpr double Speeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0};
 constexpr int RealTimeIndex = 3;
 constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
+/** The scene picker's entry for a live rig (not a scene file or name). */
+const QString LiveRigEntry = QStringLiteral("semhap:live-rig");
+
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
 
@@ -300,9 +303,10 @@ void MainWindow::createToolBar()
     bar->addWidget(new QLabel(tr("Scene:"), bar));
     m_scenePicker = new QComboBox(bar);
     m_scenePicker->setObjectName(QStringLiteral("scenePicker"));
-    m_scenePicker->setToolTip(tr("The task to simulate"));
+    m_scenePicker->setToolTip(tr("The task to simulate, or a live rig's frames"));
     for (const QString &name : World::builtinScenes())
         m_scenePicker->addItem(name, name);
+    m_scenePicker->addItem(tr("Live rig (UDP)…"), LiveRigEntry);
     connect(m_scenePicker, &QComboBox::activated, this, &MainWindow::pickScene);
     bar->addWidget(m_scenePicker);
 
@@ -652,6 +656,12 @@ void MainWindow::setSpeedIndex(int index)
 
 void MainWindow::pickScene(int index)
 {
+    if (m_scenePicker->itemData(index).toString() == LiveRigEntry) {
+        if (!m_engine.isLive())
+            m_listenAction->trigger();
+        syncPickers(); // cancelled, it shows what runs
+        return;
+    }
     RunOptions options = m_engine.options();
     options.scene = m_scenePicker->itemData(index).toString();
     options.sceneOptions = SceneOptions();
@@ -676,7 +686,7 @@ void MainWindow::syncPickers()
         }
         picker->setCurrentIndex(index);
     };
-    sync(m_scenePicker, m_engine.options().scene);
+    sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
     sync(m_routerPicker, m_engine.options().router);
     int speed = RealTimeIndex;
     for (int i = 0; i < SpeedCount; ++i) {

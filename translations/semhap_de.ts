@@ -542,10 +542,6 @@
         <translation>Szene:</translation>
     </message>
     <message>
-        <source>The task to simulate</source>
-        <translation>Die zu simulierende Aufgabe</translation>
-    </message>
-    <message>
         <source>Router:</source>
         <translation>Router:</translation>
     </message>
@@ -776,6 +772,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
         <translation>Benennt die Datei der nächsten Aufzeichnung (leer: Szene, Router und Zeit); Datei → Einstellungen legt fest, wohin sie geht</translation>
+    </message>
+    <message>
+        <source>The task to simulate, or a live rig&apos;s frames</source>
+        <translation>Die zu simulierende Aufgabe oder die Frames eines Live-Rigs</translation>
+    </message>
+    <message>
+        <source>Live rig (UDP)…</source>
+        <translation>Live-Rig (UDP)…</translation>
     </message>
 </context>
 <context>

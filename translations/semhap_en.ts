@@ -542,10 +542,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The task to simulate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Router:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -774,6 +770,14 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The task to simulate, or a live rig&apos;s frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig (UDP)…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

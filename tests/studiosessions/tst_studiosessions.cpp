@@ -320,6 +320,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().isRunning());
     QCOMPARE(window.engine().liveUri(), QStringLiteral("udp:127.0.0.1:%1").arg(port));
     QVERIFY(window.windowTitle().contains("live rig"));
+    QCOMPARE(window.scenePicker()->currentText(), QString("Live rig (UDP)…"));
     QVERIFY(window.viewport()->placeholder().startsWith("Live rig on udp:127.0.0.1"));
     // What only the simulation has is off: stepping, pacing, driving.
     for (const char *name : {"stepAction", "teleopAction", "fasterAction", "slowerAction"})
@@ -380,6 +381,24 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().world());
     QVERIFY(window.viewport()->placeholder().isEmpty());
     QVERIFY(window.findChild<QAction *>("stepAction")->isEnabled());
+
+    // The picker's "Live rig" entry asks where to listen; cancelled, the scene stays.
+    const int live = scene->findData("semhap:live-rig");
+    QCOMPARE(live, scene->count() - 1);
+    while (scene->currentIndex() != live - 1)
+        QTest::keyClick(scene, Qt::Key_Down);
+    const QString before = scene->currentData().toString();
+    bool asked = false;
+    QTimer::singleShot(0, this, [&asked] {
+        auto *dialog = qobject_cast<LiveRigDialog *>(QApplication::activeModalWidget());
+        asked = dialog != nullptr;
+        if (dialog)
+            dialog->reject();
+    });
+    QTest::keyClick(scene, Qt::Key_Down);
+    QVERIFY(asked);
+    QVERIFY(!window.engine().isLive());
+    QCOMPARE(scene->currentData().toString(), before);
 }
 
 void TestStudioSessions::cleanupTestCase()
