@@ -32,6 +32,14 @@ const QStringList &metricKeys()
                                   QStringLiteral("transfers_per_container_cycle"),
                                   QStringLiteral("warning_lead_time"),
                                   QStringLiteral("breaks_warned_share"),
+                                  QStringLiteral("breaks_warned_in_time_share"),
+                                  QStringLiteral("drop_warning_lead_time"),
+                                  QStringLiteral("drops_warned_share"),
+                                  QStringLiteral("drops_warned_in_time_share"),
+                                  QStringLiteral("confirmations_per_grasp"),
+                                  QStringLiteral("slip_episodes"),
+                                  QStringLiteral("warnings_per_slip_episode"),
+                                  QStringLiteral("box_refills"),
                                   QStringLiteral("realtime_factor")};
     return keys;
 }

@@ -29,6 +29,12 @@ struct Feeling
 };
 
 /**
+ * A person's reaction time to a cue on the wrist (s): the reactive operator's delay and how
+ * early a warning must be felt to count as in time (docs/metrics.md).
+ */
+constexpr double DefaultReactionTime = 0.25;
+
+/**
  * Drives the grippers: sets pose targets and grip forces before each physics step. The
  * scripted operators here, the studio's keyboard and mouse, and live rigs over the network
  * all implement this one interface.

@@ -26,7 +26,7 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
         return nullptr;
     run->m_perception = std::make_unique<Perception>(*router);
     run->m_pipeline = std::make_unique<Pipeline>(std::move(router));
-    run->m_task = std::make_unique<TaskMonitor>(*run->m_world);
+    run->m_task = std::make_unique<TaskMonitor>(*run->m_world, options.reactionTime);
     run->m_totalSteps = std::lround(options.duration / run->m_world->timestep());
     return run;
 }
@@ -63,8 +63,7 @@ bool SimRun::step(RunSink &sink)
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         const Feeling feeling = m_perception->feeling(g);
         driver.feel(g, feeling, t);
-        m_task->setWarningFelt(
-            g, std::max(feeling.warning, feeling.shownWarning) >= Perception::Noticeable, t);
+        m_task->feel(g, feeling, t);
     }
     ++m_steps;
     return !isDone();

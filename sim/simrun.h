@@ -28,8 +28,8 @@ struct RunOptions
     QStringList overrides; ///< NODE.PARAM=VALUE
     QString operatorName = QStringLiteral("scripted");
     std::uint64_t seed = 1;
-    double duration = 60.0;     ///< simulated seconds
-    double reactionTime = 0.25; ///< the reactive operator's delay (s)
+    double duration = 60.0;                    ///< simulated seconds
+    double reactionTime = DefaultReactionTime; ///< the reactive operator's delay (s)
 };
 
 /** Receives a run's streams: contact frames besides the pipeline's events and frames. */

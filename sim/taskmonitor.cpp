@@ -3,6 +3,7 @@
 
 #include "perception.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace semhap {
@@ -17,6 +18,18 @@ constexpr double AtRest = 0.05;
 // has fallen this far (m) below where it was held.
 constexpr double LostAfter = 0.25;
 constexpr double FallenBy = 0.02;
+// A slip episode: the container slides in the fingertips faster than SlipSpeed (m/s, its
+// speed relative to the gripper smoothed over SlipSmoothing s), and is over once it has
+// been slower for SlipQuiet s (or has left the fingertips).
+constexpr double SlipSpeed = 0.005;
+constexpr double SlipSmoothing = 0.02;
+constexpr double SlipQuiet = 0.2;
+// The container counts as off its base this far from the home site (m).
+constexpr double OffHome = 0.02;
+// Cubes returned to the box go to where the scene started them, or this much higher per
+// layer while that spot is taken (m).
+constexpr double Layer = 0.052;
+constexpr int Layers = 4;
 
 double speed(const std::array<double, 3> &v)
 {
@@ -28,11 +41,55 @@ QJsonValue mean(double sum, double count)
     return count > 0 ? QJsonValue(sum / count) : QJsonValue(QJsonValue::Null);
 }
 
+/** `p` in the frame of `pose`: R^T (p - pos), R from the unit quaternion (w, x, y, z). */
+std::array<double, 3> toFrame(const Pose &pose, const std::array<double, 3> &p)
+{
+    const auto &[w, x, y, z] = pose.quat;
+    const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                            {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+    std::array<double, 3> d{p[0] - pose.pos[0], p[1] - pose.pos[1], p[2] - pose.pos[2]};
+    std::array<double, 3> out{};
+    for (size_t i = 0; i < 3; ++i)
+        out[i] = r[0][i] * d[0] + r[1][i] * d[1] + r[2][i] * d[2];
+    return out;
+}
+
 } // namespace
 
-TaskMonitor::TaskMonitor(const World &world) : m_transferred(world.objects().size(), false)
+void TaskMonitor::Cue::feel(bool felt, double t)
+{
+    // A pulsed warning (Geiger, 5 Hz) is one cue while its pulses keep coming.
+    if (!felt)
+        return;
+    if (!feltAt(t)) {
+        since = t;
+        ++onsets;
+    }
+    lastFelt = t;
+}
+
+bool TaskMonitor::Cue::feltAt(double t) const
+{
+    return lastFelt >= 0 && t - lastFelt <= Perception::PulseGap;
+}
+
+void TaskMonitor::Failures::add(double t, const Cue &warning, double reactionTime)
+{
+    ++count;
+    if (!warning.feltAt(t))
+        return;
+    ++warned;
+    leadTimeSum += t - warning.since;
+    if (t - warning.since >= reactionTime)
+        ++inTime;
+}
+
+TaskMonitor::TaskMonitor(const World &world, double reactionTime)
+    : m_reactionTime(reactionTime), m_transferred(world.objects().size(), false)
 {
     m_hasPlace = world.region(QStringLiteral("place"), &m_place);
+    m_hasPick = world.region(QStringLiteral("pick"), &m_pick);
     m_container = world.objectIndex(QStringLiteral("container"));
     if (m_container >= 0 && !world.region(QStringLiteral("home"), &m_home))
         m_container = -1;
@@ -40,28 +97,23 @@ TaskMonitor::TaskMonitor(const World &world) : m_transferred(world.objects().siz
 
 void TaskMonitor::observe(World &world)
 {
-    for (const Fracture &fracture : world.fractures()) {
-        ++m_broken;
-        if (m_lastFelt >= 0 && fracture.t - m_lastFelt <= Perception::PulseGap) {
-            ++m_warnedBreaks;
-            m_leadTimeSum += fracture.t - m_warningSince;
-        }
-    }
+    // Breaks happen in the picking (right) hand; its warnings are the ones that count.
+    for (const Fracture &fracture : world.fractures())
+        m_breaks.add(fracture.t, m_warnings[size_t(Gripper::Right)], m_reactionTime);
     observeGrasp(world);
     observeTransfers(world);
     if (m_container >= 0)
         observeContainer(world);
+    refill(world);
 }
 
-void TaskMonitor::setWarningFelt(Gripper hand, bool felt, double t)
+void TaskMonitor::feel(Gripper hand, const Feeling &feeling, double t)
 {
-    // Breaks happen in the picking (right) hand; its warnings are the ones that count. A
-    // pulsed warning (Geiger, 5 Hz) is one warning while its pulses keep coming.
-    if (hand != Gripper::Right || !felt)
-        return;
-    if (m_lastFelt < 0 || t - m_lastFelt > Perception::PulseGap)
-        m_warningSince = t;
-    m_lastFelt = t;
+    const auto felt = [](double band, double shown) {
+        return std::max(band, shown) >= Perception::Noticeable;
+    };
+    m_warnings[size_t(hand)].feel(felt(feeling.warning, feeling.shownWarning), t);
+    m_confirmations[size_t(hand)].feel(felt(feeling.confirmation, feeling.shownConfirmation), t);
 }
 
 void TaskMonitor::observeGrasp(World &world)
@@ -134,8 +186,20 @@ void TaskMonitor::observeContainer(World &world)
     const ContactFrame &frame = world.frame(Gripper::Left);
     const bool held = frame.left.actor == actor && frame.right.actor == actor;
     const double z = world.objectPosition(m_container)[2];
+    observeContainerSlip(world, held);
+    if (!m_containerDown && !m_containerHeld && !held) {
+        // Knocked off its base (by the other hand, or respawned onto a spilled cube): the
+        // same rule as a drop, without counting one.
+        const auto pos = world.objectPosition(m_container);
+        if (std::hypot(pos[0] - m_home.center[0], pos[1] - m_home.center[1]) > OffHome &&
+            speed(world.objectVelocity(m_container)) < AtRest) {
+            m_containerDown = true;
+            m_containerDroppedAt = t;
+        }
+    }
     if (m_containerDown) {
         if (t - m_containerDroppedAt >= RespawnPenalty) {
+            clearHome(world);
             world.placeObject(m_container, m_home.center);
             m_containerDown = false;
         }
@@ -145,41 +209,164 @@ void TaskMonitor::observeContainer(World &world)
         // The highest it was held: a slipping container slides down between the fingertips
         // before it leaves them.
         m_heldHeight = m_containerHeld ? std::max(m_heldHeight, z) : z;
+        if (!m_containerHeld)
+            ++m_holds;
         m_containerHeld = true;
         m_containerLostAt = -1.0;
         return;
     }
     if (!m_containerHeld)
         return;
-    if (m_containerLostAt < 0)
+    if (m_containerLostAt < 0) {
+        // The failure is the moment it left the fingertips: what was felt up to then counts.
         m_containerLostAt = t;
+        m_warningAtLoss = m_warnings[size_t(Gripper::Left)];
+    }
     if (t - m_containerLostAt >= LostAfter && z < m_heldHeight - FallenBy) {
-        ++m_containersDropped;
+        m_drops.add(m_containerLostAt, m_warningAtLoss, m_reactionTime);
         m_containerHeld = false;
         m_containerDown = true;
         m_containerDroppedAt = t;
     }
 }
 
+void TaskMonitor::observeContainerSlip(const World &world, bool held)
+{
+    if (!held) {
+        m_hasRelative = false;
+        m_slipping = false;
+        m_slipSpeed = 0.0;
+        return;
+    }
+    const std::array<double, 3> relative =
+        toFrame(world.gripperPose(Gripper::Left), world.objectPosition(m_container));
+    const double t = world.time();
+    if (m_hasRelative) {
+        const double dt = world.timestep();
+        const std::array<double, 3> delta{relative[0] - m_relative[0], relative[1] - m_relative[1],
+                                          relative[2] - m_relative[2]};
+        m_slipSpeed += (speed(delta) / dt - m_slipSpeed) * std::min(1.0, dt / SlipSmoothing);
+    }
+    m_relative = relative;
+    m_hasRelative = true;
+    if (m_slipSpeed > SlipSpeed) {
+        if (!m_slipping)
+            ++m_slipEpisodes;
+        m_slipping = true;
+        m_slipQuietSince = t;
+    } else if (m_slipping && t - m_slipQuietSince >= SlipQuiet) {
+        m_slipping = false;
+    }
+}
+
+void TaskMonitor::refill(World &world)
+{
+    // The experimenter refills the cube box once it is empty (the paper's participants
+    // repeated the task for as long as it lasted): every cube out of play — transferred,
+    // dropped, spilled or broken — goes back to where the scene started it. Cubes in hand or
+    // in the held container stay; the refill waits until the hand is open and every cube has
+    // come to rest.
+    if (!m_hasPick || m_grasped >= 0 || world.grip(Gripper::Right) > 0)
+        return;
+    const auto &objects = world.objects();
+    const auto isCube = [&](size_t i) {
+        return int(i) != m_container && objects[i].name.startsWith(QLatin1String("cube"));
+    };
+    for (size_t i = 0; i < objects.size(); ++i) {
+        // Not while a cube is still on its way (it may yet land in the box or count).
+        if (isCube(i) && !objects[i].broken &&
+            (m_pick.contains(world.objectPosition(int(i))) ||
+             speed(world.objectVelocity(int(i))) >= AtRest))
+            return;
+    }
+    std::array<double, 3> container{};
+    if (m_container >= 0)
+        container = world.objectPosition(m_container);
+    const SceneObject *walls = m_container >= 0 ? &objects[size_t(m_container)] : nullptr;
+    bool any = false;
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (!isCube(i))
+            continue;
+        const auto pos = world.objectPosition(int(i));
+        const bool inContainer = walls && m_containerHeld &&
+                                 std::abs(pos[0] - container[0]) < walls->upper[0] &&
+                                 std::abs(pos[1] - container[1]) < walls->upper[1];
+        if (inContainer && !objects[i].broken)
+            continue;
+        returnToBox(world, int(i));
+        any = true;
+    }
+    if (any)
+        ++m_refills;
+}
+
+void TaskMonitor::clearHome(World &world)
+{
+    // A cube spilled onto the base would tip the respawned container over: it goes back.
+    const double reach = world.objects()[size_t(m_container)].upper[0] + 0.04;
+    for (size_t i = 0; i < world.objects().size(); ++i) {
+        const auto pos = world.objectPosition(int(i));
+        if (int(i) != m_container && !world.objects()[i].broken &&
+            std::hypot(pos[0] - m_home.center[0], pos[1] - m_home.center[1]) < reach)
+            returnToBox(world, int(i));
+    }
+}
+
+void TaskMonitor::returnToBox(World &world, int object)
+{
+    const auto home = world.homePosition(object);
+    for (int layer = 0; layer < Layers; ++layer) {
+        const std::array<double, 3> spot{home[0], home[1], home[2] + layer * Layer};
+        bool free = true;
+        for (size_t i = 0; i < world.objects().size() && free; ++i) {
+            const auto pos = world.objectPosition(int(i));
+            free = int(i) == object || world.objects()[i].broken ||
+                   std::max({std::abs(pos[0] - spot[0]), std::abs(pos[1] - spot[1]),
+                             std::abs(pos[2] - spot[2])}) > Layer;
+        }
+        if (free) {
+            world.restoreObject(object, spot);
+            m_transferred[size_t(object)] = false;
+            return;
+        }
+    }
+}
+
 QJsonObject TaskMonitor::metrics() const
 {
+    const int breaks = m_breaks.count;
     QJsonObject metrics{
         {QStringLiteral("cubes_transferred"), m_transfers},
         {QStringLiteral("cubes_dropped"), m_dropped},
-        {QStringLiteral("cubes_broken"), m_broken},
+        {QStringLiteral("cubes_broken"), breaks},
         {QStringLiteral("grasps"), m_grasps},
         {QStringLiteral("average_grasp_force"), mean(m_graspForceSum, double(m_graspSteps))},
         {QStringLiteral("grasps_per_transfer"), mean(m_grasps, m_transfers)},
         {QStringLiteral("average_peak_grasp_force"),
          mean(m_peakSum + (m_grasped >= 0 ? m_peak : 0.0), m_grasps)},
-        {QStringLiteral("warning_lead_time"), mean(m_leadTimeSum, m_warnedBreaks)},
-        {QStringLiteral("breaks_warned_share"), mean(m_warnedBreaks, m_broken)},
+        {QStringLiteral("warning_lead_time"), mean(m_breaks.leadTimeSum, m_breaks.warned)},
+        {QStringLiteral("breaks_warned_share"), mean(m_breaks.warned, breaks)},
+        {QStringLiteral("breaks_warned_in_time_share"), mean(m_breaks.inTime, breaks)},
+        {QStringLiteral("box_refills"), m_refills},
     };
+    int confirmations = m_confirmations[size_t(Gripper::Right)].onsets;
+    int grasps = m_grasps;
     if (m_container >= 0) {
-        metrics.insert(QStringLiteral("containers_dropped"), m_containersDropped);
+        const int drops = m_drops.count;
+        metrics.insert(QStringLiteral("containers_dropped"), drops);
         metrics.insert(QStringLiteral("transfers_per_container_cycle"),
-                       double(m_transfers) / (m_containersDropped + 1));
+                       double(m_transfers) / (drops + 1));
+        metrics.insert(QStringLiteral("drop_warning_lead_time"),
+                       mean(m_drops.leadTimeSum, m_drops.warned));
+        metrics.insert(QStringLiteral("drops_warned_share"), mean(m_drops.warned, drops));
+        metrics.insert(QStringLiteral("drops_warned_in_time_share"), mean(m_drops.inTime, drops));
+        metrics.insert(QStringLiteral("slip_episodes"), m_slipEpisodes);
+        metrics.insert(QStringLiteral("warnings_per_slip_episode"),
+                       mean(m_warnings[size_t(Gripper::Left)].onsets, m_slipEpisodes));
+        confirmations += m_confirmations[size_t(Gripper::Left)].onsets;
+        grasps += m_holds;
     }
+    metrics.insert(QStringLiteral("confirmations_per_grasp"), mean(confirmations, grasps));
     return metrics;
 }
 

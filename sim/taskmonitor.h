@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "operator.h"
 #include "world.h"
 
 #include <QJsonObject>
@@ -11,18 +12,21 @@ namespace semhap {
 
 /**
  * The task a scene poses: its rules (a dropped container respawns on its home site after a
- * 2 s penalty) and its metrics, as the paper reports them, plus the warning lead time. The
- * definitions are in docs/metrics.md. Call observe() after every physics step.
+ * 2 s penalty; an emptied cube box is refilled) and its metrics, as the paper reports them,
+ * plus how early each failure was warned of and how often a message was felt per grasp and
+ * per slip. The definitions are in docs/metrics.md. Call observe() after every physics step
+ * and feel() with what each hand perceives.
  */
 class TaskMonitor
 {
 public:
-    explicit TaskMonitor(const World &world);
+    /** `reactionTime`: how long before a failure a warning must be felt to count in time. */
+    explicit TaskMonitor(const World &world, double reactionTime = DefaultReactionTime);
 
     /** Applies the rules and counts, after a physics step. */
     void observe(World &world);
-    /** Whether the operator perceives a warning about `hand` now (from Perception). */
-    void setWarningFelt(Gripper hand, bool felt, double t);
+    /** What the operator perceives of `hand` now (from Perception). */
+    void feel(Gripper hand, const Feeling &feeling, double t);
 
     /** The metrics so far, snake_case keys; averages over nothing are null. */
     QJsonObject metrics() const;
@@ -30,12 +34,43 @@ public:
     static constexpr double RespawnPenalty = 2.0;
 
 private:
+    /** A message as the operator perceives it: one while its pulses keep coming. */
+    struct Cue
+    {
+        double lastFelt = -1.0; ///< last time it was perceptible, -1: never
+        double since = 0.0;     ///< when the cue felt last began
+        int onsets = 0;
+
+        void feel(bool felt, double t);
+        /** Whether it was felt at `t` (its pulses had not stopped). */
+        bool feltAt(double t) const;
+    };
+    /** Warnings before one kind of failure. */
+    struct Failures
+    {
+        int count = 0;
+        int warned = 0;
+        int inTime = 0;
+        double leadTimeSum = 0.0;
+
+        void add(double t, const Cue &warning, double reactionTime);
+    };
+
     void observeGrasp(World &world);
     void observeTransfers(const World &world);
     void observeContainer(World &world);
+    void observeContainerSlip(const World &world, bool held);
+    void refill(World &world);
+    /** Returns the cubes on the container's base to the box, before it respawns there. */
+    void clearHome(World &world);
+    /** Puts a cube (whole again) where the scene started it, or above if that is taken. */
+    void returnToBox(World &world, int object);
 
+    double m_reactionTime;
     Region m_place;
     bool m_hasPlace = false;
+    Region m_pick;
+    bool m_hasPick = false;
     int m_container = -1;
     Region m_home;
 
@@ -48,23 +83,31 @@ private:
     double m_peak = 0.0;
     double m_peakSum = 0.0;
     int m_dropped = 0;
-    int m_broken = 0;
     std::vector<bool> m_transferred;
     int m_transfers = 0;
+    int m_refills = 0;
 
-    // Warnings felt before fractures.
-    double m_lastFelt = -1.0;    ///< last time a warning was perceptible, -1: never
-    double m_warningSince = 0.0; ///< when the warning felt last began
-    int m_warnedBreaks = 0;
-    double m_leadTimeSum = 0.0;
+    // What each hand felt, and the failures it was warned of.
+    std::array<Cue, 2> m_warnings{};
+    std::array<Cue, 2> m_confirmations{};
+    Failures m_breaks;
+    Failures m_drops;
 
     // The container (bimanual).
     bool m_containerHeld = false;
+    int m_holds = 0;
     double m_containerLostAt = -1.0;
+    Cue m_warningAtLoss; ///< the left hand's warning as it was when the container left it
     double m_heldHeight = 0.0;
     bool m_containerDown = false;
     double m_containerDroppedAt = 0.0;
-    int m_containersDropped = 0;
+    // Slip episodes: the container sliding in the left fingertips.
+    bool m_hasRelative = false;
+    std::array<double, 3> m_relative{}; ///< the container in the gripper frame, last step
+    double m_slipSpeed = 0.0;           ///< smoothed, m/s
+    bool m_slipping = false;
+    double m_slipQuietSince = 0.0;
+    int m_slipEpisodes = 0;
 };
 
 } // namespace semhap

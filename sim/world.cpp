@@ -133,7 +133,8 @@ struct World::Private
         int stillSteps = 0;
         std::vector<Collider> colliders;
         std::array<double, 7> qpos{};
-        Aabb box; ///< while asleep: the box around it, margins included
+        std::vector<float> alphas; ///< while broken: each geom's alpha before it vanished
+        Aabb box;                  ///< while asleep: the box around it, margins included
     };
     std::vector<Rest> rests; ///< per object
     /** Collidable geoms that move but never sleep (the grippers'), in body order. */
@@ -477,10 +478,13 @@ void World::Private::checkFractures(World &world, double t)
         object.broken = true;
         world.m_fractures.push_back({t, int(i), gripOnObject[i]});
         mjModel *m = model.get();
+        std::vector<float> &alphas = rests[i].alphas;
+        alphas.clear();
         for (int geom = 0; geom < m->ngeom; ++geom) {
             if (m->geom_bodyid[geom] == object.body) {
                 m->geom_contype[geom] = 0;
                 m->geom_conaffinity[geom] = 0;
+                alphas.push_back(m->geom_rgba[4 * geom + 3]);
                 m->geom_rgba[4 * geom + 3] = 0.0f;
             }
         }
@@ -810,6 +814,36 @@ void World::placeObject(int object, const std::array<double, 3> &pos)
     std::copy(upright, upright + 4, qpos + 3);
     std::fill(qvel, qvel + 6, 0.0);
     d->wake(*this, size_t(object));
+}
+
+std::array<double, 3> World::homePosition(int object) const
+{
+    const mjModel *m = d->model.get();
+    const int joint = m->body_jntadr[m_objects[size_t(object)].body];
+    const mjtNum *qpos = m->qpos0 + m->jnt_qposadr[joint];
+    return {qpos[0], qpos[1], qpos[2]};
+}
+
+void World::restoreObject(int object, const std::array<double, 3> &pos)
+{
+    SceneObject &o = m_objects[size_t(object)];
+    if (o.broken) {
+        o.broken = false;
+        d->overForceSteps[size_t(object)] = 0;
+        mjModel *m = d->model.get();
+        Private::Rest &rest = d->rests[size_t(object)];
+        size_t k = 0;
+        for (int geom = 0; geom < m->ngeom; ++geom) {
+            if (m->geom_bodyid[geom] == o.body && k < rest.alphas.size())
+                m->geom_rgba[4 * geom + 3] = rest.alphas[k++];
+        }
+        // A broken object is parked awake every step, so its bits are restored here.
+        for (const Private::Collider &c : rest.colliders) {
+            m->geom_contype[c.geom] = c.contype;
+            m->geom_conaffinity[c.geom] = c.conaffinity;
+        }
+    }
+    placeObject(object, pos);
 }
 
 int World::sceneStateSize() const

@@ -106,6 +106,13 @@ public:
     std::array<double, 3> objectVelocity(int object) const;
     /** Puts an object back at `pos`, upright and at rest (a respawned container). */
     void placeObject(int object, const std::array<double, 3> &pos);
+    /** Where the scene put the object at the start (its free joint's initial position). */
+    std::array<double, 3> homePosition(int object) const;
+    /**
+     * Puts an object back in play at `pos`, upright and at rest; a broken one is whole again
+     * (it collides and shows as before it broke): a cube the task replaces.
+     */
+    void restoreObject(int object, const std::array<double, 3> &pos);
     /** The region of site `name`; false when the scene has no such site. */
     bool region(const QString &name, Region *region) const;
 

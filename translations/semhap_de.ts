@@ -821,6 +821,38 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Vorgewarnte Brüche</translation>
     </message>
     <message>
+        <source>Breaks warned in time</source>
+        <translation>Rechtzeitig vorgewarnte Brüche</translation>
+    </message>
+    <message>
+        <source>Drop warning lead time</source>
+        <translation>Vorwarnzeit vor Abstürzen</translation>
+    </message>
+    <message>
+        <source>Drops warned</source>
+        <translation>Vorgewarnte Abstürze</translation>
+    </message>
+    <message>
+        <source>Drops warned in time</source>
+        <translation>Rechtzeitig vorgewarnte Abstürze</translation>
+    </message>
+    <message>
+        <source>Confirmations felt per grasp</source>
+        <translation>Gespürte Bestätigungen je Griff</translation>
+    </message>
+    <message>
+        <source>Slip episodes</source>
+        <translation>Rutschphasen</translation>
+    </message>
+    <message>
+        <source>Warnings felt per slip episode</source>
+        <translation>Gespürte Warnungen je Rutschphase</translation>
+    </message>
+    <message>
+        <source>Cube box refills</source>
+        <translation>Nachfüllungen der Würfelkiste</translation>
+    </message>
+    <message>
         <source>Containers dropped</source>
         <translation>Fallen gelassene Behälter</translation>
     </message>

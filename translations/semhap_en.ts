@@ -820,6 +820,38 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Breaks warned in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop warning lead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drops warned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drops warned in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirmations felt per grasp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slip episodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt per slip episode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cube box refills</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Containers dropped</source>
         <translation type="unfinished"></translation>
     </message>

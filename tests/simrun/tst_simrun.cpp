@@ -13,6 +13,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <functional>
 
 using namespace semhap;
 
@@ -43,18 +44,46 @@ QByteArray readAll(const QString &path)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-/** Steps `world` (and the monitor) until `plan` is done. */
-void play(World &world, TaskMonitor &monitor, HandPlan &plan)
+/**
+ * What the operator is told of `hand` while stepping: a warning felt from `from` on (never
+ * when negative), as pulses `pulse` s apart (0: steadily).
+ */
+struct Warning
+{
+    Gripper hand = Gripper::Right;
+    double from = -1.0;
+    double pulse = 0.0;
+
+    Feeling at(double t) const
+    {
+        Feeling feeling;
+        const bool on =
+            from >= 0 && t >= from && (pulse <= 0 || std::fmod(t - from, pulse) < 0.025);
+        feeling.warning = on ? 1.0 : 0.0;
+        return feeling;
+    }
+};
+
+/** Steps `world` (and the monitor, told `warning`) until `plan` is done; `each` per step. */
+void play(World &world, TaskMonitor &monitor, HandPlan &plan, const Warning &warning,
+          const std::function<void()> &each = {})
 {
     while (!plan.isIdle()) {
         plan.apply(world);
         world.step();
         monitor.observe(world);
+        monitor.feel(warning.hand, warning.at(world.time()), world.time());
+        if (each)
+            each();
     }
 }
 
-/** Picks cube_0 with `force` and, unless it is lost, drops it in box B. */
-QJsonObject pickAndPlace(double force)
+/**
+ * Picks cube_0 with `force` and, unless it is lost, drops it in box B; `fractureAt` gets the
+ * time the cube broke, if it did.
+ */
+QJsonObject pickAndPlace(double force, const Warning &warning = {}, double *fractureAt = nullptr,
+                         std::unique_ptr<World> *keep = nullptr)
 {
     QString error;
     std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
@@ -71,7 +100,46 @@ QJsonObject pickAndPlace(double force)
     plan.move({0.15, 0.0, 0.19}, 0.4);
     plan.grip(-20, 0.2);
     plan.wait(1.0);
-    play(*world, monitor, plan);
+    play(*world, monitor, plan, warning, [&] {
+        if (fractureAt && !world->fractures().empty())
+            *fractureAt = world->fractures().front().t;
+    });
+    const QJsonObject metrics = monitor.metrics();
+    if (keep)
+        *keep = std::move(world);
+    return metrics;
+}
+
+/**
+ * The left hand takes the container firmly, lifts it and relaxes to `force` (N), too little
+ * to hold it, so it slips out; `lostAt` gets the time it left the fingertips.
+ */
+QJsonObject holdTooLightly(double force, const Warning &warning = {}, double *lostAt = nullptr)
+{
+    QString error;
+    std::unique_ptr<World> world = World::load("bimanual_sorting", SceneOptions{0}, &error);
+    TaskMonitor monitor(*world);
+    HandPlan plan(Gripper::Left);
+    const int container = world->objectIndex("container");
+    const int actor = world->objects()[size_t(container)].actor;
+    const auto pos = world->objectPosition(container);
+    const double gripZ = pos[2] + world->objects()[size_t(container)].upper[2] - 0.02 + 0.06;
+    plan.grip(-20, 0.1);
+    plan.move({pos[0], pos[1], 0.3}, 0.8);
+    plan.move({pos[0], pos[1], gripZ}, 0.6);
+    plan.grip(40.0, 0.4);
+    plan.wait(0.3);
+    plan.move({pos[0], pos[1], gripZ + 0.06}, 0.8);
+    plan.grip(force, 1.0);
+    plan.wait(2.0);
+    bool held = false;
+    play(*world, monitor, plan, warning, [&] {
+        const ContactFrame &f = world->frame(Gripper::Left);
+        const bool holds = f.left.actor == actor && f.right.actor == actor;
+        if (held && !holds && lostAt && *lostAt < 0)
+            *lostAt = f.t;
+        held = held || holds;
+    });
     return monitor.metrics();
 }
 
@@ -92,6 +160,12 @@ private slots:
     void commandLineErrors();
     void compareShardsMergeToTheWholeGrid();
     void forceHoldsWhileTouching();
+    void breakWarningLeadTime_data();
+    void breakWarningLeadTime();
+    void dropWarningLeadTime_data();
+    void dropWarningLeadTime();
+    void emptiedBoxIsRefilled();
+    void bimanualTaskNeverStalls();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -212,7 +286,8 @@ void TestSimRun::commandLine()
     for (const char *key :
          {"cubes_transferred", "cubes_dropped", "cubes_broken", "grasps", "average_grasp_force",
           "grasps_per_transfer", "average_peak_grasp_force", "warning_lead_time",
-          "breaks_warned_share", "sim_seconds", "wall_seconds", "realtime_factor"})
+          "breaks_warned_share", "breaks_warned_in_time_share", "confirmations_per_grasp",
+          "box_refills", "sim_seconds", "wall_seconds", "realtime_factor"})
         QVERIFY2(m.contains(key), key);
     QVERIFY(m.value("cubes_transferred").toInt() >= 1);
     QVERIFY(std::abs(m.value("sim_seconds").toDouble() - 12.0) < 1e-6);
@@ -341,6 +416,116 @@ void TestSimRun::forceHoldsWhileTouching()
     QVERIFY(touching > 1000);
     // One grasp each while the container is held and the first cube picked.
     QCOMPARE(sink.begins.count("left.slip"), 1);
+}
+
+void TestSimRun::breakWarningLeadTime_data()
+{
+    QTest::addColumn<double>("lead"); // s before the fracture the warning is first felt; < 0: none
+    QTest::addColumn<double>("pulse"); // its pulses' period (0: steady)
+    QTest::addColumn<bool>("inTime");
+    QTest::newRow("no warning") << -1.0 << 0.0 << false;
+    QTest::newRow("0.1 s ahead: felt, too late to act") << 0.1 << 0.0 << false;
+    QTest::newRow("just short of the reaction time") << 0.24 << 0.0 << false;
+    QTest::newRow("the reaction time ahead: in time") << 0.26 << 0.0 << true;
+    QTest::newRow("0.5 s ahead, pulsed at 2 Hz: one warning") << 0.5 << 0.5 << true;
+}
+
+void TestSimRun::breakWarningLeadTime()
+{
+    QFETCH(double, lead);
+    QFETCH(double, pulse);
+    QFETCH(bool, inTime);
+    double fracture = -1.0;
+    QCOMPARE(pickAndPlace(140.0, {}, &fracture).value("cubes_broken").toInt(), 1);
+    QVERIFY(fracture > 0);
+    // Runs are deterministic: the same squeeze, now with a warning felt `lead` before.
+    const Warning warning{Gripper::Right, lead >= 0 ? fracture - lead : -1.0, pulse};
+    const QJsonObject m = pickAndPlace(140.0, warning);
+    QCOMPARE(m.value("cubes_broken").toInt(), 1);
+    if (lead < 0) {
+        QCOMPARE(m.value("breaks_warned_share").toDouble(), 0.0);
+        QVERIFY(m.value("warning_lead_time").isNull());
+    } else {
+        QCOMPARE(m.value("breaks_warned_share").toDouble(), 1.0);
+        QVERIFY(std::abs(m.value("warning_lead_time").toDouble() - lead) < 0.003);
+    }
+    QCOMPARE(m.value("breaks_warned_in_time_share").toDouble(), inTime ? 1.0 : 0.0);
+}
+
+void TestSimRun::dropWarningLeadTime_data()
+{
+    QTest::addColumn<double>("lead");
+    QTest::addColumn<bool>("inTime");
+    QTest::newRow("no warning") << -1.0 << false;
+    QTest::newRow("0.15 s ahead: felt, too late to act") << 0.15 << false;
+    QTest::newRow("0.3 s ahead: in time") << 0.3 << true;
+    QTest::newRow("after it left: not a warning") << -0.1 << false;
+}
+
+void TestSimRun::dropWarningLeadTime()
+{
+    QFETCH(double, lead);
+    QFETCH(bool, inTime);
+    double lost = -1.0;
+    QCOMPARE(holdTooLightly(20.0, {}, &lost).value("containers_dropped").toInt(), 1);
+    QVERIFY(lost > 0);
+    const double from = lead == -1.0 ? -1.0 : lost - lead;
+    const QJsonObject m = holdTooLightly(20.0, Warning{Gripper::Left, from, 0.0});
+    QCOMPARE(m.value("containers_dropped").toInt(), 1);
+    const bool warned = lead > 0;
+    QCOMPARE(m.value("drops_warned_share").toDouble(), warned ? 1.0 : 0.0);
+    QCOMPARE(m.value("drops_warned_in_time_share").toDouble(), inTime ? 1.0 : 0.0);
+    if (warned)
+        QVERIFY(std::abs(m.value("drop_warning_lead_time").toDouble() - lead) < 0.003);
+    else
+        QVERIFY(m.value("drop_warning_lead_time").isNull());
+}
+
+void TestSimRun::emptiedBoxIsRefilled()
+{
+    // One cube: once it is in box B and at rest, box A is empty and the cube comes back.
+    const QJsonObject placed = pickAndPlace(40.0);
+    QCOMPARE(placed.value("cubes_transferred").toInt(), 1);
+    QCOMPARE(placed.value("box_refills").toInt(), 1);
+    // A broken cube comes back whole, once the hand has let go: it rests on the box's floor
+    // where it started, so it collides again.
+    std::unique_ptr<World> world;
+    const QJsonObject broken = pickAndPlace(140.0, {}, nullptr, &world);
+    QCOMPARE(broken.value("cubes_broken").toInt(), 1);
+    QCOMPARE(broken.value("box_refills").toInt(), 1);
+    QVERIFY(!world->objects()[0].broken);
+    for (int i = 0; i < 250; ++i)
+        world->step();
+    const auto home = world->homePosition(0);
+    const auto pos = world->objectPosition(0);
+    QVERIFY2(std::abs(pos[0] - home[0]) < 0.002 && std::abs(pos[2] - home[2]) < 0.002,
+             qPrintable(QString("at %1 %2 %3").arg(pos[0]).arg(pos[1]).arg(pos[2])));
+}
+
+void TestSimRun::bimanualTaskNeverStalls()
+{
+    // The cubes run out after a minute or two unless the box is refilled and a container
+    // knocked off its base comes back; seed 7 once stopped for good after 120 s.
+    RunOptions options;
+    options.scene = "bimanual_sorting";
+    options.seed = 7;
+    options.duration = 300;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    QVERIFY2(run, qPrintable(error));
+    RunSink sink;
+    int before = 0;
+    for (double until : {100.0, 200.0, 300.0}) {
+        while (run->time() < until - 1e-9 && run->step(sink)) {
+        }
+        const int transferred = run->metrics().value("cubes_transferred").toInt();
+        QVERIFY2(transferred >= before + 4,
+                 qPrintable(QString("%1 cubes by %2 s, %3 by 100 s before")
+                                .arg(transferred)
+                                .arg(until)
+                                .arg(before)));
+        before = transferred;
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
