@@ -26,20 +26,34 @@ constexpr double TooMuchPressure = 0.65;
 constexpr double Gravity = 9.81;
 // How high the left hand lifts the container off its base.
 constexpr double HoldLift = 0.06;
+// How long a grip takes to close (s, times the trial's pace), and a hurried one.
+constexpr double ClosingTime = 0.7;
+constexpr double FastClosingTime = 0.15;
+// The drifting hold: the grip relaxes exponentially towards nothing with this time constant (s).
+constexpr double RelaxTimeConstant = 20.0;
 
 } // namespace
 
 void Operator::feel(Gripper, const Feeling &, double) {}
 
 ScriptedOperator::ScriptedOperator(Task task, std::uint64_t seed, bool reactive,
-                                   double reactionTime)
-    : m_task(task), m_random(seed), m_reactive(reactive), m_reactionTime(reactionTime)
+                                   double reactionTime, Variant variant)
+    : m_task(task), m_random(seed), m_reactive(reactive), m_variant(variant),
+      m_reactionTime(reactionTime)
 {
     m_wobblePhase = {m_random.uniform(0, 2 * Pi), m_random.uniform(0, 2 * Pi)};
 }
 
 QString ScriptedOperator::name() const
 {
+    switch (m_variant) {
+    case Variant::FastSqueeze:
+        return QStringLiteral("fast_squeeze");
+    case Variant::DriftingHold:
+        return QStringLiteral("drifting_hold");
+    case Variant::Normal:
+        break;
+    }
     return m_reactive ? QStringLiteral("reactive") : QStringLiteral("scripted");
 }
 
@@ -136,12 +150,18 @@ void ScriptedOperator::planGrasp(World &world)
     world.setTarget(Gripper::Right, wrist);
     // People vary: this trial's pace and the grip it will squeeze with (N, both fingers).
     const double pace = m_random.uniform(0.85, 1.2);
-    const double force =
-        std::clamp(m_random.normal(60.0, 40.0), 4.0, world.maxGrip(Gripper::Right));
+    double force = std::clamp(m_random.normal(60.0, 40.0), 4.0, world.maxGrip(Gripper::Right));
+    double closing = ClosingTime * pace;
+    const double fragile = world.objects()[size_t(cube)].fragileForce;
+    if (m_variant == Variant::FastSqueeze && fragile > 0) {
+        // Hurried and hard, as on a solid block: past the fracture force, in a snap.
+        force = std::min(fragile * m_random.uniform(1.1, 1.4), world.maxGrip(Gripper::Right));
+        closing = FastClosingTime;
+    }
     m_right.move({pos[0], pos[1], CarryHeight}, 0.3 * pace);
     m_right.move({pos[0], pos[1], pos[2] + PadDrop}, 0.5 * pace);
     m_right.wait(0.1);
-    m_right.grip(force, 0.7 * pace);
+    m_right.grip(force, closing);
     m_right.wait(0.25);
     // Carry high enough to clear where it goes (a held container's rim may be higher).
     const auto place = placePoint(world);
@@ -223,7 +243,10 @@ void ScriptedOperator::planHold(World &world)
         // The hand relaxes without noticing: the grip drifts down to what just holds the
         // empty container after m_slipAfter seconds, and the wrist sways a few millimetres.
         const double s = (t - m_holdStart) / m_slipAfter;
-        world.setGrip(Gripper::Left, std::max(0.0, m_holdGrip - (m_holdGrip - holdLimit) * s));
+        world.setGrip(Gripper::Left,
+                      m_variant == Variant::DriftingHold
+                          ? m_holdGrip * std::exp(-(t - m_holdStart) / RelaxTimeConstant)
+                          : std::max(0.0, m_holdGrip - (m_holdGrip - holdLimit) * s));
         Pose target = world.target(Gripper::Left);
         target.pos[0] = m_holdPos[0] + 0.004 * std::sin(2 * Pi * t / 5.0 + m_wobblePhase[0]);
         target.pos[1] = m_holdPos[1] + 0.003 * std::sin(2 * Pi * t / 7.0 + m_wobblePhase[1]);
@@ -313,7 +336,8 @@ void ScriptedOperator::react(World &world, const Percept &percept)
 
 QStringList operatorNames()
 {
-    return {QStringLiteral("scripted"), QStringLiteral("reactive")};
+    return {QStringLiteral("scripted"), QStringLiteral("reactive"), QStringLiteral("fast_squeeze"),
+            QStringLiteral("drifting_hold")};
 }
 
 std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
@@ -340,8 +364,12 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, 
                      .arg(world.sceneName(), name);
         return nullptr;
     }
+    const auto variant =
+        name == QLatin1String("fast_squeeze")    ? ScriptedOperator::Variant::FastSqueeze
+        : name == QLatin1String("drifting_hold") ? ScriptedOperator::Variant::DriftingHold
+                                                 : ScriptedOperator::Variant::Normal;
     return std::make_unique<ScriptedOperator>(task, seed, name == QLatin1String("reactive"),
-                                              reactionTime);
+                                              reactionTime, variant);
 }
 
 } // namespace semhap

@@ -30,7 +30,20 @@ public:
         BimanualSorting
     };
 
-    ScriptedOperator(Task task, std::uint64_t seed, bool reactive, double reactionTime);
+    /**
+     * Stress scripts for the benchmarks: the same person with one failure made likely.
+     * `FastSqueeze` closes fast and hard on fragile cubes; `DriftingHold` lets the holding
+     * hand relax steadily while the picking hand works. Neither reacts to feedback.
+     */
+    enum class Variant
+    {
+        Normal,
+        FastSqueeze,
+        DriftingHold
+    };
+
+    ScriptedOperator(Task task, std::uint64_t seed, bool reactive, double reactionTime,
+                     Variant variant = Variant::Normal);
 
     QString name() const override;
     void act(World &world) override;
@@ -70,6 +83,7 @@ private:
     Task m_task;
     Random m_random;
     bool m_reactive;
+    Variant m_variant;
     double m_reactionTime;
     HandPlan m_right{Gripper::Right};
     HandPlan m_left{Gripper::Left};

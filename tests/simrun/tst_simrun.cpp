@@ -166,6 +166,8 @@ private slots:
     void dropWarningLeadTime();
     void emptiedBoxIsRefilled();
     void bimanualTaskNeverStalls();
+    void stressScripts_data();
+    void stressScripts();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -306,7 +308,9 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("unknown operator")
         << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
                        "--operator", "robot",   "--duration",    "1"}
-        << 1 << "unknown operator 'robot' (operators: scripted, reactive)";
+        << 1
+        << "unknown operator 'robot' (operators: scripted, reactive, fast_squeeze, "
+           "drifting_hold)";
     QTest::newRow("bad seed") << base + QStringList{"--scene", "box_and_block", "--seed", "1.5"}
                               << 2 << "semhap run: --seed must be a whole number >= 0";
     QTest::newRow("malformed binding")
@@ -526,6 +530,37 @@ void TestSimRun::bimanualTaskNeverStalls()
                                 .arg(before)));
         before = transferred;
     }
+}
+
+void TestSimRun::stressScripts_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QString>("op");
+    QTest::addColumn<QString>("failure");
+    QTest::addColumn<int>("atLeast");
+    // 20 s: a fast squeeze breaks every cube it takes; a relaxing hold drops the container.
+    QTest::newRow("fast_squeeze breaks") << "box_and_block"
+                                         << "fast_squeeze"
+                                         << "cubes_broken" << 4;
+    QTest::newRow("drifting_hold drops") << "bimanual_sorting"
+                                         << "drifting_hold"
+                                         << "containers_dropped" << 1;
+}
+
+void TestSimRun::stressScripts()
+{
+    QFETCH(QString, scene);
+    QFETCH(QString, op);
+    QFETCH(QString, failure);
+    QFETCH(int, atLeast);
+    const CliResult r = semhapRun({"run", "--scene", scene, "--router", "C3", "--operator", op,
+                                   "--duration", "20", "--metrics", "-"});
+    QCOMPARE(r.code, 0);
+    const QJsonObject m = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(m.value("operator").toString(), op);
+    QVERIFY2(m.value(failure).toInt() >= atLeast, r.out.constData());
+    if (op == "fast_squeeze")
+        QCOMPARE(m.value("cubes_broken").toInt(), m.value("grasps").toInt());
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
