@@ -154,10 +154,6 @@ void TaskMonitor::observeGrasp(World &world)
 
 void TaskMonitor::observeTransfers(const World &world)
 {
-    std::array<double, 3> container{};
-    const SceneObject *walls = m_container >= 0 ? &world.objects()[size_t(m_container)] : nullptr;
-    if (walls)
-        container = world.objectPosition(m_container);
     for (size_t i = 0; i < world.objects().size(); ++i) {
         const SceneObject &object = world.objects()[i];
         if (m_transferred[i] || object.broken || int(i) == m_grasped || int(i) == m_container)
@@ -166,9 +162,7 @@ void TaskMonitor::observeTransfers(const World &world)
         bool arrived = false;
         if (m_container >= 0) {
             // Inside the held container (within its walls, above its floor), swaying with it.
-            arrived = m_containerHeld && std::abs(pos[0] - container[0]) < walls->upper[0] &&
-                      std::abs(pos[1] - container[1]) < walls->upper[1] && pos[2] > container[2] &&
-                      pos[2] < container[2] + walls->upper[2];
+            arrived = m_containerHeld && isInContainer(world, int(i));
         } else if (m_hasPlace) {
             arrived = m_place.contains(pos) && speed(world.objectVelocity(int(i))) < AtRest;
         }
@@ -199,8 +193,7 @@ void TaskMonitor::observeContainer(World &world)
     }
     if (m_containerDown) {
         if (t - m_containerDroppedAt >= RespawnPenalty) {
-            clearHome(world);
-            world.placeObject(m_container, m_home.center);
+            respawnContainer(world);
             m_containerDown = false;
         }
         return;
@@ -279,19 +272,11 @@ void TaskMonitor::refill(World &world)
              speed(world.objectVelocity(int(i))) >= AtRest))
             return;
     }
-    std::array<double, 3> container{};
-    if (m_container >= 0)
-        container = world.objectPosition(m_container);
-    const SceneObject *walls = m_container >= 0 ? &objects[size_t(m_container)] : nullptr;
     bool any = false;
     for (size_t i = 0; i < objects.size(); ++i) {
         if (!isCube(i))
             continue;
-        const auto pos = world.objectPosition(int(i));
-        const bool inContainer = walls && m_containerHeld &&
-                                 std::abs(pos[0] - container[0]) < walls->upper[0] &&
-                                 std::abs(pos[1] - container[1]) < walls->upper[1];
-        if (inContainer && !objects[i].broken)
+        if (m_container >= 0 && !objects[i].broken && isInContainer(world, int(i)))
             continue;
         returnToBox(world, int(i));
         any = true;
@@ -300,16 +285,30 @@ void TaskMonitor::refill(World &world)
         ++m_refills;
 }
 
-void TaskMonitor::clearHome(World &world)
+bool TaskMonitor::isInContainer(const World &world, int object) const
 {
-    // A cube spilled onto the base would tip the respawned container over: it goes back.
+    const SceneObject &walls = world.objects()[size_t(m_container)];
+    const auto container = world.objectPosition(m_container);
+    const auto pos = world.objectPosition(object);
+    return std::abs(pos[0] - container[0]) < walls.upper[0] &&
+           std::abs(pos[1] - container[1]) < walls.upper[1] && pos[2] > container[2] &&
+           pos[2] < container[2] + walls.upper[2];
+}
+
+void TaskMonitor::respawnContainer(World &world)
+{
+    // A respawn resets the container: it comes back empty, its cubes and any spilled onto
+    // the base (which would tip it over) go back to the box.
     const double reach = world.objects()[size_t(m_container)].upper[0] + 0.04;
     for (size_t i = 0; i < world.objects().size(); ++i) {
+        if (int(i) == m_container || world.objects()[i].broken)
+            continue;
         const auto pos = world.objectPosition(int(i));
-        if (int(i) != m_container && !world.objects()[i].broken &&
+        if (isInContainer(world, int(i)) ||
             std::hypot(pos[0] - m_home.center[0], pos[1] - m_home.center[1]) < reach)
             returnToBox(world, int(i));
     }
+    world.placeObject(m_container, m_home.center);
 }
 
 void TaskMonitor::returnToBox(World &world, int object)

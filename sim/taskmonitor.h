@@ -61,8 +61,10 @@ private:
     void observeContainer(World &world);
     void observeContainerSlip(const World &world, bool held);
     void refill(World &world);
-    /** Returns the cubes on the container's base to the box, before it respawns there. */
-    void clearHome(World &world);
+    /** Whether `object` is inside the container: within its walls, above its floor. */
+    bool isInContainer(const World &world, int object) const;
+    /** Puts the container back on its home site, empty: its cubes go back to the box. */
+    void respawnContainer(World &world);
     /** Puts a cube (whole again) where the scene started it, or above if that is taken. */
     void returnToBox(World &world, int object);
 
