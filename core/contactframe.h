@@ -26,6 +26,18 @@ struct Fingertip
     int actor = -1; ///< ActorTable id of the touched body, -1 for none
     bool hasFxyz = false;
     std::array<double, 3> fxyz{}; ///< resultant force in the gripper frame, when known
+    double mu = 0.0; ///< friction coefficient of the touched surface, when known; 0: unknown
+
+    /**
+     * How much of the friction available this fingertip uses: (tangential / normal force)
+     * over `mu`, 1 at the edge of the friction cone. The fingers close along the gripper
+     * frame's y axis, so the normal force is |fxyz.y| and the tangential the rest. 0 without
+     * fxyz, without a coefficient (`mu` <= 0), or with less normal force than MinNormalForce.
+     */
+    double frictionUse(double mu) const;
+
+    /** Below this normal force (N) a fingertip is not pressing on anything worth a ratio. */
+    static constexpr double MinNormalForce = 0.1;
 };
 
 /**

@@ -167,10 +167,18 @@ bool ContactFrameParser::parseFingertip(const QJsonObject &json, QLatin1String n
         }
     }
 
+    const QJsonValue mu = object.value(QLatin1String("mu"));
+    const bool hasMu = !mu.isUndefined() && !mu.isNull();
+    if (hasMu && (!mu.isDouble() || !std::isfinite(mu.toDouble()) || mu.toDouble() <= 0.0)) {
+        return fail(reason, QStringLiteral("%1 must be a finite positive number or null, got %2")
+                                .arg(quotedField(prefix + QLatin1String("mu")), describe(mu)));
+    }
+
     tip->f = f.toDouble();
     tip->n = int(count);
     tip->hasFxyz = hasFxyz;
     tip->fxyz = components;
+    tip->mu = hasMu ? mu.toDouble() : 0.0;
     *actor = actorValue.toString();
     return true;
 }

@@ -51,6 +51,11 @@ public:
     double latency() const { return m_latency; }
     /** Time constant of the first-order lag (s); 0 when the output follows at once. */
     double timeConstant() const { return m_tau; }
+    /**
+     * How long a command takes to be felt (s): the dead time plus the lag's time constant,
+     * when the output has come 63 % of the way.
+     */
+    double responseDelay() const { return m_latency + m_tau; }
 
     double clamp(int channel, double value) const;
     /**

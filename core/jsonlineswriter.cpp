@@ -143,6 +143,10 @@ void JsonLinesWriter::appendFingertip(const char *key, const Fingertip &tip)
         }
         m_line += ']';
     }
+    if (tip.mu > 0.0) {
+        m_line += ",\"mu\":";
+        appendNumber(m_line, tip.mu);
+    }
     m_line += '}';
 }
 

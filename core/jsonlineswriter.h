@@ -60,7 +60,7 @@ private:
     const ActorTable *m_actors = nullptr;
     std::vector<QByteArray> m_actorNames; ///< encoded lazily, as the table grows
     std::array<QByteArray, 2> m_grippers;
-    std::array<QByteArray, 2> m_kinds;
+    std::array<QByteArray, 3> m_kinds;
     std::array<QByteArray, 3> m_messages;
     std::array<QByteArray, 2> m_categories;
     std::array<QByteArray, 3> m_phases;

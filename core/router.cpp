@@ -20,6 +20,11 @@ namespace semhap {
 
 namespace {
 
+// The predict and derivative nodes' smoothing time constant (s): longer than the ring-down of
+// a finger landing on an object (20-35 ms of +-2 N at 2 ms steps, measured in the
+// simulation), so that an impact does not read as a steep ramp.
+constexpr double DefaultSlopeTau = 0.05;
+
 // The most detectors whose messages may meet at one node: each brings two messages and a
 // node tracks at most ActiveMessages::Capacity of them without allocating.
 constexpr int MaxUpstreamDetectors = ActiveMessages::Capacity / 2;
@@ -35,7 +40,9 @@ bool isPath(const QString &nameOrPath)
 class RouterCompiler
 {
 public:
-    RouterCompiler(const RouterGraph &graph, LoadError *error) : m_graph(graph), m_error(error) {}
+    RouterCompiler(const RouterGraph &graph, const RouterContext &context, LoadError *error)
+        : m_graph(graph), m_context(context), m_error(error)
+    {}
 
     std::unique_ptr<Router> compile();
 
@@ -75,6 +82,9 @@ private:
     bool buildPattern(int node);
     bool buildDevice(int node);
     std::unique_ptr<RuntimeNode> buildLogic(int node);
+    std::unique_ptr<RuntimeNode> buildThreshold(int node);
+    /** The default horizons of predict nodes: downstream devices' delay + reaction time. */
+    void setDefaultHorizons();
 
     PatternPtr findPattern(int node, const QString &name);
     DeviceModelPtr findModel(int node, const QString &name);
@@ -86,6 +96,7 @@ private:
     bool connectVoice(int linkIndex, const ResolvedLink &link);
 
     const RouterGraph &m_graph;
+    RouterContext m_context;
     LoadError *m_error;
     std::vector<NodeInfo> m_info;
     std::vector<ResolvedLink> m_links;
@@ -350,10 +361,39 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
                          SignalNode::quantityNames().join(QStringLiteral(", ")));
             return nullptr;
         }
-        auto signal = std::make_unique<SignalNode>(m_info[size_t(node)].gripper, quantity);
+        double mu = 0.0;
+        if (!readNumber(node, QStringLiteral("mu"), 0.0, &mu))
+            return nullptr;
+        if (params.contains(QStringLiteral("mu")) && mu <= 0.0) {
+            failNode(node, QStringLiteral("mu"), QStringLiteral("must be positive"));
+            return nullptr;
+        }
+        auto signal = std::make_unique<SignalNode>(m_info[size_t(node)].gripper, quantity, mu);
         m_router->m_signals.push_back(signal.get());
         return signal;
     }
+    if (n.type == QLatin1String("derivative") || n.type == QLatin1String("predict")) {
+        double tau = DefaultSlopeTau;
+        double horizon = -1.0;
+        if (!readNumber(node, QStringLiteral("tau"), DefaultSlopeTau, &tau) ||
+            !readNumber(node, QStringLiteral("horizon"), -1.0, &horizon))
+            return nullptr;
+        if (tau < 0.0) {
+            failNode(node, QStringLiteral("tau"), QStringLiteral("must not be negative"));
+            return nullptr;
+        }
+        if (n.type == QLatin1String("derivative"))
+            return std::make_unique<DerivativeNode>(tau);
+        if (params.contains(QStringLiteral("horizon")) && horizon < 0.0) {
+            failNode(node, QStringLiteral("horizon"), QStringLiteral("must not be negative"));
+            return nullptr;
+        }
+        auto predict = std::make_unique<PredictNode>(tau);
+        predict->setHorizon(horizon);
+        return predict;
+    }
+    if (n.type == QLatin1String("threshold"))
+        return buildThreshold(node);
     if (n.type == QLatin1String("filter")) {
         unsigned messages = 0;
         unsigned categories = 0;
@@ -427,6 +467,73 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
         return nullptr;
     }
     return std::make_unique<ProportionalNode>(ref);
+}
+
+std::unique_ptr<RuntimeNode> RouterCompiler::buildThreshold(int node)
+{
+    const QJsonObject &params = m_graph.nodes[size_t(node)].params;
+    if (!readGripper(node))
+        return nullptr;
+    ThresholdNode::Params p;
+    const QJsonValue message = params.value(QStringLiteral("message"));
+    if (!messageFromName(message.toString(), &p.message)) {
+        failNode(node, QStringLiteral("message"),
+                 QStringLiteral("must be one of %1, %2, %3")
+                     .arg(messageName(Message::Grasp), messageName(Message::Break),
+                          messageName(Message::Slip)));
+        return nullptr;
+    }
+    if (!params.contains(QStringLiteral("level")) || !params.contains(QStringLiteral("full"))) {
+        failNode(node, QString(), QStringLiteral("needs a level and a full value"));
+        return nullptr;
+    }
+    if (!readNumber(node, QStringLiteral("level"), 0.0, &p.level) ||
+        !readNumber(node, QStringLiteral("full"), 1.0, &p.full) ||
+        !readNumber(node, QStringLiteral("hysteresis"), 0.0, &p.hysteresis) ||
+        !readNumber(node, QStringLiteral("minDuration"), 0.0, &p.minDuration))
+        return nullptr;
+    if (p.full == p.level) {
+        failNode(node, QStringLiteral("full"),
+                 QStringLiteral("must differ from level (above it: active while the input "
+                                "is above level; below it: while below)"));
+        return nullptr;
+    }
+    for (const auto &[key, value] : {std::pair{QStringLiteral("hysteresis"), p.hysteresis},
+                                     std::pair{QStringLiteral("minDuration"), p.minDuration}}) {
+        if (value < 0.0) {
+            failNode(node, key, QStringLiteral("must not be negative"));
+            return nullptr;
+        }
+    }
+    auto threshold = std::make_unique<ThresholdNode>(node, m_info[size_t(node)].gripper, p);
+    m_router->m_thresholds.push_back(threshold.get());
+    return threshold;
+}
+
+void RouterCompiler::setDefaultHorizons()
+{
+    for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
+        auto *predict = dynamic_cast<PredictNode *>(m_router->m_nodes[i].get());
+        if (!predict || predict->horizon() >= 0.0)
+            continue;
+        // The slowest device its output reaches, whatever the path (signals, events, voices).
+        double delay = 0.0;
+        std::vector<char> seen(m_graph.nodes.size(), 0);
+        std::vector<int> todo{int(i)};
+        while (!todo.empty()) {
+            const int from = todo.back();
+            todo.pop_back();
+            if (m_info[size_t(from)].model)
+                delay = std::max(delay, m_info[size_t(from)].model->responseDelay());
+            for (const ResolvedLink &link : m_links) {
+                if (link.from == from && !seen[size_t(link.to)]) {
+                    seen[size_t(link.to)] = 1;
+                    todo.push_back(link.to);
+                }
+            }
+        }
+        predict->setHorizon(delay + m_context.reactionTime);
+    }
 }
 
 bool RouterCompiler::buildNode(int node)
@@ -558,7 +665,8 @@ bool RouterCompiler::checkFanIn()
     bool changed = true;
     for (size_t i = 0; i < count; ++i) {
         if (m_info[i].type->type == QLatin1String("force") ||
-            m_info[i].type->type == QLatin1String("slip"))
+            m_info[i].type->type == QLatin1String("slip") ||
+            m_info[i].type->type == QLatin1String("threshold"))
             upstream[i].insert(int(i));
     }
     while (changed) {
@@ -671,12 +779,14 @@ std::unique_ptr<Router> RouterCompiler::compile()
     }
     if (!wire())
         return nullptr;
+    setDefaultHorizons();
     return std::move(m_router);
 }
 
-std::unique_ptr<Router> Router::compile(const RouterGraph &graph, LoadError *error)
+std::unique_ptr<Router> Router::compile(const RouterGraph &graph, LoadError *error,
+                                        const RouterContext &context)
 {
-    return RouterCompiler(graph, error).compile();
+    return RouterCompiler(graph, context, error).compile();
 }
 
 Router::~Router() = default;
@@ -732,22 +842,22 @@ RouterGraph Router::selfContained() const
 }
 
 std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList &overrides,
-                                   LoadError *error)
+                                   LoadError *error, const RouterContext &context)
 {
     RouterGraph graph;
     if (!RouterPresets::load(nameOrPath, &graph, error))
         return nullptr;
-    return compileWithOverrides(std::move(graph), overrides, error);
+    return compileWithOverrides(std::move(graph), overrides, error, context);
 }
 
 std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringList &overrides,
-                                             LoadError *error)
+                                             LoadError *error, const RouterContext &context)
 {
     for (const QString &assignment : overrides) {
         if (!graph.applyOverride(assignment, error))
             return nullptr;
     }
-    std::unique_ptr<Router> router = Router::compile(graph, error);
+    std::unique_ptr<Router> router = Router::compile(graph, error, context);
     if (router)
         return router;
     // An override that makes its node invalid is the culprit: say so, not the file.
@@ -780,6 +890,9 @@ void Router::process(const ContactFrame &frame, EventBuffer &events)
         if (detector->detector().gripper() == frame.gripper)
             detector->process(frame, events);
     }
+    // Threshold nodes fire as the signals reach them: after the detectors in the tick.
+    for (ThresholdNode *threshold : m_thresholds)
+        threshold->setOutput(&events);
     for (const SignalNode *signal : m_signals) {
         if (signal->gripper() == frame.gripper)
             signal->process(frame);
@@ -790,6 +903,8 @@ void Router::endAll(double t, EventBuffer &events)
 {
     for (DetectorNode *detector : m_detectors)
         detector->endAll(t, events);
+    for (ThresholdNode *threshold : m_thresholds)
+        threshold->endAll(t, events);
 }
 
 double Router::nextTimer() const

@@ -5,6 +5,7 @@
 #include "eventbuffer.h"
 #include "loaderror.h"
 #include "player.h"
+#include "routercontext.h"
 #include "routergraph.h"
 
 #include <QStringList>
@@ -17,6 +18,7 @@ namespace semhap {
 class DetectorNode;
 class RuntimeNode;
 class SignalNode;
+class ThresholdNode;
 
 /**
  * A router graph compiled to run: detectors, logic, pattern voices and the player with its
@@ -26,8 +28,12 @@ class SignalNode;
 class Router
 {
 public:
-    /** Compiles `graph`; on failure returns null with `error` (file and JSON pointer). */
-    static std::unique_ptr<Router> compile(const RouterGraph &graph, LoadError *error);
+    /**
+     * Compiles `graph` for a run described by `context`; on failure returns null with
+     * `error` (file and JSON pointer).
+     */
+    static std::unique_ptr<Router> compile(const RouterGraph &graph, LoadError *error,
+                                           const RouterContext &context = {});
     ~Router();
 
     /** Starts the player's clocks and the continuous patterns at the first frame's time. */
@@ -64,6 +70,7 @@ private:
     std::vector<std::unique_ptr<RuntimeNode>> m_nodes; ///< graph order; null for devices
     std::vector<DetectorNode *> m_detectors;
     std::vector<SignalNode *> m_signals;
+    std::vector<ThresholdNode *> m_thresholds;
     std::vector<RuntimeNode *> m_timed; ///< nodes that may hold timers
     /** What a node's pattern or model parameter resolved to, for selfContained(). */
     struct Sources
@@ -83,9 +90,9 @@ private:
  * reason`), not against the file.
  */
 std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList &overrides,
-                                   LoadError *error);
+                                   LoadError *error, const RouterContext &context = {});
 /** What loadRouter() does once the graph is loaded (a session's router, an editor's). */
 std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringList &overrides,
-                                             LoadError *error);
+                                             LoadError *error, const RouterContext &context = {});
 
 } // namespace semhap

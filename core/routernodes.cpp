@@ -65,24 +65,24 @@ void RuntimeNode::emitSignal(double value, double t) const
         target.node->onSignal(target.port, value, t);
 }
 
+void RuntimeNode::emitEvents(const EventBuffer &events, int from) const
+{
+    for (int i = from; i < events.size(); ++i)
+        emitEvent(events[i]);
+}
+
 void DetectorNode::process(const ContactFrame &frame, EventBuffer &events)
 {
     const int from = events.size();
     m_detector->update(frame, events);
-    route(events, from);
+    emitEvents(events, from);
 }
 
 void DetectorNode::endAll(double t, EventBuffer &events)
 {
     const int from = events.size();
     m_detector->endAll(t, events);
-    route(events, from);
-}
-
-void DetectorNode::route(const EventBuffer &events, int from) const
-{
-    for (int i = from; i < events.size(); ++i)
-        emitEvent(events[i]);
+    emitEvents(events, from);
 }
 
 bool SignalNode::quantityFromName(const QString &name, Quantity *quantity)
@@ -98,8 +98,20 @@ bool SignalNode::quantityFromName(const QString &name, Quantity *quantity)
 QStringList SignalNode::quantityNames()
 {
     // In Quantity's order.
-    return {QStringLiteral("F"),       QStringLiteral("N"),      QStringLiteral("f.left"),
-            QStringLiteral("f.right"), QStringLiteral("n.left"), QStringLiteral("n.right")};
+    return {QStringLiteral("F"),
+            QStringLiteral("N"),
+            QStringLiteral("f.left"),
+            QStringLiteral("f.right"),
+            QStringLiteral("n.left"),
+            QStringLiteral("n.right"),
+            QStringLiteral("friction"),
+            QStringLiteral("friction.left"),
+            QStringLiteral("friction.right")};
+}
+
+double SignalNode::frictionUse(const Fingertip &tip) const
+{
+    return tip.frictionUse(m_mu > 0.0 ? m_mu : tip.mu);
 }
 
 void SignalNode::process(const ContactFrame &frame) const
@@ -124,8 +136,76 @@ void SignalNode::process(const ContactFrame &frame) const
     case Quantity::NRight:
         value = frame.right.n;
         break;
+    case Quantity::Friction:
+        value = std::max(frictionUse(frame.left), frictionUse(frame.right));
+        break;
+    case Quantity::FrictionLeft:
+        value = frictionUse(frame.left);
+        break;
+    case Quantity::FrictionRight:
+        value = frictionUse(frame.right);
+        break;
     }
     emitSignal(value, frame.t);
+}
+
+double SlopeFilter::update(double value, double t)
+{
+    if (!m_started) {
+        m_started = true;
+        m_value = value;
+        m_t = t;
+        return m_slope;
+    }
+    const double dt = t - m_t;
+    if (dt <= 0.0)
+        return m_slope;
+    const double raw = (value - m_value) / dt;
+    // The exact step response of the low-pass over dt, so irregular ticks weigh right.
+    const double weight = m_tau > 0.0 ? 1.0 - std::exp(-dt / m_tau) : 1.0;
+    m_slope += weight * (raw - m_slope);
+    m_value = value;
+    m_t = t;
+    return m_slope;
+}
+
+void DerivativeNode::onSignal(int, double value, double t)
+{
+    emitSignal(m_slope.update(value, t), t);
+}
+
+void PredictNode::onSignal(int, double value, double t)
+{
+    emitSignal(value + m_horizon * m_slope.update(value, t), t);
+}
+
+ThresholdNode::ThresholdNode(int node, Gripper gripper, const Params &params) : m_params(params)
+{
+    m_tracker.configure(gripper, node, DetectorKind::Threshold, params.message,
+                        params.minDuration);
+}
+
+void ThresholdNode::onSignal(int, double value, double t)
+{
+    if (!m_out)
+        return;
+    // Beyond the level in the direction of `full`; an active message holds back to
+    // level -/+ hysteresis. With hysteresis 0 this is the strict x > level of the detectors.
+    const double direction = m_params.full > m_params.level ? 1.0 : -1.0;
+    const double relief = m_tracker.isActive() ? m_params.hysteresis : 0.0;
+    const bool condition = direction * (value - m_params.level) > -relief;
+    const double intensity =
+        std::clamp((value - m_params.level) / (m_params.full - m_params.level), 0.0, 1.0);
+    const int from = m_out->size();
+    m_tracker.update(t, condition, intensity, *m_out);
+    emitEvents(*m_out, from);
+}
+
+void ThresholdNode::endAll(double t, EventBuffer &events)
+{
+    const int from = events.size();
+    m_tracker.forceEnd(t, events);
+    emitEvents(events, from);
 }
 
 void FilterNode::onEvent(int, const SemanticEvent &event)

@@ -6,6 +6,7 @@
 #include "contactframe.h"
 #include "detector.h"
 #include "eventbuffer.h"
+#include "messagetracker.h"
 #include "player.h"
 #include "voice.h"
 #include "waveform.h"
@@ -80,6 +81,8 @@ public:
 
 protected:
     void emitEvent(const SemanticEvent &event) const;
+    /** Emits the events of `events` from index `from` on (those this node just added). */
+    void emitEvents(const EventBuffer &events, int from) const;
     void emitSignal(double value, double t) const;
 };
 
@@ -93,7 +96,6 @@ public:
     Detector &detector() { return *m_detector; }
 
 private:
-    void route(const EventBuffer &events, int from) const;
     std::unique_ptr<Detector> m_detector;
 };
 
@@ -108,18 +110,102 @@ public:
         FLeft,
         FRight,
         NLeft,
-        NRight
+        NRight,
+        Friction,
+        FrictionLeft,
+        FrictionRight
     };
     static bool quantityFromName(const QString &name, Quantity *quantity);
     static QStringList quantityNames();
 
-    SignalNode(Gripper gripper, Quantity quantity) : m_gripper(gripper), m_quantity(quantity) {}
+    /** `mu` > 0 overrides the frames' friction coefficient for the friction quantities. */
+    SignalNode(Gripper gripper, Quantity quantity, double mu = 0.0)
+        : m_gripper(gripper), m_quantity(quantity), m_mu(mu)
+    {}
     Gripper gripper() const { return m_gripper; }
     void process(const ContactFrame &frame) const;
 
 private:
+    double frictionUse(const Fingertip &tip) const;
+
     Gripper m_gripper;
     Quantity m_quantity;
+    double m_mu;
+};
+
+/**
+ * The slope of a signal (units per second), the difference quotient smoothed by a
+ * first-order low-pass of time constant `tau`: on a ramp it settles on the ramp's slope
+ * within a few tau; the first sample gives 0. What `derivative` and `predict` share.
+ */
+class SlopeFilter
+{
+public:
+    explicit SlopeFilter(double tau) : m_tau(tau) {}
+    /** Feeds the value at `t` and returns the smoothed slope; a repeated `t` keeps it. */
+    double update(double value, double t);
+
+private:
+    double m_tau;
+    bool m_started = false;
+    double m_value = 0.0;
+    double m_t = 0.0;
+    double m_slope = 0.0;
+};
+
+/** Sends on the smoothed time derivative of its input. */
+class DerivativeNode : public RuntimeNode
+{
+public:
+    explicit DerivativeNode(double tau) : m_slope(tau) {}
+    void onSignal(int port, double value, double t) override;
+
+private:
+    SlopeFilter m_slope;
+};
+
+/** Sends on its input extrapolated over a horizon: x + horizon * (smoothed slope). */
+class PredictNode : public RuntimeNode
+{
+public:
+    explicit PredictNode(double tau) : m_slope(tau) {}
+    void setHorizon(double horizon) { m_horizon = horizon; }
+    double horizon() const { return m_horizon; }
+    void onSignal(int port, double value, double t) override;
+
+private:
+    SlopeFilter m_slope;
+    double m_horizon = 0.0;
+};
+
+/**
+ * A detector on a signal: its message is active while the input is beyond `level` (above
+ * it when `full` > `level`, below it otherwise), with intensity clip((x - level) / (full -
+ * level), 0, 1), the force detector's rule; hysteresis and minDuration as the detectors'.
+ * Its events go into the tick's event buffer like a detector's.
+ */
+class ThresholdNode : public RuntimeNode
+{
+public:
+    struct Params
+    {
+        Message message = Message::Break;
+        double level = 0.0;
+        double full = 1.0;
+        double hysteresis = 0.0;
+        double minDuration = 0.0;
+    };
+    ThresholdNode(int node, Gripper gripper, const Params &params);
+    /** Where this tick's events go (the router sets it before the signals flow). */
+    void setOutput(EventBuffer *out) { m_out = out; }
+    void onSignal(int port, double value, double t) override;
+    /** Ends the message now if active (end of a run, router swap). */
+    void endAll(double t, EventBuffer &events);
+
+private:
+    Params m_params;
+    MessageTracker m_tracker;
+    EventBuffer *m_out = nullptr;
 };
 
 /** Passes the messages that match; a message's whole lifecycle matches or none of it. */

@@ -43,6 +43,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
         const QString gripper = QStringLiteral("gripper");
         const QString minDuration = QStringLiteral("minDuration");
         const QString hysteresis = QStringLiteral("hysteresis");
+        const PortSpec signalIn{QStringLiteral("in"), PortType::Signal, false};
+        const PortSpec value{QStringLiteral("value"), PortType::Signal, true};
         return std::vector<RouterNodeType>{
             {QStringLiteral("force"),
              QStringLiteral("Force detector (Algorithm 1): grasp and break messages from F"),
@@ -57,10 +59,29 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {gripper, QStringLiteral("grasp"), QStringLiteral("loss"), QStringLiteral("min"),
               hysteresis, minDuration}},
             {QStringLiteral("signal"),
-             QStringLiteral("A continuous quantity of a gripper's contact frames"),
+             QStringLiteral("A continuous quantity of a gripper's contact frames (friction: "
+                            "tangential over normal force over mu, 1 at the cone's edge)"),
              {},
-             {{QStringLiteral("value"), PortType::Signal, true}},
-             {gripper, QStringLiteral("quantity")}},
+             {value},
+             {gripper, QStringLiteral("quantity"), QStringLiteral("mu")}},
+            {QStringLiteral("derivative"),
+             QStringLiteral("The time derivative of a signal, smoothed over tau seconds"),
+             {signalIn},
+             {value},
+             {QStringLiteral("tau")}},
+            {QStringLiteral("predict"),
+             QStringLiteral("A signal extrapolated over a horizon (default: the downstream "
+                            "devices' delay plus the reaction time)"),
+             {signalIn},
+             {value},
+             {QStringLiteral("horizon"), QStringLiteral("tau")}},
+            {QStringLiteral("threshold"),
+             QStringLiteral("A detector on a signal: its message is active while the signal is "
+                            "beyond level, toward full, with intensity growing to full"),
+             {signalIn},
+             {eventsOut},
+             {gripper, QStringLiteral("message"), QStringLiteral("level"), QStringLiteral("full"),
+              hysteresis, minDuration}},
             {QStringLiteral("filter"),
              QStringLiteral("Passes the messages that match by message, category and gripper"),
              {in},

@@ -18,7 +18,8 @@ bool fromName(const QLatin1String (&names)[Count], const QString &name, Enum *va
     return false;
 }
 
-const QLatin1String detectorKindNames[] = {QLatin1String("force"), QLatin1String("slip")};
+const QLatin1String detectorKindNames[] = {QLatin1String("force"), QLatin1String("slip"),
+                                           QLatin1String("threshold")};
 const QLatin1String messageNames[] = {QLatin1String("grasp"), QLatin1String("break"),
                                       QLatin1String("slip")};
 const QLatin1String categoryNames[] = {QLatin1String("confirmation"), QLatin1String("exception")};

@@ -11,7 +11,8 @@ namespace semhap {
 enum class DetectorKind
 {
     Force,
-    Slip
+    Slip,
+    Threshold
 };
 /** A semantic message. grasp is a confirmation; break and slip are exceptions. */
 enum class Message

@@ -277,6 +277,10 @@ bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error,
         gripperOf(query.value(1), &frame.gripper);
         fingertip(2, &frame.left);
         fingertip(8, &frame.right);
+        // Friction coefficients came with schema 3; before, they were not known.
+        const bool hasMu = m_schemaVersion >= 3;
+        frame.left.mu = hasMu ? query.value(15).toDouble() : 0.0;
+        frame.right.mu = hasMu ? query.value(16).toDouble() : 0.0;
         if (!visit(frame, optional(query.value(14))))
             return true;
     }

@@ -34,7 +34,8 @@ QStringList SessionSchema::createStatements()
                        "model TEXT NOT NULL, rate REAL NOT NULL, channels TEXT NOT NULL)"),
         QStringLiteral("CREATE TABLE contact_frames (t REAL NOT NULL, gripper TEXT NOT NULL, ") +
             fingertip.arg(QLatin1String("left")) + QStringLiteral(", ") +
-            fingertip.arg(QLatin1String("right")) + QStringLiteral(", arrival REAL)"),
+            fingertip.arg(QLatin1String("right")) +
+            QStringLiteral(", arrival REAL, left_mu REAL, right_mu REAL)"),
         QStringLiteral("CREATE TABLE events (t REAL NOT NULL, gripper TEXT NOT NULL, "
                        "node TEXT NOT NULL, detector TEXT NOT NULL, message TEXT NOT NULL, "
                        "category TEXT NOT NULL, phase TEXT NOT NULL, intensity REAL NOT NULL)"),

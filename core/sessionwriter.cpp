@@ -237,7 +237,7 @@ private:
         m_inputInsert = QSqlQuery(db);
         m_sceneInsert = QSqlQuery(db);
         const std::array<std::pair<QSqlQuery *, int>, 5> inserts{{
-            {&m_frameInsert, 15},
+            {&m_frameInsert, 17},
             {&m_eventInsert, 8},
             {&m_deviceInsert, 2 + MaxChannels},
             {&m_inputInsert, 10},
@@ -313,6 +313,8 @@ private:
         bindFingertip(frame.left);
         bindFingertip(frame.right);
         m_frameInsert.addBindValue(optional(arrival));
+        for (const Fingertip *tip : {&frame.left, &frame.right})
+            m_frameInsert.addBindValue(tip->mu > 0.0 ? QVariant(tip->mu) : QVariant());
         check(m_frameInsert.exec(), m_frameInsert);
     }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contactframe.h"
+#include "routercontext.h"
 
 #include <QString>
 
@@ -27,12 +28,6 @@ struct Feeling
     double shownConfirmation = 0.0;
     double shownWarning = 0.0;
 };
-
-/**
- * A person's reaction time to a cue on the wrist (s): the reactive operator's delay and how
- * early a warning must be felt to count as in time (docs/metrics.md).
- */
-constexpr double DefaultReactionTime = 0.25;
 
 /**
  * Drives the grippers: sets pose targets and grip forces before each physics step. The

@@ -15,7 +15,8 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
     if (!run->m_world)
         return nullptr;
     LoadError loadError;
-    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError);
+    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError,
+                                                RouterContext{options.reactionTime});
     if (!router) {
         *error = loadError.toString();
         return nullptr;

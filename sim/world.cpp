@@ -449,6 +449,13 @@ void World::Private::extract(World &world, double t)
                     out.actor = touch.actor;
                 }
             }
+            // The touched object's friction: the objects' geoms have contact priority, so
+            // theirs is the coefficient of the contact (sim/README.md).
+            out.mu = 0.0;
+            for (const SceneObject &object : world.m_objects) {
+                if (object.actor == out.actor && out.actor >= 0)
+                    out.mu = object.friction;
+            }
             // Into the gripper frame: R^T · f (xmat is row-major, body to world).
             out.hasFxyz = true;
             for (int row = 0; row < 3; ++row) {

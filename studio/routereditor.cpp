@@ -844,9 +844,10 @@ void RouterEditor::rebuildInspector()
 void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key)
 {
     const QJsonValue value = node.params.value(key);
-    const bool detector = node.type == QLatin1String("force") ||
-                          node.type == QLatin1String("slip") ||
-                          node.type == QLatin1String("signal");
+    // Nodes whose gripper (and a threshold's message) is required, not a match-anything filter.
+    const bool detector =
+        node.type == QLatin1String("force") || node.type == QLatin1String("slip") ||
+        node.type == QLatin1String("signal") || node.type == QLatin1String("threshold");
     const QString any = tr("(any)");
     const QString none = tr("(none)");
     const QString standard = tr("(default)");
@@ -856,8 +857,8 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
     if (key == QLatin1String("gripper")) {
         unset = detector ? none : any;
         choices = {gripperName(Gripper::Left), gripperName(Gripper::Right)};
-    } else if (key == QLatin1String("message") && node.type == QLatin1String("filter")) {
-        unset = any;
+    } else if (key == QLatin1String("message")) {
+        unset = detector ? none : any;
         choices = {messageName(Message::Grasp), messageName(Message::Break),
                    messageName(Message::Slip)};
     } else if (key == QLatin1String("category")) {

@@ -9,6 +9,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 using namespace semhap;
 
 namespace {
@@ -96,12 +98,16 @@ private slots:
     void embeddedPatternAndModel();
     void patternFileRelativeToRouter();
     void nodeTypesTable();
+    void invalidPredictive_data();
+    void invalidPredictive();
+    void defaultHorizon();
+    void predictiveWarningComesEarlier();
 };
 
 void TestRouter::presets_data()
 {
     QTest::addColumn<QString>("name");
-    for (const char *name : {"none", "visual", "sensory", "C1", "C2", "C3", "C4"})
+    for (const char *name : {"none", "visual", "sensory", "C1", "C2", "C3", "C4", "C3p", "C4p"})
         QTest::newRow(name) << QString::fromLatin1(name);
 }
 
@@ -127,7 +133,8 @@ void TestRouter::unknownPreset()
     QVERIFY(!loadRouter("C5", {}, &error));
     QCOMPARE(
         error.toString(),
-        QString("C5: no such router preset (presets: C1, C2, C3, C4, none, sensory, visual)"));
+        QString("C5: no such router preset (presets: C1, C2, C3, C3p, C4, C4p, none, sensory, "
+                "visual)"));
 }
 
 void TestRouter::graphRoundTrip()
@@ -166,7 +173,8 @@ void TestRouter::invalid_data()
     QTest::newRow("unknown type")
         << edited("nodes/1", object(R"({"id": "warn", "type": "fliter"})"))
         << "r.json: /nodes/1/type: node 'warn': unknown node type 'fliter' (known: force, slip, "
-           "signal, filter, gate, hysteresis, curve, pattern, proportional, device)";
+           "signal, derivative, predict, threshold, filter, gate, hysteresis, curve, pattern, "
+           "proportional, device)";
     QTest::newRow("detector without gripper")
         << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
         << "r.json: /nodes/0: node 'right.force' (force): needs a gripper (\"left\" or "
@@ -255,7 +263,7 @@ void TestRouter::invalid_data()
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "G"}}]})")
         << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be one of F, N, f.left, "
-           "f.right, n.left, n.right";
+           "f.right, n.left, n.right, friction, friction.left, friction.right";
     QTest::newRow("curve points")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
@@ -393,6 +401,148 @@ void TestRouter::nodeTypesTable()
         QCOMPARE(routerNodeType(type.type), &type);
     }
     QVERIFY(!routerNodeType("nonsense"));
+}
+
+namespace {
+
+/** The right hand's force signal through a predict node to a threshold, then the band. */
+QJsonObject predictiveRouter()
+{
+    return QJsonDocument::fromJson(R"({
+      "format": "semhap.router/1", "name": "predictive",
+      "nodes": [
+        {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "F"}},
+        {"id": "F.predicted", "type": "predict", "params": {}},
+        {"id": "break", "type": "threshold",
+         "params": {"gripper": "right", "message": "break", "level": 80, "full": 120}},
+        {"id": "geiger", "type": "pattern", "params": {"pattern": "vib.geiger"}},
+        {"id": "right.vibro", "type": "device", "params": {"model": "lra4"}}
+      ],
+      "links": [
+        {"from": "F", "to": "F.predicted"}, {"from": "F.predicted", "to": "break"},
+        {"from": "break", "to": "geiger"}, {"from": "geiger", "to": "right.vibro"}
+      ]})")
+        .object();
+}
+
+QJsonObject withParam(QJsonObject router, int node, const QString &key, const QJsonValue &value)
+{
+    QJsonArray nodes = router.value("nodes").toArray();
+    QJsonObject n = nodes.at(node).toObject();
+    QJsonObject params = n.value("params").toObject();
+    if (value.isUndefined())
+        params.remove(key);
+    else
+        params.insert(key, value);
+    n.insert("params", params);
+    nodes.replace(node, n);
+    router.insert("nodes", nodes);
+    return router;
+}
+
+/** The time the first break warning begins, feeding a right-hand force ramp to `router`. */
+double firstBreakWarning(std::unique_ptr<Router> router)
+{
+    EventBuffer events;
+    ContactFrame frame;
+    frame.gripper = Gripper::Right;
+    router->start(0.0);
+    for (int k = 0; k <= 1000; ++k) {
+        frame.t = k * 0.002;
+        const double force = std::min(100.0 * frame.t, 110.0); // 100 N/s, then held
+        frame.left.f = frame.right.f = force / 2;
+        frame.left.n = frame.right.n = 16;
+        frame.left.actor = frame.right.actor = 0;
+        events.clear();
+        router->process(frame, events);
+        for (const SemanticEvent &e : events) {
+            if (e.message == Message::Break && e.phase == EventPhase::Begin)
+                return e.t;
+        }
+    }
+    return -1.0;
+}
+
+} // namespace
+
+void TestRouter::invalidPredictive_data()
+{
+    QTest::addColumn<QJsonObject>("json");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("threshold without level")
+        << withParam(predictiveRouter(), 2, "level", QJsonValue(QJsonValue::Undefined))
+        << "r.json: /nodes/2: node 'break' (threshold): needs a level and a full value";
+    QTest::newRow("full equal to level")
+        << withParam(predictiveRouter(), 2, "full", 80)
+        << "r.json: /nodes/2/params/full: node 'break' (threshold): must differ from level "
+           "(above it: active while the input is above level; below it: while below)";
+    QTest::newRow("unknown message")
+        << withParam(predictiveRouter(), 2, "message", "crack")
+        << "r.json: /nodes/2/params/message: node 'break' (threshold): must be one of grasp, "
+           "break, slip";
+    QTest::newRow("negative hysteresis")
+        << withParam(predictiveRouter(), 2, "hysteresis", -1)
+        << "r.json: /nodes/2/params/hysteresis: node 'break' (threshold): must not be negative";
+    QTest::newRow("negative horizon")
+        << withParam(predictiveRouter(), 1, "horizon", -0.1)
+        << "r.json: /nodes/1/params/horizon: node 'F.predicted' (predict): must not be negative";
+    QTest::newRow("negative tau") << withParam(predictiveRouter(), 1, "tau", -0.1)
+                                  << "r.json: /nodes/1/params/tau: node 'F.predicted' "
+                                     "(predict): must not be negative";
+    QTest::newRow("zero mu") << withParam(predictiveRouter(), 0, "mu", 0)
+                             << "r.json: /nodes/0/params/mu: node 'F' (signal): must be positive";
+}
+
+void TestRouter::invalidPredictive()
+{
+    QFETCH(QJsonObject, json);
+    QFETCH(QString, error);
+    RouterGraph graph;
+    LoadError loadError;
+    QVERIFY2(RouterGraph::fromJson(json, "r.json", &graph, &loadError),
+             qPrintable(loadError.toString()));
+    QVERIFY(!Router::compile(graph, &loadError));
+    QCOMPARE(loadError.toString(), error);
+}
+
+void TestRouter::defaultHorizon()
+{
+    // The lra4 band's response delay (no dead time, 12 ms rise: tau = 0.012 / ln 9) plus the
+    // reaction time of the run; a horizon given is kept; with no device downstream, the
+    // reaction time alone.
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterGraph::fromJson(predictiveRouter(), "r.json", &graph, &error));
+    const double lra4 = 0.012 / std::log(9.0);
+    QVERIFY(std::abs(DeviceModelLibrary::load("lra4", &error)->responseDelay() - lra4) < 1e-12);
+    for (double reaction : {0.25, 0.4}) {
+        std::unique_ptr<Router> router = Router::compile(graph, &error, RouterContext{reaction});
+        QVERIFY(router);
+        const double begin = firstBreakWarning(std::move(router));
+        // The ramp is predicted to cross 80 N a horizon ahead of the 0.8 s it does (the slope
+        // has settled by then: 10 tau).
+        const double horizon = reaction + lra4;
+        QVERIFY2(std::abs(begin - (0.8 - horizon)) < 0.005,
+                 qPrintable(QString("began at %1, horizon %2").arg(begin).arg(horizon)));
+    }
+    RouterGraph fixed;
+    QVERIFY(RouterGraph::fromJson(withParam(predictiveRouter(), 1, "horizon", 0.1), "r.json",
+                                  &fixed, &error));
+    const double begin = firstBreakWarning(Router::compile(fixed, &error));
+    QVERIFY2(std::abs(begin - 0.7) < 0.005, qPrintable(QString::number(begin)));
+}
+
+void TestRouter::predictiveWarningComesEarlier()
+{
+    // The same squeeze through C3 and C3p: C3p's predictive warning begins about its horizon
+    // (the band's delay plus the reaction time) before C3's, which waits for F > 80.
+    LoadError error;
+    const double c3 = firstBreakWarning(loadRouter("C3", {}, &error));
+    const double c3p = firstBreakWarning(loadRouter("C3p", {}, &error));
+    QVERIFY(std::abs(c3 - 0.802) < 1e-9);
+    const double horizon = 0.25 + 0.012 / std::log(9.0);
+    QVERIFY2(std::abs((c3 - c3p) - horizon) < 0.005,
+             qPrintable(QString("%1 %2").arg(c3).arg(c3p)));
 }
 
 QTEST_GUILESS_MAIN(TestRouter)

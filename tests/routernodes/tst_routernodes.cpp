@@ -4,7 +4,10 @@
 #include "routernodes.h"
 
 #include <QLocale>
+
+#include <cmath>
 #include <QTest>
+#include <tuple>
 
 using namespace semhap;
 
@@ -23,6 +26,27 @@ public:
     }
     QStringList seen;
 };
+
+/** Records the signal values that reach it. */
+class SignalRecorder : public RuntimeNode
+{
+public:
+    void onSignal(int, double value, double) override { values.push_back(value); }
+    std::vector<double> values;
+};
+
+/** A fingertip pressing with `normal` N along the grip axis and `tangential` N across it. */
+Fingertip pressing(double normal, double tangential, double mu)
+{
+    Fingertip tip;
+    tip.f = std::hypot(normal, tangential);
+    tip.n = 16;
+    tip.actor = 0;
+    tip.hasFxyz = true;
+    tip.fxyz = {tangential * 0.6, -normal, tangential * 0.8};
+    tip.mu = mu;
+    return tip;
+}
 
 /** An event of detector node `node`, e.g. makeEvent(1.0, 0, "break", "begin", 0.5). */
 SemanticEvent makeEvent(double t, int node, const QString &message, const QString &phase,
@@ -75,6 +99,16 @@ private slots:
     void patternNodeMergesMessages();
     void continuousPatternStartsAtStart();
     void activeMessagesKeepOrder();
+    void slopeOfARamp_data();
+    void slopeOfARamp();
+    void slopeOfAStep();
+    void predictExtrapolatesOverTheHorizon();
+    void threshold_data();
+    void threshold();
+    void thresholdEndsOnEndAll();
+    void frictionUse_data();
+    void frictionUse();
+    void frictionSignal();
 };
 
 void TestRouterNodes::filter_data()
@@ -270,6 +304,179 @@ void TestRouterNodes::activeMessagesKeepOrder()
         QVERIFY(entry.key > previous);
         QVERIFY(entry.key != 3);
         previous = entry.key;
+    }
+}
+
+void TestRouterNodes::slopeOfARamp_data()
+{
+    QTest::addColumn<double>("tau");
+    QTest::addColumn<double>("dt");
+    QTest::newRow("tau 0: the difference quotient") << 0.0 << 0.002;
+    QTest::newRow("tau 50 ms, 2 ms ticks") << 0.05 << 0.002;
+    QTest::newRow("tau 50 ms, 10 ms ticks") << 0.05 << 0.01;
+}
+
+void TestRouterNodes::slopeOfARamp()
+{
+    // x = 3 + 40 t: the slope settles on 40 within a few tau; after n ticks of dt it has come
+    // 1 - e^(-(n-1) dt / tau) of the way (the first difference is the first step).
+    QFETCH(double, tau);
+    QFETCH(double, dt);
+    SlopeFilter filter(tau);
+    QCOMPARE(filter.update(3.0, 0.0), 0.0); // one sample: no slope yet
+    for (int k = 1; k * dt <= 0.5 + 1e-9; ++k) {
+        const double slope = filter.update(3.0 + 40.0 * k * dt, k * dt);
+        const double expected = tau > 0 ? 40.0 * (1 - std::exp(-k * dt / tau)) : 40.0;
+        QVERIFY2(std::abs(slope - expected) < 1e-9,
+                 qPrintable(QString("%1 at %2").arg(slope).arg(k * dt)));
+    }
+}
+
+void TestRouterNodes::slopeOfAStep()
+{
+    // A step is a steep slope for one tick; the filter spreads it and forgets it. Irregular
+    // ticks weigh by their length; a repeated time changes nothing.
+    SlopeFilter filter(0.05);
+    filter.update(0.0, 0.0);
+    const double first = filter.update(10.0, 0.002);
+    QVERIFY(std::abs(first - 5000.0 * (1 - std::exp(-0.002 / 0.05))) < 1e-6);
+    QCOMPARE(filter.update(99.0, 0.002), first);
+    double slope = first;
+    for (double t : {0.01, 0.03, 0.1, 0.8})
+        slope = filter.update(10.0, t);
+    QVERIFY(std::abs(slope) < 1e-3);
+}
+
+void TestRouterNodes::predictExtrapolatesOverTheHorizon()
+{
+    // On a ramp the prediction is the value the ramp will have `horizon` later.
+    PredictNode predict(0.0);
+    predict.setHorizon(0.3);
+    SignalRecorder out;
+    predict.signalTargets.push_back({&out, 0});
+    for (int k = 0; k <= 100; ++k)
+        predict.onSignal(0, 20.0 + 100.0 * k * 0.002, k * 0.002);
+    QVERIFY(std::abs(out.values.back() - (20.0 + 100.0 * (0.2 + 0.3))) < 1e-9);
+    QCOMPARE(out.values.front(), 20.0); // no slope yet: the value itself
+}
+
+void TestRouterNodes::threshold_data()
+{
+    QTest::addColumn<double>("level");
+    QTest::addColumn<double>("full");
+    QTest::addColumn<double>("hysteresis");
+    QTest::addColumn<double>("minDuration");
+    QTest::addColumn<QList<double>>("inputs"); // one per 10 ms from t = 0
+    QTest::addColumn<QStringList>("expected");
+    QTest::newRow("above: strict, intensity to full, ends at the level")
+        << 80.0 << 120.0 << 0.0 << 0.0 << QList<double>{70, 80, 90, 100, 120, 130, 80, 70}
+        << QStringList{"0.02 break begin 0.25", "0.03 break update 0.5", "0.04 break update 1",
+                       "0.06 break end 1"};
+    QTest::newRow("hysteresis holds it down to level - 3")
+        << 80.0 << 120.0 << 3.0 << 0.0 << QList<double>{81, 78, 77, 81}
+        << QStringList{"0 break begin 0.025", "0.01 break update 0", "0.02 break end 0",
+                       "0.03 break begin 0.025"};
+    QTest::newRow("minDuration: begins once it has held 20 ms")
+        << 80.0 << 120.0 << 0.0 << 0.02 << QList<double>{90, 90, 70, 90, 90, 90}
+        << QStringList{"0.05 break begin 0.25"};
+    QTest::newRow("below: full under level")
+        << 0.5 << 0.0 << 0.0 << 0.0 << QList<double>{0.6, 0.5, 0.25, 0.0, 0.7}
+        << QStringList{"0.02 break begin 0.5", "0.03 break update 1", "0.04 break end 1"};
+}
+
+void TestRouterNodes::threshold()
+{
+    QFETCH(double, level);
+    QFETCH(double, full);
+    QFETCH(double, hysteresis);
+    QFETCH(double, minDuration);
+    QFETCH(QList<double>, inputs);
+    QFETCH(QStringList, expected);
+    ThresholdNode::Params params;
+    params.message = Message::Break;
+    params.level = level;
+    params.full = full;
+    params.hysteresis = hysteresis;
+    params.minDuration = minDuration;
+    ThresholdNode node(3, Gripper::Right, params);
+    Recorder out;
+    node.eventTargets.push_back({&out, 0});
+    EventBuffer events;
+    node.setOutput(&events);
+    for (int k = 0; k < inputs.size(); ++k)
+        node.onSignal(0, inputs[k], k * 0.01);
+    QCOMPARE(out.seen, expected);
+    // What went downstream also went into the tick's buffer, as a detector's events do.
+    QCOMPARE(events.size(), int(expected.size()));
+    for (const SemanticEvent &e : events) {
+        QCOMPARE(e.node, 3);
+        QCOMPARE(e.detector, DetectorKind::Threshold);
+        QCOMPARE(e.category, Category::Exception);
+    }
+}
+
+void TestRouterNodes::thresholdEndsOnEndAll()
+{
+    ThresholdNode::Params params;
+    params.message = Message::Slip;
+    params.level = 0.8;
+    params.full = 1.0;
+    ThresholdNode node(0, Gripper::Left, params);
+    Recorder out;
+    node.eventTargets.push_back({&out, 0});
+    EventBuffer events;
+    node.setOutput(&events);
+    node.onSignal(0, 0.9, 1.0);
+    EventBuffer ends;
+    node.endAll(1.5, ends);
+    QCOMPARE(out.seen, (QStringList{"1 slip begin 0.5", "1.5 slip end 0.5"}));
+    QCOMPARE(ends.size(), 1);
+}
+
+void TestRouterNodes::frictionUse_data()
+{
+    QTest::addColumn<double>("normal");
+    QTest::addColumn<double>("tangential");
+    QTest::addColumn<double>("mu");
+    QTest::addColumn<double>("use");
+    QTest::newRow("at the cone's edge") << 20.0 << 2.0 << 0.1 << 1.0;
+    QTest::newRow("inside it") << 20.0 << 1.0 << 0.1 << 0.5;
+    QTest::newRow("beyond it (sliding)") << 10.0 << 1.5 << 0.1 << 1.5;
+    QTest::newRow("no coefficient: unknown") << 20.0 << 2.0 << 0.0 << 0.0;
+    QTest::newRow("no normal force: nothing pressed") << 0.05 << 0.0 << 0.1 << 0.0;
+}
+
+void TestRouterNodes::frictionUse()
+{
+    QFETCH(double, normal);
+    QFETCH(double, tangential);
+    QFETCH(double, mu);
+    QFETCH(double, use);
+    const Fingertip tip = pressing(normal, tangential, mu);
+    QVERIFY2(std::abs(tip.frictionUse(tip.mu) - use) < 1e-12,
+             qPrintable(QString::number(tip.frictionUse(tip.mu))));
+    Fingertip without = tip;
+    without.hasFxyz = false;
+    QCOMPARE(without.frictionUse(0.1), 0.0);
+}
+
+void TestRouterNodes::frictionSignal()
+{
+    // The larger fingertip's use; a node's own mu beats the frame's (a live rig's setting).
+    ContactFrame frame;
+    frame.gripper = Gripper::Left;
+    frame.left = pressing(20.0, 1.0, 0.1);
+    frame.right = pressing(20.0, 1.6, 0.1);
+    SignalRecorder out;
+    const std::tuple<SignalNode::Quantity, double, double> cases[] = {
+        {SignalNode::Quantity::Friction, 0.0, 0.8},
+        {SignalNode::Quantity::FrictionLeft, 0.0, 0.5},
+        {SignalNode::Quantity::FrictionRight, 0.2, 0.4}};
+    for (const auto &[quantity, mu, expected] : cases) {
+        SignalNode node(Gripper::Left, quantity, mu);
+        node.signalTargets.push_back({&out, 0});
+        node.process(frame);
+        QVERIFY(std::abs(out.values.back() - expected) < 1e-12);
     }
 }
 

@@ -108,7 +108,7 @@ void TestSessionCli::recordsSceneStates()
     QString error;
     std::unique_ptr<SessionReader> session = SessionReader::open(m_session, &error);
     QVERIFY2(session, qPrintable(error));
-    QCOMPARE(session->schemaVersion(), 2);
+    QCOMPARE(session->schemaVersion(), SessionInfo::SchemaVersion);
     // 30 a simulated second, the first at the first step.
     const double seconds = session->endTime() - session->startTime();
     QVERIFY2(std::abs(double(session->sceneStateCount()) - seconds * 30) <= 2,

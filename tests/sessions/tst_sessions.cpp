@@ -67,6 +67,7 @@ Recording synthetic(const Router &router, int ticks)
                     for (double &c : tip->fxyz)
                         c = (random() % 2 ? -1 : 1) * anyDouble(random);
                 }
+                tip->mu = k % 4 == 0 ? 0.0 : anyDouble(random) + 1e-9;
             }
             r.frames.push_back(frame);
             r.arrivals.push_back(k % 2 ? qQNaN() : 1000.0 + anyDouble(random));
@@ -192,7 +193,7 @@ void TestSessions::roundTripIsBitForBit()
             for (auto [got, expected] :
                  {std::pair(&frame.left, &want.left), std::pair(&frame.right, &want.right)}) {
                 same = same && sameBits(got->f, expected->f) && got->n == expected->n &&
-                       got->hasFxyz == expected->hasFxyz &&
+                       got->hasFxyz == expected->hasFxyz && sameBits(got->mu, expected->mu) &&
                        session->actors().name(got->actor) == r.actors.name(expected->actor);
                 for (size_t c = 0; c < 3 && expected->hasFxyz; ++c)
                     same = same && sameBits(got->fxyz[c], expected->fxyz[c]);
@@ -415,11 +416,11 @@ void TestSessions::damagedFiles_data()
     QTest::newRow("newer schema")
         << QStringList{"UPDATE metadata SET value = '7' WHERE key = 'schema_version'"}
         << QByteArray() << 0
-        << "session schema version 7 is not supported (this semhap reads 1 to 2)";
+        << "session schema version 7 is not supported (this semhap reads 1 to 3)";
     QTest::newRow("schema not a number")
         << QStringList{"UPDATE metadata SET value = 'two' WHERE key = 'schema_version'"}
         << QByteArray() << 0
-        << "session schema version two is not supported (this semhap reads 1 to 2)";
+        << "session schema version two is not supported (this semhap reads 1 to 3)";
     QTest::newRow("missing scene states")
         << QStringList{"DROP TABLE scene_states"} << QByteArray() << 0
         << "damaged session: table 'scene_states' is missing";

@@ -34,6 +34,8 @@ QString describe(const Fingertip &tip, const ActorTable &actors)
         text += QStringLiteral(" [%1 %2 %3]")
                     .arg(number(tip.fxyz[0]), number(tip.fxyz[1]), number(tip.fxyz[2]));
     }
+    if (tip.mu > 0)
+        text += QStringLiteral(" mu ") + number(tip.mu);
     return text;
 }
 
@@ -124,6 +126,11 @@ void TestStreams::validFrames_data()
         << QByteArray(R"({"t": 2, "gripper": "right",)"
                       R"( "left": {"f": 0, "n": 0, "actor": null, "fxyz": null}})")
         << QStringLiteral("2 right | 0 0 - | 0 0 -");
+    QTest::newRow("friction coefficient")
+        << QByteArray(R"({"t": 2, "gripper": "left", "left": {"f": 20, "n": 16, "actor": "c",)"
+                      R"( "fxyz": [0, -20, 1.5], "mu": 0.1}, "right": {"f": 1, "n": 1,)"
+                      R"( "actor": "c", "mu": null}})")
+        << QStringLiteral("2 left | 20 16 c [0 -20 1.5] mu 0.1 | 1 1 c");
     QTest::newRow("9.0 as n")
         << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 9.0, "actor": "b"}})")
         << QStringLiteral("1 right | 1 9 b | 0 0 -");
@@ -217,6 +224,14 @@ void TestStreams::malformed_data()
         << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 3, "actor": "a",)"
                       R"( "fxyz": {}}})")
         << QStringLiteral(R"("left.fxyz" must be an array of 3 finite numbers, got an object)");
+    QTest::newRow("mu zero")
+        << QByteArray(R"({"t": 1, "gripper": "right", "left": {"f": 1, "n": 3, "actor": "a",)"
+                      R"( "mu": 0}})")
+        << QStringLiteral(R"("left.mu" must be a finite positive number or null, got 0)");
+    QTest::newRow("mu as string")
+        << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3, "actor": "a",)"
+                      R"( "mu": "0.1"}})")
+        << QStringLiteral(R"("right.mu" must be a finite positive number or null, got "0.1")");
     QTest::newRow("t not increasing")
         << QByteArray(R"({"t": 0, "gripper": "right"})")
         << QStringLiteral(R"("t" must increase per gripper, got 0 after 0 for "right")");
@@ -414,7 +429,7 @@ void TestStreams::contactFrameRoundTrip()
     ContactFrame first;
     first.t = 0.1;
     first.gripper = Gripper::Left;
-    first.left = {31.5, 9, actors.intern(QStringLiteral("cube_3")), true, {0.1, 31.4, -2.0}};
+    first.left = {31.5, 9, actors.intern(QStringLiteral("cube_3")), true, {0.1, 31.4, -2.0}, 0.1};
     first.right = {1e-300, 8, actors.intern(QStringLiteral("cube_3")), false, {}};
     ContactFrame second;
     second.t = 123456.789;
@@ -428,8 +443,9 @@ void TestStreams::contactFrameRoundTrip()
     writer.setActorTable(&actors);
     QVERIFY(writer.write(first));
     QVERIFY(writer.write(second));
-    QVERIFY(data.startsWith(R"({"t":0.1,"gripper":"left","left":{"f":31.5,"n":9,)"
-                            R"("actor":"cube_3","fxyz":[0.1,31.4,-2]},"right":{"f":1e-300,)"));
+    QVERIFY(data.startsWith(
+        R"({"t":0.1,"gripper":"left","left":{"f":31.5,"n":9,)"
+        R"("actor":"cube_3","fxyz":[0.1,31.4,-2],"mu":0.1},"right":{"f":1e-300,)"));
 
     QBuffer in(&data);
     in.open(QIODevice::ReadOnly);
