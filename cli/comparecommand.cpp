@@ -2,6 +2,7 @@
 #include "comparecommand.h"
 
 #include "simrun.h"
+#include "statistics.h"
 
 #include <QFile>
 #include <QJsonObject>
@@ -77,57 +78,34 @@ QByteArray csvLine(const Row &row)
     return cells.join(QLatin1Char(',')).toUtf8() + '\n';
 }
 
-/** Mean ± sd of the non-null values, as the table prints it. */
-QString summarise(const std::vector<double> &values)
+/** Digits after the point for numbers of this size: 3 significant ones at most. */
+int digitsFor(double value)
 {
-    double sum = 0;
-    int n = 0;
-    for (double v : values) {
-        if (!std::isnan(v)) {
-            sum += v;
-            ++n;
-        }
-    }
-    if (n == 0)
-        return QStringLiteral("–");
-    const double mean = sum / n;
-    double squares = 0;
-    for (double v : values) {
-        if (!std::isnan(v))
-            squares += (v - mean) * (v - mean);
-    }
-    const double sd = n > 1 ? std::sqrt(squares / (n - 1)) : 0.0;
-    const int digits = std::abs(mean) >= 100 ? 0 : (std::abs(mean) >= 10 ? 1 : 2);
-    return QStringLiteral("%1 ± %2").arg(mean, 0, 'f', digits).arg(sd, 0, 'f', digits);
+    const double size = std::abs(value);
+    return size >= 100 ? 0 : (size >= 10 ? 1 : (size >= 1 ? 2 : 3));
 }
 
-/** The table: a row per metric, a column per router, in the order routers were given. */
-QString table(const std::vector<Row> &rows)
+QString fixed(double value, int digits)
 {
-    QStringList routers;
-    for (const Row &row : rows) {
-        if (!routers.contains(row.inputs[1]))
-            routers.append(row.inputs[1]);
-    }
-    std::vector<QStringList> lines;
-    lines.push_back(QStringList{QStringLiteral("metric")} + routers);
-    for (int m = 0; m < metricKeys().size(); ++m) {
-        QStringList line{metricKeys()[m]};
-        bool any = false;
-        for (const QString &router : routers) {
-            std::vector<double> values;
-            for (const Row &row : rows) {
-                if (row.inputs[1] == router)
-                    values.push_back(row.metrics[size_t(m)]);
-            }
-            line.append(summarise(values));
-            any = any || line.last() != QStringLiteral("–");
-        }
-        if (any)
-            lines.push_back(line);
-    }
-    std::vector<int> widths(size_t(routers.size() + 1), 0);
+    return std::isnan(value) ? QStringLiteral("–") : QString::number(value, 'f', digits);
+}
+
+/** Mean ± sd of the non-null values, as the table prints it. */
+QString meanAndSd(const std::vector<double> &values)
+{
+    const Summary s = summarise(values);
+    if (s.n == 0)
+        return QStringLiteral("–");
+    const int digits = digitsFor(s.mean);
+    return QStringLiteral("%1 ± %2").arg(fixed(s.mean, digits), fixed(s.sd, digits));
+}
+
+/** Lines of cells, the first column left-aligned and the others right-aligned. */
+QString aligned(const std::vector<QStringList> &lines)
+{
+    std::vector<int> widths;
     for (const QStringList &line : lines) {
+        widths.resize(std::max(widths.size(), size_t(line.size())), 0);
         for (int c = 0; c < line.size(); ++c)
             widths[size_t(c)] = std::max(widths[size_t(c)], int(line[c].size()));
     }
@@ -141,12 +119,125 @@ QString table(const std::vector<Row> &rows)
     return text;
 }
 
+/** The routers of the rows, in the order they were given. */
+QStringList routersOf(const std::vector<Row> &rows)
+{
+    QStringList routers;
+    for (const Row &row : rows) {
+        if (!routers.contains(row.inputs[1]))
+            routers.append(row.inputs[1]);
+    }
+    return routers;
+}
+
+/** Metric `m` of `router`'s runs, indexed by the pairing key (every input but the router). */
+std::map<QString, double> valuesOf(const std::vector<Row> &rows, const QString &router, int m)
+{
+    std::map<QString, double> values;
+    for (const Row &row : rows) {
+        if (row.inputs[1] != router)
+            continue;
+        QStringList key = row.inputs;
+        key.removeAt(1);
+        values[key.join(QLatin1Char(','))] = row.metrics[size_t(m)];
+    }
+    return values;
+}
+
+/** The table: a row per metric, a column per router, in the order routers were given. */
+QString table(const std::vector<Row> &rows)
+{
+    const QStringList routers = routersOf(rows);
+    std::vector<QStringList> lines;
+    lines.push_back(QStringList{QStringLiteral("metric")} + routers);
+    for (int m = 0; m < metricKeys().size(); ++m) {
+        QStringList line{metricKeys()[m]};
+        bool any = false;
+        for (const QString &router : routers) {
+            std::vector<double> values;
+            for (const auto &[key, value] : valuesOf(rows, router, m))
+                values.push_back(value);
+            line.append(meanAndSd(values));
+            any = any || line.last() != QStringLiteral("–");
+        }
+        if (any)
+            lines.push_back(line);
+    }
+    return aligned(lines);
+}
+
+/**
+ * Each router against the baseline, run by run on the same inputs (scene, operator, seed,
+ * duration): per metric the mean paired difference, its bootstrap interval and the
+ * signed-rank test's p, and a legend that names them.
+ */
+QString pairedTable(const std::vector<Row> &rows, const QString &baseline)
+{
+    QStringList others = routersOf(rows);
+    others.removeAll(baseline);
+    if (baseline.isEmpty() || others.isEmpty())
+        return QString();
+    std::vector<QStringList> lines;
+    QStringList header{QStringLiteral("metric")};
+    for (const QString &router : others)
+        header << QStringLiteral("Δ %1").arg(router) << QStringLiteral("95% CI")
+               << QStringLiteral("p");
+    lines.push_back(header);
+    int pairs = 0;
+    for (int m = 0; m < metricKeys().size(); ++m) {
+        if (metricKeys()[m] == QLatin1String("realtime_factor"))
+            continue; // the machine's speed, not the router's effect
+        const std::map<QString, double> base = valuesOf(rows, baseline, m);
+        QStringList line{metricKeys()[m]};
+        bool any = false;
+        for (const QString &router : others) {
+            std::vector<double> a;
+            std::vector<double> b;
+            for (const auto &[key, value] : valuesOf(rows, router, m)) {
+                const auto match = base.find(key);
+                a.push_back(match == base.end() ? std::nan("") : match->second);
+                b.push_back(value);
+            }
+            const PairedComparison c = comparePaired(a, b);
+            pairs = std::max(pairs, c.pairs);
+            if (c.pairs == 0) {
+                line << QStringLiteral("–") << QString() << QString();
+                continue;
+            }
+            any = true;
+            const int digits =
+                digitsFor(std::max(std::abs(c.interval.low), std::abs(c.interval.high)));
+            line << QStringLiteral("%1%2").arg(c.meanDifference > 0 ? QStringLiteral("+")
+                                                                    : QString(),
+                                               fixed(c.meanDifference, digits))
+                 << QStringLiteral("[%1, %2]")
+                        .arg(fixed(c.interval.low, digits), fixed(c.interval.high, digits))
+                 << (c.test.n == 0      ? QStringLiteral("–")
+                     : c.test.p < 0.001 ? QStringLiteral("<0.001")
+                                        : QString::number(c.test.p, 'f', 3));
+        }
+        if (any)
+            lines.push_back(line);
+    }
+    return QStringLiteral("\nPaired with %1 (%2 runs each):\n").arg(baseline).arg(pairs) +
+           aligned(lines) +
+           QStringLiteral(
+               "Δ: mean paired difference, router − %1, over the runs both made with the same "
+               "inputs (scene, operator, seed,\nduration). 95% CI: percentile bootstrap of "
+               "that mean, 10000 resamples. p: two-sided Wilcoxon signed-rank test\n(exact "
+               "up to %2 non-zero differences without ties, else the normal approximation; "
+               "zero differences dropped).\n")
+               .arg(baseline)
+               .arg(ExactLimit);
+}
+
 } // namespace
 
 QString CompareCommand::summary() const
 {
     return tr("Runs a grid of routers × seeds on a scene in parallel and prints each metric's "
-              "mean ± sd per router; writes one CSV row per run.");
+              "mean ± sd per router and, against a baseline, the paired difference with its "
+              "95% interval and p; writes one CSV row per run.");
 }
 
 void CompareCommand::configure(QCommandLineParser &parser)
@@ -164,6 +255,10 @@ void CompareCommand::configure(QCommandLineParser &parser)
                       tr("Run only slice I of N of the grid (1-based), for job arrays."),
                       tr("I/N")});
     parser.addOption({QStringLiteral("csv"), tr("Where to write one row per run."), tr("FILE|-")});
+    parser.addOption({QStringLiteral("baseline"),
+                      tr("The router the others are compared with, run by run (default: none, "
+                         "when compared)."),
+                      tr("ROUTER")});
     parser.addOption({QStringLiteral("merge"),
                       tr("Combine the CSV files given as arguments and print the table.")});
     parser.addPositionalArgument(QStringLiteral("files"), tr("CSV files, with --merge."),
@@ -173,7 +268,7 @@ void CompareCommand::configure(QCommandLineParser &parser)
 int CompareCommand::execute(const QCommandLineParser &parser)
 {
     if (parser.isSet(QStringLiteral("merge")))
-        return merge(parser.positionalArguments(), parser.value(QStringLiteral("csv")));
+        return merge(parser, parser.positionalArguments(), parser.value(QStringLiteral("csv")));
     if (!parser.positionalArguments().isEmpty())
         return usageError(tr("files are only taken with --merge"));
     for (const QString &required :
@@ -211,6 +306,9 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         parser.value(QStringLiteral("routers")).split(QLatin1Char(','), Qt::SkipEmptyParts);
     if (routers.isEmpty())
         return usageError(tr("--routers lists no router"));
+    QString baseline;
+    if (!chooseBaseline(parser, routers, &baseline))
+        return ExitUsage;
 
     // The grid, in a fixed order so that shard I of N is the same slice on every machine.
     std::vector<RunOptions> grid;
@@ -285,11 +383,29 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             csv->write(csvLine(row));
     }
     if (!csv || parser.value(QStringLiteral("csv")) != QLatin1String("-"))
-        m_out << table(rows);
+        m_out << table(rows) << pairedTable(rows, baseline);
     return ExitOk;
 }
 
-int CompareCommand::merge(const QStringList &files, const QString &csvPath)
+bool CompareCommand::chooseBaseline(const QCommandLineParser &parser, const QStringList &routers,
+                                    QString *baseline)
+{
+    // The default pairs with no feedback when the grid has it, and prints no pairs otherwise.
+    const bool given = parser.isSet(QStringLiteral("baseline"));
+    *baseline = given ? parser.value(QStringLiteral("baseline")) : QStringLiteral("none");
+    if (!routers.contains(*baseline)) {
+        if (given) {
+            usageError(tr("--baseline %1 is not one of the routers compared (%2)")
+                           .arg(*baseline, routers.join(QStringLiteral(", "))));
+            return false;
+        }
+        baseline->clear();
+    }
+    return true;
+}
+
+int CompareCommand::merge(const QCommandLineParser &parser, const QStringList &files,
+                          const QString &csvPath)
 {
     if (files.isEmpty())
         return usageError(tr("--merge needs the CSV files to combine"));
@@ -335,7 +451,10 @@ int CompareCommand::merge(const QStringList &files, const QString &csvPath)
         if (csvPath == QLatin1String("-"))
             return ExitOk;
     }
-    m_out << table(rows);
+    QString baseline;
+    if (!chooseBaseline(parser, routersOf(rows), &baseline))
+        return ExitUsage;
+    m_out << table(rows) << pairedTable(rows, baseline);
     return ExitOk;
 }
 

@@ -24,7 +24,10 @@ protected:
     int execute(const QCommandLineParser &parser) override;
 
 private:
-    int merge(const QStringList &files, const QString &csvPath);
+    int merge(const QCommandLineParser &parser, const QStringList &files, const QString &csvPath);
+    /** The --baseline among `routers` (empty: none to pair with); false after a usage error. */
+    bool chooseBaseline(const QCommandLineParser &parser, const QStringList &routers,
+                        QString *baseline);
 };
 
 } // namespace semhap

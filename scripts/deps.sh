@@ -10,6 +10,8 @@ packages=(
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-qpa-plugins
     libqt6opengl6-dev libqt6sql6-sqlite libqcustomplot-dev libqcustomplot2.1-qt6
     libmujoco-dev libqhull-dev libhidapi-dev libserialport-dev
+    # statistics (semhap compare's paired tests)
+    libgsl-dev
     # GUI tests and screenshots without a display
     xvfb xauth libgl1-mesa-dri
 )

@@ -365,6 +365,24 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
     };
     QCOMPARE(runs(readAll(dir.filePath("merged.csv"))), runs(readAll(dir.filePath("all.csv"))));
     QCOMPARE(runs(readAll(dir.filePath("all.csv"))).size(), 7);
+    // The runs pair by seed with the baseline (none by default), whatever slice ran them.
+    const auto paired = [](const QByteArray &out) { return out.mid(out.indexOf("\nPaired with")); };
+    QVERIFY(whole.out.contains("\nPaired with none (3 runs each):\nmetric"));
+    QVERIFY(whole.out.contains("Δ C3") && whole.out.contains("95% CI"));
+    QVERIFY(whole.out.contains("Wilcoxon signed-rank"));
+    QCOMPARE(paired(merged.out), paired(whole.out));
+    const CliResult againstC3 = semhapRun(grid + QStringList{"--baseline", "C3"});
+    QVERIFY(againstC3.out.contains("Paired with C3 (3 runs each)") &&
+            againstC3.out.contains("Δ none"));
+    const CliResult unknownBaseline = semhapRun(grid + QStringList{"--baseline", "C4"});
+    QCOMPARE(unknownBaseline.code, 2);
+    QVERIFY2(unknownBaseline.err.contains("--baseline C4 is not one of the routers compared "
+                                          "(none, C3)"),
+             unknownBaseline.err.constData());
+    // Without none among the routers and no --baseline, nothing to pair with.
+    const QStringList noNone{"compare", "--scene", "box_and_block", "--routers", "C3",
+                             "--operator", "scripted", "--seeds", "2", "--duration", "1"};
+    QVERIFY(!semhapRun(noNone).out.contains("Paired"));
 
     QCOMPARE(semhapRun(grid + QStringList{"--shard", "4/3"}).code, 2);
     QFile bad(dir.filePath("bad.csv"));
