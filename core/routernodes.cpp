@@ -194,8 +194,11 @@ void ThresholdNode::onSignal(int, double value, double t)
     const double direction = m_params.full > m_params.level ? 1.0 : -1.0;
     const double relief = m_tracker.isActive() ? m_params.hysteresis : 0.0;
     const bool condition = direction * (value - m_params.level) > -relief;
-    const double intensity =
+    // In steps of IntensityStep: a signal that changes every tick (a friction ratio, a
+    // prediction) would otherwise flood the log with updates no band can render.
+    const double share =
         std::clamp((value - m_params.level) / (m_params.full - m_params.level), 0.0, 1.0);
+    const double intensity = std::round(share / IntensityStep) * IntensityStep;
     const int from = m_out->size();
     m_tracker.update(t, condition, intensity, *m_out);
     emitEvents(*m_out, from);

@@ -181,7 +181,8 @@ private:
 /**
  * A detector on a signal: its message is active while the input is beyond `level` (above
  * it when `full` > `level`, below it otherwise), with intensity clip((x - level) / (full -
- * level), 0, 1), the force detector's rule; hysteresis and minDuration as the detectors'.
+ * level), 0, 1), the force detector's rule, in steps of IntensityStep; hysteresis and
+ * minDuration as the detectors'.
  * Its events go into the tick's event buffer like a detector's.
  */
 class ThresholdNode : public RuntimeNode
@@ -195,6 +196,9 @@ public:
         double hysteresis = 0.0;
         double minDuration = 0.0;
     };
+    /** Intensities come in steps of this size. */
+    static constexpr double IntensityStep = 0.01;
+
     ThresholdNode(int node, Gripper gripper, const Params &params);
     /** Where this tick's events go (the router sets it before the signals flow). */
     void setOutput(EventBuffer *out) { m_out = out; }

@@ -13,6 +13,7 @@
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "simengine.h"
+#include "studio.h"
 #include "userpatterns.h"
 
 #include <QComboBox>
@@ -654,6 +655,32 @@ void TestRouterEditor::screenshot()
     window.routerEditor()->fitView();
     QTest::qWait(300);
     QVERIFY(window.grab().save(dir + "/routereditor-window.png"));
+
+    // The predictive preset on the bimanual task, English and German, at both sizes.
+    for (const QString &language : {QStringLiteral("en"), QStringLiteral("de")}) {
+        for (const QSize size : {QSize(1280, 800), QSize(1920, 1080)}) {
+            StudioOptions c3p = options;
+            c3p.run.scene = "bimanual_sorting";
+            c3p.run.router = "C3p";
+            c3p.size = size;
+            c3p.language = language;
+            Studio studio(c3p);
+            studio.start();
+            QVERIFY(QTest::qWaitForWindowExposed(studio.window()));
+            studio.window()->findChild<QDockWidget *>("routerDock")->raise();
+            QTest::qWait(4000);
+            studio.window()->routerEditor()->fitView();
+            QTest::qWait(300);
+            QString error;
+            QVERIFY2(Studio::screenshot(studio.window(),
+                                        QStringLiteral("%1/router-c3p-%2-%3x%4.png")
+                                            .arg(dir, language)
+                                            .arg(size.width())
+                                            .arg(size.height()),
+                                        &error),
+                     qPrintable(error));
+        }
+    }
 }
 
 QTEST_MAIN(TestRouterEditor)

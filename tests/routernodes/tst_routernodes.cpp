@@ -105,6 +105,7 @@ private slots:
     void predictExtrapolatesOverTheHorizon();
     void threshold_data();
     void threshold();
+    void thresholdIntensitySteps();
     void thresholdEndsOnEndAll();
     void frictionUse_data();
     void frictionUse();
@@ -374,8 +375,8 @@ void TestRouterNodes::threshold_data()
                        "0.06 break end 1"};
     QTest::newRow("hysteresis holds it down to level - 3")
         << 80.0 << 120.0 << 3.0 << 0.0 << QList<double>{81, 78, 77, 81}
-        << QStringList{"0 break begin 0.025", "0.01 break update 0", "0.02 break end 0",
-                       "0.03 break begin 0.025"};
+        << QStringList{"0 break begin 0.03", "0.01 break update 0", "0.02 break end 0",
+                       "0.03 break begin 0.03"};
     QTest::newRow("minDuration: begins once it has held 20 ms")
         << 80.0 << 120.0 << 0.0 << 0.02 << QList<double>{90, 90, 70, 90, 90, 90}
         << QStringList{"0.05 break begin 0.25"};
@@ -413,6 +414,24 @@ void TestRouterNodes::threshold()
         QCOMPARE(e.detector, DetectorKind::Threshold);
         QCOMPARE(e.category, Category::Exception);
     }
+}
+
+void TestRouterNodes::thresholdIntensitySteps()
+{
+    // A signal that wanders by less than a step sends no updates.
+    ThresholdNode::Params params;
+    params.message = Message::Slip;
+    params.level = 0.8;
+    params.full = 1.0;
+    ThresholdNode node(0, Gripper::Left, params);
+    Recorder out;
+    node.eventTargets.push_back({&out, 0});
+    EventBuffer events;
+    node.setOutput(&events);
+    for (int k = 0; k < 50; ++k)
+        node.onSignal(0, 0.9 + 0.0009 * std::sin(k), k * 0.002);
+    node.onSignal(0, 0.95, 0.1);
+    QCOMPARE(out.seen, (QStringList{"0 slip begin 0.5", "0.1 slip update 0.75"}));
 }
 
 void TestRouterNodes::thresholdEndsOnEndAll()

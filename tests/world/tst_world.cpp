@@ -169,6 +169,14 @@ void TestWorld::squeezeReportsForce()
     qDebug() << "F" << frame.totalForce() << "n" << frame.left.n << frame.right.n << "actor"
              << frame.left.actor << frame.right.actor;
     QVERIFY(std::abs(frame.totalForce() - force) < 0.05 * force);
+    // The command is the total of both fingers: each pad presses with half, along the grip
+    // axis (y of the gripper frame), and the cube knows its friction.
+    for (const Fingertip *tip : {&frame.left, &frame.right}) {
+        QVERIFY2(std::abs(tip->f - force / 2) < 0.05 * force / 2,
+                 qPrintable(QString::number(tip->f)));
+        QVERIFY(std::abs(std::abs(tip->fxyz[1]) - tip->f) < 0.05 * tip->f);
+        QCOMPARE(tip->mu, world->objects()[0].friction);
+    }
     QCOMPARE(frame.left.n, 16);
     QCOMPARE(frame.right.n, 16);
     QCOMPARE(frame.left.actor, world->objects()[0].actor);
