@@ -90,6 +90,15 @@ QString fixed(double value, int digits)
     return std::isnan(value) ? QStringLiteral("–") : QString::number(value, 'f', digits);
 }
 
+/** A difference with its sign: +0.25, -1.5, and 0.00 for what rounds to nothing. */
+QString signedFixed(double value, int digits)
+{
+    QString text = fixed(std::abs(value), digits);
+    if (text.count(QLatin1Char('0')) + text.count(QLatin1Char('.')) == text.size())
+        return text;
+    return (value > 0 ? QLatin1Char('+') : QLatin1Char('-')) + text;
+}
+
 /** Mean ± sd of the non-null values, as the table prints it. */
 QString meanAndSd(const std::vector<double> &values)
 {
@@ -207,9 +216,7 @@ QString pairedTable(const std::vector<Row> &rows, const QString &baseline)
             any = true;
             const int digits =
                 digitsFor(std::max(std::abs(c.interval.low), std::abs(c.interval.high)));
-            line << QStringLiteral("%1%2").arg(c.meanDifference > 0 ? QStringLiteral("+")
-                                                                    : QString(),
-                                               fixed(c.meanDifference, digits))
+            line << signedFixed(c.meanDifference, digits)
                  << QStringLiteral("[%1, %2]")
                         .arg(fixed(c.interval.low, digits), fixed(c.interval.high, digits))
                  << (c.test.n == 0      ? QStringLiteral("–")
