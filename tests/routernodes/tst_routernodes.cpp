@@ -35,6 +35,27 @@ public:
     std::vector<double> values;
 };
 
+/** A slip warning from 80 % of the friction available, C3p's, recording what it sends. */
+struct FrictionMargin
+{
+    static ThresholdNode::Params params()
+    {
+        ThresholdNode::Params p;
+        p.message = Message::Slip;
+        p.level = 0.8;
+        p.full = 1.0;
+        return p;
+    }
+    FrictionMargin()
+    {
+        node.eventTargets.push_back({&out, 0});
+        node.setOutput(&events);
+    }
+    ThresholdNode node{0, Gripper::Left, params()};
+    Recorder out;
+    EventBuffer events;
+};
+
 /** A fingertip pressing with `normal` N along the grip axis and `tangential` N across it. */
 Fingertip pressing(double normal, double tangential, double mu)
 {
@@ -419,32 +440,18 @@ void TestRouterNodes::threshold()
 void TestRouterNodes::thresholdIntensitySteps()
 {
     // A signal that wanders by less than a step sends no updates.
-    ThresholdNode::Params params;
-    params.message = Message::Slip;
-    params.level = 0.8;
-    params.full = 1.0;
-    ThresholdNode node(0, Gripper::Left, params);
-    Recorder out;
-    node.eventTargets.push_back({&out, 0});
-    EventBuffer events;
-    node.setOutput(&events);
+    FrictionMargin margin;
     for (int k = 0; k < 50; ++k)
-        node.onSignal(0, 0.9 + 0.0009 * std::sin(k), k * 0.002);
-    node.onSignal(0, 0.95, 0.1);
-    QCOMPARE(out.seen, (QStringList{"0 slip begin 0.5", "0.1 slip update 0.75"}));
+        margin.node.onSignal(0, 0.9 + 0.0009 * std::sin(k), k * 0.002);
+    margin.node.onSignal(0, 0.95, 0.1);
+    QCOMPARE(margin.out.seen, (QStringList{"0 slip begin 0.5", "0.1 slip update 0.75"}));
 }
 
 void TestRouterNodes::thresholdEndsOnEndAll()
 {
-    ThresholdNode::Params params;
-    params.message = Message::Slip;
-    params.level = 0.8;
-    params.full = 1.0;
-    ThresholdNode node(0, Gripper::Left, params);
-    Recorder out;
-    node.eventTargets.push_back({&out, 0});
-    EventBuffer events;
-    node.setOutput(&events);
+    FrictionMargin margin;
+    ThresholdNode &node = margin.node;
+    Recorder &out = margin.out;
     node.onSignal(0, 0.9, 1.0);
     EventBuffer ends;
     node.endAll(1.5, ends);
