@@ -9,7 +9,8 @@ set(SEMHAP_PUBLIC_HEADERS
     core/contactframe.h core/actortable.h core/semanticevent.h core/deviceframe.h
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h
     core/slipdetector.h core/contactframereader.h core/jsonlineswriter.h
-    core/devicemodel.h core/routergraph.h core/router.h core/player.h core/pipeline.h
+    core/devicemodel.h core/routercontext.h core/routergraph.h core/router.h core/player.h
+    core/pipeline.h core/statistics.h
     core/patternrender.h)
 
 install(TARGETS semhap_patterns semhap_core EXPORT semhapTargets
