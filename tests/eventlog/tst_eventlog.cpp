@@ -17,6 +17,7 @@
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTest>
+#include <QTranslator>
 
 using namespace semhap;
 
@@ -426,6 +427,15 @@ void TestEventLog::screenshot()
                                    {"average_peak_grasp_force", 11.27},
                                    {"warning_lead_time", 0.412},
                                    {"breaks_warned_share", 0.5},
+                                   {"breaks_warned_in_time_share", 0.0},
+                                   {"containers_dropped", 4},
+                                   {"drop_warning_lead_time", 1.73},
+                                   {"drops_warned_share", 1.0},
+                                   {"drops_warned_in_time_share", 0.75},
+                                   {"confirmations_per_grasp", 1.04},
+                                   {"slip_episodes", 12},
+                                   {"warnings_per_slip_episode", 0.58},
+                                   {"box_refills", 0},
                                    {"sim_seconds", 56.4},
                                    {"wall_seconds", 57.1},
                                    {"realtime_factor", 0.988},
@@ -433,6 +443,16 @@ void TestEventLog::screenshot()
                                    {"router", "C3"},
                                    {"operator", "scripted"},
                                    {"seed", 7}});
+    // The metrics' labels in German too: they are the longest strings of the panel.
+    QTranslator german;
+    QVERIFY(german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n"));
+    QCoreApplication::installTranslator(&german);
+    MetricsPanel metricsDe(history);
+    metricsDe.resize(420, 800);
+    metricsDe.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&metricsDe));
+    QVERIFY(metricsDe.grab().save(dir + "/metrics-de-420x800.png"));
+    QCoreApplication::removeTranslator(&german);
     for (const QSize size : {QSize(420, 600), QSize(640, 800)}) {
         for (QWidget *panel : {static_cast<QWidget *>(&log), static_cast<QWidget *>(&metrics)}) {
             panel->resize(size);
