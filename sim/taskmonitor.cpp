@@ -236,7 +236,9 @@ void TaskMonitor::observeContainerSlip(const World &world, bool held)
     const double t = world.time();
     if (m_hasRelative) {
         const double dt = world.timestep();
-        const std::array<double, 3> delta{relative[0] - m_relative[0], relative[1] - m_relative[1],
+        // Along the pads only (the gripper frame's x and z): closing the fingers centres the
+        // container along the grip axis, which is no slip.
+        const std::array<double, 3> delta{relative[0] - m_relative[0], 0.0,
                                           relative[2] - m_relative[2]};
         m_slipSpeed += (speed(delta) / dt - m_slipSpeed) * std::min(1.0, dt / SlipSmoothing);
     }

@@ -46,13 +46,15 @@ QByteArray readAll(const QString &path)
 
 /**
  * What the operator is told of `hand` while stepping: a warning felt from `from` on (never
- * when negative), as pulses `pulse` s apart (0: steadily).
+ * when negative), as pulses `pulse` s apart (0: steadily), and confirmations felt over the
+ * intervals of `confirmed`.
  */
-struct Warning
+struct Told
 {
     Gripper hand = Gripper::Right;
     double from = -1.0;
     double pulse = 0.0;
+    std::vector<std::pair<double, double>> confirmed;
 
     Feeling at(double t) const
     {
@@ -60,19 +62,21 @@ struct Warning
         const bool on =
             from >= 0 && t >= from && (pulse <= 0 || std::fmod(t - from, pulse) < 0.025);
         feeling.warning = on ? 1.0 : 0.0;
+        for (const auto &[begin, end] : confirmed)
+            feeling.confirmation = t >= begin && t < end ? 1.0 : feeling.confirmation;
         return feeling;
     }
 };
 
-/** Steps `world` (and the monitor, told `warning`) until `plan` is done; `each` per step. */
-void play(World &world, TaskMonitor &monitor, HandPlan &plan, const Warning &warning,
+/** Steps `world` (and the monitor, told `told`) until `plan` is done; `each` per step. */
+void play(World &world, TaskMonitor &monitor, HandPlan &plan, const Told &told,
           const std::function<void()> &each = {})
 {
     while (!plan.isIdle()) {
         plan.apply(world);
         world.step();
         monitor.observe(world);
-        monitor.feel(warning.hand, warning.at(world.time()), world.time());
+        monitor.feel(told.hand, told.at(world.time()), world.time());
         if (each)
             each();
     }
@@ -82,7 +86,7 @@ void play(World &world, TaskMonitor &monitor, HandPlan &plan, const Warning &war
  * Picks cube_0 with `force` and, unless it is lost, drops it in box B; `fractureAt` gets the
  * time the cube broke, if it did.
  */
-QJsonObject pickAndPlace(double force, const Warning &warning = {}, double *fractureAt = nullptr,
+QJsonObject pickAndPlace(double force, const Told &told = {}, double *fractureAt = nullptr,
                          std::unique_ptr<World> *keep = nullptr)
 {
     QString error;
@@ -100,7 +104,7 @@ QJsonObject pickAndPlace(double force, const Warning &warning = {}, double *frac
     plan.move({0.15, 0.0, 0.19}, 0.4);
     plan.grip(-20, 0.2);
     plan.wait(1.0);
-    play(*world, monitor, plan, warning, [&] {
+    play(*world, monitor, plan, told, [&] {
         if (fractureAt && !world->fractures().empty())
             *fractureAt = world->fractures().front().t;
     });
@@ -111,10 +115,11 @@ QJsonObject pickAndPlace(double force, const Warning &warning = {}, double *frac
 }
 
 /**
- * The left hand takes the container firmly, lifts it and relaxes to `force` (N), too little
- * to hold it, so it slips out; `lostAt` gets the time it left the fingertips.
+ * The left hand takes the container firmly (40 N, or `force` if more), lifts it and relaxes
+ * to `force` (N): too little to hold it, it slips out; `lostAt` gets the time it left the
+ * fingertips.
  */
-QJsonObject holdTooLightly(double force, const Warning &warning = {}, double *lostAt = nullptr)
+QJsonObject holdTooLightly(double force, const Told &told = {}, double *lostAt = nullptr)
 {
     QString error;
     std::unique_ptr<World> world = World::load("bimanual_sorting", SceneOptions{0}, &error);
@@ -127,13 +132,13 @@ QJsonObject holdTooLightly(double force, const Warning &warning = {}, double *lo
     plan.grip(-20, 0.1);
     plan.move({pos[0], pos[1], 0.3}, 0.8);
     plan.move({pos[0], pos[1], gripZ}, 0.6);
-    plan.grip(40.0, 0.4);
+    plan.grip(std::max(40.0, force), 0.4);
     plan.wait(0.3);
     plan.move({pos[0], pos[1], gripZ + 0.06}, 0.8);
     plan.grip(force, 1.0);
     plan.wait(2.0);
     bool held = false;
-    play(*world, monitor, plan, warning, [&] {
+    play(*world, monitor, plan, told, [&] {
         const ContactFrame &f = world->frame(Gripper::Left);
         const bool holds = f.left.actor == actor && f.right.actor == actor;
         if (held && !holds && lostAt && *lostAt < 0)
@@ -166,6 +171,7 @@ private slots:
     void dropWarningLeadTime();
     void emptiedBoxIsRefilled();
     void bimanualTaskNeverStalls();
+    void confirmationsAndSlipEpisodes();
     void stressScripts_data();
     void stressScripts();
 };
@@ -366,7 +372,9 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
     QCOMPARE(runs(readAll(dir.filePath("merged.csv"))), runs(readAll(dir.filePath("all.csv"))));
     QCOMPARE(runs(readAll(dir.filePath("all.csv"))).size(), 7);
     // The runs pair by seed with the baseline (none by default), whatever slice ran them.
-    const auto paired = [](const QByteArray &out) { return out.mid(out.indexOf("\nPaired with")); };
+    const auto paired = [](const QByteArray &out) {
+        return out.mid(out.indexOf("\nPaired with"));
+    };
     QVERIFY(whole.out.contains("\nPaired with none (3 runs each):\nmetric"));
     QVERIFY(whole.out.contains("Δ C3") && whole.out.contains("95% CI"));
     QVERIFY(whole.out.contains("Wilcoxon signed-rank"));
@@ -380,8 +388,9 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
                                           "(none, C3)"),
              unknownBaseline.err.constData());
     // Without none among the routers and no --baseline, nothing to pair with.
-    const QStringList noNone{"compare", "--scene", "box_and_block", "--routers", "C3",
-                             "--operator", "scripted", "--seeds", "2", "--duration", "1"};
+    const QStringList noNone{"compare",    "--scene",  "box_and_block", "--routers", "C3",
+                             "--operator", "scripted", "--seeds",       "2",         "--duration",
+                             "1"};
     QVERIFY(!semhapRun(noNone).out.contains("Paired"));
 
     QCOMPARE(semhapRun(grid + QStringList{"--shard", "4/3"}).code, 2);
@@ -461,8 +470,8 @@ void TestSimRun::breakWarningLeadTime()
     QCOMPARE(pickAndPlace(140.0, {}, &fracture).value("cubes_broken").toInt(), 1);
     QVERIFY(fracture > 0);
     // Runs are deterministic: the same squeeze, now with a warning felt `lead` before.
-    const Warning warning{Gripper::Right, lead >= 0 ? fracture - lead : -1.0, pulse};
-    const QJsonObject m = pickAndPlace(140.0, warning);
+    const Told told{Gripper::Right, lead >= 0 ? fracture - lead : -1.0, pulse, {}};
+    const QJsonObject m = pickAndPlace(140.0, told);
     QCOMPARE(m.value("cubes_broken").toInt(), 1);
     if (lead < 0) {
         QCOMPARE(m.value("breaks_warned_share").toDouble(), 0.0);
@@ -492,7 +501,7 @@ void TestSimRun::dropWarningLeadTime()
     QCOMPARE(holdTooLightly(20.0, {}, &lost).value("containers_dropped").toInt(), 1);
     QVERIFY(lost > 0);
     const double from = lead == -1.0 ? -1.0 : lost - lead;
-    const QJsonObject m = holdTooLightly(20.0, Warning{Gripper::Left, from, 0.0});
+    const QJsonObject m = holdTooLightly(20.0, Told{Gripper::Left, from, 0.0, {}});
     QCOMPARE(m.value("containers_dropped").toInt(), 1);
     const bool warned = lead > 0;
     QCOMPARE(m.value("drops_warned_share").toDouble(), warned ? 1.0 : 0.0);
@@ -548,6 +557,25 @@ void TestSimRun::bimanualTaskNeverStalls()
                                 .arg(before)));
         before = transferred;
     }
+}
+
+void TestSimRun::confirmationsAndSlipEpisodes()
+{
+    // One hold of the container, a confirmation felt twice — the second after a gap longer
+    // than a pulse's — and once more after a gap shorter than one, which is the same
+    // confirmation; the container then slides out of too light a grip: a slip episode.
+    Told told{Gripper::Left, -1.0, 0.0, {{2.5, 3.0}, {3.2, 3.5}, {4.5, 5.0}}};
+    const QJsonObject m = holdTooLightly(20.0, told);
+    QCOMPARE(m.value("containers_dropped").toInt(), 1);
+    QCOMPARE(m.value("confirmations_per_grasp").toDouble(), 2.0);
+    QVERIFY2(m.value("slip_episodes").toInt() >= 1,
+             qPrintable(QString::number(m.value("slip_episodes").toInt())));
+    QCOMPARE(m.value("warnings_per_slip_episode").toDouble(), 0.0);
+    // Held firmly from the start, it does not slide: no episode; nothing felt, no confirmation.
+    const QJsonObject firm = holdTooLightly(60.0);
+    QCOMPARE(firm.value("containers_dropped").toInt(), 0);
+    QCOMPARE(firm.value("slip_episodes").toInt(), 0);
+    QCOMPARE(firm.value("confirmations_per_grasp").toDouble(), 0.0);
 }
 
 void TestSimRun::stressScripts_data()
