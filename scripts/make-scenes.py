@@ -197,7 +197,7 @@ def box_and_block(max_cubes=24):
 
 def bimanual_sorting(max_cubes=16):
     pile, fragile = cubes(max_cubes, 0.2, 0.0, (CUBE + 0.001, 3 * CUBE + 0.003))
-    container_half = 0.045   # a 9 cm square container
+    container_half = 0.06    # a 12 cm square container: four cubes side by side
     wall = 0.004
     height = 0.09
     walls = []
@@ -210,7 +210,7 @@ def bimanual_sorting(max_cubes=16):
                      f'size="{sx:.4f} {sy:.4f} {height / 2:.4f}" mass="0.07" '
                      f'friction="0.1 0.005 0.0001" {OBJECT_CONTACT} rgba="0.4 0.65 0.7 1"/>')
     return opening("bimanual_sorting", fragile) + f"""
-    <geom name="container.base" type="cylinder" pos="-0.2 0 0.01" size="0.06 0.01"
+    <geom name="container.base" type="cylinder" pos="-0.2 0 0.01" size="0.075 0.01"
           rgba="0.45 0.45 0.5 1"/>
 {open_box("box.cubes", 0.2, 0.0, 0.26, 0.04, 0.01, "0.55 0.42 0.3 1")}
     <body name="container" pos="-0.2 0 0.021">
@@ -221,7 +221,7 @@ def bimanual_sorting(max_cubes=16):
     </body>
     <site name="pick" type="box" pos="0.2 0 0.05" size="0.13 0.13 0.05" rgba="0 0 0 0"/>
     <site name="home" type="sphere" pos="-0.2 0 0.021" size="0.01" rgba="0 0 0 0"/>
-{gripper("left", (-0.2, 0.0, 0.3), 0.065, "0.6 0.45 0.35 1")}
+{gripper("left", (-0.2, 0.0, 0.3), 0.08, "0.6 0.45 0.35 1")}
 {gripper("right", (0.2, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>

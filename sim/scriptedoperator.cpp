@@ -2,6 +2,7 @@
 #include "scriptedoperator.h"
 
 #include "perception.h"
+#include "taskmonitor.h"
 #include "world.h"
 
 #include <algorithm>
@@ -26,11 +27,22 @@ constexpr double TooMuchPressure = 0.65;
 constexpr double Gravity = 9.81;
 // How high the left hand lifts the container off its base.
 constexpr double HoldLift = 0.06;
+// The container takes a cube in each quarter; full, it is put down to be emptied.
+constexpr int Quarters = 4;
 // How long a grip takes to close (s, times the trial's pace), and a hurried one.
 constexpr double ClosingTime = 0.7;
 constexpr double FastClosingTime = 0.15;
 // The drifting hold: the grip relaxes exponentially towards nothing with this time constant (s).
 constexpr double RelaxTimeConstant = 20.0;
+// The holding hand's grip drifts down unnoticed (sim/README.md, "The holding hand"): without
+// feedback on the force, finger forces fall exponentially with a time constant of ~15 s
+// (Ambike, Zatsiorsky & Latash 2015), by up to 35 % of the force and more (Hirose et al.
+// 2020).
+constexpr double DriftTimeConstant = 15.0;
+constexpr double DriftShare = 0.35;
+// The least a felt slip warning adds to the grip (N), when the grip already matches the load
+// the operator expects.
+constexpr double RegripStep = 5.0;
 
 } // namespace
 
@@ -64,6 +76,9 @@ void ScriptedOperator::act(World &world)
         react(world, m_percepts.front());
         m_percepts.pop_front();
     }
+    const double rightGrip = world.grip(Gripper::Right);
+    m_rightOpens = m_lastRightGrip > 0.0 && rightGrip <= 0.0;
+    m_lastRightGrip = rightGrip;
     if (m_task == Task::BimanualSorting)
         planHold(world);
     if (m_right.isIdle())
@@ -74,9 +89,27 @@ void ScriptedOperator::act(World &world)
 std::array<double, 3> ScriptedOperator::placePoint(const World &world)
 {
     if (m_task == Task::BimanualSorting) {
+        // Above the container's emptiest quarter: it takes four cubes side by side.
         const int container = world.objectIndex(QStringLiteral("container"));
+        const SceneObject &walls = world.objects()[size_t(container)];
         const auto pos = world.objectPosition(container);
-        return {pos[0], pos[1], pos[2] + world.objects()[size_t(container)].upper[2] + 0.11};
+        const double quarter = walls.upper[0] / 2;
+        std::array<double, 3> best{pos[0], pos[1], 0.0};
+        double bestClearance = -1.0;
+        for (double dx : {-quarter, quarter}) {
+            for (double dy : {-quarter, quarter}) {
+                double clearance = 1.0;
+                for (int cube : cubesIn(world))
+                    clearance = std::min(clearance,
+                                         std::hypot(world.objectPosition(cube)[0] - pos[0] - dx,
+                                                    world.objectPosition(cube)[1] - pos[1] - dy));
+                if (clearance > bestClearance + 1e-9) {
+                    bestClearance = clearance;
+                    best = {pos[0] + dx, pos[1] + dy, 0.0};
+                }
+            }
+        }
+        return {best[0], best[1], pos[2] + walls.upper[2] + 0.11};
     }
     // Where the fewest cubes are: the free spot of a 4 x 4 grid farthest from any cube in the
     // place region, released above the rim so the fingers never land on a cube.
@@ -126,7 +159,8 @@ void ScriptedOperator::planPick(World &world)
             cube = int(i);
         }
     }
-    if (cube < 0 || (m_task == Task::BimanualSorting && m_hold != Hold::Holding)) {
+    const bool full = m_task == Task::BimanualSorting && int(cubesIn(world).size()) >= Quarters;
+    if (cube < 0 || (m_task == Task::BimanualSorting && m_hold != Hold::Holding) || full) {
         m_right.wait(0.2);
         return;
     }
@@ -141,6 +175,7 @@ void ScriptedOperator::planGrasp(World &world)
 {
     const int cube = m_target;
     m_target = -1;
+    m_carried = cube;
     if (world.objects()[size_t(cube)].broken)
         return;
     const auto pos = world.objectPosition(cube);
@@ -224,12 +259,15 @@ void ScriptedOperator::planHold(World &world)
                 m_hold = Hold::Holding;
                 m_holdStart = t;
                 m_holdPos = world.target(Gripper::Left).pos;
-                m_slipAfter = m_random.uniform(10.0, 15.0);
                 break;
             }
             const auto pos = world.objectPosition(container);
             const double gripZ = pos[2] + object.upper[2] - 0.02 + PadDrop;
+            // The grip a practised person chooses for the empty container: 1.56 times what
+            // holds it (a safety margin of 36 % of the grip), kept as the grip-to-load ratio
+            // for the load it expects.
             m_holdGrip = m_random.normal(46.0, 3.0);
+            m_gripPerLoad = m_holdGrip / holdLimit;
             m_left.grip(OpenGrip, 0.1);
             m_left.move({pos[0], pos[1], 0.3}, 0.8);
             m_left.move({pos[0], pos[1], gripZ}, 0.6);
@@ -240,13 +278,22 @@ void ScriptedOperator::planHold(World &world)
         }
         break;
     case Hold::Holding: {
-        // The hand relaxes without noticing: the grip drifts down to what just holds the
-        // empty container after m_slipAfter seconds, and the wrist sways a few millimetres.
-        const double s = (t - m_holdStart) / m_slipAfter;
-        world.setGrip(Gripper::Left,
-                      m_variant == Variant::DriftingHold
-                          ? m_holdGrip * std::exp(-(t - m_holdStart) / RelaxTimeConstant)
-                          : std::max(0.0, m_holdGrip - (m_holdGrip - holdLimit) * s));
+        // The hand relaxes without noticing: the grip drifts down exponentially from the last
+        // grip the person chose, and the wrist sways a few millimetres.
+        const double decay =
+            std::exp(-(t - m_holdStart) /
+                     (m_variant == Variant::DriftingHold ? RelaxTimeConstant : DriftTimeConstant));
+        const double kept = m_variant == Variant::DriftingHold ? 0.0 : 1.0 - DriftShare;
+        world.setGrip(Gripper::Left, m_holdGrip * (kept + (1.0 - kept) * decay));
+        if (m_variant != Variant::DriftingHold && releasesIntoContainer(world)) {
+            // Dropping a cube into the container held in the other hand, people raise the
+            // grip in anticipation, scaled to the load they expect (Johansson & Westling
+            // 1988): here the same grip-to-load ratio for one cube more.
+            const SceneObject &cube = world.objects()[size_t(m_carried)];
+            m_holdGrip =
+                world.grip(Gripper::Left) + m_gripPerLoad * cube.mass * Gravity / object.friction;
+            m_holdStart = t;
+        }
         Pose target = world.target(Gripper::Left);
         target.pos[0] = m_holdPos[0] + 0.004 * std::sin(2 * Pi * t / 5.0 + m_wobblePhase[0]);
         target.pos[1] = m_holdPos[1] + 0.003 * std::sin(2 * Pi * t / 7.0 + m_wobblePhase[1]);
@@ -257,16 +304,26 @@ void ScriptedOperator::planHold(World &world)
             m_left.clear();
             m_left.grip(OpenGrip, 0.15);
             m_left.move({m_holdPos[0], m_holdPos[1], 0.3}, 0.6);
+        } else if (int(cubesIn(world).size()) >= Quarters && m_right.isIdle()) {
+            // Full: put it down on its base to be emptied, and take it again.
+            m_hold = Hold::SetDown;
+            m_left.move({m_holdPos[0], m_holdPos[1], m_holdPos[2] - HoldLift}, 0.8);
+            m_left.grip(OpenGrip, 0.2);
+            m_left.move({m_holdPos[0], m_holdPos[1], 0.3}, 0.6);
         }
         break;
     }
+    case Hold::SetDown:
+        if (m_left.isIdle()) {
+            m_hold = Hold::Acquire;
+            m_holdStart = t;
+        }
+        break;
     case Hold::Dropped: {
         Region home;
-        const auto pos = world.objectPosition(container);
         world.region(QStringLiteral("home"), &home);
-        const bool back =
-            std::abs(pos[0] - home.center[0]) < 0.01 && std::abs(pos[1] - home.center[1]) < 0.01;
-        if (m_left.isIdle() && back && t - m_droppedAt > 2.0) {
+        const bool back = TaskMonitor::isOnBase(world, container, home);
+        if (m_left.isIdle() && back && t - m_droppedAt > TaskMonitor::RespawnPenalty) {
             m_hold = Hold::Acquire;
             m_holdStart = t;
         }
@@ -274,6 +331,35 @@ void ScriptedOperator::planHold(World &world)
     }
     }
     m_left.apply(world);
+}
+
+std::vector<int> ScriptedOperator::cubesIn(const World &world) const
+{
+    // What the eyes see in the container: cubes within its walls, above its floor.
+    const int container = world.objectIndex(QStringLiteral("container"));
+    const SceneObject &walls = world.objects()[size_t(container)];
+    const auto pos = world.objectPosition(container);
+    std::vector<int> cubes;
+    for (size_t i = 0; i < world.objects().size(); ++i) {
+        const auto p = world.objectPosition(int(i));
+        if (int(i) != container && !world.objects()[i].broken &&
+            std::abs(p[0] - pos[0]) < walls.upper[0] && std::abs(p[1] - pos[1]) < walls.upper[1] &&
+            p[2] > pos[2] && p[2] < pos[2] + walls.upper[2] + 0.03)
+            cubes.push_back(int(i));
+    }
+    return cubes;
+}
+
+bool ScriptedOperator::releasesIntoContainer(const World &world) const
+{
+    // The picking hand opening above the container: a cube is about to land in it.
+    if (!m_rightOpens || m_carried < 0)
+        return false;
+    const int container = world.objectIndex(QStringLiteral("container"));
+    const auto above = world.objectPosition(container);
+    const auto hand = world.gripperPose(Gripper::Right).pos;
+    return std::hypot(hand[0] - above[0], hand[1] - above[1]) <
+           world.objects()[size_t(container)].upper[0];
 }
 
 bool ScriptedOperator::looksAt(Gripper hand, double t) const
@@ -320,10 +406,20 @@ void ScriptedOperator::react(World &world, const Percept &percept)
             plan.regrip(grip, 0.0);
         break;
     case Cue::Warning:
-        if (percept.hand == Gripper::Left && m_hold == Hold::Holding) {
-            // The container is slipping: grip firmly again, and the drift starts over.
-            m_holdGrip = std::max(m_holdGrip, grip) + 5.0;
+        if (m_task == Task::BimanualSorting && percept.hand == Gripper::Left) {
+            // The holding hand is warned of a slip, whatever it is doing with the container:
+            // grip as for the load it sees (the container and the cubes in it), at least a
+            // step firmer; a hold's drift starts over.
+            const int container = world.objectIndex(QStringLiteral("container"));
+            const SceneObject &object = world.objects()[size_t(container)];
+            double load = object.mass;
+            for (int cube : cubesIn(world))
+                load += world.objects()[size_t(cube)].mass;
+            m_holdGrip =
+                std::max(m_gripPerLoad * load * Gravity / object.friction, grip + RegripStep);
             m_holdStart = world.time();
+            if (m_hold != Hold::Holding)
+                plan.regrip(m_holdGrip, 0.1);
             break;
         }
         plan.regrip(0.7 * grip, 0.15);

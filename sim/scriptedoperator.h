@@ -6,6 +6,7 @@
 #include "random.h"
 
 #include <deque>
+#include <vector>
 
 namespace semhap {
 
@@ -13,12 +14,15 @@ namespace semhap {
  * Performs the scene's task the way a person would: reach, close at a human speed, lift,
  * carry, release, return, with seeded variation in timing and grip force — so that without
  * feedback some cubes break and some slip, as in the paper's no-feedback condition. In the
- * bimanual task the left hand holds the container with a grip that drifts slowly down (the
- * subconscious hand movement the paper describes), so it slips every 10–15 s.
+ * bimanual task the left hand holds the container as the grip/load-force literature says a
+ * hand without feeling does (sim/README.md, "The holding hand"): a chosen grip-to-load
+ * ratio, an unnoticed exponential drift, a grip raised as the other hand drops a cube in; a
+ * full container is put down to be emptied.
  *
  * Reactive, it also acts on what it perceives, `reactionTime` later: it stops closing on a
  * grasp confirmation (or once the fingertip pressure is clear), eases off on a break warning
- * or high pressure, and grips harder on a slip warning; the overlay counts only while it
+ * or high pressure, and grips the container as for the load it sees on a slip warning; the
+ * overlay counts only while it
  * looks at that hand (it watches the picking hand and glances at the other every few s).
  */
 class ScriptedOperator : public Operator
@@ -78,6 +82,10 @@ private:
     void planHold(World &world);
     void react(World &world, const Percept &percept);
     bool looksAt(Gripper hand, double t) const;
+    /** The cubes in the container (within its walls, up to a cube above its rim). */
+    std::vector<int> cubesIn(const World &world) const;
+    /** Whether the picking hand lets go above the container this step. */
+    bool releasesIntoContainer(const World &world) const;
     std::array<double, 3> placePoint(const World &world);
 
     Task m_task;
@@ -96,11 +104,15 @@ private:
     {
         Acquire,
         Holding,
+        SetDown,
         Dropped
     } m_hold = Hold::Acquire;
     double m_holdStart = 0.0;
-    double m_holdGrip = 0.0;
-    double m_slipAfter = 12.0;
+    double m_holdGrip = 0.0;    ///< the grip last chosen (N), from which it drifts
+    double m_gripPerLoad = 1.0; ///< grip over the load it holds, as chosen for the container
+    int m_carried = -1;         ///< the cube the picking hand took last
+    double m_lastRightGrip = 0.0;
+    bool m_rightOpens = false; ///< the picking hand began to open this step
     double m_droppedAt = 0.0;
     std::array<double, 3> m_holdPos{};
     std::array<double, 2> m_wobblePhase{};

@@ -24,8 +24,8 @@ constexpr double FallenBy = 0.02;
 constexpr double SlipSpeed = 0.005;
 constexpr double SlipSmoothing = 0.02;
 constexpr double SlipQuiet = 0.2;
-// The container counts as off its base this far from the home site (m).
-constexpr double OffHome = 0.02;
+// A container put down is emptied this long after the hand let go (s).
+constexpr double SetDownSettle = 0.5;
 // Cubes returned to the box go to where the scene started them, or this much higher per
 // layer while that spot is taken (m).
 constexpr double Layer = 0.052;
@@ -184,8 +184,7 @@ void TaskMonitor::observeContainer(World &world)
     if (!m_containerDown && !m_containerHeld && !held) {
         // Knocked off its base (by the other hand, or respawned onto a spilled cube): the
         // same rule as a drop, without counting one.
-        const auto pos = world.objectPosition(m_container);
-        if (std::hypot(pos[0] - m_home.center[0], pos[1] - m_home.center[1]) > OffHome &&
+        if (!isOnBase(world, m_container, m_home) &&
             speed(world.objectVelocity(m_container)) < AtRest) {
             m_containerDown = true;
             m_containerDroppedAt = t;
@@ -208,8 +207,25 @@ void TaskMonitor::observeContainer(World &world)
         m_containerLostAt = -1.0;
         return;
     }
-    if (!m_containerHeld)
+    if (!m_containerHeld) {
+        // Put down on its base by an open hand: emptied once it rests (the next cycle).
+        if (m_emptyAt >= 0 && t >= m_emptyAt) {
+            for (size_t i = 0; i < world.objects().size(); ++i) {
+                if (int(i) != m_container && !world.objects()[i].broken &&
+                    isInContainer(world, int(i)))
+                    returnToBox(world, int(i));
+            }
+            m_emptyAt = -1.0;
+        }
         return;
+    }
+    if (m_containerLostAt < 0 && world.grip(Gripper::Left) <= 0) {
+        // Let go of, not lost: the hand opened while still holding it.
+        m_containerHeld = false;
+        ++m_setDowns;
+        m_emptyAt = t + SetDownSettle;
+        return;
+    }
     if (m_containerLostAt < 0) {
         // The failure is the moment it left the fingertips: what was felt up to then counts.
         m_containerLostAt = t;
@@ -287,6 +303,15 @@ void TaskMonitor::refill(World &world)
         ++m_refills;
 }
 
+bool TaskMonitor::isOnBase(const World &world, int container, const Region &home)
+{
+    const auto pos = world.objectPosition(container);
+    const auto &q = world.objectPose(container).quat;
+    // Its up axis within 20 degrees of the vertical: 1 - 2 (x^2 + y^2) is that axis' z.
+    const bool upright = 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]) > std::cos(0.35);
+    return upright && std::hypot(pos[0] - home.center[0], pos[1] - home.center[1]) <= OffHome;
+}
+
 bool TaskMonitor::isInContainer(const World &world, int object) const
 {
     const SceneObject &walls = world.objects()[size_t(m_container)];
@@ -355,8 +380,9 @@ QJsonObject TaskMonitor::metrics() const
     if (m_container >= 0) {
         const int drops = m_drops.count;
         metrics.insert(QStringLiteral("containers_dropped"), drops);
+        metrics.insert(QStringLiteral("containers_set_down"), m_setDowns);
         metrics.insert(QStringLiteral("transfers_per_container_cycle"),
-                       double(m_transfers) / (drops + 1));
+                       double(m_transfers) / (drops + m_setDowns + 1));
         metrics.insert(QStringLiteral("drop_warning_lead_time"),
                        mean(m_drops.leadTimeSum, m_drops.warned));
         metrics.insert(QStringLiteral("drops_warned_share"), mean(m_drops.warned, drops));

@@ -32,6 +32,13 @@ public:
     QJsonObject metrics() const;
 
     static constexpr double RespawnPenalty = 2.0;
+    /** How far from its home site (m) a container still stands on its base. */
+    static constexpr double OffHome = 0.01;
+    /**
+     * Whether `container` stands on its base: upright and within OffHome of the `home` site.
+     * Operators wait for this before they take it again; the task respawns it otherwise.
+     */
+    static bool isOnBase(const World &world, int container, const Region &home);
 
 private:
     /** A message as the operator perceives it: one while its pulses keep coming. */
@@ -98,6 +105,8 @@ private:
     // The container (bimanual).
     bool m_containerHeld = false;
     int m_holds = 0;
+    int m_setDowns = 0;
+    double m_emptyAt = -1.0; ///< when a container put down is emptied; -1: none pending
     double m_containerLostAt = -1.0;
     Cue m_warningAtLoss; ///< the left hand's warning as it was when the container left it
     double m_heldHeight = 0.0;
