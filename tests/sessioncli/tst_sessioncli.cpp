@@ -53,7 +53,7 @@ QByteArray contents(const QString &path)
 }
 
 const QStringList RunArgs{"run",        "--scene",  "bimanual_sorting", "--router", "C3",
-                          "--operator", "scripted", "--duration",       "12"};
+                          "--operator", "scripted", "--duration",       "20"};
 
 } // namespace
 
