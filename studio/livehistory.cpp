@@ -134,6 +134,7 @@ void LiveHistory::append(const SemanticEvent &routed)
         MessageSpan span;
         span.gripper = event.gripper;
         span.node = node;
+        span.detector = event.detector;
         span.message = event.message;
         span.category = event.category;
         span.begin = event.t;

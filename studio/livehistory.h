@@ -61,6 +61,7 @@ struct MessageSpan
 {
     Gripper gripper = Gripper::Right;
     QString node; ///< the detector's node id
+    DetectorKind detector = DetectorKind::Force;
     Message message = Message::Grasp;
     Category category = Category::Confirmation;
     double begin = 0.0;

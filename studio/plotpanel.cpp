@@ -595,8 +595,13 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
         fill.setAlpha(span.category == Category::Exception ? 70 : 32);
         brush = QBrush(fill);
     }
-    const QString id =
+    // A threshold node's message is named after its node, in rows under the detectors'
+    // labels: a predicted break begins while the force detector's is still ahead.
+    const bool threshold = span.detector == DetectorKind::Threshold;
+    QString id =
         QStringLiteral("span.%1.%2").arg(gripperName(span.gripper), messageName(span.message));
+    if (threshold)
+        id += QLatin1Char('/') + span.node;
     const std::array<QCPAxisRect *, 2> rects = {plot.forceRect, plot.countRect};
     for (size_t i = 0; i < rects.size(); ++i) {
         auto *shade = new QCPItemRect(m_plot);
@@ -617,7 +622,8 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
         view.endLines[i]->setLayer(QStringLiteral("spans"));
     }
     view.label =
-        addText(m_plot, plot.forceRect, messageTitle(span.message), Qt::AlignLeft | Qt::AlignTop);
+        addText(m_plot, plot.forceRect, threshold ? span.node : messageTitle(span.message),
+                Qt::AlignLeft | Qt::AlignTop);
     view.label->setObjectName(id);
     view.label->setColor(color.darker(150));
     QFont font = view.label->font();
@@ -625,8 +631,9 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
     view.label->setFont(font);
     view.label->setBrush(QColor(255, 255, 255, 170));
     // One row per message below the rect's title, so overlapping spans stay readable.
+    const int row = int(span.message) + (threshold ? 3 : 0);
     place(view.label->position, plot.forceRect, QCPItemPosition::ptPlotCoords,
-          QCPItemPosition::ptAxisRectRatio, span.begin, 0.14 + 0.13 * int(span.message));
+          QCPItemPosition::ptAxisRectRatio, span.begin, 0.14 + 0.13 * row);
     return view;
 }
 

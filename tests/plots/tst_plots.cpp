@@ -76,7 +76,7 @@ void startRun(LiveHistory &history)
     std::array<GripperThresholds, 2> thresholds{};
     thresholds[size_t(Gripper::Right)] = rightThresholds();
     history.start({{QStringLiteral("right.vibro"), QStringLiteral("vibro"), {"ch0", "ch1"}}},
-                  thresholds, {"right.force", "right.slip"});
+                  thresholds, {"right.force", "right.slip", "right.break"});
 }
 
 void appendTicks(LiveHistory &history, int from, int to)
@@ -106,6 +106,12 @@ void fill(LiveHistory &history)
         const int node = message == Message::Slip ? 1 : 0;
         history.append(eventAt(times.first, node, message, EventPhase::Begin));
         history.append(eventAt(times.second, node, message, EventPhase::End));
+    }
+    // A predictive warning: a threshold node's break, beginning before the detector's.
+    for (const auto &[t, phase] : {std::pair(2.75, EventPhase::Begin), {3.4, EventPhase::End}}) {
+        SemanticEvent event = eventAt(t, 2, Message::Break, phase);
+        event.detector = DetectorKind::Threshold;
+        history.append(event);
     }
     history.commit();
 }
@@ -254,6 +260,9 @@ void TestPlots::spans_data()
     QTest::newRow("slip: hatched exception")
         << "span.right.slip"
         << "slip" << QColor(0xD55E00) << int(Qt::BDiagPattern) << 4.0 << 4.5;
+    QTest::newRow("threshold node: named after it")
+        << "span.right.break/right.break"
+        << "right.break" << QColor(0xE69F00) << int(Qt::SolidPattern) << 2.75 << 3.4;
 }
 
 void TestPlots::spans()
