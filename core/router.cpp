@@ -519,16 +519,16 @@ void RouterCompiler::setDefaultHorizons()
         // The slowest device its output reaches, whatever the path (signals, events, voices).
         double delay = 0.0;
         std::vector<char> seen(m_graph.nodes.size(), 0);
-        std::vector<int> todo{int(i)};
-        while (!todo.empty()) {
-            const int from = todo.back();
-            todo.pop_back();
+        std::vector<int> pending{int(i)};
+        while (!pending.empty()) {
+            const int from = pending.back();
+            pending.pop_back();
             if (m_info[size_t(from)].model)
                 delay = std::max(delay, m_info[size_t(from)].model->responseDelay());
             for (const ResolvedLink &link : m_links) {
                 if (link.from == from && !seen[size_t(link.to)]) {
                     seen[size_t(link.to)] = 1;
-                    todo.push_back(link.to);
+                    pending.push_back(link.to);
                 }
             }
         }
