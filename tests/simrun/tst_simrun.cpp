@@ -148,6 +148,21 @@ QJsonObject holdTooLightly(double force, const Told &told = {}, double *lostAt =
     return monitor.metrics();
 }
 
+/** A run of the bimanual task with the scripted operator and C3; null (and a warning) on error. */
+std::unique_ptr<SimRun> bimanualRun(std::uint64_t seed, double duration, int cubes = -1)
+{
+    RunOptions options;
+    options.scene = "bimanual_sorting";
+    options.seed = seed;
+    options.duration = duration;
+    options.sceneOptions.cubes = cubes;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    if (!run)
+        qWarning("%s", qPrintable(error));
+    return run;
+}
+
 } // namespace
 
 class TestSimRun : public QObject
@@ -258,14 +273,8 @@ void TestSimRun::holdingHandDrifts()
     // exponentially with a 15 s time constant towards 65 % of the grip it chose
     // (sim/README.md, "The holding hand").
     QFETCH(int, seed);
-    RunOptions options;
-    options.scene = "bimanual_sorting";
-    options.sceneOptions.cubes = 0;
-    options.seed = std::uint64_t(seed);
-    options.duration = 40;
-    QString error;
-    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-    QVERIFY2(run, qPrintable(error));
+    std::unique_ptr<SimRun> run = bimanualRun(seed, 40, 0);
+    QVERIFY(run);
     RunSink sink;
     const int actor = run->world().objects()[size_t(run->world().objectIndex("container"))].actor;
     double start = -1.0;
@@ -300,13 +309,8 @@ void TestSimRun::holdingHandAnticipatesACube()
     // Dropping a cube into the container, the holding hand raises its grip at once by the
     // cube's weight over the friction, times the grip-to-load ratio it chose for the
     // container (Johansson & Westling 1988's anticipatory grip).
-    RunOptions options;
-    options.scene = "bimanual_sorting";
-    options.seed = 1;
-    options.duration = 20;
-    QString error;
-    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-    QVERIFY2(run, qPrintable(error));
+    std::unique_ptr<SimRun> run = bimanualRun(1, 20);
+    QVERIFY(run);
     RunSink sink;
     World &world = run->world();
     const SceneObject &container = world.objects()[size_t(world.objectIndex("container"))];
@@ -455,12 +459,8 @@ void TestSimRun::forceHoldsWhileTouching()
     // The bimanual task's first seconds: the left hand closes on the container and the right
     // picks a cube, each grasp with a slide that once made force contacts drop out for single
     // steps (and the detectors end and begin their grasps). The force is held over them.
-    RunOptions options;
-    options.scene = "bimanual_sorting";
-    options.duration = 8.0;
-    QString error;
-    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-    QVERIFY2(run, qPrintable(error));
+    std::unique_ptr<SimRun> run = bimanualRun(1, 8.0);
+    QVERIFY(run);
     struct Frames : RunSink
     {
         std::array<std::vector<ContactFrame>, 2> byHand;
@@ -584,13 +584,8 @@ void TestSimRun::bimanualTaskNeverStalls()
 {
     // The cubes run out after a minute or two unless the box is refilled and a container
     // knocked off its base comes back; seed 7 once stopped for good after 120 s.
-    RunOptions options;
-    options.scene = "bimanual_sorting";
-    options.seed = 7;
-    options.duration = 300;
-    QString error;
-    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-    QVERIFY2(run, qPrintable(error));
+    std::unique_ptr<SimRun> run = bimanualRun(7, 300);
+    QVERIFY(run);
     RunSink sink;
     int before = 0;
     for (double until : {100.0, 200.0, 300.0}) {
