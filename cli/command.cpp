@@ -2,6 +2,7 @@
 #include "command.h"
 
 #include "patternlibrary.h"
+#include "sessioninfo.h"
 #include "sessionwriter.h"
 
 #include <QFile>
@@ -114,6 +115,25 @@ void Command::addRoutingOptions(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("set"),
                       tr("Override a node parameter, e.g. right.force.break=90 (repeatable)."),
                       tr("NODE.PARAM=VALUE")});
+    parser.addOption({QStringLiteral("reaction-time"),
+                      tr("Reaction time in seconds of the person the router warns: part of a "
+                         "predict node's horizon (default 0.25)."),
+                      tr("S")});
+}
+
+bool Command::routerContextOption(const QCommandLineParser &parser, RouterContext *context)
+{
+    const QString option = QStringLiteral("reaction-time");
+    double seconds = context->reactionTime;
+    if (!numberOption(parser, option, &seconds))
+        return false;
+    if (!(seconds >= 0.0 && seconds <= SessionInfo::MaxReactionTime)) {
+        usageError(
+            tr("--%1 must be between 0 and %2 s").arg(option).arg(SessionInfo::MaxReactionTime));
+        return false;
+    }
+    context->reactionTime = seconds;
+    return true;
 }
 
 void Command::addPatternArguments(QCommandLineParser &parser)

@@ -3,6 +3,7 @@
 
 #include "devicemodel.h"
 #include "patternrender.h"
+#include "routercontext.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -74,10 +75,15 @@ protected:
     /** Opens FILE, or standard input for `-`, for reading. Null after printing why. */
     QIODevice *openInput(const QString &path);
     /**
-     * Declares --events, --device-frames and --set: the outputs and overrides of every
-     * command that routes frames (route, replay, listen).
+     * Declares --events, --device-frames, --set and --reaction-time: the outputs, overrides
+     * and router context of every command that routes frames (route, replay, listen).
      */
     void addRoutingOptions(QCommandLineParser &parser);
+    /**
+     * Reads --reaction-time, when it is set, into `context`; false after a usage message
+     * when it is not a number of seconds within SessionInfo::MaxReactionTime.
+     */
+    bool routerContextOption(const QCommandLineParser &parser, RouterContext *context);
     /** Declares PATTERN|FILE, --intensity and --release-at: what render and play share. */
     void addPatternArguments(QCommandLineParser &parser);
     /**

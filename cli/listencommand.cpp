@@ -128,8 +128,11 @@ int ListenCommand::execute(const QCommandLineParser &parser)
                                    ? parser.value(QStringLiteral("router"))
                                    : QStringLiteral("C3");
     const QStringList overrides = parser.values(QStringLiteral("set"));
+    RouterContext context;
+    if (!routerContextOption(parser, &context))
+        return ExitUsage;
     LoadError error;
-    std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error);
+    std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error, context);
     if (!router)
         return inputError(error.toString());
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
@@ -157,6 +160,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         info.source = QStringLiteral("listen");
         info.routerSource = routerName;
         info.overrides = overrides;
+        info.routerContext = context;
         info.addBindings(bindings);
         info.notes = parser.value(QStringLiteral("notes"));
         info.extra.insert(QStringLiteral("udp"),

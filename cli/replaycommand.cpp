@@ -103,14 +103,18 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     if (!session)
         return inputError(message);
     const QStringList overrides = parser.values(QStringLiteral("set"));
+    // The person of the session, unless the command line asks what another would have felt.
+    RouterContext context = session->info().routerContext;
+    if (!routerContextOption(parser, &context))
+        return ExitUsage;
     LoadError error;
     std::unique_ptr<Router> router;
     if (parser.isSet(QStringLiteral("router"))) {
-        router = loadRouter(parser.value(QStringLiteral("router")), overrides, &error);
+        router = loadRouter(parser.value(QStringLiteral("router")), overrides, &error, context);
     } else {
         RouterGraph graph;
         if (session->routerGraph(&graph, &error))
-            router = compileWithOverrides(graph, overrides, &error);
+            router = compileWithOverrides(graph, overrides, &error, context);
     }
     if (!router)
         return inputError(error.toString());

@@ -50,9 +50,13 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     if (!checkSingleStdout({eventsPath, framesOutPath}))
         return ExitUsage;
 
+    RouterContext context;
+    if (!routerContextOption(parser, &context))
+        return ExitUsage;
     LoadError error;
-    std::unique_ptr<Router> router = loadRouter(parser.value(QStringLiteral("router")),
-                                                parser.values(QStringLiteral("set")), &error);
+    std::unique_ptr<Router> router =
+        loadRouter(parser.value(QStringLiteral("router")), parser.values(QStringLiteral("set")),
+                   &error, context);
     if (!router)
         return inputError(error.toString());
 

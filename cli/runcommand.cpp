@@ -116,7 +116,8 @@ void RunCommand::configure(QCommandLineParser &parser)
     parser.addOption(
         {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
     parser.addOption({QStringLiteral("reaction-time"),
-                      tr("The reactive operator's reaction time in seconds (default 0.25)."),
+                      tr("Reaction time in seconds of the reactive operator, and of the person "
+                         "the router's predict nodes warn (default 0.25)."),
                       tr("S")});
     parser.addOption({QStringLiteral("set"), tr("Override a router node parameter (repeatable)."),
                       tr("NODE.PARAM=VALUE")});
@@ -159,17 +160,18 @@ int RunCommand::execute(const QCommandLineParser &parser)
     double cubes = -1;
     if (!numberOption(parser, QStringLiteral("duration"), &options.duration) ||
         !numberOption(parser, QStringLiteral("seed"), &seed) ||
-        !numberOption(parser, QStringLiteral("cubes"), &cubes) ||
-        !numberOption(parser, QStringLiteral("reaction-time"), &options.reactionTime))
+        !numberOption(parser, QStringLiteral("cubes"), &cubes))
         return ExitUsage;
+    RouterContext context{options.reactionTime};
+    if (!routerContextOption(parser, &context))
+        return ExitUsage;
+    options.reactionTime = context.reactionTime;
     if (options.duration <= 0 || options.duration > 1e6)
         return usageError(tr("--duration must be between 0 and 1000000 s"));
     if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
         return usageError(tr("--seed must be a whole number >= 0"));
     if (parser.isSet(QStringLiteral("cubes")) && (cubes < 0 || cubes != std::floor(cubes)))
         return usageError(tr("--cubes must be a whole number >= 0"));
-    if (options.reactionTime < 0 || options.reactionTime > 10)
-        return usageError(tr("--reaction-time must be between 0 and 10 s"));
     options.seed = std::uint64_t(seed);
     options.sceneOptions.cubes = int(cubes);
 

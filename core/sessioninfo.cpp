@@ -22,6 +22,7 @@ const QString VersionKey = QStringLiteral("semhap_version");
 const QString StartedKey = QStringLiteral("started_utc");
 const QString EndedKey = QStringLiteral("ended_utc");
 const QString NotesKey = QStringLiteral("notes");
+const QString ReactionTimeKey = QStringLiteral("reaction_time");
 
 QString compact(const QJsonDocument &document)
 {
@@ -60,10 +61,12 @@ QMap<QString, QString> SessionInfo::toMetadata() const
     if (ended.isValid())
         rows.insert(EndedKey, utc(ended));
     rows.insert(NotesKey, notes);
+    rows.insert(ReactionTimeKey, QString::number(routerContext.reactionTime));
     return rows;
 }
 
-SessionInfo SessionInfo::fromMetadata(const QMap<QString, QString> &rows)
+bool SessionInfo::fromMetadata(const QMap<QString, QString> &rows, SessionInfo *result,
+                               QString *error)
 {
     SessionInfo info;
     QMap<QString, QString> rest = rows;
@@ -83,8 +86,23 @@ SessionInfo SessionInfo::fromMetadata(const QMap<QString, QString> &rows)
     info.started = QDateTime::fromString(take(StartedKey), Qt::ISODateWithMs);
     info.ended = QDateTime::fromString(take(EndedKey), Qt::ISODateWithMs);
     info.notes = take(NotesKey);
+    // Sessions recorded before the router had a context ran it with the default.
+    if (rest.contains(ReactionTimeKey)) {
+        const QString text = take(ReactionTimeKey);
+        bool ok = false;
+        const double seconds = text.toDouble(&ok);
+        if (!ok || !(seconds >= 0.0 && seconds <= MaxReactionTime)) {
+            *error = QStringLiteral("%1: expected seconds from 0 to %2, got '%3'")
+                         .arg(ReactionTimeKey)
+                         .arg(MaxReactionTime)
+                         .arg(text);
+            return false;
+        }
+        info.routerContext.reactionTime = seconds;
+    }
     info.extra = rest;
-    return info;
+    *result = info;
+    return true;
 }
 
 } // namespace semhap

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "routercontext.h"
+
 #include <QDateTime>
 #include <QJsonObject>
 #include <QMap>
@@ -23,12 +25,13 @@ struct SessionInfo
     /** The oldest schema this semhap reads; a session outside the two is refused. */
     static constexpr int OldestSchemaVersion = 1;
 
-    QString source;        ///< what produced the frames: `run`, `listen`, `studio`
-    QString scene;         ///< scene name or file, when simulated
-    QJsonObject router;    ///< RouterGraph JSON with its patterns and models embedded
-    QString routerSource;  ///< the preset name or file the router was loaded from
-    QStringList overrides; ///< `NODE.PARAM=VALUE` applied to it
-    QJsonObject bindings;  ///< device name → transport URI
+    QString source;              ///< what produced the frames: `run`, `listen`, `studio`
+    QString scene;               ///< scene name or file, when simulated
+    QJsonObject router;          ///< RouterGraph JSON with its patterns and models embedded
+    QString routerSource;        ///< the preset name or file the router was loaded from
+    QStringList overrides;       ///< `NODE.PARAM=VALUE` applied to it
+    RouterContext routerContext; ///< what the router was compiled for (`reaction_time`)
+    QJsonObject bindings;        ///< device name → transport URI
     QString operatorName;
     QString seed;
     QString semhapVersion;
@@ -42,8 +45,15 @@ struct SessionInfo
 
     /** The metadata table's rows. */
     QMap<QString, QString> toMetadata() const;
-    /** Reads the rows back; unknown keys go to `extra`. */
-    static SessionInfo fromMetadata(const QMap<QString, QString> &rows);
+    /**
+     * Reads the rows back; unknown keys go to `extra`. False with `error` (`KEY: reason`)
+     * when a value this semhap needs to replay the session is malformed.
+     */
+    static bool fromMetadata(const QMap<QString, QString> &rows, SessionInfo *info,
+                             QString *error);
+
+    /** The longest reaction time a session or an option may state (s). */
+    static constexpr double MaxReactionTime = 10.0;
 };
 
 } // namespace semhap

@@ -149,7 +149,11 @@ bool SessionReader::load(QString *error)
             return false;
         }
     }
-    m_info = SessionInfo::fromMetadata(rows);
+    QString malformed;
+    if (!SessionInfo::fromMetadata(rows, &m_info, &malformed)) {
+        *error = QStringLiteral("damaged session: metadata ") + malformed;
+        return false;
+    }
     for (const QJsonValue &node : m_info.router.value(QLatin1String("nodes")).toArray())
         m_nodes.append(node.toObject().value(QLatin1String("id")).toString());
 

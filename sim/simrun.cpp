@@ -115,7 +115,7 @@ SessionInfo SimRun::sessionInfo() const
     info.operatorName = m_options.operatorName;
     info.seed = QString::number(m_options.seed);
     info.extra.insert(QStringLiteral("duration"), QString::number(m_options.duration));
-    info.extra.insert(QStringLiteral("reaction_time"), QString::number(m_options.reactionTime));
+    info.routerContext.reactionTime = m_options.reactionTime;
     if (m_options.sceneOptions.cubes >= 0)
         info.extra.insert(QStringLiteral("cubes"), QString::number(m_options.sceneOptions.cubes));
     return info;

@@ -77,7 +77,7 @@ bool SessionReplay::open(const QString &path, QString *error)
     LoadError loadError;
     std::unique_ptr<Router> router;
     if (reader->routerGraph(&graph, &loadError))
-        router = Router::compile(graph, &loadError);
+        router = Router::compile(graph, &loadError, reader->info().routerContext);
     // The hands that recorded frames; the router's detectors of another never fired.
     Hands hands{false, false};
     for (const ContactFrame &frame : frames)
@@ -143,8 +143,10 @@ void SessionReplay::seek(double t)
 
 bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
 {
+    // Rerouted for the person who recorded it.
     LoadError loadError;
-    std::unique_ptr<Router> router = Router::compile(graph, &loadError);
+    std::unique_ptr<Router> router =
+        Router::compile(graph, &loadError, m_reader->info().routerContext);
     if (!router) {
         *error = loadError.toString();
         return false;

@@ -110,7 +110,8 @@ bool SimEngine::listen(const LiveRigOptions &options, QString *error)
 bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
 {
     LoadError loadError;
-    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError);
+    std::unique_ptr<Router> router =
+        loadRouter(options.router, options.overrides, &loadError, routerContext());
     if (!router) {
         *error = loadError.toString();
         return false;
@@ -251,7 +252,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
     }
     LoadError loadError;
     std::unique_ptr<SessionWriter> recording;
-    std::unique_ptr<Router> router = Router::compile(graph, &loadError);
+    std::unique_ptr<Router> router = Router::compile(graph, &loadError, routerContext());
     if (!router) {
         *error = loadError.toString();
         return false;
@@ -566,6 +567,7 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
         // Like `semhap listen --session`: no scene, operator or seed, the rig's address.
         info.routerSource = m_options.router;
         info.overrides = m_options.overrides;
+        info.routerContext = routerContext();
         info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
     } else {
         info = m_run->sessionInfo();

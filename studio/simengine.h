@@ -81,6 +81,8 @@ public:
     bool reset(QString *error);
     /** The simulation's options; while live, `router` and `overrides` are the rig's. */
     const RunOptions &options() const { return m_options; }
+    /** What routers are compiled for, the simulation's and the live rig's alike. */
+    RouterContext routerContext() const { return RouterContext{m_options.reactionTime}; }
     bool isLoaded() const { return m_run != nullptr || m_rig != nullptr; }
 
     void run();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "studiooptions.h"
 
+#include "sessioninfo.h"
+
 #include <QCommandLineParser>
 #include <QSize>
 
@@ -35,6 +37,11 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                 tr("name"), o.run.operatorName);
     const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."), tr("n"),
                                   QString::number(o.run.seed));
+    const QCommandLineOption reactionTime(
+        {QStringLiteral("reaction-time")},
+        tr("Reaction time in seconds of the operator and of the person the router's predict "
+           "nodes warn."),
+        tr("seconds"), QString::number(o.run.reactionTime));
     const QCommandLineOption cubes({QStringLiteral("cubes")},
                                    tr("Cubes in play (default: the scene's)."), tr("n"));
     const QCommandLineOption speed({QStringLiteral("speed")},
@@ -61,8 +68,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                     tr("[address:]port"));
     const QCommandLineOption defaultLayout({QStringLiteral("default-layout")},
                                            tr("Ignore the saved window layout."));
-    parser.addOptions({scene, router, op, seed, cubes, speed, paused, screenshot, quitAfter, size,
-                       language, posePort, listen, defaultLayout});
+    parser.addOptions({scene, router, op, seed, reactionTime, cubes, speed, paused, screenshot,
+                       quitAfter, size, language, posePort, listen, defaultLayout});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
         *message = parser.errorText();
         return false;
@@ -104,6 +111,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     if (!number(seed, 0, 1e15, &value))
         return false;
     o.run.seed = std::uint64_t(value);
+    if (!number(reactionTime, 0, SessionInfo::MaxReactionTime, &o.run.reactionTime))
+        return false;
     if (parser.isSet(cubes)) {
         if (!number(cubes, 0, 1000, &value))
             return false;

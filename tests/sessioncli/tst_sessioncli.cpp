@@ -67,6 +67,7 @@ private slots:
     void recordsSceneStates();
     void replayGivesTheRecordedStreams();
     void rerouteEqualsRoute();
+    void replayKeepsTheReactionTime();
     void exportCsv();
     void errors_data();
     void errors();
@@ -152,6 +153,39 @@ void TestSessionCli::rerouteEqualsRoute()
     const QJsonObject metrics = QJsonDocument::fromJson(c1.out).object();
     QCOMPARE(metrics.value("router").toString(), QString("C1"));
     QVERIFY(metrics.value("messages").toObject().contains("right.force.grasp"));
+}
+
+void TestSessionCli::replayKeepsTheReactionTime()
+{
+    // A predict node's horizon holds the person's reaction time: a session replays with the
+    // one it was recorded with, and --reaction-time asks what another person would have felt.
+    // A low break level makes every grasp cross it, so the horizon shows in the begin times.
+    const QString session = m_dir.filePath("slow.db");
+    const QString recorded = m_dir.filePath("slow.events");
+    const QStringList run{
+        "run",        "--scene",  "box_and_block",        "--router", "C3p",
+        "--operator", "scripted", "--duration",           "10",       "--reaction-time",
+        "0.6",        "--set",    "right.break.level=30", "--events", recorded,
+        "--session",  session};
+    QCOMPARE(semhapRun(run).code, 0);
+    QVERIFY(contents(recorded).contains("\"right.break\""));
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(session, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->info().routerContext.reactionTime, 0.6);
+    reader.reset();
+
+    const Result same = semhapRun({"replay", session, "--events", "-"});
+    QCOMPARE(same.code, 0);
+    QCOMPARE(same.out, contents(recorded));
+    const Result quicker =
+        semhapRun({"replay", session, "--reaction-time", "0.25", "--events", "-"});
+    QCOMPARE(quicker.code, 0);
+    QVERIFY(quicker.out.contains("\"right.break\""));
+    QVERIFY(quicker.out != same.out);
+    const Result bad = semhapRun({"replay", session, "--reaction-time", "11", "--events", "-"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY2(bad.err.contains("--reaction-time must be between 0 and 10 s"), bad.err.constData());
 }
 
 void TestSessionCli::exportCsv()

@@ -108,6 +108,7 @@ void record(const QString &path, const Router &router, const Recording &r)
     SessionInfo info;
     info.source = "test";
     info.notes = "notes, with \"quotes\"";
+    info.routerContext.reactionTime = 0.4;
     std::unique_ptr<SessionWriter> writer = SessionWriter::create(path, info, router, &error);
     QVERIFY2(writer, qPrintable(error));
     writer->setActorTable(&r.actors);
@@ -283,6 +284,8 @@ void TestSessions::metadataAndRouter()
     QCOMPARE(session->info().semhapVersion, QString(SEMHAP_VERSION_STRING));
     QVERIFY(session->info().started.isValid());
     QVERIFY(session->info().ended >= session->info().started);
+    QCOMPARE(session->info().routerContext.reactionTime, 0.4);
+    QVERIFY(!session->info().extra.contains("reaction_time"));
     QCOMPARE(session->deviceNames().size(), router->player().deviceCount());
     QCOMPARE(session->channelNames(int(session->deviceNames().indexOf("right.vibro"))),
              QStringList({"m1", "m2", "m3", "m4"}));
@@ -386,12 +389,15 @@ void TestSessions::schemaOneStillOpens()
     const Recording r = synthetic(*router, 200);
     record(path, *router, r);
     damage(path, {"DROP TABLE scene_states",
-                  "UPDATE metadata SET value = '1' WHERE key = 'schema_version'"});
+                  "UPDATE metadata SET value = '1' WHERE key = 'schema_version'",
+                  "DELETE FROM metadata WHERE key = 'reaction_time'"});
     QString error;
     std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
     QVERIFY2(reader, qPrintable(error));
     QCOMPARE(reader->schemaVersion(), 1);
     QCOMPARE(reader->sceneStateCount(), qint64(0));
+    // It ran its router before routers had a context: with the default reaction time.
+    QCOMPARE(reader->info().routerContext.reactionTime, DefaultReactionTime);
     QCOMPARE(reader->contactFrameCount(), qint64(r.frames.size()));
     SceneState state;
     QVERIFY(!reader->readSceneState(0.0, &state, &error));
@@ -421,6 +427,14 @@ void TestSessions::damagedFiles_data()
         << QStringList{"UPDATE metadata SET value = 'two' WHERE key = 'schema_version'"}
         << QByteArray() << 0
         << "session schema version two is not supported (this semhap reads 1 to 3)";
+    QTest::newRow("reaction time not a number")
+        << QStringList{"UPDATE metadata SET value = 'slow' WHERE key = 'reaction_time'"}
+        << QByteArray() << 0
+        << "damaged session: metadata reaction_time: expected seconds from 0 to 10, got 'slow'";
+    QTest::newRow("reaction time negative")
+        << QStringList{"UPDATE metadata SET value = '-0.1' WHERE key = 'reaction_time'"}
+        << QByteArray() << 0
+        << "damaged session: metadata reaction_time: expected seconds from 0 to 10, got '-0.1'";
     QTest::newRow("missing scene states")
         << QStringList{"DROP TABLE scene_states"} << QByteArray() << 0
         << "damaged session: table 'scene_states' is missing";

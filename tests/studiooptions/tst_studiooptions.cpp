@@ -37,6 +37,7 @@ void TestStudioOptions::defaults()
     QCOMPARE(o.run.scene, QString("box_and_block"));
     QCOMPARE(o.run.router, QString("C3"));
     QCOMPARE(o.run.operatorName, QString("scripted"));
+    QCOMPARE(o.run.reactionTime, DefaultReactionTime);
     QVERIFY(o.run.duration >= 3600.0); // the studio runs until stopped
     QVERIFY(o.autoRun);
     QCOMPARE(o.speed, 1.0);
@@ -51,24 +52,39 @@ void TestStudioOptions::options()
 {
     StudioOptions o;
     QString message;
-    QVERIFY2(parse({"--scene",    "bimanual_sorting",
-                    "--router",   "C1",
-                    "--operator", "reactive",
-                    "--seed",     "7",
-                    "--cubes",    "4",
-                    "--speed",    "0.5",
-                    "--paused",   "--screenshot",
-                    "a.png",      "--quit-after",
-                    "2.5",        "--size",
-                    "1920x1080",  "--language",
-                    "de",         "--pose-port",
-                    "0",          "--default-layout"},
+    QVERIFY2(parse({"--scene",
+                    "bimanual_sorting",
+                    "--router",
+                    "C1",
+                    "--operator",
+                    "reactive",
+                    "--seed",
+                    "7",
+                    "--reaction-time",
+                    "0.4",
+                    "--cubes",
+                    "4",
+                    "--speed",
+                    "0.5",
+                    "--paused",
+                    "--screenshot",
+                    "a.png",
+                    "--quit-after",
+                    "2.5",
+                    "--size",
+                    "1920x1080",
+                    "--language",
+                    "de",
+                    "--pose-port",
+                    "0",
+                    "--default-layout"},
                    &o, &message),
              qPrintable(message));
     QCOMPARE(o.run.scene, QString("bimanual_sorting"));
     QCOMPARE(o.run.router, QString("C1"));
     QCOMPARE(o.run.operatorName, QString("reactive"));
     QCOMPARE(o.run.seed, std::uint64_t(7));
+    QCOMPARE(o.run.reactionTime, 0.4);
     QCOMPARE(o.run.sceneOptions.cubes, 4);
     QCOMPARE(o.speed, 0.5);
     QVERIFY(!o.autoRun);
@@ -103,6 +119,7 @@ void TestStudioOptions::rejects_data()
     QTest::newRow("speed not a number") << QStringList{"--speed", "fast"} << "--speed";
     QTest::newRow("speed too high") << QStringList{"--speed", "1000"} << "0.01 to 100";
     QTest::newRow("negative seed") << QStringList{"--seed", "-1"} << "--seed";
+    QTest::newRow("reaction time") << QStringList{"--reaction-time", "-1"} << "0 to 10";
     QTest::newRow("bad size") << QStringList{"--size", "big"} << "WIDTHxHEIGHT";
     QTest::newRow("tiny size") << QStringList{"--size", "10x10"} << "10x10";
     QTest::newRow("language") << QStringList{"--language", "fr"} << "en or de";
