@@ -121,6 +121,28 @@ void Command::addRoutingOptions(QCommandLineParser &parser)
                       tr("S")});
 }
 
+void Command::addMaxGapOption(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("max-gap"),
+                      tr("Refuse a frame whose t jumps more than this many seconds past the "
+                         "stream's latest (default 10)."),
+                      tr("S")});
+}
+
+bool Command::maxGapOption(const QCommandLineParser &options, ContactFrameParser *parser)
+{
+    const QString option = QStringLiteral("max-gap");
+    double seconds = parser->maxGap();
+    if (!numberOption(options, option, &seconds))
+        return false;
+    if (!(seconds > 0.0 && seconds <= ContactFrameParser::MaxTime)) {
+        usageError(tr("--%1 must be more than 0 s").arg(option));
+        return false;
+    }
+    parser->setMaxGap(seconds);
+    return true;
+}
+
 bool Command::routerContextOption(const QCommandLineParser &parser, RouterContext *context)
 {
     const QString option = QStringLiteral("reaction-time");

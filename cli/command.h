@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "contactframeparser.h"
 #include "devicemodel.h"
 #include "patternrender.h"
 #include "routercontext.h"
@@ -84,6 +85,10 @@ protected:
      * when it is not a number of seconds within SessionInfo::MaxReactionTime.
      */
     bool routerContextOption(const QCommandLineParser &parser, RouterContext *context);
+    /** Declares --max-gap: how far a frame's `t` may jump (route, listen). */
+    void addMaxGapOption(QCommandLineParser &parser);
+    /** Reads --max-gap into `parser`'s rule; false after a usage message. */
+    bool maxGapOption(const QCommandLineParser &options, ContactFrameParser *parser);
     /** Declares PATTERN|FILE, --intensity and --release-at: what render and play share. */
     void addPatternArguments(QCommandLineParser &parser);
     /**

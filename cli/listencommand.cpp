@@ -101,6 +101,11 @@ void ListenCommand::configure(QCommandLineParser &parser)
                       tr("NAME=URI")});
     parser.addOption({QStringLiteral("duration"),
                       tr("Stop after this many seconds (default: until interrupted)."), tr("S")});
+    addMaxGapOption(parser);
+    parser.addOption({QStringLiteral("silence"),
+                      tr("After this many seconds without a valid frame, end every message and "
+                         "stop the bands (default 0.25)."),
+                      tr("S")});
 }
 
 int ListenCommand::execute(const QCommandLineParser &parser)
@@ -112,9 +117,14 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         return usageError(tr("--udp is required"));
     double port = 0;
     double duration = 0;
+    double silence = UdpFrameSource::DefaultSilence;
     if (!numberOption(parser, QStringLiteral("udp"), &port) ||
-        !numberOption(parser, QStringLiteral("duration"), &duration))
+        !numberOption(parser, QStringLiteral("duration"), &duration) ||
+        !numberOption(parser, QStringLiteral("silence"), &silence))
         return ExitUsage;
+    if (!(silence > 0.0 && silence <= 3600.0))
+        return usageError(tr("--silence must be between 0 and 3600 s"));
+
     if (port < 0 || port > 65535 || port != std::floor(port))
         return usageError(tr("--udp must be a port number (0 to 65535)"));
     if (duration < 0)
@@ -151,6 +161,9 @@ int ListenCommand::execute(const QCommandLineParser &parser)
                                 ? parser.value(QStringLiteral("bind"))
                                 : QStringLiteral("127.0.0.1");
     UdpFrameSource source;
+    if (!maxGapOption(parser, &source.parser()))
+        return ExitUsage;
+    source.setSilence(silence);
     if (!source.bind(address, int(port), &message))
         return inputError(message);
 
@@ -172,12 +185,10 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         session->setActorTable(&source.actors());
     }
 
-    if (devices.boundNames().isEmpty()) {
-        QuitSignal::install();
-    } else {
-        EmergencyStop::install();
+    // A signal lets the loop close the session and the outputs; bands stop at once.
+    EmergencyStop::installGraceful();
+    if (!devices.boundNames().isEmpty())
         devices.armAll(true);
-    }
     Throttle throttle([this](const QString &line) { report(line); });
     source.setErrorHandler([&throttle](const QString &line) { throttle.report(line); });
     report(tr("listening on udp:%1:%2").arg(address).arg(source.port()));
@@ -194,10 +205,21 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     wall.start();
     const qint64 limit = duration > 0 ? qint64(duration * 1000) : -1;
     while (!QuitSignal::requested() && (limit < 0 || wall.elapsed() < limit)) {
-        const qint64 left = limit < 0 ? 100 : limit - wall.elapsed();
-        if (source.waitForDatagrams(int(std::clamp<qint64>(left, 0, 100))) &&
+        qint64 wait = limit < 0 ? 100 : limit - wall.elapsed();
+        if (source.msecsToSilence() >= 0)
+            wait = std::min(wait, source.msecsToSilence());
+        if (source.waitForDatagrams(int(std::clamp<qint64>(wait, 0, 100))) &&
             source.poll(process) > 0)
             flushAll({events, deviceFrames});
+        if (source.fellSilent()) {
+            // A silent sender must not hold the bands where it left them.
+            pipeline.endAll(sink);
+            devices.stopAll();
+            flushAll({events, deviceFrames});
+            throttle.report(tr("udp:%1: no frame for %2 s: messages ended, bands stopped")
+                                .arg(source.port())
+                                .arg(source.silence()));
+        }
         throttle.roll();
     }
     if (source.stats().frames > 0)

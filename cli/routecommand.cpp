@@ -7,6 +7,7 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "pipeline.h"
+#include "quitsignal.h"
 #include "streamsink.h"
 
 #include <chrono>
@@ -29,6 +30,7 @@ void RouteCommand::configure(QCommandLineParser &parser)
                       tr("Contact frames to read (JSON Lines), or - for standard input."),
                       tr("FILE|-")});
     addRoutingOptions(parser);
+    addMaxGapOption(parser);
     parser.addOption({QStringLiteral("bind"),
                       tr("Send a device's output to a transport, e.g. "
                          "right.vibro=serial:/dev/ttyACM0 (repeatable). With --bind the run "
@@ -77,11 +79,14 @@ int RouteCommand::execute(const QCommandLineParser &parser)
         return usage ? usageError(message) : inputError(message);
     const bool realTime = !devices.boundNames().isEmpty();
     if (realTime) {
-        EmergencyStop::install();
+        // A signal stops the bands at once and ends the loop, which closes the outputs.
+        EmergencyStop::installGraceful();
         devices.armAll(true);
     }
 
     ContactFrameReader reader(frames, framesPath);
+    if (!maxGapOption(parser, &reader.parser()))
+        return ExitUsage;
     reader.setErrorHandler([this](const LoadError &e) { report(e.toString()); });
     Pipeline pipeline(std::move(router));
     StreamSink streams(pipeline.router(), events, deviceFrames);
@@ -91,7 +96,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     double t0 = 0.0;
     bool first = true;
     ContactFrame frame;
-    while (reader.next(&frame)) {
+    while (!(realTime && QuitSignal::requested()) && reader.next(&frame)) {
         // Bound bands feel the session as it happened: wait for each frame's time.
         if (realTime) {
             if (first) {
@@ -99,9 +104,11 @@ int RouteCommand::execute(const QCommandLineParser &parser)
                 t0 = frame.t;
                 first = false;
             }
-            std::this_thread::sleep_until(start +
-                                          std::chrono::duration_cast<Clock::duration>(
-                                              std::chrono::duration<double>(frame.t - t0)));
+            const Clock::time_point due = start + std::chrono::duration_cast<Clock::duration>(
+                                                      std::chrono::duration<double>(frame.t - t0));
+            while (!QuitSignal::requested() && Clock::now() < due)
+                std::this_thread::sleep_until(
+                    std::min(due, Clock::now() + std::chrono::milliseconds(50)));
         }
         pipeline.process(frame, sink);
     }

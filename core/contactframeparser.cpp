@@ -94,7 +94,25 @@ bool ContactFrameParser::parse(const QJsonObject &json, ContactFrame *frame, QSt
         !parseFingertip(json, QLatin1String("right"), &parsed.right, &rightActor, reason))
         return false;
 
+    if (std::abs(parsed.t) > MaxTime)
+        return fail(reason, QStringLiteral("\"t\" must be within ±%1 s, got %2")
+                                .arg(formatNumber(MaxTime), formatNumber(parsed.t)));
     const size_t g = size_t(gripper);
+    // A jump far past the stream's clock is a sender gone wrong, not a pause: every device
+    // instant in between would have to be rendered.
+    bool started = false;
+    double latest = 0.0;
+    for (size_t i = 0; i < m_seen.size(); ++i) {
+        if (m_seen[i]) {
+            latest = started ? std::max(latest, m_lastT[i]) : m_lastT[i];
+            started = true;
+        }
+    }
+    if (started && parsed.t - latest > m_maxGap) {
+        return fail(reason, QStringLiteral("\"t\" jumps by %1 s, more than the %2 s allowed "
+                                           "(--max-gap)")
+                                .arg(formatNumber(parsed.t - latest), formatNumber(m_maxGap)));
+    }
     if (m_seen[g] && !(parsed.t > m_lastT[g])) {
         return fail(reason, QStringLiteral("\"t\" must increase per gripper, got %1 after %2 "
                                            "for \"%3\"")

@@ -16,12 +16,26 @@ namespace semhap {
 /**
  * Parses contact frames (spec section 1) from JSON text or objects, wherever they come
  * from — a JSON Lines file, a UDP datagram — and keeps what validity depends on: each
- * gripper's last `t` (strictly increasing) and the actor names seen. A rejected frame
- * changes neither.
+ * gripper's last `t` (strictly increasing, within MaxTime, and no more than the maximum gap
+ * past the stream's latest) and the actor names seen. A rejected frame changes neither.
  */
 class ContactFrameParser
 {
 public:
+    /** The largest |t| a frame may carry (s): about 317 years, so Unix time fits. */
+    static constexpr double MaxTime = 1e10;
+    /** How far past the stream's latest `t` a frame may jump, unless set otherwise (s). */
+    static constexpr double DefaultMaxGap = 10.0;
+
+    /** How far past the stream's latest `t` a frame may jump (s, > 0). */
+    void setMaxGap(double seconds) { m_maxGap = seconds; }
+    double maxGap() const { return m_maxGap; }
+    /**
+     * Forgets the stream's clock: the next frame starts it again, at any `t`, as the first
+     * did (a live sender that fell silent may come back on another clock).
+     */
+    void restartClock() { m_seen = {}; }
+
     /** Parses one JSON object's text; false with a one-sentence `reason`. */
     bool parse(const QByteArray &json, ContactFrame *frame, QString *reason);
     /** Parses an already decoded object; false with a one-sentence `reason`. */
@@ -38,6 +52,7 @@ private:
     ActorTable m_actors;
     std::array<double, 2> m_lastT{}; ///< per gripper, for the strictly-increasing rule
     std::array<bool, 2> m_seen{};
+    double m_maxGap = DefaultMaxGap;
 };
 
 } // namespace semhap

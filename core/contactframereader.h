@@ -47,6 +47,8 @@ public:
     /** The last rejection, for callers that poll rather than install a handler. */
     const LoadError &lastError() const { return m_lastError; }
 
+    /** The frames' parser (its maximum gap). */
+    ContactFrameParser &parser() { return m_parser; }
     /** The actors named so far; frames refer to them by id. */
     const ActorTable &actors() const { return m_parser.actors(); }
     ActorTable &actors() { return m_parser.actors(); }

@@ -2,6 +2,7 @@
 #include "pipeline.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -17,13 +18,14 @@ Pipeline::Pipeline(std::unique_ptr<Router> router) : m_router(std::move(router))
 
 void Pipeline::process(const ContactFrame &frame, PipelineSink &sink)
 {
+    const bool finite = std::isfinite(frame.t);
     if (!m_router->isStarted()) {
-        m_router->start(frame.t);
-        m_now = frame.t;
+        m_now = finite ? frame.t : 0.0;
+        m_router->start(m_now);
     }
     // A frame older than "now" (another gripper lagging) still runs its detectors, but the
     // clock does not go back: its events act at "now".
-    const double t = std::max(frame.t, m_now);
+    const double t = finite ? std::max(frame.t, m_now) : m_now;
     advance(t, false, sink);
     m_now = t;
     m_events.clear();
@@ -38,10 +40,21 @@ void Pipeline::flush(PipelineSink &sink)
         advance(m_now, true, sink);
 }
 
+void Pipeline::endAll(PipelineSink &sink)
+{
+    if (!m_router->isStarted())
+        return;
+    m_events.clear();
+    m_router->endAll(m_now, m_events);
+    for (const SemanticEvent &event : m_events)
+        sink.onEvent(event);
+}
+
 void Pipeline::advance(double t, bool inclusive, PipelineSink &sink)
 {
     const double limit = inclusive ? t + TimeEpsilon : t - TimeEpsilon;
     Player &player = m_router->player();
+    player.skipBefore(limit, MaxInstantsPerGap);
     DeviceFrame frame;
     for (;;) {
         const double timer = m_router->nextTimer();

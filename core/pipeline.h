@@ -23,7 +23,9 @@ public:
  * a frame at t first renders every device instant before t (and fires due timers, in time
  * order), then runs the detectors and the router. flush() renders the instants at the last
  * frame's time, once every gripper's frame of that tick is in. Deterministic; the per-tick
- * path allocates nothing.
+ * path allocates nothing. Whatever its frames' times, a call does bounded work: a jump of
+ * the clock renders at most MaxInstantsPerGap instants per device (sources refuse such
+ * jumps first: ContactFrameParser's maximum gap), and a non-finite time is taken as "now".
  */
 class Pipeline
 {
@@ -39,6 +41,14 @@ public:
     const Router &router() const { return *m_router; }
     /** The latest frame time seen (the pipeline's "now"). */
     double now() const { return m_now; }
+    /**
+     * Ends every active message now (a source fell silent): their End events go to `sink`;
+     * the devices play out what follows as the next frames advance the clock.
+     */
+    void endAll(PipelineSink &sink);
+
+    /** Device instants rendered at most per device across one jump of the clock. */
+    static constexpr long long MaxInstantsPerGap = 1000;
 
 private:
     void advance(double t, bool inclusive, PipelineSink &sink);

@@ -107,6 +107,20 @@ double Player::nextInstant() const
     return best;
 }
 
+void Player::skipBefore(double t, long long keep)
+{
+    if (!m_started || !std::isfinite(t))
+        return;
+    for (Device &device : m_devices) {
+        // The index of the last instant at or before t, in doubles: a far t must not
+        // overflow the integer before it is compared.
+        const double last = std::floor((t - m_t0) / device.period);
+        const double first = last - double(keep) + 1.0;
+        if (first > double(device.next))
+            device.next = static_cast<long long>(first);
+    }
+}
+
 void Player::renderNext(DeviceFrame *frame)
 {
     // Devices are in name order, so the first device at the earliest instant wins ties.

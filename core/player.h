@@ -74,6 +74,12 @@ public:
     double nextInstant() const;
     /** Renders the earliest pending instant (ties: the device first in name order). */
     void renderNext(DeviceFrame *frame);
+    /**
+     * Leaves each device at most `keep` pending instants up to `t`, dropping the earlier
+     * ones unrendered: a gap in the clock costs bounded work. The inputs catch up at the
+     * next instant rendered.
+     */
+    void skipBefore(double t, long long keep);
 
     int deviceCount() const { return int(m_devices.size()); }
     const QString &deviceName(int device) const { return m_devices[size_t(device)].name; }

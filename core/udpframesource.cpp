@@ -7,6 +7,9 @@
 #include <QJsonObject>
 #include <QUdpSocket>
 
+#include <algorithm>
+#include <cmath>
+
 namespace semhap {
 
 UdpFrameSource::UdpFrameSource(QObject *parent) : QObject(parent) {}
@@ -35,6 +38,7 @@ bool UdpFrameSource::bind(const QString &address, int port, QString *error)
     m_socket = std::move(socket);
     m_buffer.resize(64 * 1024);
     m_stats = Stats();
+    m_lastFrame = -1.0;
     m_clock.start();
     return true;
 }
@@ -93,6 +97,7 @@ void UdpFrameSource::handle(const QByteArray &datagram, double arrival,
         }
         ++m_stats.frames;
         ++*frames;
+        m_lastFrame = arrival;
         handler(frame, arrival);
     };
     if (document.isObject()) {
@@ -111,6 +116,23 @@ void UdpFrameSource::handle(const QByteArray &datagram, double arrival,
         else
             reject(where + QStringLiteral("a contact frame must be a JSON object"));
     }
+}
+
+bool UdpFrameSource::fellSilent()
+{
+    if (m_lastFrame < 0 || double(m_clock.nsecsElapsed()) * 1e-9 - m_lastFrame < m_silence)
+        return false;
+    m_lastFrame = -1.0;
+    m_parser.restartClock();
+    return true;
+}
+
+qint64 UdpFrameSource::msecsToSilence() const
+{
+    if (m_lastFrame < 0)
+        return -1;
+    const double left = m_lastFrame + m_silence - double(m_clock.nsecsElapsed()) * 1e-9;
+    return std::max<qint64>(0, qint64(std::ceil(left * 1000.0)));
 }
 
 void UdpFrameSource::reject(const QString &reason)

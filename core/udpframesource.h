@@ -35,6 +35,8 @@ class UdpFrameSource : public QObject
 public:
     /** Larger datagrams are rejected: a batch of about 200 frames fits. */
     static constexpr qint64 MaxDatagramSize = 32 * 1024;
+    /** A sender quiet this long (s) is gone: what it left active must not go on. */
+    static constexpr double DefaultSilence = 0.25;
 
     /** What the source has seen since bind(). */
     struct Stats
@@ -61,6 +63,19 @@ public:
     /** The port bound to. */
     int port() const;
 
+    /** The frames' parser: its maximum gap. */
+    ContactFrameParser &parser() { return m_parser; }
+    /** How long without a valid frame makes the sender silent (s; default 0.25). */
+    void setSilence(double seconds) { m_silence = seconds; }
+    double silence() const { return m_silence; }
+    /**
+     * True once per silence: no valid frame for silence() since the last one. The caller
+     * ends what the sender left active and stops the bands; the parser's clock starts
+     * again, as the sender may come back on another.
+     */
+    bool fellSilent();
+    /** Milliseconds until fellSilent() may turn true; -1 when silent or before any frame. */
+    qint64 msecsToSilence() const;
     void setErrorHandler(ErrorHandler handler) { m_onError = std::move(handler); }
 
     /** Reads up to `maxDatagrams` pending datagrams; returns how many frames it handed on. */
@@ -87,6 +102,8 @@ private:
     QByteArray m_buffer;
     Stats m_stats;
     ErrorHandler m_onError;
+    double m_silence = DefaultSilence;
+    double m_lastFrame = -1.0; ///< arrival of the last valid frame; -1: none since a silence
 };
 
 } // namespace semhap

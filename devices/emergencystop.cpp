@@ -2,6 +2,7 @@
 #include "emergencystop.h"
 
 #include "protocol.h"
+#include "quitsignal.h"
 
 #include <array>
 #include <atomic>
@@ -49,7 +50,22 @@ extern "C" void onTerminatingSignal(int signal)
     std::raise(signal);
 }
 
+extern "C" void onGracefulSignal(int signal)
+{
+    EmergencyStop::stopAllNow();
+    QuitSignal::request();
+    std::signal(signal, onTerminatingSignal);
+}
+
 } // namespace
+
+void EmergencyStop::installGraceful()
+{
+    stopFrame();
+    QuitSignal::install(); // clears the flag
+    std::signal(SIGINT, onGracefulSignal);
+    std::signal(SIGTERM, onGracefulSignal);
+}
 
 void EmergencyStop::install()
 {

@@ -14,6 +14,13 @@ class EmergencyStop
 public:
     /** Installs the SIGINT and SIGTERM handlers (once; later calls do nothing). */
     static void install();
+    /**
+     * Installs handlers for a loop that owns devices and files (`listen`, `route` on bands):
+     * a signal sends stop-all at once and asks the loop to quit (QuitSignal::requested()),
+     * so it closes its session and outputs; a second signal ends the process as it would
+     * have.
+     */
+    static void installGraceful();
     /** Adds a descriptor to stop on a signal; false when the table (32) is full. */
     static bool add(int fd);
     static void remove(int fd);

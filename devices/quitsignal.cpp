@@ -12,7 +12,7 @@ std::atomic<bool> g_quit{false};
 
 extern "C" void onQuitSignal(int)
 {
-    g_quit.store(true);
+    QuitSignal::request();
 }
 
 } // namespace
@@ -27,6 +27,11 @@ void QuitSignal::install()
 bool QuitSignal::requested()
 {
     return g_quit.load();
+}
+
+void QuitSignal::request()
+{
+    g_quit.store(true);
 }
 
 } // namespace semhap

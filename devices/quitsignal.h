@@ -14,6 +14,8 @@ public:
     static void install();
     /** True once SIGINT or SIGTERM arrived. */
     static bool requested();
+    /** Sets the flag as a signal would (async-signal-safe). */
+    static void request();
 };
 
 } // namespace semhap

@@ -22,11 +22,7 @@ LiveRig::~LiveRig() = default;
 
 void LiveRig::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
 {
-    EventBuffer events;
-    if (m_pipeline->router().isStarted())
-        m_pipeline->router().endAll(m_pipeline->now(), events);
-    for (const SemanticEvent &event : events)
-        sink.onEvent(event);
+    m_pipeline->endAll(sink);
     m_pipeline = std::make_unique<Pipeline>(std::move(router));
 }
 
@@ -35,6 +31,7 @@ bool LiveRig::open(QString *error)
     auto source = std::make_unique<UdpFrameSource>();
     if (!source->bind(m_options.address, m_options.port, error))
         return false;
+    source->setSilence(m_options.silence);
     source->setErrorHandler([this](const QString &message) {
         std::lock_guard<std::mutex> lock(m_statsMutex);
         m_lastRejection = message;
@@ -76,6 +73,14 @@ void LiveRig::poll(const FrameHandler &process, bool hold)
             process(frame, arrival);
     });
     publish(double(m_clock.nsecsElapsed()) * 1e-9);
+}
+
+bool LiveRig::endIfSilent(PipelineSink &sink)
+{
+    if (!m_source || !m_source->fellSilent())
+        return false;
+    m_pipeline->endAll(sink);
+    return true;
 }
 
 const ActorTable &LiveRig::actors() const

@@ -3,6 +3,7 @@
 
 #include "contactframe.h"
 #include "pipeline.h"
+#include "udpframesource.h"
 
 #include <QElapsedTimer>
 #include <QString>
@@ -27,6 +28,8 @@ struct LiveRigOptions
     int port = 9871;
     QString router = QStringLiteral("C3");
     QStringList overrides; ///< NODE.PARAM=VALUE
+    /** Seconds without a valid frame after which every message ends and the bands stop. */
+    double silence = UdpFrameSource::DefaultSilence;
 };
 
 /**
@@ -75,6 +78,12 @@ public:
      * `hold` is set, drops it and counts it as held.
      */
     void poll(const FrameHandler &process, bool hold);
+    /**
+     * When the sender has been silent for UdpFrameSource's silence (once per silence), ends
+     * every active message, its End events to `sink`, and returns true: the caller stops
+     * the bands.
+     */
+    bool endIfSilent(PipelineSink &sink);
     /** The actors the frames named (sessions record their names). */
     const ActorTable &actors() const;
     void close();

@@ -261,16 +261,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         std::lock_guard<std::mutex> lock(m_setupMutex);
         // The old router's devices fall silent now; a device the new router keeps goes on
         // with the new router's frames from the next tick.
-        const Player &old = pipeline().router().player();
-        for (int d = 0; d < old.deviceCount(); ++d) {
-            DeviceFrame silence;
-            silence.t = pipeline().now();
-            silence.device = d;
-            silence.channelCount = old.deviceModel(d).channelCount();
-            for (int c = 0; c < silence.channelCount; ++c)
-                silence.values[size_t(c)] = old.deviceModel(d).channels()[size_t(c)].min;
-            m_output->onDeviceFrame(silence);
-        }
+        silenceDevices();
         if (m_run)
             m_run->setRouter(std::move(router), m_sink);
         else
@@ -518,6 +509,24 @@ void SimEngine::listenLoop()
         // One batch a turn (LiveRig::poll), so a flood cannot keep the set-up locked.
         std::lock_guard<std::mutex> lock(m_setupMutex);
         m_rig->poll(process, !m_running.load());
+        if (m_rig->endIfSilent(m_sink)) {
+            silenceDevices(); // the meters show it too
+            m_devices->stopAll();
+        }
+    }
+}
+
+void SimEngine::silenceDevices()
+{
+    const Player &player = pipeline().router().player();
+    for (int d = 0; d < player.deviceCount(); ++d) {
+        DeviceFrame silence;
+        silence.t = pipeline().now();
+        silence.device = d;
+        silence.channelCount = player.deviceModel(d).channelCount();
+        for (int c = 0; c < silence.channelCount; ++c)
+            silence.values[size_t(c)] = player.deviceModel(d).channels()[size_t(c)].min;
+        m_output->onDeviceFrame(silence);
     }
 }
 

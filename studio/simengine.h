@@ -191,6 +191,8 @@ private:
     void startThread();
     void loop();
     void listenLoop();
+    /** Sends every device of the running router its idle values, through the readouts. */
+    void silenceDevices();
     void stepOnce();
     void drain();
     void recordInput(double t);

@@ -102,6 +102,10 @@ private slots:
     void geigerRateFollowsIntensity();
     void hysteresisTimerActsBetweenFrames();
     void laggingGripperDoesNotRewindClock();
+    void clockJumpsCostBoundedWork_data();
+    void clockJumpsCostBoundedWork();
+    void nonFiniteTimeIsNow();
+    void endAllEndsActiveMessages();
     void noAllocationPerTick();
 };
 
@@ -286,6 +290,74 @@ void TestPipeline::laggingGripperDoesNotRewindClock()
     pipeline.flush(sink);
     for (const DeviceFrame &f : r.frames)
         QCOMPARE(f.t, 1.0);
+}
+
+void TestPipeline::clockJumpsCostBoundedWork_data()
+{
+    QTest::addColumn<double>("t0");
+    QTest::addColumn<double>("t1");
+    QTest::newRow("a billion seconds") << 0.0 << 1e9;
+    QTest::newRow("across the range") << -1e10 << 1e10;
+    QTest::newRow("a minute") << 5.0 << 65.0;
+}
+
+void TestPipeline::clockJumpsCostBoundedWork()
+{
+    // Before, every device instant of the gap was rendered: a jump of 1e9 s never ended.
+    QFETCH(double, t0);
+    QFETCH(double, t1);
+    std::unique_ptr<Router> r = router("C3");
+    const int devices = r->player().deviceCount();
+    Pipeline pipeline(std::move(r));
+    Recorded recorded;
+    RecordingSink sink(recorded);
+    pipeline.process(rightFrame(t0, 50.0), sink);
+    pipeline.process(rightFrame(t1, 50.0), sink);
+    pipeline.flush(sink);
+    QCOMPARE(pipeline.now(), t1);
+    QVERIFY(recorded.frames.size() <= size_t(devices * (Pipeline::MaxInstantsPerGap + 1)));
+    // The devices go on from the new time: the last frames are at it, in order.
+    QCOMPARE(recorded.frames.back().t, t1);
+    for (size_t i = 1; i < recorded.frames.size(); ++i)
+        QVERIFY(recorded.frames[i].t >= recorded.frames[i - 1].t);
+    // And the next frame costs what a frame costs.
+    const size_t before = recorded.frames.size();
+    pipeline.process(rightFrame(t1 + 0.01, 50.0), sink);
+    pipeline.flush(sink);
+    QVERIFY(recorded.frames.size() - before <= size_t(devices * 11));
+}
+
+void TestPipeline::nonFiniteTimeIsNow()
+{
+    Pipeline pipeline(router("C3"));
+    Recorded r;
+    RecordingSink sink(r);
+    pipeline.process(rightFrame(qQNaN(), 0.0), sink);
+    QCOMPARE(pipeline.now(), 0.0);
+    pipeline.process(rightFrame(1.0, 0.0), sink);
+    pipeline.process(rightFrame(qInf(), 0.0), sink);
+    pipeline.process(rightFrame(-qInf(), 0.0), sink);
+    QCOMPARE(pipeline.now(), 1.0);
+    pipeline.flush(sink);
+    QCOMPARE(r.frames.back().t, 1.0);
+}
+
+void TestPipeline::endAllEndsActiveMessages()
+{
+    // A silent source: the grasp it left active ends at "now", and only once.
+    Pipeline pipeline(router("C3"));
+    Recorded r;
+    RecordingSink sink(r);
+    for (int k = 0; k <= 100; ++k)
+        pipeline.process(rightFrame(k * 0.001, 50.0), sink);
+    QCOMPARE(r.events.size(), size_t(1));
+    QCOMPARE(r.events.front().phase, EventPhase::Begin);
+    pipeline.endAll(sink);
+    QCOMPARE(r.events.size(), size_t(2));
+    QCOMPARE(r.events.back().phase, EventPhase::End);
+    QCOMPARE(r.events.back().t, 0.1);
+    pipeline.endAll(sink);
+    QCOMPARE(r.events.size(), size_t(2));
 }
 
 void TestPipeline::noAllocationPerTick()

@@ -52,6 +52,32 @@ QByteArray contents(const QString &path)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("(missing)");
 }
 
+/** Starts `semhap listen` on a free port; returns the port, 0 when it did not start. */
+quint16 startListen(QProcess &listen, const QStringList &arguments, QByteArray *err)
+{
+    listen.start(SEMHAP_CLI_BINARY, QStringList{"listen", "--udp", "0"} + arguments);
+    if (!listen.waitForStarted())
+        return 0;
+    listen.setReadChannel(QProcess::StandardError);
+    while (!err->contains('\n') && listen.waitForReadyRead(5000))
+        *err += listen.readAllStandardError();
+    listen.setReadChannel(QProcess::StandardOutput);
+    const QByteArray first = err->left(err->indexOf('\n'));
+    if (!first.startsWith("listening on udp:127.0.0.1:"))
+        return 0;
+    return quint16(first.mid(first.lastIndexOf(':') + 1).toInt());
+}
+
+/** A right-gripper frame pressing `force` N on a cube. */
+QByteArray pressing(double t, double force)
+{
+    return QStringLiteral(R"({"t":%1,"gripper":"right","left":{"f":%2,"n":8,"actor":"cube"},)"
+                          R"("right":{"f":%2,"n":8,"actor":"cube"}})")
+        .arg(t)
+        .arg(force / 2)
+        .toUtf8();
+}
+
 const QStringList RunArgs{"run",        "--scene",  "bimanual_sorting", "--router", "C3",
                           "--operator", "scripted", "--duration",       "20"};
 
@@ -68,11 +94,15 @@ private slots:
     void replayGivesTheRecordedStreams();
     void rerouteEqualsRoute();
     void replayKeepsTheReactionTime();
+    void replayOfAFarFrameEnds();
     void exportCsv();
     void errors_data();
     void errors();
     void listenRunsLikeRoute();
     void killedRecordingOpens();
+    void listenRefusesJumpsAndStopsOnTime();
+    void listenEndsMessagesWhenTheSenderFallsSilent();
+    void listenClosesItsSessionOnSigterm();
 
 private:
     QTemporaryDir m_dir;
@@ -188,6 +218,26 @@ void TestSessionCli::replayKeepsTheReactionTime()
     QVERIFY2(bad.err.contains("--reaction-time must be between 0 and 10 s"), bad.err.constData());
 }
 
+void TestSessionCli::replayOfAFarFrameEnds()
+{
+    // A session row a billion seconds on used to make replay render every device instant
+    // in between: it never ended.
+    const QString far = m_dir.filePath("far.db");
+    QVERIFY(QFile::copy(m_session, far));
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "far");
+        db.setDatabaseName(far);
+        QVERIFY(db.open());
+        QSqlQuery query(db);
+        QVERIFY(query.exec("UPDATE contact_frames SET t = 1e9 WHERE rowid = "
+                           "(SELECT max(rowid) FROM contact_frames)"));
+    }
+    QSqlDatabase::removeDatabase("far");
+    const Result replay = semhapRun({"replay", far, "--device-frames", "-"});
+    QCOMPARE(replay.code, 0);
+    QVERIFY(replay.out.count('\n') < contents(m_dir.filePath("with.devices")).count('\n') + 8000);
+}
+
 void TestSessionCli::exportCsv()
 {
     const QString csv = m_dir.filePath("csv");
@@ -247,17 +297,13 @@ void TestSessionCli::listenRunsLikeRoute()
 {
     const QString session = m_dir.filePath("live.db");
     QProcess listen;
-    listen.start(SEMHAP_CLI_BINARY, {"listen", "--udp", "0", "--duration", "5", "--router", "C1",
-                                     "--events", "-", "--session", session});
-    QVERIFY(listen.waitForStarted());
     QByteArray err;
-    listen.setReadChannel(QProcess::StandardError);
-    while (!err.contains('\n') && listen.waitForReadyRead(5000))
-        err += listen.readAllStandardError();
-    listen.setReadChannel(QProcess::StandardOutput);
-    const QByteArray first = err.left(err.indexOf('\n'));
-    QVERIFY2(first.startsWith("listening on udp:127.0.0.1:"), first.constData());
-    const quint16 port = quint16(first.mid(first.lastIndexOf(':') + 1).toInt());
+    // A long --silence: a stalled test machine must not end messages route would not.
+    const quint16 port = startListen(listen,
+                                     {"--duration", "5", "--router", "C1", "--events", "-",
+                                      "--session", session, "--silence", "60"},
+                                     &err);
+    QVERIFY2(port, err.constData());
 
     QFile trace(Trace);
     QVERIFY(trace.open(QIODevice::ReadOnly));
@@ -304,6 +350,78 @@ void TestSessionCli::listenRunsLikeRoute()
         },
         &error));
     QVERIFY(lastArrival > 0);
+}
+
+void TestSessionCli::listenRefusesJumpsAndStopsOnTime()
+{
+    // One datagram at t = 1e9 used to wedge listen for ever: --duration and signals ignored.
+    QProcess listen;
+    QByteArray err;
+    const quint16 port = startListen(listen, {"--duration", "2", "--device-frames", "-"}, &err);
+    QVERIFY2(port, err.constData());
+    QUdpSocket sender;
+    sender.writeDatagram(pressing(0, 0), QHostAddress::LocalHost, port);
+    sender.writeDatagram(pressing(1e9, 0), QHostAddress::LocalHost, port);
+    sender.writeDatagram(pressing(0.01, 0), QHostAddress::LocalHost, port);
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(listen.waitForFinished(10000));
+    QVERIFY(clock.elapsed() < 4000);
+    QCOMPARE(listen.exitCode(), 0);
+    err += listen.readAllStandardError();
+    QVERIFY2(err.contains(": \"t\" jumps by 1e+09 s, more than the 10 s allowed (--max-gap)"),
+             err.constData());
+    QVERIFY2(err.contains(": 3 datagram(s), 2 frame(s), 1 rejected"), err.constData());
+}
+
+void TestSessionCli::listenEndsMessagesWhenTheSenderFallsSilent()
+{
+    QProcess listen;
+    QByteArray err;
+    const quint16 port = startListen(listen, {"--duration", "3", "--events", "-"}, &err);
+    QVERIFY2(port, err.constData());
+    QUdpSocket sender;
+    // A grasp begins (C3: 20 N) and the sender goes quiet holding it.
+    for (int k = 0; k <= 50; ++k)
+        sender.writeDatagram(pressing(k * 0.002, 50), QHostAddress::LocalHost, port);
+    QVERIFY(listen.waitForFinished(10000));
+    QCOMPARE(listen.exitCode(), 0);
+    const QList<QByteArray> events = listen.readAllStandardOutput().trimmed().split('\n');
+    err += listen.readAllStandardError();
+    QCOMPARE(events.size(), 2);
+    QVERIFY2(events[0].contains(R"("node":"right.force","detector":"force","message":"grasp")") &&
+                 events[0].contains(R"("phase":"begin")"),
+             events[0].constData());
+    // It ends at the pipeline's clock, the last frame's time: the sender's time stood still.
+    QVERIFY2(events[1].startsWith(R"({"t":0.1,)") && events[1].contains(R"("phase":"end")"),
+             events[1].constData());
+    QVERIFY2(err.contains(": no frame for 0.25 s: messages ended, bands stopped"),
+             err.constData());
+}
+
+void TestSessionCli::listenClosesItsSessionOnSigterm()
+{
+    const QString session = m_dir.filePath("terminated.db");
+    QProcess listen;
+    QByteArray err;
+    // With a band bound, a signal used to stop it and end the process there, the session
+    // left unclosed.
+    const quint16 port = startListen(
+        listen, {"--session", session, "--bind-device", "right.vibro=virtual:band"}, &err);
+    QVERIFY2(port, err.constData());
+    QUdpSocket sender;
+    for (int k = 0; k < 10; ++k)
+        sender.writeDatagram(pressing(k * 0.002, 30), QHostAddress::LocalHost, port);
+    QThread::msleep(300);
+    listen.terminate();
+    QVERIFY(listen.waitForFinished(5000));
+    QCOMPARE(listen.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(listen.exitCode(), 0);
+    QString error;
+    std::unique_ptr<SessionReader> recorded = SessionReader::open(session, &error);
+    QVERIFY2(recorded, qPrintable(error));
+    QVERIFY(recorded->info().ended.isValid()); // closed, not abandoned
+    QCOMPARE(recorded->contactFrameCount(), qint64(10));
 }
 
 void TestSessionCli::killedRecordingOpens()

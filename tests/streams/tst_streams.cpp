@@ -94,6 +94,7 @@ private slots:
     void malformed_data();
     void malformed();
     void timePerGripper();
+    void gapsAgainstTheStreamClock();
     void blankLinesAndLineNumbers();
     void longLine();
     void goldenFile();
@@ -232,6 +233,12 @@ void TestStreams::malformed_data()
         << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3, "actor": "a",)"
                       R"( "mu": "0.1"}})")
         << QStringLiteral(R"("right.mu" must be a finite positive number or null, got "0.1")");
+    QTest::newRow("t jumps")
+        << QByteArray(R"({"t": 1e9, "gripper": "left"})")
+        << QStringLiteral(R"("t" jumps by 1e+09 s, more than the 10 s allowed (--max-gap))");
+    QTest::newRow("t far in the past")
+        << QByteArray(R"({"t": -1e308, "gripper": "left"})")
+        << QStringLiteral(R"("t" must be within ±1e+10 s, got -1e+308)");
     QTest::newRow("t not increasing")
         << QByteArray(R"({"t": 0, "gripper": "right"})")
         << QStringLiteral(R"("t" must increase per gripper, got 0 after 0 for "right")");
@@ -273,6 +280,26 @@ void TestStreams::timePerGripper()
             R"(frames.jsonl:3: "t" must increase per gripper, got 0.5 after 1 for "right")")});
     QCOMPARE(result.frames.size(), 4);
     QCOMPARE(result.rejected, 1);
+}
+
+void TestStreams::gapsAgainstTheStreamClock()
+{
+    // The gap is measured from the latest frame of either gripper; a first frame may be
+    // anywhere within MaxTime, and so may the first after restartClock().
+    ContactFrameParser parser;
+    ContactFrame frame;
+    QString reason;
+    QVERIFY(parser.parse(QByteArray(R"({"t": 1e9, "gripper": "right"})"), &frame, &reason));
+    QVERIFY(parser.parse(QByteArray(R"({"t": 1000000009, "gripper": "left"})"), &frame, &reason));
+    QVERIFY(
+        !parser.parse(QByteArray(R"({"t": 1000000020, "gripper": "right"})"), &frame, &reason));
+    QCOMPARE(reason,
+             QStringLiteral(R"("t" jumps by 11 s, more than the 10 s allowed (--max-gap))"));
+    parser.setMaxGap(60.0);
+    QVERIFY(parser.parse(QByteArray(R"({"t": 1000000020, "gripper": "right"})"), &frame, &reason));
+    parser.restartClock();
+    QVERIFY(parser.parse(QByteArray(R"({"t": -5, "gripper": "right"})"), &frame, &reason));
+    QCOMPARE(frame.t, -5.0);
 }
 
 void TestStreams::blankLinesAndLineNumbers()
@@ -450,6 +477,7 @@ void TestStreams::contactFrameRoundTrip()
     QBuffer in(&data);
     in.open(QIODevice::ReadOnly);
     ContactFrameReader reader(&in, File);
+    reader.parser().setMaxGap(1e6); // the second frame is far on, to round-trip a long t
     ContactFrame back;
     QVERIFY(reader.next(&back));
     QCOMPARE(describe(back, reader.actors()), describe(first, actors));
