@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "command.h"
 
+#include "inputfile.h"
 #include "patternlibrary.h"
 #include "sessioninfo.h"
 #include "sessionwriter.h"
 
 #include <QFile>
+#include <QFileInfo>
 
 #include <algorithm>
 #include <climits>
@@ -41,9 +43,26 @@ int Command::run(const QStringList &arguments)
         m_out.flush();
         return ExitOk;
     }
-    const int code = execute(parser);
+    int code = execute(parser);
     m_out.flush();
+    // A failed command replaces nothing: its temporaries go with it.
+    if (code == ExitOk && !commitOutputs())
+        code = ExitInvalidInput;
+    m_outputs.clear();
     return code;
+}
+
+bool Command::commitOutputs()
+{
+    bool ok = true;
+    for (const std::unique_ptr<OutputFile> &output : m_outputs) {
+        LoadError error;
+        if (!output->commit(&error)) {
+            report(error.toString());
+            ok = false;
+        }
+    }
+    return ok;
 }
 
 int Command::usageError(const QString &message)
@@ -82,26 +101,71 @@ QIODevice *Command::openOutput(const QString &path)
 {
     if (path == QLatin1String("-"))
         return m_io.out;
-    auto file = std::make_unique<QFile>(path);
-    if (!file->open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        inputError(tr("%1: cannot write: %2").arg(path, file->errorString()));
+    const auto refuse = [&](const QString &role, const QString &other) {
+        inputError(tr("%1: cannot write: it is the same file as the %2 %3; nothing was written")
+                       .arg(path, role, other));
+        return nullptr;
+    };
+    for (const KeptFile &kept : m_kept) {
+        if (OutputFile::sameFile(path, kept.path))
+            return refuse(kept.role == Kept::Session ? tr("session") : tr("input"), kept.path);
+    }
+    for (const std::unique_ptr<OutputFile> &output : m_outputs) {
+        if (OutputFile::sameFile(path, output->path()))
+            return refuse(tr("output"), output->path());
+    }
+    auto file = std::make_unique<OutputFile>(path);
+    LoadError error;
+    if (!file->open(&error)) {
+        inputError(error.toString());
         return nullptr;
     }
-    m_files.push_back(std::move(file));
-    return m_files.back().get();
+    m_outputs.push_back(std::move(file));
+    return m_outputs.back()->device();
+}
+
+const OutputFile *Command::failedOutput() const
+{
+    for (const std::unique_ptr<OutputFile> &output : m_outputs) {
+        if (output->failed())
+            return output.get();
+    }
+    return m_io.outFile && m_io.outFile->failed() ? m_io.outFile : nullptr;
+}
+
+void Command::flushOutputs()
+{
+    for (const std::unique_ptr<OutputFile> &output : m_outputs)
+        output->flush();
+    if (m_io.outFile)
+        m_io.outFile->flush();
 }
 
 QIODevice *Command::openInput(const QString &path)
 {
     if (path == QLatin1String("-"))
         return m_io.in;
+    QString reason;
+    if (!InputFile::checkStream(path, &reason)) {
+        inputError(tr("%1: cannot read: %2").arg(path, reason));
+        return nullptr;
+    }
     auto file = std::make_unique<QFile>(path);
     if (!file->open(QIODevice::ReadOnly)) {
         inputError(tr("%1: cannot read: %2").arg(path, file->errorString()));
         return nullptr;
     }
-    m_files.push_back(std::move(file));
-    return m_files.back().get();
+    keepFromOutputs(path, Kept::Input);
+    m_inputs.push_back(std::move(file));
+    return m_inputs.back().get();
+}
+
+void Command::keepFromOutputs(const QString &path, Kept role)
+{
+    if (path.isEmpty() || path == QLatin1String("-"))
+        return;
+    if (role == Kept::Session || QFileInfo::exists(path))
+        m_kept.push_back({path, role});
 }
 
 void Command::addRoutingOptions(QCommandLineParser &parser)

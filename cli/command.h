@@ -3,6 +3,7 @@
 
 #include "contactframeparser.h"
 #include "devicemodel.h"
+#include "outputfile.h"
 #include "patternrender.h"
 #include "routercontext.h"
 
@@ -34,6 +35,8 @@ struct CommandIo
     QIODevice *in = nullptr;  ///< what `-` reads
     QIODevice *out = nullptr; ///< what `-` writes, and help text
     QIODevice *err = nullptr; ///< error messages, one line each
+    /** `out` when it is the process's standard output: flushed live, its failures seen. */
+    OutputFile *outFile = nullptr;
 };
 
 /**
@@ -69,12 +72,28 @@ protected:
     bool numberOption(const QCommandLineParser &parser, const QString &option, double *value);
 
     /**
-     * Opens FILE, or standard output for `-`, for writing; the command keeps it open until it
-     * is destroyed. Null after printing why.
+     * Opens FILE, or standard output for `-`, for writing (OutputFile: a regular file
+     * appears, whole, only when the command succeeds). Refuses a file that is one of the
+     * inputs or the session given so far, or another output. Null after printing why.
      */
     QIODevice *openOutput(const QString &path);
-    /** Opens FILE, or standard input for `-`, for reading. Null after printing why. */
+    /**
+     * Opens a stream, FILE (a regular file or a pipe) or standard input for `-`, for
+     * reading, and keeps it from being an output. Null after printing why.
+     */
     QIODevice *openInput(const QString &path);
+    /** What a file kept from the outputs is to the command. */
+    enum class Kept
+    {
+        Input,  ///< read: kept when it exists (a preset's name is no file)
+        Session ///< recorded into: kept even before it exists
+    };
+    /** Notes a file the command reads or records into, so that no output replaces it. */
+    void keepFromOutputs(const QString &path, Kept role);
+    /** The first output whose writes failed so far, for a long loop to stop on; or null. */
+    const OutputFile *failedOutput() const;
+    /** Hands what every output holds to the system, so pipes see it live. */
+    void flushOutputs();
     /**
      * Declares --events, --device-frames, --set and --reaction-time: the outputs, overrides
      * and router context of every command that routes frames (route, replay, listen).
@@ -114,7 +133,17 @@ protected:
     QTextStream m_out;
 
 private:
-    std::vector<std::unique_ptr<QIODevice>> m_files;
+    /** Hands each output its data (renames the temporaries); false after printing why. */
+    bool commitOutputs();
+
+    struct KeptFile
+    {
+        QString path;
+        Kept role;
+    };
+    std::vector<KeptFile> m_kept;
+    std::vector<std::unique_ptr<QIODevice>> m_inputs;
+    std::vector<std::unique_ptr<OutputFile>> m_outputs;
 };
 
 } // namespace semhap

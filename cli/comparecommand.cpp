@@ -347,6 +347,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             return inputError(error);
     }
 
+    for (const RunOptions &options : grid) {
+        keepFromOutputs(options.scene, Kept::Input);
+        keepFromOutputs(options.router, Kept::Input);
+    }
     QIODevice *csv = nullptr;
     if (parser.isSet(QStringLiteral("csv"))) {
         csv = openOutput(parser.value(QStringLiteral("csv")));

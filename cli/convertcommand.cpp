@@ -82,17 +82,24 @@ int ConvertCommand::execute(const QCommandLineParser &parser)
         report(warning);
     if (!read)
         return inputError(error.toString());
+    keepFromOutputs(in, Kept::Input);
 
     // Exporting: the pattern's own model gives the modulation range back.
     warnings.clear();
     const DeviceModelPtr patternModel =
         DeviceModelLibrary::builtin(pattern.value(QLatin1String("model")).toString());
     options.modulationLimit = modulate && patternModel ? patternModel->modulationLimit() : 0.0;
-    const bool written = HapticConverter::writePattern(pattern, out, options, &warnings, &error);
+    QByteArray bytes;
+    const bool serialized =
+        HapticConverter::serialize(pattern, outFormat, out, options, &bytes, &warnings, &error);
     for (const QString &warning : warnings)
         report(warning);
-    if (!written)
+    if (!serialized)
         return inputError(error.toString());
+    QIODevice *file = openOutput(out);
+    if (!file)
+        return ExitInvalidInput;
+    file->write(bytes);
     return ExitOk;
 }
 

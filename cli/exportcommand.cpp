@@ -84,6 +84,7 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &error);
     if (!session)
         return inputError(error);
+    keepFromOutputs(session->path(), Kept::Input);
     if (parser.isSet(QStringLiteral("csv")) &&
         !exportCsv(*session, parser.value(QStringLiteral("csv"))))
         return ExitInvalidInput;
@@ -107,7 +108,9 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     QString error;
     QByteArray row;
     const auto fail = [this, &error] {
-        inputError(error);
+        // A callback that stops on a failed write leaves the reader's error empty.
+        const OutputFile *failed = failedOutput();
+        inputError(failed ? failed->writeError().toString() : error);
         return false;
     };
 
@@ -280,8 +283,10 @@ bool ExportCommand::exportJsonLines(SessionReader &session, const QString &dir)
     ok = ok && session.readDeviceFrames(
                    [&deviceWriter](const DeviceFrame &frame) { return deviceWriter.write(frame); },
                    &error);
-    if (!ok)
-        inputError(error.isEmpty() ? tr("%1: cannot write").arg(dir) : error);
+    if (!ok) {
+        const OutputFile *failed = failedOutput();
+        inputError(failed ? failed->writeError().toString() : error);
+    }
     return ok;
 }
 

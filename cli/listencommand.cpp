@@ -11,7 +11,6 @@
 #include "udpframesource.h"
 
 #include <QElapsedTimer>
-#include <QFileDevice>
 
 #include <functional>
 
@@ -62,14 +61,6 @@ private:
     int m_printed = 0;
     int m_suppressed = 0;
 };
-
-void flushAll(std::initializer_list<QIODevice *> devices)
-{
-    for (QIODevice *device : devices) {
-        if (auto *file = qobject_cast<QFileDevice *>(device))
-            file->flush();
-    }
-}
 
 } // namespace
 
@@ -145,6 +136,8 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error, context);
     if (!router)
         return inputError(error.toString());
+    keepFromOutputs(routerName, Kept::Input);
+    keepFromOutputs(parser.value(QStringLiteral("session")), Kept::Session);
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
     QIODevice *deviceFrames = framesPath.isEmpty() ? nullptr : openOutput(framesPath);
     if ((!eventsPath.isEmpty() && !events) || (!framesPath.isEmpty() && !deviceFrames))
@@ -210,17 +203,23 @@ int ListenCommand::execute(const QCommandLineParser &parser)
             wait = std::min(wait, source.msecsToSilence());
         if (source.waitForDatagrams(int(std::clamp<qint64>(wait, 0, 100))) &&
             source.poll(process) > 0)
-            flushAll({events, deviceFrames});
+            flushOutputs();
         if (source.fellSilent()) {
             // A silent sender must not hold the bands where it left them.
             pipeline.endAll(sink);
             devices.stopAll();
-            flushAll({events, deviceFrames});
+            flushOutputs();
             throttle.report(tr("udp:%1: no frame for %2 s: messages ended, bands stopped")
                                 .arg(source.port())
                                 .arg(source.silence()));
         }
         throttle.roll();
+        if (const OutputFile *failed = failedOutput()) {
+            devices.stopAll();
+            if (session)
+                finishSession(*session);
+            return inputError(failed->writeError().toString());
+        }
     }
     if (source.stats().frames > 0)
         pipeline.flush(sink);

@@ -52,6 +52,7 @@ int RenderCommand::execute(const QCommandLineParser &parser)
     DeviceModelPtr model;
     if (!renderNamedPattern(pattern, options, &rendered, &model))
         return ExitInvalidInput;
+    keepFromOutputs(pattern, Kept::Input);
 
     QIODevice *out = openOutput(parser.value(QStringLiteral("out")).isEmpty()
                                     ? QStringLiteral("-")

@@ -102,6 +102,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &message);
     if (!session)
         return inputError(message);
+    keepFromOutputs(session->path(), Kept::Input);
     const QStringList overrides = parser.values(QStringLiteral("set"));
     // The person of the session, unless the command line asks what another would have felt.
     RouterContext context = session->info().routerContext;
@@ -118,6 +119,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     }
     if (!router)
         return inputError(error.toString());
+    keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
 
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
     QIODevice *deviceFrames = framesPath.isEmpty() ? nullptr : openOutput(framesPath);

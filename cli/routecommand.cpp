@@ -61,6 +61,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
                    &error, context);
     if (!router)
         return inputError(error.toString());
+    keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
 
     const QString framesPath = parser.value(QStringLiteral("frames"));
     QIODevice *frames = openInput(framesPath);

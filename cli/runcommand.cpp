@@ -10,7 +10,6 @@
 #include "simrun.h"
 
 #include <QElapsedTimer>
-#include <QFileDevice>
 #include <QJsonDocument>
 #include <QThread>
 
@@ -58,14 +57,6 @@ public:
             m_session->onDeviceFrame(frame);
         if (m_devices)
             m_deviceWriter.write(frame);
-    }
-    /** Hands what was written on, so a consumer of a real-time run sees it live. */
-    void flush()
-    {
-        for (QIODevice *device : {m_frames, m_events, m_devices}) {
-            if (auto *file = qobject_cast<QFileDevice *>(device))
-                file->flush();
-        }
     }
 
 private:
@@ -185,6 +176,9 @@ int RunCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SimRun> run = SimRun::create(options, &error);
     if (!run)
         return inputError(error);
+    keepFromOutputs(options.scene, Kept::Input);
+    keepFromOutputs(options.router, Kept::Input);
+    keepFromOutputs(parser.value(QStringLiteral("session")), Kept::Session);
     std::array<QIODevice *, 4> devices{};
     for (size_t i = 0; i < devices.size(); ++i) {
         if (outputs[int(i)].isEmpty())
@@ -226,13 +220,17 @@ int RunCommand::execute(const QCommandLineParser &parser)
     qint64 lastDraw = -1000;
     const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound;
     while (run->step(sink)) {
+        if (const OutputFile *failed = failedOutput()) {
+            bands.stopAll();
+            return inputError(failed->writeError().toString());
+        }
         if (session)
             run->recordSceneState(*session);
         if (realtime) {
             const qint64 ahead = qint64(run->time() * 1000) - wall.elapsed();
             if (ahead > 1)
                 QThread::msleep(quint64(ahead));
-            writer.flush();
+            flushOutputs(); // a consumer of a real-time run sees it live
         }
         if (progress && wall.elapsed() - lastDraw >= 200) {
             lastDraw = wall.elapsed();

@@ -5,12 +5,14 @@
 #include "sessionschema.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QtEndian>
+#include <QUrl>
 
 #include <cmath>
 
@@ -46,12 +48,24 @@ double optional(const QVariant &value)
 class SessionReader::Database
 {
 public:
-    explicit Database(const QString &path)
+    /**
+     * `immutable`: for a session nobody can write (a read-only folder): SQLite then reads
+     * the file alone, without the shared-memory index a write-ahead log needs beside it.
+     */
+    Database(const QString &path, bool immutable)
         : m_name(QStringLiteral("semhap.session.reader.%1").arg(quintptr(this)))
     {
         m_db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_name);
-        m_db.setDatabaseName(path);
-        m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
+        if (immutable) {
+            QUrl uri = QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath());
+            uri.setScheme(QStringLiteral("file"));
+            uri.setQuery(QStringLiteral("immutable=1"));
+            m_db.setDatabaseName(uri.toString(QUrl::FullyEncoded));
+            m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY;QSQLITE_OPEN_URI"));
+        } else {
+            m_db.setDatabaseName(path);
+            m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
+        }
     }
     ~Database()
     {
@@ -81,9 +95,12 @@ std::unique_ptr<SessionReader> SessionReader::open(const QString &path, QString 
         return nullptr;
     }
     file.close();
+    // A write-ahead log needs its index beside the file, which a folder one may not write
+    // cannot hold: such a session is read as it stands.
+    const bool immutable = !QFileInfo(QFileInfo(path).absolutePath()).isWritable();
     std::unique_ptr<SessionReader> reader(new SessionReader);
     reader->m_path = path;
-    reader->m_db = std::make_unique<Database>(path);
+    reader->m_db = std::make_unique<Database>(path, immutable);
     QString reason;
     if (!reader->load(&reason)) {
         *error = path + QStringLiteral(": ") + reason;

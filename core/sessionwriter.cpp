@@ -12,16 +12,22 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QTemporaryFile>
 #include <QtEndian>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <future>
 #include <mutex>
 #include <pthread.h>
 #include <thread>
 #include <time.h>
+#include <unistd.h>
 #include <variant>
 #include <vector>
 
@@ -135,13 +141,16 @@ private:
         {
             QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_connection);
             QString error;
-            if (!create(db, info, &error)) {
+            QString temporary;
+            if (!create(db, info, &temporary, &error)) {
                 db.close();
                 db = QSqlDatabase();
                 QSqlDatabase::removeDatabase(m_connection);
-                // Leave nothing half made behind (the path did not exist before).
-                for (const char *suffix : {"", "-wal", "-shm", "-journal"})
-                    QFile::remove(m_path + QLatin1String(suffix));
+                // Leave nothing half made behind: the session's own name was never taken.
+                if (!temporary.isEmpty()) {
+                    for (const char *suffix : {"", "-wal", "-shm", "-journal"})
+                        QFile::remove(temporary + QLatin1String(suffix));
+                }
                 m_done = true;
                 opened.set_value(m_path + QStringLiteral(": ") + error);
                 return;
@@ -169,23 +178,39 @@ private:
         m_done = true;
     }
 
-    bool create(QSqlDatabase &db, const SessionInfo &info, QString *error)
+    /**
+     * Creates the database under a temporary name beside the session's (`temporary`), with
+     * its schema and metadata, and only then gives it the session's name, which must still be
+     * free: a process killed on the way leaves a stray temporary, never a session that will
+     * not open, and no file is ever replaced.
+     */
+    bool create(QSqlDatabase &db, const SessionInfo &info, QString *temporary, QString *error)
     {
         if (!db.isValid()) {
             *error = QStringLiteral("the Qt SQLite driver (QSQLITE) is not available");
             return false;
         }
-        db.setDatabaseName(m_path);
+        {
+            const QFileInfo target(m_path);
+            QTemporaryFile reserve(target.absolutePath() + QStringLiteral("/.") +
+                                   target.fileName() + QStringLiteral(".XXXXXX"));
+            reserve.setAutoRemove(false);
+            if (!reserve.open()) {
+                *error = QStringLiteral("cannot create: ") + reserve.errorString();
+                return false;
+            }
+            *temporary = reserve.fileName();
+        }
+        db.setDatabaseName(*temporary);
         if (!db.open()) {
             *error = QStringLiteral("cannot create: ") + sqlError(db.lastError());
             return false;
         }
         QSqlQuery query(db);
         // WAL: a commit is one append, readers never block the writer, and a killed
-        // process leaves a database that opens; NORMAL: no fsync per commit.
+        // process leaves a database that opens. The mode is kept in the file.
         if (!query.exec(QStringLiteral("PRAGMA journal_mode=WAL")) || !query.next() ||
-            query.value(0).toString() != QLatin1String("wal") ||
-            !query.exec(QStringLiteral("PRAGMA synchronous=NORMAL"))) {
+            query.value(0).toString() != QLatin1String("wal")) {
             *error =
                 QStringLiteral("cannot use write-ahead logging: ") + sqlError(query.lastError());
             return false;
@@ -224,6 +249,36 @@ private:
         }
         if (!db.commit()) {
             *error = QStringLiteral("cannot write: ") + sqlError(db.lastError());
+            return false;
+        }
+        // Closing checkpoints the log into the file, which can then be renamed whole.
+        query = QSqlQuery();
+        db.close();
+        const QByteArray from = QFile::encodeName(*temporary);
+        const QByteArray to = QFile::encodeName(m_path);
+        if (::renameat2(AT_FDCWD, from.constData(), AT_FDCWD, to.constData(), RENAME_NOREPLACE) !=
+            0) {
+            // Some file systems cannot rename without replacing; a hard link cannot replace.
+            const bool unsupported = errno == EINVAL || errno == ENOSYS;
+            if (!unsupported || ::link(from.constData(), to.constData()) != 0) {
+                *error = errno == EEXIST ? QStringLiteral("already exists (a session is never "
+                                                          "overwritten)")
+                                         : QStringLiteral("cannot create: ") +
+                                               QString::fromLocal8Bit(std::strerror(errno));
+                return false;
+            }
+            ::unlink(from.constData());
+        }
+        temporary->clear();
+        db.setDatabaseName(m_path);
+        if (!db.open()) {
+            *error = QStringLiteral("cannot open: ") + sqlError(db.lastError());
+            return false;
+        }
+        // NORMAL: no fsync per commit (a connection's setting, not the file's).
+        query = QSqlQuery(db);
+        if (!query.exec(QStringLiteral("PRAGMA synchronous=NORMAL"))) {
+            *error = QStringLiteral("cannot open: ") + sqlError(query.lastError());
             return false;
         }
         return prepare(db, error);

@@ -2,16 +2,16 @@
 #include "hapticconverter.h"
 
 #include "ahapformat.h"
+#include "inputfile.h"
 #include "jsonreader.h"
 #include "metahapticformat.h"
+#include "outputfile.h"
 #include "pattern.h"
 #include "voice.h"
 
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -118,13 +118,13 @@ bool HapticConverter::readPattern(const QString &path, const ConvertOptions &opt
     HapticFileFormat format;
     if (!formatOf(path, &format, error))
         return false;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error =
-            LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
+    QByteArray bytes;
+    QString reason;
+    if (!InputFile::readDocument(path, &bytes, &reason)) {
+        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + reason);
         return false;
     }
-    return parsePattern(file.readAll(), path, options, pattern, warnings, error);
+    return parsePattern(bytes, path, options, pattern, warnings, error);
 }
 
 bool HapticConverter::parsePattern(const QByteArray &bytes, const QString &file,
@@ -169,13 +169,7 @@ bool HapticConverter::writePattern(const QJsonObject &pattern, const QString &pa
     if (!formatOf(path, &format, error) ||
         !serialize(pattern, format, path, options, &bytes, warnings, error))
         return false;
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        *error =
-            LoadError::at(path, QString(), QStringLiteral("cannot write: ") + file.errorString());
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, bytes, error);
 }
 
 bool HapticConverter::serialize(const QJsonObject &pattern, HapticFileFormat format,

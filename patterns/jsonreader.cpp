@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "jsonreader.h"
 
-#include <QFile>
+#include "inputfile.h"
+
 #include <QJsonDocument>
 #include <QJsonParseError>
 
@@ -173,13 +174,13 @@ bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *
 
 bool readJsonObjectFile(const QString &path, QJsonObject *object, LoadError *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error =
-            LoadError::at(path, QString(), QStringLiteral("cannot read: ") + file.errorString());
+    QByteArray bytes;
+    QString reason;
+    if (!InputFile::readDocument(path, &bytes, &reason)) {
+        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + reason);
         return false;
     }
-    return parseJsonObject(file.readAll(), path, object, error);
+    return parseJsonObject(bytes, path, object, error);
 }
 
 bool checkFormat(const QJsonObject &object, const QString &file, QLatin1String expected,

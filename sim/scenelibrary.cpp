@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scenelibrary.h"
 
+#include "inputfile.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -124,14 +126,14 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                         nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
     const QString path =
         isPath ? nameOrPath : QStringLiteral(":/semhap/scenes/%1.xml").arg(nameOrPath);
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = isPath ? QStringLiteral("%1: cannot read: %2").arg(nameOrPath, file.errorString())
+    QByteArray xml;
+    QString reason;
+    if (!InputFile::readDocument(path, &xml, &reason)) {
+        *error = isPath ? QStringLiteral("%1: cannot read: %2").arg(nameOrPath, reason)
                         : QStringLiteral("%1: no such scene (scenes: %2)")
                               .arg(nameOrPath, builtinNames().join(QStringLiteral(", ")));
         return nullptr;
     }
-    const QByteArray xml = file.readAll();
     const int count = options.cubes >= 0 ? options.cubes : declaredCubes(xml);
     if (count < 0) {
         // A file on disk compiles from its own folder, so its <include>s and meshes resolve.

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "patterndocument.h"
 
+#include "outputfile.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 namespace semhap {
 
@@ -156,10 +157,10 @@ QJsonValue PatternDocument::withValue(const QJsonValue &root, const QString &poi
 bool PatternDocument::save(const QString &path, QString *error)
 {
     QDir().mkpath(QFileInfo(path).absolutePath());
-    QSaveFile file(path);
-    const QByteArray bytes = QJsonDocument(m_json).toJson(QJsonDocument::Indented);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        *error = tr("%1: cannot write: %2").arg(path, file.errorString());
+    LoadError failure;
+    if (!OutputFile::write(path, QJsonDocument(m_json).toJson(QJsonDocument::Indented),
+                           &failure)) {
+        *error = failure.toString();
         return false;
     }
     m_path = path;

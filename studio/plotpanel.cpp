@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "plotpanel.h"
 
-#include <QFile>
+#include "outputfile.h"
+
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -885,12 +886,6 @@ void PlotPanel::setCursorTime(double t)
 
 bool PlotPanel::exportCsv(const QString &path, QString *error) const
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error)
-            *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
     const QCPRange visible = m_rects.empty()
                                  ? QCPRange(m_history.now() - m_windowSeconds, m_history.now())
                                  : m_rects.front()->axis(QCPAxis::atBottom)->range();
@@ -928,7 +923,8 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
     std::sort(times.begin(), times.end());
     times.erase(std::unique(times.begin(), times.end()), times.end());
 
-    QTextStream out(&file);
+    QString text;
+    QTextStream out(&text);
     out << header.join(QLatin1Char(',')) << '\n';
     QStringList cells;
     for (double t : times) {
@@ -953,9 +949,10 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
         out << cells.join(QLatin1Char(',')) << '\n';
     }
     out.flush();
-    if (out.status() != QTextStream::Ok) {
+    LoadError failure;
+    if (!OutputFile::write(path, text.toUtf8(), &failure)) {
         if (error)
-            *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+            *error = failure.toString();
         return false;
     }
     return true;

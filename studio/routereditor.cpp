@@ -2,6 +2,7 @@
 #include "routereditor.h"
 
 #include "livehistory.h"
+#include "outputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
@@ -16,7 +17,6 @@
 #include <QClipboard>
 #include <QComboBox>
 #include <QDir>
-#include <QFile>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGraphicsView>
@@ -581,14 +581,10 @@ bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *er
             node.params.insert(key, embeddedName);
         }
     }
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        *error = tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
-        return false;
-    }
-    file.write(QJsonDocument(graph.toJson()).toJson(QJsonDocument::Indented));
-    if (!file.flush()) {
-        *error = tr("cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+    LoadError failure;
+    if (!OutputFile::write(path, QJsonDocument(graph.toJson()).toJson(QJsonDocument::Indented),
+                           &failure)) {
+        *error = failure.toString();
         return false;
     }
     m_path = path;
