@@ -10,6 +10,7 @@
 #include "slipdetector.h"
 
 #include <QDir>
+#include <QHash>
 #include <QJsonArray>
 
 #include <algorithm>
@@ -89,6 +90,8 @@ private:
     PatternPtr findPattern(int node, const QString &name);
     DeviceModelPtr findModel(int node, const QString &name);
 
+    /** The graph's size against the caps (RouterGraph::MaxNodes, MaxLinks, MaxDevices). */
+    bool checkSize();
     bool resolveLinks();
     bool checkCycles();
     bool checkFanIn();
@@ -100,6 +103,11 @@ private:
     LoadError *m_error;
     std::vector<NodeInfo> m_info;
     std::vector<ResolvedLink> m_links;
+    QHash<QString, int> m_nodeIndex;       ///< node id → index
+    std::vector<std::vector<int>> m_out;   ///< per node, the links leaving it
+    std::vector<int> m_order;              ///< nodes in topological order (checkCycles)
+    QHash<QString, PatternPtr> m_patterns; ///< embedded and loaded patterns by name or path
+    QHash<QString, DeviceModelPtr> m_models;
     std::unique_ptr<Router> m_router;
 };
 
@@ -201,10 +209,9 @@ bool RouterCompiler::readNames(int node, const QString &key, const QStringList &
 
 PatternPtr RouterCompiler::findPattern(int node, const QString &name)
 {
-    for (const PatternPtr &pattern : m_graph.patterns) {
-        if (pattern->name() == name)
-            return pattern;
-    }
+    // Many nodes may play one pattern: each is found or loaded once.
+    if (PatternPtr known = m_patterns.value(name))
+        return known;
     if (!isPath(name)) {
         if (PatternPtr pattern = PatternLibrary::builtin(name))
             return pattern;
@@ -213,20 +220,32 @@ PatternPtr RouterCompiler::findPattern(int node, const QString &name)
                      .arg(name, PatternLibrary::builtinNames().join(QStringLiteral(", "))));
         return nullptr;
     }
+    if (!m_graph.filesAllowed) {
+        failNode(node, QStringLiteral("pattern"),
+                 QStringLiteral("names the file '%1'; this router must carry its patterns")
+                     .arg(name));
+        return nullptr;
+    }
     const QString path = QDir(m_graph.baseDir).filePath(name);
     LoadError inner;
     PatternPtr pattern = Pattern::fromFile(path, &inner);
     if (!pattern)
         failNode(node, QStringLiteral("pattern"),
                  QStringLiteral("cannot load pattern: ") + inner.toString());
+    else
+        m_patterns.insert(name, pattern);
     return pattern;
 }
 
 DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
 {
-    for (const DeviceModelPtr &model : m_graph.models) {
-        if (model->name() == name)
-            return model;
+    if (DeviceModelPtr known = m_models.value(name))
+        return known;
+    if (isPath(name) && !m_graph.filesAllowed) {
+        failNode(node, QStringLiteral("model"),
+                 QStringLiteral("names the file '%1'; this router must carry its models")
+                     .arg(name));
+        return nullptr;
     }
     LoadError inner;
     DeviceModelPtr model = DeviceModelLibrary::load(
@@ -235,6 +254,8 @@ DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
         failNode(node, QStringLiteral("model"),
                  isPath(name) ? QStringLiteral("cannot load model: ") + inner.toString()
                               : inner.reason);
+    else
+        m_models.insert(name, model);
     return model;
 }
 
@@ -512,27 +533,20 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildThreshold(int node)
 
 void RouterCompiler::setDefaultHorizons()
 {
+    // The slowest device each node's output reaches, whatever the path (signals, events,
+    // voices): in reverse topological order, every node downstream is known first.
+    std::vector<double> delay(m_graph.nodes.size(), 0.0);
+    for (auto it = m_order.rbegin(); it != m_order.rend(); ++it) {
+        const size_t node = size_t(*it);
+        if (m_info[node].model)
+            delay[node] = m_info[node].model->responseDelay();
+        for (int index : m_out[node])
+            delay[node] = std::max(delay[node], delay[size_t(m_links[size_t(index)].to)]);
+    }
     for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
         auto *predict = dynamic_cast<PredictNode *>(m_router->m_nodes[i].get());
-        if (!predict || predict->horizon() >= 0.0)
-            continue;
-        // The slowest device its output reaches, whatever the path (signals, events, voices).
-        double delay = 0.0;
-        std::vector<char> seen(m_graph.nodes.size(), 0);
-        std::vector<int> pending{int(i)};
-        while (!pending.empty()) {
-            const int from = pending.back();
-            pending.pop_back();
-            if (m_info[size_t(from)].model)
-                delay = std::max(delay, m_info[size_t(from)].model->responseDelay());
-            for (const ResolvedLink &link : m_links) {
-                if (link.from == from && !seen[size_t(link.to)]) {
-                    seen[size_t(link.to)] = 1;
-                    pending.push_back(link.to);
-                }
-            }
-        }
-        predict->setHorizon(delay + m_context.reactionTime);
+        if (predict && predict->horizon() < 0.0)
+            predict->setHorizon(delay[i] + m_context.reactionTime);
     }
 }
 
@@ -567,14 +581,36 @@ bool RouterCompiler::buildNode(int node)
     return true;
 }
 
+bool RouterCompiler::checkSize()
+{
+    if (m_graph.nodes.size() > size_t(RouterGraph::MaxNodes))
+        return fail(QStringLiteral("/nodes"), QStringLiteral("%1 nodes, more than the %2 a "
+                                                             "router may have")
+                                                  .arg(m_graph.nodes.size())
+                                                  .arg(RouterGraph::MaxNodes));
+    if (m_graph.links.size() > size_t(RouterGraph::MaxLinks))
+        return fail(QStringLiteral("/links"), QStringLiteral("%1 links, more than the %2 a "
+                                                             "router may have")
+                                                  .arg(m_graph.links.size())
+                                                  .arg(RouterGraph::MaxLinks));
+    int devices = 0;
+    for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
+        if (m_graph.nodes[i].type == QLatin1String("device") && ++devices > RouterGraph::MaxDevices)
+            return failNode(int(i), QString(),
+                            QStringLiteral("one device more than the %1 a router may drive")
+                                .arg(RouterGraph::MaxDevices));
+    }
+    return true;
+}
+
 bool RouterCompiler::resolveLinks()
 {
     for (size_t j = 0; j < m_graph.links.size(); ++j) {
         const RouterLink &link = m_graph.links[j];
         const QString where = jsonPointerChild(QStringLiteral("/links"), int(j));
         ResolvedLink r;
-        r.from = m_graph.nodeIndex(link.from);
-        r.to = m_graph.nodeIndex(link.to);
+        r.from = m_nodeIndex.value(link.from, -1);
+        r.to = m_nodeIndex.value(link.to, -1);
         if (r.from < 0)
             return fail(where + QStringLiteral("/from"),
                         QStringLiteral("dangling link: no node '%1'").arg(link.from));
@@ -621,6 +657,7 @@ bool RouterCompiler::resolveLinks()
                         QStringLiteral("'%1:%2' takes a single link and already has one")
                             .arg(link.to, toPort));
         ++to.inputLinks[size_t(r.toPort)];
+        m_out[size_t(r.from)].push_back(int(m_links.size()));
         m_links.push_back(r);
     }
     return true;
@@ -638,17 +675,19 @@ bool RouterCompiler::checkCycles()
         if (incoming[i] == 0)
             ready.push_back(int(i));
     }
-    size_t ordered = 0;
+    m_order.clear();
+    m_order.reserve(count);
     while (!ready.empty()) {
         const int node = ready.back();
         ready.pop_back();
-        ++ordered;
-        for (const ResolvedLink &link : m_links) {
-            if (link.from == node && --incoming[size_t(link.to)] == 0)
-                ready.push_back(link.to);
+        m_order.push_back(node);
+        for (int index : m_out[size_t(node)]) {
+            const int to = m_links[size_t(index)].to;
+            if (--incoming[size_t(to)] == 0)
+                ready.push_back(to);
         }
     }
-    if (ordered == count)
+    if (m_order.size() == count)
         return true;
     for (size_t i = 0; i < count; ++i) {
         if (incoming[i] > 0)
@@ -659,30 +698,36 @@ bool RouterCompiler::checkCycles()
 
 bool RouterCompiler::checkFanIn()
 {
-    // Which detectors' messages can reach each node: bounded so nodes never allocate.
+    // Which detectors' messages can reach each node: bounded so nodes never allocate. In
+    // topological order every node's set is complete before it passes it on; a set stops
+    // growing one past the limit, so the work stays linear in the links.
     const size_t count = m_graph.nodes.size();
-    std::vector<std::set<int>> upstream(count);
-    bool changed = true;
+    const size_t limit = size_t(MaxUpstreamDetectors) + 1;
+    std::vector<std::vector<int>> upstream(count);
     for (size_t i = 0; i < count; ++i) {
         if (m_info[i].type->type == QLatin1String("force") ||
             m_info[i].type->type == QLatin1String("slip") ||
             m_info[i].type->type == QLatin1String("threshold"))
-            upstream[i].insert(int(i));
+            upstream[i].push_back(int(i));
     }
-    while (changed) {
-        changed = false;
-        for (const ResolvedLink &link : m_links) {
+    for (int node : m_order) {
+        const std::vector<int> &from = upstream[size_t(node)];
+        for (int index : m_out[size_t(node)]) {
+            const ResolvedLink &link = m_links[size_t(index)];
             if (link.type != PortType::Event)
                 continue;
-            for (int d : upstream[size_t(link.from)])
-                changed = upstream[size_t(link.to)].insert(d).second || changed;
+            std::vector<int> &to = upstream[size_t(link.to)];
+            for (int d : from) {
+                if (to.size() < limit && std::find(to.begin(), to.end(), d) == to.end())
+                    to.push_back(d);
+            }
         }
     }
     for (size_t i = 0; i < count; ++i) {
         if (upstream[i].size() > size_t(MaxUpstreamDetectors))
             return failNode(int(i), QString(),
-                            QStringLiteral("listens to %1 detectors; at most %2 may feed one node")
-                                .arg(upstream[i].size())
+                            QStringLiteral("listens to more than %1 detectors; at most %1 may "
+                                           "feed one node")
                                 .arg(MaxUpstreamDetectors));
     }
     return true;
@@ -756,6 +801,21 @@ std::unique_ptr<Router> RouterCompiler::compile()
     m_router.reset(new Router);
     m_router->m_graph = m_graph;
     const size_t count = m_graph.nodes.size();
+    if (!checkSize())
+        return nullptr;
+    m_nodeIndex.reserve(qsizetype(count));
+    for (size_t i = 0; i < count; ++i)
+        m_nodeIndex.insert(m_graph.nodes[i].id, int(i));
+    // An embedded pattern or model shadows a built-in of its name; the first of a name wins.
+    for (const PatternPtr &pattern : m_graph.patterns) {
+        if (!m_patterns.contains(pattern->name()))
+            m_patterns.insert(pattern->name(), pattern);
+    }
+    for (const DeviceModelPtr &model : m_graph.models) {
+        if (!m_models.contains(model->name()))
+            m_models.insert(model->name(), model);
+    }
+    m_out.resize(count);
     m_info.resize(count);
     m_router->m_nodes.resize(count);
     m_router->m_sources.resize(count);

@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QSet>
 
 namespace semhap {
 
@@ -38,6 +39,14 @@ QString joinEndpoint(const QString &node, const QString &port)
 
 bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
 {
+    if (nodes.size() > RouterGraph::MaxNodes)
+        return reader.fail(QStringLiteral("/nodes"),
+                           QStringLiteral("%1 nodes, more than the %2 a router may have")
+                               .arg(nodes.size())
+                               .arg(RouterGraph::MaxNodes));
+    QSet<QString> ids;
+    ids.reserve(nodes.size());
+    graph->nodes.reserve(size_t(nodes.size()));
     for (int i = 0; i < nodes.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/nodes"), i);
         if (!nodes.at(i).isObject())
@@ -58,9 +67,10 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
                                QStringLiteral("'%1' is not a valid id (non-empty, no ':' or "
                                               "spaces)")
                                    .arg(node.id));
-        if (graph->nodeIndex(node.id) >= 0)
+        if (ids.contains(node.id))
             return reader.fail(where + QStringLiteral("/id"),
                                QStringLiteral("duplicate node id '%1'").arg(node.id));
+        ids.insert(node.id);
         graph->nodes.push_back(node);
     }
     return true;
@@ -68,6 +78,12 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
 
 bool readLinks(JsonReader &reader, const QJsonArray &links, RouterGraph *graph)
 {
+    if (links.size() > RouterGraph::MaxLinks)
+        return reader.fail(QStringLiteral("/links"),
+                           QStringLiteral("%1 links, more than the %2 a router may have")
+                               .arg(links.size())
+                               .arg(RouterGraph::MaxLinks));
+    graph->links.reserve(size_t(links.size()));
     for (int i = 0; i < links.size(); ++i) {
         const QString where = jsonPointerChild(QStringLiteral("/links"), i);
         if (!links.at(i).isObject())

@@ -42,6 +42,12 @@ class RouterGraph
 {
 public:
     static constexpr const char *Format = "semhap.router/1";
+    /** The most nodes a router may have: far more than any design, bounded for safety. */
+    static constexpr int MaxNodes = 1000000;
+    /** The most links a router may have. */
+    static constexpr int MaxLinks = 2000000;
+    /** The most devices (bands, overlays) a router may drive: each is rendered every tick. */
+    static constexpr int MaxDevices = 256;
 
     /** Parses the document's structure; node types and parameters are checked by compile. */
     static bool fromJson(const QJsonObject &json, const QString &file, RouterGraph *graph,
@@ -66,6 +72,12 @@ public:
     std::vector<RouterLink> links;
     std::vector<PatternPtr> patterns;   ///< embedded patterns, found by name first
     std::vector<DeviceModelPtr> models; ///< embedded device models, found by name first
+    /**
+     * Whether patterns and models may be loaded from files it names. A router read back
+     * from a session carries everything it uses; one that names a file is refused, so a
+     * session can make replay read nothing else.
+     */
+    bool filesAllowed = true;
 
 private:
     static bool readDocument(JsonReader &reader, const QJsonObject &json, RouterGraph *graph);

@@ -215,7 +215,11 @@ bool SessionReader::load(QString *error)
 
 bool SessionReader::routerGraph(RouterGraph *graph, LoadError *error) const
 {
-    return RouterGraph::fromJson(m_info.router, m_path, graph, error);
+    if (!RouterGraph::fromJson(m_info.router, m_path, graph, error))
+        return false;
+    // A session's router is self-contained as recorded: it may name no file to read.
+    graph->filesAllowed = false;
+    return true;
 }
 
 int SessionReader::nodeIndex(const QString &name)

@@ -90,31 +90,39 @@ void UdpFrameSource::handle(const QByteArray &datagram, double arrival,
     }
     ContactFrame frame;
     QString reason;
-    const auto take = [&](const QJsonObject &object, const QString &where) {
-        if (!m_parser.parse(object, &frame, &reason)) {
-            reject(where + reason);
-            return;
-        }
+    const auto take = [&](const QJsonObject &object) {
+        if (!m_parser.parse(object, &frame, &reason))
+            return false;
         ++m_stats.frames;
         ++*frames;
         m_lastFrame = arrival;
         handler(frame, arrival);
+        return true;
     };
     if (document.isObject()) {
-        take(document.object(), QString());
+        if (!take(document.object()))
+            reject(reason);
         return;
     }
     if (!document.isArray()) {
         reject(QStringLiteral("a datagram must hold a frame object or an array of them"));
         return;
     }
+    // A batch stops at its first invalid frame: a sender that got one wrong most likely got
+    // the rest wrong too, and a flood of them must cost one message, not hundreds.
     const QJsonArray batch = document.array();
     for (qsizetype i = 0; i < batch.size(); ++i) {
-        const QString where = QStringLiteral("[%1]: ").arg(i);
-        if (batch.at(i).isObject())
-            take(batch.at(i).toObject(), where);
-        else
-            reject(where + QStringLiteral("a contact frame must be a JSON object"));
+        const bool object = batch.at(i).isObject();
+        if (object && take(batch.at(i).toObject()))
+            continue;
+        if (!object)
+            reason = QStringLiteral("a contact frame must be a JSON object");
+        const qsizetype dropped = batch.size() - i - 1;
+        m_stats.rejected += quint64(dropped);
+        reject(QStringLiteral("[%1]: ").arg(i) + reason +
+               (dropped > 0 ? QStringLiteral(" (the batch's %1 later frame(s) dropped)").arg(dropped)
+                            : QString()));
+        return;
     }
 }
 

@@ -57,7 +57,7 @@ private:
 
     QString m_file;
     QStringList *m_warnings;
-    EnvelopeCurve m_events;
+    std::vector<EnvelopeCurve> m_events; ///< each event's shape, merged once all are read
     std::vector<Control> m_controls;
     double m_sharpnessWeight = 0.0;
     double m_sharpnessSum = 0.0;
@@ -101,7 +101,7 @@ bool AhapReader::read(const QJsonObject &json, HapticTimeline *timeline)
     std::stable_sort(m_controls.begin(), m_controls.end(),
                      [](const Control &a, const Control &b) { return a.start < b.start; });
     EnvelopeCurve envelope = EnvelopeCurve::combine(
-        m_events, controlCurve(), HapticTimeline::CombineStep,
+        EnvelopeCurve::maximum(std::move(m_events)), controlCurve(), HapticTimeline::CombineStep,
         [](double event, double control) { return std::clamp(event * control, 0.0, 1.0); });
     timeline->intensity = envelope.simplified(HapticTimeline::SimplifyTolerance / 4);
     timeline->sharpness = m_sharpnessWeight > 0 ? m_sharpnessSum / m_sharpnessWeight : -1.0;
@@ -184,8 +184,7 @@ bool AhapReader::readEvent(const QJsonObject &event, const QString &pointer)
         }
         shape.append(time + duration, 0.0);
     }
-    m_events = EnvelopeCurve::combine(m_events, shape, HapticTimeline::CombineStep,
-                                      [](double a, double b) { return std::max(a, b); });
+    m_events.push_back(std::move(shape));
     m_sharpnessSum += p.sharpness * p.intensity * duration;
     m_sharpnessWeight += p.intensity * duration;
     return true;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace semhap {
 
@@ -55,56 +56,66 @@ double EnvelopeCurve::endTime() const
     return m_points.empty() ? 0.0 : m_points.back().t;
 }
 
-namespace {
-
-/** How far `p` lies from the chord a–b, in value; on a jump, how far outside it. */
-double chordDistance(const EnvelopePoint &a, const EnvelopePoint &b, const EnvelopePoint &p)
-{
-    if (b.t <= a.t)
-        return std::max({0.0, p.v - std::max(a.v, b.v), std::min(a.v, b.v) - p.v});
-    return std::abs(p.v - (a.v + (b.v - a.v) * (p.t - a.t) / (b.t - a.t)));
-}
-
-void keepFarthest(const std::vector<EnvelopePoint> &points, size_t first, size_t last,
-                  double tolerance, std::vector<bool> &keep)
-{
-    // Iterative, so a curve sampled at a kilohertz for minutes cannot exhaust the stack.
-    std::vector<std::pair<size_t, size_t>> spans{{first, last}};
-    while (!spans.empty()) {
-        const auto [a, b] = spans.back();
-        spans.pop_back();
-        double worst = -1.0;
-        size_t at = a;
-        for (size_t i = a + 1; i < b; ++i) {
-            const double d = chordDistance(points[a], points[b], points[i]);
-            if (d > worst) {
-                worst = d;
-                at = i;
-            }
-        }
-        if (worst > tolerance) {
-            keep[at] = true;
-            spans.push_back({a, at});
-            spans.push_back({at, b});
-        }
-    }
-}
-
-} // namespace
-
 EnvelopeCurve EnvelopeCurve::simplified(double tolerance) const
 {
     if (m_points.size() < 3)
         return *this;
-    std::vector<bool> keep(m_points.size(), false);
-    keep.front() = keep.back() = true;
-    keepFarthest(m_points, 0, m_points.size() - 1, tolerance, keep);
     EnvelopeCurve out;
-    for (size_t i = 0; i < m_points.size(); ++i) {
-        if (keep[i])
-            out.m_points.push_back(m_points[i]);
+    const auto keep = [&out](const EnvelopePoint &p) { out.m_points.push_back(p); };
+    EnvelopePoint anchor = m_points.front();
+    keep(anchor);
+    // Slopes from the anchor that pass within `tolerance` of every point since.
+    double low = -std::numeric_limits<double>::infinity();
+    double high = std::numeric_limits<double>::infinity();
+    const auto narrow = [&](const EnvelopePoint &p) {
+        const double dt = p.t - anchor.t;
+        low = std::max(low, (p.v - tolerance - anchor.v) / dt);
+        high = std::min(high, (p.v + tolerance - anchor.v) / dt);
+    };
+    const auto restart = [&](const EnvelopePoint &p) {
+        anchor = p;
+        low = -std::numeric_limits<double>::infinity();
+        high = std::numeric_limits<double>::infinity();
+    };
+    for (size_t i = 1; i < m_points.size(); ++i) {
+        const EnvelopePoint &previous = m_points[i - 1];
+        const EnvelopePoint &p = m_points[i];
+        if (p.t <= anchor.t || p.t <= previous.t) {
+            // A jump: both sides stay.
+            if (previous.t != anchor.t || previous.v != anchor.v)
+                keep(previous);
+            keep(p);
+            restart(p);
+            continue;
+        }
+        const double slope = (p.v - anchor.v) / (p.t - anchor.t);
+        if (slope < low || slope > high) {
+            // No chord from the anchor reaches p: the point before it ends the segment.
+            keep(previous);
+            restart(previous);
+        }
+        narrow(p);
     }
+    if (out.m_points.back().t != m_points.back().t || out.m_points.back().v != m_points.back().v)
+        keep(m_points.back());
     return out;
+}
+
+EnvelopeCurve EnvelopeCurve::maximum(std::vector<EnvelopeCurve> curves)
+{
+    if (curves.empty())
+        return EnvelopeCurve();
+    const auto louder = [](double a, double b) { return std::max(a, b); };
+    while (curves.size() > 1) {
+        std::vector<EnvelopeCurve> merged;
+        merged.reserve((curves.size() + 1) / 2);
+        for (size_t i = 0; i + 1 < curves.size(); i += 2)
+            merged.push_back(combine(curves[i], curves[i + 1], 0.0, louder));
+        if (curves.size() % 2 == 1)
+            merged.push_back(std::move(curves.back()));
+        curves = std::move(merged);
+    }
+    return std::move(curves.front());
 }
 
 std::vector<double> EnvelopeCurve::breakpoints(const std::vector<const EnvelopeCurve *> &curves)

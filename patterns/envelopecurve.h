@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -39,18 +40,29 @@ public:
 
     /**
      * Drops points that lie within `tolerance` (in value) of the line through their
-     * neighbours kept, so a densely sampled curve becomes a few breakpoints again.
+     * neighbours kept, so a densely sampled curve becomes a few breakpoints again. One pass:
+     * each kept point opens a window of the slopes that pass every point since within the
+     * tolerance, and the next point is kept when that window closes. Jumps are kept.
      */
     EnvelopeCurve simplified(double tolerance) const;
 
     /**
      * Combines two curves point by point with `combine(a, b)`: at every breakpoint of
      * either, where they cross, and every `step` seconds where both change (a product of two
-     * ramps is not linear), keeping jumps. Exact for maxima and minima.
+     * ramps is not linear; at most MaxStepsPerSegment such points between two breakpoints),
+     * keeping jumps. Exact for maxima and minima, which need no `step` (pass 0).
      */
     template<typename F>
     static EnvelopeCurve combine(const EnvelopeCurve &a, const EnvelopeCurve &b, double step,
                                  F combine);
+    /**
+     * The upper envelope of many curves (the loudest at each instant), merged pairwise so
+     * that n curves of a few points each cost n·log n.
+     */
+    static EnvelopeCurve maximum(std::vector<EnvelopeCurve> curves);
+
+    /** Points sampled at most between two breakpoints by combine(), whatever the step. */
+    static constexpr int MaxStepsPerSegment = 1000;
 
     /** Times of every breakpoint of the given curves, sorted, without duplicates. */
     static std::vector<double> breakpoints(const std::vector<const EnvelopeCurve *> &curves);
@@ -84,7 +96,9 @@ EnvelopeCurve EnvelopeCurve::combine(const EnvelopeCurve &a, const EnvelopeCurve
         const bool bothChange =
             a.value(t0) != a.valueBefore(t1) && b.value(t0) != b.valueBefore(t1);
         if (bothChange && step > 0) {
-            for (double t = t0 + step; t < t1 - step / 2; t += step)
+            // A span of hours must not become millions of samples.
+            const double spacing = std::max(step, (t1 - t0) / MaxStepsPerSegment);
+            for (double t = t0 + spacing; t < t1 - spacing / 2; t += spacing)
                 add(t);
         } else if ((da0 < 0 && da1 > 0) || (da0 > 0 && da1 < 0)) {
             add(t0 + (t1 - t0) * da0 / (da0 - da1));

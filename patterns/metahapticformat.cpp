@@ -90,8 +90,7 @@ bool MetaHapticReader::read(const QJsonObject &json, HapticTimeline *timeline)
                       QLatin1String("frequency"), &pitch, nullptr))
         return false;
     // An emphasis is a short pulse on top of the envelope, as a transient is in AHAP.
-    timeline->intensity = EnvelopeCurve::combine(envelope, emphasis, HapticTimeline::CombineStep,
-                                                 [](double a, double b) { return std::max(a, b); })
+    timeline->intensity = EnvelopeCurve::maximum({envelope, emphasis})
                               .simplified(HapticTimeline::SimplifyTolerance / 4);
     // The frequency, weighted by the amplitude at each instant.
     double sum = 0.0;

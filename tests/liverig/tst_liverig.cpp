@@ -231,7 +231,9 @@ void TestLiveRig::malformedDatagramsAreCounted_data()
     QTest::newRow("empty") << QByteArray() << "invalid JSON" << false << 1;
     QTest::newRow("number") << QByteArray("42") << "invalid JSON" << false << 1;
     QTest::newRow("array of numbers")
-        << QByteArray("[1, 2]") << "[1]: a contact frame must be a JSON object" << false << 2;
+        << QByteArray("[1, 2]")
+        << "[0]: a contact frame must be a JSON object (the batch's 1 later frame(s) dropped)"
+        << false << 2;
     QTest::newRow("no gripper") << QByteArray(R"({"t": 9.0, "left": null, "right": null})")
                                 << "gripper" << false << 1;
     QTest::newRow("binary") << QByteArray("\x00\xff\xfe\x01", 4) << "invalid JSON" << false << 1;

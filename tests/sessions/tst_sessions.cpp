@@ -486,21 +486,23 @@ void TestSessions::udpGarbageOversizeAndBatch()
     send(QByteArray(UdpFrameSource::MaxDatagramSize + 1, ' '));
     send(
         "{\"t\": 0, \"gripper\": \"right\", \"left\": {\"f\": 3, \"n\": 2, \"actor\": \"cube\"}}");
+    // A batch stops at its first invalid frame: 5 is none, and the two after it are dropped.
     send("[{\"t\": 0.1, \"gripper\": \"right\"}, 5, {\"t\": 0, \"gripper\": \"left\"},"
-         " {\"t\": 0.05, \"gripper\": \"right\"}]"); // the last goes back in time
+         " {\"t\": 0.05, \"gripper\": \"right\"}]");
+    send("[{\"t\": 0, \"gripper\": \"left\"}, {\"t\": 0.05, \"gripper\": \"right\"}]");
     send("{\"t\": 1, \"gripper\": \"middle\"}");
     std::vector<ContactFrame> frames;
-    for (int waited = 0; source.stats().datagrams < 5 && waited < 50; ++waited) {
+    for (int waited = 0; source.stats().datagrams < 6 && waited < 50; ++waited) {
         source.waitForDatagrams(100);
         source.poll([&](const ContactFrame &f, double arrival) {
             QVERIFY(arrival >= 0);
             frames.push_back(f);
         });
     }
-    QCOMPARE(source.stats().datagrams, quint64(5));
+    QCOMPARE(source.stats().datagrams, quint64(6));
     QCOMPARE(source.stats().frames, quint64(3));
     QCOMPARE(source.stats().oversize, quint64(1));
-    QCOMPARE(source.stats().rejected, quint64(5));
+    QCOMPARE(source.stats().rejected, quint64(7)); // the batch's bad frame and the two after it
     QCOMPARE(frames.size(), size_t(3));
     QCOMPARE(frames[0].left.f, 3.0);
     QCOMPARE(source.actors().name(frames[0].left.actor), QString("cube"));
@@ -511,8 +513,9 @@ void TestSessions::udpGarbageOversizeAndBatch()
     QVERIFY2(rejections[0].startsWith(prefix + "invalid JSON at byte "),
              qPrintable(rejections[0]));
     QCOMPARE(rejections[1], prefix + "datagram of 32769 bytes is over the limit of 32768");
-    QCOMPARE(rejections[2], prefix + "[1]: a contact frame must be a JSON object");
-    QVERIFY2(rejections[3].startsWith(prefix + "[3]: \"t\" must increase per gripper"),
+    QCOMPARE(rejections[2], prefix + "[1]: a contact frame must be a JSON object (the batch's 2 "
+                                     "later frame(s) dropped)");
+    QVERIFY2(rejections[3].startsWith(prefix + "[1]: \"t\" must increase per gripper"),
              qPrintable(rejections[3]));
     QVERIFY(rejections[4].startsWith(prefix + "\"gripper\" must be"));
 }

@@ -37,6 +37,8 @@
 
 #include <qcustomplot.h>
 
+#include <cmath>
+
 using namespace semhap;
 
 class TestStudioSessions : public QObject
@@ -201,7 +203,16 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     SceneState stateAtT;
     QVERIFY(recorded->readSceneState(t, &stateAtT, &error));
     QVERIFY(stateAtT.t <= t && stateAtT.t > t - 0.05);
-    QCOMPARE(replay->world()->sceneState(), stateAtT.pose);
+    // As recorded, up to MuJoCo renormalising the quaternions when the pose is shown: a
+    // state recorded mid-step is off unit length by ~1e-10, depending on the machine's load.
+    const std::vector<double> shown = replay->world()->sceneState();
+    QCOMPARE(shown.size(), stateAtT.pose.size());
+    for (size_t i = 0; i < shown.size(); ++i)
+        QVERIFY2(std::abs(shown[i] - stateAtT.pose[i]) <= 1e-9,
+                 qPrintable(QString("pose[%1]: %2 vs %3")
+                                .arg(i)
+                                .arg(shown[i], 0, 'g', 17)
+                                .arg(stateAtT.pose[i], 0, 'g', 17)));
     QTRY_VERIFY(window.eventLog()->model()->rowCount() > 0);
     const EventLogModel *log = window.eventLog()->model();
     for (int row = 0; row < log->rowCount(); ++row)
