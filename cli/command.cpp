@@ -4,6 +4,7 @@
 #include "inputfile.h"
 #include "patternlibrary.h"
 #include "sessioninfo.h"
+#include "sessionreader.h"
 #include "sessionwriter.h"
 
 #include <QFile>
@@ -135,6 +136,7 @@ const OutputFile *Command::failedOutput() const
 
 void Command::flushOutputs()
 {
+    m_out.flush();
     for (const std::unique_ptr<OutputFile> &output : m_outputs)
         output->flush();
     if (m_io.outFile)
@@ -290,6 +292,14 @@ bool Command::checkSingleStdout(const QStringList &outputs)
         return true;
     usageError(tr("at most one output may be '-' (standard output)"));
     return false;
+}
+
+void Command::reportSkippedRows(const SessionReader &session)
+{
+    if (session.rejectedRows() > 0)
+        report(tr("%1: %n row(s) skipped", nullptr,
+                  int(std::min<qint64>(session.rejectedRows(), INT_MAX)))
+                   .arg(session.path()));
 }
 
 bool Command::finishSession(SessionWriter &session)

@@ -19,6 +19,7 @@
 
 namespace semhap {
 
+class SessionReader;
 class SessionWriter;
 
 /** Exit codes shared by every command (spec section 5). */
@@ -92,7 +93,7 @@ protected:
     void keepFromOutputs(const QString &path, Kept role);
     /** The first output whose writes failed so far, for a long loop to stop on; or null. */
     const OutputFile *failedOutput() const;
-    /** Hands what every output holds to the system, so pipes see it live. */
+    /** Hands what every output (m_out too) holds to the system, so pipes see it live. */
     void flushOutputs();
     /**
      * Declares --events, --device-frames, --set and --reaction-time: the outputs, overrides
@@ -125,6 +126,8 @@ protected:
 
     /** Closes a recording, reporting dropped values and errors; false after an error line. */
     bool finishSession(SessionWriter &session);
+    /** Says how many rows a session read skipped (each was reported as it came). */
+    void reportSkippedRows(const SessionReader &session);
 
     /** Usage check of the spec: at most one of the outputs may be `-`. */
     bool checkSingleStdout(const QStringList &outputs);

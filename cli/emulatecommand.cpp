@@ -71,7 +71,7 @@ int EmulateCommand::execute(const QCommandLineParser &parser)
         return inputError(reason);
     QuitSignal::install();
     m_out << emulator.address() << '\n';
-    m_out.flush();
+    flushOutputs(); // whoever started it waits for this line
     emulator.run([] { return QuitSignal::requested(); });
     return ExitOk;
 }

@@ -84,6 +84,7 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &error);
     if (!session)
         return inputError(error);
+    session->setRowErrorHandler([this](const QString &line) { report(line); });
     keepFromOutputs(session->path(), Kept::Input);
     if (parser.isSet(QStringLiteral("csv")) &&
         !exportCsv(*session, parser.value(QStringLiteral("csv"))))
@@ -91,6 +92,7 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     if (parser.isSet(QStringLiteral("jsonl")) &&
         !exportJsonLines(*session, parser.value(QStringLiteral("jsonl"))))
         return ExitInvalidInput;
+    reportSkippedRows(*session);
     return ExitOk;
 }
 

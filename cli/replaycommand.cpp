@@ -102,6 +102,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &message);
     if (!session)
         return inputError(message);
+    session->setRowErrorHandler([this](const QString &line) { report(line); });
     keepFromOutputs(session->path(), Kept::Input);
     const QStringList overrides = parser.values(QStringLiteral("set"));
     // The person of the session, unless the command line asks what another would have felt.
@@ -142,6 +143,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     if (!read)
         return inputError(message);
     pipeline.flush(sink);
+    reportSkippedRows(*session);
 
     if (metricsOut) {
         QJsonObject metrics = tally.metrics(pipeline.now());

@@ -84,9 +84,12 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     if (m_name.isEmpty() || m_name.contains(QLatin1Char('/')))
         return reader.fail(QStringLiteral("/name"),
                            QStringLiteral("must be a non-empty name without '/'"));
-    if (m_rate <= 0 || m_rate > 100000)
+    // Below 1 Hz a band would hold each value for seconds; the player's work per second of
+    // input also stays bounded by the rate.
+    if (!(m_rate >= 1 && m_rate <= 100000))
         return reader.fail(QStringLiteral("/rate"),
-                           QStringLiteral("must be between 0 and 100000 frames/s"));
+                           QStringLiteral("must be between 1 and 100000 frames/s, got %1")
+                               .arg(m_rate));
 
     QJsonArray channels;
     if (!reader.array(json, root, QLatin1String("channels"), &channels))

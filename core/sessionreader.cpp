@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -15,6 +16,7 @@
 #include <QUrl>
 
 #include <cmath>
+#include <limits>
 
 namespace semhap {
 
@@ -272,41 +274,88 @@ bool finished(const QSqlQuery &query, const QString &path, QString *error)
     return false;
 }
 
-bool gripperOf(const QVariant &value, Gripper *gripper)
+} // namespace
+
+namespace {
+
+/** A value as a stream line would carry it: SQLite's integers, reals, text and NULL. */
+QJsonValue jsonOf(const QVariant &value)
 {
-    return gripperFromName(value.toString(), gripper);
+    return value.isNull() ? QJsonValue(QJsonValue::Null) : QJsonValue::fromVariant(value);
+}
+
+/** A REAL column's value: false when it holds text, a blob or NULL, or is not finite. */
+bool finiteReal(const QVariant &value, double *out)
+{
+    const int type = value.typeId();
+    if (type != QMetaType::Double && type != QMetaType::LongLong && type != QMetaType::Int)
+        return false;
+    *out = value.toDouble();
+    return std::isfinite(*out);
+}
+
+/** How a column's value reads in a reason: text quoted, NULL as null. */
+QString describe(const QVariant &value)
+{
+    if (value.isNull())
+        return QStringLiteral("null");
+    if (value.typeId() == QMetaType::QString)
+        return QLatin1Char('"') + value.toString().left(40) + QLatin1Char('"');
+    if (value.typeId() == QMetaType::QByteArray)
+        return QStringLiteral("a blob");
+    return value.toString();
 }
 
 } // namespace
+
+void SessionReader::rejectRow(const char *table, const QVariant &rowid, const QString &reason)
+{
+    ++m_rejectedRows;
+    if (m_onRowError)
+        m_onRowError(QStringLiteral("%1: %2 row %3: %4")
+                         .arg(m_path, QLatin1String(table), rowid.toString(), reason));
+}
 
 bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error, double from,
                                       double to)
 {
     QSqlQuery query;
     QString reason;
-    if (!select(m_db->db(), &query, QStringLiteral("*"), "contact_frames", from, to, &reason)) {
+    if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "contact_frames", from, to,
+                &reason)) {
         *error = m_path + QStringLiteral(": ") + reason;
         return false;
     }
-    const auto fingertip = [&query, this](int column, Fingertip *tip) {
-        tip->f = query.value(column).toDouble();
-        tip->n = query.value(column + 1).toInt();
-        tip->actor = m_actors.intern(query.value(column + 2).toString());
-        tip->hasFxyz = !query.value(column + 3).isNull();
-        for (int i = 0; i < 3; ++i)
-            tip->fxyz[size_t(i)] = tip->hasFxyz ? query.value(column + 3 + i).toDouble() : 0.0;
+    // Each row is checked as the stream line it was: one set of rules for frames, wherever
+    // they come from. A recorded pause is real, so no gap is too long; time must still move
+    // on per gripper.
+    m_frames.restartClock();
+    m_frames.setMaxGap(std::numeric_limits<double>::infinity());
+    const bool hasMu = m_schemaVersion >= 3; // friction coefficients came with schema 3
+    const auto fingertip = [&query, hasMu](int column, int muColumn) {
+        QJsonObject tip{{QStringLiteral("f"), jsonOf(query.value(column))},
+                        {QStringLiteral("n"), jsonOf(query.value(column + 1))},
+                        {QStringLiteral("actor"), jsonOf(query.value(column + 2))}};
+        if (!query.value(column + 3).isNull() || !query.value(column + 4).isNull() ||
+            !query.value(column + 5).isNull())
+            tip.insert(QStringLiteral("fxyz"),
+                       QJsonArray{jsonOf(query.value(column + 3)), jsonOf(query.value(column + 4)),
+                                  jsonOf(query.value(column + 5))});
+        if (hasMu)
+            tip.insert(QStringLiteral("mu"), jsonOf(query.value(muColumn)));
+        return tip;
     };
     ContactFrame frame;
     while (query.next()) {
-        frame.t = query.value(0).toDouble();
-        gripperOf(query.value(1), &frame.gripper);
-        fingertip(2, &frame.left);
-        fingertip(8, &frame.right);
-        // Friction coefficients came with schema 3; before, they were not known.
-        const bool hasMu = m_schemaVersion >= 3;
-        frame.left.mu = hasMu ? query.value(15).toDouble() : 0.0;
-        frame.right.mu = hasMu ? query.value(16).toDouble() : 0.0;
-        if (!visit(frame, optional(query.value(14))))
+        const QJsonObject line{{QStringLiteral("t"), jsonOf(query.value(1))},
+                               {QStringLiteral("gripper"), jsonOf(query.value(2))},
+                               {QStringLiteral("left"), fingertip(3, 16)},
+                               {QStringLiteral("right"), fingertip(9, 17)}};
+        if (!m_frames.parse(line, &frame, &reason)) {
+            rejectRow("contact_frames", query.value(0), reason);
+            continue;
+        }
+        if (!visit(frame, optional(query.value(15))))
             return true;
     }
     return finished(query, m_path, error);
@@ -316,22 +365,40 @@ bool SessionReader::readEvents(const EventVisitor &visit, QString *error, double
 {
     QSqlQuery query;
     QString reason;
-    if (!select(m_db->db(), &query, QStringLiteral("*"), "events", from, to, &reason)) {
+    if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "events", from, to, &reason)) {
         *error = m_path + QStringLiteral(": ") + reason;
         return false;
     }
     SemanticEvent event;
     while (query.next()) {
-        event.t = query.value(0).toDouble();
-        gripperOf(query.value(1), &event.gripper);
-        event.node = nodeIndex(query.value(2).toString());
-        detectorKindFromName(query.value(3).toString(), &event.detector);
-        messageFromName(query.value(4).toString(), &event.message);
-        categoryFromName(query.value(5).toString(), &event.category);
-        eventPhaseFromName(query.value(6).toString(), &event.phase);
-        event.intensity = query.value(7).toDouble();
-        if (!visit(event))
-            return true;
+        const auto bad = [&](const char *column, int index) {
+            rejectRow("events", query.value(0),
+                      QStringLiteral("\"%1\" is not valid, got %2")
+                          .arg(QLatin1String(column), describe(query.value(index))));
+        };
+        const QString node = query.value(3).toString();
+        if (!finiteReal(query.value(1), &event.t)) {
+            bad("t", 1);
+        } else if (!gripperFromName(query.value(2).toString(), &event.gripper)) {
+            bad("gripper", 2);
+        } else if (node.isEmpty()) {
+            bad("node", 3);
+        } else if (!detectorKindFromName(query.value(4).toString(), &event.detector)) {
+            bad("detector", 4);
+        } else if (!messageFromName(query.value(5).toString(), &event.message)) {
+            bad("message", 5);
+        } else if (!categoryFromName(query.value(6).toString(), &event.category)) {
+            bad("category", 6);
+        } else if (!eventPhaseFromName(query.value(7).toString(), &event.phase)) {
+            bad("phase", 7);
+        } else if (!finiteReal(query.value(8), &event.intensity) || event.intensity < 0.0 ||
+                   event.intensity > 1.0) {
+            bad("intensity", 8);
+        } else {
+            event.node = nodeIndex(node);
+            if (!visit(event))
+                return true;
+        }
     }
     return finished(query, m_path, error);
 }
@@ -341,20 +408,28 @@ bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *e
 {
     QSqlQuery query;
     QString reason;
-    if (!select(m_db->db(), &query, QStringLiteral("*"), "device_frames", from, to, &reason)) {
+    if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "device_frames", from, to,
+                &reason)) {
         *error = m_path + QStringLiteral(": ") + reason;
         return false;
     }
     DeviceFrame frame;
     while (query.next()) {
-        frame.t = query.value(0).toDouble();
-        frame.device = deviceIndex(query.value(1).toString());
+        const QString device = query.value(2).toString();
+        bool valid = finiteReal(query.value(1), &frame.t) && !device.isEmpty();
         frame.values.fill(0.0);
         frame.channelCount = 0;
-        for (int c = 0; c < MaxChannels && !query.value(2 + c).isNull(); ++c) {
-            frame.values[size_t(c)] = query.value(2 + c).toDouble();
+        for (int c = 0; valid && c < MaxChannels && !query.value(3 + c).isNull(); ++c) {
+            valid = finiteReal(query.value(3 + c), &frame.values[size_t(c)]);
             frame.channelCount = c + 1;
         }
+        if (!valid) {
+            rejectRow("device_frames", query.value(0),
+                      QStringLiteral("\"t\", \"device\" and the values must be finite numbers "
+                                     "and a name"));
+            continue;
+        }
+        frame.device = deviceIndex(device);
         if (!visit(frame))
             return true;
     }
@@ -366,19 +441,26 @@ bool SessionReader::readOperatorInput(const InputVisitor &visit, QString *error,
 {
     QSqlQuery query;
     QString reason;
-    if (!select(m_db->db(), &query, QStringLiteral("*"), "operator_input", from, to, &reason)) {
+    if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "operator_input", from, to,
+                &reason)) {
         *error = m_path + QStringLiteral(": ") + reason;
         return false;
     }
     OperatorInput input;
     while (query.next()) {
-        input.t = query.value(0).toDouble();
-        gripperOf(query.value(1), &input.hand);
-        for (int i = 0; i < 3; ++i)
-            input.pos[size_t(i)] = query.value(2 + i).toDouble();
-        for (int i = 0; i < 4; ++i)
-            input.quat[size_t(i)] = query.value(5 + i).toDouble();
-        input.grip = query.value(9).toDouble();
+        bool valid = finiteReal(query.value(1), &input.t) &&
+                     gripperFromName(query.value(2).toString(), &input.hand);
+        for (int i = 0; valid && i < 3; ++i)
+            valid = finiteReal(query.value(3 + i), &input.pos[size_t(i)]);
+        for (int i = 0; valid && i < 4; ++i)
+            valid = finiteReal(query.value(6 + i), &input.quat[size_t(i)]);
+        valid = valid && finiteReal(query.value(10), &input.grip);
+        if (!valid) {
+            rejectRow("operator_input", query.value(0),
+                      QStringLiteral("\"t\", the pose and the grip must be finite numbers and "
+                                     "\"hand\" left or right"));
+            continue;
+        }
         if (!visit(input))
             return true;
     }

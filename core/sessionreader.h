@@ -3,6 +3,7 @@
 
 #include "actortable.h"
 #include "contactframe.h"
+#include "contactframeparser.h"
 #include "deviceframe.h"
 #include "operatorinput.h"
 #include "scenestate.h"
@@ -25,7 +26,10 @@ struct LoadError;
  * Opens a recorded session (docs/sessions.md) and reads its streams back, whole or within
  * a time window — what replay, export and the studio's scrubber need. Values come back bit
  * for bit as they were recorded (except that -0 reads as 0: SQLite stores integral reals
- * as integers). Opened read-only; a session whose recording was killed opens too.
+ * as integers). Opened read-only; a session whose recording was killed opens too. Nothing
+ * read back is trusted: a row that breaks its stream's rules (a contact frame is checked
+ * exactly as a stream line is) is skipped, counted and reported as
+ * `SESSION: TABLE row N: reason`.
  *
  * Not thread-safe: use one reader from one thread (Qt SQL connections are per thread).
  */
@@ -37,6 +41,8 @@ public:
     using EventVisitor = std::function<bool(const SemanticEvent &event)>;
     using DeviceFrameVisitor = std::function<bool(const DeviceFrame &frame)>;
     using InputVisitor = std::function<bool(const OperatorInput &input)>;
+    /** Gets each skipped row as `SESSION: TABLE row N: reason`. */
+    using RowErrorHandler = std::function<void(const QString &line)>;
 
     static constexpr double Forever = std::numeric_limits<double>::infinity();
 
@@ -59,7 +65,11 @@ public:
     /** The channel names of device `device`, in its model's order. */
     const QStringList &channelNames(int device) const { return m_channels[size_t(device)]; }
     /** The actors the contact frames name; frames refer to them by id. */
-    const ActorTable &actors() const { return m_actors; }
+    const ActorTable &actors() const { return m_frames.actors(); }
+
+    void setRowErrorHandler(RowErrorHandler handler) { m_onRowError = std::move(handler); }
+    /** Rows skipped so far, in every read. */
+    qint64 rejectedRows() const { return m_rejectedRows; }
 
     qint64 contactFrameCount() const { return m_frameCount; }
     qint64 eventCount() const { return m_eventCount; }
@@ -98,6 +108,8 @@ private:
     bool load(QString *error);
     int nodeIndex(const QString &name);
     int deviceIndex(const QString &name);
+    /** Skips a row: counts and reports it. */
+    void rejectRow(const char *table, const QVariant &rowid, const QString &reason);
 
     QString m_path;
     std::unique_ptr<Database> m_db;
@@ -105,7 +117,9 @@ private:
     QStringList m_nodes;
     QStringList m_devices;
     std::vector<QStringList> m_channels;
-    ActorTable m_actors;
+    ContactFrameParser m_frames; ///< the stream rules for contact frame rows; names actors
+    RowErrorHandler m_onRowError;
+    qint64 m_rejectedRows = 0;
     qint64 m_frameCount = 0;
     qint64 m_eventCount = 0;
     qint64 m_deviceFrameCount = 0;

@@ -5,9 +5,11 @@
 
 #include <QJsonDocument>
 #include <QJsonParseError>
+#include <QSet>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace semhap {
 
@@ -146,6 +148,114 @@ bool JsonReader::array(const QJsonObject &object, const QString &pointer, QLatin
     return true;
 }
 
+namespace {
+
+/**
+ * Finds the first key an object of a valid JSON text repeats (QJsonDocument keeps the last
+ * value without a word). One pass over the text; false when no key repeats, else the
+ * repeated key's JSON pointer.
+ */
+bool findRepeatedKey(const QByteArray &text, QString *pointer)
+{
+    struct Level
+    {
+        bool isObject = false;
+        bool expectKey = false;
+        QString key;
+        int index = 0;
+        QSet<QString> keys;
+    };
+    std::vector<Level> levels;
+    const char *p = text.constData();
+    const char *end = p + text.size();
+    const auto readString = [&]() -> QString {
+        // p is just past the opening quote; the text is valid JSON.
+        QString out;
+        QByteArray run;
+        while (p < end && *p != '"') {
+            if (*p != '\\') {
+                run.append(*p++);
+                continue;
+            }
+            ++p;
+            const char c = *p++;
+            out += QString::fromUtf8(run);
+            run.clear();
+            switch (c) {
+            case 'b':
+                out += QLatin1Char('\b');
+                break;
+            case 'f':
+                out += QLatin1Char('\f');
+                break;
+            case 'n':
+                out += QLatin1Char('\n');
+                break;
+            case 'r':
+                out += QLatin1Char('\r');
+                break;
+            case 't':
+                out += QLatin1Char('\t');
+                break;
+            case 'u':
+                out += QChar(QByteArray(p, 4).toUShort(nullptr, 16));
+                p += 4;
+                break;
+            default:
+                out += QLatin1Char(c);
+                break;
+            }
+        }
+        ++p; // the closing quote
+        return out + QString::fromUtf8(run);
+    };
+    while (p < end) {
+        const char c = *p++;
+        switch (c) {
+        case '{':
+        case '[': {
+            Level level;
+            level.isObject = c == '{';
+            level.expectKey = level.isObject;
+            levels.push_back(std::move(level));
+            break;
+        }
+        case '}':
+        case ']':
+            levels.pop_back();
+            break;
+        case ',':
+            if (levels.back().isObject)
+                levels.back().expectKey = true;
+            else
+                ++levels.back().index;
+            break;
+        case '"': {
+            const QString value = readString();
+            if (levels.empty() || !levels.back().isObject || !levels.back().expectKey)
+                break;
+            Level &level = levels.back();
+            level.expectKey = false;
+            level.key = value;
+            if (!level.keys.contains(value)) {
+                level.keys.insert(value);
+                break;
+            }
+            pointer->clear();
+            for (const Level &outer : levels)
+                *pointer = outer.isObject ? jsonPointerChild(*pointer, outer.key)
+                                          : jsonPointerChild(*pointer, outer.index);
+            return true;
+        }
+        default:
+            break;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *object,
                      LoadError *error)
 {
@@ -162,10 +272,22 @@ bool parseJsonObject(const QByteArray &bytes, const QString &file, QJsonObject *
         return false;
     }
     if (!document.isObject()) {
-        *error = LoadError::at(
-            file, QString(),
+        // The root has no pointer of its own: say where it starts.
+        qsizetype start = 0;
+        while (start < bytes.size() && QChar::isSpace(uchar(bytes.at(start))))
+            ++start;
+        const QByteArray before = bytes.left(start);
+        *error = LoadError::atLine(
+            file, int(before.count('\n')) + 1, int(start - (before.lastIndexOf('\n') + 1)) + 1,
             QStringLiteral("expected a JSON object, got ") +
                 (document.isArray() ? QStringLiteral("an array") : QStringLiteral("nothing")));
+        return false;
+    }
+    QString repeated;
+    if (findRepeatedKey(bytes, &repeated)) {
+        *error = LoadError::at(file, repeated,
+                               QStringLiteral("the key appears twice in its object; which value "
+                                              "was meant is unknown"));
         return false;
     }
     *object = document.object();

@@ -17,10 +17,56 @@ namespace semhap {
 
 namespace {
 
-/** MuJoCo's messages span lines; a loader's error is one line. */
-QString oneLine(const char *message)
+/**
+ * MuJoCo's message as one `FILE:LINE: reason` line: its messages span lines and name the
+ * line in their own words ("line 7", "Line number=3"), which editors cannot jump to.
+ */
+QString mujocoError(const QString &where, const char *message)
 {
-    return QString::fromUtf8(message).trimmed().replace(QLatin1Char('\n'), QStringLiteral("; "));
+    static const QRegularExpression line(
+        QStringLiteral(",?\\s*\\b[Ll]ine(?: number)?\\s*=?\\s*(\\d+)"));
+    QString text = QString::fromUtf8(message).trimmed();
+    const QRegularExpressionMatch m = line.match(text);
+    QString location = where;
+    if (m.hasMatch()) {
+        location += QLatin1Char(':') + m.captured(1);
+        text.remove(m.capturedStart(), m.capturedLength());
+    }
+    text.replace(QRegularExpression(QStringLiteral("\\s*\\n+\\s*")), QStringLiteral("; "));
+    text.replace(QStringLiteral(":; "), QStringLiteral(": "));
+    return location + QStringLiteral(": ") + text;
+}
+
+/** Where `<tag attribute="…">` is in the MJCF: `:LINE`, or nothing when it is not. */
+QString locationOf(const QByteArray &xml, QLatin1String tag, QLatin1String attribute)
+{
+    QXmlStreamReader reader(xml);
+    while (!reader.atEnd()) {
+        if (reader.readNext() == QXmlStreamReader::StartElement && reader.name() == tag &&
+            reader.attributes().hasAttribute(attribute))
+            return QStringLiteral(":%1").arg(reader.lineNumber());
+    }
+    return QString();
+}
+
+/**
+ * Refuses a model semhap cannot step sensibly: a time step that is not a number or lies
+ * outside 10 µs … 50 ms would simulate nothing, or nothing a gripper could hold.
+ */
+MjModelPtr checked(MjModelPtr model, const QByteArray &xml, const QString &where, QString *error)
+{
+    if (!model)
+        return model;
+    const double step = model->opt.timestep;
+    if (!(step >= SceneLibrary::MinTimestep && step <= SceneLibrary::MaxTimestep)) {
+        *error = where + locationOf(xml, QLatin1String("option"), QLatin1String("timestep")) +
+                 QStringLiteral(": timestep %1 s is outside %2 to %3 s")
+                     .arg(step)
+                     .arg(SceneLibrary::MinTimestep)
+                     .arg(SceneLibrary::MaxTimestep);
+        return nullptr;
+    }
+    return model;
 }
 
 const QRegularExpression &cubeName()
@@ -49,6 +95,8 @@ bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available
     *available = 0;
     while (!reader.atEnd()) {
         reader.readNext();
+        if (reader.hasError())
+            break;
         if (reader.isStartElement()) {
             const QString name = reader.attributes().value(QLatin1String("name")).toString();
             const QString tag = reader.name().toString();
@@ -98,8 +146,8 @@ MjModelPtr compile(const QByteArray &xml, const QString &where, QString *error)
     char message[1000] = "";
     MjModelPtr model(mj_loadXML(file, vfs.get(), message, sizeof message));
     if (!model)
-        *error = where + QStringLiteral(": ") + oneLine(message);
-    return model;
+        *error = mujocoError(where, message);
+    return checked(std::move(model), xml, where, error);
 }
 
 } // namespace
@@ -143,8 +191,8 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                 mj_loadXML(QFile::encodeName(QFileInfo(path).absoluteFilePath()).constData(),
                            nullptr, message, sizeof message));
             if (!model)
-                *error = nameOrPath + QStringLiteral(": ") + oneLine(message);
-            return model;
+                *error = mujocoError(nameOrPath, message);
+            return checked(std::move(model), xml, nameOrPath, error);
         }
         return compile(xml, nameOrPath, error);
     }

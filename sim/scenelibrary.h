@@ -17,8 +17,15 @@ namespace semhap {
 class SceneLibrary
 {
 public:
+    /** The shortest and longest simulation time step a scene may set (s). */
+    static constexpr double MinTimestep = 1e-5;
+    static constexpr double MaxTimestep = 0.05;
+
     static QStringList builtinNames();
-    /** Compiles a built-in scene or an MJCF file; null with a one-line `error`. */
+    /**
+     * Compiles a built-in scene or an MJCF file; null with a one-line `error`,
+     * `FILE:LINE: reason` where MuJoCo or the check names a place.
+     */
     static MjModelPtr load(const QString &nameOrPath, const SceneOptions &options, QString *error);
 };
 

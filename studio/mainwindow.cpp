@@ -33,6 +33,9 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include <algorithm>
+#include <climits>
+
 namespace semhap {
 
 namespace {
@@ -585,6 +588,12 @@ bool MainWindow::openSession(const QString &path)
     m_teleop->setWorld(nullptr);
     m_poseInput->setWorld(nullptr);
     setWindowTitle(tr("semhap studio — replay of %1").arg(QFileInfo(m_replay->path()).fileName()));
+    if (m_replay->skippedRows() > 0)
+        statusBar()->showMessage(tr("%n row(s) of the session break the stream rules and were "
+                                    "skipped (semhap replay lists them)",
+                                    nullptr,
+                                    int(std::min<qint64>(m_replay->skippedRows(), INT_MAX))),
+                                 15000);
     return opened;
 }
 

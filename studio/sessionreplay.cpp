@@ -109,6 +109,11 @@ bool SessionReplay::open(const QString &path, QString *error)
     return true;
 }
 
+qint64 SessionReplay::skippedRows() const
+{
+    return m_reader ? m_reader->rejectedRows() : 0;
+}
+
 void SessionReplay::close()
 {
     if (!isOpen())

@@ -38,6 +38,8 @@ public:
     void close();
     bool isOpen() const { return !m_path.isEmpty(); }
     const QString &path() const { return m_path; }
+    /** Rows the session holds that break their stream's rules: skipped, not shown. */
+    qint64 skippedRows() const;
 
     double startTime() const { return m_start; }
     double endTime() const { return m_end; }

@@ -129,8 +129,11 @@ void TestCli::errors_data()
                   "sim/README.md)";
     QTest::newRow("validate broken scene")
         << QStringList{"validate", Data + "/broken-scene.xml"} << 1
-        << Data + "/broken-scene.xml: XML parse error 6:; Error=XML_ERROR_PARSING_ELEMENT "
-                  "ErrorID=6 (0x6) Line number=3: XMLElement name=bod";
+        << Data + "/broken-scene.xml:3: XML parse error 6: Error=XML_ERROR_PARSING_ELEMENT "
+                  "ErrorID=6 (0x6): XMLElement name=bod";
+    QTest::newRow("validate a scene stepping by 0.5 s")
+        << QStringList{"validate", Data + "/slow-scene.xml"} << 1
+        << Data + "/slow-scene.xml:2: timestep 0.5 s is outside 1e-05 to 0.05 s";
     QTest::newRow("validate broken pattern")
         << QStringList{"validate", Data + "/broken-pattern.json"} << 1
         << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "

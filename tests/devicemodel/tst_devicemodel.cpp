@@ -136,7 +136,7 @@ void TestDeviceModel::malformed_data()
     QTest::newRow("syntax") << QByteArray("{\n  \"format\": ,\n}")
                             << "m.json:2:14: invalid JSON: illegal value";
     QTest::newRow("not object") << QByteArray("[1]")
-                                << "m.json: expected a JSON object, got an array";
+                                << "m.json:1:1: expected a JSON object, got an array";
     QTest::newRow("no format") << QByteArray(R"({"name": "x"})") << "m.json: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format": "semhap.pattern/1"})")
@@ -157,7 +157,10 @@ void TestDeviceModel::malformed_data()
                                   << "m.json: /channels/0/max: expected a number, got a string";
     QTest::newRow("zero rate")
         << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 0, "channels": []})")
-        << "m.json: /rate: must be between 0 and 100000 frames/s";
+        << "m.json: /rate: must be between 1 and 100000 frames/s, got 0";
+    QTest::newRow("rate below 1 Hz")
+        << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 1e-300, "channels": []})")
+        << "m.json: /rate: must be between 1 and 100000 frames/s, got 1e-300";
     QTest::newRow("slash in name")
         << QByteArray(R"({"format": "semhap.device/1", "name": "a/b", "rate": 1})")
         << "m.json: /name: must be a non-empty name without '/'";

@@ -262,7 +262,7 @@ void TestLiveRig::malformedDatagramsAreCounted()
     QCOMPARE(stats.oversize, quint64(oversize ? 1 : 0));
     quint64 count = 0;
     const QString rejection = engine.liveRejection(&count);
-    QCOMPARE(count, quint64(rejections));
+    QCOMPARE(count, quint64(1)); // one message a datagram, however many frames it drops
     QVERIFY2(rejection.contains(reason), qPrintable(rejection));
     QVERIFY2(rejection.startsWith(QStringLiteral("udp:%1: ").arg(stats.port)),
              qPrintable(rejection));

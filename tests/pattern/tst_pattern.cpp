@@ -147,7 +147,10 @@ void TestPattern::errors_data()
         << QByteArray("{\"a\": 1,\n \"Über\": [1, 2,,]\n}")
         << "FILE:2:17: invalid JSON: illegal value";
     QTest::newRow("not an object")
-        << QByteArray("[1]") << "FILE: expected a JSON object, got an array";
+        << QByteArray("[1]") << "FILE:1:1: expected a JSON object, got an array";
+    QTest::newRow("a key twice")
+        << QByteArray(R"({"format": "semhap.pattern/1", "name": "p", "name": "q"})")
+        << "FILE: /name: the key appears twice in its object; which value was meant is unknown";
     QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format":"semhap.router/1","name":"p"})")

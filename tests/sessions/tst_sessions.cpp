@@ -80,7 +80,7 @@ Recording synthetic(const Router &router, int ticks)
         event.message = Message(k % 3);
         event.category = categoryOf(event.message);
         event.phase = EventPhase(k % 3);
-        event.intensity = anyDouble(random);
+        event.intensity = 1.0 / (1.0 + anyDouble(random)); // in (0, 1], as events carry
         r.events.push_back(event);
         DeviceFrame device;
         device.t = k * 0.001;
@@ -164,6 +164,7 @@ private slots:
     void schemaOneStillOpens();
     void damagedFiles_data();
     void damagedFiles();
+    void rowsAreCheckedAsStreamsAre();
     void udpGarbageOversizeAndBatch();
     void udpFlood();
 
@@ -468,6 +469,66 @@ void TestSessions::damagedFiles()
     QString error;
     QVERIFY(!SessionReader::open(path, &error));
     QCOMPARE(error, path + ": " + reason);
+}
+
+void TestSessions::rowsAreCheckedAsStreamsAre()
+{
+    // Rows a program (or a bit flip) wrote wrong used to replay and export without a word.
+    const auto router = c3();
+    const QString path = m_dir.filePath("bad-rows.db");
+    const Recording good = synthetic(*router, 200);
+    record(path, *router, good);
+    damage(path, {"UPDATE contact_frames SET left_f = 'abc' WHERE rowid = 3",
+                  "UPDATE contact_frames SET gripper = 'middle' WHERE rowid = 5",
+                  "UPDATE contact_frames SET right_n = -3 WHERE rowid = 7",
+                  "UPDATE contact_frames SET t = 0 WHERE rowid = 9",
+                  "UPDATE contact_frames SET left_fy = 'up' WHERE rowid = 11",
+                  "UPDATE events SET message = 'shout' WHERE rowid = 2",
+                  "UPDATE events SET intensity = 2 WHERE rowid = 4",
+                  "UPDATE device_frames SET v0 = 'x' WHERE rowid = 4",
+                  "UPDATE operator_input SET hand = 'middle' WHERE rowid = 6"});
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QStringList rejected;
+    reader->setRowErrorHandler([&](const QString &line) { rejected.append(line); });
+    qint64 frames = 0;
+    qint64 events = 0;
+    qint64 deviceFrames = 0;
+    qint64 inputs = 0;
+    QVERIFY(reader->readContactFrames([&](const ContactFrame &, double) { return ++frames; },
+                                      &error));
+    QVERIFY(reader->readEvents([&](const SemanticEvent &) { return ++events; }, &error));
+    QVERIFY(reader->readDeviceFrames([&](const DeviceFrame &) { return ++deviceFrames; }, &error));
+    QVERIFY(reader->readOperatorInput([&](const OperatorInput &) { return ++inputs; }, &error));
+    QCOMPARE(frames, qint64(good.frames.size()) - 5);
+    QCOMPARE(events, qint64(good.events.size()) - 2);
+    QCOMPARE(deviceFrames, qint64(good.deviceFrames.size()) - 1);
+    QCOMPARE(inputs, qint64(good.inputs.size()) - 1);
+    QCOMPARE(reader->rejectedRows(), qint64(9));
+    const QString at = path + ": ";
+    const QStringList expected{
+        at + "contact_frames row 3: \"left.f\" must be a finite non-negative number, got \"abc\"",
+        at + "contact_frames row 5: \"gripper\" must be \"left\" or \"right\", got \"middle\"",
+        at + "contact_frames row 7: \"right.n\" must be a non-negative integer, got -3",
+        at + "contact_frames row 9: \"t\" must increase per gripper, got 0 after 0.003 for "
+             "\"left\"",
+        at + "contact_frames row 11: \"left.fxyz\" must be an array of 3 finite numbers, got "
+             "an array",
+        at + "events row 2: \"message\" is not valid, got \"shout\"",
+        at + "events row 4: \"intensity\" is not valid, got 2",
+        at + "device_frames row 4: \"t\", \"device\" and the values must be finite numbers "
+             "and a name",
+        at + "operator_input row 6: \"t\", the pose and the grip must be finite numbers and "
+             "\"hand\" left or right"};
+    QCOMPARE(rejected.size(), expected.size());
+    for (int i = 0; i < expected.size(); ++i) {
+        if (expected[i].contains("row 9:")) // the t before it carries a tiny offset
+            QVERIFY2(rejected[i].startsWith(expected[i].left(expected[i].indexOf(" after"))),
+                     qPrintable(rejected[i]));
+        else
+            QCOMPARE(rejected[i], expected[i]);
+    }
 }
 
 void TestSessions::udpGarbageOversizeAndBatch()
