@@ -28,8 +28,10 @@ void ConvertCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("duration"),
                       tr("Export: seconds to render (default to the end of the release)."),
                       tr("S")});
-    parser.addOption({QStringLiteral("no-modulation"),
-                      tr("Leave sharpness and frequency unmapped (no amplitude modulation).")});
+    parser.addOption({QStringLiteral("modulate"),
+                      tr("Render sharpness as an amplitude modulation the device can follow "
+                         "(import), and read such a modulation back as sharpness (export). "
+                         "Without it the envelope is kept as it is.")});
 }
 
 int ConvertCommand::execute(const QCommandLineParser &parser)
@@ -55,7 +57,7 @@ int ConvertCommand::execute(const QCommandLineParser &parser)
         return usageError(tr("--release-at must not be negative"));
     if (parser.isSet(QStringLiteral("duration")) && options.duration < 0)
         return usageError(tr("--duration must not be negative"));
-    const bool modulate = !parser.isSet(QStringLiteral("no-modulation"));
+    const bool modulate = parser.isSet(QStringLiteral("modulate"));
 
     // Importing: the new pattern's model decides the channels and the modulation range.
     if (parser.isSet(QStringLiteral("device")) && inFormat == HapticFileFormat::Semhap)

@@ -16,7 +16,7 @@ namespace {
 struct EventParameters
 {
     double intensity = 1.0;
-    double sharpness = 0.5;
+    double sharpness = -1.0; ///< < 0: the event says nothing of it
     double attack = 0.0;
     double decay = 0.0;
     double release = 0.0;
@@ -85,11 +85,9 @@ bool AhapReader::nonNegative(const QJsonObject &object, const QString &pointer, 
 
 bool AhapReader::read(const QJsonObject &json, HapticTimeline *timeline)
 {
-    for (auto it = json.begin(); it != json.end(); ++it) {
-        if (it.key() != QLatin1String("Version") && it.key() != QLatin1String("Metadata") &&
-            it.key() != QLatin1String("Pattern"))
-            warn(jsonPointerChild(QString(), it.key()), QStringLiteral("ignored: unknown key"));
-    }
+    ignoreUnknownKeys(json, QString(),
+                      {QLatin1String("Version"), QLatin1String("Metadata"), QLatin1String("Pattern")},
+                      m_warnings);
     QJsonArray pattern;
     if (!array(json, QString(), QLatin1String("Pattern"), &pattern))
         return false;
@@ -112,37 +110,52 @@ bool AhapReader::readEntry(const QJsonValue &json, const QString &pointer)
 {
     if (!json.isObject())
         return fail(pointer, QStringLiteral("expected an object, got ") + jsonTypeName(json));
+    // Keys beside the element are ignored, as Core Haptics does; an element of none of the
+    // three kinds (a misspelt "ParameterCurves") is an error, as in its own tests.
     const QJsonObject entry = json.toObject();
-    if (entry.size() != 1)
-        return fail(pointer, QStringLiteral("expected exactly one of 'Event', "
-                                            "'ParameterCurve' or 'Parameter'"));
-    const QString key = entry.begin().key();
+    const std::initializer_list<QLatin1String> kinds{
+        QLatin1String("Event"), QLatin1String("ParameterCurve"), QLatin1String("Parameter")};
+    ignoreUnknownKeys(entry, pointer, kinds, m_warnings);
+    QString key;
+    for (const QLatin1String kind : kinds) {
+        if (!entry.contains(kind))
+            continue;
+        if (!key.isEmpty())
+            return fail(pointer, QStringLiteral("holds both %1 and %2; an element is one of "
+                                                "them")
+                                     .arg(quoted(key), quoted(kind)));
+        key = kind;
+    }
+    if (key.isEmpty()) {
+        QStringList found;
+        for (auto it = entry.begin(); it != entry.end(); ++it)
+            found.append(quoted(it.key()));
+        return fail(pointer, QStringLiteral("expected one of 'Event', 'ParameterCurve' or "
+                                            "'Parameter'") +
+                                 (found.isEmpty() ? QStringLiteral(", got an empty object")
+                                                  : QStringLiteral(", got ") +
+                                                        found.join(QStringLiteral(", "))));
+    }
     const QString at = jsonPointerChild(pointer, key);
-    const QJsonValue value = entry.begin().value();
-    if (!value.isObject() &&
-        (key == QLatin1String("Event") || key == QLatin1String("ParameterCurve") ||
-         key == QLatin1String("Parameter")))
+    const QJsonValue value = entry.value(key);
+    if (!value.isObject())
         return fail(at, QStringLiteral("expected an object, got ") + jsonTypeName(value));
     if (key == QLatin1String("Event"))
         return readEvent(value.toObject(), at);
     if (key == QLatin1String("ParameterCurve"))
         return readCurve(value.toObject(), at);
-    if (key == QLatin1String("Parameter"))
-        return readParameter(value.toObject(), at);
-    return fail(pointer, QStringLiteral("unknown entry ") + quoted(key) +
-                             QStringLiteral(" (expected 'Event', 'ParameterCurve' or "
-                                            "'Parameter')"));
+    return readParameter(value.toObject(), at);
 }
 
 bool AhapReader::readEvent(const QJsonObject &event, const QString &pointer)
 {
-    if (!checkKeys(event, pointer,
-                   {QLatin1String("Time"), QLatin1String("EventType"),
-                    QLatin1String("EventDuration"), QLatin1String("EventParameters"),
-                    QLatin1String("EventWaveformPath"),
-                    QLatin1String("EventWaveformUseVolumeEnvelope"),
-                    QLatin1String("EventWaveformLoopEnabled")}))
-        return false;
+    ignoreUnknownKeys(event, pointer,
+                      {QLatin1String("Time"), QLatin1String("EventType"),
+                       QLatin1String("EventDuration"), QLatin1String("EventParameters"),
+                       QLatin1String("EventWaveformPath"),
+                       QLatin1String("EventWaveformUseVolumeEnvelope"),
+                       QLatin1String("EventWaveformLoopEnabled")},
+                      m_warnings);
     double time = 0.0;
     QString type;
     if (!nonNegative(event, pointer, QLatin1String("Time"), &time, true) ||
@@ -185,8 +198,10 @@ bool AhapReader::readEvent(const QJsonObject &event, const QString &pointer)
         shape.append(time + duration, 0.0);
     }
     m_events.push_back(std::move(shape));
-    m_sharpnessSum += p.sharpness * p.intensity * duration;
-    m_sharpnessWeight += p.intensity * duration;
+    if (p.sharpness >= 0.0) {
+        m_sharpnessSum += p.sharpness * p.intensity * duration;
+        m_sharpnessWeight += p.intensity * duration;
+    }
     return true;
 }
 
@@ -205,9 +220,10 @@ bool AhapReader::readParameters(const QJsonObject &event, const QString &pointer
         const QJsonObject parameter = parameters.at(i).toObject();
         QString id;
         double value = 0.0;
-        if (!checkKeys(parameter, item,
-                       {QLatin1String("ParameterID"), QLatin1String("ParameterValue")}) ||
-            !string(parameter, item, QLatin1String("ParameterID"), &id) ||
+        ignoreUnknownKeys(parameter, item,
+                          {QLatin1String("ParameterID"), QLatin1String("ParameterValue")},
+                          m_warnings);
+        if (!string(parameter, item, QLatin1String("ParameterID"), &id) ||
             !number(parameter, item, QLatin1String("ParameterValue"), &value))
             return false;
         const QString valueAt = jsonPointerChild(item, QLatin1String("ParameterValue"));
@@ -240,10 +256,11 @@ bool AhapReader::readCurve(const QJsonObject &curve, const QString &pointer)
     QString id;
     double start = 0.0;
     QJsonArray points;
-    if (!checkKeys(curve, pointer,
-                   {QLatin1String("ParameterID"), QLatin1String("Time"),
-                    QLatin1String("ParameterCurveControlPoints")}) ||
-        !string(curve, pointer, QLatin1String("ParameterID"), &id) ||
+    ignoreUnknownKeys(curve, pointer,
+                      {QLatin1String("ParameterID"), QLatin1String("Time"),
+                       QLatin1String("ParameterCurveControlPoints")},
+                      m_warnings);
+    if (!string(curve, pointer, QLatin1String("ParameterID"), &id) ||
         !nonNegative(curve, pointer, QLatin1String("Time"), &start, true) ||
         !array(curve, pointer, QLatin1String("ParameterCurveControlPoints"), &points))
         return false;
@@ -259,8 +276,9 @@ bool AhapReader::readCurve(const QJsonObject &curve, const QString &pointer)
         const QJsonObject point = points.at(i).toObject();
         double t = 0.0;
         double value = 0.0;
-        if (!checkKeys(point, item, {QLatin1String("Time"), QLatin1String("ParameterValue")}) ||
-            !nonNegative(point, item, QLatin1String("Time"), &t, true) ||
+        ignoreUnknownKeys(point, item, {QLatin1String("Time"), QLatin1String("ParameterValue")},
+                          m_warnings);
+        if (!nonNegative(point, item, QLatin1String("Time"), &t, true) ||
             !number(point, item, QLatin1String("ParameterValue"), &value))
             return false;
         if (!control.curve.isEmpty() && start + t < control.curve.endTime())
@@ -283,10 +301,11 @@ bool AhapReader::readParameter(const QJsonObject &parameter, const QString &poin
     QString id;
     double time = 0.0;
     double value = 0.0;
-    if (!checkKeys(parameter, pointer,
-                   {QLatin1String("ParameterID"), QLatin1String("Time"),
-                    QLatin1String("ParameterValue")}) ||
-        !string(parameter, pointer, QLatin1String("ParameterID"), &id) ||
+    ignoreUnknownKeys(parameter, pointer,
+                      {QLatin1String("ParameterID"), QLatin1String("Time"),
+                       QLatin1String("ParameterValue")},
+                      m_warnings);
+    if (!string(parameter, pointer, QLatin1String("ParameterID"), &id) ||
         !nonNegative(parameter, pointer, QLatin1String("Time"), &time, true) ||
         !number(parameter, pointer, QLatin1String("ParameterValue"), &value))
         return false;
@@ -339,14 +358,16 @@ QJsonObject AhapFormat::write(const HapticTimeline &timeline, const QString &des
     QJsonArray pattern;
     const std::vector<EnvelopePoint> &points = timeline.intensity.points();
     const double end = timeline.intensity.endTime();
-    const double sharpness = std::max(0.0, timeline.sharpness);
-    // Full-intensity continuous events carry the sharpness; the control curves shape them.
-    for (double start = 0.0; !points.empty() && start < end; start += MaxEventDuration) {
-        const QJsonArray parameters{
-            QJsonObject{{QStringLiteral("ParameterID"), QStringLiteral("HapticIntensity")},
-                        {QStringLiteral("ParameterValue"), 1.0}},
+    // Full-intensity continuous events carry the sharpness, when there is one (otherwise the
+    // player's own default stands); the control curves shape them.
+    QJsonArray parameters{
+        QJsonObject{{QStringLiteral("ParameterID"), QStringLiteral("HapticIntensity")},
+                    {QStringLiteral("ParameterValue"), 1.0}}};
+    if (timeline.sharpness >= 0.0)
+        parameters.append(
             QJsonObject{{QStringLiteral("ParameterID"), QStringLiteral("HapticSharpness")},
-                        {QStringLiteral("ParameterValue"), sharpness}}};
+                        {QStringLiteral("ParameterValue"), timeline.sharpness}});
+    for (double start = 0.0; !points.empty() && start < end; start += MaxEventDuration) {
         pattern.append(QJsonObject{
             {QStringLiteral("Event"),
              QJsonObject{

@@ -209,16 +209,16 @@ QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
     QJsonValue attack = envelope;
     QString description =
         QStringLiteral("Imported from %1: its envelope plays once on begin").arg(source);
+    if (timeline.sharpness >= 0)
+        description += QStringLiteral("; sharpness %1").arg(timeline.sharpness, 0, 'g', 3);
     if (timeline.sharpness > 0 && options.modulationLimit > 0) {
         const double freq = timeline.sharpness * options.modulationLimit;
         attack = QJsonObject{{QStringLiteral("type"), QStringLiteral("product")},
                              {QStringLiteral("of"), QJsonArray{envelope, modulation(freq)}}};
-        description += QStringLiteral("; sharpness %1 as a %2 Hz modulation")
-                           .arg(timeline.sharpness, 0, 'g', 3)
-                           .arg(freq, 0, 'g', 3);
+        description += QStringLiteral(" as a %1 Hz modulation").arg(freq, 0, 'g', 3);
     }
     const QString channel = options.channel.isEmpty() ? QStringLiteral("*") : options.channel;
-    return {{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+    QJsonObject pattern{{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
             {QStringLiteral("name"),
              options.name.isEmpty() ? QStringLiteral("imported") : options.name},
             {QStringLiteral("model"), options.model},
@@ -229,6 +229,9 @@ QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
                                     {QStringLiteral("sustain"),
                                      QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
                                                  {QStringLiteral("value"), 0}}}}}}};
+    if (timeline.sharpness >= 0)
+        pattern.insert(QStringLiteral("sharpness"), timeline.sharpness);
+    return pattern;
 }
 
 bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QString &file,
@@ -242,7 +245,10 @@ bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QStrin
             warnings->append(LoadError::at(file, pointer, reason).toString());
     };
 
-    // Take the modulation standing for sharpness off, so the envelope is exported as such.
+    // Take a modulation that stands for sharpness off, so the envelope is exported as such:
+    // when the pattern keeps its sharpness (an import made the modulation from it) or the
+    // export is asked to read one as sharpness.
+    const double kept = pattern.value(QLatin1String("sharpness")).toDouble(-1.0);
     QJsonObject bare = pattern;
     QJsonArray tracks = pattern.value(QLatin1String("tracks")).toArray();
     double freq = 0.0;
@@ -254,13 +260,14 @@ bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QStrin
         }
         tracks[i] = track;
     }
-    if (options.modulationLimit <= 0)
-        bare = pattern; // sharpness is not mapped: the modulation stays in the envelope
-    else
+    if (options.modulationLimit > 0 || kept >= 0)
         bare.insert(QStringLiteral("tracks"), tracks);
-    timeline->sharpness = options.modulationLimit > 0 && freq > 0
-                              ? std::min(1.0, freq / options.modulationLimit)
-                              : -1.0;
+    if (kept >= 0)
+        timeline->sharpness = kept;
+    else if (options.modulationLimit > 0 && freq > 0)
+        timeline->sharpness = std::min(1.0, freq / options.modulationLimit);
+    else
+        timeline->sharpness = -1.0;
     const PatternPtr parsed = Pattern::fromJson(bare, file, error);
     if (!parsed)
         return false;

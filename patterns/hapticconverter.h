@@ -26,7 +26,11 @@ struct ConvertOptions
      * Export: the channel whose tracks are written (empty: every track, the loudest wins).
      */
     QString channel;
-    /** Modulation frequency (Hz) that sharpness 1 maps to; 0 leaves sharpness unmapped. */
+    /**
+     * Only when asked (`--modulate`): the frequency (Hz) of an amplitude modulation that
+     * sharpness 1 maps to, so a device without a carrier of its own feels sharpness as a
+     * buzz. 0, the default: the envelope is left as it is and sharpness only kept.
+     */
     double modulationLimit = 0.0;
     /** Export: when the pattern ends (s); < 0: after the attack, plus 1 s of a live sustain. */
     double releaseAt = -1.0;
@@ -38,8 +42,9 @@ struct ConvertOptions
 /**
  * Converts between semhap patterns and the haptic files users already have (AHAP and
  * `.haptic`). An imported file becomes a one-shot pattern: its envelope is the attack (as
- * keyframes), its sharpness an amplitude modulation; an exported pattern is rendered from a
- * begin to an end and written as an envelope. What does not map is listed as warnings.
+ * keyframes), its sharpness the pattern's `sharpness` (and, if asked, an amplitude
+ * modulation); an exported pattern is rendered from a begin to an end and written as an
+ * envelope with that sharpness. What does not map is listed as warnings.
  */
 class HapticConverter
 {

@@ -56,6 +56,20 @@ bool JsonReader::checkKeys(const QJsonObject &object, const QString &pointer,
     return true;
 }
 
+void JsonReader::ignoreUnknownKeys(const QJsonObject &object, const QString &pointer,
+                                   std::initializer_list<QLatin1String> known,
+                                   QStringList *warnings) const
+{
+    if (!warnings)
+        return;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (std::find(known.begin(), known.end(), it.key()) == known.end())
+            warnings->append(LoadError::at(m_file, jsonPointerChild(pointer, it.key()),
+                                           QStringLiteral("ignored: unknown key"))
+                                 .toString());
+    }
+}
+
 bool JsonReader::require(const QJsonObject &object, const QString &pointer, QLatin1String key)
 {
     if (object.contains(key))

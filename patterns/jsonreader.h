@@ -8,6 +8,7 @@
 #include <QJsonValue>
 #include <QLatin1String>
 #include <QString>
+#include <QStringList>
 
 #include <initializer_list>
 
@@ -30,6 +31,13 @@ public:
     /** Fails on the first key of `object` that is not in `allowed`, catching typos. */
     bool checkKeys(const QJsonObject &object, const QString &pointer,
                    std::initializer_list<QLatin1String> allowed);
+    /**
+     * For formats that grow (AHAP, `.haptic`): appends `FILE: /pointer/KEY: ignored: unknown
+     * key` to `warnings` (when given) for each key of `object` not in `known`; never fails.
+     */
+    void ignoreUnknownKeys(const QJsonObject &object, const QString &pointer,
+                           std::initializer_list<QLatin1String> known,
+                           QStringList *warnings) const;
     /** Fails unless `object` has `key`. */
     bool require(const QJsonObject &object, const QString &pointer, QLatin1String key);
     /** Reads a finite JSON number. */

@@ -21,16 +21,6 @@ public:
     bool read(const QJsonObject &json, HapticTimeline *timeline);
 
 private:
-    void warnUnknown(const QJsonObject &object, const QString &pointer,
-                     std::initializer_list<QLatin1String> known)
-    {
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            if (m_warnings && std::find(known.begin(), known.end(), it.key()) == known.end())
-                m_warnings->append(LoadError::at(m_file, jsonPointerChild(pointer, it.key()),
-                                                 QStringLiteral("ignored: unknown key"))
-                                       .toString());
-        }
-    }
     /** Reads `[{time, KEY}, …]`, times not decreasing, values in [0, 1]. */
     bool readEnvelope(const QJsonArray &points, const QString &pointer, QLatin1String key,
                       EnvelopeCurve *curve, EnvelopeCurve *emphasis);
@@ -54,8 +44,9 @@ bool MetaHapticReader::unitKey(const QJsonObject &object, const QString &pointer
 
 bool MetaHapticReader::read(const QJsonObject &json, HapticTimeline *timeline)
 {
-    warnUnknown(json, QString(),
-                {QLatin1String("version"), QLatin1String("metadata"), QLatin1String("signals")});
+    ignoreUnknownKeys(json, QString(),
+                      {QLatin1String("version"), QLatin1String("metadata"), QLatin1String("signals")},
+                      m_warnings);
     QJsonObject version;
     QJsonObject signalsObject;
     QJsonObject continuous;
@@ -72,8 +63,13 @@ bool MetaHapticReader::read(const QJsonObject &json, HapticTimeline *timeline)
         !array(envelopes, envelopesAt, QLatin1String("amplitude"), &amplitude) ||
         !array(envelopes, envelopesAt, QLatin1String("frequency"), &frequency, false))
         return false;
-    warnUnknown(signalsObject, signalsAt, {QLatin1String("continuous")});
-    warnUnknown(envelopes, envelopesAt, {QLatin1String("amplitude"), QLatin1String("frequency")});
+    ignoreUnknownKeys(signalsObject, signalsAt, {QLatin1String("continuous")}, m_warnings);
+    ignoreUnknownKeys(continuous, continuousAt, {QLatin1String("envelopes")}, m_warnings);
+    ignoreUnknownKeys(envelopes, envelopesAt,
+                      {QLatin1String("amplitude"), QLatin1String("frequency")}, m_warnings);
+    ignoreUnknownKeys(version, QStringLiteral("/version"),
+                      {QLatin1String("major"), QLatin1String("minor"), QLatin1String("patch")},
+                      m_warnings);
     double major = 0.0;
     if (!number(version, QStringLiteral("/version"), QLatin1String("major"), &major))
         return false;
@@ -127,12 +123,11 @@ bool MetaHapticReader::readEnvelope(const QJsonArray &points, const QString &poi
         const QJsonObject point = points.at(i).toObject();
         double t = 0.0;
         double value = 0.0;
-        if (emphasis) {
-            if (!checkKeys(point, item, {QLatin1String("time"), key, QLatin1String("emphasis")}))
-                return false;
-        } else if (!checkKeys(point, item, {QLatin1String("time"), key})) {
-            return false;
-        }
+        if (emphasis)
+            ignoreUnknownKeys(point, item, {QLatin1String("time"), key, QLatin1String("emphasis")},
+                              m_warnings);
+        else
+            ignoreUnknownKeys(point, item, {QLatin1String("time"), key}, m_warnings);
         if (!number(point, item, QLatin1String("time"), &t) || !unitKey(point, item, key, &value))
             return false;
         if (t < 0.0)
@@ -150,9 +145,9 @@ bool MetaHapticReader::readEnvelope(const QJsonArray &points, const QString &poi
         const QString accentAt = jsonPointerChild(item, QLatin1String("emphasis"));
         double strength = 0.0;
         double accentFrequency = 0.0;
-        if (!checkKeys(accent, accentAt,
-                       {QLatin1String("amplitude"), QLatin1String("frequency")}) ||
-            !unitKey(accent, accentAt, QLatin1String("amplitude"), &strength) ||
+        ignoreUnknownKeys(accent, accentAt, {QLatin1String("amplitude"), QLatin1String("frequency")},
+                          m_warnings);
+        if (!unitKey(accent, accentAt, QLatin1String("amplitude"), &strength) ||
             !unitKey(accent, accentAt, QLatin1String("frequency"), &accentFrequency))
             return false;
         if (!emphasis->isEmpty() && t < emphasis->endTime())

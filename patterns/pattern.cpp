@@ -124,10 +124,22 @@ std::shared_ptr<const Pattern> Pattern::fromJson(const QJsonObject &json, const 
 
     if (!checkFormat(json, file, QLatin1String(Format), error))
         return nullptr;
+    const QLatin1String sharpnessKey("sharpness");
     if (!parser.checkKeys(json, root,
                           {formatKey, QLatin1String("name"), QLatin1String("model"),
-                           descriptionKey, QLatin1String("params"), tracksKey})) {
+                           descriptionKey, sharpnessKey, QLatin1String("params"), tracksKey})) {
         return failed();
+    }
+    if (json.contains(sharpnessKey)) {
+        double sharpness = 0.0;
+        if (!parser.JsonReader::number(json, root, sharpnessKey, &sharpness))
+            return failed();
+        if (!(sharpness >= 0.0 && sharpness <= 1.0)) {
+            parser.fail(jsonPointerChild(root, sharpnessKey),
+                        QStringLiteral("must be within [0, 1], got %1").arg(sharpness));
+            return failed();
+        }
+        pattern->m_sharpness = sharpness;
     }
     if (!parser.nonEmptyString(json, root, QLatin1String("name"), &pattern->m_name) ||
         !parser.nonEmptyString(json, root, QLatin1String("model"), &pattern->m_model)) {
@@ -204,6 +216,8 @@ QJsonObject Pattern::toJson() const
                      {QStringLiteral("model"), m_model}};
     if (!m_description.isEmpty())
         json.insert(QStringLiteral("description"), m_description);
+    if (m_sharpness >= 0.0)
+        json.insert(QStringLiteral("sharpness"), m_sharpness);
     if (!params.isEmpty())
         json.insert(QStringLiteral("params"), params);
     json.insert(QStringLiteral("tracks"), tracks);

@@ -50,6 +50,12 @@ public:
     const QString &name() const { return m_name; }
     const QString &description() const { return m_description; }
     const QString &model() const { return m_model; }
+    /**
+     * The feel of the carrier, 0 (dull) … 1 (crisp), as AHAP sharpness and `.haptic`
+     * frequency give it; < 0 when the pattern says nothing. It does not shape the envelope:
+     * a device with a carrier of its own to set plays it, the others keep it for export.
+     */
+    double sharpness() const { return m_sharpness; }
     const ParamTable &params() const { return m_params; }
     const std::vector<PatternTrack> &tracks() const { return m_tracks; }
     int stateSize() const { return m_stateSize; }
@@ -58,6 +64,7 @@ private:
     QString m_name;
     QString m_description;
     QString m_model;
+    double m_sharpness = -1.0;
     ParamTable m_params;
     std::vector<PatternTrack> m_tracks;
     int m_stateSize = 0;

@@ -543,11 +543,9 @@ bool WaveformDesigner::openFile(const QString &path, QString *error)
     QStringList warnings;
     QJsonObject json;
     ConvertOptions options;
-    const DeviceModelPtr model = previewModel();
-    if (model) {
+    // The file's envelope as it is; its sharpness is kept with the pattern.
+    if (const DeviceModelPtr model = previewModel())
         options.model = model->name();
-        options.modulationLimit = model->modulationLimit();
-    }
     if (!HapticConverter::formatOf(path, &format, &loadError) ||
         !HapticConverter::readPattern(path, options, &json, &warnings, &loadError)) {
         *error = loadError.toString();
@@ -587,8 +585,6 @@ bool WaveformDesigner::saveFile(const QString &path, QString *error)
         return true;
     }
     ConvertOptions options;
-    const DeviceModelPtr model = previewModel();
-    options.modulationLimit = model ? model->modulationLimit() : 0.0;
     if (!m_hold->isChecked())
         options.releaseAt = m_endAt->value();
     QStringList warnings;

@@ -103,6 +103,8 @@ private slots:
     void roundTrip();
     void patternToAhap();
     void modulationMarksSharpness();
+    void compatibilityCorpus_data();
+    void compatibilityCorpus();
     void warnings();
     void malformed_data();
     void malformed();
@@ -230,15 +232,109 @@ void TestConvert::modulationMarksSharpness()
     QCOMPARE(attack.value(QLatin1String("type")).toString(), QStringLiteral("product"));
     QCOMPARE(attack.value(QLatin1String("of"))[1][QLatin1String("freq")].toDouble(),
              0.5 * Lra4Limit);
-    // Unmapped, the modulation is part of the envelope.
+    QCOMPARE(pattern.value(QLatin1String("sharpness")).toDouble(), 0.5);
+    // The pattern keeps its sharpness: any export takes the modulation off again.
     ConvertOptions plain = lra4Options();
     plain.modulationLimit = 0;
-    HapticTimeline modulated;
+    HapticTimeline exported;
     LoadError error;
-    QVERIFY(HapticConverter::patternToTimeline(pattern, QStringLiteral("p"), plain, &modulated,
+    QVERIFY(HapticConverter::patternToTimeline(pattern, QStringLiteral("p"), plain, &exported,
+                                               nullptr, &error));
+    QCOMPARE(exported.sharpness, 0.5);
+    QVERIFY(maxDifference(exported.intensity, timeline.intensity) < 0.01);
+    // A pattern of one's own with such an oscillation and no sharpness: unless the export
+    // is asked to read it as sharpness, the oscillation is part of the envelope.
+    QJsonObject own = pattern;
+    own.remove(QLatin1String("sharpness"));
+    HapticTimeline modulated;
+    QVERIFY(HapticConverter::patternToTimeline(own, QStringLiteral("p"), plain, &modulated,
                                                nullptr, &error));
     QVERIFY(modulated.sharpness < 0);
     QVERIFY(maxDifference(modulated.intensity, timeline.intensity) > 0.3);
+    QVERIFY(HapticConverter::patternToTimeline(own, QStringLiteral("p"), lra4Options(),
+                                               &modulated, nullptr, &error));
+    QCOMPARE(modulated.sharpness, 0.5);
+}
+
+using Samples = QList<QPair<double, double>>;
+
+void TestConvert::compatibilityCorpus_data()
+{
+    // Files of our own that use every field the formats' public documentation describes
+    // (Apple's "Representing Haptic Patterns in AHAP Files", Meta Haptics Studio's .haptic),
+    // with what each must import as, by the default options: envelopes as they are.
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<int>("warnings");
+    QTest::addColumn<double>("sharpness"); // < 0: none
+    QTest::addColumn<Samples>("samples");  // (t, intensity)
+    QTest::newRow("AHAP transient, sustained and decaying events")
+        << "transient-and-continuous.ahap" << 0 << (0.4 * 0.8 * 0.025 + 0.6 * 0.6 * 0.5) /
+                                                       (0.8 * 0.025 + 0.6 * 0.5)
+        << Samples{{0.01, 0.8}, {0.15, 0.3}, {0.3, 0.6}, {0.5, 0.3}, {0.9, 0.5}, {1.1, 0.0}};
+    QTest::newRow("AHAP dynamic parameters and curves")
+        << "parameters.ahap" << 5 << 0.5
+        << Samples{{0.2, 0.6}, {0.45, 0.2}, {0.75, 0.5}, {0.99, 0.5}};
+    QTest::newRow("AHAP audio beside a tap")
+        << "audio.ahap" << 6 << -1.0 << Samples{{0.3, 0.0}, {0.51, 0.5}, {0.6, 0.0}};
+    QTest::newRow("AHAP without sharpness")
+        << "no-sharpness.ahap" << 0 << -1.0 << Samples{{0.5, 0.5}, {1.0, 1.0}, {1.5, 0.5}};
+    QTest::newRow("AHAP with keys from the future")
+        << "forward-compatible.ahap" << 6 << 0.3 << Samples{{0.5, 0.6}, {0.99, 0.404}};
+    QTest::newRow(".haptic with every field")
+        << "full.haptic" << 0 << 0.3357168784
+        << Samples{{0.05, 0.5}, {0.11, 1.0}, {0.3, 0.7}, {0.75, 0.2}};
+    QTest::newRow(".haptic amplitude only")
+        << "amplitude-only.haptic" << 0 << -1.0 << Samples{{0.25, 0.55}, {0.75, 0.55}};
+    QTest::newRow(".haptic with keys from the future")
+        << "forward-compatible.haptic" << 8 << 0.5
+        << Samples{{0.1, 0.75}, {0.21, 0.975}, {0.4, 0.5}};
+}
+
+void TestConvert::compatibilityCorpus()
+{
+    QFETCH(QString, file);
+    QFETCH(int, warnings);
+    QFETCH(double, sharpness);
+    QFETCH(Samples, samples);
+    const QString path = Data + QStringLiteral("/compat/") + file;
+    ConvertOptions options; // the defaults: no modulation
+    QJsonObject pattern;
+    QStringList said;
+    LoadError error;
+    QVERIFY2(HapticConverter::readPattern(path, options, &pattern, &said, &error),
+             qPrintable(error.toString()));
+    QVERIFY2(said.size() == warnings, qPrintable(said.join(QLatin1Char('\n'))));
+    for (const QString &warning : said)
+        QVERIFY2(warning.startsWith(path + QStringLiteral(": /")), qPrintable(warning));
+    QVERIFY2(Pattern::fromJson(pattern, path, &error), qPrintable(error.toString()));
+    // A file that says nothing of sharpness has none; one that does keeps it, and neither
+    // has its envelope chopped by it.
+    QCOMPARE(pattern.contains(QLatin1String("sharpness")), sharpness >= 0);
+    if (sharpness >= 0)
+        QVERIFY(std::abs(pattern.value(QLatin1String("sharpness")).toDouble() - sharpness) < 1e-6);
+    const QJsonObject attack =
+        pattern.value(QLatin1String("tracks"))[0].toObject().value(QLatin1String("attack")).toObject();
+    QCOMPARE(attack.value(QLatin1String("type")).toString(), QStringLiteral("keyframes"));
+
+    // The envelope, sampled.
+    HapticTimeline imported;
+    QVERIFY(HapticConverter::patternToTimeline(pattern, path, options, &imported, nullptr, &error));
+    for (const auto &[t, v] : samples)
+        QVERIFY2(std::abs(imported.intensity.value(t) - v) < 0.002,
+                 qPrintable(QStringLiteral("at %1 s: %2, expected %3")
+                                .arg(t)
+                                .arg(imported.intensity.value(t))
+                                .arg(v)));
+
+    // Round trip through the same format: envelope and sharpness come back.
+    const bool ahap = file.endsWith(QStringLiteral(".ahap"));
+    const QJsonObject written = ahap ? AhapFormat::write(imported, QStringLiteral("again"))
+                                     : MetaHapticFormat::write(imported, QStringLiteral("again"));
+    const HapticTimeline back = readTimeline(written, ahap);
+    QVERIFY(maxDifference(imported.intensity, back.intensity) < 0.01);
+    QCOMPARE(back.sharpness < 0, sharpness < 0);
+    if (sharpness >= 0)
+        QVERIFY(std::abs(back.sharpness - imported.sharpness) < 1e-9);
 }
 
 void TestConvert::warnings()
@@ -276,11 +372,17 @@ void TestConvert::malformed_data()
     QTest::newRow("ahap pattern type") << "x.ahap" << QByteArray(R"({"Pattern": {}})")
                                        << "x.ahap: /Pattern: expected an array, got an object";
     QTest::newRow("ahap entry") << "x.ahap" << QByteArray(R"({"Pattern": [{"Evnt": {}}]})")
-                                << "x.ahap: /Pattern/0: unknown entry 'Evnt' (expected 'Event', "
-                                   "'ParameterCurve' or 'Parameter')";
+                                << "x.ahap: /Pattern/0: expected one of 'Event', "
+                                   "'ParameterCurve' or 'Parameter', got 'Evnt'";
+    QTest::newRow("ahap misspelt curves")
+        << "x.ahap"
+        << QByteArray(R"({"Pattern": [{"ParameterCurves": {"ParameterID": "HapticIntensityControl",
+           "Time": 0, "ParameterCurveControlPoints": [{"Time": 0, "ParameterValue": 1}]}}]})")
+        << "x.ahap: /Pattern/0: expected one of 'Event', 'ParameterCurve' or 'Parameter', got "
+           "'ParameterCurves'";
     QTest::newRow("ahap two entries")
         << "x.ahap" << QByteArray(R"({"Pattern": [{"Event": {}, "Parameter": {}}]})")
-        << "x.ahap: /Pattern/0: expected exactly one of 'Event', 'ParameterCurve' or 'Parameter'";
+        << "x.ahap: /Pattern/0: holds both 'Event' and 'Parameter'; an element is one of them";
     QTest::newRow("ahap event type")
         << "x.ahap" << QByteArray(R"({"Pattern": [{"Event": {"Time": 0, "EventType": "Buzz"}}]})")
         << "x.ahap: /Pattern/0/Event/EventType: unknown event type 'Buzz' (expected "
@@ -300,7 +402,7 @@ void TestConvert::malformed_data()
         << "x.ahap: /Pattern/0/Event/EventParameters/0/ParameterValue: must be within [0, 1], "
            "got 1.5";
     QTest::newRow("ahap typo") << "x.ahap" << QByteArray(R"({"Pattern": [{"Event": {"Tme": 0}}]})")
-                               << "x.ahap: /Pattern/0/Event: unknown key 'Tme'";
+                               << "x.ahap: /Pattern/0/Event: missing key 'Time'";
     QTest::newRow("ahap curve order")
         << "x.ahap" << QByteArray(R"({"Pattern": [{"ParameterCurve": {"ParameterID":
            "HapticIntensityControl", "Time": 0, "ParameterCurveControlPoints": [
