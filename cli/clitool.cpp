@@ -2,6 +2,7 @@
 #include "clitool.h"
 
 #include "comparecommand.h"
+#include "semhaprevision.h"
 #include "convertcommand.h"
 #include "devicescommand.h"
 #include "emulatecommand.h"
@@ -84,7 +85,7 @@ int CliTool::run(const QStringList &arguments)
         return ExitOk;
     }
     if (first == QLatin1String("--version")) {
-        m_io.out->write(QByteArrayLiteral("semhap " SEMHAP_VERSION "\n"));
+        m_io.out->write(QByteArrayLiteral("semhap " SEMHAP_VERSION " (" SEMHAP_REVISION ")\n"));
         return ExitOk;
     }
     std::unique_ptr<Command> command = makeCommand(first);

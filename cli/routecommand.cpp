@@ -7,6 +7,7 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "pipeline.h"
+#include "routergraph.h"
 #include "quitsignal.h"
 #include "streamsink.h"
 
@@ -24,7 +25,8 @@ QString RouteCommand::summary() const
 void RouteCommand::configure(QCommandLineParser &parser)
 {
     parser.addOption({QStringLiteral("router"),
-                      tr("Router preset (none, visual, sensory, C1-C4) or router file."),
+                      tr("Router preset (%1) or router file.")
+                          .arg(RouterPresets::names().join(QStringLiteral(", "))),
                       tr("PRESET|FILE")});
     parser.addOption({QStringLiteral("frames"),
                       tr("Contact frames to read (JSON Lines), or - for standard input."),

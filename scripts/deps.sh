@@ -14,6 +14,8 @@ packages=(
     libgsl-dev
     # GUI tests and screenshots without a display
     xvfb xauth libgl1-mesa-dri
+    # the desktop package: man pages, metadata checks, .deb dependencies
+    help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )
 
 missing=()

@@ -6,7 +6,9 @@
 #  2. the sanitizer build (clang, ASan + UBSan) of the core, patterns and devices tests, and
 #     each libFuzzer target for a capped number of runs on its seed corpus, each input
 #     within 10 s;
-#  3. the exported CMake package: an outside project's Qt Test against the installed core.
+#  3. the Debian package (scripts/package.sh): built, validated, run from its extracted tree
+#     and installed with apt;
+#  4. the exported CMake package: an outside project's Qt Test against the installed core.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -42,6 +44,9 @@ for fuzzer in "$root"/build-asan/tests/fuzz/fuzz_*; do
         "$work" 2>&1 | tail -n 1
     rm -rf "$work"
 done
+
+echo "== desktop package"
+"$root/scripts/package.sh" "$root/build"
 
 echo "== exported package"
 stage="$root/build/stage"

@@ -2,6 +2,7 @@
 // semhap-studio: the GUI. Everything lives in the semhap_studio library; this only reads
 // the command line and starts it.
 #include "quitsignal.h"
+#include "semhaprevision.h"
 #include "studio.h"
 
 #include <QApplication>
@@ -22,7 +23,9 @@ int main(int argc, char *argv[])
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("semhap"));
     QApplication::setApplicationName(QStringLiteral("semhap-studio"));
-    QApplication::setApplicationVersion(QStringLiteral(SEMHAP_VERSION));
+    QApplication::setApplicationVersion(QStringLiteral(SEMHAP_VERSION " (" SEMHAP_REVISION ")"));
+    // Desktops find the window's icon and name through the installed desktop entry.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.semhap.studio"));
 
     semhap::StudioOptions options;
     QString message;
