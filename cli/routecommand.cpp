@@ -81,11 +81,11 @@ int RouteCommand::execute(const QCommandLineParser &parser)
                      &usage))
         return usage ? usageError(message) : inputError(message);
     const bool realTime = !devices.boundNames().isEmpty();
-    if (realTime) {
-        // A signal stops the bands at once and ends the loop, which closes the outputs.
-        EmergencyStop::installGraceful();
+    // A signal stops the bands at once and ends the loop, so the outputs are handed over
+    // with what was routed (a stream from a pipe may never end by itself).
+    EmergencyStop::installGraceful();
+    if (realTime)
         devices.armAll(true);
-    }
 
     ContactFrameReader reader(frames, framesPath);
     if (!maxGapOption(parser, &reader.parser()))
@@ -99,7 +99,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     double t0 = 0.0;
     bool first = true;
     ContactFrame frame;
-    while (!(realTime && QuitSignal::requested()) && reader.next(&frame)) {
+    while (!QuitSignal::requested() && reader.next(&frame)) {
         // Bound bands feel the session as it happened: wait for each frame's time.
         if (realTime) {
             if (first) {
@@ -117,6 +117,10 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     }
     pipeline.flush(sink);
     devices.stopAll();
+    if (QuitSignal::requested())
+        report(tr("%1: interrupted after t = %2 s; the outputs hold what was routed")
+                   .arg(framesPath)
+                   .arg(pipeline.now()));
 
     if (reader.rejectedCount() > 0)
         report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount()).arg(framesPath));

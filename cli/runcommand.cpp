@@ -6,6 +6,7 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "jsonlineswriter.h"
+#include "quitsignal.h"
 #include "sessionwriter.h"
 #include "simrun.h"
 
@@ -207,10 +208,11 @@ int RunCommand::execute(const QCommandLineParser &parser)
     }
     StreamWriter writer(*run, devices[1], devices[2], devices[3], session.get());
     const bool bound = !bands.boundNames().isEmpty();
-    if (bound) {
-        EmergencyStop::install();
+    // A signal stops the bands at once and ends the run, which still closes the session and
+    // hands the outputs over with what was simulated.
+    EmergencyStop::installGraceful();
+    if (bound)
         bands.armAll(true);
-    }
     DeviceOutputSink output(run->pipeline().router().player(), bands, &writer);
     BoundSink sink(output, writer);
 
@@ -219,7 +221,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     wall.start();
     qint64 lastDraw = -1000;
     const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound;
-    while (run->step(sink)) {
+    while (!QuitSignal::requested() && run->step(sink)) {
         if (const OutputFile *failed = failedOutput()) {
             bands.stopAll();
             return inputError(failed->writeError().toString());
@@ -249,6 +251,10 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (progress)
         m_io.err->write("\r\033[K");
     bands.stopAll();
+    if (QuitSignal::requested())
+        report(tr("run: interrupted at t = %1 s; the session and the outputs hold what was "
+                  "simulated")
+                   .arg(run->time()));
     if (session && !finishSession(*session))
         return ExitInvalidInput;
 

@@ -116,6 +116,7 @@ private slots:
     void inputsMustBeFiles_data();
     void inputsMustBeFiles();
     void sessionKilledAtOnceLeavesNothingBroken();
+    void interruptedRouteKeepsItsOutput();
     void readOnlySessionReplays();
 
 private:
@@ -443,6 +444,28 @@ void TestOutputs::sessionKilledAtOnceLeavesNothingBroken()
             QVERIFY2(again.code == 0, again.err.constData());
         }
     }
+}
+
+void TestOutputs::interruptedRouteKeepsItsOutput()
+{
+    // A stream from a pipe may never end: a signal ends the run and hands the output over
+    // (it is written through a temporary, so a kill would lose it).
+    const QString events = path("interrupted.jsonl");
+    QProcess route;
+    route.start(SEMHAP_CLI_BINARY,
+                {"route", "--router", "C3", "--frames", "-", "--events", events});
+    QVERIFY(route.waitForStarted());
+    QFile trace(Trace);
+    QVERIFY(trace.open(QIODevice::ReadOnly));
+    route.write(trace.readAll());
+    QVERIFY(route.waitForBytesWritten(5000));
+    QThread::msleep(500);
+    route.terminate();    // SIGTERM, as a shell's Ctrl-C ends a whole pipeline
+    route.closeWriteChannel(); // and the producer with it
+    QVERIFY(route.waitForFinished(10000));
+    QCOMPARE(route.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(route.exitCode(), 0);
+    QVERIFY(contents(events).startsWith("{\"t\":"));
 }
 
 void TestOutputs::readOnlySessionReplays()

@@ -8,6 +8,7 @@
 #include <QBuffer>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QHostAddress>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -103,6 +104,7 @@ private slots:
     void listenRefusesJumpsAndStopsOnTime();
     void listenEndsMessagesWhenTheSenderFallsSilent();
     void listenClosesItsSessionOnSigterm();
+    void runClosesItsSessionOnSigterm();
 
 private:
     QTemporaryDir m_dir;
@@ -422,6 +424,31 @@ void TestSessionCli::listenClosesItsSessionOnSigterm()
     QVERIFY2(recorded, qPrintable(error));
     QVERIFY(recorded->info().ended.isValid()); // closed, not abandoned
     QCOMPARE(recorded->contactFrameCount(), qint64(10));
+}
+
+void TestSessionCli::runClosesItsSessionOnSigterm()
+{
+    const QString session = m_dir.filePath("run-terminated.db");
+    const QString frames = m_dir.filePath("run-terminated.jsonl");
+    QProcess run;
+    run.start(SEMHAP_CLI_BINARY, {"run", "--scene", "box_and_block", "--router", "C3",
+                                  "--operator", "scripted", "--duration", "600", "--realtime",
+                                  "--session", session, "--frames", frames});
+    QVERIFY(run.waitForStarted());
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(session), 10000);
+    QThread::msleep(1000);
+    run.terminate();
+    QVERIFY(run.waitForFinished(10000));
+    QCOMPARE(run.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(run.exitCode(), 0);
+    QVERIFY(run.readAllStandardError().contains("run: interrupted at t = "));
+    QString error;
+    std::unique_ptr<SessionReader> recorded = SessionReader::open(session, &error);
+    QVERIFY2(recorded, qPrintable(error));
+    QVERIFY(recorded->info().ended.isValid()); // closed, not abandoned
+    QVERIFY(recorded->endTime() > 0.5);
+    // The frames written through a temporary were handed over too.
+    QVERIFY(contents(frames).startsWith("{\"t\":"));
 }
 
 void TestSessionCli::killedRecordingOpens()
