@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace semhap {
@@ -195,30 +196,16 @@ bool findRepeatedKey(const QByteArray &text, QString *pointer)
             const char c = *p++;
             out += QString::fromUtf8(run);
             run.clear();
-            switch (c) {
-            case 'b':
-                out += QLatin1Char('\b');
-                break;
-            case 'f':
-                out += QLatin1Char('\f');
-                break;
-            case 'n':
-                out += QLatin1Char('\n');
-                break;
-            case 'r':
-                out += QLatin1Char('\r');
-                break;
-            case 't':
-                out += QLatin1Char('\t');
-                break;
-            case 'u':
+            if (c == 'u') {
                 out += QChar(QByteArray(p, 4).toUShort(nullptr, 16));
                 p += 4;
-                break;
-            default:
-                out += QLatin1Char(c);
-                break;
+                continue;
             }
+            // \b \f \n \r \t; the rest (\" \\ \/) stand for themselves.
+            static const char named[] = "bfnrt";
+            static const char meant[] = "\b\f\n\r\t";
+            const char *at = std::strchr(named, c);
+            out += QLatin1Char(at ? meant[at - named] : c);
         }
         ++p; // the closing quote
         return out + QString::fromUtf8(run);

@@ -169,6 +169,12 @@ std::shared_ptr<const Pattern> Pattern::fromJson(const QJsonObject &json, const 
         parser.fail(tracksPointer, QStringLiteral("expected at least one track"));
         return failed();
     }
+    if (array.size() > MaxTracks) {
+        parser.fail(tracksPointer, QStringLiteral("%1 tracks, more than the %2 a pattern may have")
+                                       .arg(array.size())
+                                       .arg(MaxTracks));
+        return failed();
+    }
     pattern->m_tracks.resize(size_t(array.size()));
     for (int i = 0; i < array.size(); ++i) {
         PatternTrack &track = pattern->m_tracks[size_t(i)];

@@ -35,6 +35,8 @@ class Pattern
 {
 public:
     static constexpr const char *Format = "semhap.pattern/1";
+    /** The most tracks a pattern may have: far more than a band has channels to drive. */
+    static constexpr int MaxTracks = 1024;
 
     /**
      * Parses a pattern document. On failure returns null and fills `error` with

@@ -40,32 +40,24 @@ int main(int argc, char *argv[])
         std::printf("  %-34s %9d %10.3f %10.2f\n", what, n, seconds, seconds / n * 1e6);
         std::fflush(stdout);
     };
-    ConvertOptions options;
-    options.model = QStringLiteral("lra4");
-    for (int n = 10000; n <= max; n *= 10) {
-        const QByteArray bytes = largeAhap(n);
-        QJsonObject pattern;
-        QStringList warnings;
-        LoadError error;
-        const Clock::time_point start = Clock::now();
-        const bool ok = HapticConverter::parsePattern(bytes, QStringLiteral("bench.ahap"), options,
-                                                      &pattern, &warnings, &error);
-        row(ok ? "AHAP import (events)" : "AHAP import FAILED", n, secondsSince(start));
-        if (!ok)
-            std::printf("    %s\n", qPrintable(error.toString()));
-    }
-    for (int n = 10000; n <= max; n *= 10) {
-        const QByteArray bytes = largeHaptic(n);
-        QJsonObject pattern;
-        QStringList warnings;
-        LoadError error;
-        const Clock::time_point start = Clock::now();
-        const bool ok = HapticConverter::parsePattern(bytes, QStringLiteral("bench.haptic"),
-                                                      options, &pattern, &warnings, &error);
-        row(ok ? ".haptic import (points)" : ".haptic import FAILED", n, secondsSince(start));
-        if (!ok)
-            std::printf("    %s\n", qPrintable(error.toString()));
-    }
+    const auto imports = [&](const char *what, QByteArray (*generate)(int), const QString &file) {
+        ConvertOptions options;
+        options.model = QStringLiteral("lra4");
+        for (int n = 10000; n <= max; n *= 10) {
+            const QByteArray bytes = generate(n);
+            QJsonObject pattern;
+            QStringList warnings;
+            LoadError error;
+            const Clock::time_point start = Clock::now();
+            const bool ok =
+                HapticConverter::parsePattern(bytes, file, options, &pattern, &warnings, &error);
+            row(what, n, secondsSince(start));
+            if (!ok)
+                std::printf("    FAILED: %s\n", qPrintable(error.toString()));
+        }
+    };
+    imports("AHAP import (events)", largeAhap, QStringLiteral("bench.ahap"));
+    imports(".haptic import (points)", largeHaptic, QStringLiteral("bench.haptic"));
     for (int n = 10000; n <= max; n *= 10) {
         const QJsonObject json = largeRouter(n);
         const Clock::time_point start = Clock::now();

@@ -151,6 +151,13 @@ void TestPattern::errors_data()
     QTest::newRow("a key twice")
         << QByteArray(R"({"format": "semhap.pattern/1", "name": "p", "name": "q"})")
         << "FILE: /name: the key appears twice in its object; which value was meant is unknown";
+    QByteArray tracks;
+    for (int i = 0; i <= Pattern::MaxTracks; ++i)
+        tracks += QByteArray(i ? "," : "") + R"({"channels": ["*"]})";
+    QTest::newRow("too many tracks")
+        << QByteArray(R"({"format": "semhap.pattern/1", "name": "p", "model": "lra4", "tracks": [)" +
+                      tracks + "]}")
+        << "FILE: /tracks: 1025 tracks, more than the 1024 a pattern may have";
     QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: missing key 'format'";
     QTest::newRow("wrong format")
         << QByteArray(R"({"format":"semhap.router/1","name":"p"})")

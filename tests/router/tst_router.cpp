@@ -93,6 +93,7 @@ private slots:
     void graphRoundTrip();
     void invalid_data();
     void invalid();
+    void sessionRouterNamesNoFile();
     void overrides_data();
     void overrides();
     void embeddedPatternAndModel();
@@ -295,6 +296,15 @@ void TestRouter::invalid_data()
         << QJsonObject{{"format", "semhap.router/1"}, {"nodes", nine}, {"links", links}}
         << "r.json: /nodes/9: node 'all' (filter): listens to more than 8 detectors; at most 8 "
            "may feed one node";
+    QJsonArray bands;
+    for (int i = 0; i <= RouterGraph::MaxDevices; ++i)
+        bands.append(QJsonObject{{"id", QString("band%1").arg(i)},
+                                 {"type", "device"},
+                                 {"params", QJsonObject{{"model", "lra4"}}}});
+    QTest::newRow("too many devices")
+        << QJsonObject{{"format", "semhap.router/1"}, {"nodes", bands}}
+        << "r.json: /nodes/256: node 'band256' (device): one device more than the 256 a router "
+           "may drive";
 }
 
 void TestRouter::invalid()
@@ -302,6 +312,23 @@ void TestRouter::invalid()
     QFETCH(QJsonObject, json);
     QFETCH(QString, error);
     QCOMPARE(compileError(json), error);
+}
+
+void TestRouter::sessionRouterNamesNoFile()
+{
+    // A router read back from a session must carry what it uses: a crafted session must not
+    // make replay read another file.
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterGraph::fromJson(
+        object(R"({"format": "semhap.router/1", "nodes": [
+            {"id": "p", "type": "pattern", "params": {"pattern": "/etc/passwd.json"}}]})"),
+        "s.db", &graph, &error));
+    graph.filesAllowed = false;
+    QVERIFY(!Router::compile(graph, &error));
+    QCOMPARE(error.toString(), QString("s.db: /nodes/0/params/pattern: node 'p' (pattern): names "
+                                       "the file '/etc/passwd.json'; this router must carry its "
+                                       "patterns"));
 }
 
 void TestRouter::overrides_data()
