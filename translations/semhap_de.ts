@@ -158,6 +158,10 @@
         <source>--listen: expected a port or ADDRESS:PORT such as 9871 or 0.0.0.0:9871, got &apos;%1&apos;</source>
         <translation>--listen: Port oder ADRESSE:PORT wie 9871 oder 0.0.0.0:9871 erwartet, erhalten: &apos;%1&apos;</translation>
     </message>
+    <message>
+        <source>Reaction time in seconds of the operator and of the person the router&apos;s predict nodes warn.</source>
+        <translation>Reaktionszeit in Sekunden des Bedieners und der Person, die die Predict-Knoten des Routers warnen.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::DevicesPanel</name>
@@ -781,6 +785,13 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>Live rig (UDP)…</source>
         <translation>Live-Rig (UDP)…</translation>
     </message>
+    <message numerus="yes">
+        <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
+        <translation>
+            <numerusform>%n Zeile der Sitzung verletzt die Regeln der Datenströme und wurde übersprungen (semhap replay nennt sie)</numerusform>
+            <numerusform>%n Zeilen der Sitzung verletzen die Regeln der Datenströme und wurden übersprungen (semhap replay nennt sie)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1116,10 +1127,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>Edit %1</source>
         <translation>%1 bearbeiten</translation>
     </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: kann nicht geschrieben werden: %2</translation>
-    </message>
 </context>
 <context>
     <name>semhap::PatternPreview</name>
@@ -1289,10 +1296,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>Cannot write %1</source>
@@ -1604,10 +1607,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>cannot embed %1: %2</source>
         <translation>%1 kann nicht eingebettet werden: %2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>Saved %1</source>

@@ -158,6 +158,10 @@
         <source>--listen: expected a port or ADDRESS:PORT such as 9871 or 0.0.0.0:9871, got &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Reaction time in seconds of the operator and of the person the router&apos;s predict nodes warn.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::DevicesPanel</name>
@@ -780,6 +784,13 @@ The rig draws its own scene.</source>
         <source>Live rig (UDP)…</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1115,10 +1126,6 @@ The rig draws its own scene.</source>
         <source>Edit %1</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>semhap::PatternPreview</name>
@@ -1287,10 +1294,6 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1602,10 +1605,6 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>cannot embed %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -27,6 +27,8 @@
 #include <QLineEdit>
 #include <QSettings>
 #include <QSlider>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -50,6 +52,7 @@ private slots:
     void engineRecordsWhatTheHistorySees();
     void windowRecordsReopensAndScrubs();
     void reroutesThroughTheEditorsRouter();
+    void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
     void cleanupTestCase();
 
@@ -302,6 +305,36 @@ void TestStudioSessions::reroutesThroughTheEditorsRouter()
     QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
     QVERIFY(!replay->isRerouted());
     QCOMPARE(qint64(replay->events().size()), reader->eventCount());
+}
+
+void TestStudioSessions::replaySaysWhichRowsItSkipped()
+{
+    // Rows a program wrote wrong are skipped, and the window says so instead of showing them.
+    qint64 frames = 0;
+    qint64 events = 0;
+    const QString path = recordFromEngine(4.0, &frames, &events);
+    QVERIFY(!path.isEmpty());
+    QVERIFY2(events > 0, "the run must have had a message to damage");
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "damage");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        QSqlQuery query(db);
+        QVERIFY(query.exec("UPDATE contact_frames SET left_f = 'abc' WHERE rowid IN (5, 6)"));
+        QVERIFY(query.exec("UPDATE events SET message = 'shout' WHERE rowid = 1"));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase("damage");
+    MainWindow window(studioOptions());
+    QVERIFY(openWindow(window));
+    QVERIFY(window.openSession(path));
+    QCOMPARE(window.replay()->skippedRows(), qint64(3));
+    QCOMPARE(qint64(window.replay()->events().size()), events - 1);
+    QCOMPARE(window.statusBar()->currentMessage(),
+             QString("3 row(s) of the session break the stream rules and were skipped (semhap "
+                     "replay lists them)"));
+    if (const QByteArray dir = qgetenv("SEMHAP_SCREENSHOTS"); !dir.isEmpty())
+        window.grab().save(QString::fromLocal8Bit(dir) + "/replay-skipped-rows.png");
 }
 
 void TestStudioSessions::windowListensToALiveRig()
