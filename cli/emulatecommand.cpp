@@ -72,7 +72,8 @@ int EmulateCommand::execute(const QCommandLineParser &parser)
     QuitSignal::install();
     m_out << emulator.address() << '\n';
     flushOutputs(); // whoever started it waits for this line
-    emulator.run([] { return QuitSignal::requested(); });
+    if (!emulator.run([] { return QuitSignal::requested(); }))
+        return inputError(emulator.logError());
     return ExitOk;
 }
 

@@ -177,11 +177,13 @@ Emulator::State Emulator::state() const
     return m_state;
 }
 
-void Emulator::run(const std::function<bool()> &quit)
+bool Emulator::run(const std::function<bool()> &quit)
 {
     const double period = 1.0 / m_options.model->rate();
     double nextTick = monotonicSeconds();
     while (!quit()) {
+        if (!m_logError.isEmpty())
+            return false;
         const double now = monotonicSeconds();
         if (now >= nextTick) {
             tick(now);
@@ -194,6 +196,7 @@ void Emulator::run(const std::function<bool()> &quit)
         if (::poll(&fd, 1, ms) > 0 && (fd.revents & POLLIN))
             receive(monotonicSeconds());
     }
+    return true;
 }
 
 void Emulator::receive(double now)
@@ -325,8 +328,12 @@ void Emulator::log(double now)
     QByteArray line = "{\"t\": ";
     JsonLinesWriter::appendNumber(line, now - m_start);
     line += ", \"setpoint\": " + state + "}\n";
-    m_log.write(line);
-    m_log.flush();
+    // Written line by line, for whoever follows the band live; a full disk ends the run.
+    if (m_log.write(line) != line.size() || !m_log.flush()) {
+        m_logError =
+            QStringLiteral("%1: cannot write: %2").arg(m_options.logPath, m_log.errorString());
+        m_log.close();
+    }
 }
 
 } // namespace semhap

@@ -54,8 +54,13 @@ public:
     QString address() const;
     /** The URI a host uses: `serial:LINK-or-PTY` or `udp:HOST:PORT`. */
     QString uri() const;
-    /** Serves until `quit()` returns true (checked at least every tick). */
-    void run(const std::function<bool()> &quit);
+    /**
+     * Serves until `quit()` returns true (checked at least every tick), or until the log
+     * cannot be written: false then, with `LOG: cannot write: reason` in logError().
+     */
+    bool run(const std::function<bool()> &quit);
+    /** Why the log could not be written; empty while it can. */
+    const QString &logError() const { return m_logError; }
     State state() const;
 
 private:
@@ -76,6 +81,7 @@ private:
     FrameDecoder m_decoder;
     std::vector<ResponseFilter> m_filters;
     QFile m_log;
+    QString m_logError;
     QByteArray m_lastLogged;
     double m_start = 0.0;
     double m_lastFrame = -1.0;

@@ -256,6 +256,9 @@ void TestOutputs::fullDisk_data()
                                             path("big.ahap")}
                              << "" << path("big.ahap") + ": cannot write: File too large"
                              << qint64(2000);
+    QTest::newRow("emulate --log")
+        << QStringList{"emulate", "--model", "lra4", "--pty", "--log", full} << ""
+        << full + ": " + nospace << qint64(0);
     QTest::newRow("compare --csv") << QStringList{"compare",    "--scene", "box_and_block",
                                                   "--routers",  "none",    "--operator",
                                                   "scripted",   "--seeds", "1",
