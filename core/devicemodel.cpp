@@ -2,6 +2,7 @@
 #include "devicemodel.h"
 
 #include "deviceframe.h"
+#include "inputfile.h"
 #include "jsonreader.h"
 
 #include <QDir>
@@ -266,9 +267,7 @@ DeviceModelPtr DeviceModelLibrary::builtin(const QString &name)
 
 DeviceModelPtr DeviceModelLibrary::load(const QString &nameOrPath, LoadError *error)
 {
-    const bool isPath =
-        nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json"));
-    if (isPath)
+    if (InputFile::namesFile(nameOrPath))
         return DeviceModel::fromFile(nameOrPath, error);
     if (DeviceModelPtr model = builtin(nameOrPath))
         return model;

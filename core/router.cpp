@@ -30,11 +30,6 @@ constexpr double DefaultSlopeTau = 0.05;
 // node tracks at most ActiveMessages::Capacity of them without allocating.
 constexpr int MaxUpstreamDetectors = ActiveMessages::Capacity / 2;
 
-bool isPath(const QString &nameOrPath)
-{
-    return nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json"));
-}
-
 } // namespace
 
 /** Turns a RouterGraph into a Router, reporting the first problem with node and reason. */
@@ -212,26 +207,10 @@ PatternPtr RouterCompiler::findPattern(int node, const QString &name)
     // Many nodes may play one pattern: each is found or loaded once.
     if (PatternPtr known = m_patterns.value(name))
         return known;
-    if (!isPath(name)) {
-        if (PatternPtr pattern = PatternLibrary::builtin(name))
-            return pattern;
-        failNode(node, QStringLiteral("pattern"),
-                 QStringLiteral("unknown pattern '%1' (built-in: %2)")
-                     .arg(name, PatternLibrary::builtinNames().join(QStringLiteral(", "))));
-        return nullptr;
-    }
-    if (!m_graph.filesAllowed) {
-        failNode(node, QStringLiteral("pattern"),
-                 QStringLiteral("names the file '%1'; this router must carry its patterns")
-                     .arg(name));
-        return nullptr;
-    }
-    const QString path = QDir(m_graph.baseDir).filePath(name);
-    LoadError inner;
-    PatternPtr pattern = Pattern::fromFile(path, &inner);
+    QString reason;
+    PatternPtr pattern = m_graph.pattern(name, &reason);
     if (!pattern)
-        failNode(node, QStringLiteral("pattern"),
-                 QStringLiteral("cannot load pattern: ") + inner.toString());
+        failNode(node, QStringLiteral("pattern"), reason);
     else
         m_patterns.insert(name, pattern);
     return pattern;
@@ -241,19 +220,10 @@ DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
 {
     if (DeviceModelPtr known = m_models.value(name))
         return known;
-    if (isPath(name) && !m_graph.filesAllowed) {
-        failNode(node, QStringLiteral("model"),
-                 QStringLiteral("names the file '%1'; this router must carry its models")
-                     .arg(name));
-        return nullptr;
-    }
-    LoadError inner;
-    DeviceModelPtr model = DeviceModelLibrary::load(
-        isPath(name) ? QDir(m_graph.baseDir).filePath(name) : name, &inner);
+    QString reason;
+    DeviceModelPtr model = m_graph.model(name, &reason);
     if (!model)
-        failNode(node, QStringLiteral("model"),
-                 isPath(name) ? QStringLiteral("cannot load model: ") + inner.toString()
-                              : inner.reason);
+        failNode(node, QStringLiteral("model"), reason);
     else
         m_models.insert(name, model);
     return model;
@@ -340,10 +310,7 @@ bool RouterCompiler::buildPattern(int node)
 
     // Port 0 takes events; one signal input per parameter but intensity, which events set.
     info.inputs = info.type->inputs;
-    for (int p = 0; p < pattern->params().size(); ++p) {
-        if (p != ParamTable::Intensity)
-            info.inputs.push_back({pattern->params().name(p), PortType::Signal, false});
-    }
+    RouterGraph::appendPatternInputs(*pattern, &info.inputs);
     info.inputLinks.assign(info.inputs.size(), 0);
     return true;
 }
@@ -853,35 +820,6 @@ Router::~Router() = default;
 
 namespace {
 
-/**
- * The name under which `item` is embedded in `list`: its own, unless another item of that
- * name is there already (two files may name their patterns alike), then a suffixed one.
- */
-template<typename Ptr, typename Parse>
-QString embed(std::vector<Ptr> &list, const Ptr &item, Parse parse)
-{
-    const QJsonObject json = item->toJson();
-    QString name = item->name();
-    for (int k = 2;; ++k) {
-        const auto same = std::find_if(list.begin(), list.end(),
-                                       [&](const Ptr &p) { return p->name() == name; });
-        if (same == list.end())
-            break;
-        if (*same == item || (*same)->toJson() == json)
-            return name;
-        name = item->name() + QLatin1Char('~') + QString::number(k);
-    }
-    if (name == item->name()) {
-        list.push_back(item);
-        return name;
-    }
-    QJsonObject renamed = json;
-    renamed.insert(QStringLiteral("name"), name);
-    LoadError ignored;
-    list.push_back(parse(renamed, QString(), &ignored));
-    return list.back() ? name : item->name();
-}
-
 } // namespace
 
 RouterGraph Router::selfContained() const
@@ -890,11 +828,9 @@ RouterGraph Router::selfContained() const
     for (size_t i = 0; i < m_sources.size(); ++i) {
         QJsonObject &params = graph.nodes[i].params;
         if (m_sources[i].pattern)
-            params.insert(QStringLiteral("pattern"),
-                          embed(graph.patterns, m_sources[i].pattern, Pattern::fromJson));
+            params.insert(QStringLiteral("pattern"), graph.embedPattern(m_sources[i].pattern));
         if (m_sources[i].model)
-            params.insert(QStringLiteral("model"),
-                          embed(graph.models, m_sources[i].model, DeviceModel::fromJson));
+            params.insert(QStringLiteral("model"), graph.embedModel(m_sources[i].model));
     }
     // Nothing is left to find on disk.
     graph.baseDir.clear();

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "routergraph.h"
 
+#include "inputfile.h"
 #include "jsonreader.h"
+#include "patternlibrary.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSet>
+
+#include <algorithm>
 
 namespace semhap {
 
@@ -105,7 +110,158 @@ bool readLinks(JsonReader &reader, const QJsonArray &links, RouterGraph *graph)
     return true;
 }
 
+/**
+ * The name under which `item` is embedded in `list`: its own, unless another item of that
+ * name is there already, then a suffixed one.
+ */
+template<typename Ptr, typename Parse>
+QString embed(std::vector<Ptr> &list, const Ptr &item, Parse parse)
+{
+    const QJsonObject json = item->toJson();
+    QString name = item->name();
+    for (int k = 2;; ++k) {
+        const auto same = std::find_if(list.begin(), list.end(),
+                                       [&](const Ptr &p) { return p->name() == name; });
+        if (same == list.end())
+            break;
+        if (*same == item || (*same)->toJson() == json)
+            return name;
+        name = item->name() + QLatin1Char('~') + QString::number(k);
+    }
+    if (name == item->name()) {
+        list.push_back(item);
+        return name;
+    }
+    QJsonObject renamed = json;
+    renamed.insert(QStringLiteral("name"), name);
+    LoadError ignored;
+    list.push_back(parse(renamed, QString(), &ignored));
+    return list.back() ? name : item->name();
+}
+
+/** An embedded item named `name`, or null. */
+template<typename Ptr>
+Ptr embedded(const std::vector<Ptr> &list, const QString &name)
+{
+    const auto found =
+        std::find_if(list.begin(), list.end(), [&](const Ptr &p) { return p->name() == name; });
+    return found == list.end() ? Ptr() : *found;
+}
+
 } // namespace
+
+PatternPtr RouterGraph::pattern(const QString &nameOrPath, QString *reason) const
+{
+    if (PatternPtr found = embedded(patterns, nameOrPath))
+        return found;
+    if (!InputFile::namesFile(nameOrPath)) {
+        if (PatternPtr builtin = PatternLibrary::builtin(nameOrPath))
+            return builtin;
+        *reason = QStringLiteral("unknown pattern '%1' (built-in: %2)")
+                      .arg(nameOrPath, PatternLibrary::builtinNames().join(QStringLiteral(", ")));
+        return nullptr;
+    }
+    if (!filesAllowed) {
+        *reason = QStringLiteral("names the file '%1'; this router must carry its patterns")
+                      .arg(nameOrPath);
+        return nullptr;
+    }
+    LoadError error;
+    PatternPtr loaded = Pattern::fromFile(QDir(baseDir).filePath(nameOrPath), &error);
+    if (!loaded)
+        *reason = QStringLiteral("cannot load pattern: ") + error.toString();
+    return loaded;
+}
+
+DeviceModelPtr RouterGraph::model(const QString &nameOrPath, QString *reason) const
+{
+    if (DeviceModelPtr found = embedded(models, nameOrPath))
+        return found;
+    const bool isFile = InputFile::namesFile(nameOrPath);
+    if (isFile && !filesAllowed) {
+        *reason =
+            QStringLiteral("names the file '%1'; this router must carry its models").arg(nameOrPath);
+        return nullptr;
+    }
+    LoadError error;
+    DeviceModelPtr loaded =
+        DeviceModelLibrary::load(isFile ? QDir(baseDir).filePath(nameOrPath) : nameOrPath, &error);
+    if (!loaded)
+        *reason = isFile ? QStringLiteral("cannot load model: ") + error.toString() : error.reason;
+    return loaded;
+}
+
+std::vector<PortSpec> RouterGraph::inputsOf(const RouterNode &node) const
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    if (!type)
+        return {};
+    std::vector<PortSpec> inputs = type->inputs;
+    if (node.type == QLatin1String("pattern")) {
+        QString ignored;
+        const QString played = node.params.value(QLatin1String("pattern")).toString();
+        if (const PatternPtr found = played.isEmpty() ? nullptr : pattern(played, &ignored))
+            appendPatternInputs(*found, &inputs);
+    }
+    return inputs;
+}
+
+void RouterGraph::appendPatternInputs(const Pattern &pattern, std::vector<PortSpec> *inputs)
+{
+    for (int p = 0; p < pattern.params().size(); ++p) {
+        if (p != ParamTable::Intensity)
+            inputs->push_back({pattern.params().name(p), PortType::Signal, false});
+    }
+}
+
+QString RouterGraph::embedPattern(const PatternPtr &pattern)
+{
+    return embed(patterns, pattern, Pattern::fromJson);
+}
+
+QString RouterGraph::embedModel(const DeviceModelPtr &model)
+{
+    return embed(models, model, DeviceModel::fromJson);
+}
+
+bool RouterGraph::embedFiles(LoadError *error)
+{
+    // One file may be named by many nodes: each is read once.
+    QHash<QString, QString> embeddedAs;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        RouterNode &node = nodes[i];
+        const bool isPattern = node.type == QLatin1String("pattern");
+        if (!isPattern && node.type != QLatin1String("device"))
+            continue;
+        const QString key = isPattern ? QStringLiteral("pattern") : QStringLiteral("model");
+        const QString named = node.params.value(key).toString();
+        if (named.isEmpty() || !InputFile::namesFile(named))
+            continue;
+        const QString path = QDir(baseDir).filePath(named);
+        QString as = embeddedAs.value(path);
+        if (as.isEmpty()) {
+            QString reason;
+            if (isPattern) {
+                if (const PatternPtr p = pattern(named, &reason))
+                    as = embedPattern(p);
+            } else if (const DeviceModelPtr m = model(named, &reason)) {
+                as = embedModel(m);
+            }
+            if (as.isEmpty()) {
+                *error = LoadError::at(
+                    file,
+                    jsonPointerChild(jsonPointerChild(QStringLiteral("/nodes"), int(i)) +
+                                         QStringLiteral("/params"),
+                                     key),
+                    QStringLiteral("cannot embed %1: %2").arg(named, reason));
+                return false;
+            }
+            embeddedAs.insert(path, as);
+        }
+        node.params.insert(key, as);
+    }
+    return true;
+}
 
 bool RouterGraph::fromJson(const QJsonObject &json, const QString &file, RouterGraph *graph,
                            LoadError *error)
@@ -284,7 +440,7 @@ bool RouterPresets::preset(const QString &name, RouterGraph *graph, LoadError *e
 
 bool RouterPresets::load(const QString &nameOrPath, RouterGraph *graph, LoadError *error)
 {
-    if (nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json")))
+    if (InputFile::namesFile(nameOrPath))
         return RouterGraph::fromFile(nameOrPath, graph, error);
     return preset(nameOrPath, graph, error);
 }

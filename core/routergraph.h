@@ -4,6 +4,7 @@
 #include "devicemodel.h"
 #include "loaderror.h"
 #include "pattern.h"
+#include "routernodetype.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -57,6 +58,36 @@ public:
 
     /** The index of node `id` in nodes, or -1. */
     int nodeIndex(const QString &id) const;
+
+    /**
+     * The pattern a node's `pattern` parameter names: an embedded one of that name first,
+     * then a built-in, then a file relative to baseDir (when filesAllowed). Null with a
+     * one-sentence `reason`. The compiler, the editor and the plots all ask this.
+     */
+    PatternPtr pattern(const QString &nameOrPath, QString *reason) const;
+    /** The same for a device node's `model`. */
+    DeviceModelPtr model(const QString &nameOrPath, QString *reason) const;
+    /**
+     * A node's input ports as the compiler makes them: its type's, and for a pattern node
+     * one signal input per parameter of its pattern but intensity (which events set).
+     * Empty for an unknown type; a pattern that cannot be found adds none.
+     */
+    std::vector<PortSpec> inputsOf(const RouterNode &node) const;
+    /** The signal inputs a pattern node gets for `pattern`'s parameters. */
+    static void appendPatternInputs(const Pattern &pattern, std::vector<PortSpec> *inputs);
+    /**
+     * Adds `pattern` to the embedded ones and returns the name the nodes must use: its own,
+     * or, when another pattern of that name is embedded already (two files may name their
+     * patterns alike), a suffixed one (`mine~2`). A pattern embedded already keeps its name.
+     */
+    QString embedPattern(const PatternPtr &pattern);
+    QString embedModel(const DeviceModelPtr &model);
+    /**
+     * Embeds every pattern and model file the nodes name, so the document runs the same on
+     * another machine, and points the nodes at them; built-ins stay by name. False with
+     * `NODE: cannot embed FILE: reason`.
+     */
+    bool embedFiles(LoadError *error);
 
     /**
      * Applies `NODE.PARAM=VALUE` (the node id may itself contain dots: the last dot splits).

@@ -74,6 +74,12 @@ bool InputFile::readDocument(const QString &path, QByteArray *bytes, QString *re
     return true;
 }
 
+bool InputFile::namesFile(const QString &nameOrPath, QLatin1String extension)
+{
+    return nameOrPath.contains(QLatin1Char('/')) ||
+           nameOrPath.endsWith(extension, Qt::CaseInsensitive);
+}
+
 bool InputFile::checkStream(const QString &path, QString *reason)
 {
     struct stat info = {};

@@ -22,6 +22,12 @@ public:
     static bool readDocument(const QString &path, QByteArray *bytes, QString *reason);
     /** Whether `path` may be read as a stream (a regular file, a pipe or a FIFO). */
     static bool checkStream(const QString &path, QString *reason);
+    /**
+     * Whether a name given for a pattern, router, device model (`.json`) or scene (`.xml`)
+     * names a file rather than a built-in: it holds a `/` or ends with the extension.
+     */
+    static bool namesFile(const QString &nameOrPath,
+                          QLatin1String extension = QLatin1String(".json"));
 };
 
 } // namespace semhap

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "patternlibrary.h"
 
+#include "inputfile.h"
+
 #include <QDir>
 
 #include <map>
@@ -46,7 +48,7 @@ PatternPtr PatternLibrary::builtin(const QString &name)
 
 PatternPtr PatternLibrary::load(const QString &nameOrPath, LoadError *error)
 {
-    if (nameOrPath.contains(QLatin1Char('/')) || nameOrPath.endsWith(QLatin1String(".json"))) {
+    if (InputFile::namesFile(nameOrPath)) {
         return Pattern::fromFile(nameOrPath, error);
     }
     PatternPtr pattern = builtin(nameOrPath);

@@ -170,8 +170,7 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
     // in parallel, but compile one at a time.
     static std::mutex compiling;
     const std::lock_guard<std::mutex> lock(compiling);
-    const bool isPath = nameOrPath.contains(QLatin1Char('/')) ||
-                        nameOrPath.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
+    const bool isPath = InputFile::namesFile(nameOrPath, QLatin1String(".xml"));
     const QString path =
         isPath ? nameOrPath : QStringLiteral(":/semhap/scenes/%1.xml").arg(nameOrPath);
     QByteArray xml;

@@ -112,11 +112,6 @@ QJsonValue parseValue(const QString &text)
     return trimmed;
 }
 
-bool isPath(const QString &name)
-{
-    return name.contains(QLatin1Char('/')) || name.endsWith(QLatin1String(".json"));
-}
-
 } // namespace
 
 RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
@@ -543,43 +538,12 @@ bool RouterEditor::openFile(const QString &path, QString *error)
 bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *error)
 {
     RouterGraph graph = this->graph();
-    if (selfContained) {
-        // The user's own patterns and models go into the file; built-ins are everywhere.
-        for (RouterNode &node : graph.nodes) {
-            const bool pattern = node.type == QLatin1String("pattern");
-            if (!pattern && node.type != QLatin1String("device"))
-                continue;
-            const QString key = pattern ? QStringLiteral("pattern") : QStringLiteral("model");
-            const QString name = node.params.value(key).toString();
-            if (name.isEmpty() || !isPath(name))
-                continue;
-            const QString file = QDir(graph.baseDir).filePath(name);
-            LoadError loadError;
-            QString embeddedName;
-            if (pattern) {
-                PatternPtr p = Pattern::fromFile(file, &loadError);
-                if (p) {
-                    embeddedName = p->name();
-                    if (std::none_of(graph.patterns.begin(), graph.patterns.end(),
-                                     [&](const PatternPtr &e) { return e->name() == p->name(); }))
-                        graph.patterns.push_back(p);
-                }
-            } else {
-                DeviceModelPtr m = DeviceModel::fromFile(file, &loadError);
-                if (m) {
-                    embeddedName = m->name();
-                    if (std::none_of(
-                            graph.models.begin(), graph.models.end(),
-                            [&](const DeviceModelPtr &e) { return e->name() == m->name(); }))
-                        graph.models.push_back(m);
-                }
-            }
-            if (embeddedName.isEmpty()) {
-                *error = tr("cannot embed %1: %2").arg(name, loadError.toString());
-                return false;
-            }
-            node.params.insert(key, embeddedName);
-        }
+    // The user's own patterns and models go into the file, each under a name of its own;
+    // built-ins are everywhere. The core decides both (RouterGraph::embedFiles).
+    LoadError embedError;
+    if (selfContained && !graph.embedFiles(&embedError)) {
+        *error = embedError.toString();
+        return false;
     }
     LoadError failure;
     if (!OutputFile::write(path, QJsonDocument(graph.toJson()).toJson(QJsonDocument::Indented),
@@ -818,13 +782,8 @@ void RouterEditor::rebuildInspector()
     if (node.type == QLatin1String("pattern")) {
         // A pattern's own parameters may be set on the node: their defaults for this voice.
         const QString name = node.params.value(QLatin1String("pattern")).toString();
-        PatternPtr pattern;
-        for (const PatternPtr &embedded : graph().patterns) {
-            if (embedded->name() == name)
-                pattern = embedded;
-        }
-        if (!pattern && !name.isEmpty() && !isPath(name))
-            pattern = PatternLibrary::builtin(name);
+        QString ignored;
+        const PatternPtr pattern = name.isEmpty() ? nullptr : graph().pattern(name, &ignored);
         for (int p = 0; pattern && p < pattern->params().size(); ++p)
             keys.append(pattern->params().name(p));
     }

@@ -245,31 +245,7 @@ std::vector<int> RouterScene::selectedLinks() const
 
 std::vector<PortSpec> RouterScene::inputsOf(const RouterNode &node) const
 {
-    const RouterNodeType *type = routerNodeType(node.type);
-    if (!type)
-        return {};
-    std::vector<PortSpec> inputs = type->inputs;
-    if (node.type != QLatin1String("pattern"))
-        return inputs;
-    // As the compiler resolves it: embedded by name, then built-in, then a file.
-    const QString name = node.params.value(QLatin1String("pattern")).toString();
-    PatternPtr pattern;
-    for (const PatternPtr &embedded : m_graph.patterns) {
-        if (embedded->name() == name)
-            pattern = embedded;
-    }
-    if (!pattern && !name.isEmpty()) {
-        LoadError error;
-        const bool path = name.contains(QLatin1Char('/')) || name.endsWith(QLatin1String(".json"));
-        pattern = PatternLibrary::load(path ? QDir(m_graph.baseDir).filePath(name) : name, &error);
-    }
-    if (pattern) {
-        for (int p = 0; p < pattern->params().size(); ++p) {
-            if (p != ParamTable::Intensity)
-                inputs.push_back({pattern->params().name(p), PortType::Signal, false});
-        }
-    }
-    return inputs;
+    return m_graph.inputsOf(node);
 }
 
 std::vector<PortSpec> RouterScene::outputsOf(const RouterNode &node) const

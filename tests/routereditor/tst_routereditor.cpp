@@ -214,6 +214,7 @@ private slots:
     void presetsLaidOutInColumns();
     void saveOpenRoundTrip();
     void selfContainedEmbedsUserPatterns();
+    void selfContainedKeepsPatternsOfOneName();
     void offersTheDesignersPatterns();
     void engineSwapsWhileRunning();
     void liveActivityLightsWires();
@@ -516,6 +517,51 @@ void TestRouterEditor::selfContainedEmbedsUserPatterns()
     auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
     QVERIFY(combo);
     QVERIFY(combo->findText("my.warning") >= 0);
+}
+
+void TestRouterEditor::selfContainedKeepsPatternsOfOneName()
+{
+    // Two user files that both call their pattern "mine": the editor used to embed one and
+    // point both nodes at it, so the second node played the first file.
+    QTemporaryDir dir;
+    const auto write = [&](const QString &file, double value) {
+        const QJsonObject pattern{
+            {"format", "semhap.pattern/1"},
+            {"name", "mine"},
+            {"model", "lra4"},
+            {"tracks", QJsonArray{QJsonObject{
+                           {"channels", QJsonArray{"*"}},
+                           {"sustain", QJsonObject{{"type", "const"}, {"value", value}}}}}}};
+        QFile out(dir.filePath(file));
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(pattern).toJson());
+    };
+    write("soft.json", 0.3);
+    write("hard.json", 0.9);
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    f.editor.setParam("right.geiger", "pattern", dir.filePath("soft.json"));
+    f.editor.setParam("left.geiger", "pattern", dir.filePath("hard.json"));
+    QCOMPARE(f.editor.validate(), QStringList());
+    QString error;
+    QVERIFY2(f.editor.saveFile(dir.filePath("portable.json"), true, &error), qPrintable(error));
+
+    RouterGraph loaded;
+    LoadError loadError;
+    QVERIFY(RouterGraph::fromFile(dir.filePath("portable.json"), &loaded, &loadError));
+    QCOMPARE(loaded.patterns.size(), size_t(2));
+    const auto played = [&](const QString &node) {
+        const QString name =
+            loaded.nodes[size_t(loaded.nodeIndex(node))].params.value("pattern").toString();
+        QString reason;
+        const PatternPtr pattern = loaded.pattern(name, &reason);
+        return pattern ? pattern->toJson()["tracks"][0]["sustain"]["value"].toDouble() : -1.0;
+    };
+    QCOMPARE(played("right.geiger"), 0.3);
+    QCOMPARE(played("left.geiger"), 0.9);
+    QCOMPARE(loaded.nodes[size_t(loaded.nodeIndex("left.geiger"))].params.value("pattern"),
+             "mine~2");
+    QVERIFY2(Router::compile(loaded, &loadError), qPrintable(loadError.toString()));
 }
 
 void TestRouterEditor::offersTheDesignersPatterns()
