@@ -8,8 +8,10 @@ set(SEMHAP_PUBLIC_HEADERS
     patterns/patternlibrary.h
     core/contactframe.h core/actortable.h core/semanticevent.h core/deviceframe.h
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h
-    core/slipdetector.h core/contactframereader.h core/jsonlineswriter.h
-    core/devicemodel.h core/routercontext.h core/routergraph.h core/router.h core/player.h
+    core/slipdetector.h core/contactframeparser.h core/contactframereader.h
+    core/jsonlineswriter.h
+    core/devicemodel.h core/routercontext.h core/routergraph.h core/routernodetype.h
+    core/router.h core/player.h
     core/pipeline.h core/statistics.h
     core/patternrender.h)
 

@@ -54,5 +54,5 @@ rm -rf "$stage" "$root/build/package"
 cmake --install "$root/build" --prefix "$stage" >/dev/null
 cmake -S "$root/tests/package" -B "$root/build/package" -G Ninja \
     -DCMAKE_PREFIX_PATH="$stage" >/dev/null
-cmake --build "$root/build/package" >/dev/null
+cmake --build "$root/build/package"
 (cd "$root/build/package" && LD_LIBRARY_PATH="$stage/lib" ctest --output-on-failure)
