@@ -33,6 +33,22 @@ QString futurePath(const QString &path)
                             : folder + QLatin1Char('/') + info.fileName();
 }
 
+/**
+ * The process's umask, read without changing it: umask() can only be read by setting it,
+ * which would race with other threads creating files (the studio's recorder).
+ */
+mode_t processUmask()
+{
+    QFile status(QStringLiteral("/proc/self/status"));
+    if (status.open(QIODevice::ReadOnly)) {
+        for (QByteArray line = status.readLine(); !line.isEmpty(); line = status.readLine()) {
+            if (line.startsWith("Umask:"))
+                return mode_t(line.mid(6).trimmed().toUInt(nullptr, 8));
+        }
+    }
+    return 022; // the usual one, where /proc does not say
+}
+
 /** The file a path writes: a symbolic link's final target, else the path itself. */
 QString resolvedTarget(const QString &path)
 {
@@ -146,11 +162,8 @@ bool OutputFile::open(LoadError *error)
     m_temporary = QFile::decodeName(pattern);
     // The new file gets the old one's permissions, or what a new file would get.
     mode_t mode = info.st_mode & 07777;
-    if (!exists) {
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-        mode = 0666 & ~mask;
-    }
+    if (!exists)
+        mode = 0666 & ~processUmask();
     ::fchmod(m_fd, mode);
     m_writer = std::make_unique<Writer>(*this);
     return true;
