@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "detectorparams.h"
 
-#include <QLocale>
-
 #include <cmath>
 
 namespace semhap {
@@ -23,14 +21,14 @@ bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, Q
     for (auto it = json.begin(); it != json.end(); ++it) {
         bool known = false;
         for (const DetectorParam &param : params)
-            known = known || it.key() == param.key;
+            known = known || it.key() == param.spec.name;
         if (!known)
             return paramError(key, reason, it.key(), QStringLiteral("unknown parameter"));
         if (!it.value().isDouble())
             return paramError(key, reason, it.key(), QStringLiteral("must be a number"));
     }
     for (const DetectorParam &param : params) {
-        const QJsonValue value = json.value(param.key);
+        const QJsonValue value = json.value(param.spec.name);
         if (value.isDouble())
             *param.value = value.toDouble();
     }
@@ -41,22 +39,31 @@ QJsonObject detectorParamsToJson(const DetectorParams &params)
 {
     QJsonObject json;
     for (const DetectorParam &param : params)
-        json.insert(param.key, *param.value);
+        json.insert(param.spec.name, *param.value);
     return json;
 }
 
-bool checkFiniteParams(const DetectorParams &params, QString *key, QString *reason)
+bool checkDetectorParams(const DetectorParams &params, QString *key, QString *reason)
 {
     for (const DetectorParam &param : params) {
         if (!std::isfinite(*param.value))
-            return paramError(key, reason, param.key, QStringLiteral("must be a finite number"));
+            return paramError(key, reason, param.spec.name,
+                              QStringLiteral("must be a finite number"));
+        QString why;
+        if (!param.spec.checkNumber(*param.value, &why))
+            return paramError(key, reason, param.spec.name, why);
     }
     return true;
 }
 
-QString formatNumber(double value)
+std::vector<ParamSpec> detectorParamSpecs(const DetectorParams &params)
 {
-    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+    std::vector<ParamSpec> specs;
+    for (const DetectorParam &param : params) {
+        specs.push_back(param.spec);
+        specs.back().defaultNumber = *param.value;
+    }
+    return specs;
 }
 
 } // namespace semhap

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paramspec.h"
+
 #include <QJsonObject>
 #include <QString>
 
@@ -8,10 +10,10 @@
 
 namespace semhap {
 
-/** One numeric detector parameter: its JSON key and where its value lives. */
+/** One numeric detector parameter: its spec (key, unit, range, help) and where its value lives. */
 struct DetectorParam
 {
-    QLatin1String key;
+    ParamSpec spec; ///< spec.defaultNumber is not used: the value a Params starts with is
     double *value;
 };
 
@@ -28,13 +30,16 @@ bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, Q
 /** Every parameter as a JSON object. */
 QJsonObject detectorParamsToJson(const DetectorParams &params);
 
-/** Checks each value is finite, so validators need not repeat it. False with key and reason. */
-bool checkFiniteParams(const DetectorParams &params, QString *key, QString *reason);
+/**
+ * Checks each value is finite and within its spec's range, so validators check only what
+ * relates parameters to each other. False with key and reason.
+ */
+bool checkDetectorParams(const DetectorParams &params, QString *key, QString *reason);
+
+/** The specs of `params`, each defaulting to its current value (pass a default Params). */
+std::vector<ParamSpec> detectorParamSpecs(const DetectorParams &params);
 
 /** Fills `key` and `reason` (either may be null) and returns false, for one-line rejects. */
 bool paramError(QString *key, QString *reason, const QString &badKey, const QString &why);
-
-/** `value` in its shortest round-trip form, for messages that quote a number. */
-QString formatNumber(double value);
 
 } // namespace semhap

@@ -9,14 +9,34 @@ namespace semhap {
 
 namespace {
 
-// Every parameter's JSON key and field, listed once for reading, writing and checking.
+// Every parameter's spec and field, listed once for reading, writing, checking and editing.
 DetectorParams fields(ForceDetector::Params &p)
 {
-    return {{QLatin1String("grasp"), &p.grasp},
-            {QLatin1String("break"), &p.brk},
-            {QLatin1String("max"), &p.max},
-            {QLatin1String("hysteresis"), &p.hysteresis},
-            {QLatin1String("minDuration"), &p.minDuration}};
+    const QString newtons = QStringLiteral("N");
+    const QString seconds = QStringLiteral("s");
+    return {
+        {ParamSpec::number(QStringLiteral("grasp"), 0, newtons,
+                           QStringLiteral("T_grasp: a grasp is confirmed while the grip force "
+                                          "is above it")),
+         &p.grasp},
+        {ParamSpec::number(QStringLiteral("break"), 0, newtons,
+                           QStringLiteral("T_break: a break is warned of while the grip force "
+                                          "is above it")),
+         &p.brk},
+        {ParamSpec::number(QStringLiteral("max"), 0, newtons,
+                           QStringLiteral("F_max: the force at which the break warning reaches "
+                                          "full intensity")),
+         &p.max},
+        {ParamSpec::number(QStringLiteral("hysteresis"), 0, newtons,
+                           QStringLiteral("An active message holds until the force falls this "
+                                          "far below its threshold"))
+             .atLeast(0),
+         &p.hysteresis},
+        {ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
+                           QStringLiteral("A message begins only after its condition has held "
+                                          "this long"))
+             .atLeast(0),
+         &p.minDuration}};
 }
 
 } // namespace
@@ -24,6 +44,12 @@ DetectorParams fields(ForceDetector::Params &p)
 bool ForceDetector::Params::read(const QJsonObject &json, QString *key, QString *reason)
 {
     return readDetectorParams(json, fields(*this), key, reason);
+}
+
+std::vector<ParamSpec> ForceDetector::Params::specs()
+{
+    Params defaults;
+    return detectorParamSpecs(fields(defaults));
 }
 
 QJsonObject ForceDetector::Params::toJson() const
@@ -35,7 +61,7 @@ QJsonObject ForceDetector::Params::toJson() const
 bool ForceDetector::Params::validate(QString *key, QString *reason) const
 {
     Params copy = *this;
-    if (!checkFiniteParams(fields(copy), key, reason))
+    if (!checkDetectorParams(fields(copy), key, reason))
         return false;
     if (!(grasp < brk)) {
         return paramError(key, reason, QStringLiteral("break"),
@@ -46,16 +72,6 @@ bool ForceDetector::Params::validate(QString *key, QString *reason) const
         return paramError(key, reason, QStringLiteral("max"),
                           QStringLiteral("must be greater than break (%1), got %2")
                               .arg(formatNumber(brk), formatNumber(max)));
-    }
-    if (hysteresis < 0.0) {
-        return paramError(
-            key, reason, QStringLiteral("hysteresis"),
-            QStringLiteral("must not be negative, got %1").arg(formatNumber(hysteresis)));
-    }
-    if (minDuration < 0.0) {
-        return paramError(
-            key, reason, QStringLiteral("minDuration"),
-            QStringLiteral("must not be negative, got %1").arg(formatNumber(minDuration)));
     }
     return true;
 }

@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QHash>
 #include <QJsonArray>
+#include <QSet>
 
 #include <algorithm>
 #include <cmath>
@@ -21,14 +22,8 @@ namespace semhap {
 
 namespace {
 
-// The predict and derivative nodes' smoothing time constant (s): longer than the ring-down of
-// a finger landing on an object (20-35 ms of +-2 N at 2 ms steps, measured in the
-// simulation), so that an impact does not read as a steep ramp.
-constexpr double DefaultSlopeTau = 0.05;
-
-// The most detectors whose messages may meet at one node: each brings two messages and a
-// node tracks at most ActiveMessages::Capacity of them without allocating.
-constexpr int MaxUpstreamDetectors = ActiveMessages::Capacity / 2;
+static_assert(RouterGraph::MaxUpstreamDetectors == ActiveMessages::Capacity / 2,
+              "a node tracks two messages per detector it hears");
 
 } // namespace
 
@@ -52,7 +47,7 @@ private:
         QStringList channels; ///< pattern and proportional nodes: explicit channel list
         DeviceModelPtr model;
         Player::MixPolicy policy = Player::MixPolicy::Priority;
-        Gripper gripper = Gripper::Right;
+        int hand = -1; ///< devices: the Gripper that feels it, -1 for none
     };
     struct ResolvedLink
     {
@@ -67,11 +62,15 @@ private:
     bool failNode(int node, const QString &key, const QString &reason);
     QString nodeLabel(int node) const;
 
-    bool checkParams(int node, const QStringList &known);
-    bool readGripper(int node);
-    bool readNumber(int node, const QString &key, double fallback, double *out);
-    bool readChannels(int node);
-    bool readNames(int node, const QString &key, const QStringList &names, unsigned *bits);
+    /** Checks the node's parameters against `specs`: known, well-formed, required ones given. */
+    bool checkParams(int node, const std::vector<ParamSpec> &specs);
+    /** A checked parameter's value, or its spec's default when absent. */
+    QJsonValue param(int node, const QString &key) const;
+    double number(int node, const QString &key) const;
+    Gripper gripper(int node) const;
+    QStringList channels(int node) const;
+    /** A filter parameter as a bit set over its choices; absent: every bit. */
+    unsigned choiceBits(int node, const QString &key) const;
 
     bool buildNode(int node);
     bool buildDetector(int node);
@@ -126,80 +125,65 @@ bool RouterCompiler::failNode(int node, const QString &key, const QString &reaso
     return fail(pointer, nodeLabel(node) + QStringLiteral(": ") + reason);
 }
 
-bool RouterCompiler::checkParams(int node, const QStringList &known)
+bool RouterCompiler::checkParams(int node, const std::vector<ParamSpec> &specs)
 {
     const QJsonObject &params = m_graph.nodes[size_t(node)].params;
     for (auto it = params.begin(); it != params.end(); ++it) {
-        if (!known.contains(it.key()))
+        const ParamSpec *spec = findParamSpec(specs, it.key());
+        QString reason;
+        if (!spec)
             return failNode(node, it.key(),
                             QStringLiteral("unknown parameter '%1' (known: %2)")
-                                .arg(it.key(), known.join(QStringLiteral(", "))));
+                                .arg(it.key(), paramSpecNames(specs).join(QStringLiteral(", "))));
+        if (!spec->check(it.value(), &reason))
+            return failNode(node, it.key(), reason);
+    }
+    for (const ParamSpec &spec : specs) {
+        if (spec.absent == ParamAbsent::Required && !params.contains(spec.name))
+            return failNode(node, QString(), spec.missingReason());
     }
     return true;
 }
 
-bool RouterCompiler::readGripper(int node)
+QJsonValue RouterCompiler::param(int node, const QString &key) const
 {
-    const QJsonValue v = m_graph.nodes[size_t(node)].params.value(QStringLiteral("gripper"));
-    if (v.isUndefined())
-        return failNode(node, QString(),
-                        QStringLiteral("needs a gripper (\"left\" or "
-                                       "\"right\")"));
-    if (!gripperFromName(v.toString(), &m_info[size_t(node)].gripper))
-        return failNode(node, QStringLiteral("gripper"),
-                        QStringLiteral("must be \"left\" or \"right\""));
-    return true;
+    const QJsonValue value = m_graph.nodes[size_t(node)].params.value(key);
+    if (!value.isUndefined())
+        return value;
+    const ParamSpec *spec = m_info[size_t(node)].type->param(key);
+    return spec ? spec->defaultValue() : value;
 }
 
-bool RouterCompiler::readNumber(int node, const QString &key, double fallback, double *out)
+double RouterCompiler::number(int node, const QString &key) const
 {
-    const QJsonValue v = m_graph.nodes[size_t(node)].params.value(key);
-    *out = fallback;
-    if (v.isUndefined())
-        return true;
-    if (!v.isDouble() || !std::isfinite(v.toDouble()))
-        return failNode(node, key,
-                        QStringLiteral("must be a finite number, found ") + jsonTypeName(v));
-    *out = v.toDouble();
-    return true;
+    return param(node, key).toDouble();
 }
 
-bool RouterCompiler::readChannels(int node)
+Gripper RouterCompiler::gripper(int node) const
 {
-    const QJsonValue v = m_graph.nodes[size_t(node)].params.value(QStringLiteral("channels"));
-    if (v.isUndefined())
-        return true;
-    const QJsonArray array = v.toArray();
-    if (!v.isArray() || array.isEmpty())
-        return failNode(node, QStringLiteral("channels"),
-                        QStringLiteral("must be a non-empty array of channel names"));
-    for (const QJsonValue &channel : array) {
-        if (!channel.isString() || channel.toString().isEmpty())
-            return failNode(node, QStringLiteral("channels"),
-                            QStringLiteral("must be a non-empty array of channel names"));
-        m_info[size_t(node)].channels.append(channel.toString());
-    }
-    return true;
+    Gripper gripper = Gripper::Right;
+    gripperFromName(param(node, QStringLiteral("gripper")).toString(), &gripper);
+    return gripper;
 }
 
-// A name or a list of names, each one of `names`; the result is a bit set over their index.
-bool RouterCompiler::readNames(int node, const QString &key, const QStringList &names,
-                               unsigned *bits)
+QStringList RouterCompiler::channels(int node) const
 {
-    *bits = 0;
-    const QJsonValue v = m_graph.nodes[size_t(node)].params.value(key);
-    if (v.isUndefined())
-        return true;
-    const QJsonArray list = v.isArray() ? v.toArray() : QJsonArray{v};
-    for (const QJsonValue &item : list) {
-        const int index = int(names.indexOf(item.toString()));
-        if (!item.isString() || index < 0)
-            return failNode(node, key,
-                            QStringLiteral("must be one of %1, or a list of them")
-                                .arg(names.join(QStringLiteral(", "))));
-        *bits |= 1u << unsigned(index);
-    }
-    return true;
+    QStringList list;
+    for (const QJsonValue &channel : param(node, QStringLiteral("channels")).toArray())
+        list.append(channel.toString());
+    return list;
+}
+
+unsigned RouterCompiler::choiceBits(int node, const QString &key) const
+{
+    const QJsonValue value = param(node, key);
+    const QStringList &choices = m_info[size_t(node)].type->param(key)->choices;
+    if (value.isUndefined())
+        return 0;
+    unsigned bits = 0;
+    for (const QJsonValue &item : value.isArray() ? value.toArray() : QJsonArray{value})
+        bits |= 1u << unsigned(choices.indexOf(item.toString()));
+    return bits;
 }
 
 PatternPtr RouterCompiler::findPattern(int node, const QString &name)
@@ -232,24 +216,21 @@ DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
 bool RouterCompiler::buildDetector(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
-    if (!readGripper(node))
-        return false;
     QJsonObject params = n.params;
     params.remove(QStringLiteral("gripper"));
     QString key;
     QString reason;
-    const Gripper gripper = m_info[size_t(node)].gripper;
     std::unique_ptr<Detector> detector;
     if (n.type == QLatin1String("force")) {
         ForceDetector::Params p;
         if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
             return failNode(node, key, reason);
-        detector = std::make_unique<ForceDetector>(node, gripper, p);
+        detector = std::make_unique<ForceDetector>(node, gripper(node), p);
     } else {
         SlipDetector::Params p;
         if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
             return failNode(node, key, reason);
-        detector = std::make_unique<SlipDetector>(node, gripper, p);
+        detector = std::make_unique<SlipDetector>(node, gripper(node), p);
     }
     auto runtime = std::make_unique<DetectorNode>(std::move(detector));
     m_router->m_detectors.push_back(runtime.get());
@@ -261,13 +242,22 @@ bool RouterCompiler::buildPattern(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
     NodeInfo &info = m_info[size_t(node)];
-    const QJsonValue name = n.params.value(QStringLiteral("pattern"));
-    if (!name.isString() || name.toString().isEmpty())
-        return failNode(node, QStringLiteral("pattern"),
-                        QStringLiteral("needs a pattern name or file"));
+    // The pattern first: its parameters are the node's too.
+    const ParamSpec &patternSpec = *info.type->param(QStringLiteral("pattern"));
+    const QJsonValue name = n.params.value(patternSpec.name);
+    QString reason;
+    if (name.isUndefined())
+        return failNode(node, QString(), patternSpec.missingReason());
+    if (!patternSpec.check(name, &reason))
+        return failNode(node, patternSpec.name, reason);
     PatternPtr pattern = findPattern(node, name.toString());
-    if (!pattern || !readChannels(node))
+    if (!pattern)
         return false;
+    std::vector<ParamSpec> specs = info.type->params;
+    RouterGraph::appendPatternParams(*pattern, &specs);
+    if (!checkParams(node, specs))
+        return false;
+    info.channels = channels(node);
     m_router->m_sources[size_t(node)].pattern = pattern;
     if (!info.channels.isEmpty() && pattern->tracks().size() != 1)
         return failNode(node, QStringLiteral("channels"),
@@ -282,20 +272,8 @@ bool RouterCompiler::buildPattern(int node)
     QJsonObject defaults = json.value(QStringLiteral("params")).toObject();
     bool overridden = false;
     for (auto it = n.params.begin(); it != n.params.end(); ++it) {
-        if (it.key() == QLatin1String("pattern") || it.key() == QLatin1String("channels"))
+        if (info.type->param(it.key()))
             continue;
-        if (pattern->params().indexOf(it.key()) < 0) {
-            QStringList known{QStringLiteral("pattern"), QStringLiteral("channels")};
-            for (int p = 0; p < pattern->params().size(); ++p)
-                known.append(pattern->params().name(p));
-            return failNode(node, it.key(),
-                            QStringLiteral("unknown parameter '%1' (known: %2)")
-                                .arg(it.key(), known.join(QStringLiteral(", "))));
-        }
-        if (!it.value().isDouble() || !std::isfinite(it.value().toDouble()))
-            return failNode(node, it.key(),
-                            QStringLiteral("must be a finite number, found ") +
-                                jsonTypeName(it.value()));
         defaults.insert(it.key(), it.value());
         overridden = true;
     }
@@ -317,183 +295,87 @@ bool RouterCompiler::buildPattern(int node)
 
 bool RouterCompiler::buildDevice(int node)
 {
-    const RouterNode &n = m_graph.nodes[size_t(node)];
     NodeInfo &info = m_info[size_t(node)];
-    const QJsonValue model = n.params.value(QStringLiteral("model"));
-    if (!model.isString() || model.toString().isEmpty())
-        return failNode(node, QStringLiteral("model"),
-                        QStringLiteral("needs a device model name or file"));
-    info.model = findModel(node, model.toString());
+    info.model = findModel(node, param(node, QStringLiteral("model")).toString());
     if (!info.model)
         return false;
     m_router->m_sources[size_t(node)].model = info.model;
-    const QJsonValue policy = n.params.value(QStringLiteral("policy"));
-    if (!policy.isUndefined() && !Player::mixPolicyFromName(policy.toString(), &info.policy))
-        return failNode(node, QStringLiteral("policy"),
-                        QStringLiteral("must be \"priority\", \"max\" or \"sum\""));
+    Player::mixPolicyFromName(param(node, QStringLiteral("policy")).toString(), &info.policy);
+    const QJsonValue hand = param(node, QStringLiteral("hand"));
+    Gripper gripper = Gripper::Right;
+    if (gripperFromName(hand.isUndefined()
+                            ? m_graph.nodes[size_t(node)].id.section(QLatin1Char('.'), 0, 0)
+                            : hand.toString(),
+                        &gripper))
+        info.hand = int(gripper);
     return true;
 }
 
 std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
-    const QJsonObject &params = n.params;
     if (n.type == QLatin1String("signal")) {
-        SignalNode::Quantity quantity;
-        if (!readGripper(node))
-            return nullptr;
-        if (!SignalNode::quantityFromName(params.value(QStringLiteral("quantity")).toString(),
-                                          &quantity)) {
-            failNode(node, QStringLiteral("quantity"),
-                     QStringLiteral("must be one of ") +
-                         SignalNode::quantityNames().join(QStringLiteral(", ")));
-            return nullptr;
-        }
-        double mu = 0.0;
-        if (!readNumber(node, QStringLiteral("mu"), 0.0, &mu))
-            return nullptr;
-        if (params.contains(QStringLiteral("mu")) && mu <= 0.0) {
-            failNode(node, QStringLiteral("mu"), QStringLiteral("must be positive"));
-            return nullptr;
-        }
-        auto signal = std::make_unique<SignalNode>(m_info[size_t(node)].gripper, quantity, mu);
+        SignalNode::Quantity quantity = SignalNode::Quantity();
+        SignalNode::quantityFromName(param(node, QStringLiteral("quantity")).toString(),
+                                     &quantity);
+        auto signal =
+            std::make_unique<SignalNode>(gripper(node), quantity, number(node, QStringLiteral("mu")));
         m_router->m_signals.push_back(signal.get());
         return signal;
     }
-    if (n.type == QLatin1String("derivative") || n.type == QLatin1String("predict")) {
-        double tau = DefaultSlopeTau;
-        double horizon = -1.0;
-        if (!readNumber(node, QStringLiteral("tau"), DefaultSlopeTau, &tau) ||
-            !readNumber(node, QStringLiteral("horizon"), -1.0, &horizon))
-            return nullptr;
-        if (tau < 0.0) {
-            failNode(node, QStringLiteral("tau"), QStringLiteral("must not be negative"));
-            return nullptr;
-        }
-        if (n.type == QLatin1String("derivative"))
-            return std::make_unique<DerivativeNode>(tau);
-        if (params.contains(QStringLiteral("horizon")) && horizon < 0.0) {
-            failNode(node, QStringLiteral("horizon"), QStringLiteral("must not be negative"));
-            return nullptr;
-        }
-        auto predict = std::make_unique<PredictNode>(tau);
-        predict->setHorizon(horizon);
+    if (n.type == QLatin1String("derivative"))
+        return std::make_unique<DerivativeNode>(number(node, QStringLiteral("tau")));
+    if (n.type == QLatin1String("predict")) {
+        auto predict = std::make_unique<PredictNode>(number(node, QStringLiteral("tau")));
+        const QJsonValue horizon = param(node, QStringLiteral("horizon"));
+        // Absent: setDefaultHorizons works it out once the devices downstream are known.
+        predict->setHorizon(horizon.isUndefined() ? -1.0 : horizon.toDouble());
         return predict;
     }
     if (n.type == QLatin1String("threshold"))
         return buildThreshold(node);
-    if (n.type == QLatin1String("filter")) {
-        unsigned messages = 0;
-        unsigned categories = 0;
-        unsigned grippers = 0;
-        if (!readNames(node, QStringLiteral("message"),
-                       {messageName(Message::Grasp), messageName(Message::Break),
-                        messageName(Message::Slip)},
-                       &messages) ||
-            !readNames(node, QStringLiteral("category"),
-                       {categoryName(Category::Confirmation), categoryName(Category::Exception)},
-                       &categories) ||
-            !readNames(node, QStringLiteral("gripper"),
-                       {gripperName(Gripper::Left), gripperName(Gripper::Right)}, &grippers))
-            return nullptr;
-        return std::make_unique<FilterNode>(messages, categories, grippers);
-    }
-    if (n.type == QLatin1String("gate")) {
-        const QString mode =
-            params.value(QStringLiteral("mode")).toString(QStringLiteral("block"));
-        if (mode != QLatin1String("block") && mode != QLatin1String("open")) {
-            failNode(node, QStringLiteral("mode"),
-                     QStringLiteral("must be \"block\" or \"open\""));
-            return nullptr;
-        }
-        return std::make_unique<GateNode>(mode == QLatin1String("open"));
-    }
+    if (n.type == QLatin1String("filter"))
+        return std::make_unique<FilterNode>(choiceBits(node, QStringLiteral("message")),
+                                            choiceBits(node, QStringLiteral("category")),
+                                            choiceBits(node, QStringLiteral("gripper")));
+    if (n.type == QLatin1String("gate"))
+        return std::make_unique<GateNode>(param(node, QStringLiteral("mode")).toString() ==
+                                          QLatin1String("open"));
     if (n.type == QLatin1String("hysteresis")) {
-        double hold = 0;
-        double band = 0;
-        if (!readNumber(node, QStringLiteral("hold"), 0.0, &hold) ||
-            !readNumber(node, QStringLiteral("band"), 0.0, &band))
-            return nullptr;
-        if (hold < 0 || band < 0 || band > 1) {
-            failNode(node, hold < 0 ? QStringLiteral("hold") : QStringLiteral("band"),
-                     QStringLiteral("hold must be >= 0 s and band within [0, 1]"));
-            return nullptr;
-        }
-        auto hysteresis = std::make_unique<HysteresisNode>(hold, band);
+        auto hysteresis = std::make_unique<HysteresisNode>(number(node, QStringLiteral("hold")),
+                                                           number(node, QStringLiteral("band")));
         m_router->m_timed.push_back(hysteresis.get());
         return hysteresis;
     }
     if (n.type == QLatin1String("curve")) {
-        const QJsonValue points = params.value(QStringLiteral("points"));
+        const QJsonValue points = param(node, QStringLiteral("points"));
         if (points.isUndefined())
             return std::make_unique<CurveNode>(Curve());
         std::vector<std::pair<double, double>> list;
-        const QString expected = QStringLiteral("must be a list of [x, y] points with x "
-                                                "increasing");
-        if (!points.isArray() || points.toArray().isEmpty()) {
-            failNode(node, QStringLiteral("points"), expected);
-            return nullptr;
-        }
-        for (const QJsonValue &point : points.toArray()) {
-            const QJsonArray xy = point.toArray();
-            if (xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble() ||
-                !std::isfinite(xy.at(0).toDouble()) || !std::isfinite(xy.at(1).toDouble()) ||
-                (!list.empty() && xy.at(0).toDouble() <= list.back().first)) {
-                failNode(node, QStringLiteral("points"), expected);
-                return nullptr;
-            }
-            list.emplace_back(xy.at(0).toDouble(), xy.at(1).toDouble());
-        }
+        for (const QJsonValue &point : points.toArray())
+            list.emplace_back(point.toArray().at(0).toDouble(), point.toArray().at(1).toDouble());
         return std::make_unique<CurveNode>(Curve::points(std::move(list)));
     }
     // proportional
-    double ref = 1.0;
-    if (!readNumber(node, QStringLiteral("ref"), 1.0, &ref) || !readChannels(node))
-        return nullptr;
-    if (ref <= 0) {
-        failNode(node, QStringLiteral("ref"), QStringLiteral("must be positive"));
-        return nullptr;
-    }
-    return std::make_unique<ProportionalNode>(ref);
+    m_info[size_t(node)].channels = channels(node);
+    return std::make_unique<ProportionalNode>(number(node, QStringLiteral("ref")));
 }
 
 std::unique_ptr<RuntimeNode> RouterCompiler::buildThreshold(int node)
 {
-    const QJsonObject &params = m_graph.nodes[size_t(node)].params;
-    if (!readGripper(node))
-        return nullptr;
     ThresholdNode::Params p;
-    const QJsonValue message = params.value(QStringLiteral("message"));
-    if (!messageFromName(message.toString(), &p.message)) {
-        failNode(node, QStringLiteral("message"),
-                 QStringLiteral("must be one of %1, %2, %3")
-                     .arg(messageName(Message::Grasp), messageName(Message::Break),
-                          messageName(Message::Slip)));
-        return nullptr;
-    }
-    if (!params.contains(QStringLiteral("level")) || !params.contains(QStringLiteral("full"))) {
-        failNode(node, QString(), QStringLiteral("needs a level and a full value"));
-        return nullptr;
-    }
-    if (!readNumber(node, QStringLiteral("level"), 0.0, &p.level) ||
-        !readNumber(node, QStringLiteral("full"), 1.0, &p.full) ||
-        !readNumber(node, QStringLiteral("hysteresis"), 0.0, &p.hysteresis) ||
-        !readNumber(node, QStringLiteral("minDuration"), 0.0, &p.minDuration))
-        return nullptr;
+    messageFromName(param(node, QStringLiteral("message")).toString(), &p.message);
+    p.level = number(node, QStringLiteral("level"));
+    p.full = number(node, QStringLiteral("full"));
+    p.hysteresis = number(node, QStringLiteral("hysteresis"));
+    p.minDuration = number(node, QStringLiteral("minDuration"));
     if (p.full == p.level) {
         failNode(node, QStringLiteral("full"),
                  QStringLiteral("must differ from level (above it: active while the input "
                                 "is above level; below it: while below)"));
         return nullptr;
     }
-    for (const auto &[key, value] : {std::pair{QStringLiteral("hysteresis"), p.hysteresis},
-                                     std::pair{QStringLiteral("minDuration"), p.minDuration}}) {
-        if (value < 0.0) {
-            failNode(node, key, QStringLiteral("must not be negative"));
-            return nullptr;
-        }
-    }
-    auto threshold = std::make_unique<ThresholdNode>(node, m_info[size_t(node)].gripper, p);
+    auto threshold = std::make_unique<ThresholdNode>(node, gripper(node), p);
     m_router->m_thresholds.push_back(threshold.get());
     return threshold;
 }
@@ -533,12 +415,12 @@ bool RouterCompiler::buildNode(int node)
     info.inputs = info.type->inputs;
     info.inputLinks.assign(info.inputs.size(), 0);
 
-    if (n.type == QLatin1String("force") || n.type == QLatin1String("slip"))
-        return buildDetector(node); // the detector's own reader checks its keys
     if (n.type == QLatin1String("pattern"))
         return buildPattern(node);
     if (!checkParams(node, info.type->params))
         return false;
+    if (n.type == QLatin1String("force") || n.type == QLatin1String("slip"))
+        return buildDetector(node);
     if (n.type == QLatin1String("device"))
         return buildDevice(node);
     std::unique_ptr<RuntimeNode> runtime = buildLogic(node);
@@ -572,6 +454,7 @@ bool RouterCompiler::checkSize()
 
 bool RouterCompiler::resolveLinks()
 {
+    QSet<QString> seen; // each link once: a second would deliver every message twice
     for (size_t j = 0; j < m_graph.links.size(); ++j) {
         const RouterLink &link = m_graph.links[j];
         const QString where = jsonPointerChild(QStringLiteral("/links"), int(j));
@@ -586,43 +469,35 @@ bool RouterCompiler::resolveLinks()
                         QStringLiteral("dangling link: no node '%1'").arg(link.to));
         const NodeInfo &from = m_info[size_t(r.from)];
         NodeInfo &to = m_info[size_t(r.to)];
-
-        const std::vector<PortSpec> &outputs = from.type->outputs;
-        if (outputs.empty())
-            return fail(where + QStringLiteral("/from"),
-                        nodeLabel(r.from) + QStringLiteral(" has no outputs"));
-        const QString fromPort = link.fromPort.isEmpty() ? outputs.front().name : link.fromPort;
-        const auto out = std::find_if(outputs.begin(), outputs.end(),
+        const QString fromPort =
+            link.fromPort.isEmpty() && !from.type->outputs.empty() ? from.type->outputs.front().name
+                                                                    : link.fromPort;
+        const QString toPort =
+            link.toPort.isEmpty() && !to.inputs.empty() ? to.inputs.front().name : link.toPort;
+        const auto out = std::find_if(from.type->outputs.begin(), from.type->outputs.end(),
                                       [&](const PortSpec &p) { return p.name == fromPort; });
-        if (out == outputs.end())
-            return fail(where + QStringLiteral("/from"),
-                        nodeLabel(r.from) + QStringLiteral(" has no output '%1'").arg(fromPort));
-        if (to.inputs.empty())
-            return fail(where + QStringLiteral("/to"),
-                        nodeLabel(r.to) + QStringLiteral(" has no inputs"));
-        const QString toPort = link.toPort.isEmpty() ? to.inputs.front().name : link.toPort;
         const auto in = std::find_if(to.inputs.begin(), to.inputs.end(),
                                      [&](const PortSpec &p) { return p.name == toPort; });
-        if (in == to.inputs.end()) {
-            QStringList names;
-            for (const PortSpec &p : to.inputs)
-                names.append(p.name);
-            return fail(where + QStringLiteral("/to"),
-                        nodeLabel(r.to) + QStringLiteral(" has no input '%1' (inputs: %2)")
-                                              .arg(toPort, names.join(QStringLiteral(", "))));
-        }
-        if (out->type != in->type)
-            return fail(where, QStringLiteral("port type mismatch: '%1:%2' sends %3, '%4:%5' "
-                                              "takes %6")
-                                   .arg(link.from, fromPort, portTypeName(out->type), link.to,
-                                        toPort, portTypeName(in->type)));
-        r.fromPort = int(out - outputs.begin());
+        const int linksIntoPort =
+            in == to.inputs.end() ? 0 : to.inputLinks[size_t(in - to.inputs.begin())];
+        RouterGraph::LinkEnd end = RouterGraph::LinkEnd::Both;
+        const QString problem =
+            RouterGraph::portProblem(m_graph.nodes[size_t(r.from)], fromPort,
+                                     m_graph.nodes[size_t(r.to)], to.inputs, toPort,
+                                     linksIntoPort, &end);
+        if (!problem.isEmpty())
+            return fail(end == RouterGraph::LinkEnd::From ? where + QStringLiteral("/from")
+                        : end == RouterGraph::LinkEnd::To ? where + QStringLiteral("/to")
+                                                          : where,
+                        problem);
+        const QString key = QStringLiteral("%1\n%2\n%3\n%4").arg(link.from, fromPort, link.to, toPort);
+        if (seen.contains(key))
+            return fail(where, QStringLiteral("'%1:%2' already feeds '%3:%4'")
+                                   .arg(link.from, fromPort, link.to, toPort));
+        seen.insert(key);
+        r.fromPort = int(out - from.type->outputs.begin());
         r.toPort = int(in - to.inputs.begin());
         r.type = in->type;
-        if (!in->multiple && to.inputLinks[size_t(r.toPort)] > 0)
-            return fail(where + QStringLiteral("/to"),
-                        QStringLiteral("'%1:%2' takes a single link and already has one")
-                            .arg(link.to, toPort));
         ++to.inputLinks[size_t(r.toPort)];
         m_out[size_t(r.from)].push_back(int(m_links.size()));
         m_links.push_back(r);
@@ -669,12 +544,10 @@ bool RouterCompiler::checkFanIn()
     // topological order every node's set is complete before it passes it on; a set stops
     // growing one past the limit, so the work stays linear in the links.
     const size_t count = m_graph.nodes.size();
-    const size_t limit = size_t(MaxUpstreamDetectors) + 1;
+    const size_t limit = size_t(RouterGraph::MaxUpstreamDetectors) + 1;
     std::vector<std::vector<int>> upstream(count);
     for (size_t i = 0; i < count; ++i) {
-        if (m_info[i].type->type == QLatin1String("force") ||
-            m_info[i].type->type == QLatin1String("slip") ||
-            m_info[i].type->type == QLatin1String("threshold"))
+        if (RouterGraph::isDetectorType(m_info[i].type->type))
             upstream[i].push_back(int(i));
     }
     for (int node : m_order) {
@@ -691,11 +564,8 @@ bool RouterCompiler::checkFanIn()
         }
     }
     for (size_t i = 0; i < count; ++i) {
-        if (upstream[i].size() > size_t(MaxUpstreamDetectors))
-            return failNode(int(i), QString(),
-                            QStringLiteral("listens to more than %1 detectors; at most %1 may "
-                                           "feed one node")
-                                .arg(MaxUpstreamDetectors));
+        if (upstream[i].size() > size_t(RouterGraph::MaxUpstreamDetectors))
+            return failNode(int(i), QString(), RouterGraph::fanInProblem());
     }
     return true;
 }
@@ -709,29 +579,22 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
     RuntimeNode *runtime = m_router->m_nodes[size_t(link.from)].get();
     const QString where = jsonPointerChild(QStringLiteral("/links"), linkIndex);
 
+    std::vector<PlayerInput::Route> routes;
+    const QString problem = RouterGraph::voiceProblem(
+        m_graph.nodes[size_t(link.from)], source.pattern.get(), source.channels,
+        m_graph.nodes[size_t(link.to)], model, &routes);
+    if (!problem.isEmpty())
+        return fail(where, problem);
     if (auto *pattern = dynamic_cast<PatternNode *>(runtime)) {
         auto input = std::make_unique<VoiceInput>(source.pattern);
-        QString reason;
-        if (!resolvePatternRoutes(*source.pattern, model, source.channels, &input->routes,
-                                  &reason))
-            return fail(where, nodeLabel(link.from) +
-                                   QStringLiteral(" -> device '%1': ").arg(deviceId) + reason);
+        input->routes = std::move(routes);
         m_router->m_player.addInput(device, input.get());
         pattern->voices.push_back(std::move(input));
         return true;
     }
     auto *proportional = static_cast<ProportionalNode *>(runtime);
     auto input = std::make_unique<ProportionalNode::Input>(*proportional);
-    const QStringList names = source.channels.isEmpty() ? model.channelNames() : source.channels;
-    for (const QString &name : names) {
-        const int channel = model.channelIndex(name);
-        if (channel < 0)
-            return fail(where, nodeLabel(link.from) +
-                                   QStringLiteral(" drives channel '%1', which device '%2' "
-                                                  "(%3) does not have")
-                                       .arg(name, deviceId, model.name()));
-        input->routes.push_back({channel, 0});
-    }
+    input->routes = std::move(routes);
     m_router->m_player.addInput(device, input.get());
     proportional->inputs.push_back(std::move(input));
     return true;
@@ -742,6 +605,13 @@ bool RouterCompiler::wire()
     for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
         if (m_info[i].model)
             m_router->m_player.addDevice(m_graph.nodes[i].id, m_info[i].model, m_info[i].policy);
+    }
+    // Player indices follow device names, known only once every device is in.
+    m_router->m_deviceHands.assign(size_t(m_router->m_player.deviceCount()), -1);
+    for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
+        if (m_info[i].model)
+            m_router->m_deviceHands[size_t(m_router->m_player.deviceIndex(m_graph.nodes[i].id))] =
+                m_info[i].hand;
     }
     for (size_t j = 0; j < m_links.size(); ++j) {
         const ResolvedLink &link = m_links[j];
@@ -821,6 +691,23 @@ Router::~Router() = default;
 namespace {
 
 } // namespace
+
+bool Router::deviceHand(int device, Gripper *hand) const
+{
+    const int gripper = m_deviceHands[size_t(device)];
+    if (gripper < 0)
+        return false;
+    *hand = Gripper(gripper);
+    return true;
+}
+
+std::vector<const Detector *> Router::detectors() const
+{
+    std::vector<const Detector *> list;
+    for (const DetectorNode *node : m_detectors)
+        list.push_back(&node->detector());
+    return list;
+}
 
 RouterGraph Router::selfContained() const
 {

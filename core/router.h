@@ -15,6 +15,7 @@
 
 namespace semhap {
 
+class Detector;
 class DetectorNode;
 class RuntimeNode;
 class SignalNode;
@@ -52,6 +53,13 @@ public:
 
     Player &player() { return m_player; }
     const Player &player() const { return m_player; }
+    /**
+     * The hand that feels device `device` (a player index): its node's `hand`, or the id's
+     * first part when that names a gripper. False for a device of no hand (the overlay).
+     */
+    bool deviceHand(int device, Gripper *hand) const;
+    /** The compiled detectors (force, slip), in graph order: what plots take thresholds from. */
+    std::vector<const Detector *> detectors() const;
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
     const QStringList &nodeIds() const { return m_nodeIds; }
     const RouterGraph &graph() const { return m_graph; }
@@ -79,6 +87,7 @@ private:
         DeviceModelPtr model;
     };
     std::vector<Sources> m_sources; ///< graph order
+    std::vector<int> m_deviceHands; ///< player device index -> Gripper, or -1 for none
     Player m_player;
     bool m_started = false;
     friend class RouterCompiler;

@@ -4,6 +4,7 @@
 #include "inputfile.h"
 #include "jsonreader.h"
 #include "patternlibrary.h"
+#include "patternrender.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -191,19 +192,264 @@ DeviceModelPtr RouterGraph::model(const QString &nameOrPath, QString *reason) co
     return loaded;
 }
 
+PatternPtr RouterGraph::playedPattern(const RouterNode &node) const
+{
+    if (node.type != QLatin1String("pattern"))
+        return nullptr;
+    QString ignored;
+    const QString played = node.params.value(QLatin1String("pattern")).toString();
+    return played.isEmpty() ? nullptr : pattern(played, &ignored);
+}
+
 std::vector<PortSpec> RouterGraph::inputsOf(const RouterNode &node) const
 {
     const RouterNodeType *type = routerNodeType(node.type);
     if (!type)
         return {};
     std::vector<PortSpec> inputs = type->inputs;
-    if (node.type == QLatin1String("pattern")) {
-        QString ignored;
-        const QString played = node.params.value(QLatin1String("pattern")).toString();
-        if (const PatternPtr found = played.isEmpty() ? nullptr : pattern(played, &ignored))
-            appendPatternInputs(*found, &inputs);
-    }
+    if (const PatternPtr played = playedPattern(node))
+        appendPatternInputs(*played, &inputs);
     return inputs;
+}
+
+std::vector<PortSpec> RouterGraph::outputsOf(const RouterNode &node)
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    return type ? type->outputs : std::vector<PortSpec>();
+}
+
+QString RouterGraph::portOf(const QString &node, const QString &port, bool output) const
+{
+    if (!port.isEmpty())
+        return port;
+    const int index = nodeIndex(node);
+    if (index < 0)
+        return QString();
+    const std::vector<PortSpec> ports =
+        output ? outputsOf(nodes[size_t(index)]) : inputsOf(nodes[size_t(index)]);
+    return ports.empty() ? QString() : ports.front().name;
+}
+
+bool RouterGraph::reaches(const QString &from, const QString &to) const
+{
+    std::vector<QString> stack{from};
+    QSet<QString> seen;
+    while (!stack.empty()) {
+        const QString node = stack.back();
+        stack.pop_back();
+        if (node == to)
+            return true;
+        if (seen.contains(node))
+            continue;
+        seen.insert(node);
+        for (const RouterLink &link : links) {
+            if (link.from == node)
+                stack.push_back(link.to);
+        }
+    }
+    return false;
+}
+
+QString RouterGraph::portProblem(const RouterNode &from, const QString &fromPort,
+                                 const RouterNode &to, const std::vector<PortSpec> &inputs,
+                                 const QString &toPort, int linksIntoPort, LinkEnd *end)
+{
+    const auto label = [](const RouterNode &node) {
+        return QStringLiteral("node '%1' (%2)").arg(node.id, node.type);
+    };
+    *end = LinkEnd::From;
+    const std::vector<PortSpec> outputs = outputsOf(from);
+    if (outputs.empty())
+        return label(from) + QStringLiteral(" has no outputs");
+    const QString outName = fromPort.isEmpty() ? outputs.front().name : fromPort;
+    const auto out = std::find_if(outputs.begin(), outputs.end(),
+                                  [&](const PortSpec &p) { return p.name == outName; });
+    if (out == outputs.end())
+        return label(from) + QStringLiteral(" has no output '%1'").arg(outName);
+    *end = LinkEnd::To;
+    if (inputs.empty())
+        return label(to) + QStringLiteral(" has no inputs");
+    const QString inName = toPort.isEmpty() ? inputs.front().name : toPort;
+    const auto in = std::find_if(inputs.begin(), inputs.end(),
+                                 [&](const PortSpec &p) { return p.name == inName; });
+    if (in == inputs.end()) {
+        QStringList names;
+        for (const PortSpec &p : inputs)
+            names.append(p.name);
+        return label(to) + QStringLiteral(" has no input '%1' (inputs: %2)")
+                               .arg(inName, names.join(QStringLiteral(", ")));
+    }
+    if (out->type != in->type) {
+        *end = LinkEnd::Both;
+        return QStringLiteral("port type mismatch: '%1:%2' sends %3, '%4:%5' takes %6")
+            .arg(from.id, outName, portTypeName(out->type), to.id, inName,
+                 portTypeName(in->type));
+    }
+    if (!in->multiple && linksIntoPort > 0)
+        return QStringLiteral("'%1:%2' takes a single link and already has one")
+            .arg(to.id, inName);
+    return QString();
+}
+
+QString RouterGraph::voiceProblem(const RouterNode &from, const Pattern *pattern,
+                                  const QStringList &channels, const RouterNode &device,
+                                  const DeviceModel &model,
+                                  std::vector<PlayerInput::Route> *routes)
+{
+    const QString label = QStringLiteral("node '%1' (%2)").arg(from.id, from.type);
+    routes->clear();
+    QString reason;
+    if (pattern) {
+        if (!resolvePatternRoutes(*pattern, model, channels, routes, &reason))
+            return label + QStringLiteral(" -> device '%1': ").arg(device.id) + reason;
+        return QString();
+    }
+    for (const QString &name : channels.isEmpty() ? model.channelNames() : channels) {
+        const int channel = model.channelIndex(name);
+        if (channel < 0)
+            return label + QStringLiteral(" drives channel '%1', which device '%2' (%3) does "
+                                          "not have")
+                               .arg(name, device.id, model.name());
+        routes->push_back({channel, 0});
+    }
+    return QString();
+}
+
+QString RouterGraph::fanInProblem()
+{
+    return QStringLiteral("listens to more than %1 detectors; at most %1 may feed one node")
+        .arg(MaxUpstreamDetectors);
+}
+
+bool RouterGraph::isDetectorType(const QString &type)
+{
+    return type == QLatin1String("force") || type == QLatin1String("slip") ||
+           type == QLatin1String("threshold");
+}
+
+bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const
+{
+    const int fromIndex = nodeIndex(link.from);
+    const int toIndex = nodeIndex(link.to);
+    if (fromIndex < 0 || toIndex < 0) {
+        *reason = QStringLiteral("dangling link: no node '%1'")
+                      .arg(fromIndex < 0 ? link.from : link.to);
+        return false;
+    }
+    const RouterNode &from = nodes[size_t(fromIndex)];
+    const RouterNode &to = nodes[size_t(toIndex)];
+    const QString fromPort = portOf(link.from, link.fromPort, true);
+    const QString toPort = portOf(link.to, link.toPort, false);
+    int linksIntoPort = 0;
+    for (const RouterLink &other : links) {
+        if (other.to != to.id || portOf(other.to, other.toPort, false) != toPort)
+            continue;
+        if (other.from == from.id && portOf(other.from, other.fromPort, true) == fromPort) {
+            *reason = QStringLiteral("'%1:%2' already feeds '%3:%4'")
+                          .arg(from.id, fromPort, to.id, toPort);
+            return false;
+        }
+        ++linksIntoPort;
+    }
+    LinkEnd end = LinkEnd::Both;
+    *reason = portProblem(from, fromPort, to, inputsOf(to), toPort, linksIntoPort, &end);
+    if (!reason->isEmpty())
+        return false;
+    if (from.id == to.id) {
+        *reason = QStringLiteral("node '%1' (%2) cannot feed itself").arg(from.id, from.type);
+        return false;
+    }
+    if (reaches(to.id, from.id)) {
+        *reason = QStringLiteral("this link would make a cycle: '%1' already leads to '%2'")
+                      .arg(to.id, from.id);
+        return false;
+    }
+    const std::vector<PortSpec> outputs = outputsOf(from);
+    const auto out = std::find_if(outputs.begin(), outputs.end(),
+                                  [&](const PortSpec &p) { return p.name == fromPort; });
+    if (out->type == PortType::Voice) {
+        // Whether the voice fits the device; a pattern or model that cannot be found is the
+        // node's problem, which the compiler reports on the node.
+        QString ignored;
+        const DeviceModelPtr device = model(to.params.value(QLatin1String("model")).toString(),
+                                            &ignored);
+        const PatternPtr played = playedPattern(from);
+        if (!device || (from.type == QLatin1String("pattern") && !played))
+            return true;
+        QStringList channels;
+        for (const QJsonValue &channel : from.params.value(QLatin1String("channels")).toArray())
+            channels.append(channel.toString());
+        std::vector<PlayerInput::Route> routes;
+        *reason = voiceProblem(from, played.get(), channels, to, *device, &routes);
+        return reason->isEmpty();
+    }
+    if (out->type != PortType::Event)
+        return true;
+
+    // Fan-in: the detectors heard at each node, over event links, with the new link added.
+    // Sets stop one past the limit, so the work stays linear in the links.
+    const size_t limit = size_t(MaxUpstreamDetectors) + 1;
+    std::vector<RouterLink> eventLinks;
+    for (const RouterLink &l : links) {
+        const int index = nodeIndex(l.from);
+        const std::vector<PortSpec> ports = outputsOf(nodes[size_t(index)]);
+        const QString port = portOf(l.from, l.fromPort, true);
+        for (const PortSpec &spec : ports) {
+            if (spec.name == port && spec.type == PortType::Event)
+                eventLinks.push_back(l);
+        }
+    }
+    eventLinks.push_back(link);
+    QHash<QString, QSet<QString>> heard;
+    for (const RouterNode &node : nodes) {
+        if (isDetectorType(node.type))
+            heard[node.id].insert(node.id);
+    }
+    // Relax until nothing grows: the event graph is acyclic, so this ends within its depth.
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const RouterLink &l : eventLinks) {
+            const QSet<QString> source = heard.value(l.from);
+            QSet<QString> &target = heard[l.to];
+            for (const QString &detector : source) {
+                if (size_t(target.size()) < limit && !target.contains(detector)) {
+                    target.insert(detector);
+                    grew = true;
+                }
+            }
+        }
+    }
+    for (auto it = heard.begin(); it != heard.end(); ++it) {
+        if (size_t(it->size()) > size_t(MaxUpstreamDetectors) && reaches(link.to, it.key())) {
+            const RouterNode &node = nodes[size_t(nodeIndex(it.key()))];
+            *reason = QStringLiteral("node '%1' (%2): ").arg(node.id, node.type) + fanInProblem();
+            return false;
+        }
+    }
+    return true;
+}
+
+std::vector<ParamSpec> RouterGraph::paramsOf(const RouterNode &node) const
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    if (!type)
+        return {};
+    std::vector<ParamSpec> params = type->params;
+    if (const PatternPtr played = playedPattern(node))
+        appendPatternParams(*played, &params);
+    return params;
+}
+
+void RouterGraph::appendPatternParams(const Pattern &pattern, std::vector<ParamSpec> *params)
+{
+    for (int p = 0; p < pattern.params().size(); ++p) {
+        const QString &name = pattern.params().name(p);
+        params->push_back(ParamSpec::number(
+            name, pattern.params().defaultValue(p), QString(),
+            QStringLiteral("The pattern's parameter '%1': its value for this node's voices, "
+                           "until a signal input sets it")
+                .arg(name)));
+    }
 }
 
 void RouterGraph::appendPatternInputs(const Pattern &pattern, std::vector<PortSpec> *inputs)

@@ -4,6 +4,7 @@
 #include "devicemodel.h"
 #include "loaderror.h"
 #include "pattern.h"
+#include "player.h"
 #include "routernodetype.h"
 
 #include <QJsonObject>
@@ -49,6 +50,11 @@ public:
     static constexpr int MaxLinks = 2000000;
     /** The most devices (bands, overlays) a router may drive: each is rendered every tick. */
     static constexpr int MaxDevices = 256;
+    /**
+     * The most detectors whose messages may meet at one node: each brings two messages and
+     * a node tracks at most ActiveMessages::Capacity of them without allocating.
+     */
+    static constexpr int MaxUpstreamDetectors = 8;
 
     /** Parses the document's structure; node types and parameters are checked by compile. */
     static bool fromJson(const QJsonObject &json, const QString &file, RouterGraph *graph,
@@ -67,14 +73,65 @@ public:
     PatternPtr pattern(const QString &nameOrPath, QString *reason) const;
     /** The same for a device node's `model`. */
     DeviceModelPtr model(const QString &nameOrPath, QString *reason) const;
+    /** The pattern a pattern node plays, or null (another type, or not found). */
+    PatternPtr playedPattern(const RouterNode &node) const;
     /**
      * A node's input ports as the compiler makes them: its type's, and for a pattern node
      * one signal input per parameter of its pattern but intensity (which events set).
      * Empty for an unknown type; a pattern that cannot be found adds none.
      */
     std::vector<PortSpec> inputsOf(const RouterNode &node) const;
+    /** A node's output ports: its type's. */
+    static std::vector<PortSpec> outputsOf(const RouterNode &node);
+    /** The port a link end names: `port`, or the node's default (first) one when empty. */
+    QString portOf(const QString &node, const QString &port, bool output) const;
+    /** Whether links lead from node `from` to node `to` (a node reaches itself). */
+    bool reaches(const QString &from, const QString &to) const;
+    /**
+     * Whether `link` may be added to the graph as it stands, by the rules the compiler
+     * enforces: both ports exist, carry the same type, a single input is free, the link is
+     * new, makes no cycle and lets no node hear more than MaxUpstreamDetectors detectors.
+     * False with the compiler's one-sentence reason. What the node editor asks on a drop.
+     */
+    bool checkLink(const RouterLink &link, QString *reason) const;
+    /** Which part of a link a problem is about. */
+    enum class LinkEnd
+    {
+        From,
+        To,
+        Both
+    };
+    /**
+     * The port rules of one link, shared by checkLink and the compiler: empty when the
+     * named ports exist and match, else the reason, with the end it is about in `end`.
+     * `linksIntoPort` is how many links the target port has already.
+     */
+    static QString portProblem(const RouterNode &from, const QString &fromPort,
+                               const RouterNode &to, const std::vector<PortSpec> &inputs,
+                               const QString &toPort, int linksIntoPort, LinkEnd *end);
+    /**
+     * Whether a voice of node `from` (a pattern node playing `pattern`, or a proportional
+     * node when `pattern` is null) on `channels` (empty: its own) can drive `model`: empty,
+     * with the channel routes filled in, or the reason. Shared by checkLink and the compiler.
+     */
+    static QString voiceProblem(const RouterNode &from, const Pattern *pattern,
+                                const QStringList &channels, const RouterNode &device,
+                                const DeviceModel &model,
+                                std::vector<PlayerInput::Route> *routes);
+    /** Why a node hears too many detectors (the fan-in limit). */
+    static QString fanInProblem();
+    /** Whether a node of `type` raises messages of its own (force, slip, threshold). */
+    static bool isDetectorType(const QString &type);
+
     /** The signal inputs a pattern node gets for `pattern`'s parameters. */
     static void appendPatternInputs(const Pattern &pattern, std::vector<PortSpec> *inputs);
+    /**
+     * A node's parameters as the compiler checks them: its type's, and for a pattern node
+     * one number per parameter of its pattern (the node's value overrides the default).
+     */
+    std::vector<ParamSpec> paramsOf(const RouterNode &node) const;
+    /** The parameters a pattern node gets for `pattern`'s parameters. */
+    static void appendPatternParams(const Pattern &pattern, std::vector<ParamSpec> *params);
     /**
      * Adds `pattern` to the embedded ones and returns the name the nodes must use: its own,
      * or, when another pattern of that name is embedded already (two files may name their

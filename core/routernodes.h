@@ -94,6 +94,7 @@ public:
     void process(const ContactFrame &frame, EventBuffer &events);
     void endAll(double t, EventBuffer &events);
     Detector &detector() { return *m_detector; }
+    const Detector &detector() const { return *m_detector; }
 
 private:
     std::unique_ptr<Detector> m_detector;

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "routernodetype.h"
 
+#include "forcedetector.h"
+#include "player.h"
+#include "routernodes.h"
+#include "slipdetector.h"
+
 namespace semhap {
 
 QString portTypeName(PortType type)
@@ -34,91 +39,207 @@ const PortSpec *RouterNodeType::output(const QString &name) const
     return nullptr;
 }
 
+const ParamSpec *RouterNodeType::param(const QString &name) const
+{
+    return findParamSpec(params, name);
+}
+
+namespace {
+
+QStringList messageNames()
+{
+    return {messageName(Message::Grasp), messageName(Message::Break), messageName(Message::Slip)};
+}
+
+QStringList gripperNames()
+{
+    return {gripperName(Gripper::Left), gripperName(Gripper::Right)};
+}
+
+ParamSpec gripperParam()
+{
+    return ParamSpec::choice(QStringLiteral("gripper"), gripperNames(), QString(),
+                             QStringLiteral("The gripper whose contact frames it reads"));
+}
+
+// A detector's parameters: the gripper it watches, then the detector's own.
+std::vector<ParamSpec> detectorParams(std::vector<ParamSpec> own)
+{
+    own.insert(own.begin(), gripperParam());
+    return own;
+}
+
+ParamSpec channelsParam()
+{
+    return ParamSpec::of(QStringLiteral("channels"), ParamKind::Channels, ParamAbsent::Default,
+                         QStringLiteral("The device channels it drives; absent: the pattern's "
+                                        "own (a one-track pattern may be remapped)"));
+}
+
+ParamSpec tauParam()
+{
+    return ParamSpec::number(QStringLiteral("tau"), DefaultSlopeTau, QStringLiteral("s"),
+                             QStringLiteral("How far back the slope is taken: longer is "
+                                            "smoother and later"))
+        .atLeast(0);
+}
+
+} // namespace
+
 const std::vector<RouterNodeType> &routerNodeTypes()
 {
     static const std::vector<RouterNodeType> types = [] {
         const PortSpec eventsOut{QStringLiteral("events"), PortType::Event, true};
         const PortSpec in{QStringLiteral("in"), PortType::Event, true};
         const PortSpec out{QStringLiteral("out"), PortType::Event, true};
-        const QString gripper = QStringLiteral("gripper");
-        const QString minDuration = QStringLiteral("minDuration");
-        const QString hysteresis = QStringLiteral("hysteresis");
         const PortSpec signalIn{QStringLiteral("in"), PortType::Signal, false};
         const PortSpec value{QStringLiteral("value"), PortType::Signal, true};
+        const QString seconds = QStringLiteral("s");
+        const ParamSpec minDuration =
+            ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
+                              QStringLiteral("A message begins only after its condition has "
+                                             "held this long"))
+                .atLeast(0);
         return std::vector<RouterNodeType>{
             {QStringLiteral("force"),
              QStringLiteral("Force detector (Algorithm 1): grasp and break messages from F"),
              {},
              {eventsOut},
-             {gripper, QStringLiteral("grasp"), QStringLiteral("break"), QStringLiteral("max"),
-              hysteresis, minDuration}},
+             detectorParams(ForceDetector::Params::specs())},
             {QStringLiteral("slip"),
              QStringLiteral("Slip detector (Algorithm 2): grasp and slip messages from N"),
              {},
              {eventsOut},
-             {gripper, QStringLiteral("grasp"), QStringLiteral("loss"), QStringLiteral("min"),
-              hysteresis, minDuration}},
+             detectorParams(SlipDetector::Params::specs())},
             {QStringLiteral("signal"),
              QStringLiteral("A continuous quantity of a gripper's contact frames (friction: "
                             "tangential over normal force over mu, 1 at the cone's edge)"),
              {},
              {value},
-             {gripper, QStringLiteral("quantity"), QStringLiteral("mu")}},
+             {gripperParam(),
+              ParamSpec::choice(QStringLiteral("quantity"), SignalNode::quantityNames(),
+                                QString(), QStringLiteral("The quantity it reads")),
+              ParamSpec::number(QStringLiteral("mu"), 0, QString(),
+                                QStringLiteral("The friction coefficient of the friction "
+                                               "quantities; absent: the frames' own"))
+                  .above(0)
+                  .computed()}},
             {QStringLiteral("derivative"),
              QStringLiteral("The time derivative of a signal, smoothed over tau seconds"),
              {signalIn},
              {value},
-             {QStringLiteral("tau")}},
+             {tauParam()}},
             {QStringLiteral("predict"),
              QStringLiteral("A signal extrapolated over a horizon (default: the downstream "
                             "devices' delay plus the reaction time)"),
              {signalIn},
              {value},
-             {QStringLiteral("horizon"), QStringLiteral("tau")}},
+             {ParamSpec::number(QStringLiteral("horizon"), 0, seconds,
+                                QStringLiteral("How far ahead it extrapolates; absent: the "
+                                               "slowest downstream device's delay plus the "
+                                               "reaction time"))
+                  .atLeast(0)
+                  .computed(),
+              tauParam()}},
             {QStringLiteral("threshold"),
              QStringLiteral("A detector on a signal: its message is active while the signal is "
                             "beyond level, toward full, with intensity growing to full"),
              {signalIn},
              {eventsOut},
-             {gripper, QStringLiteral("message"), QStringLiteral("level"), QStringLiteral("full"),
-              hysteresis, minDuration}},
+             {gripperParam(),
+              ParamSpec::choice(QStringLiteral("message"), messageNames(), QString(),
+                                QStringLiteral("The message it raises")),
+              ParamSpec::number(QStringLiteral("level"), 0, QString(),
+                                QStringLiteral("The message is active beyond this value"))
+                  .required(),
+              ParamSpec::number(QStringLiteral("full"), 1, QString(),
+                                QStringLiteral("The value at which intensity reaches 1; below "
+                                               "level, the message is active below level"))
+                  .required(),
+              ParamSpec::number(QStringLiteral("hysteresis"), 0, QString(),
+                                QStringLiteral("An active message holds until the signal is "
+                                               "this far back past level"))
+                  .atLeast(0),
+              minDuration}},
             {QStringLiteral("filter"),
              QStringLiteral("Passes the messages that match by message, category and gripper"),
              {in},
              {out},
-             {QStringLiteral("message"), QStringLiteral("category"), gripper}},
+             {ParamSpec::anyOf(QStringLiteral("message"), messageNames(),
+                               QStringLiteral("The messages it passes")),
+              ParamSpec::anyOf(QStringLiteral("category"),
+                               {categoryName(Category::Confirmation),
+                                categoryName(Category::Exception)},
+                               QStringLiteral("The categories it passes")),
+              ParamSpec::anyOf(QStringLiteral("gripper"), gripperNames(),
+                               QStringLiteral("The grippers whose messages it passes"))}},
             {QStringLiteral("gate"),
              QStringLiteral("Passes its input only while the control has no active message "
                             "(block) or while it has one (open)"),
              {in, {QStringLiteral("control"), PortType::Event, true}},
              {out},
-             {QStringLiteral("mode")}},
+             {ParamSpec::choice(QStringLiteral("mode"),
+                                {QStringLiteral("block"), QStringLiteral("open")},
+                                QStringLiteral("block"),
+                                QStringLiteral("block: an active control stops the input; "
+                                               "open: only an active control lets it through"))}},
             {QStringLiteral("hysteresis"),
              QStringLiteral("Holds ends back for a while and drops small intensity changes"),
              {in},
              {out},
-             {QStringLiteral("hold"), QStringLiteral("band")}},
+             {ParamSpec::number(QStringLiteral("hold"), 0, seconds,
+                                QStringLiteral("How long an end is held back; a message that "
+                                               "comes back meanwhile goes on"))
+                  .atLeast(0),
+              ParamSpec::number(QStringLiteral("band"), 0, QString(),
+                                QStringLiteral("Intensity changes smaller than this are "
+                                               "dropped"))
+                  .atLeast(0)
+                  .atMost(1)}},
             {QStringLiteral("curve"),
              QStringLiteral("Maps intensity through a piecewise-linear curve"),
              {in},
              {out},
-             {QStringLiteral("points")}},
+             {ParamSpec::of(QStringLiteral("points"), ParamKind::Points, ParamAbsent::Default,
+                            QStringLiteral("[x, y] points, x increasing, held constant outside "
+                                           "them; absent: intensity passes unchanged"))}},
             {QStringLiteral("pattern"),
              QStringLiteral("Plays a pattern while any of its messages is active; one signal "
                             "input per pattern parameter"),
              {{QStringLiteral("events"), PortType::Event, true}},
              {{QStringLiteral("out"), PortType::Voice, true}},
-             {QStringLiteral("pattern"), QStringLiteral("channels")}},
+             {ParamSpec::of(QStringLiteral("pattern"), ParamKind::Pattern, ParamAbsent::Required,
+                            QStringLiteral("A built-in or embedded pattern's name, or a "
+                                           "pattern file")),
+              channelsParam()}},
             {QStringLiteral("proportional"),
              QStringLiteral("Drives channels with clip(signal / ref, 0, 1)"),
              {{QStringLiteral("in"), PortType::Signal, false}},
              {{QStringLiteral("out"), PortType::Voice, true}},
-             {QStringLiteral("ref"), QStringLiteral("channels")}},
+             {ParamSpec::number(QStringLiteral("ref"), 1, QString(),
+                                QStringLiteral("The signal value that drives the channels "
+                                               "fully"))
+                  .above(0),
+              channelsParam()}},
             {QStringLiteral("device"),
              QStringLiteral("A device instance: mixes its voices into frames at its rate"),
              {{QStringLiteral("in"), PortType::Voice, true}},
              {},
-             {QStringLiteral("model"), QStringLiteral("policy")}},
+             {ParamSpec::of(QStringLiteral("model"), ParamKind::Model, ParamAbsent::Required,
+                            QStringLiteral("A built-in or embedded device model's name, or a "
+                                           "model file")),
+              ParamSpec::choice(QStringLiteral("policy"),
+                                {Player::mixPolicyName(Player::MixPolicy::Priority),
+                                 Player::mixPolicyName(Player::MixPolicy::Max),
+                                 Player::mixPolicyName(Player::MixPolicy::Sum)},
+                                Player::mixPolicyName(Player::MixPolicy::Priority),
+                                QStringLiteral("How voices meeting on a channel combine: the "
+                                               "highest priority's, the maximum, or the sum")),
+              ParamSpec::choice(QStringLiteral("hand"), gripperNames(), QString(),
+                                QStringLiteral("The hand that feels it; absent: the id's first "
+                                               "part when that is left or right (left.air), "
+                                               "else none (an overlay)"))
+                  .computed()}},
         };
     }();
     return types;

@@ -12,11 +12,32 @@ namespace {
 // Every parameter's JSON key and field, listed once for reading, writing and checking.
 DetectorParams fields(SlipDetector::Params &p)
 {
-    return {{QLatin1String("grasp"), &p.grasp},
-            {QLatin1String("loss"), &p.loss},
-            {QLatin1String("min"), &p.min},
-            {QLatin1String("hysteresis"), &p.hysteresis},
-            {QLatin1String("minDuration"), &p.minDuration}};
+    const QString contacts = QStringLiteral("contacts");
+    const QString seconds = QStringLiteral("s");
+    return {
+        {ParamSpec::number(QStringLiteral("grasp"), 0, QStringLiteral("N"),
+                           QStringLiteral("T_grasp: contacts count as a grasp while the grip "
+                                          "force is above it"))
+             .atLeast(0),
+         &p.grasp},
+        {ParamSpec::number(QStringLiteral("loss"), 0, contacts,
+                           QStringLiteral("N_loss: a slip is warned of while a grasp has fewer "
+                                          "contacts than this")),
+         &p.loss},
+        {ParamSpec::number(QStringLiteral("min"), 0, contacts,
+                           QStringLiteral("N_min: the contact count at which the slip warning "
+                                          "reaches full intensity")),
+         &p.min},
+        {ParamSpec::number(QStringLiteral("hysteresis"), 0, contacts,
+                           QStringLiteral("Slipping holds until the contacts rise this far "
+                                          "above loss"))
+             .atLeast(0),
+         &p.hysteresis},
+        {ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
+                           QStringLiteral("A message begins only after its condition has held "
+                                          "this long"))
+             .atLeast(0),
+         &p.minDuration}};
 }
 
 } // namespace
@@ -24,6 +45,12 @@ DetectorParams fields(SlipDetector::Params &p)
 bool SlipDetector::Params::read(const QJsonObject &json, QString *key, QString *reason)
 {
     return readDetectorParams(json, fields(*this), key, reason);
+}
+
+std::vector<ParamSpec> SlipDetector::Params::specs()
+{
+    Params defaults;
+    return detectorParamSpecs(fields(defaults));
 }
 
 QJsonObject SlipDetector::Params::toJson() const
@@ -35,26 +62,12 @@ QJsonObject SlipDetector::Params::toJson() const
 bool SlipDetector::Params::validate(QString *key, QString *reason) const
 {
     Params copy = *this;
-    if (!checkFiniteParams(fields(copy), key, reason))
+    if (!checkDetectorParams(fields(copy), key, reason))
         return false;
-    if (grasp < 0.0) {
-        return paramError(key, reason, QStringLiteral("grasp"),
-                          QStringLiteral("must not be negative, got %1").arg(formatNumber(grasp)));
-    }
     if (!(min < loss)) {
         return paramError(key, reason, QStringLiteral("loss"),
                           QStringLiteral("must be greater than min (%1), got %2")
                               .arg(formatNumber(min), formatNumber(loss)));
-    }
-    if (hysteresis < 0.0) {
-        return paramError(
-            key, reason, QStringLiteral("hysteresis"),
-            QStringLiteral("must not be negative, got %1").arg(formatNumber(hysteresis)));
-    }
-    if (minDuration < 0.0) {
-        return paramError(
-            key, reason, QStringLiteral("minDuration"),
-            QStringLiteral("must not be negative, got %1").arg(formatNumber(minDuration)));
     }
     return true;
 }

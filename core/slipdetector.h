@@ -3,6 +3,7 @@
 
 #include "detector.h"
 #include "messagetracker.h"
+#include "paramspec.h"
 
 namespace semhap {
 
@@ -29,6 +30,8 @@ public:
         bool read(const QJsonObject &json, QString *key, QString *reason);
         /** Every parameter, under the JSON keys read() accepts. */
         QJsonObject toJson() const;
+        /** Every parameter's spec, with the defaults above: what editors and docs show. */
+        static std::vector<ParamSpec> specs();
         /** min < loss, grasp >= 0, hysteresis and minDuration >= 0, all finite. */
         bool validate(QString *key, QString *reason) const;
     };

@@ -76,8 +76,9 @@ bool WaveformParser::bound(const QJsonObject &object, const QString &pointer,
         *out = Number::bound(index, Curve());
         return true;
     }
-    double gain = 1.0;
-    double offset = 0.0;
+    const WaveformType &param = *waveformType(QStringLiteral("param"));
+    double gain = param.field(gainKey)->defaultNumber;
+    double offset = param.field(offsetKey)->defaultNumber;
     if (object.contains(gainKey) &&
         !finiteNumber(object.value(gainKey), jsonPointerChild(pointer, gainKey), &gain)) {
         return false;
@@ -112,46 +113,29 @@ bool WaveformParser::parseNumber(const QJsonValue &json, const QString &pointer,
     return bound(object, pointer, QLatin1String("param"), out);
 }
 
-bool WaveformParser::checkRange(const Number &number, const QString &pointer, Range range)
+bool WaveformParser::fields(const QJsonObject &object, const QString &pointer,
+                            const WaveformType &type, std::vector<Number> *numbers)
 {
-    if (!number.isConstant())
-        return true;
-    const double value = number.value(nullptr);
-    switch (range) {
-    case Range::Any:
-        return true;
-    case Range::NonNegative:
-        if (value < 0.0)
-            return fail(pointer,
-                        QStringLiteral("must not be negative, got ") + QString::number(value));
-        return true;
-    case Range::Unit:
-        if (value < 0.0 || value > 1.0) {
-            return fail(pointer,
-                        QStringLiteral("must be between 0 and 1, got ") + QString::number(value));
-        }
-        return true;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (it.key() != QLatin1String("type") && !type.field(it.key()))
+            return fail(pointer, QStringLiteral("unknown key ") + quoted(it.key()));
+    }
+    for (const ParamSpec &spec : type.fields) {
+        if (spec.absent == ParamAbsent::Required && !object.contains(spec.name))
+            return fail(pointer, QStringLiteral("missing key ") + quoted(spec.name));
+        if (spec.kind != ParamKind::Number)
+            continue;
+        Number number(spec.defaultNumber);
+        const QString at = jsonPointerChild(pointer, spec.name);
+        QString reason;
+        if (object.contains(spec.name) && !parseNumber(object.value(spec.name), at, &number))
+            return false;
+        // Constants are checked here; parameter-bound values are clamped when sampled.
+        if (number.isConstant() && !spec.checkNumber(number.value(nullptr), &reason))
+            return fail(at, reason);
+        numbers->push_back(number);
     }
     return true;
-}
-
-bool WaveformParser::number(const QJsonObject &object, const QString &pointer, QLatin1String key,
-                            Range range, Number *out)
-{
-    const QString at = jsonPointerChild(pointer, key);
-    return require(object, pointer, key) && parseNumber(object.value(key), at, out) &&
-           checkRange(*out, at, range);
-}
-
-bool WaveformParser::optionalNumber(const QJsonObject &object, const QString &pointer,
-                                    QLatin1String key, Range range, double defaultValue,
-                                    Number *out)
-{
-    if (!object.contains(key)) {
-        *out = Number(defaultValue);
-        return true;
-    }
-    return number(object, pointer, key, range, out);
 }
 
 bool WaveformParser::startValue(const QJsonObject &object, const QString &pointer, StartValue *out)
@@ -182,8 +166,9 @@ bool WaveformParser::children(const QJsonObject &object, const QString &pointer,
                               std::vector<WaveformPtr> *out)
 {
     const QLatin1String key("of");
-    if (!checkKeys(object, pointer, {QLatin1String("type"), key}) ||
-        !require(object, pointer, key))
+    std::vector<Number> none;
+    if (!fields(object, pointer, *waveformType(object.value(QLatin1String("type")).toString()),
+                &none))
         return false;
     const QString at = jsonPointerChild(pointer, key);
     const QJsonValue of = object.value(key);
@@ -243,21 +228,18 @@ WaveformPtr WaveformParser::parse(const QJsonValue &json, const QString &pointer
 
 WaveformPtr WaveformParser::parseConst(const QJsonObject &object, const QString &pointer)
 {
-    Number value;
-    if (!checkKeys(object, pointer, {QLatin1String("type"), QLatin1String("value")}) ||
-        !number(object, pointer, QLatin1String("value"), Range::Any, &value)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("const")), &n))
         return nullptr;
-    }
-    return std::make_unique<ConstWaveform>(value);
+    return std::make_unique<ConstWaveform>(n[0]);
 }
 
 WaveformPtr WaveformParser::parseParam(const QJsonObject &object, const QString &pointer)
 {
+    // Gain and offset are plain numbers here: bound() reads them with the name.
+    std::vector<Number> ignored;
     Number value;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("name"), QLatin1String("gain"),
-                    QLatin1String("offset"), QLatin1String("curve")}) ||
-        !require(object, pointer, QLatin1String("name")) ||
+    if (!fields(object, pointer, *waveformType(QStringLiteral("param")), &ignored) ||
         !bound(object, pointer, QLatin1String("name"), &value)) {
         return nullptr;
     }
@@ -266,28 +248,22 @@ WaveformPtr WaveformParser::parseParam(const QJsonObject &object, const QString 
 
 WaveformPtr WaveformParser::parseRamp(const QJsonObject &object, const QString &pointer)
 {
-    Number to;
-    Number time;
+    std::vector<Number> n;
     StartValue from;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("to"), QLatin1String("time"),
-                    QLatin1String("from")}) ||
-        !number(object, pointer, QLatin1String("to"), Range::Any, &to) ||
-        !number(object, pointer, QLatin1String("time"), Range::NonNegative, &time) ||
+    if (!fields(object, pointer, *waveformType(QStringLiteral("ramp")), &n) ||
         !startValue(object, pointer, &from)) {
         return nullptr;
     }
-    return std::make_unique<RampWaveform>(to, time, from);
+    return std::make_unique<RampWaveform>(n[0], n[1], from);
 }
 
 WaveformPtr WaveformParser::parseKeyframes(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String key("points");
+    std::vector<Number> none;
     std::vector<std::pair<double, double>> points;
     StartValue from;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("points"), QLatin1String("from")}) ||
-        !require(object, pointer, key) ||
+    if (!fields(object, pointer, *waveformType(QStringLiteral("keyframes")), &none) ||
         !pairs(object.value(key), jsonPointerChild(pointer, key), &points) ||
         !startValue(object, pointer, &from)) {
         return nullptr;
@@ -309,54 +285,26 @@ WaveformPtr WaveformParser::parseKeyframes(const QJsonObject &object, const QStr
 
 WaveformPtr WaveformParser::parseSine(const QJsonObject &object, const QString &pointer)
 {
-    Number freq;
-    Number amp;
-    Number offset;
-    Number phase;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("freq"), QLatin1String("amp"),
-                    QLatin1String("offset"), QLatin1String("phase")}) ||
-        !number(object, pointer, QLatin1String("freq"), Range::NonNegative, &freq) ||
-        !optionalNumber(object, pointer, QLatin1String("amp"), Range::Any, 1.0, &amp) ||
-        !optionalNumber(object, pointer, QLatin1String("offset"), Range::Any, 0.0, &offset) ||
-        !optionalNumber(object, pointer, QLatin1String("phase"), Range::Any, 0.0, &phase)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("sine")), &n))
         return nullptr;
-    }
-    return std::make_unique<SineWaveform>(freq, amp, offset, phase);
+    return std::make_unique<SineWaveform>(n[0], n[1], n[2], n[3]);
 }
 
 WaveformPtr WaveformParser::parseSquare(const QJsonObject &object, const QString &pointer)
 {
-    Number freq;
-    Number duty;
-    Number high;
-    Number low;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("freq"), QLatin1String("duty"),
-                    QLatin1String("high"), QLatin1String("low")}) ||
-        !number(object, pointer, QLatin1String("freq"), Range::NonNegative, &freq) ||
-        !optionalNumber(object, pointer, QLatin1String("duty"), Range::Unit, 0.5, &duty) ||
-        !optionalNumber(object, pointer, QLatin1String("high"), Range::Any, 1.0, &high) ||
-        !optionalNumber(object, pointer, QLatin1String("low"), Range::Any, 0.0, &low)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("square")), &n))
         return nullptr;
-    }
-    return std::make_unique<SquareWaveform>(freq, duty, high, low);
+    return std::make_unique<SquareWaveform>(n[0], n[1], n[2], n[3]);
 }
 
 WaveformPtr WaveformParser::parsePulses(const QJsonObject &object, const QString &pointer)
 {
-    Number rate;
-    Number width;
-    Number amp;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), QLatin1String("rate"), QLatin1String("width"),
-                    QLatin1String("amp")}) ||
-        !number(object, pointer, QLatin1String("rate"), Range::NonNegative, &rate) ||
-        !number(object, pointer, QLatin1String("width"), Range::NonNegative, &width) ||
-        !optionalNumber(object, pointer, QLatin1String("amp"), Range::Any, 1.0, &amp)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("pulses")), &n))
         return nullptr;
-    }
-    return std::make_unique<PulsesWaveform>(rate, width, amp);
+    return std::make_unique<PulsesWaveform>(n[0], n[1], n[2]);
 }
 
 WaveformPtr WaveformParser::parseSum(const QJsonObject &object, const QString &pointer)
@@ -393,36 +341,23 @@ WaveformPtr WaveformParser::parseSequence(const QJsonObject &object, const QStri
 WaveformPtr WaveformParser::parseScale(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String inKey("in");
-    Number gain;
-    Number div;
-    Number offset;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), inKey, QLatin1String("gain"), QLatin1String("div"),
-                    QLatin1String("offset")}) ||
-        !require(object, pointer, inKey) ||
-        !optionalNumber(object, pointer, QLatin1String("gain"), Range::Any, 1.0, &gain) ||
-        !optionalNumber(object, pointer, QLatin1String("div"), Range::Any, 1.0, &div) ||
-        !optionalNumber(object, pointer, QLatin1String("offset"), Range::Any, 0.0, &offset)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("scale")), &n))
         return nullptr;
-    }
     WaveformPtr in = parse(object.value(inKey), jsonPointerChild(pointer, inKey));
     if (!in)
         return nullptr;
-    return std::make_unique<ScaleWaveform>(std::move(in), gain, div, offset);
+    return std::make_unique<ScaleWaveform>(std::move(in), n[0], n[1], n[2]);
 }
 
 WaveformPtr WaveformParser::parseClip(const QJsonObject &object, const QString &pointer)
 {
     const QLatin1String inKey("in");
-    Number min;
-    Number max;
-    if (!checkKeys(object, pointer,
-                   {QLatin1String("type"), inKey, QLatin1String("min"), QLatin1String("max")}) ||
-        !require(object, pointer, inKey) ||
-        !optionalNumber(object, pointer, QLatin1String("min"), Range::Any, 0.0, &min) ||
-        !optionalNumber(object, pointer, QLatin1String("max"), Range::Any, 1.0, &max)) {
+    std::vector<Number> n;
+    if (!fields(object, pointer, *waveformType(QStringLiteral("clip")), &n))
         return nullptr;
-    }
+    const Number &min = n[0];
+    const Number &max = n[1];
     if (min.isConstant() && max.isConstant() && min.value(nullptr) > max.value(nullptr)) {
         fail(jsonPointerChild(pointer, QStringLiteral("max")),
              QStringLiteral("must not be below min"));

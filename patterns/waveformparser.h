@@ -4,6 +4,7 @@
 #include "envelopes.h"
 #include "jsonreader.h"
 #include "waveform.h"
+#include "waveformtype.h"
 
 #include <QJsonObject>
 #include <QJsonValue>
@@ -30,18 +31,13 @@ public:
     bool parseNumber(const QJsonValue &json, const QString &pointer, Number *out);
 
 private:
-    enum class Range
-    {
-        Any,
-        NonNegative,
-        Unit
-    };
-
-    bool number(const QJsonObject &object, const QString &pointer, QLatin1String key, Range range,
-                Number *out);
-    bool optionalNumber(const QJsonObject &object, const QString &pointer, QLatin1String key,
-                        Range range, double defaultValue, Number *out);
-    bool checkRange(const Number &number, const QString &pointer, Range range);
+    /**
+     * Checks `object`'s keys against `type`'s fields and that the required ones are there;
+     * then reads its Number fields, in the table's order, into `numbers` (defaults for the
+     * absent ones), checking constants against their ranges.
+     */
+    bool fields(const QJsonObject &object, const QString &pointer, const WaveformType &type,
+                std::vector<Number> *numbers);
     bool pairs(const QJsonValue &json, const QString &pointer,
                std::vector<std::pair<double, double>> *out);
     bool startValue(const QJsonObject &object, const QString &pointer, StartValue *out);

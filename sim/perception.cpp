@@ -10,18 +10,15 @@ namespace semhap {
 Perception::Perception(const Router &router) : m_player(router.player())
 {
     for (int d = 0; d < m_player.deviceCount(); ++d) {
-        const QString &name = m_player.deviceName(d);
         const DeviceModel &model = m_player.deviceModel(d);
         Device device;
-        if (name.startsWith(QLatin1String("left.")))
-            device.hand = int(Gripper::Left);
-        else if (name.startsWith(QLatin1String("right.")))
-            device.hand = int(Gripper::Right);
+        Gripper hand = Gripper::Right;
+        if (router.deviceHand(d, &hand))
+            device.hand = int(hand);
         for (int c = 0; c < model.channelCount(); ++c) {
             device.filters.emplace_back(model, model.rate());
             const QString channel = model.channels()[size_t(c)].name;
             const QStringList parts = channel.split(QLatin1Char('.'));
-            Gripper hand = Gripper::Right;
             const bool overlay =
                 parts.size() == 2 && gripperFromName(parts[0], &hand) &&
                 (parts[1] == QLatin1String("confirm") || parts[1] == QLatin1String("warn"));

@@ -3,58 +3,47 @@
 
 #include "forcedetector.h"
 #include "player.h"
-#include "routergraph.h"
+#include "router.h"
 #include "slipdetector.h"
 
 #include <algorithm>
 
 namespace semhap {
 
-bool isIdleDevice(const QString &name, const Hands &present)
+bool isIdleDevice(const Router &router, int device, const Hands &present)
 {
     Gripper hand = Gripper::Right;
-    return gripperFromName(name.section(QLatin1Char('.'), 0, 0), &hand) && !present[size_t(hand)];
+    return router.deviceHand(device, &hand) && !present[size_t(hand)];
 }
 
-std::vector<LiveDevice> liveDevicesOf(const Player &player, const Hands &present)
+std::vector<LiveDevice> liveDevicesOf(const Router &router, const Hands &present)
 {
+    const Player &player = router.player();
     std::vector<LiveDevice> devices;
     for (int d = 0; d < player.deviceCount(); ++d) {
-        const QString &name = player.deviceName(d);
-        devices.push_back({name, player.deviceModel(d).name(),
-                           player.deviceModel(d).channelNames(), isIdleDevice(name, present)});
+        devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
+                           player.deviceModel(d).channelNames(),
+                           isIdleDevice(router, d, present)});
     }
     return devices;
 }
 
-std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph, const Hands &present)
+std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands &present)
 {
     std::array<GripperThresholds, 2> result{};
-    for (const RouterNode &node : graph.nodes) {
-        Gripper gripper = Gripper::Right;
-        if (!gripperFromName(node.params.value(QLatin1String("gripper")).toString(), &gripper) ||
-            !present[size_t(gripper)])
+    for (const Detector *detector : router.detectors()) {
+        if (!present[size_t(detector->gripper())])
             continue;
-        QJsonObject params = node.params;
-        params.remove(QLatin1String("gripper"));
-        QString key;
-        QString reason;
-        GripperThresholds &t = result[size_t(gripper)];
-        if (node.type == QLatin1String("force")) {
-            ForceDetector::Params p;
-            if (!p.read(params, &key, &reason))
-                continue;
+        GripperThresholds &t = result[size_t(detector->gripper())];
+        if (const auto *force = dynamic_cast<const ForceDetector *>(detector)) {
             t.hasForce = true;
-            t.grasp = p.grasp;
-            t.breakForce = p.brk;
-            t.max = p.max;
-        } else if (node.type == QLatin1String("slip")) {
-            SlipDetector::Params p;
-            if (!p.read(params, &key, &reason))
-                continue;
+            t.grasp = force->params().grasp;
+            t.breakForce = force->params().brk;
+            t.max = force->params().max;
+        } else if (const auto *slip = dynamic_cast<const SlipDetector *>(detector)) {
             t.hasSlip = true;
-            t.loss = p.loss;
-            t.min = p.min;
+            t.loss = slip->params().loss;
+            t.min = slip->params().min;
         }
     }
     return result;

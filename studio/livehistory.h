@@ -27,7 +27,7 @@ struct GripperThresholds
     double min = 0.0;
 };
 
-class RouterGraph;
+class Router;
 
 /** One device of the running router, as the panels list it. */
 struct LiveDevice
@@ -35,26 +35,24 @@ struct LiveDevice
     QString name;  ///< the router's device name (`right.vibro`)
     QString model; ///< the device model's name
     QStringList channels;
-    /** Its hand is not in the scene (`left.*` on a one-handed task): it never plays. */
+    /** Its hand is not in the scene (a left band on a one-handed task): it never plays. */
     bool idle = false;
 };
-
-class Player;
 
 /** Which hands a run has, by Gripper: a scene's grippers, or a session's recorded frames. */
 using Hands = std::array<bool, 2>;
 
 /**
- * The thresholds each present hand's detectors fire at, read from a router's graph; an
+ * The thresholds each present hand's detectors fire at, as the router compiled them; an
  * absent hand's detectors never fire, so it gets none.
  */
-std::array<GripperThresholds, 2> thresholdsOf(const RouterGraph &graph, const Hands &present);
+std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands &present);
 
-/** The player's devices as the panels list them; those of an absent hand are idle. */
-std::vector<LiveDevice> liveDevicesOf(const Player &player, const Hands &present);
+/** The router's devices as the panels list them; those of an absent hand are idle. */
+std::vector<LiveDevice> liveDevicesOf(const Router &router, const Hands &present);
 
-/** Whether device `name` (`left.vibro`) belongs to a hand the run does not have. */
-bool isIdleDevice(const QString &name, const Hands &present);
+/** Whether the router's device `device` belongs to a hand the run does not have. */
+bool isIdleDevice(const Router &router, int device, const Hands &present);
 
 /** A semantic message from its begin to its end (open while `active`). */
 struct MessageSpan

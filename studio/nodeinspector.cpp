@@ -3,16 +3,19 @@
 
 #include "numberedit.h"
 #include "patterndocument.h"
+#include "waveformtype.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHash>
 #include <QJsonArray>
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <functional>
 
 namespace semhap {
@@ -91,50 +94,36 @@ void NodeInspector::scheduleRebuild()
 
 QStringList NodeInspector::waveformTypes()
 {
-    return {QStringLiteral("const"),    QStringLiteral("ramp"),   QStringLiteral("keyframes"),
-            QStringLiteral("sine"),     QStringLiteral("square"), QStringLiteral("pulses"),
-            QStringLiteral("param"),    QStringLiteral("sum"),    QStringLiteral("product"),
-            QStringLiteral("sequence"), QStringLiteral("scale"),  QStringLiteral("clip")};
+    QStringList names;
+    for (const WaveformType &type : semhap::waveformTypes())
+        names.append(type.type);
+    return names;
 }
 
 QJsonObject NodeInspector::waveformTemplate(const QString &type, const QJsonValue &previous)
 {
-    const auto node = [](const QString &t,
-                         std::initializer_list<std::pair<QString, QJsonValue>> keys) {
-        QJsonObject o(keys);
-        o.insert(QStringLiteral("type"), t);
-        return o;
-    };
-    const QJsonValue input = previous.isObject()
-                                 ? previous
-                                 : node(QStringLiteral("const"), {{QStringLiteral("value"), 1}});
-    if (type == QLatin1String("ramp"))
-        return node(type, {{QStringLiteral("to"), 1}, {QStringLiteral("time"), 0.5}});
-    if (type == QLatin1String("keyframes"))
-        return node(type,
-                    {{QStringLiteral("points"),
-                      QJsonArray{QJsonArray{0, 0}, QJsonArray{0.2, 1}, QJsonArray{0.5, 0.5}}}});
-    if (type == QLatin1String("sine") || type == QLatin1String("square"))
-        return node(type, {{QStringLiteral("freq"), 5}});
-    if (type == QLatin1String("pulses"))
-        return node(type, {{QStringLiteral("rate"), 5}, {QStringLiteral("width"), 0.025}});
-    if (type == QLatin1String("param"))
-        return node(type, {{QStringLiteral("name"), QStringLiteral("intensity")}});
-    if (type == QLatin1String("sum") || type == QLatin1String("product"))
-        return node(
-            type,
-            {{QStringLiteral("of"),
-              QJsonArray{input, node(QStringLiteral("square"), {{QStringLiteral("freq"), 5}})}}});
-    if (type == QLatin1String("sequence"))
-        return node(type,
-                    {{QStringLiteral("of"),
-                      QJsonArray{node(QStringLiteral("ramp"),
-                                      {{QStringLiteral("to"), 1}, {QStringLiteral("time"), 0.2}}),
-                                 node(QStringLiteral("ramp"), {{QStringLiteral("to"), 0},
-                                                               {QStringLiteral("time"), 0.2}})}}});
-    if (type == QLatin1String("scale") || type == QLatin1String("clip"))
-        return node(type, {{QStringLiteral("in"), input}});
-    return node(QStringLiteral("const"), {{QStringLiteral("value"), 1}});
+    const WaveformType *spec = waveformType(type);
+    if (!spec)
+        spec = waveformType(QStringLiteral("const"));
+    QJsonObject node{{QStringLiteral("type"), spec->type}};
+    // Required fields get the table's starting values; a modifier keeps `previous` as its
+    // (first) input, so changing a node's type to a combinator wraps it.
+    for (const ParamSpec &field : spec->fields) {
+        if (field.absent != ParamAbsent::Required)
+            continue;
+        if (field.kind == ParamKind::Waveform) {
+            node.insert(field.name, previous.isObject() ? previous
+                                                        : waveformTemplate(QStringLiteral("const"), {}));
+        } else if (field.kind == ParamKind::Waveforms) {
+            QJsonArray inputs = field.example.toArray();
+            if (previous.isObject() && !inputs.isEmpty())
+                inputs.replace(0, previous);
+            node.insert(field.name, inputs);
+        } else {
+            node.insert(field.name, field.example);
+        }
+    }
+    return node;
 }
 
 QStringList NodeInspector::paramNames() const
@@ -245,64 +234,88 @@ void NodeInspector::addWaveformFields(const QJsonObject &node)
     });
     m_form->addRow(tr("Type"), type);
 
-    const QString kind = node.value(QLatin1String("type")).toString();
-    const double inf = Unbounded;
-    if (kind == QLatin1String("const")) {
-        addNumber(node, QStringLiteral("value"), tr("Value"), 0, -inf, inf);
-    } else if (kind == QLatin1String("param")) {
-        auto *name = new QComboBox(this);
-        name->setObjectName(fieldName(QStringLiteral("name")));
-        name->addItems(paramNames());
-        name->setCurrentText(node.value(QLatin1String("name")).toString());
-        connect(name, &QComboBox::activated, this,
-                [this, name] { edit(QStringLiteral("name"), name->currentText()); });
-        m_form->addRow(tr("Parameter"), name);
-        addNumber(node, QStringLiteral("gain"), tr("Gain"), 1, -inf, inf);
-        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
-    } else if (kind == QLatin1String("ramp")) {
-        addNumber(node, QStringLiteral("to"), tr("To"), 0, -inf, inf);
-        addNumber(node, QStringLiteral("time"), tr("Time (s)"), 0, 0, inf);
-        addStart(node);
-    } else if (kind == QLatin1String("keyframes")) {
-        addText(QStringLiteral("points"), tr("Points (t:v, …)"),
-                pointsText(node.value(QLatin1String("points")).toArray()), pointsJson);
-        addStart(node);
-    } else if (kind == QLatin1String("sine")) {
-        addNumber(node, QStringLiteral("freq"), tr("Frequency (Hz)"), 0, 0, inf);
-        addNumber(node, QStringLiteral("amp"), tr("Amplitude"), 1, -inf, inf);
-        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
-        addNumber(node, QStringLiteral("phase"), tr("Phase (cycles)"), 0, -inf, inf);
-    } else if (kind == QLatin1String("square")) {
-        addNumber(node, QStringLiteral("freq"), tr("Frequency (Hz)"), 0, 0, inf);
-        addNumber(node, QStringLiteral("duty"), tr("Duty"), 0.5, 0, 1);
-        addNumber(node, QStringLiteral("high"), tr("High"), 1, -inf, inf);
-        addNumber(node, QStringLiteral("low"), tr("Low"), 0, -inf, inf);
-    } else if (kind == QLatin1String("pulses")) {
-        addNumber(node, QStringLiteral("rate"), tr("Rate (Hz)"), 0, 0, inf);
-        addNumber(node, QStringLiteral("width"), tr("Width (s)"), 0, 0, inf);
-        addNumber(node, QStringLiteral("amp"), tr("Amplitude"), 1, -inf, inf);
-    } else if (kind == QLatin1String("scale")) {
-        addNumber(node, QStringLiteral("gain"), tr("Gain"), 1, -inf, inf);
-        addNumber(node, QStringLiteral("div"), tr("Divide by"), 1, -inf, inf);
-        addNumber(node, QStringLiteral("offset"), tr("Offset"), 0, -inf, inf);
-    } else if (kind == QLatin1String("clip")) {
-        addNumber(node, QStringLiteral("min"), tr("Minimum"), 0, -inf, inf);
-        addNumber(node, QStringLiteral("max"), tr("Maximum"), 1, -inf, inf);
-    } else {
-        m_form->addRow(QString(),
-                       new QLabel(tr("Its inputs are the children in the tree."), this));
+    const WaveformType *kind = waveformType(node.value(QLatin1String("type")).toString());
+    if (!kind)
+        return;
+    bool inputs = false;
+    for (const ParamSpec &field : kind->fields) {
+        const QString label = fieldLabel(field);
+        switch (field.kind) {
+        case ParamKind::Number:
+            addNumber(node, field, label);
+            break;
+        case ParamKind::ParamName: {
+            auto *name = new QComboBox(this);
+            name->setObjectName(fieldName(field.name));
+            name->setToolTip(field.help);
+            name->addItems(paramNames());
+            name->setCurrentText(node.value(field.name).toString());
+            connect(name, &QComboBox::activated, this, [this, name, key = field.name] {
+                edit(key, name->currentText());
+            });
+            m_form->addRow(label, name);
+            break;
+        }
+        case ParamKind::Points:
+            addText(field.name, label + tr(" (t:v, …)"),
+                    pointsText(node.value(field.name).toArray()), pointsJson);
+            break;
+        case ParamKind::Start:
+            addStart(node);
+            break;
+        case ParamKind::Waveform:
+        case ParamKind::Waveforms:
+            inputs = true;
+            break;
+        default:
+            break;
+        }
     }
+    if (inputs)
+        m_form->addRow(QString(), new QLabel(tr("Its inputs are the children in the tree."), this));
 }
 
-void NodeInspector::addNumber(const QJsonObject &node, const QString &key, const QString &label,
-                              double defaultValue, double minimum, double maximum)
+QString NodeInspector::fieldLabel(const ParamSpec &field)
+{
+    // Display names only: which fields exist, their defaults and ranges are the table's.
+    static const QHash<QString, const char *> names{
+        {QStringLiteral("value"), QT_TR_NOOP("Value")},
+        {QStringLiteral("to"), QT_TR_NOOP("To")},
+        {QStringLiteral("time"), QT_TR_NOOP("Time")},
+        {QStringLiteral("points"), QT_TR_NOOP("Points")},
+        {QStringLiteral("freq"), QT_TR_NOOP("Frequency")},
+        {QStringLiteral("amp"), QT_TR_NOOP("Amplitude")},
+        {QStringLiteral("offset"), QT_TR_NOOP("Offset")},
+        {QStringLiteral("phase"), QT_TR_NOOP("Phase")},
+        {QStringLiteral("duty"), QT_TR_NOOP("Duty")},
+        {QStringLiteral("high"), QT_TR_NOOP("High")},
+        {QStringLiteral("low"), QT_TR_NOOP("Low")},
+        {QStringLiteral("rate"), QT_TR_NOOP("Rate")},
+        {QStringLiteral("width"), QT_TR_NOOP("Width")},
+        {QStringLiteral("name"), QT_TR_NOOP("Parameter")},
+        {QStringLiteral("gain"), QT_TR_NOOP("Gain")},
+        {QStringLiteral("div"), QT_TR_NOOP("Divide by")},
+        {QStringLiteral("min"), QT_TR_NOOP("Minimum")},
+        {QStringLiteral("max"), QT_TR_NOOP("Maximum")},
+        {QStringLiteral("curve"), QT_TR_NOOP("Curve")},
+    };
+    const char *name = names.value(field.name);
+    const QString label = name ? tr(name) : field.name;
+    return field.unit.isEmpty() ? label : tr("%1 (%2)").arg(label, field.unit);
+}
+
+void NodeInspector::addNumber(const QJsonObject &node, const ParamSpec &field,
+                              const QString &label)
 {
     auto *edit = new NumberEdit(this);
+    const QString key = field.name;
     edit->setObjectName(fieldName(key));
+    edit->setToolTip(field.help);
     // The `param` waveform maps through plain numbers; everywhere else a Number may bind.
     const bool plain = node.value(QLatin1String("type")) == QLatin1String("param");
-    edit->setNumber(node.contains(key) ? node.value(key) : QJsonValue(defaultValue),
-                    plain ? QStringList() : paramNames(), minimum, maximum);
+    edit->setNumber(node.contains(key) ? node.value(key) : QJsonValue(field.defaultNumber),
+                    plain ? QStringList() : paramNames(), std::max(field.minimum, -Unbounded),
+                    std::min(field.maximum, Unbounded));
     connect(edit, &NumberEdit::edited, this,
             [this, key](const QJsonValue &value) { this->edit(key, value); });
     m_form->addRow(label, edit);
@@ -330,7 +343,8 @@ void NodeInspector::addStart(const QJsonObject &node)
     });
     m_form->addRow(tr("Starts from"), from);
     if (from->currentIndex() == 2)
-        addNumber(node, QStringLiteral("from"), tr("Start value"), 0, -Unbounded, Unbounded);
+        addNumber(node, ParamSpec::number(QStringLiteral("from"), 0, QString(), from->toolTip()),
+                  tr("Start value"));
 }
 
 void NodeInspector::addText(const QString &key, const QString &label, const QString &text,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paramspec.h"
+
 #include <QJsonObject>
 #include <QWidget>
 
@@ -41,8 +43,9 @@ private:
     void addPatternFields();
     void addTrackFields();
     void addWaveformFields(const QJsonObject &node);
-    void addNumber(const QJsonObject &node, const QString &key, const QString &label,
-                   double defaultValue, double minimum, double maximum);
+    void addNumber(const QJsonObject &node, const ParamSpec &field, const QString &label);
+    /** A field's translated display name and unit: "Frequency (Hz)". */
+    static QString fieldLabel(const ParamSpec &field);
     void addStart(const QJsonObject &node);
     /** A line edit; `toJson` gives null for text it does not understand, undefined to remove. */
     void addText(const QString &key, const QString &label, const QString &text,

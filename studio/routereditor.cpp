@@ -6,7 +6,6 @@
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
-#include "routernodes.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "userpatterns.h"
@@ -25,6 +24,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLocale>
 #include <QMenu>
 #include <QMimeData>
 #include <QScrollArea>
@@ -376,8 +376,7 @@ QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
 
 bool RouterEditor::connectPorts(const RouterLink &link, QString *reason)
 {
-    *reason = m_scene->checkLink(link);
-    if (!reason->isEmpty()) {
+    if (!graph().checkLink(link, reason)) {
         showStatus(tr("Not connected: %1").arg(*reason), true);
         return false;
     }
@@ -778,78 +777,50 @@ void RouterEditor::rebuildInspector()
     });
     form->addRow(tr("id"), idEdit);
 
-    QStringList keys = type ? type->params : QStringList();
-    if (node.type == QLatin1String("pattern")) {
-        // A pattern's own parameters may be set on the node: their defaults for this voice.
-        const QString name = node.params.value(QLatin1String("pattern")).toString();
-        QString ignored;
-        const PatternPtr pattern = name.isEmpty() ? nullptr : graph().pattern(name, &ignored);
-        for (int p = 0; pattern && p < pattern->params().size(); ++p)
-            keys.append(pattern->params().name(p));
-    }
+    const std::vector<ParamSpec> specs = graph().paramsOf(node);
+    for (const ParamSpec &spec : specs)
+        addField(form, node, spec.name, &spec);
     for (auto it = node.params.begin(); it != node.params.end(); ++it) {
-        if (!keys.contains(it.key()))
-            keys.append(it.key()); // unknown: shown so it can be cleared
+        if (!findParamSpec(specs, it.key()))
+            addField(form, node, it.key(), nullptr); // unknown: shown so it can be cleared
     }
-    for (const QString &key : keys)
-        addField(form, node, key);
     scroll->setWidget(page);
 }
 
-void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key)
+void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key,
+                            const ParamSpec *spec)
 {
     const QJsonValue value = node.params.value(key);
-    // Nodes whose gripper (and a threshold's message) is required, not a match-anything filter.
-    const bool detector =
-        node.type == QLatin1String("force") || node.type == QLatin1String("slip") ||
-        node.type == QLatin1String("signal") || node.type == QLatin1String("threshold");
-    const QString any = tr("(any)");
-    const QString none = tr("(none)");
-    const QString standard = tr("(default)");
-    QString unset;
-    QStringList choices;
-    bool editable = false;
-    if (key == QLatin1String("gripper")) {
-        unset = detector ? none : any;
-        choices = {gripperName(Gripper::Left), gripperName(Gripper::Right)};
-    } else if (key == QLatin1String("message")) {
-        unset = detector ? none : any;
-        choices = {messageName(Message::Grasp), messageName(Message::Break),
-                   messageName(Message::Slip)};
-    } else if (key == QLatin1String("category")) {
-        unset = any;
-        choices = {categoryName(Category::Confirmation), categoryName(Category::Exception)};
-    } else if (key == QLatin1String("mode")) {
-        unset = standard;
-        choices = {QStringLiteral("block"), QStringLiteral("open")};
-    } else if (key == QLatin1String("quantity")) {
-        unset = none;
-        choices = SignalNode::quantityNames();
-    } else if (key == QLatin1String("policy")) {
-        unset = standard;
-        choices = {QStringLiteral("priority"), QStringLiteral("max"), QStringLiteral("sum")};
-    } else if (key == QLatin1String("pattern") && node.type == QLatin1String("pattern")) {
-        editable = true;
-        for (const PatternPtr &pattern : graph().patterns)
-            choices.append(pattern->name());
-        choices.append(PatternLibrary::builtinNames());
-        // The designer's saved patterns, by path: the router loads them from there.
-        choices.append(userPatternFiles());
-    } else if (key == QLatin1String("model") && node.type == QLatin1String("device")) {
-        editable = true;
-        for (const DeviceModelPtr &model : graph().models)
-            choices.append(model->name());
-        choices.append(DeviceModelLibrary::builtinNames());
-    }
+    const ParamKind kind = spec ? spec->kind : ParamKind::Points;
+    const bool name = kind == ParamKind::Pattern || kind == ParamKind::Model;
     const QString id = node.id;
     const QString objectName = QStringLiteral("param:") + key;
-    if (!unset.isEmpty() || editable) {
+    const QString help = spec ? spec->help : tr("Not a parameter of this node: clear it");
+    auto *label = new QLabel(spec && !spec->unit.isEmpty()
+                                 ? QStringLiteral("%1 (%2)").arg(key, spec->unit)
+                                 : key,
+                             form->parentWidget());
+    label->setToolTip(help);
+    if (kind == ParamKind::Choice || kind == ParamKind::Choices || name) {
+        QStringList choices = spec->choices;
+        if (kind == ParamKind::Pattern) {
+            for (const PatternPtr &pattern : graph().patterns)
+                choices.append(pattern->name());
+            choices.append(PatternLibrary::builtinNames());
+            // The designer's saved patterns, by path: the router loads them from there.
+            choices.append(userPatternFiles());
+        } else if (kind == ParamKind::Model) {
+            for (const DeviceModelPtr &model : graph().models)
+                choices.append(model->name());
+            choices.append(DeviceModelLibrary::builtinNames());
+        }
         auto *combo = new QComboBox(form->parentWidget());
         combo->setObjectName(objectName);
-        combo->setEditable(editable);
+        combo->setToolTip(help);
+        combo->setEditable(name);
         combo->setInsertPolicy(QComboBox::NoInsert);
-        if (!editable)
-            combo->addItem(unset, QString());
+        if (!name)
+            combo->addItem(absentText(*spec), QString());
         for (const QString &choice : choices)
             combo->addItem(choice, choice);
         const QString current = valueText(value);
@@ -858,30 +829,48 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
             combo->addItem(current, current); // a list, a path: shown as it is
             at = combo->count() - 1;
         }
-        if (editable)
+        if (name) {
             combo->setEditText(current);
-        else
-            combo->setCurrentIndex(std::max(at, 0));
-        if (editable) {
             connect(combo, &QComboBox::textActivated, this,
                     [this, id, key](const QString &text) { commitText(id, key, text); });
             connect(combo->lineEdit(), &QLineEdit::editingFinished, this,
                     [this, id, key, combo] { commitText(id, key, combo->currentText()); });
         } else {
+            combo->setCurrentIndex(std::max(at, 0));
             connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {
                 commitText(id, key, combo->itemData(i).toString());
             });
         }
-        form->addRow(key, combo);
+        form->addRow(label, combo);
         return;
     }
     auto *edit = new QLineEdit(valueText(value), form->parentWidget());
     edit->setObjectName(objectName);
-    edit->setPlaceholderText(standard);
-    edit->setToolTip(tr("A number, a name or JSON (lists, curves); empty: the default"));
+    edit->setPlaceholderText(spec ? absentText(*spec) : QString());
+    edit->setToolTip(help);
     connect(edit, &QLineEdit::editingFinished, this,
             [this, id, key, edit] { commitText(id, key, edit->text()); });
-    form->addRow(key, edit);
+    form->addRow(label, edit);
+}
+
+QString RouterEditor::absentText(const ParamSpec &spec)
+{
+    switch (spec.absent) {
+    case ParamAbsent::Required:
+        return tr("(none)");
+    case ParamAbsent::Any:
+        return tr("(any)");
+    case ParamAbsent::Computed:
+        return tr("(automatic)");
+    case ParamAbsent::Default:
+        break;
+    }
+    const QJsonValue standard = spec.defaultValue();
+    if (standard.isDouble())
+        return tr("(default: %1)").arg(QLocale().toString(standard.toDouble()));
+    if (standard.isString())
+        return tr("(default: %1)").arg(standard.toString());
+    return tr("(default)");
 }
 
 void RouterEditor::commitText(const QString &id, const QString &key, const QString &text)
@@ -891,7 +880,9 @@ void RouterEditor::commitText(const QString &id, const QString &key, const QStri
         return;
     const QJsonValue value = parseValue(text);
     // A numeric-looking pattern or model name is still a name.
-    const bool name = key == QLatin1String("pattern") || key == QLatin1String("model");
+    const ParamSpec *spec = findParamSpec(graph().paramsOf(graph().nodes[size_t(index)]), key);
+    const bool name =
+        spec && (spec->kind == ParamKind::Pattern || spec->kind == ParamKind::Model);
     setParam(id, key, name && !value.isUndefined() ? QJsonValue(text.trimmed()) : value);
 }
 

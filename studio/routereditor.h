@@ -108,7 +108,11 @@ private:
     void createPalette();
     void rebuildInspector();
     void scheduleInspector();
-    void addField(QFormLayout *form, const RouterNode &node, const QString &key);
+    /** A field for parameter `key`, built from its spec (null: a parameter the type lacks). */
+    void addField(QFormLayout *form, const RouterNode &node, const QString &key,
+                  const ParamSpec *spec);
+    /** What the field shows when the parameter is absent: "(default: 20)", "(any)"… */
+    static QString absentText(const ParamSpec &spec);
     void commitText(const QString &id, const QString &key, const QString &text);
     void showStatus(const QString &text, bool warning);
     void onGraphChanged();

@@ -140,7 +140,7 @@ void RouterScene::refreshNode(RouterNodeItem *item, const RouterNode &node)
 {
     item->setId(node.id);
     item->setSummary(summaryOf(node));
-    item->setPorts(inputsOf(node), outputsOf(node));
+    item->setPorts(m_graph.inputsOf(node), RouterGraph::outputsOf(node));
     item->setError(m_nodeErrors.value(node.id));
 }
 
@@ -243,99 +243,6 @@ std::vector<int> RouterScene::selectedLinks() const
     return links;
 }
 
-std::vector<PortSpec> RouterScene::inputsOf(const RouterNode &node) const
-{
-    return m_graph.inputsOf(node);
-}
-
-std::vector<PortSpec> RouterScene::outputsOf(const RouterNode &node) const
-{
-    const RouterNodeType *type = routerNodeType(node.type);
-    return type ? type->outputs : std::vector<PortSpec>();
-}
-
-QString RouterScene::portName(const QString &node, const QString &port, bool output) const
-{
-    if (!port.isEmpty())
-        return port;
-    const int index = m_graph.nodeIndex(node);
-    if (index < 0)
-        return QString();
-    const std::vector<PortSpec> ports =
-        output ? outputsOf(m_graph.nodes[size_t(index)]) : inputsOf(m_graph.nodes[size_t(index)]);
-    return ports.empty() ? QString() : ports.front().name;
-}
-
-bool RouterScene::reaches(const QString &from, const QString &to) const
-{
-    std::vector<QString> stack{from};
-    std::set<QString> seen;
-    while (!stack.empty()) {
-        const QString node = stack.back();
-        stack.pop_back();
-        if (node == to)
-            return true;
-        if (!seen.insert(node).second)
-            continue;
-        for (const RouterLink &link : m_graph.links) {
-            if (link.from == node)
-                stack.push_back(link.to);
-        }
-    }
-    return false;
-}
-
-QString RouterScene::checkLink(const RouterLink &link) const
-{
-    const int fromIndex = m_graph.nodeIndex(link.from);
-    const int toIndex = m_graph.nodeIndex(link.to);
-    if (fromIndex < 0 || toIndex < 0)
-        return tr("there is no node '%1'").arg(fromIndex < 0 ? link.from : link.to);
-    const RouterNode &from = m_graph.nodes[size_t(fromIndex)];
-    const RouterNode &to = m_graph.nodes[size_t(toIndex)];
-    const QString fromPort = portName(link.from, link.fromPort, true);
-    const QString toPort = portName(link.to, link.toPort, false);
-    const std::vector<PortSpec> outputs = outputsOf(from);
-    const std::vector<PortSpec> inputs = inputsOf(to);
-    const auto out = std::find_if(outputs.begin(), outputs.end(),
-                                  [&](const PortSpec &p) { return p.name == fromPort; });
-    const auto in = std::find_if(inputs.begin(), inputs.end(),
-                                 [&](const PortSpec &p) { return p.name == toPort; });
-    if (out == outputs.end())
-        return tr("node '%1' (%2) has no output '%3'").arg(from.id, from.type, fromPort);
-    if (in == inputs.end())
-        return tr("node '%1' (%2) has no input '%3'").arg(to.id, to.type, toPort);
-    if (from.id == to.id)
-        return tr("a node cannot feed itself");
-    if (out->type != in->type) {
-        const auto article = [](PortType type) {
-            switch (type) {
-            case PortType::Event:
-                return tr("an event");
-            case PortType::Signal:
-                return tr("a signal");
-            case PortType::Voice:
-                return tr("a voice");
-            }
-            return QString();
-        };
-        return tr("%1 output cannot feed %2 input: '%3' (%4) sends %5, '%6' (%7) takes %8")
-            .arg(article(out->type), article(in->type), from.id, from.type,
-                 portTypeName(out->type), to.id, to.type, portTypeName(in->type));
-    }
-    for (const RouterLink &other : m_graph.links) {
-        if (other.to != to.id || portName(other.to, other.toPort, false) != toPort)
-            continue;
-        if (other.from == from.id && portName(other.from, other.fromPort, true) == fromPort)
-            return tr("'%1' already feeds '%2:%3'").arg(from.id, to.id, toPort);
-        if (!in->multiple)
-            return tr("'%1:%2' takes a single link and already has one").arg(to.id, toPort);
-    }
-    if (reaches(to.id, from.id))
-        return tr("this link would make a cycle: '%1' already feeds '%2'").arg(to.id, from.id);
-    return QString();
-}
-
 QString RouterScene::uniqueId(const QString &base) const
 {
     if (m_graph.nodeIndex(base) < 0)
@@ -361,7 +268,7 @@ std::map<QString, QPointF> RouterScene::arrangedPositions() const
     const auto nodeHeight = [this](int i) {
         const RouterNode &node = m_graph.nodes[size_t(i)];
         const size_t rows =
-            std::max<size_t>({inputsOf(node).size(), outputsOf(node).size(), size_t(1)});
+            std::max<size_t>({m_graph.inputsOf(node).size(), RouterGraph::outputsOf(node).size(), size_t(1)});
         return 36.0 + double(rows) * 18.0 + 18.0;
     };
     for (size_t c = 0; c < columns.size(); ++c) {
@@ -407,8 +314,8 @@ void RouterScene::rebuildWires()
         const RouterLink &link = m_graph.links[j];
         RouterNodeItem *from = nodeItem(link.from);
         RouterNodeItem *to = nodeItem(link.to);
-        const QString fromPort = portName(link.from, link.fromPort, true);
-        const QString toPort = portName(link.to, link.toPort, false);
+        const QString fromPort = m_graph.portOf(link.from, link.fromPort, true);
+        const QString toPort = m_graph.portOf(link.to, link.toPort, false);
         RouterWireItem *wire = nullptr;
         if (from && to) {
             const auto out = std::find_if(from->outputs().begin(), from->outputs().end(),
@@ -525,11 +432,11 @@ void RouterScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
     const RouterPort &in = m_dragFrom.output ? target : m_dragFrom;
     // Default ports stay implicit, as the presets write them.
     const auto explicitName = [this](const RouterPort &port) {
-        return portName(port.node, QString(), port.output) == port.port ? QString() : port.port;
+        return m_graph.portOf(port.node, QString(), port.output) == port.port ? QString() : port.port;
     };
     const RouterLink link{out.node, explicitName(out), in.node, explicitName(in)};
-    const QString reason = checkLink(link);
-    if (!reason.isEmpty())
+    QString reason;
+    if (!m_graph.checkLink(link, &reason))
         emit connectRefused(reason, event->scenePos());
     else
         emit connectRequested(link);

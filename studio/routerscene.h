@@ -58,14 +58,6 @@ public:
     /** Indexes of the selected wires' links. */
     std::vector<int> selectedLinks() const;
 
-    /** A node's input ports: its type's, and for a pattern node one per pattern parameter. */
-    std::vector<PortSpec> inputsOf(const RouterNode &node) const;
-    std::vector<PortSpec> outputsOf(const RouterNode &node) const;
-    /**
-     * Why `link` cannot be made (the compiler's rules: ports exist, types match, a single
-     * input is free, no cycle, not a duplicate); empty when it can.
-     */
-    QString checkLink(const RouterLink &link) const;
     /** `base` if no node has that id, else `base` with the lowest free number appended. */
     QString uniqueId(const QString &base) const;
     /** Positions in columns by kind (detectors, logic, sources, devices), rows by flow. */
@@ -113,8 +105,6 @@ private:
     void rebuildWires();
     void updateWires(RouterNodeItem *item);
     bool portUnder(const QPointF &scenePos, RouterPort *port) const;
-    QString portName(const QString &node, const QString &port, bool output) const;
-    bool reaches(const QString &from, const QString &to) const;
     void refreshState(const QString &id);
     void fade();
 

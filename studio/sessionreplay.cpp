@@ -87,10 +87,10 @@ bool SessionReplay::open(const QString &path, QString *error)
         const int index = router ? router->player().deviceIndex(name) : -1;
         recorded.devices.push_back(
             {name, index >= 0 ? router->player().deviceModel(index).name() : QString(),
-             reader->channelNames(d), isIdleDevice(name, hands)});
+             reader->channelNames(d), index >= 0 && isIdleDevice(*router, index, hands)});
     }
     if (router)
-        recorded.thresholds = thresholdsOf(graph, hands);
+        recorded.thresholds = thresholdsOf(*router, hands);
     recorded.nodeIds = reader->nodeNames();
 
     m_path = reader->path();
@@ -157,9 +157,9 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
         return false;
     }
     Streams streams;
-    streams.devices = liveDevicesOf(router->player(), m_hands);
+    streams.devices = liveDevicesOf(*router, m_hands);
     streams.nodeIds = router->nodeIds();
-    streams.thresholds = thresholdsOf(graph, m_hands);
+    streams.thresholds = thresholdsOf(*router, m_hands);
     Pipeline pipeline(std::move(router));
     Collector collector;
     for (const ContactFrame &frame : m_frames)

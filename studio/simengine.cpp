@@ -191,7 +191,7 @@ void SimEngine::install()
 
     drain(); // whatever the old run left in the feed goes before the new history starts
     m_historyAttached = true;
-    m_history.start(liveDevicesOf(player, hands()), shownThresholds(),
+    m_history.start(liveDevicesOf(pipeline().router(), hands()), shownThresholds(),
                     pipeline().router().nodeIds());
     // A live rig has no task to count.
     m_history.setMetrics(m_run ? m_run->metrics() : QJsonObject());
@@ -282,8 +282,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         recording->finish();
         emit recordingChanged(false);
     }
-    const Player &player = pipeline().router().player();
-    m_history.setRouter(liveDevicesOf(player, hands()), shownThresholds(),
+    m_history.setRouter(liveDevicesOf(pipeline().router(), hands()), shownThresholds(),
                         pipeline().router().nodeIds());
     m_appliedGraph = std::make_unique<RouterGraph>(graph);
     // A graph from a file or preset is named by it; an untitled one runs over the last.
@@ -309,7 +308,7 @@ Hands SimEngine::hands() const
 
 std::array<GripperThresholds, 2> SimEngine::shownThresholds()
 {
-    return thresholdsOf(routerGraph(), hands());
+    return thresholdsOf(pipeline().router(), hands());
 }
 
 bool SimEngine::reset(QString *error)

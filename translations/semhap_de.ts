@@ -999,24 +999,8 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Zielwert</translation>
     </message>
     <message>
-        <source>Time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
-    <message>
-        <source>Points (t:v, …)</source>
-        <translation>Punkte (t:v, …)</translation>
-    </message>
-    <message>
-        <source>Frequency (Hz)</source>
-        <translation>Frequenz (Hz)</translation>
-    </message>
-    <message>
         <source>Amplitude</source>
         <translation>Amplitude</translation>
-    </message>
-    <message>
-        <source>Phase (cycles)</source>
-        <translation>Phase (Perioden)</translation>
     </message>
     <message>
         <source>Duty</source>
@@ -1029,14 +1013,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Low</source>
         <translation>Tiefpegel</translation>
-    </message>
-    <message>
-        <source>Rate (Hz)</source>
-        <translation>Rate (Hz)</translation>
-    </message>
-    <message>
-        <source>Width (s)</source>
-        <translation>Breite (s)</translation>
     </message>
     <message>
         <source>Divide by</source>
@@ -1081,6 +1057,42 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Not understood; nothing was changed</source>
         <translation>Nicht verstanden; nichts wurde geändert</translation>
+    </message>
+    <message>
+        <source> (t:v, …)</source>
+        <translation> (t:w, …)</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Frequency</source>
+        <translation>Frequenz</translation>
+    </message>
+    <message>
+        <source>Phase</source>
+        <translation>Phase</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>Kurve</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -1605,10 +1617,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <source>cannot embed %1: %2</source>
-        <translation>%1 kann nicht eingebettet werden: %2</translation>
-    </message>
-    <message>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
@@ -1664,56 +1672,20 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>(Standard)</translation>
     </message>
     <message>
-        <source>A number, a name or JSON (lists, curves); empty: the default</source>
-        <translation>Eine Zahl, ein Name oder JSON (Listen, Kurven); leer: der Standardwert</translation>
+        <source>Not a parameter of this node: clear it</source>
+        <translation>Kein Parameter dieses Knotens: bitte leeren</translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation>(automatisch)</translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation>(Standard: %1)</translation>
     </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>
-    <message>
-        <source>there is no node &apos;%1&apos;</source>
-        <translation>es gibt keinen Knoten &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>node &apos;%1&apos; (%2) has no output &apos;%3&apos;</source>
-        <translation>Knoten &apos;%1&apos; (%2) hat keinen Ausgang &apos;%3&apos;</translation>
-    </message>
-    <message>
-        <source>node &apos;%1&apos; (%2) has no input &apos;%3&apos;</source>
-        <translation>Knoten &apos;%1&apos; (%2) hat keinen Eingang &apos;%3&apos;</translation>
-    </message>
-    <message>
-        <source>a node cannot feed itself</source>
-        <translation>ein Knoten kann sich nicht selbst speisen</translation>
-    </message>
-    <message>
-        <source>an event</source>
-        <translation>Ereignis</translation>
-    </message>
-    <message>
-        <source>a signal</source>
-        <translation>Signal</translation>
-    </message>
-    <message>
-        <source>a voice</source>
-        <translation>Stimmen</translation>
-    </message>
-    <message>
-        <source>%1 output cannot feed %2 input: &apos;%3&apos; (%4) sends %5, &apos;%6&apos; (%7) takes %8</source>
-        <translation>ein %1-Ausgang kann keinen %2-Eingang speisen: &apos;%3&apos; (%4) sendet %5, &apos;%6&apos; (%7) erwartet %8</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; already feeds &apos;%2:%3&apos;</source>
-        <translation>&apos;%1&apos; speist bereits &apos;%2:%3&apos;</translation>
-    </message>
-    <message>
-        <source>&apos;%1:%2&apos; takes a single link and already has one</source>
-        <translation>&apos;%1:%2&apos; nimmt nur eine Verbindung an und hat bereits eine</translation>
-    </message>
-    <message>
-        <source>this link would make a cycle: &apos;%1&apos; already feeds &apos;%2&apos;</source>
-        <translation>diese Verbindung würde einen Zyklus bilden: &apos;%1&apos; speist bereits &apos;%2&apos;</translation>
-    </message>
     <message>
         <source>an output connects to an input, not to another output</source>
         <translation>ein Ausgang wird mit einem Eingang verbunden, nicht mit einem anderen Ausgang</translation>

@@ -998,23 +998,7 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Points (t:v, …)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Frequency (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Amplitude</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Phase (cycles)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1027,14 +1011,6 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Low</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Rate (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Width (s)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1079,6 +1055,42 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Not understood; nothing was changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (t:v, …)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frequency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1604,10 +1616,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>cannot embed %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Saved %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1663,56 +1671,20 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>A number, a name or JSON (lists, curves); empty: the default</source>
+        <source>Not a parameter of this node: clear it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>
-    <message>
-        <source>there is no node &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node &apos;%1&apos; (%2) has no output &apos;%3&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node &apos;%1&apos; (%2) has no input &apos;%3&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a node cannot feed itself</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>an event</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a signal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a voice</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 output cannot feed %2 input: &apos;%3&apos; (%4) sends %5, &apos;%6&apos; (%7) takes %8</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; already feeds &apos;%2:%3&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&apos;%1:%2&apos; takes a single link and already has one</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>this link would make a cycle: &apos;%1&apos; already feeds &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message>
         <source>an output connects to an input, not to another output</source>
         <translation type="unfinished"></translation>

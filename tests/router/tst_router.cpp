@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include "forcedetector.h"
 #include "jsonreader.h"
 #include "router.h"
 #include "routergraph.h"
 #include "routernodetype.h"
+#include "slipdetector.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -99,6 +101,10 @@ private slots:
     void embeddedPatternAndModel();
     void patternFileRelativeToRouter();
     void nodeTypesTable();
+    void checkLinkAgreesWithTheCompiler_data();
+    void checkLinkAgreesWithTheCompiler();
+    void checkLinkCountsDetectorsHeard();
+    void deviceHands();
     void invalidPredictive_data();
     void invalidPredictive();
     void defaultHorizon();
@@ -178,8 +184,8 @@ void TestRouter::invalid_data()
            "proportional, device)";
     QTest::newRow("detector without gripper")
         << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
-        << "r.json: /nodes/0: node 'right.force' (force): needs a gripper (\"left\" or "
-           "\"right\")";
+        << "r.json: /nodes/0: node 'right.force' (force): needs \"gripper\": \"left\" or "
+           "\"right\"";
     QTest::newRow("bad gripper") << edited("nodes/0/params/gripper", "middle")
                                  << "r.json: /nodes/0/params/gripper: node 'right.force' (force): "
                                     "must be \"left\" or \"right\"";
@@ -188,13 +194,15 @@ void TestRouter::invalid_data()
                                           "(force): must be greater than grasp (20), got 10";
     QTest::newRow("detector param type") << edited("nodes/0/params/max", "lots")
                                          << "r.json: /nodes/0/params/max: node 'right.force' "
-                                            "(force): must be a number";
+                                            "(force): must be a finite number, found a string";
     QTest::newRow("unknown detector param") << edited("nodes/0/params/loss", 3)
                                             << "r.json: /nodes/0/params/loss: node 'right.force' "
-                                               "(force): unknown parameter";
+                                               "(force): unknown parameter 'loss' (known: gripper, "
+                                               "grasp, break, max, hysteresis, minDuration)";
     QTest::newRow("filter value") << edited("nodes/1/params/category", "warning")
                                   << "r.json: /nodes/1/params/category: node 'warn' (filter): "
-                                     "must be one of confirmation, exception, or a list of them";
+                                     "must be \"confirmation\" or \"exception\", or a list of "
+                                     "them";
     QTest::newRow("unknown filter param") << edited("nodes/1/params/phase", "begin")
                                           << "r.json: /nodes/1/params/phase: node 'warn' "
                                              "(filter): unknown parameter 'phase' (known: "
@@ -263,8 +271,9 @@ void TestRouter::invalid_data()
     QTest::newRow("bad quantity")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "G"}}]})")
-        << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be one of F, N, f.left, "
-           "f.right, n.left, n.right, friction, friction.left, friction.right";
+        << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be \"F\", \"N\", "
+           "\"f.left\", \"f.right\", \"n.left\", \"n.right\", \"friction\", "
+           "\"friction.left\" or \"friction.right\"";
     QTest::newRow("curve points")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
@@ -273,8 +282,8 @@ void TestRouter::invalid_data()
     QTest::newRow("hysteresis band")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "h", "type": "hysteresis", "params": {"band": 2}}]})")
-        << "r.json: /nodes/0/params/band: node 'h' (hysteresis): hold must be >= 0 s and band "
-           "within [0, 1]";
+        << "r.json: /nodes/0/params/band: node 'h' (hysteresis): must be within [0, 1], got "
+           "2";
     QTest::newRow("gate mode")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "g", "type": "gate", "params": {"mode": "ajar"}}]})")
@@ -282,7 +291,8 @@ void TestRouter::invalid_data()
     QTest::newRow("proportional ref")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "p", "type": "proportional", "params": {"ref": 0}}]})")
-        << "r.json: /nodes/0/params/ref: node 'p' (proportional): must be positive";
+        << "r.json: /nodes/0/params/ref: node 'p' (proportional): must be positive, "
+           "got 0";
     QJsonArray nine;
     QJsonArray links;
     for (int i = 0; i < 9; ++i) {
@@ -346,13 +356,14 @@ void TestRouter::overrides_data()
                                      "'C3'";
     QTest::newRow("not a number") << QStringList{"right.force.break=abc"}
                                   << "--set right.force.break=abc: node 'right.force' (force): "
-                                     "must be a number";
+                                     "must be a finite number, found a string";
     QTest::newRow("invalid value") << QStringList{"right.force.break=200"}
                                    << "--set right.force.break=200: node 'right.force' (force): "
                                       "must be greater than break (200), got 120";
     QTest::newRow("unknown param") << QStringList{"right.force.brake=90"}
                                    << "--set right.force.brake=90: node 'right.force' (force): "
-                                      "unknown parameter";
+                                      "unknown parameter 'brake' (known: gripper, grasp, break, "
+                                      "max, hysteresis, minDuration)";
     QTest::newRow("pattern swap") << QStringList{"right.geiger.pattern=vib.rampup"} << QString();
     QTest::newRow("pattern model clash")
         << QStringList{"right.geiger.pattern=air.squeeze"}
@@ -426,8 +437,125 @@ void TestRouter::nodeTypesTable()
     for (const RouterNodeType &type : routerNodeTypes()) {
         QVERIFY(!type.description.isEmpty());
         QCOMPARE(routerNodeType(type.type), &type);
+        // Every parameter is described, and a default passes its own check: the editor shows
+        // these defaults and the reference is written from these specs.
+        for (const ParamSpec &spec : type.params) {
+            const QString what = type.type + '.' + spec.name;
+            QVERIFY2(!spec.help.isEmpty(), qPrintable(what));
+            QCOMPARE(type.param(spec.name), &spec);
+            QString reason;
+            const QJsonValue value = spec.defaultValue();
+            QVERIFY2(value.isUndefined() || spec.check(value, &reason), qPrintable(what));
+        }
     }
     QVERIFY(!routerNodeType("nonsense"));
+    // The detectors' defaults are the ones their parameters start with.
+    QCOMPARE(routerNodeType("force")->param("break")->defaultNumber, ForceDetector::Params().brk);
+    QCOMPARE(routerNodeType("slip")->param("loss")->defaultNumber, SlipDetector::Params().loss);
+}
+
+void TestRouter::checkLinkAgreesWithTheCompiler_data()
+{
+    QTest::addColumn<QString>("preset");
+    QTest::newRow("C3") << "C3";
+    QTest::newRow("C3p") << "C3p";
+}
+
+void TestRouter::checkLinkAgreesWithTheCompiler()
+{
+    // Every link one could draw between two ports of a preset: the editor's check says yes
+    // exactly when the graph with that link compiles.
+    QFETCH(QString, preset);
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterPresets::preset(preset, &graph, &error));
+    int accepted = 0;
+    int refused = 0;
+    for (const RouterNode &from : graph.nodes) {
+        for (const PortSpec &out : RouterGraph::outputsOf(from)) {
+            for (const RouterNode &to : graph.nodes) {
+                for (const PortSpec &in : graph.inputsOf(to)) {
+                    const RouterLink link{from.id, out.name, to.id, in.name};
+                    QString reason;
+                    const bool allowed = graph.checkLink(link, &reason);
+                    RouterGraph linked = graph;
+                    linked.links.push_back(link);
+                    LoadError compileError;
+                    const bool compiles = bool(Router::compile(linked, &compileError));
+                    QVERIFY2(allowed == compiles,
+                             qPrintable(QString("%1:%2 -> %3:%4: editor '%5', compiler '%6'")
+                                            .arg(from.id, out.name, to.id, in.name, reason,
+                                                 compileError.toString())));
+                    QCOMPARE(reason.isEmpty(), allowed);
+                    ++(allowed ? accepted : refused);
+                }
+            }
+        }
+    }
+    QVERIFY(accepted > 0);
+    QVERIFY(refused > 0);
+}
+
+void TestRouter::deviceHands()
+{
+    // A device's hand is its `hand`; without one, the id's first part when that names a
+    // gripper. `lefty.vibro` is nobody's, where a name-prefix test took it for the left.
+    RouterGraph graph;
+    const auto device = [&](const QString &id, const QJsonObject &params) {
+        QJsonObject p = params;
+        p.insert("model", "lra4");
+        graph.nodes.push_back({id, "device", p, {}});
+    };
+    device("lefty.vibro", {});
+    device("band", QJsonObject{{"hand", "left"}});
+    device("left.vibro", {});
+    device("right.vibro", QJsonObject{{"hand", "left"}});
+    device("overlay", {});
+    LoadError error;
+    const std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    const auto handOf = [&](const QString &id) {
+        Gripper hand = Gripper::Right;
+        const bool has = router->deviceHand(router->player().deviceIndex(id), &hand);
+        return has ? gripperName(hand) : QString("none");
+    };
+    QCOMPARE(handOf("lefty.vibro"), QString("none"));
+    QCOMPARE(handOf("band"), QString("left"));
+    QCOMPARE(handOf("left.vibro"), QString("left"));
+    QCOMPARE(handOf("right.vibro"), QString("left"));
+    QCOMPARE(handOf("overlay"), QString("none"));
+
+    graph.nodes[0].params.insert("hand", "middle");
+    QVERIFY(!Router::compile(graph, &error));
+    QCOMPARE(error.toString(), QString("<input>: /nodes/0/params/hand: node 'lefty.vibro' (device): must "
+                                       "be \"left\" or \"right\""));
+}
+
+void TestRouter::checkLinkCountsDetectorsHeard()
+{
+    // Nine detectors into one filter chain: the ninth link is refused by both, with the
+    // compiler's words.
+    RouterGraph graph;
+    graph.nodes.push_back({"join", "filter", {}, {}});
+    graph.nodes.push_back({"out", "filter", {}, {}});
+    graph.links.push_back({"join", "", "out", ""});
+    for (int d = 0; d < RouterGraph::MaxUpstreamDetectors; ++d) {
+        const QString id = QString("d%1").arg(d);
+        graph.nodes.push_back({id, "force", QJsonObject{{"gripper", "right"}}, {}});
+        QString reason;
+        QVERIFY2(graph.checkLink({id, "", "join", ""}, &reason), qPrintable(reason));
+        graph.links.push_back({id, "", "join", ""});
+    }
+    LoadError error;
+    QVERIFY2(Router::compile(graph, &error), qPrintable(error.toString()));
+    graph.nodes.push_back({"extra", "force", QJsonObject{{"gripper", "left"}}, {}});
+    QString reason;
+    QVERIFY(!graph.checkLink({"extra", "", "out", ""}, &reason));
+    QCOMPARE(reason, QString("node 'out' (filter): listens to more than 8 detectors; at most 8 "
+                             "may feed one node"));
+    graph.links.push_back({"extra", "", "out", ""});
+    QVERIFY(!Router::compile(graph, &error));
+    QVERIFY2(error.toString().endsWith(reason), qPrintable(error.toString()));
 }
 
 namespace {
@@ -498,26 +626,28 @@ void TestRouter::invalidPredictive_data()
     QTest::addColumn<QString>("error");
     QTest::newRow("threshold without level")
         << withParam(predictiveRouter(), 2, "level", QJsonValue(QJsonValue::Undefined))
-        << "r.json: /nodes/2: node 'break' (threshold): needs a level and a full value";
+        << "r.json: /nodes/2: node 'break' (threshold): needs \"level\": a finite number";
     QTest::newRow("full equal to level")
         << withParam(predictiveRouter(), 2, "full", 80)
         << "r.json: /nodes/2/params/full: node 'break' (threshold): must differ from level "
            "(above it: active while the input is above level; below it: while below)";
     QTest::newRow("unknown message")
         << withParam(predictiveRouter(), 2, "message", "crack")
-        << "r.json: /nodes/2/params/message: node 'break' (threshold): must be one of grasp, "
-           "break, slip";
+        << "r.json: /nodes/2/params/message: node 'break' (threshold): must be \"grasp\", "
+           "\"break\" or \"slip\"";
     QTest::newRow("negative hysteresis")
         << withParam(predictiveRouter(), 2, "hysteresis", -1)
-        << "r.json: /nodes/2/params/hysteresis: node 'break' (threshold): must not be negative";
+        << "r.json: /nodes/2/params/hysteresis: node 'break' (threshold): must not be negative, "
+           "got -1";
     QTest::newRow("negative horizon")
         << withParam(predictiveRouter(), 1, "horizon", -0.1)
-        << "r.json: /nodes/1/params/horizon: node 'F.predicted' (predict): must not be negative";
+        << "r.json: /nodes/1/params/horizon: node 'F.predicted' (predict): must not be negative, "
+           "got -0.1";
     QTest::newRow("negative tau") << withParam(predictiveRouter(), 1, "tau", -0.1)
                                   << "r.json: /nodes/1/params/tau: node 'F.predicted' "
-                                     "(predict): must not be negative";
+                                     "(predict): must not be negative, got -0.1";
     QTest::newRow("zero mu") << withParam(predictiveRouter(), 0, "mu", 0)
-                             << "r.json: /nodes/0/params/mu: node 'F' (signal): must be positive";
+                             << "r.json: /nodes/0/params/mu: node 'F' (signal): must be positive, got 0";
 }
 
 void TestRouter::invalidPredictive()

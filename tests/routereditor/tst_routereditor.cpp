@@ -216,6 +216,7 @@ private slots:
     void selfContainedEmbedsUserPatterns();
     void selfContainedKeepsPatternsOfOneName();
     void offersTheDesignersPatterns();
+    void inspectorShowsTheNodeTypeTable();
     void engineSwapsWhileRunning();
     void liveActivityLightsWires();
     void screenshot();
@@ -293,14 +294,14 @@ void TestRouterEditor::refusedLinkSaysWhy_data()
                                          << "events"
                                          << "right.air"
                                          << "in" << false
-                                         << "an event output cannot feed a voice input: "
-                                            "'right.force' (force) sends event, 'right.air' "
-                                            "(device) takes voice";
+                                         << "port type mismatch: 'right.force:events' sends "
+                                            "event, 'right.air:in' takes voice";
     QTest::newRow("voice into a filter")
         << "right.squeeze"
         << "out"
         << "left.warn"
-        << "in" << false << "a voice output cannot feed an event input";
+        << "in" << false
+        << "port type mismatch: 'right.squeeze:out' sends voice, 'left.warn:in' takes event";
     QTest::newRow("output to output") << "right.force"
                                       << "events"
                                       << "right.confirm"
@@ -308,11 +309,12 @@ void TestRouterEditor::refusedLinkSaysWhy_data()
     QTest::newRow("itself") << "right.confirm"
                             << "out"
                             << "right.confirm"
-                            << "in" << false << "a node cannot feed itself";
+                            << "in" << false << "node 'right.confirm' (filter) cannot feed itself";
     QTest::newRow("twice") << "right.force"
                            << "events"
                            << "right.confirm"
-                           << "in" << false << "'right.force' already feeds 'right.confirm:in'";
+                           << "in" << false
+                           << "'right.force:events' already feeds 'right.confirm:in'";
     QTest::newRow("cycle") << "right.warn"
                            << "out"
                            << "right.confirm"
@@ -332,7 +334,7 @@ void TestRouterEditor::refusedLinkSaysWhy()
     if (reason.isEmpty()) {
         // right.confirm -> right.warn first; then right.warn -> right.confirm closes a loop.
         f.wire("right.confirm", "out", "right.warn", "in");
-        reason = "this link would make a cycle: 'right.confirm' already feeds 'right.warn'";
+        reason = "this link would make a cycle: 'right.confirm' already leads to 'right.warn'";
     }
     const QJsonObject before = f.editor.graph().toJson();
     f.wire(from, fromPort, to, toPort, toOutput);
@@ -517,6 +519,49 @@ void TestRouterEditor::selfContainedEmbedsUserPatterns()
     auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
     QVERIFY(combo);
     QVERIFY(combo->findText("my.warning") >= 0);
+}
+
+void TestRouterEditor::inspectorShowsTheNodeTypeTable()
+{
+    // The fields come from the core's specs: defaults, units and help as the compiler has
+    // them, choices for every choice parameter, and a pattern's own parameters.
+    Fixture f;
+    f.editor.setGraph(preset("C3p"));
+    f.select("right.break");
+    const RouterNodeType &threshold = *routerNodeType("threshold");
+    auto *hysteresis = f.editor.inspector()->findChild<QLineEdit *>("param:hysteresis");
+    QVERIFY(hysteresis);
+    QCOMPARE(hysteresis->toolTip(), threshold.param("hysteresis")->help);
+    QVERIFY2(hysteresis->placeholderText().contains("0"), qPrintable(hysteresis->placeholderText()));
+    auto *message = f.editor.inspector()->findChild<QComboBox *>("param:message");
+    QVERIFY(message);
+    for (const QString &choice : threshold.param("message")->choices)
+        QVERIFY2(message->findData(choice) >= 0, qPrintable(choice));
+
+    const RouterGraph &graph = f.editor.graph();
+    for (const RouterNode &node : graph.nodes) {
+        if (node.type != "predict")
+            continue;
+        f.select(node.id);
+        auto *tau = f.editor.inspector()->findChild<QLineEdit *>("param:tau");
+        QVERIFY(tau);
+        QVERIFY2(tau->placeholderText().contains(QLocale().toString(DefaultSlopeTau)),
+                 qPrintable(tau->placeholderText()));
+        break;
+    }
+    // A pattern with parameters of its own: one field each, with the pattern's default.
+    f.select("right.squeeze");
+    f.type("param:pattern", "air.proportional");
+    const PatternPtr played =
+        graph.playedPattern(graph.nodes[size_t(graph.nodeIndex("right.squeeze"))]);
+    QVERIFY(played && played->params().size() > 1);
+    for (int p = 0; p < played->params().size(); ++p) {
+        auto *field =
+            f.editor.inspector()->findChild<QLineEdit *>("param:" + played->params().name(p));
+        QVERIFY2(field, qPrintable(played->params().name(p)));
+        QVERIFY(field->placeholderText().contains(
+            QLocale().toString(played->params().defaultValue(p))));
+    }
 }
 
 void TestRouterEditor::selfContainedKeepsPatternsOfOneName()

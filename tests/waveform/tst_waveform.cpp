@@ -3,6 +3,7 @@
 // continuity, curves, JSON round trips and parse errors.
 #include "waveform.h"
 #include "waveformparser.h"
+#include "waveformtype.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -91,6 +92,7 @@ class TestWaveform : public QObject
     Q_OBJECT
 
 private slots:
+    void typeTable();
     void samples_data();
     void samples();
     void durations_data();
@@ -471,7 +473,7 @@ void TestWaveform::errors_data()
         << QByteArray(R"({"s":{"type":"pulses","rate":-1,"width":0.1}})")
         << "test.json: /s/rate: must not be negative, got -1";
     QTest::newRow("duty above 1") << QByteArray(R"({"s":{"type":"square","freq":1,"duty":1.5}})")
-                                  << "test.json: /s/duty: must be between 0 and 1, got 1.5";
+                                  << "test.json: /s/duty: must be within [0, 1], got 1.5";
     QTest::newRow("bad from") << QByteArray(R"({"s":{"type":"ramp","to":1,"time":1,"from":"x"}})")
                               << "test.json: /s/from: expected \"current\", \"peak\" or a "
                                  "number, got 'x'";
@@ -521,4 +523,35 @@ void TestWaveform::errors()
 }
 
 QTEST_GUILESS_MAIN(TestWaveform)
+void TestWaveform::typeTable()
+{
+    // Every type the table lists parses from its required fields' starting values (what the
+    // designer makes a new waveform of), with every field described; the parser knows no
+    // type the table lacks.
+    ParamTable table;
+    for (const WaveformType &type : waveformTypes()) {
+        QVERIFY(!type.description.isEmpty());
+        QCOMPARE(waveformType(type.type), &type);
+        QJsonObject json{{"type", type.type}};
+        for (const ParamSpec &field : type.fields) {
+            QVERIFY2(!field.help.isEmpty(), qPrintable(type.type + '.' + field.name));
+            if (field.absent != ParamAbsent::Required)
+                continue;
+            if (field.kind == ParamKind::Waveform)
+                json.insert(field.name, QJsonObject{{"type", "const"}, {"value", 1}});
+            else
+                json.insert(field.name, field.example);
+        }
+        WaveformParser parser(table, QStringLiteral("test.json"));
+        const WaveformPtr waveform = parser.parse(json, QString());
+        QVERIFY2(waveform, qPrintable(parser.error().toString()));
+        QCOMPARE(waveform->type(), type.type);
+        QCOMPARE(type.isModifier(),
+                 type.field("in") != nullptr || type.field("of") != nullptr);
+    }
+    WaveformParser parser(table, QStringLiteral("test.json"));
+    QVERIFY(!parser.parse(QJsonObject{{"type", "triangle"}, {"freq", 1}}, QString()));
+    QCOMPARE(parser.error().toString(), QString("test.json: /type: unknown waveform type 'triangle'"));
+}
+
 #include "tst_waveform.moc"
