@@ -8,13 +8,17 @@
 #     within 10 s;
 #  3. the Debian package (scripts/package.sh): built, validated, run from its extracted tree
 #     and installed with apt;
-#  4. the exported CMake package: an outside project's Qt Test against the installed core.
+#  4. the exported CMake package: an outside project's Qt Test against the installed core;
+#  5. the docs: every relative link in a Markdown file resolves inside the repository.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 fuzz_runs=${SEMHAP_FUZZ_RUNS:-20000}
 
 "$root/scripts/deps.sh"
+
+echo "== documentation links"
+"$root/scripts/checklinks.sh"
 
 echo "== normal build"
 "$root/scripts/build.sh" "$root/build"
