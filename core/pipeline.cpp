@@ -32,6 +32,7 @@ void Pipeline::process(const ContactFrame &frame, PipelineSink &sink)
     m_router->process(frame, m_events);
     for (const SemanticEvent &event : m_events)
         sink.onEvent(event);
+    reportActivity(sink);
 }
 
 void Pipeline::flush(PipelineSink &sink)
@@ -48,6 +49,14 @@ void Pipeline::endAll(PipelineSink &sink)
     m_router->endAll(m_now, m_events);
     for (const SemanticEvent &event : m_events)
         sink.onEvent(event);
+    reportActivity(sink);
+}
+
+void Pipeline::reportActivity(PipelineSink &sink)
+{
+    for (int node : m_router->activityChanges())
+        sink.onNodeActivity(m_router->activity()[size_t(node)]);
+    m_router->clearActivityChanges();
 }
 
 void Pipeline::advance(double t, bool inclusive, PipelineSink &sink)
@@ -62,6 +71,7 @@ void Pipeline::advance(double t, bool inclusive, PipelineSink &sink)
         // A timer due at an instant acts before it is rendered, like a frame at that time.
         if (timer <= instant && timer <= limit) {
             m_router->fireTimers(timer);
+            reportActivity(sink);
         } else if (instant <= limit) {
             player.renderNext(&frame);
             sink.onDeviceFrame(frame);

@@ -16,6 +16,8 @@ public:
     virtual ~PipelineSink() = default;
     virtual void onEvent(const SemanticEvent &) {}
     virtual void onDeviceFrame(const DeviceFrame &) {}
+    /** A router node's activity changed (what it passes on): the editor's live wires. */
+    virtual void onNodeActivity(const NodeActivity &) {}
 };
 
 /**
@@ -52,6 +54,8 @@ public:
 
 private:
     void advance(double t, bool inclusive, PipelineSink &sink);
+    /** Hands the sink the nodes whose activity changed, after events or timers. */
+    void reportActivity(PipelineSink &sink);
 
     std::unique_ptr<Router> m_router;
     EventBuffer m_events;

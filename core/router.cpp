@@ -677,6 +677,12 @@ std::unique_ptr<Router> RouterCompiler::compile()
     if (!wire())
         return nullptr;
     setDefaultHorizons();
+    m_router->m_activity = std::make_unique<RouterActivity>();
+    m_router->m_activity->resize(int(count));
+    for (size_t i = 0; i < count; ++i) {
+        if (RuntimeNode *node = m_router->m_nodes[i].get())
+            node->setActivity(m_router->m_activity.get(), int(i));
+    }
     return std::move(m_router);
 }
 
@@ -688,10 +694,6 @@ std::unique_ptr<Router> Router::compile(const RouterGraph &graph, LoadError *err
 
 Router::~Router() = default;
 
-namespace {
-
-} // namespace
-
 bool Router::deviceHand(int device, Gripper *hand) const
 {
     const int gripper = m_deviceHands[size_t(device)];
@@ -699,6 +701,21 @@ bool Router::deviceHand(int device, Gripper *hand) const
         return false;
     *hand = Gripper(gripper);
     return true;
+}
+
+const std::vector<NodeActivity> &Router::activity() const
+{
+    return m_activity->nodes();
+}
+
+const std::vector<int> &Router::activityChanges() const
+{
+    return m_activity->changed();
+}
+
+void Router::clearActivityChanges()
+{
+    m_activity->clearChanges();
 }
 
 std::vector<const Detector *> Router::detectors() const

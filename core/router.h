@@ -4,6 +4,7 @@
 #include "contactframe.h"
 #include "eventbuffer.h"
 #include "loaderror.h"
+#include "nodeactivity.h"
 #include "player.h"
 #include "routercontext.h"
 #include "routergraph.h"
@@ -17,6 +18,7 @@ namespace semhap {
 
 class Detector;
 class DetectorNode;
+class RouterActivity;
 class RuntimeNode;
 class SignalNode;
 class ThresholdNode;
@@ -58,6 +60,15 @@ public:
      * first part when that names a gripper. False for a device of no hand (the overlay).
      */
     bool deviceHand(int device, Gripper *hand) const;
+    /**
+     * Every node's activity (what it passes on), in graph order, as of the last frame or
+     * timer: the router's own account of what routed. Devices are never active here; their
+     * frames tell. Kept up to date without allocating.
+     */
+    const std::vector<NodeActivity> &activity() const;
+    /** The nodes whose activity changed since clearActivityChanges(), in order of change. */
+    const std::vector<int> &activityChanges() const;
+    void clearActivityChanges();
     /** The compiled detectors (force, slip), in graph order: what plots take thresholds from. */
     std::vector<const Detector *> detectors() const;
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
@@ -88,6 +99,7 @@ private:
     };
     std::vector<Sources> m_sources; ///< graph order
     std::vector<int> m_deviceHands; ///< player device index -> Gripper, or -1 for none
+    std::unique_ptr<RouterActivity> m_activity;
     Player m_player;
     bool m_started = false;
     friend class RouterCompiler;

@@ -53,10 +53,59 @@ double RuntimeNode::nextTimer() const
 
 void RuntimeNode::fireTimers(double) {}
 
-void RuntimeNode::emitEvent(const SemanticEvent &event) const
+void RouterActivity::resize(int nodes)
 {
+    m_nodes.assign(size_t(nodes), NodeActivity());
+    for (int i = 0; i < nodes; ++i)
+        m_nodes[size_t(i)].node = i;
+    m_dirty.assign(size_t(nodes), 0);
+    m_changed.clear();
+    m_changed.reserve(size_t(nodes));
+}
+
+void RouterActivity::set(int node, double t, const ActiveMessages &passing)
+{
+    NodeActivity now;
+    now.t = t;
+    now.node = node;
+    for (const ActiveMessages::Entry &entry : passing) {
+        now.level = std::max(now.level, entry.last.intensity);
+        now.messages |= 1u << unsigned(entry.last.message);
+        now.exception = now.exception || entry.last.category == Category::Exception;
+    }
+    NodeActivity &was = m_nodes[size_t(node)];
+    if (now.level == was.level && now.messages == was.messages && now.exception == was.exception)
+        return;
+    was = now;
+    if (!m_dirty[size_t(node)]) {
+        m_dirty[size_t(node)] = 1;
+        m_changed.push_back(node);
+    }
+}
+
+void RouterActivity::clearChanges()
+{
+    for (int node : m_changed)
+        m_dirty[size_t(node)] = 0;
+    m_changed.clear();
+}
+
+void RuntimeNode::emitEvent(const SemanticEvent &event)
+{
+    const int key = ActiveMessages::keyOf(event);
+    if (event.phase == EventPhase::End)
+        m_passed.remove(key);
+    else if (ActiveMessages::Entry *entry = m_passed.insert(key))
+        entry->last = event;
+    reportActivity(event.t, m_passed);
     for (const RouteTarget &target : eventTargets)
         target.node->onEvent(target.port, event);
+}
+
+void RuntimeNode::reportActivity(double t, const ActiveMessages &passing)
+{
+    if (m_activity)
+        m_activity->set(m_node, t, passing);
 }
 
 void RuntimeNode::emitSignal(double value, double t) const
@@ -65,7 +114,7 @@ void RuntimeNode::emitSignal(double value, double t) const
         target.node->onSignal(target.port, value, t);
 }
 
-void RuntimeNode::emitEvents(const EventBuffer &events, int from) const
+void RuntimeNode::emitEvents(const EventBuffer &events, int from)
 {
     for (int i = from; i < events.size(); ++i)
         emitEvent(events[i]);
@@ -362,6 +411,7 @@ void PatternNode::onEvent(int, const SemanticEvent &event)
         entry->last = event;
     }
 
+    reportActivity(event.t, m_active);
     if (m_active.isEmpty()) {
         if (wasActive) {
             for (const auto &input : voices)

@@ -7,6 +7,7 @@
 #include "detector.h"
 #include "eventbuffer.h"
 #include "messagetracker.h"
+#include "nodeactivity.h"
 #include "player.h"
 #include "voice.h"
 #include "waveform.h"
@@ -62,11 +63,39 @@ private:
     int m_size = 0;
 };
 
+/**
+ * Every node's activity and which nodes changed since the router last reported them. Sized
+ * when the router is compiled; updating it never allocates.
+ */
+class RouterActivity
+{
+public:
+    void resize(int nodes);
+    /** Node `node` passes `passing` from t on; recorded only when that changes what it shows. */
+    void set(int node, double t, const ActiveMessages &passing);
+    const std::vector<NodeActivity> &nodes() const { return m_nodes; }
+    /** The nodes whose activity changed since clearChanges(), in the order they changed. */
+    const std::vector<int> &changed() const { return m_changed; }
+    void clearChanges();
+
+private:
+    std::vector<NodeActivity> m_nodes;
+    std::vector<int> m_changed; ///< capacity: every node once
+    std::vector<char> m_dirty;  ///< per node: listed in m_changed
+};
+
 /** A node of a compiled router. Events flow depth-first along the links, in link order. */
 class RuntimeNode
 {
 public:
     virtual ~RuntimeNode() = default;
+
+    /** Where the node reports what it passes on; set by the compiler. */
+    void setActivity(RouterActivity *activity, int node)
+    {
+        m_activity = activity;
+        m_node = node;
+    }
 
     virtual void onEvent(int port, const SemanticEvent &event);
     virtual void onSignal(int port, double value, double t);
@@ -80,10 +109,18 @@ public:
     std::vector<RouteTarget> signalTargets;
 
 protected:
-    void emitEvent(const SemanticEvent &event) const;
+    /** Sends `event` on, and records what the node now passes. */
+    void emitEvent(const SemanticEvent &event);
     /** Emits the events of `events` from index `from` on (those this node just added). */
-    void emitEvents(const EventBuffer &events, int from) const;
+    void emitEvents(const EventBuffer &events, int from);
     void emitSignal(double value, double t) const;
+    /** Reports that the node now passes `passing` (a node that plays rather than emits). */
+    void reportActivity(double t, const ActiveMessages &passing);
+
+private:
+    RouterActivity *m_activity = nullptr;
+    int m_node = -1;
+    ActiveMessages m_passed; ///< what emitEvent has sent on and not yet ended
 };
 
 /** Runs a detector on its gripper's frames and sends its events on. */

@@ -22,6 +22,12 @@ void DeviceOutputSink::onEvent(const SemanticEvent &event)
         m_next->onEvent(event);
 }
 
+void DeviceOutputSink::onNodeActivity(const NodeActivity &activity)
+{
+    if (m_next)
+        m_next->onNodeActivity(activity);
+}
+
 void DeviceOutputSink::onDeviceFrame(const DeviceFrame &frame)
 {
     if (frame.device >= 0 && frame.device < int(m_transports.size()) &&

@@ -13,7 +13,8 @@ class Transport;
 
 /**
  * Sends a pipeline's device frames to the transports bound to their device names; every
- * frame and event also goes on to an optional next sink (the stream writers).
+ * frame, event and node activity also goes on to an optional next sink (the stream
+ * writers, the studio's feed).
  * Never blocks: a transport's send() only fills its latest-value slot.
  */
 class DeviceOutputSink : public PipelineSink
@@ -25,6 +26,7 @@ public:
 
     void onEvent(const SemanticEvent &event) override;
     void onDeviceFrame(const DeviceFrame &frame) override;
+    void onNodeActivity(const NodeActivity &activity) override;
 
     /** How many of the player's devices have a transport. */
     int boundCount() const;

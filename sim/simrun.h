@@ -102,6 +102,10 @@ private:
     public:
         Tee(Perception &perception, RunSink &sink) : m_perception(perception), m_sink(sink) {}
         void onEvent(const SemanticEvent &event) override { m_sink.onEvent(event); }
+        void onNodeActivity(const NodeActivity &activity) override
+        {
+            m_sink.onNodeActivity(activity);
+        }
         void onDeviceFrame(const DeviceFrame &frame) override
         {
             m_perception.onDeviceFrame(frame);

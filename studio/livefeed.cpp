@@ -6,7 +6,7 @@
 namespace semhap {
 
 LiveFeed::LiveFeed(std::size_t capacity)
-    : m_frames(capacity), m_events(capacity), m_deviceFrames(capacity)
+    : m_frames(capacity), m_events(capacity), m_deviceFrames(capacity), m_activity(capacity)
 {}
 
 void LiveFeed::count(bool pushed)
@@ -30,6 +30,11 @@ void LiveFeed::onDeviceFrame(const DeviceFrame &frame)
     count(m_deviceFrames.push(frame));
 }
 
+void LiveFeed::onNodeActivity(const NodeActivity &activity)
+{
+    count(m_activity.push(activity));
+}
+
 void LiveFeed::drainInto(LiveHistory &history)
 {
     ContactFrame frame;
@@ -41,6 +46,9 @@ void LiveFeed::drainInto(LiveHistory &history)
     DeviceFrame deviceFrame;
     while (m_deviceFrames.pop(&deviceFrame))
         history.append(deviceFrame);
+    NodeActivity activity;
+    while (m_activity.pop(&activity))
+        history.append(activity);
 }
 
 void LiveFeed::discard()
@@ -53,6 +61,9 @@ void LiveFeed::discard()
     }
     DeviceFrame deviceFrame;
     while (m_deviceFrames.pop(&deviceFrame)) {
+    }
+    NodeActivity activity;
+    while (m_activity.pop(&activity)) {
     }
 }
 

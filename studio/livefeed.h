@@ -28,6 +28,7 @@ public:
     void push(const ContactFrame &frame);
     void onEvent(const SemanticEvent &event) override;
     void onDeviceFrame(const DeviceFrame &frame) override;
+    void onNodeActivity(const NodeActivity &activity) override;
 
     // GUI thread.
     /** Moves everything queued into `history`; does not commit it. */
@@ -43,6 +44,7 @@ private:
     SpscRing<ContactFrame> m_frames;
     SpscRing<SemanticEvent> m_events;
     SpscRing<DeviceFrame> m_deviceFrames;
+    SpscRing<NodeActivity> m_activity;
     std::atomic<quint64> m_dropped{0};
 };
 

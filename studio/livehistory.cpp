@@ -58,6 +58,7 @@ void LiveHistory::start(const std::vector<LiveDevice> &devices,
     for (auto &series : m_frames)
         series.clear();
     m_events.clear();
+    m_activity.clear();
     m_spans.clear();
     m_devices = devices;
     m_deviceFrames.assign(devices.size(), LiveSeries<DeviceFrame>());
@@ -109,12 +110,24 @@ void LiveHistory::append(const ContactFrame &frame)
     m_dirty = true;
 }
 
+int LiveHistory::mapNode(int node) const
+{
+    return node >= 0 && size_t(node) < m_nodeMap.size() ? m_nodeMap[size_t(node)] : -1;
+}
+
+void LiveHistory::append(const NodeActivity &routed)
+{
+    NodeActivity activity = routed;
+    activity.node = mapNode(routed.node);
+    m_activity.append(activity);
+    m_now = std::max(m_now, activity.t);
+    m_dirty = true;
+}
+
 void LiveHistory::append(const SemanticEvent &routed)
 {
     SemanticEvent event = routed;
-    event.node = routed.node >= 0 && size_t(routed.node) < m_nodeMap.size()
-                     ? m_nodeMap[size_t(routed.node)]
-                     : -1;
+    event.node = mapNode(routed.node);
     m_events.append(event);
     m_now = std::max(m_now, event.t);
     m_dirty = true;
@@ -169,6 +182,7 @@ void LiveHistory::commit()
     for (auto &series : m_frames)
         series.trimBefore(oldest);
     m_events.trimBefore(oldest);
+    m_activity.trimBefore(oldest);
     for (auto &series : m_deviceFrames)
         series.trimBefore(oldest);
     // Open spans grow with time even without events.

@@ -3,6 +3,7 @@
 
 #include "contactframe.h"
 #include "deviceframe.h"
+#include "nodeactivity.h"
 #include "semanticevent.h"
 
 #include <QJsonObject>
@@ -131,6 +132,8 @@ public:
     /** Keeps `event`, its `node` renumbered from the running router's to the history's. */
     void append(const SemanticEvent &event);
     void append(const DeviceFrame &frame);
+    /** Keeps a router node's activity, its `node` renumbered like an event's. */
+    void append(const NodeActivity &activity);
     void setMetrics(const QJsonObject &metrics);
     /** Trims what is older than the kept window and emits `updated()` if anything came. */
     void commit();
@@ -148,13 +151,15 @@ public:
     }
     const LiveSeries<SemanticEvent> &events() const { return m_events; }
     const std::vector<MessageSpan> &spans() const { return m_spans; }
+    /** Router nodes' activity changes, in order (node: nodeName()'s index). */
+    const LiveSeries<NodeActivity> &activity() const { return m_activity; }
     const std::vector<LiveDevice> &devices() const { return m_devices; }
     const LiveSeries<DeviceFrame> &deviceFrames(int device) const
     {
         return m_deviceFrames[size_t(device)];
     }
     const std::array<GripperThresholds, 2> &thresholds() const { return m_thresholds; }
-    /** The detector's node id of an event (`right.force`), under any router of the session. */
+    /** The node id of an event or activity (`right.force`), under any router of the session. */
     QString nodeName(int node) const;
     const QJsonObject &metrics() const { return m_metrics; }
 
@@ -169,14 +174,17 @@ signals:
 
 private:
     void mapNodes(const QStringList &nodeIds);
+    /** The running router's node index as the history's. */
+    int mapNode(int node) const;
 
     std::array<LiveSeries<ContactFrame>, 2> m_frames;
     LiveSeries<SemanticEvent> m_events;
+    LiveSeries<NodeActivity> m_activity;
     std::vector<MessageSpan> m_spans;
     std::vector<LiveDevice> m_devices;
     std::vector<LiveSeries<DeviceFrame>> m_deviceFrames;
     std::array<GripperThresholds, 2> m_thresholds{};
-    QStringList m_nodeIds;      ///< every detector id seen this session; events index it
+    QStringList m_nodeIds;      ///< every node id seen this session; events index it
     std::vector<int> m_nodeMap; ///< the running router's node index -> index in m_nodeIds
     QJsonObject m_metrics;
     double m_keepSeconds = 120.0;

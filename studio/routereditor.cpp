@@ -670,27 +670,23 @@ void RouterEditor::setHistory(LiveHistory *history)
     m_scene->clearActivity();
     if (!history)
         return;
-    m_nextEvent = history->events().end();
+    m_nextActivity = history->activity().end();
     connect(history, &LiveHistory::updated, this, &RouterEditor::onHistoryUpdated);
     connect(history, &LiveHistory::reset, this, [this] {
-        m_nextEvent = m_history->events().begin();
+        m_nextActivity = m_history->activity().begin();
         m_scene->clearActivity();
     });
 }
 
 void RouterEditor::onHistoryUpdated()
 {
-    const LiveSeries<SemanticEvent> &events = m_history->events();
-    // Hidden: nothing to draw, and what passed meanwhile is not worth replaying.
-    if (!isVisible()) {
-        m_nextEvent = events.end();
-        return;
+    // Hidden, the nodes' states still follow (they show when it opens), without flashes.
+    const LiveSeries<NodeActivity> &activity = m_history->activity();
+    for (qint64 i = std::max(m_nextActivity, activity.begin()); i < activity.end(); ++i) {
+        const NodeActivity &change = activity.at(i);
+        m_scene->showActivity(m_history->nodeName(change.node), change, isVisible());
     }
-    for (qint64 i = std::max(m_nextEvent, events.begin()); i < events.end(); ++i) {
-        const SemanticEvent &event = events.at(i);
-        m_scene->showEvent(m_history->nodeName(event.node), event);
-    }
-    m_nextEvent = events.end();
+    m_nextActivity = activity.end();
     const std::vector<LiveDevice> &devices = m_history->devices();
     for (size_t d = 0; d < devices.size(); ++d) {
         const LiveSeries<DeviceFrame> &frames = m_history->deviceFrames(int(d));

@@ -132,7 +132,7 @@ private:
 
     ApplyFunction m_apply;
     LiveHistory *m_history = nullptr;
-    qint64 m_nextEvent = 0;
+    qint64 m_nextActivity = 0;
     QStringList m_errors;
     QString m_inspected; ///< id of the node the inspector shows
     RouterNode m_inspectedNode;

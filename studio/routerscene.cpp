@@ -56,20 +56,6 @@ QString summaryOf(const RouterNode &node)
 }
 
 /** Whether a filter node's params let the event's message through. */
-bool filterPasses(const QJsonObject &params, const SemanticEvent &event)
-{
-    const auto matches = [&params](const char *key, const QString &name) {
-        const QJsonValue v = params.value(QLatin1String(key));
-        if (v.isUndefined())
-            return true;
-        const QJsonArray list = v.isArray() ? v.toArray() : QJsonArray{v};
-        return list.contains(QJsonValue(name));
-    };
-    return matches("message", messageName(event.message)) &&
-           matches("category", categoryName(event.category)) &&
-           matches("gripper", gripperName(event.gripper));
-}
-
 QColor categoryColor(Category category)
 {
     return category == Category::Confirmation ? QColor(0x00, 0x72, 0xB2)
@@ -461,38 +447,23 @@ void RouterScene::dropEvent(QGraphicsSceneDragDropEvent *event)
     emit nodeDropped(QString::fromUtf8(type), event->scenePos());
 }
 
-void RouterScene::showEvent(const QString &detector, const SemanticEvent &event)
+void RouterScene::showActivity(const QString &node, const NodeActivity &activity, bool flash)
 {
-    const QString message = messageName(event.message);
-    const QString key = detector + QLatin1Char('/') + message;
-    const QColor color = categoryColor(event.category);
-    std::vector<QString> stack{detector};
-    std::set<QString> seen;
-    while (!stack.empty()) {
-        const QString node = stack.back();
-        stack.pop_back();
-        if (!seen.insert(node).second)
-            continue;
-        QMap<QString, double> &active = m_active[node];
-        if (event.phase == EventPhase::End)
-            active.remove(key);
-        else
-            active.insert(key, event.intensity);
-        refreshState(node);
-        for (size_t j = 0; j < m_graph.links.size(); ++j) {
-            const RouterLink &link = m_graph.links[j];
-            if (link.from != node)
-                continue;
-            const int to = m_graph.nodeIndex(link.to);
-            if (to < 0)
-                continue;
-            const RouterNode &target = m_graph.nodes[size_t(to)];
-            if (target.type == QLatin1String("filter") && !filterPasses(target.params, event))
-                continue;
-            if (m_wires[j])
-                m_wires[j]->flash(color);
-            stack.push_back(link.to);
-        }
+    const NodeActivity was = m_active.value(node);
+    m_active.insert(node, activity);
+    refreshState(node);
+    if (!flash || !activity.isActive() || (was.isActive() && was.messages == activity.messages))
+        return; // nothing new began passing: the wires keep their glow
+    const QColor color =
+        categoryColor(activity.exception ? Category::Exception : Category::Confirmation);
+    for (size_t j = 0; j < m_graph.links.size(); ++j) {
+        const RouterLink &link = m_graph.links[j];
+        const bool in = link.to == node && m_active.value(link.from).isActive();
+        const int to = link.from == node ? m_graph.nodeIndex(link.to) : -1;
+        // Devices report through their frames, not the router: light the voices into them.
+        const bool out = to >= 0 && m_graph.nodes[size_t(to)].type == QLatin1String("device");
+        if ((in || out) && m_wires[j])
+            m_wires[j]->flash(color);
     }
     if (!m_fadeTimer.isActive())
         m_fadeTimer.start();
@@ -510,19 +481,19 @@ void RouterScene::refreshState(const QString &id)
                        level);
         return;
     }
-    const QMap<QString, double> active = m_active.value(id);
-    QStringList messages;
-    double level = 0.0;
-    for (auto it = active.begin(); it != active.end(); ++it) {
-        const QString message = it.key().section(QLatin1Char('/'), -1);
-        if (!messages.contains(message))
-            messages.append(message);
-        level = std::max(level, it.value());
+    const NodeActivity activity = m_active.value(id);
+    if (!activity.isActive()) {
+        item->setState(QString(), -1.0);
+        return;
     }
-    item->setState(messages.isEmpty() ? QString()
-                                      : tr("%1 %2").arg(messages.join(QLatin1Char('+')),
-                                                        QLocale().toString(level, 'f', 2)),
-                   messages.isEmpty() ? -1.0 : level);
+    QStringList messages;
+    for (Message message : {Message::Grasp, Message::Break, Message::Slip}) {
+        if (activity.messages & (1u << unsigned(message)))
+            messages.append(messageName(message));
+    }
+    item->setState(tr("%1 %2").arg(messages.join(QLatin1Char('+')),
+                                    QLocale().toString(activity.level, 'f', 2)),
+                   activity.level);
 }
 
 void RouterScene::setDeviceLevel(const QString &device, double level)

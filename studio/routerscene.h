@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "nodeactivity.h"
 #include "routergraph.h"
 #include "routernodeitem.h"
 #include "semanticevent.h"
@@ -69,11 +70,11 @@ public:
                    const QHash<int, QString> &linkErrors);
 
     /**
-     * Lights the wires an event of detector `detector` travels along and updates the
-     * nodes' states. Approximate: it follows the graph, passing filters by their params,
-     * and does not model gates, hysteresis holds or curve mappings.
+     * Shows what node `node` passes on now, as the running router reports it: its state
+     * line, and a flash on each wire into it from a node that passes something (and, for
+     * a node that plays, on its wires to the devices).
      */
-    void showEvent(const QString &detector, const SemanticEvent &event);
+    void showActivity(const QString &node, const NodeActivity &activity, bool flash = true);
     /** A device's current output level (max over its channels, 0..1). */
     void setDeviceLevel(const QString &device, double level);
     /** Forgets the live state (a new run). */
@@ -121,8 +122,8 @@ private:
     // Node positions when a press began, to tell a move from a click.
     std::map<QString, QPointF> m_pressPositions;
 
-    /** Per node, the messages active there (detector and message) and their intensity. */
-    QHash<QString, QMap<QString, double>> m_active;
+    /** Per node, what the router last said it passes on. */
+    QHash<QString, NodeActivity> m_active;
     QHash<QString, double> m_deviceLevels;
     QTimer m_fadeTimer;
 };

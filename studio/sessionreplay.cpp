@@ -20,10 +20,23 @@ class Collector : public PipelineSink
 public:
     void onEvent(const SemanticEvent &event) override { events.push_back(event); }
     void onDeviceFrame(const DeviceFrame &frame) override { deviceFrames.push_back(frame); }
+    void onNodeActivity(const NodeActivity &change) override { activity.push_back(change); }
 
     std::vector<SemanticEvent> events;
     std::vector<DeviceFrame> deviceFrames;
+    std::vector<NodeActivity> activity;
 };
+
+/** Runs `router` over `frames`, collecting what it sends. */
+Collector run(std::unique_ptr<Router> router, const std::vector<ContactFrame> &frames)
+{
+    Pipeline pipeline(std::move(router));
+    Collector collector;
+    for (const ContactFrame &frame : frames)
+        pipeline.process(frame, collector);
+    pipeline.flush(collector);
+    return collector;
+}
 
 /** Appends the values of `values` with `from < t <= to` (sorted by t) to `history`. */
 template<typename T>
@@ -89,8 +102,12 @@ bool SessionReplay::open(const QString &path, QString *error)
             {name, index >= 0 ? router->player().deviceModel(index).name() : QString(),
              reader->channelNames(d), index >= 0 && isIdleDevice(*router, index, hands)});
     }
-    if (router)
+    if (router) {
         recorded.thresholds = thresholdsOf(*router, hands);
+        // What each node passed on is not recorded; the recorded router, run again over the
+        // recorded frames, tells it (a router is deterministic in its frames).
+        recorded.activity = run(std::move(router), frames).activity;
+    }
     recorded.nodeIds = reader->nodeNames();
 
     m_path = reader->path();
@@ -160,13 +177,10 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
     streams.devices = liveDevicesOf(*router, m_hands);
     streams.nodeIds = router->nodeIds();
     streams.thresholds = thresholdsOf(*router, m_hands);
-    Pipeline pipeline(std::move(router));
-    Collector collector;
-    for (const ContactFrame &frame : m_frames)
-        pipeline.process(frame, collector);
-    pipeline.flush(collector);
+    Collector collector = run(std::move(router), m_frames);
     streams.events = std::move(collector.events);
     streams.deviceFrames = std::move(collector.deviceFrames);
+    streams.activity = std::move(collector.activity);
     m_shown = std::move(streams);
     m_rerouted = true;
     refill(m_time);
@@ -244,6 +258,7 @@ void SessionReplay::appendUpTo(double from, double to)
     appendWindow(m_frames, from, to, m_history);
     appendWindow(m_shown.events, from, to, m_history);
     appendWindow(m_shown.deviceFrames, from, to, m_history);
+    appendWindow(m_shown.activity, from, to, m_history);
 }
 
 } // namespace semhap

@@ -80,6 +80,7 @@ private:
     {
         std::vector<SemanticEvent> events;
         std::vector<DeviceFrame> deviceFrames;
+        std::vector<NodeActivity> activity;
         std::vector<LiveDevice> devices;
         std::array<GripperThresholds, 2> thresholds{};
         QStringList nodeIds;

@@ -60,6 +60,11 @@ void SimEngine::StepSink::onDeviceFrame(const DeviceFrame &frame)
     m_engine.m_output->onDeviceFrame(frame);
 }
 
+void SimEngine::StepSink::onNodeActivity(const NodeActivity &activity)
+{
+    m_engine.m_output->onNodeActivity(activity);
+}
+
 SimEngine::SimEngine(QObject *parent)
     : QObject(parent), m_devices(std::make_unique<DeviceManager>())
 {

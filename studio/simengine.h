@@ -169,6 +169,7 @@ private:
         void onContactFrame(const ContactFrame &frame) override;
         void onEvent(const SemanticEvent &event) override;
         void onDeviceFrame(const DeviceFrame &frame) override;
+        void onNodeActivity(const NodeActivity &activity) override;
 
     private:
         SimEngine &m_engine;

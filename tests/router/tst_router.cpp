@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "forcedetector.h"
 #include "jsonreader.h"
+#include "pipeline.h"
 #include "router.h"
 #include "routergraph.h"
 #include "routernodetype.h"
@@ -105,6 +106,7 @@ private slots:
     void checkLinkAgreesWithTheCompiler();
     void checkLinkCountsDetectorsHeard();
     void deviceHands();
+    void activityShowsWhatRouted();
     void invalidPredictive_data();
     void invalidPredictive();
     void defaultHorizon();
@@ -529,6 +531,70 @@ void TestRouter::deviceHands()
     QVERIFY(!Router::compile(graph, &error));
     QCOMPARE(error.toString(), QString("<input>: /nodes/0/params/hand: node 'lefty.vibro' (device): must "
                                        "be \"left\" or \"right\""));
+}
+
+void TestRouter::activityShowsWhatRouted()
+{
+    // The right hand's force detector feeds a grasp filter and a break filter; the break
+    // filter goes through a gate that the left hand's force detector's grasp opens. What each
+    // node passes on is what really routed: the filters split the messages, the gate holds
+    // the break warning back until the control is active.
+    RouterGraph graph;
+    graph.nodes = {
+        {"force", "force", QJsonObject{{"gripper", "right"}}, {}},
+        {"control", "force", QJsonObject{{"gripper", "left"}}, {}},
+        {"grasps", "filter", QJsonObject{{"message", "grasp"}}, {}},
+        {"breaks", "filter", QJsonObject{{"message", "break"}}, {}},
+        {"gate", "gate", QJsonObject{{"mode", "open"}}, {}},
+        {"buzz", "pattern", QJsonObject{{"pattern", "vib.geiger"}}, {}},
+        {"right.vibro", "device", QJsonObject{{"model", "lra4"}}, {}},
+    };
+    graph.links = {{"force", "", "grasps", ""},  {"force", "", "breaks", ""},
+                   {"breaks", "", "gate", "in"}, {"control", "", "gate", "control"},
+                   {"gate", "", "buzz", ""},     {"buzz", "", "right.vibro", ""}};
+    LoadError error;
+    std::unique_ptr<Router> compiled = Router::compile(graph, &error);
+    QVERIFY2(compiled, qPrintable(error.toString()));
+    Pipeline pipeline(std::move(compiled));
+    struct Sink : PipelineSink
+    {
+        std::vector<NodeActivity> changes;
+        void onNodeActivity(const NodeActivity &activity) override { changes.push_back(activity); }
+    } sink;
+    const Router &router = pipeline.router();
+    const auto level = [&](const QString &id) {
+        return router.activity()[size_t(router.nodeIds().indexOf(id))].level;
+    };
+    const auto feed = [&](double t, Gripper gripper, double force) {
+        ContactFrame frame;
+        frame.t = t;
+        frame.gripper = gripper;
+        frame.left.f = frame.right.f = force / 2;
+        frame.left.n = frame.right.n = 16;
+        frame.left.actor = frame.right.actor = 0;
+        pipeline.process(frame, sink);
+    };
+    feed(0.0, Gripper::Right, 30); // grasp only
+    QCOMPARE(level("force"), 1.0);
+    QCOMPARE(level("grasps"), 1.0);
+    QVERIFY(!router.activity()[size_t(router.nodeIds().indexOf("breaks"))].isActive());
+    feed(0.01, Gripper::Right, 100); // grasp + break at (100 - 80) / (120 - 80)
+    QCOMPARE(level("breaks"), 0.5);
+    QVERIFY(router.activity()[size_t(router.nodeIds().indexOf("force"))].exception);
+    QCOMPARE(level("gate"), -1.0); // the gate opens on its control only
+    QCOMPARE(level("buzz"), -1.0);
+    feed(0.02, Gripper::Left, 30); // the control's grasp opens the gate
+    QCOMPARE(level("gate"), 0.5);
+    QCOMPARE(level("buzz"), 0.5);
+    const NodeActivity &buzz = router.activity()[size_t(router.nodeIds().indexOf("buzz"))];
+    QCOMPARE(buzz.messages, 1u << unsigned(Message::Break));
+    QCOMPARE(buzz.t, 0.02);
+    // Every change was handed to the sink, each node once per change.
+    QVERIFY(!sink.changes.empty());
+    QCOMPARE(sink.changes.back().level, router.activity()[size_t(sink.changes.back().node)].level);
+    const size_t before = sink.changes.size();
+    feed(0.03, Gripper::Left, 30); // nothing changes
+    QCOMPARE(sink.changes.size(), before);
 }
 
 void TestRouter::checkLinkCountsDetectorsHeard()

@@ -685,39 +685,72 @@ void TestRouterEditor::engineSwapsWhileRunning()
 
 void TestRouterEditor::liveActivityLightsWires()
 {
+    // The wires light from what the running router reports, gates included: a break warning
+    // held back by a closed gate lights nothing past the gate until its control opens it.
     Fixture f;
-    LiveHistory history;
-    RouterGraph c3 = preset("C3");
-    f.editor.setGraph(c3);
-    f.editor.setHistory(&history);
-    history.start({}, {}, {"right.force", "left.slip"});
-    SemanticEvent grasp;
-    grasp.t = 1.0;
-    grasp.node = 0;
-    grasp.intensity = 0.5;
-    history.append(grasp);
-    history.commit();
-    RouterScene *scene = f.editor.scene();
-    const auto link = [&](const QString &from, const QString &to) {
-        for (size_t j = 0; j < c3.links.size(); ++j) {
-            if (c3.links[j].from == from && c3.links[j].to == to)
-                return scene->wireItem(int(j));
-        }
-        return static_cast<RouterWireItem *>(nullptr);
+    RouterGraph graph;
+    graph.nodes = {
+        {"force", "force", QJsonObject{{"gripper", "right"}}, {}},
+        {"control", "force", QJsonObject{{"gripper", "left"}}, {}},
+        {"grasps", "filter", QJsonObject{{"message", "grasp"}}, {}},
+        {"breaks", "filter", QJsonObject{{"message", "break"}}, {}},
+        {"gate", "gate", QJsonObject{{"mode", "open"}}, {}},
+        {"buzz", "pattern", QJsonObject{{"pattern", "vib.geiger"}}, {}},
+        {"right.vibro", "device", QJsonObject{{"model", "lra4"}, {"hand", "right"}}, {}},
     };
-    QVERIFY(link("right.force", "right.confirm")->glow() > 0.5);
-    QVERIFY(link("right.confirm", "right.squeeze")->glow() > 0.5);
-    QVERIFY(link("right.squeeze", "right.air")->glow() > 0.5);
-    // The warning filter stops a confirmation.
-    QCOMPARE(link("right.warn", "right.geiger")->glow(), 0.0);
-    QCOMPARE(link("left.slip", "left.confirm")->glow(), 0.0);
-    QVERIFY(scene->nodeItem("right.squeeze")->state().contains("grasp"));
-    QTRY_COMPARE_WITH_TIMEOUT(link("right.force", "right.confirm")->glow(), 0.0, 2000);
-    grasp.phase = EventPhase::End;
-    grasp.t = 2.0;
-    history.append(grasp);
-    history.commit();
-    QVERIFY(scene->nodeItem("right.squeeze")->state().isEmpty());
+    graph.links = {{"force", "", "grasps", ""},  {"force", "", "breaks", ""},
+                   {"breaks", "", "gate", "in"}, {"control", "", "gate", "control"},
+                   {"gate", "", "buzz", ""},     {"buzz", "", "right.vibro", ""}};
+    f.editor.setGraph(graph);
+    LiveHistory history;
+    f.editor.setHistory(&history);
+    LoadError error;
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    history.start({}, {}, router->nodeIds());
+    Pipeline pipeline(std::move(router));
+    struct Sink : PipelineSink
+    {
+        LiveHistory *history;
+        void onNodeActivity(const NodeActivity &activity) override { history->append(activity); }
+    } sink;
+    sink.history = &history;
+    const auto feed = [&](double t, Gripper gripper, double force) {
+        ContactFrame frame;
+        frame.t = t;
+        frame.gripper = gripper;
+        frame.left.f = frame.right.f = force / 2;
+        frame.left.n = frame.right.n = 16;
+        frame.left.actor = frame.right.actor = 0;
+        pipeline.process(frame, sink);
+        history.commit();
+    };
+    RouterScene *scene = f.editor.scene();
+    const auto wire = [&](const QString &from, const QString &to) {
+        for (size_t j = 0; j < graph.links.size(); ++j) {
+            if (graph.links[j].from == from && graph.links[j].to == to)
+                return scene->wireItem(int(j))->glow();
+        }
+        return -1.0;
+    };
+    feed(0.0, Gripper::Right, 100); // grasp and break
+    QVERIFY(wire("force", "grasps") > 0.5);
+    QVERIFY(wire("force", "breaks") > 0.5);
+    QCOMPARE(wire("breaks", "gate"), 0.0); // the gate holds it back
+    QCOMPARE(wire("gate", "buzz"), 0.0);
+    QVERIFY2(scene->nodeItem("breaks")->state().contains("break"),
+             qPrintable(scene->nodeItem("breaks")->state()));
+    QVERIFY(scene->nodeItem("gate")->state().isEmpty());
+    feed(0.01, Gripper::Left, 30); // the control's grasp opens it
+    QVERIFY(wire("breaks", "gate") > 0.5);
+    QVERIFY(wire("gate", "buzz") > 0.5);
+    QVERIFY(wire("buzz", "right.vibro") > 0.5);
+    QVERIFY(scene->nodeItem("buzz")->state().contains("break"));
+    QTRY_COMPARE_WITH_TIMEOUT(wire("force", "grasps"), 0.0, 2000);
+    feed(0.02, Gripper::Left, 0); // the control lets go: the gate ends what it passed
+    QVERIFY(scene->nodeItem("gate")->state().isEmpty());
+    QVERIFY(scene->nodeItem("buzz")->state().isEmpty());
+    QVERIFY(scene->nodeItem("breaks")->state().contains("break"));
 }
 
 void TestRouterEditor::screenshot()
