@@ -98,14 +98,12 @@ bool Command::numberOption(const QCommandLineParser &parser, const QString &opti
     return true;
 }
 
-QIODevice *Command::openOutput(const QString &path)
+bool Command::checkOutputPath(const QString &path)
 {
-    if (path == QLatin1String("-"))
-        return m_io.out;
     const auto refuse = [&](const QString &role, const QString &other) {
         inputError(tr("%1: cannot write: it is the same file as the %2 %3; nothing was written")
                        .arg(path, role, other));
-        return nullptr;
+        return false;
     };
     for (const KeptFile &kept : m_kept) {
         if (OutputFile::sameFile(path, kept.path))
@@ -115,6 +113,15 @@ QIODevice *Command::openOutput(const QString &path)
         if (OutputFile::sameFile(path, output->path()))
             return refuse(tr("output"), output->path());
     }
+    return true;
+}
+
+QIODevice *Command::openOutput(const QString &path)
+{
+    if (path == QLatin1String("-"))
+        return m_io.out;
+    if (!checkOutputPath(path))
+        return nullptr;
     auto file = std::make_unique<OutputFile>(path);
     LoadError error;
     if (!file->open(&error)) {

@@ -83,6 +83,12 @@ protected:
      * reading, and keeps it from being an output. Null after printing why.
      */
     QIODevice *openInput(const QString &path);
+    /**
+     * Whether `path` may be written: not an input or session kept so far, nor another
+     * output. False after printing why. openOutput checks this; a command that writes a
+     * file of its own kind (emulate's live log) asks it first.
+     */
+    bool checkOutputPath(const QString &path);
     /** What a file kept from the outputs is to the command. */
     enum class Kept
     {

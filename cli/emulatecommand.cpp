@@ -53,6 +53,10 @@ int EmulateCommand::execute(const QCommandLineParser &parser)
     options.udp = udp;
     options.link = parser.value(QStringLiteral("link"));
     options.logPath = parser.value(QStringLiteral("log"));
+    // The live log is emptied when the band starts: never the model file it was made from.
+    keepFromOutputs(parser.value(QStringLiteral("model")), Kept::Input);
+    if (!options.logPath.isEmpty() && !checkOutputPath(options.logPath))
+        return ExitInvalidInput;
     if (udp) {
         const QString value = parser.value(QStringLiteral("udp"));
         const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));

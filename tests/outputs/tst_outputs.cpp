@@ -191,6 +191,10 @@ void TestOutputs::outputIsAnInput_data()
         << QStringList{"render", path("mine.json"), "--duration",     "1", "--rate",
                        "100",    "--out",           path("mine.json")}
         << path("mine.json") << "it is the same file as the input";
+    QTest::newRow("emulate: the live log onto its model")
+        << QStringList{"emulate", "--model", path("model.json"), "--udp", "127.0.0.1:0",
+                       "--log", path("model.json")}
+        << path("model.json") << "it is the same file as the input";
 }
 
 void TestOutputs::outputIsAnInput()
@@ -201,6 +205,8 @@ void TestOutputs::outputIsAnInput()
     QDir().mkpath(path("sub"));
     QFile::remove(path("mine.json"));
     QVERIFY(QFile::copy(SEMHAP_RESOURCES "/patterns/vib.geiger.json", path("mine.json")));
+    QFile::remove(path("model.json"));
+    QVERIFY(QFile::copy(SEMHAP_RESOURCES "/devices/lra4.json", path("model.json")));
     const QByteArray before = contents(kept);
     const Result r = runSemhap(args);
     QCOMPARE(r.code, 1);
