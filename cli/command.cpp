@@ -194,6 +194,25 @@ void Command::addRoutingOptions(QCommandLineParser &parser)
                       tr("S")});
 }
 
+bool Command::simulationOptions(const QCommandLineParser &parser, double *duration, int *cubes)
+{
+    double count = -1;
+    if (!numberOption(parser, QStringLiteral("duration"), duration) ||
+        !numberOption(parser, QStringLiteral("cubes"), &count))
+        return false;
+    if (!(*duration > 0 && *duration <= MaxDuration)) {
+        usageError(tr("--duration must be between 0 and %1 s").arg(MaxDuration, 0, 'f', 0));
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("cubes")) &&
+        (count < 0 || count != std::floor(count) || count > 1e6)) {
+        usageError(tr("--cubes must be a whole number >= 0"));
+        return false;
+    }
+    *cubes = int(count);
+    return true;
+}
+
 void Command::addMaxGapOption(QCommandLineParser &parser)
 {
     parser.addOption({QStringLiteral("max-gap"),
@@ -209,7 +228,9 @@ bool Command::maxGapOption(const QCommandLineParser &options, ContactFrameParser
     if (!numberOption(options, option, &seconds))
         return false;
     if (!(seconds > 0.0 && seconds <= ContactFrameParser::MaxTime)) {
-        usageError(tr("--%1 must be more than 0 s").arg(option));
+        usageError(tr("--%1 must be more than 0 s and at most %2 s")
+                       .arg(option)
+                       .arg(ContactFrameParser::MaxTime, 0, 'g'));
         return false;
     }
     parser->setMaxGap(seconds);

@@ -111,6 +111,14 @@ protected:
      * when it is not a number of seconds within SessionInfo::MaxReactionTime.
      */
     bool routerContextOption(const QCommandLineParser &parser, RouterContext *context);
+    /**
+     * Reads --duration (more than 0, at most MaxDuration s) and --cubes (a whole number
+     * >= 0; absent: -1, the scene's own): what run and compare share. False after a usage
+     * message.
+     */
+    bool simulationOptions(const QCommandLineParser &parser, double *duration, int *cubes);
+    /** The longest simulated run (s): about eleven days. */
+    static constexpr double MaxDuration = 1e6;
     /** Declares --max-gap: how far a frame's `t` may jump (route, listen). */
     void addMaxGapOption(QCommandLineParser &parser);
     /** Reads --max-gap into `parser`'s rule; false after a usage message. */

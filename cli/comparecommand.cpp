@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "comparecommand.h"
 
+#include "operator.h"
 #include "simrun.h"
 #include "statistics.h"
 
@@ -252,7 +253,10 @@ void CompareCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("scene"), tr("Scene name or MJCF file."), tr("NAME|FILE")});
     parser.addOption({QStringLiteral("routers"), tr("Comma-separated routers (presets or files)."),
                       tr("LIST")});
-    parser.addOption({QStringLiteral("operator"), tr("scripted or reactive."), tr("NAME")});
+    parser.addOption({QStringLiteral("operator"),
+                      tr("Who drives the grippers: %1.")
+                          .arg(operatorNames().join(QStringLiteral(", "))),
+                      tr("NAME")});
     parser.addOption({QStringLiteral("seeds"), tr("Seeds 1..N per router."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds per run."), tr("S")});
     parser.addOption(
@@ -286,17 +290,14 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     }
     double seeds = 0;
     double duration = 0;
-    double cubes = -1;
+    int cubes = -1;
     double jobs = std::max(1u, std::thread::hardware_concurrency());
     if (!numberOption(parser, QStringLiteral("seeds"), &seeds) ||
-        !numberOption(parser, QStringLiteral("duration"), &duration) ||
-        !numberOption(parser, QStringLiteral("cubes"), &cubes) ||
+        !simulationOptions(parser, &duration, &cubes) ||
         !numberOption(parser, QStringLiteral("jobs"), &jobs))
         return ExitUsage;
     if (seeds < 1 || seeds != std::floor(seeds) || seeds > 100000)
         return usageError(tr("--seeds must be a whole number from 1"));
-    if (duration <= 0)
-        return usageError(tr("--duration must be positive"));
     if (jobs < 1 || jobs != std::floor(jobs))
         return usageError(tr("--jobs must be a whole number from 1"));
     int shard = 1;
@@ -330,7 +331,7 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             options.operatorName = parser.value(QStringLiteral("operator"));
             options.seed = std::uint64_t(seed);
             options.duration = duration;
-            options.sceneOptions.cubes = int(cubes);
+            options.sceneOptions.cubes = cubes;
             grid.push_back(options);
         }
     }

@@ -226,6 +226,10 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     devices.stopAll();
     if (session && !finishSession(*session))
         return ExitInvalidInput;
+    if (QuitSignal::requested())
+        report(tr("udp:%1: interrupted after t = %2 s; the outputs hold what was routed")
+                   .arg(source.port())
+                   .arg(pipeline.now()));
 
     const UdpFrameSource::Stats &stats = source.stats();
     report(tr("udp:%1: %2 datagram(s), %3 frame(s), %4 rejected (%5 oversize)")

@@ -6,6 +6,7 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "jsonlineswriter.h"
+#include "operator.h"
 #include "quitsignal.h"
 #include "sessionwriter.h"
 #include "simrun.h"
@@ -102,7 +103,9 @@ void RunCommand::configure(QCommandLineParser &parser)
     parser.addOption(
         {QStringLiteral("router"), tr("Router preset or router file."), tr("PRESET|FILE")});
     parser.addOption({QStringLiteral("operator"),
-                      tr("Who drives the grippers: scripted or reactive."), tr("NAME")});
+                      tr("Who drives the grippers: %1.")
+                          .arg(operatorNames().join(QStringLiteral(", "))),
+                      tr("NAME")});
     parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
     parser.addOption(
@@ -149,23 +152,16 @@ int RunCommand::execute(const QCommandLineParser &parser)
     options.operatorName = parser.value(QStringLiteral("operator"));
     options.overrides = parser.values(QStringLiteral("set"));
     double seed = 1;
-    double cubes = -1;
-    if (!numberOption(parser, QStringLiteral("duration"), &options.duration) ||
-        !numberOption(parser, QStringLiteral("seed"), &seed) ||
-        !numberOption(parser, QStringLiteral("cubes"), &cubes))
+    if (!simulationOptions(parser, &options.duration, &options.sceneOptions.cubes) ||
+        !numberOption(parser, QStringLiteral("seed"), &seed))
         return ExitUsage;
     RouterContext context{options.reactionTime};
     if (!routerContextOption(parser, &context))
         return ExitUsage;
     options.reactionTime = context.reactionTime;
-    if (options.duration <= 0 || options.duration > 1e6)
-        return usageError(tr("--duration must be between 0 and 1000000 s"));
     if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
         return usageError(tr("--seed must be a whole number >= 0"));
-    if (parser.isSet(QStringLiteral("cubes")) && (cubes < 0 || cubes != std::floor(cubes)))
-        return usageError(tr("--cubes must be a whole number >= 0"));
     options.seed = std::uint64_t(seed);
-    options.sceneOptions.cubes = int(cubes);
 
     const QStringList outputs{
         parser.value(QStringLiteral("metrics")), parser.value(QStringLiteral("frames")),

@@ -379,6 +379,18 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("too many cubes")
         << base + QStringList{"--scene", "box_and_block", "--cubes", "99"} << 1
         << "box_and_block: asked for 99 cubes, the scene has 24";
+    // compare reads --duration and --cubes by the same rules as run.
+    const QStringList compare{"compare",  "--scene",    "box_and_block", "--routers", "none",
+                              "--operator", "scripted", "--seeds",       "1"};
+    QTest::newRow("compare: negative cubes")
+        << compare + QStringList{"--duration", "1", "--cubes", "-2"} << 2
+        << "semhap compare: --cubes must be a whole number >= 0";
+    QTest::newRow("compare: fractional cubes")
+        << compare + QStringList{"--duration", "1", "--cubes", "2.5"} << 2
+        << "semhap compare: --cubes must be a whole number >= 0";
+    QTest::newRow("compare: endless duration")
+        << compare + QStringList{"--duration", "1e7"} << 2
+        << "semhap compare: --duration must be between 0 and 1000000 s";
 }
 
 void TestSimRun::commandLineErrors()
