@@ -2,6 +2,7 @@
 #include "command.h"
 
 #include "inputfile.h"
+#include "pipeline.h"
 #include "patternlibrary.h"
 #include "sessioninfo.h"
 #include "sessionreader.h"
@@ -211,6 +212,15 @@ bool Command::simulationOptions(const QCommandLineParser &parser, double *durati
     }
     *cubes = int(count);
     return true;
+}
+
+void Command::reportDroppedEvents(const Pipeline &pipeline)
+{
+    if (pipeline.droppedEvents() > 0)
+        report(tr("%1 event(s) dropped: a tick made more than %2 (too many detectors on one "
+                  "gripper)")
+                   .arg(pipeline.droppedEvents())
+                   .arg(EventBuffer::Capacity));
 }
 
 void Command::addMaxGapOption(QCommandLineParser &parser)

@@ -19,6 +19,7 @@
 
 namespace semhap {
 
+class Pipeline;
 class SessionReader;
 class SessionWriter;
 
@@ -138,6 +139,8 @@ protected:
     bool renderNamedPattern(const QString &pattern, RenderOptions options,
                             RenderedPattern *rendered, DeviceModelPtr *model);
 
+    /** Says how many events the pipeline dropped, when it dropped any. */
+    void reportDroppedEvents(const Pipeline &pipeline);
     /** Closes a recording, reporting dropped values and errors; false after an error line. */
     bool finishSession(SessionWriter &session);
     /** Says how many rows a session read skipped (each was reported as it came). */

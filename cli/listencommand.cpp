@@ -224,6 +224,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (source.stats().frames > 0)
         pipeline.flush(sink);
     devices.stopAll();
+    reportDroppedEvents(pipeline);
     if (session && !finishSession(*session))
         return ExitInvalidInput;
     if (QuitSignal::requested())

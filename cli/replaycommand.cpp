@@ -144,6 +144,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
         return inputError(message);
     pipeline.flush(sink);
     reportSkippedRows(*session);
+    reportDroppedEvents(pipeline);
 
     if (metricsOut) {
         QJsonObject metrics = tally.metrics(pipeline.now());

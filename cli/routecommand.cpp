@@ -117,6 +117,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     }
     pipeline.flush(sink);
     devices.stopAll();
+    reportDroppedEvents(pipeline);
     if (QuitSignal::requested())
         report(tr("%1: interrupted after t = %2 s; the outputs hold what was routed")
                    .arg(framesPath)

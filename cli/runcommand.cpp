@@ -247,6 +247,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (progress)
         m_io.err->write("\r\033[K");
     bands.stopAll();
+    reportDroppedEvents(run->pipeline());
     if (QuitSignal::requested())
         report(tr("run: interrupted at t = %1 s; the session and the outputs hold what was "
                   "simulated")

@@ -38,6 +38,11 @@ public:
     void process(const ContactFrame &frame, PipelineSink &sink);
     /** Renders the device instants up to and including the latest frame's time. */
     void flush(PipelineSink &sink);
+    /**
+     * Events lost because one tick made more than EventBuffer::Capacity of them (a router
+     * with very many detectors on one gripper); 0 in any sane design. Callers report it.
+     */
+    int droppedEvents() const { return m_events.dropped(); }
 
     Router &router() { return *m_router; }
     const Router &router() const { return *m_router; }

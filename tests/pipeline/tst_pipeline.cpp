@@ -106,6 +106,7 @@ private slots:
     void clockJumpsCostBoundedWork();
     void nonFiniteTimeIsNow();
     void endAllEndsActiveMessages();
+    void overfullTickIsCounted();
     void noAllocationPerTick();
 };
 
@@ -358,6 +359,24 @@ void TestPipeline::endAllEndsActiveMessages()
     QCOMPARE(r.events.back().t, 0.1);
     pipeline.endAll(sink);
     QCOMPARE(r.events.size(), size_t(2));
+}
+
+void TestPipeline::overfullTickIsCounted()
+{
+    // Seventeen force detectors on one gripper: a frame past break makes 34 events in one
+    // tick, two more than a tick holds. They are counted, for the commands to say so.
+    RouterGraph graph;
+    for (int d = 0; d < 17; ++d)
+        graph.nodes.push_back({QString("f%1").arg(d), "force", QJsonObject{{"gripper", "right"}}, {}});
+    LoadError error;
+    std::unique_ptr<Router> compiled = Router::compile(graph, &error);
+    QVERIFY2(compiled, qPrintable(error.toString()));
+    Pipeline pipeline(std::move(compiled));
+    Recorded r;
+    RecordingSink sink(r);
+    pipeline.process(rightFrame(0.0, 100.0), sink);
+    QCOMPARE(r.events.size(), size_t(EventBuffer::Capacity));
+    QCOMPARE(pipeline.droppedEvents(), 2);
 }
 
 void TestPipeline::noAllocationPerTick()
