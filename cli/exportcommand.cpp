@@ -48,6 +48,9 @@ void appendFingertip(QByteArray &row, const Fingertip &tip, const ActorTable &ac
         if (tip.hasFxyz)
             appendNumber(row, component);
     }
+    row += ',';
+    if (tip.mu > 0.0)
+        appendNumber(row, tip.mu);
 }
 
 } // namespace
@@ -121,7 +124,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
         return false;
     QByteArray header = "t,gripper";
     for (const char *tip : {"left", "right"}) {
-        for (const char *column : {"f", "n", "actor", "fx", "fy", "fz"})
+        for (const char *column : {"f", "n", "actor", "fx", "fy", "fz", "mu"})
             header += QByteArray(",") + tip + '_' + column;
     }
     frames->write(header + ",arrival\n");

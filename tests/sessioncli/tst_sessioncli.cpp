@@ -19,6 +19,8 @@
 #include <QTest>
 #include <QUdpSocket>
 
+#include <algorithm>
+
 using namespace semhap;
 
 namespace {
@@ -246,8 +248,11 @@ void TestSessionCli::exportCsv()
     QCOMPARE(semhapRun({"export", m_session, "--csv", csv}).code, 0);
     const QList<QByteArray> frames = contents(csv + "/contact_frames.csv").trimmed().split('\n');
     QCOMPARE(frames.first(), QByteArray("t,gripper,left_f,left_n,left_actor,left_fx,left_fy,"
-                                        "left_fz,right_f,right_n,right_actor,right_fx,right_fy,"
-                                        "right_fz,arrival"));
+                                        "left_fz,left_mu,right_f,right_n,right_actor,right_fx,"
+                                        "right_fy,right_fz,right_mu,arrival"));
+    // The simulation knows the friction coefficient of what a finger touches.
+    QVERIFY(std::any_of(frames.begin() + 1, frames.end(),
+                        [](const QByteArray &row) { return row.split(',').at(8).toDouble() > 0; }));
     QCOMPARE(frames.size() - 1, contents(m_dir.filePath("with.frames")).count('\n'));
     const QList<QByteArray> devices = contents(csv + "/device_frames.csv").split('\n');
     QVERIFY(devices.first().startsWith("t,left.air.b1,"));
