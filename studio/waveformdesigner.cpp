@@ -327,7 +327,8 @@ QWidget *WaveformDesigner::createEditor()
     treePage->setChildrenCollapsible(false);
     scroll->setMinimumWidth(280);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    treeBox->setMinimumWidth(180);
+    // At least what its buttons need in the longest language, so none is cut.
+    treeBox->setMinimumWidth(std::max(180, treeBox->minimumSizeHint().width()));
     m_tabs->addTab(treePage, tr("Signal tree"));
 
     auto *jsonPage = new QWidget(m_tabs);

@@ -6,15 +6,21 @@
 #include "devicemanager.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
+#include "imagechecks.h"
 #include "mainwindow.h"
 #include "openwindow.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
+#include "routereditor.h"
+#include "routernodeitem.h"
+#include "routerscene.h"
 #include "simviewport.h"
 #include "studio.h"
+#include "widgetchecks.h"
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QGraphicsView>
 #include <QImage>
 #include <QLabel>
 #include <QProcess>
@@ -308,22 +314,29 @@ void TestStudio::screenshotsOfEveryPanel_data()
 {
     QTest::addColumn<QSize>("size");
     QTest::addColumn<QString>("scene");
-    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block";
-    QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting";
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block" << "en";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting" << "en";
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "bimanual_sorting" << "de";
 }
 
 // Pictures of the window with each bottom dock (and the patterns tab) raised, to be looked at
-// (beside the test binary, or in $SEMHAP_SCREENSHOTS); the test checks they are the asked size.
+// (beside the test binary, or in $SEMHAP_SCREENSHOTS), and checked for what a person would
+// notice first: a blank viewport, empty plots, a router drawn outside its view, cut text.
 void TestStudio::screenshotsOfEveryPanel()
 {
     QFETCH(QSize, size);
     QFETCH(QString, scene);
+    QFETCH(QString, language);
     StudioOptions o = options();
     o.size = size;
     o.run.scene = scene;
     o.speed = 2.0;
-    MainWindow window(o);
-    window.show();
+    Studio studio(o);
+    studio.start();
+    if (language != "en")
+        studio.setLanguage(language);
+    MainWindow &window = *studio.window();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > 12.0, 30000);
     const QString dir = qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")
@@ -337,7 +350,52 @@ void TestStudio::screenshotsOfEveryPanel()
         QString error;
         QVERIFY2(Studio::screenshot(&window, path, &error), qPrintable(error));
         QCOMPARE(QImage(path).size(), size);
+        const QStringList clipped = clippedTexts(&window);
+        QVERIFY2(clipped.isEmpty(), qPrintable(dock + ": " + clipped.join("; ")));
     }
+
+    // The viewport shows the scene.
+    auto *viewport = window.findChild<SimViewport *>();
+    QVERIFY(viewport && viewport->isVisible());
+    QString why;
+    QVERIFY2(looksDrawn(viewport->grabFramebuffer(), &why), qPrintable(why));
+
+    // The plots show the run: at least one force and one device graph have data, and each
+    // graph with data in view puts its colour on screen.
+    window.findChild<QDockWidget *>("plotsDock")->raise();
+    QTest::qWait(500);
+    auto *plot = window.findChild<QDockWidget *>("plotsDock")->findChild<QCustomPlot *>();
+    QVERIFY(plot && plot->isVisible());
+    const QImage picture = plot->grab().toImage();
+    int drawn = 0;
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        QCPGraph *graph = plot->graph(g);
+        bool found = false;
+        const QCPRange keys = graph->keyAxis()->range();
+        const QCPRange values = graph->valueAxis()->range();
+        for (auto it = graph->data()->findBegin(keys.lower); it != graph->data()->end(); ++it)
+            found = found || (keys.contains(it->key) && values.contains(it->value));
+        if (!found || !graph->visible() || graph->pen().style() == Qt::NoPen)
+            continue;
+        QVERIFY2(pixelsOfColour(picture, graph->pen().color()) > 20,
+                 qPrintable(graph->name() + " has data in view but is not drawn"));
+        ++drawn;
+    }
+    QVERIFY2(drawn >= 2, qPrintable(QString("only %1 graph(s) drawn").arg(drawn)));
+
+    // The router fits its view: every node inside it.
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    QTest::qWait(200);
+    window.routerEditor()->fitView();
+    QGraphicsView *view = window.routerEditor()->view();
+    for (const RouterNode &node : window.routerEditor()->graph().nodes) {
+        const QRectF box =
+            window.routerEditor()->scene()->nodeItem(node.id)->sceneBoundingRect();
+        QVERIFY2(view->viewport()->rect().contains(view->mapFromScene(box).boundingRect()),
+                 qPrintable(node.id + " is outside the router's view"));
+    }
+    const QStringList clipped = clippedTexts(&window);
+    QVERIFY2(clipped.isEmpty(), qPrintable("router: " + clipped.join("; ")));
 }
 
 QTEST_MAIN(TestStudio)
