@@ -75,7 +75,7 @@ void ListenCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("udp"),
                       tr("UDP port to listen on (0: any free port, printed at start)."),
                       tr("PORT")});
-    parser.addOption({QStringLiteral("bind"),
+    parser.addOption({QStringLiteral("address"),
                       tr("Address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 "
                          "for every network)."),
                       tr("ADDR")});
@@ -86,10 +86,15 @@ void ListenCommand::configure(QCommandLineParser &parser)
                       tr("Record into a new session database, with each frame's arrival time."),
                       tr("FILE")});
     parser.addOption({QStringLiteral("notes"), tr("Notes kept with the session."), tr("TEXT")});
-    parser.addOption({QStringLiteral("bind-device"),
+    parser.addOption({QStringLiteral("bind"),
                       tr("Send a device's output to a band, e.g. "
                          "right.vibro=serial:/dev/ttyACM0 (repeatable)."),
                       tr("NAME=URI")});
+    // Spellings of semhap 1.0, where --bind was the address: read, with a warning.
+    QCommandLineOption oldBinding(QStringLiteral("bind-device"), tr("Old name of --bind."),
+                                  tr("NAME=URI"));
+    oldBinding.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(oldBinding);
     parser.addOption({QStringLiteral("duration"),
                       tr("Stop after this many seconds (default: until interrupted)."), tr("S")});
     addMaxGapOption(parser);
@@ -146,13 +151,28 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     DeviceManager devices;
     QString message;
     bool usage = false;
-    const QStringList bindings = parser.values(QStringLiteral("bind-device"));
+    // --bind is a device binding, as in route and run; a value without '=' is an address
+    // given the 1.0 way.
+    QStringList bindings;
+    QString address = parser.isSet(QStringLiteral("address"))
+                          ? parser.value(QStringLiteral("address"))
+                          : QStringLiteral("127.0.0.1");
+    for (const QString &value : parser.values(QStringLiteral("bind"))) {
+        if (value.contains(QLatin1Char('='))) {
+            bindings.append(value);
+        } else {
+            report(tr("listen: --bind %1: deprecated: the address to listen on is --address; "
+                      "--bind binds a device (NAME=URI)")
+                       .arg(value));
+            address = value;
+        }
+    }
+    if (parser.isSet(QStringLiteral("bind-device"))) {
+        report(tr("listen: --bind-device is deprecated: use --bind NAME=URI"));
+        bindings += parser.values(QStringLiteral("bind-device"));
+    }
     if (!bindDevices(bindings, router->player(), devices, &message, &usage))
         return usage ? usageError(message) : inputError(message);
-
-    const QString address = parser.isSet(QStringLiteral("bind"))
-                                ? parser.value(QStringLiteral("bind"))
-                                : QStringLiteral("127.0.0.1");
     UdpFrameSource source;
     if (!maxGapOption(parser, &source.parser()))
         return ExitUsage;

@@ -286,8 +286,13 @@ void TestSessionCli::errors_data()
     QTest::newRow("listen without port")
         << QStringList{"listen"} << 2 << "semhap listen: --udp is required";
     QTest::newRow("listen on a bad address")
-        << QStringList{"listen", "--udp", "0", "--bind", "localhostt"} << 1
+        << QStringList{"listen", "--udp", "0", "--address", "localhostt"} << 1
         << "localhostt: not an IP address";
+    // The 1.0 spelling of the address is still read, with a warning first.
+    QTest::newRow("listen --bind ADDR, deprecated")
+        << QStringList{"listen", "--udp", "0", "--bind", "localhostt"} << 1
+        << "listen: --bind localhostt: deprecated: the address to listen on is --address; "
+           "--bind binds a device (NAME=URI)";
 }
 
 void TestSessionCli::errors()
@@ -414,7 +419,7 @@ void TestSessionCli::listenClosesItsSessionOnSigterm()
     // With a band bound, a signal used to stop it and end the process there, the session
     // left unclosed.
     const quint16 port = startListen(
-        listen, {"--session", session, "--bind-device", "right.vibro=virtual:band"}, &err);
+        listen, {"--session", session, "--bind", "right.vibro=virtual:band"}, &err);
     QVERIFY2(port, err.constData());
     QUdpSocket sender;
     for (int k = 0; k < 10; ++k)
