@@ -16,7 +16,7 @@ namespace semhap {
 class PatternDocument;
 
 /**
- * The parameters of the node selected in the designer's signal tree, as a form: the
+ * The parameters of the node selected in the designer's waveform tree, as a form: the
  * pattern's name and description, a track's channels, or a waveform's type and fields
  * (numbers with their parameter bindings, start values, keyframes). Each committed edit
  * is one undoable change of the document.

@@ -329,7 +329,7 @@ QWidget *WaveformDesigner::createEditor()
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     // At least what its buttons need in the longest language, so none is cut.
     treeBox->setMinimumWidth(std::max(180, treeBox->minimumSizeHint().width()));
-    m_tabs->addTab(treePage, tr("Signal tree"));
+    m_tabs->addTab(treePage, tr("Waveform tree"));
 
     auto *jsonPage = new QWidget(m_tabs);
     auto *jsonLayout = new QVBoxLayout(jsonPage);

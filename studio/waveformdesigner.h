@@ -31,7 +31,7 @@ class Transport;
 
 /**
  * The waveform designer: a library of patterns (built-ins read-only, the user's own in
- * the data folder), the pattern's signal tree with an inspector and a raw JSON tab, a
+ * the data folder), the pattern's waveform tree with an inspector and a raw JSON tab, a
  * preview of commanded and predicted output per channel, and an audition on a bound device
  * or a virtual one. Every edit is undoable; files open and save as `semhap.pattern/1` and
  * import and export as AHAP and `.haptic`.

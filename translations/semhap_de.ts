@@ -1933,10 +1933,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Den ausgewählten Knoten entfernen</translation>
     </message>
     <message>
-        <source>Signal tree</source>
-        <translation>Signalbaum</translation>
-    </message>
-    <message>
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
@@ -2119,6 +2115,10 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Cannot audition on %1</source>
         <translation>Vorhören auf %1 nicht möglich</translation>
+    </message>
+    <message>
+        <source>Waveform tree</source>
+        <translation>Wellenformbaum</translation>
     </message>
 </context>
 </TS>

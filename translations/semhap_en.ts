@@ -1932,10 +1932,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Signal tree</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>JSON</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2117,6 +2113,10 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Cannot audition on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waveform tree</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
