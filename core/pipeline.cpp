@@ -52,6 +52,15 @@ void Pipeline::endAll(PipelineSink &sink)
     reportActivity(sink);
 }
 
+void Pipeline::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
+{
+    const bool started = m_router->isStarted();
+    endAll(sink);
+    m_router = std::move(router);
+    if (started)
+        m_router->start(m_now);
+}
+
 void Pipeline::reportActivity(PipelineSink &sink)
 {
     for (int node : m_router->activityChanges())

@@ -39,6 +39,12 @@ public:
     /** Renders the device instants up to and including the latest frame's time. */
     void flush(PipelineSink &sink);
     /**
+     * Swaps in another router mid-run (the editor's Apply): the old one's active messages
+     * end now, their events going to `sink`, and the new one starts now, on the same clock,
+     * so a device it keeps goes on from the next instant.
+     */
+    void setRouter(std::unique_ptr<Router> router, PipelineSink &sink);
+    /**
      * Events lost because one tick made more than EventBuffer::Capacity of them (a router
      * with very many detectors on one gripper); 0 in any sane design. Callers report it.
      */

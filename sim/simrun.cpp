@@ -72,14 +72,9 @@ bool SimRun::step(RunSink &sink)
 
 void SimRun::setRouter(std::unique_ptr<Router> router, RunSink &sink)
 {
-    EventBuffer events;
-    if (m_pipeline->router().isStarted())
-        m_pipeline->router().endAll(m_pipeline->now(), events);
-    for (const SemanticEvent &event : events)
-        sink.onEvent(event);
+    m_pipeline->setRouter(std::move(router), sink);
     // The perception reads the player of the router it was made for: replace both together.
-    m_perception = std::make_unique<Perception>(*router);
-    m_pipeline = std::make_unique<Pipeline>(std::move(router));
+    m_perception = std::make_unique<Perception>(m_pipeline->router());
 }
 
 SceneState SimRun::sceneState() const

@@ -22,8 +22,7 @@ LiveRig::~LiveRig() = default;
 
 void LiveRig::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
 {
-    m_pipeline->endAll(sink);
-    m_pipeline = std::make_unique<Pipeline>(std::move(router));
+    m_pipeline->setRouter(std::move(router), sink);
 }
 
 bool LiveRig::open(QString *error)

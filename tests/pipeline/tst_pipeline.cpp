@@ -107,6 +107,7 @@ private slots:
     void nonFiniteTimeIsNow();
     void endAllEndsActiveMessages();
     void overfullTickIsCounted();
+    void routerSwapKeepsTheClock();
     void noAllocationPerTick();
 };
 
@@ -377,6 +378,34 @@ void TestPipeline::overfullTickIsCounted()
     pipeline.process(rightFrame(0.0, 100.0), sink);
     QCOMPARE(r.events.size(), size_t(EventBuffer::Capacity));
     QCOMPARE(pipeline.droppedEvents(), 2);
+}
+
+void TestPipeline::routerSwapKeepsTheClock()
+{
+    // C3 to C4 while the right hand holds: C3's grasp ends at the swap's time, C4 starts on
+    // the same clock, and the right band's 100 Hz instants go on without a gap or a repeat.
+    Pipeline pipeline(router("C3"));
+    Recorded r;
+    RecordingSink sink(r);
+    for (int k = 0; k <= 50; ++k)
+        pipeline.process(rightFrame(1.0 + k * 0.001, 50.0), sink);
+    pipeline.setRouter(router("C4"), sink);
+    QCOMPARE(r.events.back().phase, EventPhase::End);
+    QCOMPARE(r.events.back().t, 1.05);
+    QVERIFY(pipeline.router().isStarted());
+    for (int k = 51; k <= 100; ++k)
+        pipeline.process(rightFrame(1.0 + k * 0.001, 50.0), sink);
+    pipeline.flush(sink);
+    QCOMPARE(r.events.back().phase, EventPhase::Begin); // C4's own grasp
+    const int air = pipeline.router().player().deviceIndex("right.air");
+    std::vector<double> instants;
+    for (const DeviceFrame &frame : r.frames) {
+        if (frame.device == air)
+            instants.push_back(frame.t);
+    }
+    QCOMPARE(instants.size(), size_t(11)); // 1.00 … 1.10 at 100 Hz
+    for (size_t i = 1; i < instants.size(); ++i)
+        QVERIFY(std::abs(instants[i] - instants[i - 1] - 0.01) < 1e-9);
 }
 
 void TestPipeline::noAllocationPerTick()
