@@ -7,6 +7,7 @@
 #include "emergencystop.h"
 #include "quitsignal.h"
 #include "sessionwriter.h"
+#include "sinklist.h"
 #include "streamsink.h"
 #include "udpframesource.h"
 
@@ -207,8 +208,9 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     report(tr("listening on udp:%1:%2").arg(address).arg(source.port()));
 
     Pipeline pipeline(std::move(router));
-    StreamSink streams(pipeline.router(), events, deviceFrames, session.get());
-    DeviceOutputSink sink(pipeline.router().player(), devices, &streams);
+    StreamSink streams(pipeline.router(), events, deviceFrames);
+    DeviceOutputSink output(pipeline.router().player(), devices);
+    SinkList sink{&output, &streams, session.get()};
     const auto process = [&](const ContactFrame &frame, double arrival) {
         if (session)
             session->recordContactFrame(frame, arrival);

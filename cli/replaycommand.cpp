@@ -2,6 +2,7 @@
 #include "replaycommand.h"
 
 #include "sessionreader.h"
+#include "sinklist.h"
 #include "streamsink.h"
 
 #include <QJsonDocument>
@@ -131,7 +132,8 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
 
     Pipeline pipeline(std::move(router));
     MessageTally tally(pipeline.router().nodeIds());
-    StreamSink sink(pipeline.router(), events, deviceFrames, &tally);
+    StreamSink streams(pipeline.router(), events, deviceFrames);
+    SinkList sink{&streams, &tally};
     qint64 frames = 0;
     const bool read = session->readContactFrames(
         [&](const ContactFrame &frame, double) {

@@ -9,6 +9,7 @@
 #include "pipeline.h"
 #include "routergraph.h"
 #include "quitsignal.h"
+#include "sinklist.h"
 #include "streamsink.h"
 
 #include <chrono>
@@ -93,7 +94,8 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     reader.setErrorHandler([this](const LoadError &e) { report(e.toString()); });
     Pipeline pipeline(std::move(router));
     StreamSink streams(pipeline.router(), events, deviceFrames);
-    DeviceOutputSink sink(pipeline.router().player(), devices, &streams);
+    DeviceOutputSink output(pipeline.router().player(), devices);
+    SinkList sink{&output, &streams};
     using Clock = std::chrono::steady_clock;
     Clock::time_point start;
     double t0 = 0.0;

@@ -10,6 +10,7 @@
 #include "quitsignal.h"
 #include "sessionwriter.h"
 #include "simrun.h"
+#include "sinklist.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -71,20 +72,20 @@ private:
     JsonLinesWriter m_deviceWriter;
 };
 
-/** Sends the run's device frames to bound bands, and everything on to the writer. */
+/** Sends the run's device frames to bound bands and everything to the writer. */
 class BoundSink : public RunSink
 {
 public:
     BoundSink(DeviceOutputSink &devices, StreamWriter &writer)
-        : m_devices(devices), m_writer(writer)
+        : m_writer(writer), m_sinks{&devices, &writer}
     {}
     void onContactFrame(const ContactFrame &frame) override { m_writer.onContactFrame(frame); }
-    void onEvent(const SemanticEvent &event) override { m_devices.onEvent(event); }
-    void onDeviceFrame(const DeviceFrame &frame) override { m_devices.onDeviceFrame(frame); }
+    void onEvent(const SemanticEvent &event) override { m_sinks.onEvent(event); }
+    void onDeviceFrame(const DeviceFrame &frame) override { m_sinks.onDeviceFrame(frame); }
 
 private:
-    DeviceOutputSink &m_devices;
     StreamWriter &m_writer;
+    SinkList m_sinks;
 };
 
 } // namespace
@@ -209,7 +210,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     EmergencyStop::installGraceful();
     if (bound)
         bands.armAll(true);
-    DeviceOutputSink output(run->pipeline().router().player(), bands, &writer);
+    DeviceOutputSink output(run->pipeline().router().player(), bands);
     BoundSink sink(output, writer);
 
     const bool progress = isatty(fileno(stderr)) && m_io.err != nullptr;

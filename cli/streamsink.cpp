@@ -5,10 +5,9 @@
 
 namespace semhap {
 
-StreamSink::StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames,
-                       PipelineSink *next)
+StreamSink::StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames)
     : m_writeEvents(events), m_writeFrames(deviceFrames), m_events(events),
-      m_deviceFrames(deviceFrames), m_next(next)
+      m_deviceFrames(deviceFrames)
 {
     QStringList devices;
     for (int d = 0; d < router.player().deviceCount(); ++d)
@@ -21,16 +20,12 @@ void StreamSink::onEvent(const SemanticEvent &event)
 {
     if (m_writeEvents)
         m_events.write(event);
-    if (m_next)
-        m_next->onEvent(event);
 }
 
 void StreamSink::onDeviceFrame(const DeviceFrame &frame)
 {
     if (m_writeFrames)
         m_deviceFrames.write(frame);
-    if (m_next)
-        m_next->onDeviceFrame(frame);
 }
 
 } // namespace semhap

@@ -10,13 +10,12 @@ namespace semhap {
 
 /**
  * Writes what a pipeline produces as JSON Lines, each stream to its own device (null: not
- * written); what `route`, `replay` and `listen` share. Optionally also passes everything on.
+ * written); what `route`, `replay` and `listen` share, in a SinkList with their other sinks.
  */
 class StreamSink : public PipelineSink
 {
 public:
-    StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames,
-               PipelineSink *next = nullptr);
+    StreamSink(const Router &router, QIODevice *events, QIODevice *deviceFrames);
 
     void onEvent(const SemanticEvent &event) override;
     void onDeviceFrame(const DeviceFrame &frame) override;
@@ -26,7 +25,6 @@ private:
     bool m_writeFrames;
     JsonLinesWriter m_events;
     JsonLinesWriter m_deviceFrames;
-    PipelineSink *m_next;
 };
 
 } // namespace semhap

@@ -12,7 +12,7 @@ set(SEMHAP_PUBLIC_HEADERS
     core/jsonlineswriter.h
     core/devicemodel.h core/routercontext.h core/routergraph.h core/routernodetype.h
     core/router.h core/player.h
-    core/pipeline.h core/nodeactivity.h core/statistics.h
+    core/pipeline.h core/nodeactivity.h core/sinklist.h core/statistics.h
     core/patternrender.h)
 
 install(TARGETS semhap_patterns semhap_core EXPORT semhapTargets

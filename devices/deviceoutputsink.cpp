@@ -8,24 +8,10 @@
 
 namespace semhap {
 
-DeviceOutputSink::DeviceOutputSink(const Player &player, const DeviceManager &manager,
-                                   PipelineSink *next)
-    : m_next(next)
+DeviceOutputSink::DeviceOutputSink(const Player &player, const DeviceManager &manager)
 {
     for (int d = 0; d < player.deviceCount(); ++d)
         m_transports.push_back(manager.transport(player.deviceName(d)));
-}
-
-void DeviceOutputSink::onEvent(const SemanticEvent &event)
-{
-    if (m_next)
-        m_next->onEvent(event);
-}
-
-void DeviceOutputSink::onNodeActivity(const NodeActivity &activity)
-{
-    if (m_next)
-        m_next->onNodeActivity(activity);
 }
 
 void DeviceOutputSink::onDeviceFrame(const DeviceFrame &frame)
@@ -33,8 +19,6 @@ void DeviceOutputSink::onDeviceFrame(const DeviceFrame &frame)
     if (frame.device >= 0 && frame.device < int(m_transports.size()) &&
         m_transports[size_t(frame.device)])
         m_transports[size_t(frame.device)]->send(frame);
-    if (m_next)
-        m_next->onDeviceFrame(frame);
 }
 
 int DeviceOutputSink::boundCount() const

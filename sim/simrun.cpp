@@ -2,6 +2,7 @@
 #include "simrun.h"
 
 #include "sessionwriter.h"
+#include "sinklist.h"
 
 #include <cmath>
 
@@ -49,7 +50,8 @@ bool SimRun::step(RunSink &sink)
     Operator &driver = m_override ? *m_override : *m_operator;
     driver.act(*m_world);
     m_world->step();
-    Tee tee(*m_perception, sink);
+    // The operator feels what the bands deliver; the caller gets everything.
+    SinkList tee{m_perception.get(), &sink};
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         if (!m_world->hasGripper(g))
             continue;

@@ -96,27 +96,6 @@ public:
 private:
     SimRun() = default;
 
-    /** Forwards the pipeline's output to the perception and the caller's sink. */
-    class Tee : public PipelineSink
-    {
-    public:
-        Tee(Perception &perception, RunSink &sink) : m_perception(perception), m_sink(sink) {}
-        void onEvent(const SemanticEvent &event) override { m_sink.onEvent(event); }
-        void onNodeActivity(const NodeActivity &activity) override
-        {
-            m_sink.onNodeActivity(activity);
-        }
-        void onDeviceFrame(const DeviceFrame &frame) override
-        {
-            m_perception.onDeviceFrame(frame);
-            m_sink.onDeviceFrame(frame);
-        }
-
-    private:
-        Perception &m_perception;
-        RunSink &m_sink;
-    };
-
     RunOptions m_options;
     std::unique_ptr<World> m_world;
     std::unique_ptr<Pipeline> m_pipeline;

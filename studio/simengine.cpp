@@ -48,21 +48,23 @@ void SimEngine::StepSink::onContactFrame(const ContactFrame &frame)
 
 void SimEngine::StepSink::onEvent(const SemanticEvent &event)
 {
-    if (m_engine.m_recorder)
-        m_engine.m_recorder->onEvent(event);
-    m_engine.m_output->onEvent(event);
+    m_engine.m_outputs.onEvent(event);
 }
 
 void SimEngine::StepSink::onDeviceFrame(const DeviceFrame &frame)
 {
-    if (m_engine.m_recorder)
-        m_engine.m_recorder->onDeviceFrame(frame);
-    m_engine.m_output->onDeviceFrame(frame);
+    m_engine.m_outputs.onDeviceFrame(frame);
 }
 
 void SimEngine::StepSink::onNodeActivity(const NodeActivity &activity)
 {
-    m_engine.m_output->onNodeActivity(activity);
+    m_engine.m_outputs.onNodeActivity(activity);
+}
+
+void SimEngine::rewire()
+{
+    // The recording first: it keeps what was sent, then the bands, then the readouts.
+    m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
 }
 
 SimEngine::SimEngine(QObject *parent)
@@ -173,6 +175,7 @@ void SimEngine::stopSource()
     if (m_running.exchange(false))
         emit runningChanged(false);
     m_output.reset();
+    rewire();
     m_sceneFeed.reset();
     m_run.reset();
     m_rig.reset();
@@ -185,7 +188,8 @@ void SimEngine::install()
     const Player &player = pipeline().router().player();
     QString bindError;
     bindRouterDevices(player, &bindError);
-    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
+    rewire();
     m_manualOperator = std::make_unique<ManualOperator>();
     if (m_manual.exchange(false))
         emit manualChanged(false);
@@ -274,10 +278,12 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         // The old router's closing events went into the recording; the new router is
         // another session.
         recording = std::move(m_recorder);
+        rewire();
         const Player &player = pipeline().router().player();
         QString bindError;
         bindRouterDevices(player, &bindError);
-        m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+        m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
+    rewire();
         // What the old router sent is read with its numbering, before the history switches;
         // the feed is drained on this thread only, so nothing newer slips in before that.
         m_feed.drainInto(m_history);
@@ -390,7 +396,8 @@ bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *err
     if (!m_devices->bind(name, uri,
                          std::make_shared<const DeviceModel>(player.deviceModel(device)), error))
         return false;
-    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices, &m_feed);
+    m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
+    rewire();
     return true;
 }
 
@@ -531,6 +538,7 @@ void SimEngine::silenceDevices()
         for (int c = 0; c < silence.channelCount; ++c)
             silence.values[size_t(c)] = player.deviceModel(d).channels()[size_t(c)].min;
         m_output->onDeviceFrame(silence);
+        m_feed.onDeviceFrame(silence);
     }
 }
 
@@ -602,6 +610,7 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
             return false;
         recorder->setActorTable(m_run ? &m_run->world().actors() : &m_rig->actors());
         m_recorder = std::move(recorder);
+        rewire();
         m_nextInput = 0.0;
     }
     emit recordingChanged(true);
@@ -614,6 +623,7 @@ void SimEngine::stopRecording()
     {
         std::lock_guard<std::mutex> lock(m_setupMutex);
         recorder = std::move(m_recorder);
+        rewire();
     }
     if (!recorder)
         return;

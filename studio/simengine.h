@@ -6,6 +6,7 @@
 #include "livehistory.h"
 #include "liverig.h"
 #include "simrun.h"
+#include "sinklist.h"
 
 #include <QObject>
 #include <QTimer>
@@ -194,6 +195,8 @@ private:
     void listenLoop();
     /** Sends every device of the running router its idle values, through the readouts. */
     void silenceDevices();
+    /** Rebuilds m_outputs after the recorder or the device output changed (setup lock held). */
+    void rewire();
     void stepOnce();
     void drain();
     void recordInput(double t);
@@ -210,6 +213,8 @@ private:
     LiveFeed m_feed;
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
     std::unique_ptr<SessionWriter> m_recorder;
+    /** Where the pipeline's output goes: the recorder, the bands, the feed (rewire()). */
+    SinkList m_outputs;
     double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};
     LiveHistory m_history;

@@ -2,6 +2,7 @@
 // The pipeline's clock and the player's mixing: when device frames come out and what they hold.
 #include "allocationcounter.h"
 #include "pipeline.h"
+#include "sinklist.h"
 
 #include <QJsonDocument>
 #include <QTest>
@@ -108,6 +109,7 @@ private slots:
     void endAllEndsActiveMessages();
     void overfullTickIsCounted();
     void routerSwapKeepsTheClock();
+    void sinkListHandsEverythingToEach();
     void noAllocationPerTick();
 };
 
@@ -406,6 +408,35 @@ void TestPipeline::routerSwapKeepsTheClock()
     QCOMPARE(instants.size(), size_t(11)); // 1.00 … 1.10 at 100 Hz
     for (size_t i = 1; i < instants.size(); ++i)
         QVERIFY(std::abs(instants[i] - instants[i - 1] - 0.01) < 1e-9);
+}
+
+void TestPipeline::sinkListHandsEverythingToEach()
+{
+    // Two recorders on one list (a null left out) get the same streams, the same as one
+    // recorder alone.
+    Recorded alone;
+    {
+        Pipeline pipeline(router("C3"));
+        RecordingSink sink(alone);
+        for (int k = 0; k <= 200; ++k)
+            pipeline.process(rightFrame(k * 0.001, k < 100 ? 50.0 : 0.0), sink);
+        pipeline.flush(sink);
+    }
+    Recorded first;
+    Recorded second;
+    RecordingSink a(first);
+    RecordingSink b(second);
+    SinkList list{&a, nullptr, &b};
+    Pipeline pipeline(router("C3"));
+    for (int k = 0; k <= 200; ++k)
+        pipeline.process(rightFrame(k * 0.001, k < 100 ? 50.0 : 0.0), list);
+    pipeline.flush(list);
+    QVERIFY(alone.events.size() == 2);
+    for (const Recorded *r : {&first, &second}) {
+        QCOMPARE(r->events.size(), alone.events.size());
+        QCOMPARE(r->frames.size(), alone.frames.size());
+        QCOMPARE(r->events.back().t, alone.events.back().t);
+    }
 }
 
 void TestPipeline::noAllocationPerTick()
