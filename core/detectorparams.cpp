@@ -35,6 +35,19 @@ bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, Q
     return true;
 }
 
+ParamSpec minDurationSpec()
+{
+    return ParamSpec::number(QStringLiteral("minDuration"), 0, QStringLiteral("s"),
+                             QStringLiteral("A message begins only after its condition has "
+                                            "held this long"))
+        .atLeast(0);
+}
+
+ParamSpec hysteresisSpec(const QString &unit, const QString &help)
+{
+    return ParamSpec::number(QStringLiteral("hysteresis"), 0, unit, help).atLeast(0);
+}
+
 QJsonObject detectorParamsToJson(const DetectorParams &params)
 {
     QJsonObject json;

@@ -27,6 +27,11 @@ using DetectorParams = std::vector<DetectorParam>;
 bool readDetectorParams(const QJsonObject &json, const DetectorParams &params, QString *key,
                         QString *reason);
 
+/** `minDuration` (s, >= 0): every detector's, and a threshold node's, delay before a begin. */
+ParamSpec minDurationSpec();
+/** `hysteresis` (>= 0, in `unit`): how far back past its threshold an active message holds. */
+ParamSpec hysteresisSpec(const QString &unit, const QString &help);
+
 /** Every parameter as a JSON object. */
 QJsonObject detectorParamsToJson(const DetectorParams &params);
 

@@ -13,7 +13,6 @@ namespace {
 DetectorParams fields(ForceDetector::Params &p)
 {
     const QString newtons = QStringLiteral("N");
-    const QString seconds = QStringLiteral("s");
     return {
         {ParamSpec::number(QStringLiteral("grasp"), 0, newtons,
                            QStringLiteral("T_grasp: a grasp is confirmed while the grip force "
@@ -27,16 +26,10 @@ DetectorParams fields(ForceDetector::Params &p)
                            QStringLiteral("F_max: the force at which the break warning reaches "
                                           "full intensity")),
          &p.max},
-        {ParamSpec::number(QStringLiteral("hysteresis"), 0, newtons,
-                           QStringLiteral("An active message holds until the force falls this "
-                                          "far below its threshold"))
-             .atLeast(0),
+        {hysteresisSpec(newtons, QStringLiteral("An active message holds until the force falls "
+                                                "this far below its threshold")),
          &p.hysteresis},
-        {ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
-                           QStringLiteral("A message begins only after its condition has held "
-                                          "this long"))
-             .atLeast(0),
-         &p.minDuration}};
+        {minDurationSpec(), &p.minDuration}};
 }
 
 } // namespace

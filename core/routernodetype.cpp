@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "routernodetype.h"
 
+#include "detectorparams.h"
 #include "forcedetector.h"
 #include "player.h"
 #include "routernodes.h"
@@ -37,6 +38,15 @@ const PortSpec *RouterNodeType::output(const QString &name) const
             return &port;
     }
     return nullptr;
+}
+
+RouterNodeType::Role RouterNodeType::role() const
+{
+    if (inputs.empty())
+        return Role::Source;
+    if (outputs.empty())
+        return Role::Device;
+    return outputs.front().type == PortType::Voice ? Role::Voices : Role::Logic;
 }
 
 const ParamSpec *RouterNodeType::param(const QString &name) const
@@ -95,11 +105,6 @@ const std::vector<RouterNodeType> &routerNodeTypes()
         const PortSpec signalIn{QStringLiteral("in"), PortType::Signal, false};
         const PortSpec value{QStringLiteral("value"), PortType::Signal, true};
         const QString seconds = QStringLiteral("s");
-        const ParamSpec minDuration =
-            ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
-                              QStringLiteral("A message begins only after its condition has "
-                                             "held this long"))
-                .atLeast(0);
         return std::vector<RouterNodeType>{
             {QStringLiteral("force"),
              QStringLiteral("Force detector (Algorithm 1): grasp and break messages from F"),
@@ -156,11 +161,9 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("The value at which intensity reaches 1; below "
                                                "level, the message is active below level"))
                   .required(),
-              ParamSpec::number(QStringLiteral("hysteresis"), 0, QString(),
-                                QStringLiteral("An active message holds until the signal is "
-                                               "this far back past level"))
-                  .atLeast(0),
-              minDuration}},
+              hysteresisSpec(QString(), QStringLiteral("An active message holds until the "
+                                                       "signal is this far back past level")),
+              minDurationSpec()}},
             {QStringLiteral("filter"),
              QStringLiteral("Passes the messages that match by message, category and gripper"),
              {in},

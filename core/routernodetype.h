@@ -42,6 +42,16 @@ struct RouterNodeType
     std::vector<PortSpec> outputs; ///< the first is the default output
     std::vector<ParamSpec> params; ///< its parameters (pattern nodes add the pattern's)
 
+    /** What a node of the type does in a router, read from its ports. */
+    enum class Role
+    {
+        Source, ///< no inputs: reads contact frames (detectors, signals)
+        Logic,  ///< events or signals in and out
+        Voices, ///< makes voices (pattern, proportional)
+        Device  ///< no outputs: plays
+    };
+    Role role() const;
+
     const PortSpec *input(const QString &name) const;
     const PortSpec *output(const QString &name) const;
     const ParamSpec *param(const QString &name) const;

@@ -13,7 +13,6 @@ namespace {
 DetectorParams fields(SlipDetector::Params &p)
 {
     const QString contacts = QStringLiteral("contacts");
-    const QString seconds = QStringLiteral("s");
     return {
         {ParamSpec::number(QStringLiteral("grasp"), 0, QStringLiteral("N"),
                            QStringLiteral("T_grasp: contacts count as a grasp while the grip "
@@ -28,16 +27,10 @@ DetectorParams fields(SlipDetector::Params &p)
                            QStringLiteral("N_min: the contact count at which the slip warning "
                                           "reaches full intensity")),
          &p.min},
-        {ParamSpec::number(QStringLiteral("hysteresis"), 0, contacts,
-                           QStringLiteral("Slipping holds until the contacts rise this far "
-                                          "above loss"))
-             .atLeast(0),
+        {hysteresisSpec(contacts, QStringLiteral("Slipping holds until the contacts rise this "
+                                                 "far above loss")),
          &p.hysteresis},
-        {ParamSpec::number(QStringLiteral("minDuration"), 0, seconds,
-                           QStringLiteral("A message begins only after its condition has held "
-                                          "this long"))
-             .atLeast(0),
-         &p.minDuration}};
+        {minDurationSpec(), &p.minDuration}};
 }
 
 } // namespace

@@ -120,14 +120,19 @@ QColor RouterNodeItem::portColor(PortType type)
 
 QColor RouterNodeItem::kindColor(const QString &type)
 {
-    if (type == QLatin1String("force") || type == QLatin1String("slip") ||
-        type == QLatin1String("signal"))
-        return {0x56, 0xB4, 0xE9}; // sky: where events come from
-    if (type == QLatin1String("pattern") || type == QLatin1String("proportional"))
+    // By the type's role in the table, so a new type is coloured without a change here.
+    const RouterNodeType *spec = routerNodeType(type);
+    switch (spec ? spec->role() : RouterNodeType::Role::Logic) {
+    case RouterNodeType::Role::Source:
+        return {0x56, 0xB4, 0xE9}; // sky: where events and signals come from
+    case RouterNodeType::Role::Voices:
         return {0xCC, 0x79, 0xA7}; // purple: what makes voices
-    if (type == QLatin1String("device"))
+    case RouterNodeType::Role::Device:
         return {0xE6, 0x9F, 0x00}; // orange: what plays
-    return {0x00, 0x9E, 0x73};     // green: logic
+    case RouterNodeType::Role::Logic:
+        break;
+    }
+    return {0x00, 0x9E, 0x73}; // green: logic
 }
 
 QRectF RouterNodeItem::boundingRect() const

@@ -23,26 +23,23 @@ namespace {
 constexpr double ColumnSpacing = 230.0;
 constexpr double RowGap = 18.0;
 
-/** The layout column of a node type: where events come from, logic, sources, devices. */
+/** The layout column of a node type: sources, logic, voice makers, devices, left to right. */
 int columnOf(const QString &type)
 {
-    if (type == QLatin1String("force") || type == QLatin1String("slip") ||
-        type == QLatin1String("signal"))
-        return 0;
-    if (type == QLatin1String("pattern") || type == QLatin1String("proportional"))
-        return 2;
-    if (type == QLatin1String("device"))
-        return 3;
-    return 1;
+    const RouterNodeType *spec = routerNodeType(type);
+    return spec ? int(spec->role()) : int(RouterNodeType::Role::Logic);
 }
 
-/** The node's parameters worth reading on the canvas. */
+/** The node's parameters worth reading on the canvas: its names, not its numbers. */
 QString summaryOf(const RouterNode &node)
 {
     QStringList parts;
-    for (const char *key :
-         {"pattern", "model", "gripper", "message", "category", "mode", "quantity"}) {
-        const QJsonValue v = node.params.value(QLatin1String(key));
+    const RouterNodeType *type = routerNodeType(node.type);
+    for (const ParamSpec &spec : type ? type->params : std::vector<ParamSpec>()) {
+        if (spec.kind != ParamKind::Pattern && spec.kind != ParamKind::Model &&
+            spec.kind != ParamKind::Choice && spec.kind != ParamKind::Choices)
+            continue;
+        const QJsonValue v = node.params.value(spec.name);
         if (v.isString())
             parts.append(v.toString());
         else if (v.isArray()) {
@@ -55,7 +52,7 @@ QString summaryOf(const RouterNode &node)
     return parts.join(QStringLiteral(" · "));
 }
 
-/** Whether a filter node's params let the event's message through. */
+/** The colour of a message's category: confirmation blue, exception orange. */
 QColor categoryColor(Category category)
 {
     return category == Category::Confirmation ? QColor(0x00, 0x72, 0xB2)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "forcedetector.h"
+#include "gatedrouter.h"
 #include "jsonreader.h"
 #include "pipeline.h"
 #include "router.h"
@@ -539,21 +540,8 @@ void TestRouter::activityShowsWhatRouted()
     // filter goes through a gate that the left hand's force detector's grasp opens. What each
     // node passes on is what really routed: the filters split the messages, the gate holds
     // the break warning back until the control is active.
-    RouterGraph graph;
-    graph.nodes = {
-        {"force", "force", QJsonObject{{"gripper", "right"}}, {}},
-        {"control", "force", QJsonObject{{"gripper", "left"}}, {}},
-        {"grasps", "filter", QJsonObject{{"message", "grasp"}}, {}},
-        {"breaks", "filter", QJsonObject{{"message", "break"}}, {}},
-        {"gate", "gate", QJsonObject{{"mode", "open"}}, {}},
-        {"buzz", "pattern", QJsonObject{{"pattern", "vib.geiger"}}, {}},
-        {"right.vibro", "device", QJsonObject{{"model", "lra4"}}, {}},
-    };
-    graph.links = {{"force", "", "grasps", ""},  {"force", "", "breaks", ""},
-                   {"breaks", "", "gate", "in"}, {"control", "", "gate", "control"},
-                   {"gate", "", "buzz", ""},     {"buzz", "", "right.vibro", ""}};
     LoadError error;
-    std::unique_ptr<Router> compiled = Router::compile(graph, &error);
+    std::unique_ptr<Router> compiled = Router::compile(gatedRouter(), &error);
     QVERIFY2(compiled, qPrintable(error.toString()));
     Pipeline pipeline(std::move(compiled));
     struct Sink : PipelineSink
@@ -566,13 +554,7 @@ void TestRouter::activityShowsWhatRouted()
         return router.activity()[size_t(router.nodeIds().indexOf(id))].level;
     };
     const auto feed = [&](double t, Gripper gripper, double force) {
-        ContactFrame frame;
-        frame.t = t;
-        frame.gripper = gripper;
-        frame.left.f = frame.right.f = force / 2;
-        frame.left.n = frame.right.n = 16;
-        frame.left.actor = frame.right.actor = 0;
-        pipeline.process(frame, sink);
+        pipeline.process(forceFrame(t, gripper, force), sink);
     };
     feed(0.0, Gripper::Right, 30); // grasp only
     QCOMPARE(level("force"), 1.0);

@@ -5,6 +5,7 @@
 // restore the exact graph, files round-trip, and the engine swaps routers while running.
 #include "contactframereader.h"
 #include "devicemanager.h"
+#include "gatedrouter.h"
 #include "livehistory.h"
 #include "mainwindow.h"
 #include "pipeline.h"
@@ -688,19 +689,7 @@ void TestRouterEditor::liveActivityLightsWires()
     // The wires light from what the running router reports, gates included: a break warning
     // held back by a closed gate lights nothing past the gate until its control opens it.
     Fixture f;
-    RouterGraph graph;
-    graph.nodes = {
-        {"force", "force", QJsonObject{{"gripper", "right"}}, {}},
-        {"control", "force", QJsonObject{{"gripper", "left"}}, {}},
-        {"grasps", "filter", QJsonObject{{"message", "grasp"}}, {}},
-        {"breaks", "filter", QJsonObject{{"message", "break"}}, {}},
-        {"gate", "gate", QJsonObject{{"mode", "open"}}, {}},
-        {"buzz", "pattern", QJsonObject{{"pattern", "vib.geiger"}}, {}},
-        {"right.vibro", "device", QJsonObject{{"model", "lra4"}, {"hand", "right"}}, {}},
-    };
-    graph.links = {{"force", "", "grasps", ""},  {"force", "", "breaks", ""},
-                   {"breaks", "", "gate", "in"}, {"control", "", "gate", "control"},
-                   {"gate", "", "buzz", ""},     {"buzz", "", "right.vibro", ""}};
+    const RouterGraph graph = gatedRouter();
     f.editor.setGraph(graph);
     LiveHistory history;
     f.editor.setHistory(&history);
@@ -716,13 +705,7 @@ void TestRouterEditor::liveActivityLightsWires()
     } sink;
     sink.history = &history;
     const auto feed = [&](double t, Gripper gripper, double force) {
-        ContactFrame frame;
-        frame.t = t;
-        frame.gripper = gripper;
-        frame.left.f = frame.right.f = force / 2;
-        frame.left.n = frame.right.n = 16;
-        frame.left.actor = frame.right.actor = 0;
-        pipeline.process(frame, sink);
+        pipeline.process(forceFrame(t, gripper, force), sink);
         history.commit();
     };
     RouterScene *scene = f.editor.scene();
