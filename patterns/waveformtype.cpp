@@ -142,4 +142,30 @@ const WaveformType *waveformType(const QString &type)
     return nullptr;
 }
 
+QJsonObject newWaveform(const QString &type, const QJsonValue &previous)
+{
+    const WaveformType *spec = waveformType(type);
+    if (!spec)
+        spec = waveformType(QStringLiteral("const"));
+    QJsonObject node{{QStringLiteral("type"), spec->type}};
+    // Required fields get the table's starting values; a modifier keeps `previous` as its
+    // (first) input, so changing a node's type to a combinator wraps it.
+    for (const ParamSpec &field : spec->fields) {
+        if (field.absent != ParamAbsent::Required)
+            continue;
+        if (field.kind == ParamKind::Waveform) {
+            node.insert(field.name, previous.isObject() ? previous
+                                                        : newWaveform(QStringLiteral("const")));
+        } else if (field.kind == ParamKind::Waveforms) {
+            QJsonArray inputs = field.example.toArray();
+            if (previous.isObject() && !inputs.isEmpty())
+                inputs.replace(0, previous);
+            node.insert(field.name, inputs);
+        } else {
+            node.insert(field.name, field.example);
+        }
+    }
+    return node;
+}
+
 } // namespace semhap

@@ -3,6 +3,7 @@
 
 #include "paramspec.h"
 
+#include <QJsonObject>
 #include <QString>
 
 #include <vector>
@@ -31,5 +32,12 @@ struct WaveformType
 const std::vector<WaveformType> &waveformTypes();
 /** The type named `type`, or null. */
 const WaveformType *waveformType(const QString &type);
+
+/**
+ * A new waveform of `type` (a `const` for an unknown one), its required fields at the
+ * table's starting values. A modifier takes `previous`, when it is a waveform, as its
+ * (first) input: changing a node's type to a combinator wraps it.
+ */
+QJsonObject newWaveform(const QString &type, const QJsonValue &previous = QJsonValue());
 
 } // namespace semhap

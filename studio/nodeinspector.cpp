@@ -100,32 +100,6 @@ QStringList NodeInspector::waveformTypes()
     return names;
 }
 
-QJsonObject NodeInspector::waveformTemplate(const QString &type, const QJsonValue &previous)
-{
-    const WaveformType *spec = waveformType(type);
-    if (!spec)
-        spec = waveformType(QStringLiteral("const"));
-    QJsonObject node{{QStringLiteral("type"), spec->type}};
-    // Required fields get the table's starting values; a modifier keeps `previous` as its
-    // (first) input, so changing a node's type to a combinator wraps it.
-    for (const ParamSpec &field : spec->fields) {
-        if (field.absent != ParamAbsent::Required)
-            continue;
-        if (field.kind == ParamKind::Waveform) {
-            node.insert(field.name, previous.isObject() ? previous
-                                                        : waveformTemplate(QStringLiteral("const"), {}));
-        } else if (field.kind == ParamKind::Waveforms) {
-            QJsonArray inputs = field.example.toArray();
-            if (previous.isObject() && !inputs.isEmpty())
-                inputs.replace(0, previous);
-            node.insert(field.name, inputs);
-        } else {
-            node.insert(field.name, field.example);
-        }
-    }
-    return node;
-}
-
 QStringList NodeInspector::paramNames() const
 {
     QStringList names{QStringLiteral("intensity")};
@@ -230,7 +204,7 @@ void NodeInspector::addWaveformFields(const QJsonObject &node)
     type->setToolTip(tr("Changing the type to a combinator keeps this waveform as its input"));
     connect(type, &QComboBox::activated, this, [this, type, node] {
         if (type->currentText() != node.value(QLatin1String("type")).toString())
-            m_document.setValue(m_pointer, waveformTemplate(type->currentText(), node));
+            m_document.setValue(m_pointer, newWaveform(type->currentText(), node));
     });
     m_form->addRow(tr("Type"), type);
 

@@ -34,8 +34,6 @@ public:
 
     /** The waveform types the designer offers, in menu order. */
     static QStringList waveformTypes();
-    /** A new waveform of `type`; a combinator keeps `previous` as its (first) input. */
-    static QJsonObject waveformTemplate(const QString &type, const QJsonValue &previous);
 
 private:
     void scheduleRebuild();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "patterndocument.h"
 
+#include "waveformtype.h"
+
 #include "outputfile.h"
 
 #include <QDir>
@@ -122,6 +124,60 @@ void PatternDocument::setValue(const QString &pointer, const QJsonValue &value)
 QJsonValue PatternDocument::value(const QString &pointer) const
 {
     return valueAt(m_json, pointer);
+}
+
+QString PatternDocument::addTrack()
+{
+    const QString pointer =
+        QStringLiteral("/tracks/%1").arg(value(QStringLiteral("/tracks")).toArray().size());
+    setValue(pointer, QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                                  {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))}});
+    return pointer;
+}
+
+QString PatternDocument::addPart(const QString &track, const QString &part)
+{
+    const QString trackPointer = track.section(QLatin1Char('/'), 0, 2);
+    if (!trackPointer.startsWith(QLatin1String("/tracks/")))
+        return QString();
+    const QString pointer = trackPointer + QLatin1Char('/') + part;
+    if (value(pointer).isUndefined()) {
+        QJsonObject node = newWaveform(part == QLatin1String("sustain") ? QStringLiteral("const")
+                                                                        : QStringLiteral("ramp"));
+        if (part == QLatin1String("release"))
+            node.insert(QStringLiteral("to"), 0);
+        setValue(pointer, node);
+    }
+    return pointer;
+}
+
+QString PatternDocument::addInput(const QString &pointer)
+{
+    const QString list = pointer + QStringLiteral("/of");
+    const QString input = QStringLiteral("%1/%2").arg(list).arg(value(list).toArray().size());
+    setValue(input, newWaveform(QStringLiteral("const")));
+    return input;
+}
+
+QString PatternDocument::remove(const QString &pointer)
+{
+    setValue(pointer, QJsonValue(QJsonValue::Undefined));
+    // An input of a combinator sits in its `of` list: what held it is two levels up.
+    return pointer.section(QLatin1Char('/'), 0, pointer.contains(QLatin1String("/of/")) ? -3 : -2);
+}
+
+QJsonObject PatternDocument::newPattern(const QString &name, const QString &model)
+{
+    QJsonObject release = newWaveform(QStringLiteral("ramp"));
+    release.insert(QStringLiteral("to"), 0);
+    return {{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+            {QStringLiteral("name"), name},
+            {QStringLiteral("model"), model},
+            {QStringLiteral("tracks"),
+             QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                                    {QStringLiteral("attack"), newWaveform(QStringLiteral("ramp"))},
+                                    {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))},
+                                    {QStringLiteral("release"), release}}}}};
 }
 
 QJsonValue PatternDocument::valueAt(const QJsonValue &root, const QString &pointer)

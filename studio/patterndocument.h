@@ -46,6 +46,22 @@ public:
     /** The value at `pointer`; undefined when there is none. */
     QJsonValue value(const QString &pointer) const;
 
+    // Structure edits, each one undoable step; each returns the pointer of the node to show.
+    /** Appends a track driving every channel with a constant sustain. */
+    QString addTrack();
+    /**
+     * Gives the track at `track` (`/tracks/N`, or any node inside it) an attack, sustain or
+     * release when it has none: a ramp up, a constant, a ramp down. Empty when `track` is
+     * not in a track.
+     */
+    QString addPart(const QString &track, const QString &part);
+    /** Appends a constant input to the combinator at `pointer` (its `of`). */
+    QString addInput(const QString &pointer);
+    /** Removes the node at `pointer`; returns what held it. */
+    QString remove(const QString &pointer);
+    /** The first document of a new pattern `name` on `model`: one track, ramp-hold-release. */
+    static QJsonObject newPattern(const QString &name, const QString &model);
+
     /** Writes the JSON to `path` (making its folder) and marks the document saved there. */
     bool save(const QString &path, QString *error);
 

@@ -622,20 +622,8 @@ void WaveformDesigner::newPattern()
     for (int n = 2; QFileInfo::exists(QDir(m_userFolder).filePath(name + QStringLiteral(".json")));
          ++n)
         name = QStringLiteral("my.pattern%1").arg(n);
-    const QJsonObject json{
-        {QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
-        {QStringLiteral("name"), name},
-        {QStringLiteral("model"), model ? model->name() : QStringLiteral("lra4")},
-        {QStringLiteral("tracks"),
-         QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
-                                {QStringLiteral("attack"),
-                                 NodeInspector::waveformTemplate(QStringLiteral("ramp"), {})},
-                                {QStringLiteral("sustain"),
-                                 NodeInspector::waveformTemplate(QStringLiteral("const"), {})},
-                                {QStringLiteral("release"),
-                                 QJsonObject{{QStringLiteral("type"), QStringLiteral("ramp")},
-                                             {QStringLiteral("to"), 0},
-                                             {QStringLiteral("time"), 0.5}}}}}}};
+    const QJsonObject json =
+        PatternDocument::newPattern(name, model ? model->name() : QStringLiteral("lra4"));
     stopAudition();
     m_document->reset(json, QDir(m_userFolder).filePath(name + QStringLiteral(".json")), false);
     m_document->undoStack()->resetClean();
@@ -811,49 +799,26 @@ void WaveformDesigner::updateStructureButtons()
 
 void WaveformDesigner::addTrack()
 {
-    const int index = int(m_document->value(QStringLiteral("/tracks")).toArray().size());
-    m_document->setValue(
-        QStringLiteral("/tracks/%1").arg(index),
-        QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
-                    {QStringLiteral("sustain"),
-                     NodeInspector::waveformTemplate(QStringLiteral("const"), {})}});
-    selectNode(QStringLiteral("/tracks/%1").arg(index));
+    selectNode(m_document->addTrack());
 }
 
 void WaveformDesigner::addPart(const QString &part)
 {
-    const QString track = m_inspector->target().section(QLatin1Char('/'), 0, 2);
-    if (!track.startsWith(QLatin1String("/tracks/")))
-        return;
-    const QString pointer = track + QLatin1Char('/') + part;
-    if (m_document->value(pointer).isUndefined()) {
-        QJsonObject node = NodeInspector::waveformTemplate(
-            part == QLatin1String("sustain") ? QStringLiteral("const") : QStringLiteral("ramp"),
-            {});
-        if (part == QLatin1String("release"))
-            node.insert(QStringLiteral("to"), 0);
-        m_document->setValue(pointer, node);
-    }
-    selectNode(pointer);
+    const QString pointer = m_document->addPart(m_inspector->target(), part);
+    if (!pointer.isEmpty())
+        selectNode(pointer);
 }
 
 void WaveformDesigner::addInput()
 {
-    const QString list = m_inspector->target() + QStringLiteral("/of");
-    const int index = int(m_document->value(list).toArray().size());
-    m_document->setValue(list + QStringLiteral("/%1").arg(index),
-                         NodeInspector::waveformTemplate(QStringLiteral("const"), {}));
-    selectNode(list + QStringLiteral("/%1").arg(index));
+    selectNode(m_document->addInput(m_inspector->target()));
 }
 
 void WaveformDesigner::removeNode()
 {
     const QString pointer = m_inspector->target();
-    if (pointer.isEmpty())
-        return;
-    m_document->setValue(pointer, QJsonValue(QJsonValue::Undefined));
-    selectNode(
-        pointer.section(QLatin1Char('/'), 0, pointer.contains(QLatin1String("/of/")) ? -3 : -2));
+    if (!pointer.isEmpty())
+        selectNode(m_document->remove(pointer));
 }
 
 void WaveformDesigner::updateJsonText()

@@ -14,6 +14,7 @@
 #include "patterndocument.h"
 #include "patternpreview.h"
 #include "waveformdesigner.h"
+#include "waveformtype.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -140,6 +141,7 @@ private slots:
     void initTestCase();
     void editRampChangesPreview();
     void undoRedoRestoresJson();
+    void documentStructureEdits();
     void duplicateSaveOpen();
     void builtinIsReadOnly();
     void pneumaticSmearsPulses();
@@ -178,6 +180,28 @@ void TestWaveformDesigner::editRampChangesPreview()
     QCoreApplication::processEvents();
     QVERIFY(f.child<NumberEdit>(QStringLiteral("field:time"))
                 ->isAncestorOf(QApplication::focusWidget()));
+}
+
+void TestWaveformDesigner::documentStructureEdits()
+{
+    // The document makes the structure edits, each one undo step, and every result loads.
+    PatternDocument document;
+    document.reset(PatternDocument::newPattern("mine", "lra4"), QString(), false);
+    QVERIFY2(document.pattern(), qPrintable(document.error().toString()));
+    QCOMPARE(document.addTrack(), QString("/tracks/1"));
+    QCOMPARE(document.addPart("/tracks/1/sustain", "release"), QString("/tracks/1/release"));
+    QCOMPARE(document.value("/tracks/1/release/to").toDouble(), 0.0);
+    QVERIFY(document.addPart("/params", "attack").isEmpty());
+    document.setValue("/tracks/1/sustain", newWaveform("sum", document.value("/tracks/1/sustain")));
+    QCOMPARE(document.addInput("/tracks/1/sustain"), QString("/tracks/1/sustain/of/2"));
+    QVERIFY2(document.pattern(), qPrintable(document.error().toString()));
+    QCOMPARE(document.remove("/tracks/1/sustain/of/2"), QString("/tracks/1/sustain"));
+    QCOMPARE(document.remove("/tracks/1/release"), QString("/tracks/1"));
+    QVERIFY2(document.pattern(), qPrintable(document.error().toString()));
+    QCOMPARE(document.undoStack()->count(), 6);
+    while (document.undoStack()->canUndo())
+        document.undoStack()->undo();
+    QCOMPARE(document.json(), PatternDocument::newPattern("mine", "lra4"));
 }
 
 void TestWaveformDesigner::undoRedoRestoresJson()
