@@ -38,7 +38,7 @@ std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands 
         if (const auto *force = dynamic_cast<const ForceDetector *>(detector)) {
             t.hasForce = true;
             t.grasp = force->params().grasp;
-            t.breakForce = force->params().brk;
+            t.brk = force->params().brk;
             t.max = force->params().max;
         } else if (const auto *slip = dynamic_cast<const SlipDetector *>(detector)) {
             t.hasSlip = true;

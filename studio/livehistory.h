@@ -21,7 +21,7 @@ struct GripperThresholds
 {
     bool hasForce = false;
     double grasp = 0.0;
-    double breakForce = 0.0; ///< the force detector's `break`
+    double brk = 0.0; ///< the force detector's `break` (a C++ keyword), as in its Params
     double max = 0.0;
     bool hasSlip = false;
     double loss = 0.0;

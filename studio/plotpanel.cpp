@@ -435,11 +435,11 @@ void PlotPanel::addGripper(Gripper gripper)
         addThreshold(plot->forceRect, id + QStringLiteral(".grasp"),
                      format.arg(tr("grasp"), number(thresholds.grasp)), thresholds.grasp, Blue);
         addThreshold(plot->forceRect, id + QStringLiteral(".break"),
-                     format.arg(tr("break"), number(thresholds.breakForce)), thresholds.breakForce,
+                     format.arg(tr("break"), number(thresholds.brk)), thresholds.brk,
                      Orange);
         addThreshold(plot->forceRect, id + QStringLiteral(".max"),
                      format.arg(tr("max"), number(thresholds.max)), thresholds.max, Vermillion);
-        plot->thresholdTop = std::max({thresholds.grasp, thresholds.breakForce, thresholds.max});
+        plot->thresholdTop = std::max({thresholds.grasp, thresholds.brk, thresholds.max});
     }
 
     plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 3);

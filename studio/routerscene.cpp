@@ -30,6 +30,13 @@ int columnOf(const QString &type)
     return spec ? int(spec->role()) : int(RouterNodeType::Role::Logic);
 }
 
+/** Whether nodes of `type` play (show their frames' level) rather than pass messages on. */
+bool isDevice(const QString &type)
+{
+    const RouterNodeType *spec = routerNodeType(type);
+    return spec && spec->role() == RouterNodeType::Role::Device;
+}
+
 /** The node's parameters worth reading on the canvas: its names, not its numbers. */
 QString summaryOf(const RouterNode &node)
 {
@@ -458,7 +465,7 @@ void RouterScene::showActivity(const QString &node, const NodeActivity &activity
         const bool in = link.to == node && m_active.value(link.from).isActive();
         const int to = link.from == node ? m_graph.nodeIndex(link.to) : -1;
         // Devices report through their frames, not the router: light the voices into them.
-        const bool out = to >= 0 && m_graph.nodes[size_t(to)].type == QLatin1String("device");
+        const bool out = to >= 0 && isDevice(m_graph.nodes[size_t(to)].type);
         if ((in || out) && m_wires[j])
             m_wires[j]->flash(color);
     }
@@ -471,7 +478,7 @@ void RouterScene::refreshState(const QString &id)
     RouterNodeItem *item = nodeItem(id);
     if (!item)
         return;
-    if (item->nodeType() == QLatin1String("device")) {
+    if (isDevice(item->nodeType())) {
         const double level = m_deviceLevels.value(id, 0.0);
         item->setState(level > 0.0 ? tr("output %1").arg(QLocale().toString(level, 'f', 2))
                                    : QString(),

@@ -43,7 +43,7 @@ GripperThresholds thresholds()
     GripperThresholds t;
     t.hasForce = true;
     t.grasp = 5.0;
-    t.breakForce = 80.0;
+    t.brk = 80.0;
     t.max = 100.0;
     t.hasSlip = true;
     t.loss = 28.0;
@@ -120,7 +120,7 @@ private:
         const int n = frame.totalContacts();
         const int forceNode = int(2 * g);
         toggle(&m_grasp[g], f >= th.grasp, Message::Grasp, forceNode, frame, out);
-        toggle(&m_break[g], f >= th.breakForce, Message::Break, forceNode, frame, out);
+        toggle(&m_break[g], f >= th.brk, Message::Break, forceNode, frame, out);
         toggle(&m_slip[g], n > 0 && n < th.loss, Message::Slip, forceNode + 1, frame, out);
     }
 

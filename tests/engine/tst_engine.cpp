@@ -65,7 +65,7 @@ void TestEngine::loadsPausedWithVirtualDevices()
     const GripperThresholds right = engine.history().thresholds()[size_t(Gripper::Right)];
     QVERIFY(right.hasForce);
     QCOMPARE(right.grasp, 20.0);
-    QCOMPARE(right.breakForce, 80.0);
+    QCOMPARE(right.brk, 80.0);
     QCOMPARE(right.max, 120.0);
 }
 

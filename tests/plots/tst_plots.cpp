@@ -63,7 +63,7 @@ GripperThresholds rightThresholds()
     GripperThresholds thresholds;
     thresholds.hasForce = true;
     thresholds.grasp = 5.0;
-    thresholds.breakForce = 80.0;
+    thresholds.brk = 80.0;
     thresholds.max = 100.0;
     thresholds.hasSlip = true;
     thresholds.loss = 24.0;
