@@ -4,7 +4,7 @@
 #include "devicemanager.h"
 #include "deviceuri.h"
 #include "levelmeter.h"
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QComboBox>
 #include <QGroupBox>
@@ -85,7 +85,7 @@ struct DevicesPanel::Row
     QString boundUri; ///< as last read from the manager, so typing is not overwritten
 };
 
-DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget *parent)
+DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget *parent)
     : QWidget(parent), m_manager(manager), m_history(history), m_present(new QTreeWidget(this)),
       m_address(new QLineEdit(this)), m_message(new QLabel(this)), m_armed(new QLabel(this)),
       m_pollTimer(new QTimer(this)), m_statusTimer(new QTimer(this)),
@@ -167,9 +167,9 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget
         m_manager.armAll(false);
         refresh();
     });
-    connect(&m_history, &LiveHistory::reset, this, &DevicesPanel::rebuildRows);
-    connect(&m_history, &LiveHistory::routerChanged, this, &DevicesPanel::rebuildRows);
-    connect(&m_history, &LiveHistory::updated, this, &DevicesPanel::showLevels);
+    connect(&m_history, &RunHistory::reset, this, &DevicesPanel::rebuildRows);
+    connect(&m_history, &RunHistory::routerChanged, this, &DevicesPanel::rebuildRows);
+    connect(&m_history, &RunHistory::updated, this, &DevicesPanel::showLevels);
     connect(m_pollTimer, &QTimer::timeout, this, [this] {
         QStringList added;
         QStringList removed;
@@ -237,13 +237,13 @@ void DevicesPanel::rebuildRows()
         delete row->uri->parentWidget(); // the row's group box
     m_rows.clear();
     // The devices that can play first; those of a hand the scene lacks after them.
-    std::vector<const LiveDevice *> devices;
-    for (const LiveDevice &device : m_history.devices())
+    std::vector<const RunDevice *> devices;
+    for (const RunDevice &device : m_history.devices())
         devices.push_back(&device);
     std::stable_partition(devices.begin(), devices.end(),
-                          [](const LiveDevice *d) { return !d->idle; });
-    for (const LiveDevice *entry : devices) {
-        const LiveDevice &device = *entry;
+                          [](const RunDevice *d) { return !d->idle; });
+    for (const RunDevice *entry : devices) {
+        const RunDevice &device = *entry;
         auto row = std::make_unique<Row>();
         row->name = device.name;
         row->model = device.model;
@@ -373,7 +373,7 @@ void DevicesPanel::refresh()
 void DevicesPanel::showLevels()
 {
     for (size_t d = 0; d < m_rows.size(); ++d) {
-        const LiveSeries<DeviceFrame> &frames = m_history.deviceFrames(int(d));
+        const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(int(d));
         if (frames.isEmpty())
             continue;
         const DeviceFrame &frame = frames.last();

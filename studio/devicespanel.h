@@ -17,7 +17,7 @@ class QVBoxLayout;
 namespace semhap {
 
 class DeviceManager;
-class LiveHistory;
+class RunHistory;
 
 /**
  * The wristbands of a session: the devices present (hot-plug by polling, plus addresses the
@@ -30,7 +30,7 @@ class DevicesPanel : public QWidget
     Q_OBJECT
 
 public:
-    DevicesPanel(DeviceManager &manager, LiveHistory &history, QWidget *parent = nullptr);
+    DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget *parent = nullptr);
     ~DevicesPanel() override;
 
 public slots:
@@ -60,7 +60,7 @@ private:
     void showMessage(const QString &text);
 
     DeviceManager &m_manager;
-    LiveHistory &m_history;
+    RunHistory &m_history;
     QTreeWidget *m_present = nullptr;
     QLineEdit *m_address = nullptr;
     QLabel *m_message = nullptr;

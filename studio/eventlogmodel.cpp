@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "eventlogmodel.h"
 
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QColor>
 #include <QLocale>
@@ -36,11 +36,11 @@ QPixmap categorySwatch(Category category)
 
 } // namespace
 
-EventLogModel::EventLogModel(LiveHistory &history, QObject *parent)
+EventLogModel::EventLogModel(RunHistory &history, QObject *parent)
     : QAbstractTableModel(parent), m_history(history)
 {
-    connect(&history, &LiveHistory::reset, this, &EventLogModel::clear);
-    connect(&history, &LiveHistory::updated, this, &EventLogModel::appendNew);
+    connect(&history, &RunHistory::reset, this, &EventLogModel::clear);
+    connect(&history, &RunHistory::updated, this, &EventLogModel::appendNew);
     m_next = history.events().begin();
     appendNew();
 }
@@ -67,7 +67,7 @@ void EventLogModel::clear()
 
 void EventLogModel::appendNew()
 {
-    const LiveSeries<SemanticEvent> &events = m_history.events();
+    const RunSeries<SemanticEvent> &events = m_history.events();
     const qint64 first = std::max(m_next, events.begin());
     const qint64 last = events.end();
     m_next = last;

@@ -9,7 +9,7 @@
 
 namespace semhap {
 
-class LiveHistory;
+class RunHistory;
 
 /**
  * The semantic events of the live history as table rows, newest last: rows are appended in
@@ -40,7 +40,7 @@ public:
         PhaseRole,                   ///< int(EventPhase)
     };
 
-    explicit EventLogModel(LiveHistory &history, QObject *parent = nullptr);
+    explicit EventLogModel(RunHistory &history, QObject *parent = nullptr);
 
     /** The most rows kept; older ones are dropped as new ones come. */
     int maxRows() const { return m_maxRows; }
@@ -67,7 +67,7 @@ private:
     void trim();
     QString displayText(const Row &row, int column) const;
 
-    LiveHistory &m_history;
+    RunHistory &m_history;
     std::deque<Row> m_rows;
     qint64 m_next = 0; ///< the history's running index of the next event to take
     int m_maxRows = 10000;

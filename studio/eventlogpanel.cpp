@@ -74,7 +74,7 @@ QComboBox *choiceBox(const QString &all, const QList<QPair<QString, int>> &choic
 
 } // namespace
 
-EventLogPanel::EventLogPanel(LiveHistory &history, QWidget *parent)
+EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
     : QWidget(parent), m_model(new EventLogModel(history, this)),
       m_filter(new EventLogFilter(this)), m_view(new QTableView(this)),
       m_text(new QLineEdit(this)), m_follow(new QCheckBox(tr("Follow"), this))

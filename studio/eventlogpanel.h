@@ -13,7 +13,7 @@ namespace semhap {
 
 class EventLogFilter;
 class EventLogModel;
-class LiveHistory;
+class RunHistory;
 
 /**
  * The semantic events of the run as a filterable log: a table (time, gripper, detector,
@@ -26,7 +26,7 @@ class EventLogPanel : public QWidget
     Q_OBJECT
 
 public:
-    explicit EventLogPanel(LiveHistory &history, QWidget *parent = nullptr);
+    explicit EventLogPanel(RunHistory &history, QWidget *parent = nullptr);
     ~EventLogPanel() override;
 
     EventLogModel *model() const { return m_model; }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "metricspanel.h"
 
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QFormLayout>
 #include <QJsonArray>
@@ -137,7 +137,7 @@ Flat ordered(const QJsonObject &metrics)
 
 } // namespace
 
-MetricsPanel::MetricsPanel(LiveHistory &history, QWidget *parent)
+MetricsPanel::MetricsPanel(RunHistory &history, QWidget *parent)
     : QWidget(parent), m_history(history),
       m_empty(new QLabel(tr("No metrics yet: they appear while a task runs."), this))
 {
@@ -154,8 +154,8 @@ MetricsPanel::MetricsPanel(LiveHistory &history, QWidget *parent)
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_empty);
     layout->addWidget(scroll, 1);
-    connect(&history, &LiveHistory::metricsChanged, this, &MetricsPanel::refresh);
-    connect(&history, &LiveHistory::reset, this, &MetricsPanel::refresh);
+    connect(&history, &RunHistory::metricsChanged, this, &MetricsPanel::refresh);
+    connect(&history, &RunHistory::reset, this, &MetricsPanel::refresh);
     refresh();
 }
 

@@ -9,7 +9,7 @@ class QLabel;
 
 namespace semhap {
 
-class LiveHistory;
+class RunHistory;
 
 /**
  * The task metrics of the running session (TaskMonitor's, docs/metrics.md) as a live form:
@@ -21,7 +21,7 @@ class MetricsPanel : public QWidget
     Q_OBJECT
 
 public:
-    explicit MetricsPanel(LiveHistory &history, QWidget *parent = nullptr);
+    explicit MetricsPanel(RunHistory &history, QWidget *parent = nullptr);
 
     /** The label shown for a (flattened) metrics key: a translated name, or the key. */
     static QString label(const QString &key);
@@ -32,7 +32,7 @@ public:
     void refresh();
 
 private:
-    LiveHistory &m_history;
+    RunHistory &m_history;
     QFormLayout *m_form = nullptr;
     QLabel *m_empty = nullptr;
     QStringList m_keys; ///< the rows shown, in order

@@ -42,7 +42,7 @@ constexpr double MaxWindow = 120.0;
 constexpr qint64 MinReplotMs = 30;
 
 /** The latest sample at or before `t`, or null when the series starts after it. */
-template<typename T> const T *sampleAt(const LiveSeries<T> &series, double t)
+template<typename T> const T *sampleAt(const RunSeries<T> &series, double t)
 {
     qint64 lo = series.begin();
     qint64 hi = series.end();
@@ -150,7 +150,7 @@ struct PlotPanel::SpanView
     }
 };
 
-PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
+PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     : QWidget(parent), m_history(history), m_cursorTime(std::numeric_limits<double>::quiet_NaN())
 {
     m_pauseButton = new QToolButton(this);
@@ -231,17 +231,17 @@ PlotPanel::PlotPanel(LiveHistory &history, QWidget *parent)
     connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
     // Pixels are known only once the plot is laid out (after a resize, say).
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
-    connect(&m_history, &LiveHistory::reset, this, [this] {
+    connect(&m_history, &RunHistory::reset, this, [this] {
         m_cursorTime = std::numeric_limits<double>::quiet_NaN();
         rebuild();
         goLive();
     });
     // A router swapped into the running session: other devices and thresholds, same time.
-    connect(&m_history, &LiveHistory::routerChanged, this, [this] {
+    connect(&m_history, &RunHistory::routerChanged, this, [this] {
         rebuild();
         onUpdated();
     });
-    connect(&m_history, &LiveHistory::updated, this, &PlotPanel::onUpdated);
+    connect(&m_history, &RunHistory::updated, this, &PlotPanel::onUpdated);
     m_replotTimer.setSingleShot(true);
     connect(&m_replotTimer, &QTimer::timeout, this, &PlotPanel::requestReplot);
     m_sinceReplot.start();
@@ -269,7 +269,7 @@ void PlotPanel::clearPlots()
 }
 
 /** The grippers worth a plot, right first: with a detector or with contact data. */
-static std::vector<Gripper> shownGrippers(const LiveHistory &history)
+static std::vector<Gripper> shownGrippers(const RunHistory &history)
 {
     std::vector<Gripper> shown;
     for (Gripper gripper : {Gripper::Right, Gripper::Left}) {
@@ -461,7 +461,7 @@ void PlotPanel::addGripper(Gripper gripper)
 void PlotPanel::addDevice(int device)
 {
     static const QColor palette[] = {Blue, Orange, Green, Vermillion, Sky, Purple, Black, Yellow};
-    const LiveDevice &info = m_history.devices()[size_t(device)];
+    const RunDevice &info = m_history.devices()[size_t(device)];
     auto plot = std::make_unique<DevicePlot>();
     plot->device = device;
     const QString title =
@@ -519,7 +519,7 @@ void PlotPanel::appendNew()
 {
     QVector<QCPGraphData> left, right, sum, count;
     for (auto &plot : m_grippers) {
-        const LiveSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
+        const RunSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
         left.clear();
         right.clear();
         sum.clear();
@@ -539,7 +539,7 @@ void PlotPanel::appendNew()
     }
     std::vector<QVector<QCPGraphData>> channels;
     for (auto &plot : m_devices) {
-        const LiveSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
+        const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
         channels.assign(plot->graphs.size(), QVector<QCPGraphData>());
         for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
             const DeviceFrame &frame = frames.at(i);
@@ -763,7 +763,7 @@ void PlotPanel::updateCursor()
         const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
         if (!frame)
             continue;
-        const LiveDevice &info = m_history.devices()[size_t(plot->device)];
+        const RunDevice &info = m_history.devices()[size_t(plot->device)];
         QStringList values;
         const int n = std::min(frame->channelCount, int(info.channels.size()));
         for (int c = 0; c < n; ++c)
@@ -897,7 +897,7 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
             header << id + QLatin1String(column);
     }
     for (const auto &plot : m_devices) {
-        const LiveDevice &info = m_history.devices()[size_t(plot->device)];
+        const RunDevice &info = m_history.devices()[size_t(plot->device)];
         for (const QString &channel : info.channels)
             header << info.name + QLatin1Char('.') + channel;
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -28,7 +28,7 @@ namespace semhap {
 /**
  * The studio's live plots: per gripper its fingertip forces and contact count with the
  * detectors' thresholds and the messages as shaded spans, and per device its channel
- * outputs, on one shared scrolling time axis. It reads only what is new in a LiveHistory
+ * outputs, on one shared scrolling time axis. It reads only what is new in a RunHistory
  * on each `updated()`, and can pause, inspect a moment with a cursor and export what it
  * shows.
  */
@@ -38,7 +38,7 @@ class PlotPanel : public QWidget
 
 public:
     /** Shows `history`, which must outlive the panel. */
-    explicit PlotPanel(LiveHistory &history, QWidget *parent = nullptr);
+    explicit PlotPanel(RunHistory &history, QWidget *parent = nullptr);
     ~PlotPanel() override;
 
     /** The live view's width in pipeline seconds (2–120); the history keeps at least it. */
@@ -103,7 +103,7 @@ private:
     void exportCsvDialog();
     void exportPngDialog();
 
-    LiveHistory &m_history;
+    RunHistory &m_history;
     QCustomPlot *m_plot = nullptr;
     QToolButton *m_pauseButton = nullptr;
     QToolButton *m_liveButton = nullptr;

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "routereditor.h"
 
-#include "livehistory.h"
 #include "outputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
+#include "runhistory.h"
 #include "userpatterns.h"
 
 #include <QAction>
@@ -662,7 +662,7 @@ void RouterEditor::setAutoApply(bool on)
     m_autoApply->setChecked(on);
 }
 
-void RouterEditor::setHistory(LiveHistory *history)
+void RouterEditor::setHistory(RunHistory *history)
 {
     if (m_history)
         disconnect(m_history, nullptr, this, nullptr);
@@ -671,8 +671,8 @@ void RouterEditor::setHistory(LiveHistory *history)
     if (!history)
         return;
     m_nextActivity = history->activity().end();
-    connect(history, &LiveHistory::updated, this, &RouterEditor::onHistoryUpdated);
-    connect(history, &LiveHistory::reset, this, [this] {
+    connect(history, &RunHistory::updated, this, &RouterEditor::onHistoryUpdated);
+    connect(history, &RunHistory::reset, this, [this] {
         m_nextActivity = m_history->activity().begin();
         m_scene->clearActivity();
     });
@@ -681,15 +681,15 @@ void RouterEditor::setHistory(LiveHistory *history)
 void RouterEditor::onHistoryUpdated()
 {
     // Hidden, the nodes' states still follow (they show when it opens), without flashes.
-    const LiveSeries<NodeActivity> &activity = m_history->activity();
+    const RunSeries<NodeActivity> &activity = m_history->activity();
     for (qint64 i = std::max(m_nextActivity, activity.begin()); i < activity.end(); ++i) {
         const NodeActivity &change = activity.at(i);
         m_scene->showActivity(m_history->nodeName(change.node), change, isVisible());
     }
     m_nextActivity = activity.end();
-    const std::vector<LiveDevice> &devices = m_history->devices();
+    const std::vector<RunDevice> &devices = m_history->devices();
     for (size_t d = 0; d < devices.size(); ++d) {
-        const LiveSeries<DeviceFrame> &frames = m_history->deviceFrames(int(d));
+        const RunSeries<DeviceFrame> &frames = m_history->deviceFrames(int(d));
         double level = 0.0;
         if (!frames.isEmpty()) {
             const DeviceFrame &frame = frames.last();

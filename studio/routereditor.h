@@ -21,7 +21,7 @@ class QWidget;
 
 namespace semhap {
 
-class LiveHistory;
+class RunHistory;
 class RouterScene;
 
 /**
@@ -87,7 +87,7 @@ public:
     /** Applies every edit that compiles, shortly after it is made. */
     void setAutoApply(bool on);
     /** Shows the live activity of the session in `history` (null: none). */
-    void setHistory(LiveHistory *history);
+    void setHistory(RunHistory *history);
 
     RouterScene *scene() const { return m_scene; }
     QGraphicsView *view() const { return m_view; }
@@ -131,7 +131,7 @@ private:
     QTimer *m_validateTimer = nullptr;
 
     ApplyFunction m_apply;
-    LiveHistory *m_history = nullptr;
+    RunHistory *m_history = nullptr;
     qint64 m_nextActivity = 0;
     QStringList m_errors;
     QString m_inspected; ///< id of the node the inspector shows

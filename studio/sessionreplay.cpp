@@ -40,7 +40,7 @@ Collector run(std::unique_ptr<Router> router, const std::vector<ContactFrame> &f
 
 /** Appends the values of `values` with `from < t <= to` (sorted by t) to `history`. */
 template<typename T>
-void appendWindow(const std::vector<T> &values, double from, double to, LiveHistory &history)
+void appendWindow(const std::vector<T> &values, double from, double to, RunHistory &history)
 {
     const auto byTime = [](double t, const T &value) { return t < value.t; };
     auto it = std::upper_bound(values.begin(), values.end(), from, byTime);
@@ -51,7 +51,7 @@ void appendWindow(const std::vector<T> &values, double from, double to, LiveHist
 
 } // namespace
 
-SessionReplay::SessionReplay(LiveHistory &history, QObject *parent)
+SessionReplay::SessionReplay(RunHistory &history, QObject *parent)
     : QObject(parent), m_history(history)
 {}
 

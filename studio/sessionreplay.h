@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QObject>
 #include <QString>
@@ -18,7 +18,7 @@ class World;
 
 /**
  * A recorded session opened read-only in the studio: its streams are read once, and the
- * time a scrubber picks fills the LiveHistory with the window the plots and the event log
+ * time a scrubber picks fills the RunHistory with the window the plots and the event log
  * show, so every live view replays without knowing it. Re-routing runs the recorded
  * contact frames through another router (the editor's), like `semhap replay --router`.
  *
@@ -30,7 +30,7 @@ class SessionReplay : public QObject
     Q_OBJECT
 
 public:
-    explicit SessionReplay(LiveHistory &history, QObject *parent = nullptr);
+    explicit SessionReplay(RunHistory &history, QObject *parent = nullptr);
     ~SessionReplay() override;
 
     /** Reads the session at `path` and shows its start. False with a one-line `error`. */
@@ -81,7 +81,7 @@ private:
         std::vector<SemanticEvent> events;
         std::vector<DeviceFrame> deviceFrames;
         std::vector<NodeActivity> activity;
-        std::vector<LiveDevice> devices;
+        std::vector<RunDevice> devices;
         std::array<GripperThresholds, 2> thresholds{};
         QStringList nodeIds;
     };
@@ -92,7 +92,7 @@ private:
     /** Puts the scene's bodies where they were at `t` and hands a picture to the viewport. */
     void showScene(double t);
 
-    LiveHistory &m_history;
+    RunHistory &m_history;
     QString m_path;
     std::vector<ContactFrame> m_frames;
     Hands m_hands{true, true}; ///< the hands that recorded frames

@@ -2,9 +2,9 @@
 #pragma once
 
 #include "handcommand.h"
-#include "livefeed.h"
-#include "livehistory.h"
 #include "liverig.h"
+#include "runfeed.h"
+#include "runhistory.h"
 #include "simrun.h"
 #include "sinklist.h"
 
@@ -27,7 +27,7 @@ class SessionWriter;
 /**
  * The studio's running session: a SimRun stepped on its own pipeline thread at a chosen
  * speed of real time — or a live rig's frames received on that thread as they come — its
- * streams handed to the GUI through a LiveFeed and drained into the LiveHistory at display
+ * streams handed to the GUI through a RunFeed and drained into the RunHistory at display
  * rate, its device frames sent to the DeviceManager's bound transports. The pipeline never
  * waits for the GUI; the GUI waits for the pipeline only to change the run's set-up (load,
  * reset, rebind), and then only until the current batch of ticks ends.
@@ -110,7 +110,7 @@ public:
     /** Sends zero to every device now, from any thread; works even while the run is busy. */
     void stopAll();
 
-    LiveHistory &history() { return m_history; }
+    RunHistory &history() { return m_history; }
     /**
      * Pauses the run and stops feeding the history, which then shows something else (a
      * replay); loading or resetting the run feeds it again.
@@ -210,14 +210,14 @@ private:
     std::unique_ptr<ManualOperator> m_manualOperator;
     std::unique_ptr<SceneFeed> m_sceneFeed;
     std::unique_ptr<DeviceOutputSink> m_output;
-    LiveFeed m_feed;
+    RunFeed m_feed;
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
     std::unique_ptr<SessionWriter> m_recorder;
     /** Where the pipeline's output goes: the recorder, the bands, the feed (rewire()). */
     SinkList m_outputs;
     double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};
-    LiveHistory m_history;
+    RunHistory m_history;
     QTimer m_drainTimer;
     std::thread m_thread;
     std::mutex m_setupMutex; ///< held by the pipeline thread per batch of ticks

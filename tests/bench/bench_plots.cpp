@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The live plots under load: a producer thread pushes two grippers' contact frames and two
-// 8-channel devices' frames at 1 kHz through a LiveFeed; the GUI thread drains it into the
-// LiveHistory every 16 ms while a 1280×800 PlotPanel follows. Prints the replots per second,
+// 8-channel devices' frames at 1 kHz through a RunFeed; the GUI thread drains it into the
+// RunHistory every 16 ms while a 1280×800 PlotPanel follows. Prints the replots per second,
 // the GUI thread's CPU share and the feed's drops. `--screenshot DIR` instead fills 12 s of
 // the same synthetic run and saves the panel at 1280×800 and 1920×1080.
-#include "livefeed.h"
-#include "livehistory.h"
+#include "runfeed.h"
+#include "runhistory.h"
 #include "plotpanel.h"
 
 #include <QApplication>
@@ -160,7 +160,7 @@ private:
     std::array<bool, 2> m_slip{};
 };
 
-void startRun(LiveHistory &history)
+void startRun(RunHistory &history)
 {
     QStringList channels;
     for (int c = 0; c < Channels; ++c)
@@ -172,7 +172,7 @@ void startRun(LiveHistory &history)
                    QStringLiteral("left.force"), QStringLiteral("left.slip")});
 }
 
-int screenshots(LiveHistory &history, PlotPanel &panel, const QString &dir)
+int screenshots(RunHistory &history, PlotPanel &panel, const QString &dir)
 {
     Scenario scenario;
     Tick tick;
@@ -219,14 +219,14 @@ int main(int argc, char *argv[])
     parser.addOption(screenshotOption);
     parser.process(app);
 
-    LiveHistory history;
+    RunHistory history;
     PlotPanel panel(history);
     startRun(history);
     if (parser.isSet(screenshotOption))
         return screenshots(history, panel, parser.value(screenshotOption));
 
     const double seconds = std::max(1.0, parser.value(secondsOption).toDouble());
-    LiveFeed feed;
+    RunFeed feed;
     std::atomic<bool> done{false};
     std::thread producer([&] {
         Scenario scenario;

@@ -8,7 +8,7 @@
 #include "emulatedband.h"
 #include "emulator.h"
 #include "levelmeter.h"
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -32,7 +32,7 @@ const QString Band = QStringLiteral("right.vibro");
 /** A panel on a one-device run whose bind requests the manager carries out at once. */
 struct Fixture
 {
-    LiveHistory history;
+    RunHistory history;
     DeviceManager manager;
     DevicesPanel panel{manager, history};
 
@@ -44,7 +44,7 @@ struct Fixture
             &panel, &DevicesPanel::bindRequested, &panel,
             [this](const QString &name, const QString &uri) {
                 QString error;
-                for (const LiveDevice &device : history.devices()) {
+                for (const RunDevice &device : history.devices()) {
                     if (device.name == name)
                         manager.bind(name, uri, DeviceModelLibrary::builtin(device.model), &error);
                 }
@@ -217,7 +217,7 @@ void TestDevicesPanel::screenshot()
     std::atomic<bool> quit{false};
     std::thread thread([&] { emulator.run([&] { return quit.load(); }); });
 
-    LiveHistory history;
+    RunHistory history;
     DeviceManager manager;
     const DeviceModelPtr air = options.model;
     const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));

@@ -57,7 +57,7 @@ void TestEngine::loadsPausedWithVirtualDevices()
     QCOMPARE(engine.simTime(), 0.0);
     const auto devices = engine.history().devices();
     QVERIFY(!devices.empty());
-    for (const LiveDevice &device : devices) {
+    for (const RunDevice &device : devices) {
         Transport *transport = engine.devices().transport(device.name);
         QVERIFY2(transport, qPrintable(device.name));
         QCOMPARE(transport->uri(), "virtual:" + device.name);
@@ -113,14 +113,14 @@ void TestEngine::streamsReachTheHistory()
     SimEngine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
-    QSignalSpy updated(&engine.history(), &LiveHistory::updated);
+    QSignalSpy updated(&engine.history(), &RunHistory::updated);
     engine.setSpeed(8.0);
     engine.run();
     // The scripted operator grasps its first cube within a few simulated seconds.
     QTRY_VERIFY_WITH_TIMEOUT(!engine.history().events().isEmpty(), 20000);
     engine.pause();
     QVERIFY(updated.count() > 2);
-    const LiveSeries<ContactFrame> &frames = engine.history().frames(Gripper::Right);
+    const RunSeries<ContactFrame> &frames = engine.history().frames(Gripper::Right);
     QVERIFY(frames.end() - frames.begin() > 100);
     QVERIFY(frames.last().t > 0.0);
     bool deviceFrames = false;
@@ -191,7 +191,7 @@ void TestEngine::resetStartsAgain()
     engine.setSpeed(4.0);
     engine.run();
     QTRY_VERIFY(engine.simTime() > 0.5);
-    QSignalSpy reset(&engine.history(), &LiveHistory::reset);
+    QSignalSpy reset(&engine.history(), &RunHistory::reset);
     QVERIFY(engine.reset(&error));
     QCOMPARE(reset.count(), 1);
     QVERIFY(engine.isRunning()); // reset keeps running what was running

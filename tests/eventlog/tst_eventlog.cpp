@@ -4,8 +4,8 @@
 // reports, reset; metrics shown with human labels and formatted values.
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
-#include "livehistory.h"
 #include "metricspanel.h"
+#include "runhistory.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -60,12 +60,12 @@ const std::vector<SemanticEvent> &run()
     return events;
 }
 
-void startRun(LiveHistory &history)
+void startRun(RunHistory &history)
 {
     history.start({}, {}, {"left.force", "right.force", "right.slip"});
 }
 
-void append(LiveHistory &history, size_t from, size_t to)
+void append(RunHistory &history, size_t from, size_t to)
 {
     for (size_t i = from; i < to; ++i)
         history.append(run()[i]);
@@ -114,7 +114,7 @@ private slots:
 
 void TestEventLog::rowsShowTheEvents()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogModel model(history);
     append(history, 0, run().size());
@@ -140,7 +140,7 @@ void TestEventLog::rowsShowTheEvents()
 
 void TestEventLog::appendsInOneBatchPerUpdate()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogModel model(history);
     QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
@@ -157,7 +157,7 @@ void TestEventLog::appendsInOneBatchPerUpdate()
 
 void TestEventLog::capKeepsTheNewest()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogModel model(history);
     model.setMaxRows(5);
@@ -199,7 +199,7 @@ void TestEventLog::filters()
     QFETCH(int, phase);
     QFETCH(QString, text);
     QFETCH(QStringList, times);
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
     panel.resize(640, 800);
@@ -215,7 +215,7 @@ void TestEventLog::filters()
 
 void TestEventLog::clickReportsTheTime()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
     panel.resize(640, 800);
@@ -243,7 +243,7 @@ void TestEventLog::clickReportsTheTime()
 
 void TestEventLog::followKeepsTheNewestInView()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
     panel.resize(420, 600);
@@ -269,7 +269,7 @@ void TestEventLog::followKeepsTheNewestInView()
 
 void TestEventLog::resetClears()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
     append(history, 0, run().size());
@@ -282,7 +282,7 @@ void TestEventLog::resetClears()
 
 void TestEventLog::longRunStaysCapped()
 {
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
     panel.resize(640, 800);
@@ -350,7 +350,7 @@ void TestEventLog::metrics()
     QFETCH(QJsonValue, value);
     QFETCH(QString, label);
     QFETCH(QString, text);
-    LiveHistory history;
+    RunHistory history;
     MetricsPanel panel(history);
     history.setMetrics(QJsonObject{{key, value}});
     auto *shown = panel.findChild<QLabel *>(key);
@@ -364,7 +364,7 @@ void TestEventLog::metrics()
 
 void TestEventLog::metricsRowsFollowTheKeys()
 {
-    LiveHistory history;
+    RunHistory history;
     MetricsPanel panel(history);
     history.setMetrics(
         QJsonObject{{"grasps", 1}, {"custom", QJsonObject{{"left", 2}, {"right", 0.25}}}});
@@ -389,7 +389,7 @@ void TestEventLog::screenshot()
     const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
     if (dir.isEmpty())
         QSKIP("set SEMHAP_SCREENSHOTS to a folder to write the screenshot");
-    LiveHistory history;
+    RunHistory history;
     startRun(history);
     EventLogPanel log(history);
     MetricsPanel metrics(history);

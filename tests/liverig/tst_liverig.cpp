@@ -108,7 +108,7 @@ LiveRigOptions anyPort(const QString &router = "C3", double silence = 60.0)
     return options;
 }
 
-template<typename T> qint64 count(const LiveSeries<T> &series)
+template<typename T> qint64 count(const RunSeries<T> &series)
 {
     return series.end() - series.begin();
 }
@@ -189,7 +189,7 @@ void TestLiveRig::framesRunLikeRoute()
     QCOMPARE(engine.liveStats().rejected, quint64(0));
     QTest::qWait(50); // one drain of the feed
 
-    const LiveHistory &history = engine.history();
+    const RunHistory &history = engine.history();
     QCOMPARE(count(history.frames(Gripper::Left)) + count(history.frames(Gripper::Right)),
              qint64(lines.size()));
     QVERIFY(qAbs(engine.simTime() - 4.995) < 1e-9);
@@ -208,7 +208,7 @@ void TestLiveRig::framesRunLikeRoute()
     bool anyOutput = false;
     for (size_t d = 0; d < history.devices().size(); ++d) {
         double max = 0.0;
-        const LiveSeries<DeviceFrame> &frames = history.deviceFrames(int(d));
+        const RunSeries<DeviceFrame> &frames = history.deviceFrames(int(d));
         for (qint64 i = frames.begin(); i < frames.end(); ++i) {
             for (int c = 0; c < frames.at(i).channelCount; ++c)
                 max = std::max(max, double(frames.at(i).values[size_t(c)]));
@@ -467,7 +467,7 @@ void TestLiveRig::silentSenderEndsMessagesAndStopsBands()
     const QList<QByteArray> lines = traceLines(400);
     QVERIFY(Sender(engine).sendBatches(lines, 4));
     QVERIFY(waitForFrames(engine, quint64(lines.size())));
-    const LiveHistory &history = engine.history();
+    const RunHistory &history = engine.history();
     const auto lastEvent = [&] { // the feed drains on the event loop
         return history.events().end() > history.events().begin()
                    ? history.events().at(history.events().end() - 1)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// PlotPanel fed from a LiveHistory directly: the graphs, threshold lines and message spans
+// PlotPanel fed from a RunHistory directly: the graphs, threshold lines and message spans
 // it draws, and its controls driven as a user would (spin box, clicks, buttons).
-#include "livehistory.h"
 #include "plotpanel.h"
+#include "runhistory.h"
 
 #include <QFile>
 #include <QLabel>
@@ -71,7 +71,7 @@ GripperThresholds rightThresholds()
     return thresholds;
 }
 
-void startRun(LiveHistory &history)
+void startRun(RunHistory &history)
 {
     std::array<GripperThresholds, 2> thresholds{};
     thresholds[size_t(Gripper::Right)] = rightThresholds();
@@ -79,7 +79,7 @@ void startRun(LiveHistory &history)
                   thresholds, {"right.force", "right.slip", "right.break"});
 }
 
-void appendTicks(LiveHistory &history, int from, int to)
+void appendTicks(RunHistory &history, int from, int to)
 {
     for (int k = from; k <= to; ++k) {
         history.append(frameAt(k / 10.0, Gripper::Right));
@@ -96,7 +96,7 @@ void appendTicks(LiveHistory &history, int from, int to)
     }
 }
 
-void fill(LiveHistory &history)
+void fill(RunHistory &history)
 {
     startRun(history);
     appendTicks(history, 0, Ticks);
@@ -165,7 +165,7 @@ private slots:
 private:
     QCPAxis *timeAxis() const { return m_plot->axisRect(0)->axis(QCPAxis::atBottom); }
 
-    std::unique_ptr<LiveHistory> m_history;
+    std::unique_ptr<RunHistory> m_history;
     std::unique_ptr<PlotPanel> m_panel;
     QCustomPlot *m_plot = nullptr;
 };
@@ -173,7 +173,7 @@ private:
 void TestPlots::init()
 {
     QLocale::setDefault(QLocale::c());
-    m_history = std::make_unique<LiveHistory>();
+    m_history = std::make_unique<RunHistory>();
     m_panel = std::make_unique<PlotPanel>(*m_history);
     m_panel->resize(1280, 800);
     m_plot = m_panel->findChild<QCustomPlot *>();
@@ -453,7 +453,7 @@ void TestPlots::manyDevicesScroll()
     std::array<GripperThresholds, 2> thresholds{};
     thresholds[size_t(Gripper::Right)] = rightThresholds();
     thresholds[size_t(Gripper::Left)] = rightThresholds();
-    std::vector<LiveDevice> devices;
+    std::vector<RunDevice> devices;
     for (int d = 0; d < 7; ++d)
         devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
     m_history->start(devices, thresholds, {"right.force", "right.slip"});

@@ -6,13 +6,13 @@
 #include "contactframereader.h"
 #include "devicemanager.h"
 #include "gatedrouter.h"
-#include "livehistory.h"
 #include "mainwindow.h"
 #include "pipeline.h"
 #include "routereditor.h"
 #include "routernodeitem.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
+#include "runhistory.h"
 #include "simengine.h"
 #include "studio.h"
 #include "userpatterns.h"
@@ -646,12 +646,12 @@ void TestRouterEditor::engineSwapsWhileRunning()
     engine.setSpeed(8.0);
     engine.run();
     QTRY_VERIFY_WITH_TIMEOUT(!engine.history().events().isEmpty(), 30000);
-    const LiveHistory &history = engine.history();
+    const RunHistory &history = engine.history();
     const qint64 firstFrame = history.frames(Gripper::Right).begin();
     const qint64 framesBefore = history.frames(Gripper::Right).end();
     const qint64 eventsBefore = history.events().end();
-    QSignalSpy reset(&engine.history(), &LiveHistory::reset);
-    QSignalSpy changed(&engine.history(), &LiveHistory::routerChanged);
+    QSignalSpy reset(&engine.history(), &RunHistory::reset);
+    QSignalSpy changed(&engine.history(), &RunHistory::routerChanged);
     QSignalSpy routerChanged(&engine, &SimEngine::routerChanged);
 
     // A broken graph is refused and the run keeps its router.
@@ -673,7 +673,7 @@ void TestRouterEditor::engineSwapsWhileRunning()
     QVERIFY(history.frames(Gripper::Right).end() > framesBefore);
     QCOMPARE(history.frames(Gripper::Right).begin(), firstFrame);
     QCOMPARE(reset.count(), 0);
-    for (const LiveDevice &device : history.devices())
+    for (const RunDevice &device : history.devices())
         QVERIFY2(engine.devices().transport(device.name), qPrintable(device.name));
     // Every event after the swap names a detector of C4.
     for (qint64 i = eventsBefore; i < history.events().end(); ++i)
@@ -691,7 +691,7 @@ void TestRouterEditor::liveActivityLightsWires()
     Fixture f;
     const RouterGraph graph = gatedRouter();
     f.editor.setGraph(graph);
-    LiveHistory history;
+    RunHistory history;
     f.editor.setHistory(&history);
     LoadError error;
     std::unique_ptr<Router> router = Router::compile(graph, &error);
@@ -700,7 +700,7 @@ void TestRouterEditor::liveActivityLightsWires()
     Pipeline pipeline(std::move(router));
     struct Sink : PipelineSink
     {
-        LiveHistory *history;
+        RunHistory *history;
         void onNodeActivity(const NodeActivity &activity) override { history->append(activity); }
     } sink;
     sink.history = &history;

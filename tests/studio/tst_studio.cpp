@@ -92,7 +92,7 @@ void TestStudio::opensOnTheDefaultsAndRuns()
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
     QVERIFY(!window.engine().isManual());
-    for (const LiveDevice &device : window.engine().history().devices())
+    for (const RunDevice &device : window.engine().history().devices())
         QCOMPARE(window.engine().devices().transport(device.name)->uri(),
                  "virtual:" + device.name);
 

@@ -114,7 +114,7 @@ QString TestStudioSessions::recordFromEngine(double seconds, qint64 *frames, qin
     engine.pause();
     engine.stopRecording();
     QTest::qWait(100); // the last values drain into the history
-    const LiveHistory &history = engine.history();
+    const RunHistory &history = engine.history();
     *frames = history.frames(Gripper::Left).end() + history.frames(Gripper::Right).end();
     *events = history.events().end();
     return path;

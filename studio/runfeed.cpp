@@ -1,41 +1,41 @@
 // SPDX-License-Identifier: MIT
-#include "livefeed.h"
+#include "runfeed.h"
 
-#include "livehistory.h"
+#include "runhistory.h"
 
 namespace semhap {
 
-LiveFeed::LiveFeed(std::size_t capacity)
+RunFeed::RunFeed(std::size_t capacity)
     : m_frames(capacity), m_events(capacity), m_deviceFrames(capacity), m_activity(capacity)
 {}
 
-void LiveFeed::count(bool pushed)
+void RunFeed::count(bool pushed)
 {
     if (!pushed)
         m_dropped.fetch_add(1, std::memory_order_relaxed);
 }
 
-void LiveFeed::push(const ContactFrame &frame)
+void RunFeed::push(const ContactFrame &frame)
 {
     count(m_frames.push(frame));
 }
 
-void LiveFeed::onEvent(const SemanticEvent &event)
+void RunFeed::onEvent(const SemanticEvent &event)
 {
     count(m_events.push(event));
 }
 
-void LiveFeed::onDeviceFrame(const DeviceFrame &frame)
+void RunFeed::onDeviceFrame(const DeviceFrame &frame)
 {
     count(m_deviceFrames.push(frame));
 }
 
-void LiveFeed::onNodeActivity(const NodeActivity &activity)
+void RunFeed::onNodeActivity(const NodeActivity &activity)
 {
     count(m_activity.push(activity));
 }
 
-void LiveFeed::drainInto(LiveHistory &history)
+void RunFeed::drainInto(RunHistory &history)
 {
     ContactFrame frame;
     while (m_frames.pop(&frame))
@@ -51,7 +51,7 @@ void LiveFeed::drainInto(LiveHistory &history)
         history.append(activity);
 }
 
-void LiveFeed::discard()
+void RunFeed::discard()
 {
     ContactFrame frame;
     while (m_frames.pop(&frame)) {

@@ -11,18 +11,18 @@
 
 namespace semhap {
 
-class LiveHistory;
+class RunHistory;
 
 /**
  * The handover from the pipeline thread to the GUI: one lock-free queue per stream. The
  * pipeline pushes and never waits — when the GUI falls behind, the newest values are
- * dropped and counted — and the GUI drains everything into a LiveHistory at display rate.
+ * dropped and counted — and the GUI drains everything into a RunHistory at display rate.
  */
-class LiveFeed : public PipelineSink
+class RunFeed : public PipelineSink
 {
 public:
     /** Each queue holds `capacity` values: a few seconds of a busy run. */
-    explicit LiveFeed(std::size_t capacity = 1 << 15);
+    explicit RunFeed(std::size_t capacity = 1 << 15);
 
     // Pipeline thread.
     void push(const ContactFrame &frame);
@@ -32,7 +32,7 @@ public:
 
     // GUI thread.
     /** Moves everything queued into `history`; does not commit it. */
-    void drainInto(LiveHistory &history);
+    void drainInto(RunHistory &history);
     /** Drops everything queued (the history shows something else, a replay). */
     void discard();
     /** Values refused because a queue was full, since construction. */

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "livehistory.h"
+#include "runhistory.h"
 
 #include "forcedetector.h"
 #include "player.h"
@@ -16,10 +16,10 @@ bool isIdleDevice(const Router &router, int device, const Hands &present)
     return router.deviceHand(device, &hand) && !present[size_t(hand)];
 }
 
-std::vector<LiveDevice> liveDevicesOf(const Router &router, const Hands &present)
+std::vector<RunDevice> liveDevicesOf(const Router &router, const Hands &present)
 {
     const Player &player = router.player();
-    std::vector<LiveDevice> devices;
+    std::vector<RunDevice> devices;
     for (int d = 0; d < player.deviceCount(); ++d) {
         devices.push_back({player.deviceName(d), player.deviceModel(d).name(),
                            player.deviceModel(d).channelNames(),
@@ -49,9 +49,9 @@ std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands 
     return result;
 }
 
-LiveHistory::LiveHistory(QObject *parent) : QObject(parent) {}
+RunHistory::RunHistory(QObject *parent) : QObject(parent) {}
 
-void LiveHistory::start(const std::vector<LiveDevice> &devices,
+void RunHistory::start(const std::vector<RunDevice> &devices,
                         const std::array<GripperThresholds, 2> &thresholds,
                         const QStringList &nodeIds)
 {
@@ -61,7 +61,7 @@ void LiveHistory::start(const std::vector<LiveDevice> &devices,
     m_activity.clear();
     m_spans.clear();
     m_devices = devices;
-    m_deviceFrames.assign(devices.size(), LiveSeries<DeviceFrame>());
+    m_deviceFrames.assign(devices.size(), RunSeries<DeviceFrame>());
     m_thresholds = thresholds;
     m_nodeIds.clear();
     m_nodeMap.clear();
@@ -72,11 +72,11 @@ void LiveHistory::start(const std::vector<LiveDevice> &devices,
     emit reset();
 }
 
-void LiveHistory::setRouter(const std::vector<LiveDevice> &devices,
+void RunHistory::setRouter(const std::vector<RunDevice> &devices,
                             const std::array<GripperThresholds, 2> &thresholds,
                             const QStringList &nodeIds)
 {
-    std::vector<LiveSeries<DeviceFrame>> series(devices.size());
+    std::vector<RunSeries<DeviceFrame>> series(devices.size());
     for (size_t d = 0; d < devices.size(); ++d) {
         for (size_t old = 0; old < m_devices.size(); ++old) {
             if (m_devices[old].name == devices[d].name)
@@ -91,7 +91,7 @@ void LiveHistory::setRouter(const std::vector<LiveDevice> &devices,
     emit routerChanged();
 }
 
-void LiveHistory::mapNodes(const QStringList &nodeIds)
+void RunHistory::mapNodes(const QStringList &nodeIds)
 {
     for (const QString &id : nodeIds) {
         int index = int(m_nodeIds.indexOf(id));
@@ -103,19 +103,19 @@ void LiveHistory::mapNodes(const QStringList &nodeIds)
     }
 }
 
-void LiveHistory::append(const ContactFrame &frame)
+void RunHistory::append(const ContactFrame &frame)
 {
     m_frames[size_t(frame.gripper)].append(frame);
     m_now = std::max(m_now, frame.t);
     m_dirty = true;
 }
 
-int LiveHistory::mapNode(int node) const
+int RunHistory::mapNode(int node) const
 {
     return node >= 0 && size_t(node) < m_nodeMap.size() ? m_nodeMap[size_t(node)] : -1;
 }
 
-void LiveHistory::append(const NodeActivity &routed)
+void RunHistory::append(const NodeActivity &routed)
 {
     NodeActivity activity = routed;
     activity.node = mapNode(routed.node);
@@ -124,7 +124,7 @@ void LiveHistory::append(const NodeActivity &routed)
     m_dirty = true;
 }
 
-void LiveHistory::append(const SemanticEvent &routed)
+void RunHistory::append(const SemanticEvent &routed)
 {
     SemanticEvent event = routed;
     event.node = mapNode(routed.node);
@@ -156,7 +156,7 @@ void LiveHistory::append(const SemanticEvent &routed)
     }
 }
 
-void LiveHistory::append(const DeviceFrame &frame)
+void RunHistory::append(const DeviceFrame &frame)
 {
     if (frame.device < 0 || size_t(frame.device) >= m_deviceFrames.size())
         return;
@@ -165,7 +165,7 @@ void LiveHistory::append(const DeviceFrame &frame)
     m_dirty = true;
 }
 
-void LiveHistory::setMetrics(const QJsonObject &metrics)
+void RunHistory::setMetrics(const QJsonObject &metrics)
 {
     if (metrics == m_metrics)
         return;
@@ -173,7 +173,7 @@ void LiveHistory::setMetrics(const QJsonObject &metrics)
     emit metricsChanged();
 }
 
-void LiveHistory::commit()
+void RunHistory::commit()
 {
     if (!m_dirty)
         return;
@@ -197,12 +197,12 @@ void LiveHistory::commit()
     emit updated();
 }
 
-void LiveHistory::setKeepSeconds(double seconds)
+void RunHistory::setKeepSeconds(double seconds)
 {
     m_keepSeconds = std::max(1.0, seconds);
 }
 
-QString LiveHistory::nodeName(int node) const
+QString RunHistory::nodeName(int node) const
 {
     return node >= 0 && node < m_nodeIds.size() ? m_nodeIds[node] : QString();
 }

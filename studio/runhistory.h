@@ -31,7 +31,7 @@ struct GripperThresholds
 class Router;
 
 /** One device of the running router, as the panels list it. */
-struct LiveDevice
+struct RunDevice
 {
     QString name;  ///< the router's device name (`right.vibro`)
     QString model; ///< the device model's name
@@ -50,7 +50,7 @@ using Hands = std::array<bool, 2>;
 std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands &present);
 
 /** The router's devices as the panels list them; those of an absent hand are idle. */
-std::vector<LiveDevice> liveDevicesOf(const Router &router, const Hands &present);
+std::vector<RunDevice> liveDevicesOf(const Router &router, const Hands &present);
 
 /** Whether the router's device `device` belongs to a hand the run does not have. */
 bool isIdleDevice(const Router &router, int device, const Hands &present);
@@ -73,7 +73,7 @@ struct MessageSpan
  * A growing series the GUI reads by running index: values keep their index while the
  * oldest are trimmed, so a view remembers where it stopped and reads only what is new.
  */
-template<typename T> class LiveSeries
+template<typename T> class RunSeries
 {
 public:
     qint64 begin() const { return m_first; }
@@ -107,15 +107,15 @@ private:
  * kept for the last `keepSeconds()` of pipeline time. GUI thread only: the engine fills it
  * from its lock-free feed at display rate and calls commit(), and every panel reads it.
  */
-class LiveHistory : public QObject
+class RunHistory : public QObject
 {
     Q_OBJECT
 
 public:
-    explicit LiveHistory(QObject *parent = nullptr);
+    explicit RunHistory(QObject *parent = nullptr);
 
     /** Forgets everything and describes the new run; emits `reset()`. */
-    void start(const std::vector<LiveDevice> &devices,
+    void start(const std::vector<RunDevice> &devices,
                const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
 
     /**
@@ -125,7 +125,7 @@ public:
      * `routerChanged()`. Drain the old router's output first: frames and events appended
      * afterwards are read with the new router's numbering.
      */
-    void setRouter(const std::vector<LiveDevice> &devices,
+    void setRouter(const std::vector<RunDevice> &devices,
                    const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
 
     void append(const ContactFrame &frame);
@@ -145,16 +145,16 @@ public:
     /** The latest pipeline time seen (s). */
     double now() const { return m_now; }
 
-    const LiveSeries<ContactFrame> &frames(Gripper gripper) const
+    const RunSeries<ContactFrame> &frames(Gripper gripper) const
     {
         return m_frames[size_t(gripper)];
     }
-    const LiveSeries<SemanticEvent> &events() const { return m_events; }
+    const RunSeries<SemanticEvent> &events() const { return m_events; }
     const std::vector<MessageSpan> &spans() const { return m_spans; }
     /** Router nodes' activity changes, in order (node: nodeName()'s index). */
-    const LiveSeries<NodeActivity> &activity() const { return m_activity; }
-    const std::vector<LiveDevice> &devices() const { return m_devices; }
-    const LiveSeries<DeviceFrame> &deviceFrames(int device) const
+    const RunSeries<NodeActivity> &activity() const { return m_activity; }
+    const std::vector<RunDevice> &devices() const { return m_devices; }
+    const RunSeries<DeviceFrame> &deviceFrames(int device) const
     {
         return m_deviceFrames[size_t(device)];
     }
@@ -177,12 +177,12 @@ private:
     /** The running router's node index as the history's. */
     int mapNode(int node) const;
 
-    std::array<LiveSeries<ContactFrame>, 2> m_frames;
-    LiveSeries<SemanticEvent> m_events;
-    LiveSeries<NodeActivity> m_activity;
+    std::array<RunSeries<ContactFrame>, 2> m_frames;
+    RunSeries<SemanticEvent> m_events;
+    RunSeries<NodeActivity> m_activity;
     std::vector<MessageSpan> m_spans;
-    std::vector<LiveDevice> m_devices;
-    std::vector<LiveSeries<DeviceFrame>> m_deviceFrames;
+    std::vector<RunDevice> m_devices;
+    std::vector<RunSeries<DeviceFrame>> m_deviceFrames;
     std::array<GripperThresholds, 2> m_thresholds{};
     QStringList m_nodeIds;      ///< every node id seen this session; events index it
     std::vector<int> m_nodeMap; ///< the running router's node index -> index in m_nodeIds
