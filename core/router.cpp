@@ -69,7 +69,7 @@ private:
     double number(int node, const QString &key) const;
     Gripper gripper(int node) const;
     QStringList channels(int node) const;
-    /** A filter parameter as a bit set over its choices; absent: every bit. */
+    /** A filter parameter as a bit set over its choices; absent: 0, which a filter takes as any. */
     unsigned choiceBits(int node, const QString &key) const;
 
     bool buildNode(int node);

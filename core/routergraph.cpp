@@ -222,11 +222,13 @@ QString RouterGraph::portOf(const QString &node, const QString &port, bool outpu
 {
     if (!port.isEmpty())
         return port;
+    // The default is the type's first port: a pattern node's own inputs come after it, so
+    // no pattern needs to be found (or read from its file) to name it.
     const int index = nodeIndex(node);
-    if (index < 0)
+    const RouterNodeType *type = index < 0 ? nullptr : routerNodeType(nodes[size_t(index)].type);
+    if (!type)
         return QString();
-    const std::vector<PortSpec> ports =
-        output ? outputsOf(nodes[size_t(index)]) : inputsOf(nodes[size_t(index)]);
+    const std::vector<PortSpec> &ports = output ? type->outputs : type->inputs;
     return ports.empty() ? QString() : ports.front().name;
 }
 

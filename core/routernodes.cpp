@@ -6,40 +6,6 @@
 
 namespace semhap {
 
-ActiveMessages::Entry *ActiveMessages::find(int key)
-{
-    for (Entry &entry : *this) {
-        if (entry.key == key)
-            return &entry;
-    }
-    return nullptr;
-}
-
-ActiveMessages::Entry *ActiveMessages::insert(int key)
-{
-    if (Entry *existing = find(key))
-        return existing;
-    if (m_size == Capacity)
-        return nullptr;
-    Entry &entry = m_entries[size_t(m_size++)];
-    entry = Entry();
-    entry.key = key;
-    return &entry;
-}
-
-void ActiveMessages::remove(int key)
-{
-    for (int i = 0; i < m_size; ++i) {
-        if (m_entries[size_t(i)].key == key) {
-            // Keep insertion order: replays (gate reopening) follow the order messages began.
-            std::move(m_entries.begin() + i + 1, m_entries.begin() + m_size,
-                      m_entries.begin() + i);
-            --m_size;
-            return;
-        }
-    }
-}
-
 void RuntimeNode::onEvent(int, const SemanticEvent &) {}
 
 void RuntimeNode::onSignal(int, double, double) {}
@@ -63,15 +29,15 @@ void RouterActivity::resize(int nodes)
     m_changed.reserve(size_t(nodes));
 }
 
-void RouterActivity::set(int node, double t, const ActiveMessages &passing)
+void RouterActivity::set(int node, double t, const PassedMessages &passing)
 {
     NodeActivity now;
     now.t = t;
     now.node = node;
-    for (const ActiveMessages::Entry &entry : passing) {
-        now.level = std::max(now.level, entry.last.intensity);
-        now.messages |= 1u << unsigned(entry.last.message);
-        now.exception = now.exception || entry.last.category == Category::Exception;
+    for (const PassedEntry &entry : passing) {
+        now.level = std::max(now.level, entry.intensity);
+        now.messages |= 1u << unsigned(entry.message);
+        now.exception = now.exception || entry.category == Category::Exception;
     }
     NodeActivity &was = m_nodes[size_t(node)];
     if (now.level == was.level && now.messages == was.messages && now.exception == was.exception)
@@ -92,20 +58,20 @@ void RouterActivity::clearChanges()
 
 void RuntimeNode::emitEvent(const SemanticEvent &event)
 {
-    const int key = ActiveMessages::keyOf(event);
-    if (event.phase == EventPhase::End)
-        m_passed.remove(key);
-    else if (ActiveMessages::Entry *entry = m_passed.insert(key))
-        entry->last = event;
-    reportActivity(event.t, m_passed);
+    reportActivity(event);
     for (const RouteTarget &target : eventTargets)
         target.node->onEvent(target.port, event);
 }
 
-void RuntimeNode::reportActivity(double t, const ActiveMessages &passing)
+void RuntimeNode::reportActivity(const SemanticEvent &event)
 {
+    const int key = PassedMessages::keyOf(event);
+    if (event.phase == EventPhase::End)
+        m_passed.remove(key);
+    else if (PassedEntry *entry = m_passed.insert(key))
+        entry->set(event);
     if (m_activity)
-        m_activity->set(m_node, t, passing);
+        m_activity->set(m_node, event.t, m_passed);
 }
 
 void RuntimeNode::emitSignal(double value, double t) const
@@ -411,7 +377,7 @@ void PatternNode::onEvent(int, const SemanticEvent &event)
         entry->last = event;
     }
 
-    reportActivity(event.t, m_active);
+    reportActivity(event); // what it plays
     if (m_active.isEmpty()) {
         if (wasActive) {
             for (const auto &input : voices)

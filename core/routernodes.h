@@ -29,28 +29,51 @@ struct RouteTarget
 };
 
 /**
- * The messages currently active at a node, keyed by their origin (detector node and
- * message). Fixed capacity: a node listens to at most Capacity distinct messages, which the
- * compiler checks, so nothing allocates while events flow.
+ * A set of messages keyed by their origin (detector node and message), each with an `Entry`
+ * of what a node keeps of it. Fixed capacity: a node listens to at most Capacity distinct
+ * messages, which the compiler checks, so nothing allocates while events flow.
  */
-class ActiveMessages
+template<typename EntryType> class MessageSet
 {
 public:
+    using Entry = EntryType;
     static constexpr int Capacity = 16;
-
-    struct Entry
-    {
-        int key = -1;
-        SemanticEvent last;      ///< the last event passed on for this message
-        double pendingEnd = 0.0; ///< hysteresis: time the held-back end is due
-        bool endPending = false;
-    };
 
     static int keyOf(const SemanticEvent &e) { return e.node * 8 + int(e.message); }
 
-    Entry *find(int key);
-    Entry *insert(int key); ///< null when full
-    void remove(int key);
+    Entry *find(int key)
+    {
+        for (Entry &entry : *this) {
+            if (entry.key == key)
+                return &entry;
+        }
+        return nullptr;
+    }
+    /** The entry of `key`, new (default values) when there was none; null when full. */
+    Entry *insert(int key)
+    {
+        if (Entry *existing = find(key))
+            return existing;
+        if (m_size == Capacity)
+            return nullptr;
+        Entry &entry = m_entries[size_t(m_size++)];
+        entry = Entry();
+        entry.key = key;
+        return &entry;
+    }
+    void remove(int key)
+    {
+        for (int i = 0; i < m_size; ++i) {
+            if (m_entries[size_t(i)].key == key) {
+                // Keep insertion order: replays (gate reopening) follow the order messages
+                // began.
+                std::move(m_entries.begin() + i + 1, m_entries.begin() + m_size,
+                          m_entries.begin() + i);
+                --m_size;
+                return;
+            }
+        }
+    }
     int size() const { return m_size; }
     bool isEmpty() const { return m_size == 0; }
     Entry *begin() { return m_entries.data(); }
@@ -63,6 +86,36 @@ private:
     int m_size = 0;
 };
 
+/** What a logic node keeps of an active message: the last event, and a held-back end. */
+struct ActiveEntry
+{
+    int key = -1;
+    SemanticEvent last;      ///< the last event passed on for this message
+    double pendingEnd = 0.0; ///< hysteresis: time the held-back end is due
+    bool endPending = false;
+};
+using ActiveMessages = MessageSet<ActiveEntry>;
+
+/**
+ * What a node's activity needs of a message it passes on: kept by every node, so kept small
+ * (a router may have a million nodes).
+ */
+struct PassedEntry
+{
+    int key = -1;
+    Message message = Message::Grasp;
+    Category category = Category::Confirmation;
+    double intensity = 0.0;
+
+    void set(const SemanticEvent &event)
+    {
+        message = event.message;
+        category = event.category;
+        intensity = event.intensity;
+    }
+};
+using PassedMessages = MessageSet<PassedEntry>;
+
 /**
  * Every node's activity and which nodes changed since the router last reported them. Sized
  * when the router is compiled; updating it never allocates.
@@ -72,7 +125,7 @@ class RouterActivity
 public:
     void resize(int nodes);
     /** Node `node` passes `passing` from t on; recorded only when that changes what it shows. */
-    void set(int node, double t, const ActiveMessages &passing);
+    void set(int node, double t, const PassedMessages &passing);
     const std::vector<NodeActivity> &nodes() const { return m_nodes; }
     /** The nodes whose activity changed since clearChanges(), in the order they changed. */
     const std::vector<int> &changed() const { return m_changed; }
@@ -114,13 +167,13 @@ protected:
     /** Emits the events of `events` from index `from` on (those this node just added). */
     void emitEvents(const EventBuffer &events, int from);
     void emitSignal(double value, double t) const;
-    /** Reports that the node now passes `passing` (a node that plays rather than emits). */
-    void reportActivity(double t, const ActiveMessages &passing);
+    /** Records `event` as passed on (or ended) and reports what the node now passes. */
+    void reportActivity(const SemanticEvent &event);
 
 private:
     RouterActivity *m_activity = nullptr;
     int m_node = -1;
-    ActiveMessages m_passed; ///< what emitEvent has sent on and not yet ended
+    PassedMessages m_passed; ///< what the node passes on now
 };
 
 /** Runs a detector on its gripper's frames and sends its events on. */

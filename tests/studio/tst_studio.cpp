@@ -383,9 +383,15 @@ void TestStudio::screenshotsOfEveryPanel()
     }
     QVERIFY2(drawn >= 2, qPrintable(QString("only %1 graph(s) drawn").arg(drawn)));
 
-    // The router fits its view: every node inside it.
+    // The router fits its view, every node inside it, and shows what the running router
+    // passes on: the detector of a hand that holds something is lit.
     window.findChild<QDockWidget *>("routerDock")->raise();
     QTest::qWait(200);
+    QVERIFY(!window.engine().history().activity().isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !window.routerEditor()->scene()->nodeItem("right.force")->state().isEmpty() ||
+            !window.routerEditor()->scene()->nodeItem("left.slip")->state().isEmpty(),
+        20000);
     window.routerEditor()->fitView();
     QGraphicsView *view = window.routerEditor()->view();
     for (const RouterNode &node : window.routerEditor()->graph().nodes) {
