@@ -299,6 +299,25 @@
     </message>
 </context>
 <context>
+    <name>semhap::Engine</name>
+    <message>
+        <source>nothing is loaded</source>
+        <translation>nichts geladen</translation>
+    </message>
+    <message>
+        <source>the router has no device &apos;%1&apos;</source>
+        <translation>der Router hat kein Gerät &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>nothing runs that sends to devices</source>
+        <translation>es läuft nichts, das an Geräte sendet</translation>
+    </message>
+    <message>
+        <source>nothing runs that could be recorded</source>
+        <translation>es läuft nichts, das aufgezeichnet werden könnte</translation>
+    </message>
+</context>
+<context>
     <name>semhap::EventLogModel</name>
     <message>
         <source>%1 (%2)</source>
@@ -1723,17 +1742,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     </message>
 </context>
 <context>
-    <name>semhap::SimEngine</name>
-    <message>
-        <source>nothing is loaded</source>
-        <translation>nichts geladen</translation>
-    </message>
-    <message>
-        <source>the router has no device &apos;%1&apos;</source>
-        <translation>der Router hat kein Gerät &apos;%1&apos;</translation>
-    </message>
-</context>
-<context>
     <name>semhap::SimViewport</name>
     <message>
         <source>Reset camera</source>
@@ -2093,10 +2101,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Eingang</translation>
     </message>
     <message>
-        <source>&lt;span style=&apos;color:#009E73&apos;&gt;Valid pattern&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#009E73&apos;&gt;Gültiges Muster&lt;/span&gt;</translation>
-    </message>
-    <message>
         <source>Edit JSON</source>
         <translation>JSON bearbeiten</translation>
     </message>
@@ -2119,6 +2123,10 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Waveform tree</source>
         <translation>Wellenformbaum</translation>
+    </message>
+    <message>
+        <source>Valid pattern</source>
+        <translation>Gültiges Muster</translation>
     </message>
 </context>
 </TS>

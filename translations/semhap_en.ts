@@ -299,6 +299,25 @@
     </message>
 </context>
 <context>
+    <name>semhap::Engine</name>
+    <message>
+        <source>nothing is loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the router has no device &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing runs that sends to devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing runs that could be recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::EventLogModel</name>
     <message>
         <source>%1 (%2)</source>
@@ -1722,17 +1741,6 @@ The rig draws its own scene.</source>
     </message>
 </context>
 <context>
-    <name>semhap::SimEngine</name>
-    <message>
-        <source>nothing is loaded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the router has no device &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>semhap::SimViewport</name>
     <message>
         <source>Reset camera</source>
@@ -2092,10 +2100,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;span style=&apos;color:#009E73&apos;&gt;Valid pattern&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Edit JSON</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2117,6 +2121,10 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Waveform tree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Valid pattern</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

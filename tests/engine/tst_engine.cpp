@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: MIT
-// The studio's engine: the simulation runs on its own thread at the asked speed, its streams
-// reach the live history, devices are bound and rebound at tick boundaries, and the user
-// can take the grippers over.
+// The studio's engine, headless (this test links no GUI module): the simulation runs on its
+// own thread at the asked speed, its streams reach the history, devices are bound and
+// rebound at tick boundaries, the user can take the grippers over, and the source (a
+// simulation, a live rig, a recording) and the router can be swapped while it runs.
 #include "devicemanager.h"
+#include "engine.h"
 #include "manualoperator.h"
+#include "routergraph.h"
 #include "scenefeed.h"
-#include "simengine.h"
+#include "sessionreader.h"
 #include "world.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace semhap;
@@ -29,6 +33,9 @@ private slots:
     void resetStartsAgain();
     void finishesAtTheDuration();
     void stopAllPauses();
+    void swapsSources();
+    void swapsTheRouterMidGrasp();
+    void recordsAndReplays();
 };
 
 namespace {
@@ -42,12 +49,26 @@ RunOptions options(const QString &scene = "box_and_block", const QString &router
     return o;
 }
 
+/** Runs `engine` until the right hand's grasp confirmation is active; false after 20 s. */
+bool runUntilGrasped(Engine &engine)
+{
+    engine.setSpeed(4.0);
+    engine.run();
+    const auto grasped = [&] {
+        const std::vector<MessageSpan> &spans = engine.history().spans();
+        return std::any_of(spans.begin(), spans.end(), [](const MessageSpan &span) {
+            return span.active && span.message == Message::Grasp;
+        });
+    };
+    return QTest::qWaitFor(grasped, 20000);
+}
+
 } // namespace
 
 void TestEngine::loadsPausedWithVirtualDevices()
 {
-    SimEngine engine;
-    QSignalSpy loaded(&engine, &SimEngine::loaded);
+    Engine engine;
+    QSignalSpy loaded(&engine, &Engine::sourceChanged);
     QString error;
     QVERIFY2(engine.load(options(), &error), qPrintable(error));
     QCOMPARE(loaded.count(), 1);
@@ -71,7 +92,7 @@ void TestEngine::loadsPausedWithVirtualDevices()
 
 void TestEngine::refusesABadSceneKeepingTheRun()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     QVERIFY(!engine.load(options("no_such_scene"), &error));
@@ -93,7 +114,7 @@ void TestEngine::runsAtTheAskedSpeed_data()
 void TestEngine::runsAtTheAskedSpeed()
 {
     QFETCH(double, speed);
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     engine.setSpeed(speed);
@@ -110,7 +131,7 @@ void TestEngine::runsAtTheAskedSpeed()
 
 void TestEngine::streamsReachTheHistory()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     QSignalSpy updated(&engine.history(), &RunHistory::updated);
@@ -134,7 +155,7 @@ void TestEngine::streamsReachTheHistory()
 
 void TestEngine::stepAdvancesOneDisplayFrame()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     engine.step();
@@ -147,7 +168,7 @@ void TestEngine::stepAdvancesOneDisplayFrame()
 
 void TestEngine::rebindsADeviceWhileRunning()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     engine.setSpeed(4.0);
@@ -166,10 +187,10 @@ void TestEngine::rebindsADeviceWhileRunning()
 
 void TestEngine::userTakesOver()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
-    QSignalSpy manual(&engine, &SimEngine::manualChanged);
+    QSignalSpy manual(&engine, &Engine::manualChanged);
     engine.setManual(true);
     QCOMPARE(manual.count(), 1);
     Pose target = engine.world()->target(Gripper::Right);
@@ -185,7 +206,7 @@ void TestEngine::userTakesOver()
 
 void TestEngine::resetStartsAgain()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     engine.setSpeed(4.0);
@@ -203,12 +224,12 @@ void TestEngine::resetStartsAgain()
 
 void TestEngine::finishesAtTheDuration()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     RunOptions o = options();
     o.duration = 0.2;
     QVERIFY(engine.load(o, &error));
-    QSignalSpy finished(&engine, &SimEngine::finished);
+    QSignalSpy finished(&engine, &Engine::finished);
     engine.setSpeed(2.0);
     engine.run();
     QTRY_COMPARE(finished.count(), 1);
@@ -220,12 +241,152 @@ void TestEngine::finishesAtTheDuration()
 
 void TestEngine::stopAllPauses()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
     engine.run();
     engine.stopAll();
     QVERIFY(!engine.isRunning());
+}
+
+void TestEngine::swapsSources()
+{
+    Engine engine;
+    QString error;
+    QSignalSpy about(&engine, &Engine::sourceAboutToChange);
+    QSignalSpy changed(&engine, &Engine::sourceChanged);
+    QVERIFY(!engine.source());
+    QVERIFY(engine.load(options(), &error));
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isDrivable());
+    QVERIFY(engine.world() && engine.sceneFeed() && engine.manualOperator());
+    engine.run();
+    QTRY_VERIFY(engine.simTime() > 0.1);
+
+    LiveRigOptions rig;
+    rig.port = 0;
+    QVERIFY2(engine.listen(rig, &error), qPrintable(error));
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Rig);
+    QVERIFY(engine.isLive() && !engine.isRunning());
+    QVERIFY(!engine.world() && !engine.sceneFeed() && !engine.manualOperator());
+    engine.setManual(true); // nobody drives a rig's grippers from here
+    QVERIFY(!engine.isManual());
+    QVERIFY(engine.liveOptions().port > 0);
+    QCOMPARE(about.count(), 2);
+    QCOMPARE(changed.count(), 2);
+
+    // A file that is not a session keeps the rig listening.
+    QTemporaryDir dir;
+    const QString notASession = dir.filePath("not-a-session.db");
+    QFile file(notASession);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("not a database");
+    file.close();
+    QVERIFY(!engine.openReplay(notASession, &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(engine.isLive());
+    QCOMPARE(changed.count(), 2);
+
+    // Back to a simulation, whose reset stays a simulation.
+    QVERIFY(engine.load(options(), &error));
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.reset(&error));
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QCOMPARE(about.count(), changed.count());
+}
+
+void TestEngine::swapsTheRouterMidGrasp()
+{
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+
+    // The grasp confirmation running now ends with the old router; the pipeline thread
+    // cannot tick between the swap and the history's catching up.
+    LoadError loadError;
+    RouterGraph c1;
+    QVERIFY(RouterPresets::load("C1", &c1, &loadError));
+    QSignalSpy routerChanged(&engine, &Engine::routerChanged);
+    const double swappedAt = engine.simTime();
+    QVERIFY2(engine.setRouter(c1, &error), qPrintable(error));
+    QCOMPARE(routerChanged.count(), 1);
+    QVERIFY(engine.isRunning()); // the run goes on
+    QCOMPARE(engine.routerGraph().toJson(), c1.toJson());
+    const std::vector<MessageSpan> &spans = engine.history().spans();
+    QVERIFY(std::none_of(spans.begin(), spans.end(),
+                         [](const MessageSpan &span) { return span.active; }));
+    QTRY_VERIFY(engine.simTime() > swappedAt + 0.5);
+    // The new router's devices get frames; the history saw no gap.
+    bool sent = false;
+    for (int d = 0; d < int(engine.history().devices().size()); ++d)
+        sent = sent || engine.history().deviceFrames(d).end() > engine.history().deviceFrames(d).begin();
+    QVERIFY(sent);
+    QCOMPARE(engine.dropped(), quint64(0));
+
+    // A graph that does not compile leaves the router that runs.
+    RouterGraph broken = c1;
+    broken.links.clear();
+    broken.nodes.push_back(RouterNode{"x", "no_such_type", {}, {}});
+    QVERIFY(!engine.setRouter(broken, &error));
+    QVERIFY(error.contains("no_such_type"));
+    QCOMPARE(engine.routerGraph().toJson(), c1.toJson());
+}
+
+void TestEngine::recordsAndReplays()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("run.db");
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(engine.startRecording(path, "headless", &error), qPrintable(error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    QTRY_VERIFY(engine.simTime() > 2.0);
+    engine.pause();
+    engine.stopRecording();
+    QVERIFY(!engine.isRecording());
+
+    QSignalSpy about(&engine, &Engine::sourceAboutToChange);
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    QCOMPARE(about.count(), 1);
+    QVERIFY(engine.isReplaying());
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Replay);
+    QVERIFY(!engine.source()->pipeline());
+    QVERIFY(!engine.source()->isDrivable());
+    QVERIFY(engine.world()); // the recorded scene states, for the viewport
+    engine.run(); // a replay is scrubbed, not run
+    QVERIFY(!engine.isRunning());
+    QVERIFY(!engine.startRecording(dir.filePath("again.db"), QString(), &error));
+    QVERIFY(!engine.bindDevice("right.vibro", "virtual:x", &error));
+
+    // Scrubbing to the end shows what was recorded.
+    SessionReplay &replay = engine.replay();
+    replay.seek(replay.endTime());
+    QCOMPARE(engine.simTime(), replay.endTime());
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(qint64(replay.events().size()), reader->eventCount());
+    const std::vector<MessageSpan> &spans = engine.history().spans();
+    QVERIFY(std::any_of(spans.begin(), spans.end(),
+                        [](const MessageSpan &span) { return span.message == Message::Grasp; }));
+
+    // The router swap re-routes the recording.
+    LoadError loadError;
+    RouterGraph c1;
+    QVERIFY(RouterPresets::load("C1", &c1, &loadError));
+    QSignalSpy rerouted(&replay, &SessionReplay::streamsChanged);
+    QVERIFY2(engine.setRouter(c1, &error), qPrintable(error));
+    QCOMPARE(rerouted.count(), 1);
+    QVERIFY(replay.isRerouted());
+    QVERIFY(!replay.events().empty());
+
+    // Reset leaves the replay for the simulation it replaced, from its start.
+    QVERIFY(engine.reset(&error));
+    QVERIFY(!engine.isReplaying());
+    QVERIFY(!replay.isOpen());
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.simTime() < 0.1);
 }
 
 QTEST_MAIN(TestEngine)

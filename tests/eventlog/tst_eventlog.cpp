@@ -5,6 +5,7 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "metricspanel.h"
+#include "colors.h"
 #include "runhistory.h"
 
 #include <QCheckBox>
@@ -135,7 +136,7 @@ void TestEventLog::rowsShowTheEvents()
     QVERIFY(message.data(Qt::ToolTipRole).toString().contains(QStringLiteral("exception")));
     QCOMPARE(model.index(0, EventLogModel::MessageColumn).data(Qt::ToolTipRole).toString(),
              QStringLiteral("grasp: confirmation"));
-    QCOMPARE(EventLogModel::categoryColor(Category::Exception), QColor(0xE6, 0x9F, 0x00));
+    QCOMPARE(colors::category(Category::Exception), colors::Orange);
 }
 
 void TestEventLog::appendsInOneBatchPerUpdate()

@@ -7,7 +7,7 @@
 #include "devicemanager.h"
 #include "routergraph.h"
 #include "sessionreader.h"
-#include "simengine.h"
+#include "engine.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -56,7 +56,7 @@ QList<QByteArray> traceLines(int count)
 class Sender
 {
 public:
-    explicit Sender(SimEngine &engine) : m_engine(engine), m_port(quint16(engine.liveStats().port))
+    explicit Sender(Engine &engine) : m_engine(engine), m_port(quint16(engine.liveStats().port))
     {}
 
     void send(const QByteArray &datagram)
@@ -90,7 +90,7 @@ public:
     }
 
 private:
-    SimEngine &m_engine;
+    Engine &m_engine;
     QUdpSocket m_socket;
     quint16 m_port;
 };
@@ -113,7 +113,7 @@ template<typename T> qint64 count(const RunSeries<T> &series)
     return series.end() - series.begin();
 }
 
-bool waitForFrames(SimEngine &engine, quint64 frames)
+bool waitForFrames(Engine &engine, quint64 frames)
 {
     // `frames` counts every valid frame received, the held ones too.
     return QTest::qWaitFor([&] { return engine.liveStats().frames >= frames; }, 10000);
@@ -170,8 +170,8 @@ void TestLiveRig::initTestCase()
 
 void TestLiveRig::framesRunLikeRoute()
 {
-    SimEngine engine;
-    QSignalSpy loaded(&engine, &SimEngine::loaded);
+    Engine engine;
+    QSignalSpy loaded(&engine, &Engine::sourceChanged);
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     QCOMPARE(loaded.count(), 1);
@@ -246,7 +246,7 @@ void TestLiveRig::malformedDatagramsAreCounted()
     QFETCH(QString, reason);
     QFETCH(bool, oversize);
     QFETCH(int, rejections);
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     engine.run();
@@ -270,7 +270,7 @@ void TestLiveRig::malformedDatagramsAreCounted()
 
 void TestLiveRig::floodDoesNotStallTheGui()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     engine.run();
@@ -331,7 +331,7 @@ void TestLiveRig::floodDoesNotStallTheGui()
 
 void TestLiveRig::pausedHoldsFrames()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     QVERIFY(!engine.isRunning()); // listen() leaves it paused, like load()
@@ -355,7 +355,7 @@ void TestLiveRig::recordsArrivalTimes()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath("rig.db");
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     engine.run();
@@ -394,7 +394,7 @@ void TestLiveRig::portInUseKeepsTheRun()
 {
     QUdpSocket taken;
     QVERIFY(taken.bind(QHostAddress::LocalHost, 0));
-    SimEngine engine;
+    Engine engine;
     QString error;
     RunOptions run;
     run.duration = 3600.0;
@@ -402,7 +402,7 @@ void TestLiveRig::portInUseKeepsTheRun()
     engine.step();
     QVERIFY(QTest::qWaitFor([&] { return engine.simTime() > 0.0; }, 5000));
     const double before = engine.simTime();
-    QSignalSpy loaded(&engine, &SimEngine::loaded);
+    QSignalSpy loaded(&engine, &Engine::sourceChanged);
 
     LiveRigOptions options = anyPort();
     options.port = taken.localPort();
@@ -425,7 +425,7 @@ void TestLiveRig::portInUseKeepsTheRun()
 
 void TestLiveRig::resetAndRouterSwapKeepListening()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
     engine.run();
@@ -458,7 +458,7 @@ void TestLiveRig::resetAndRouterSwapKeepListening()
 
 void TestLiveRig::silentSenderEndsMessagesAndStopsBands()
 {
-    SimEngine engine;
+    Engine engine;
     QString error;
     QVERIFY2(engine.listen(anyPort("C3", UdpFrameSource::DefaultSilence), &error),
              qPrintable(error));

@@ -13,7 +13,7 @@
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "runhistory.h"
-#include "simengine.h"
+#include "engine.h"
 #include "studio.h"
 #include "userpatterns.h"
 
@@ -638,7 +638,7 @@ void TestRouterEditor::offersTheDesignersPatterns()
 
 void TestRouterEditor::engineSwapsWhileRunning()
 {
-    SimEngine engine;
+    Engine engine;
     RunOptions options;
     options.duration = 3600.0;
     QString error;
@@ -652,7 +652,7 @@ void TestRouterEditor::engineSwapsWhileRunning()
     const qint64 eventsBefore = history.events().end();
     QSignalSpy reset(&engine.history(), &RunHistory::reset);
     QSignalSpy changed(&engine.history(), &RunHistory::routerChanged);
-    QSignalSpy routerChanged(&engine, &SimEngine::routerChanged);
+    QSignalSpy routerChanged(&engine, &Engine::routerChanged);
 
     // A broken graph is refused and the run keeps its router.
     RouterGraph broken = preset("C4");

@@ -112,7 +112,7 @@ void TestStudio::picksSceneAndRouter()
 {
     MainWindow window(options());
     QVERIFY(openWindow(window));
-    QSignalSpy loaded(&window.engine(), &SimEngine::loaded);
+    QSignalSpy loaded(&window.engine(), &Engine::sourceChanged);
 
     QComboBox *scene = window.scenePicker();
     scene->setFocus();

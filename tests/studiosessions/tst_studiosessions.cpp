@@ -98,7 +98,7 @@ void TestStudioSessions::initTestCase()
 
 QString TestStudioSessions::recordFromEngine(double seconds, qint64 *frames, qint64 *events)
 {
-    SimEngine engine;
+    Engine engine;
     RunOptions options;
     options.duration = 3600.0;
     QString error;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "routereditor.h"
+#include "colors.h"
 
 #include "outputfile.h"
 #include "patternlibrary.h"
@@ -602,7 +603,7 @@ QStringList RouterEditor::validate()
         const QStringList tokens = error.pointer.split(QLatin1Char('/'));
         const int index = tokens.size() > 2 ? tokens[2].toInt() : -1;
         auto *item = new QListWidgetItem(error.reason, m_errorList);
-        item->setForeground(QColor(0xD5, 0x5E, 0x00).darker(130));
+        item->setForeground(colors::ErrorDark);
         m_errors.append(error.reason);
         if (tokens.value(1) == QLatin1String("nodes") && index >= 0 &&
             size_t(index) < graph.nodes.size()) {
@@ -703,7 +704,8 @@ void RouterEditor::onHistoryUpdated()
 void RouterEditor::showStatus(const QString &text, bool warning)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(warning ? QStringLiteral("QLabel { color: #A04600; }") : QString());
+    m_status->setStyleSheet(
+        warning ? QStringLiteral("QLabel { color: %1; }").arg(colors::css(colors::ErrorDark)) : QString());
 }
 
 void RouterEditor::onGraphChanged()

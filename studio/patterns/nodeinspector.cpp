@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "nodeinspector.h"
+#include "colors.h"
 
 #include "numberedit.h"
 #include "patterndocument.h"
@@ -331,7 +332,8 @@ void NodeInspector::addText(const QString &key, const QString &label, const QStr
             return;
         const QJsonValue value = toJson(line->text());
         if (value.isNull()) {
-            line->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #E69F00; }"));
+            line->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid %1; }")
+                                    .arg(colors::css(colors::Exception)));
             line->setToolTip(tr("Not understood; nothing was changed"));
             return;
         }

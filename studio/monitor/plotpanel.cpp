@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "plotpanel.h"
+#include "colors.h"
 
 #include "outputfile.h"
 
@@ -27,14 +28,13 @@ namespace semhap {
 namespace {
 
 // Okabe–Ito: readable for the common colour-vision deficiencies.
-const QColor Blue(0x00, 0x72, 0xB2);
-const QColor Orange(0xE6, 0x9F, 0x00);
-const QColor Vermillion(0xD5, 0x5E, 0x00);
-const QColor Green(0x00, 0x9E, 0x73);
-const QColor Sky(0x56, 0xB4, 0xE9);
-const QColor Purple(0xCC, 0x79, 0xA7);
-const QColor Yellow(0xF0, 0xE4, 0x42);
-const QColor Black(0x00, 0x00, 0x00);
+using colors::Black;
+using colors::Blue;
+using colors::Green;
+using colors::Orange;
+using colors::Purple;
+using colors::Sky;
+using colors::Vermillion;
 
 constexpr double MinWindow = 2.0;
 constexpr double MaxWindow = 120.0;
@@ -308,7 +308,7 @@ void PlotPanel::rebuild()
     QCPAxis *timeAxis = m_rects.back()->axis(QCPAxis::atBottom);
     timeAxis->setTickLabels(true);
     timeAxis->setLabel(tr("pipeline time (s)"));
-    QPen cursorPen(QColor(0x33, 0x33, 0x33));
+    QPen cursorPen(colors::Text);
     cursorPen.setWidthF(1.5);
     for (QCPAxisRect *rect : m_rects) {
         QCPItemStraightLine *line = addTimeLine(m_plot, rect, 0.0, cursorPen);
@@ -346,7 +346,7 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     QFont bold = titleItem->font();
     bold.setBold(true);
     titleItem->setFont(bold);
-    titleItem->setBrush(QColor(255, 255, 255, 200));
+    titleItem->setBrush(colors::veil(200));
     titleItem->setLayer(QStringLiteral("legend"));
     return rect;
 }
@@ -370,8 +370,8 @@ QCPGraph *PlotPanel::addGraph(QCPAxisRect *rect, const QString &id, const QStrin
         rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
         legend->setLayer(QStringLiteral("legend"));
         legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-        legend->setBrush(QColor(255, 255, 255, 200));
-        legend->setBorderPen(QPen(QColor(0xAA, 0xAA, 0xAA)));
+        legend->setBrush(colors::veil(200));
+        legend->setBorderPen(QPen(colors::Border));
         legend->setRowSpacing(0);
         legend->setColumnSpacing(6);
         legend->setIconSize(16, 8);
@@ -460,7 +460,6 @@ void PlotPanel::addGripper(Gripper gripper)
 
 void PlotPanel::addDevice(int device)
 {
-    static const QColor palette[] = {Blue, Orange, Green, Vermillion, Sky, Purple, Black, Yellow};
     const RunDevice &info = m_history.devices()[size_t(device)];
     auto plot = std::make_unique<DevicePlot>();
     plot->device = device;
@@ -471,11 +470,11 @@ void PlotPanel::addDevice(int device)
     plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(1);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
         const QString &name = info.channels[channel];
-        const QColor color = palette[size_t(channel) % std::size(palette)];
+        const QColor color = colors::series(channel);
         // Past the palette, dashes keep channels apart.
         QCPGraph *graph =
             addGraph(plot->rect, info.name + QLatin1Char('.') + name, name, color, 1.0);
-        if (channel >= int(std::size(palette))) {
+        if (channel >= colors::SeriesCount) {
             QPen pen = graph->pen();
             pen.setStyle(Qt::DashLine);
             graph->setPen(pen);
@@ -630,7 +629,7 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
     QFont font = view.label->font();
     font.setBold(true);
     view.label->setFont(font);
-    view.label->setBrush(QColor(255, 255, 255, 170));
+    view.label->setBrush(colors::veil(170));
     // One row per message below the rect's title, so overlapping spans stay readable.
     const int row = int(span.message) + (threshold ? 3 : 0);
     place(view.label->position, plot.forceRect, QCPItemPosition::ptPlotCoords,

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "devicespanel.h"
+#include "colors.h"
 
 #include "devicemanager.h"
 #include "deviceuri.h"
@@ -39,12 +40,12 @@ struct StateLook
 StateLook stateLook(const BoundDevice *bound)
 {
     if (!bound)
-        return {DevicesPanel::tr("not bound"), QColor(0xDD, 0xDD, 0xDD)};
+        return {DevicesPanel::tr("not bound"), colors::Inactive};
     if (bound->status.connected && bound->status.responding)
-        return {DevicesPanel::tr("connected"), QColor(0x00, 0x9E, 0x73)};
+        return {DevicesPanel::tr("connected"), colors::Ok};
     if (bound->status.connected)
-        return {DevicesPanel::tr("connecting"), QColor(0xF0, 0xE4, 0x42)};
-    return {DevicesPanel::tr("disconnected"), QColor(0xD5, 0x5E, 0x00)};
+        return {DevicesPanel::tr("connecting"), colors::Activity};
+    return {DevicesPanel::tr("disconnected"), colors::Error};
 }
 
 QString statusDetails(const BoundDevice &bound)
@@ -108,7 +109,7 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     rescanButton->setObjectName(QStringLiteral("rescanButton"));
     m_message->setObjectName(QStringLiteral("message"));
     m_message->setWordWrap(true);
-    m_message->setStyleSheet(QStringLiteral("color: #D55E00;"));
+    m_message->setStyleSheet(QStringLiteral("color: %1;").arg(colors::css(colors::Error)));
     m_message->hide();
     auto *addRow = new QHBoxLayout;
     addRow->addWidget(m_address, 1);

@@ -46,9 +46,6 @@ public:
     int maxRows() const { return m_maxRows; }
     void setMaxRows(int rows);
 
-    /** The colour that marks a category (Okabe–Ito: confirmation blue, exception orange). */
-    static QColor categoryColor(Category category);
-
     int rowCount(const QModelIndex &parent = QModelIndex()) const override;
     int columnCount(const QModelIndex &parent = QModelIndex()) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;

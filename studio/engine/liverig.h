@@ -3,6 +3,7 @@
 
 #include "contactframe.h"
 #include "pipeline.h"
+#include "runsource.h"
 #include "udpframesource.h"
 
 #include <QElapsedTimer>
@@ -41,7 +42,7 @@ struct LiveRigOptions
  * the socket opened) minus `t`; its offset is arbitrary, but its spread over a second is the
  * link's jitter, which is what the user wants to see.
  */
-class LiveRig
+class LiveRig : public RunSource
 {
 public:
     /** What the rig has seen since it started listening. */
@@ -61,10 +62,12 @@ public:
     using FrameHandler = std::function<void(const ContactFrame &frame, double arrival)>;
 
     LiveRig(const LiveRigOptions &options, std::unique_ptr<Router> router);
-    ~LiveRig();
+    ~LiveRig() override;
+
+    Kind kind() const override { return Kind::Rig; }
+    Pipeline *pipeline() override { return m_pipeline.get(); }
 
     const LiveRigOptions &options() const { return m_options; }
-    Pipeline &pipeline() { return *m_pipeline; }
     /** Swaps the router; the old one's active messages end now, their End events to `sink`. */
     void setRouter(std::unique_ptr<Router> router, PipelineSink &sink);
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "routernodeitem.h"
+#include "colors.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -16,8 +17,6 @@ constexpr double StateHeight = 18.0;  ///< the live state line
 constexpr double PortSpacing = 18.0;
 constexpr double PortRadius = 5.0;
 constexpr double HitRadius = 9.0;
-
-const QColor Vermillion(0xD5, 0x5E, 0x00);
 
 } // namespace
 
@@ -109,13 +108,13 @@ QColor RouterNodeItem::portColor(PortType type)
 {
     switch (type) {
     case PortType::Event:
-        return {0x00, 0x72, 0xB2}; // blue
+        return colors::Blue;
     case PortType::Signal:
-        return {0x00, 0x9E, 0x73}; // green
+        return colors::Green;
     case PortType::Voice:
-        return {0xCC, 0x79, 0xA7}; // purple
+        return colors::Purple;
     }
-    return Qt::black;
+    return colors::Black;
 }
 
 QColor RouterNodeItem::kindColor(const QString &type)
@@ -124,15 +123,15 @@ QColor RouterNodeItem::kindColor(const QString &type)
     const RouterNodeType *spec = routerNodeType(type);
     switch (spec ? spec->role() : RouterNodeType::Role::Logic) {
     case RouterNodeType::Role::Source:
-        return {0x56, 0xB4, 0xE9}; // sky: where events and signals come from
+        return colors::Sky; // where events and signals come from
     case RouterNodeType::Role::Voices:
-        return {0xCC, 0x79, 0xA7}; // purple: what makes voices
+        return colors::Purple; // what makes voices
     case RouterNodeType::Role::Device:
-        return {0xE6, 0x9F, 0x00}; // orange: what plays
+        return colors::Orange; // what plays
     case RouterNodeType::Role::Logic:
         break;
     }
-    return {0x00, 0x9E, 0x73}; // green: logic
+    return colors::Green; // logic
 }
 
 QRectF RouterNodeItem::boundingRect() const
@@ -149,17 +148,17 @@ void RouterNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
 
     // Body, then the header band in the kind's colour, pale so the black title reads.
     painter->setPen(Qt::NoPen);
-    painter->setBrush(QColor(0xFA, 0xFA, 0xFA));
+    painter->setBrush(colors::Card);
     painter->drawRoundedRect(body, 6, 6);
     painter->setBrush(kind.lighter(150));
     painter->drawRoundedRect(QRectF(0, 0, Width, HeaderHeight), 6, 6);
     painter->drawRect(QRectF(0, HeaderHeight - 6, Width, 6));
 
-    QPen border(QColor(0x55, 0x55, 0x55), 1.0);
+    QPen border(colors::MutedText, 1.0);
     if (isSelected())
-        border = QPen(QColor(0x00, 0x72, 0xB2), 2.5);
+        border = QPen(colors::Confirmation, 2.5);
     if (!m_error.isEmpty())
-        border = QPen(Vermillion, isSelected() ? 3.5 : 2.5);
+        border = QPen(colors::Error, isSelected() ? 3.5 : 2.5);
     painter->setPen(border);
     painter->setBrush(Qt::NoBrush);
     painter->drawRoundedRect(body, 6, 6);
@@ -176,7 +175,7 @@ void RouterNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
     small.setBold(false);
     small.setPointSizeF(small.pointSizeF() * 0.9);
     painter->setFont(small);
-    painter->setPen(QColor(0x33, 0x33, 0x33));
+    painter->setPen(colors::Text);
     const QRectF summaryRect(6, 18, Width - 12, 16);
     const QString summary =
         m_summary.isEmpty() ? m_type : m_type + QStringLiteral(" · ") + m_summary;
@@ -192,7 +191,7 @@ void RouterNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
             painter->setPen(QPen(Qt::white, 1.0));
             painter->setBrush(portColor(ports[i].type));
             painter->drawEllipse(p, PortRadius, PortRadius);
-            painter->setPen(QColor(0x22, 0x22, 0x22));
+            painter->setPen(colors::StrongText);
             const QRectF label(output ? Width / 2 : PortRadius + 4, p.y() - PortSpacing / 2,
                                Width / 2 - PortRadius - 8, PortSpacing);
             painter->drawText(label, (output ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter,
@@ -204,7 +203,7 @@ void RouterNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
     const QRectF stateRect(6, height() - StateHeight - 1, Width - 12, StateHeight - 3);
     if (m_level > 0.0) {
         painter->setPen(Qt::NoPen);
-        painter->setBrush(QColor(0xF0, 0xE4, 0x42));
+        painter->setBrush(colors::Activity);
         painter->drawRoundedRect(QRectF(stateRect.left(), stateRect.top(),
                                         stateRect.width() * std::min(m_level, 1.0),
                                         stateRect.height()),

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "levelmeter.h"
+#include "colors.h"
 
 #include <QLocale>
 #include <QPainter>
@@ -9,11 +10,6 @@
 
 namespace semhap {
 
-namespace {
-
-const QColor BarColor(0x56, 0xB4, 0xE9); // Okabe–Ito sky blue
-
-} // namespace
 
 LevelMeter::LevelMeter(QWidget *parent) : QWidget(parent)
 {
@@ -77,7 +73,7 @@ void LevelMeter::paintEvent(QPaintEvent *)
         painter.fillRect(track, palette().color(QPalette::Base));
         painter.fillRect(QRect(track.left(), track.top(), int(std::lround(fraction * barWidth)),
                                track.height()),
-                         BarColor);
+                         colors::Level);
         painter.setPen(palette().color(QPalette::Mid));
         painter.drawRect(track.adjusted(0, 0, -1, -1));
         painter.setPen(palette().color(QPalette::WindowText));

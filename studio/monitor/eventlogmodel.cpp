@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "eventlogmodel.h"
+#include "colors.h"
 
 #include "runhistory.h"
 
@@ -22,8 +23,8 @@ QPixmap categorySwatch(Category category)
     pixmap.fill(Qt::transparent);
     QPainter painter(&pixmap);
     painter.setRenderHint(QPainter::Antialiasing);
-    painter.setPen(QPen(QColor(0, 0, 0), 1.0));
-    painter.setBrush(EventLogModel::categoryColor(category));
+    painter.setPen(QPen(colors::Black, 1.0));
+    painter.setBrush(colors::category(category));
     if (category == Category::Confirmation) {
         painter.drawEllipse(QRectF(1.5, 1.5, size - 3.0, size - 3.0));
     } else {
@@ -49,12 +50,6 @@ void EventLogModel::setMaxRows(int rows)
 {
     m_maxRows = std::max(1, rows);
     trim();
-}
-
-QColor EventLogModel::categoryColor(Category category)
-{
-    return category == Category::Confirmation ? QColor(0x00, 0x72, 0xB2)
-                                              : QColor(0xE6, 0x9F, 0x00);
 }
 
 void EventLogModel::clear()

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "runhistory.h"
+#include "runsource.h"
 
 #include <QObject>
 #include <QString>
@@ -25,7 +26,7 @@ class World;
  * A simulated session's scene states (schema 2) put the bodies of a world of its own scene
  * where they were at the time shown, for the viewport: world() and sceneFeed().
  */
-class SessionReplay : public QObject
+class SessionReplay : public QObject, public RunSource
 {
     Q_OBJECT
 
@@ -33,8 +34,17 @@ public:
     explicit SessionReplay(RunHistory &history, QObject *parent = nullptr);
     ~SessionReplay() override;
 
-    /** Reads the session at `path` and shows its start. False with a one-line `error`. */
+    Kind kind() const override { return Kind::Replay; }
+    Pipeline *pipeline() override { return nullptr; }
+    Hands hands() const override { return m_hands; }
+
+    /**
+     * Reads the session at `path`, leaving the history alone until begin(). False with a
+     * one-line `error`, keeping the session open before, if any.
+     */
     bool open(const QString &path, QString *error);
+    /** Loads the session's scene and shows its start: the history is the replay's from here. */
+    void begin();
     void close();
     bool isOpen() const { return !m_path.isEmpty(); }
     const QString &path() const { return m_path; }
@@ -61,8 +71,8 @@ public:
     qsizetype frameCount() const { return qsizetype(m_frames.size()); }
 
     /** The scene at the time shown; null when the session has none (see sceneNote()). */
-    const World *world() const { return m_world.get(); }
-    SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
+    const World *world() const override { return m_world.get(); }
+    SceneFeed *sceneFeed() const override { return m_sceneFeed.get(); }
     /** Why there is no scene to show: no states recorded, or the scene does not load. */
     const QString &sceneNote() const { return m_sceneNote; }
     /** The events shown: the recording's or the re-routing's. */

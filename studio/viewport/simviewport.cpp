@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "simviewport.h"
+#include "colors.h"
 
 #include "keyboardteleop.h"
 #include "scenefeed.h"
@@ -35,7 +36,7 @@ constexpr double PanRange = 1.5;
 // MuJoCo's default vertical field of view (degrees): a pan moves with the mouse.
 constexpr double FieldOfView = 45.0;
 
-const QColor Background(0x2b, 0x2f, 0x33);
+const QColor &Background = colors::SceneGround;
 
 double clampAngle(double degrees)
 {
@@ -270,7 +271,7 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     if (!hasPicture) {
         font.setPointSizeF(font.pointSizeF() * 1.3);
         painter.setFont(font);
-        painter.setPen(QColor(0xe8, 0xe8, 0xe8));
+        painter.setPen(colors::OverlayCaption);
         const QString text = m_world                   ? tr("Waiting for the simulation…")
                              : m_placeholder.isEmpty() ? tr("No scene loaded")
                                                        : m_placeholder;
@@ -316,15 +317,15 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     QPainterPath path;
     path.addRoundedRect(box, pad / 2.0, pad / 2.0);
     // Dark grey with a light rim: readable over the floor and over the black sky alike.
-    painter.fillPath(path, QColor(0x20, 0x22, 0x25, 200));
-    painter.setPen(QPen(QColor(255, 255, 255, 90), 1));
+    painter.fillPath(path, colors::OverlayGround);
+    painter.setPen(QPen(colors::veil(90), 1));
     painter.drawPath(path);
     painter.setPen(Qt::white);
     painter.setFont(bold);
     int y = int(box.top()) + pad * 3 / 4 + boldMetrics.ascent();
     painter.drawText(int(box.left()) + pad, y, title);
     painter.setFont(font);
-    painter.setPen(QColor(0xdd, 0xdd, 0xdd));
+    painter.setPen(colors::OverlayText);
     y += boldMetrics.descent();
     for (const QString &line : lines) {
         y += metrics.height();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "waveformdesigner.h"
+#include "colors.h"
 
 #include "devicemanager.h"
 #include "hapticconverter.h"
@@ -58,12 +59,12 @@ QIcon lockIcon()
     pixmap.fill(Qt::transparent);
     QPainter painter(&pixmap);
     painter.setRenderHint(QPainter::Antialiasing);
-    painter.setPen(QPen(QColor(0x55, 0x55, 0x55), 1.6));
+    painter.setPen(QPen(colors::MutedText, 1.6));
     painter.drawArc(QRectF(4.5, 1.5, 7, 8), 0, 180 * 16);
     painter.drawLine(QPointF(4.5, 5.5), QPointF(4.5, 7.5));
     painter.drawLine(QPointF(11.5, 5.5), QPointF(11.5, 7.5));
     painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(0x55, 0x55, 0x55));
+    painter.setBrush(colors::MutedText);
     painter.drawRoundedRect(QRectF(2.5, 7, 11, 8), 1.5, 1.5);
     return QIcon(pixmap);
 }
@@ -131,8 +132,9 @@ WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
     m_banner = new QLabel(this);
     m_banner->setObjectName(QStringLiteral("banner"));
     m_banner->setWordWrap(true);
-    m_banner->setStyleSheet(QStringLiteral("QLabel { background: #E3F0FA; border: 1px solid "
-                                           "#0072B2; padding: 4px; }"));
+    m_banner->setStyleSheet(
+        QStringLiteral("QLabel { background: %1; border: 1px solid %2; padding: 4px; }")
+            .arg(colors::css(colors::ConfirmationWash), colors::css(colors::Confirmation)));
 
     auto *top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(createLibrary());
@@ -419,7 +421,8 @@ QWidget *WaveformDesigner::createControls()
     m_beginButton->setObjectName(QStringLiteral("auditionBegin"));
     m_beginButton->setToolTip(tr("Begin the pattern on the device now (again: restart it)"));
     m_beginButton->setStyleSheet(
-        QStringLiteral("QPushButton { color: #0072B2; font-weight: bold; }"));
+        QStringLiteral("QPushButton { color: %1; font-weight: bold; }")
+            .arg(colors::css(colors::Confirmation)));
     m_endButton = new QPushButton(tr("End"), box);
     m_endButton->setObjectName(QStringLiteral("auditionEnd"));
     m_endButton->setToolTip(tr("End the pattern: its release plays"));
@@ -427,9 +430,10 @@ QWidget *WaveformDesigner::createControls()
     m_stopButton->setObjectName(QStringLiteral("auditionStop"));
     m_stopButton->setToolTip(tr("Send the device to zero now (Esc stops everything)"));
     m_stopButton->setStyleSheet(
-        QStringLiteral("QPushButton { background: #D55E00; color: white; font-weight: bold; "
+        QStringLiteral("QPushButton { background: %1; color: white; font-weight: bold; "
                        "border-radius: 3px; padding: 3px 10px; }"
-                       "QPushButton:disabled { background: #E8B79A; }"));
+                       "QPushButton:disabled { background: %2; }")
+            .arg(colors::css(colors::Error), colors::css(colors::ErrorPale)));
     m_endButton->setEnabled(false);
     m_stopButton->setEnabled(false);
     connect(m_beginButton, &QPushButton::clicked, this, &WaveformDesigner::beginAudition);
@@ -844,11 +848,13 @@ void WaveformDesigner::applyJsonText()
     LoadError error;
     if (!parseJsonObject(m_jsonText->toPlainText().toUtf8(), file, &json, &error) ||
         !Pattern::fromJson(json, file, &error)) {
-        m_jsonError->setText(QStringLiteral("<span style='color:#D55E00'>%1</span>")
-                                 .arg(error.toString().toHtmlEscaped()));
+        m_jsonError->setText(QStringLiteral("<span style='color:%1'>%2</span>")
+                                 .arg(colors::css(colors::Error),
+                                      error.toString().toHtmlEscaped()));
         return;
     }
-    m_jsonError->setText(tr("<span style='color:#009E73'>Valid pattern</span>"));
+    m_jsonError->setText(QStringLiteral("<span style='color:%1'>%2</span>")
+                             .arg(colors::css(colors::Ok), tr("Valid pattern")));
     m_document->setJson(json, tr("Edit JSON"));
 }
 

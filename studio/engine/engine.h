@@ -5,7 +5,9 @@
 #include "liverig.h"
 #include "runfeed.h"
 #include "runhistory.h"
+#include "sessionreplay.h"
 #include "simrun.h"
+#include "simulationsource.h"
 #include "sinklist.h"
 
 #include <QObject>
@@ -20,25 +22,24 @@ namespace semhap {
 
 class DeviceManager;
 class DeviceOutputSink;
-class ManualOperator;
-class SceneFeed;
 class SessionWriter;
 
 /**
- * The studio's running session: a SimRun stepped on its own pipeline thread at a chosen
- * speed of real time — or a live rig's frames received on that thread as they come — its
- * streams handed to the GUI through a RunFeed and drained into the RunHistory at display
- * rate, its device frames sent to the DeviceManager's bound transports. The pipeline never
- * waits for the GUI; the GUI waits for the pipeline only to change the run's set-up (load,
- * reset, rebind), and then only until the current batch of ticks ends.
+ * The studio's running session, without widgets: one RunSource at a time — a simulation
+ * stepped on the pipeline thread at a chosen speed of real time, a live rig's frames
+ * received on that thread as they come, or a recorded session scrubbed from the GUI — its
+ * streams in the RunHistory every panel reads, its device frames sent to the DeviceManager's
+ * bound transports. The pipeline never waits for the GUI; the GUI waits for the pipeline only
+ * to change the run's set-up (load, reset, rebind), and then only until the current batch of
+ * ticks ends.
  */
-class SimEngine : public QObject
+class Engine : public QObject
 {
     Q_OBJECT
 
 public:
-    explicit SimEngine(QObject *parent = nullptr);
-    ~SimEngine() override;
+    explicit Engine(QObject *parent = nullptr);
+    ~Engine() override;
 
     /**
      * Stops the current run and loads `options` (scene, router, seed, operator); devices of
@@ -47,6 +48,13 @@ public:
      */
     bool load(const RunOptions &options, QString *error);
     /**
+     * Opens the recorded session at `path` as the source (File → Open session): the
+     * history shows it from its start, the replay() is scrubbed from the GUI, setRouter()
+     * re-routes it. The run that was there stops; reset() goes back to it. False with a
+     * one-line `error`, keeping what runs.
+     */
+    bool openReplay(const QString &path, QString *error);
+    /**
      * Stops the current run and listens for a live rig's contact frames instead (File →
      * Listen for a live rig): they go through detectors, router and devices like the
      * simulation's, with plots, log and recording. There is no scene; world() is null.
@@ -54,8 +62,14 @@ public:
      * `error` (the port is taken, the router does not load), keeping the previous run.
      */
     bool listen(const LiveRigOptions &options, QString *error);
-    /** The source is a live rig, not the simulation. */
-    bool isLive() const { return m_rig != nullptr; }
+    /** What runs now; null before the first load. */
+    RunSource *source() const { return m_source; }
+    /** The source is a live rig. */
+    bool isLive() const { return m_source && m_source->kind() == RunSource::Kind::Rig; }
+    /** The source is a recorded session. */
+    bool isReplaying() const { return m_source == &m_replay; }
+    /** The recorded session, scrubbed by the replay bar (open while isReplaying()). */
+    SessionReplay &replay() { return m_replay; }
     /** The live rig's counters (zero when not live). */
     LiveRig::Stats liveStats() const;
     /** The live rig's latest rejected datagram and how many so far (empty when not live). */
@@ -68,39 +82,44 @@ public:
      * Swaps `graph` in as the running router (the router editor's Apply) without stopping
      * the run: compiled here on the caller's thread, swapped in at a tick boundary. The old
      * router's messages end, its devices are sent to zero; the new router's devices keep
-     * matching bindings (else `virtual:NAME`); the history keeps what it has seen. False
-     * with the compiler's `error`, keeping the router that runs.
+     * matching bindings (else `virtual:NAME`); the history keeps what it has seen. A replay
+     * is re-routed instead (SessionReplay::reroute). False with the compiler's `error`,
+     * keeping the router that runs.
      */
     bool setRouter(const RouterGraph &graph, QString *error);
-    /** The graph of the router that runs (valid while loaded). */
+    /** The graph of the router that runs (valid while a simulation or a rig is loaded). */
     const RouterGraph &routerGraph() const;
 
     /**
      * Loads the current options again from the start, with the router last applied; a live
-     * rig starts listening afresh (detectors and history cleared).
+     * rig starts listening afresh (detectors and history cleared); a replay closes and the
+     * simulation or rig it replaced starts again.
      */
     bool reset(QString *error);
     /** The simulation's options; while live, `router` and `overrides` are the rig's. */
     const RunOptions &options() const { return m_options; }
     /** What routers are compiled for, the simulation's and the live rig's alike. */
     RouterContext routerContext() const { return RouterContext{m_options.reactionTime}; }
-    bool isLoaded() const { return m_run != nullptr || m_rig != nullptr; }
+    bool isLoaded() const { return m_source != nullptr; }
 
     void run();
     void pause();
     bool isRunning() const { return m_running.load(); }
-    /** While paused: one display frame's worth of steps (1/60 s of simulated time); not live. */
+    /** While paused: one display frame's worth of steps (1/60 s of simulated time); a simulation only. */
     void step();
 
     /** Simulated seconds per real second (1 = real time). */
     double speed() const { return m_speed.load(); }
     void setSpeed(double speed);
 
-    /** Hands the grippers to the user (ManualOperator) or back to the run's own operator. */
+    /**
+     * Hands the grippers to the user (ManualOperator) or back to the run's own operator; a
+     * simulation only.
+     */
     void setManual(bool manual);
     bool isManual() const { return m_manual.load(); }
-    /** The user's pose-and-grip input; valid while loaded. */
-    ManualOperator *manualOperator() const { return m_manualOperator.get(); }
+    /** The user's pose-and-grip input; null unless a simulation is loaded. */
+    ManualOperator *manualOperator() const;
     /** Each hand's target and grip now, read between two ticks: where a takeover starts. */
     std::array<HandCommand, 2> handCommands();
 
@@ -111,18 +130,16 @@ public:
     void stopAll();
 
     RunHistory &history() { return m_history; }
+    /** The source's scene snapshots the viewport draws; null when it has no scene. */
+    SceneFeed *sceneFeed() const { return m_source ? m_source->sceneFeed() : nullptr; }
     /**
-     * Pauses the run and stops feeding the history, which then shows something else (a
-     * replay); loading or resetting the run feeds it again.
+     * The source's world (a simulation's: read it on the GUI thread only while paused);
+     * null when it has none.
      */
-    void detachHistory();
-    /** The scene snapshots the viewport draws; null until loaded. */
-    SceneFeed *sceneFeed() const { return m_sceneFeed.get(); }
-    /** The loaded world (read it on the GUI thread only while paused); null while live. */
-    const World *world() const;
+    const World *world() const { return m_source ? m_source->world() : nullptr; }
 
-    /** Simulated seconds, or the live rig's latest `t`. */
-    double simTime() const { return m_simTime.load(); }
+    /** Simulated seconds, the live rig's latest `t`, or the replay's time shown. */
+    double simTime() const;
     /** Simulated seconds per wall second over the last second of running. */
     double realtimeFactor() const { return m_realtimeFactor.load(); }
     /** Values the feed dropped because the GUI fell behind. */
@@ -150,7 +167,10 @@ public:
     QString recordingFileName(const QString &name = QString()) const;
 
 signals:
-    void loaded();
+    /** The source is about to be replaced or freed: let go of its world and scene feed. */
+    void sourceAboutToChange();
+    /** A source was loaded, listened to, opened or reset (source() says which). */
+    void sourceChanged();
     void runningChanged(bool running);
     void manualChanged(bool manual);
     /** The run reached its duration. */
@@ -166,26 +186,27 @@ private:
     class StepSink : public RunSink
     {
     public:
-        explicit StepSink(SimEngine &engine) : m_engine(engine) {}
+        explicit StepSink(Engine &engine) : m_engine(engine) {}
         void onContactFrame(const ContactFrame &frame) override;
         void onEvent(const SemanticEvent &event) override;
         void onDeviceFrame(const DeviceFrame &frame) override;
         void onNodeActivity(const NodeActivity &activity) override;
 
     private:
-        SimEngine &m_engine;
+        Engine &m_engine;
     };
 
     void bindRouterDevices(const Player &player, QString *error);
-    /** The hands the loaded scene has; both for a live rig, which may send either. */
-    Hands hands() const;
     std::array<GripperThresholds, 2> shownThresholds();
+    /** The streaming source's pipeline (a simulation's or a rig's). */
     Pipeline &pipeline();
     /** load() without the signal. */
     bool start(const RunOptions &options, QString *error);
     /** listen() without the signal. */
     bool startLive(const LiveRigOptions &options, QString *error);
-    /** Ends the old run before a new one is installed (both are stopped by then). */
+    /** Stops and frees a streaming source before another is installed; a replay stays. */
+    void stopStreaming();
+    /** Ends whatever runs before a new source is installed. */
     void stopSource();
     /** Binds devices, history and metrics to the newly installed run or rig. */
     void install();
@@ -198,17 +219,28 @@ private:
     /** Rebuilds m_outputs after the recorder or the device output changed (setup lock held). */
     void rewire();
     void stepOnce();
+    /**
+     * Pipeline thread: a contact frame of either streaming source, into the recording (with
+     * its arrival time, NaN when simulated) and the feed.
+     */
+    void takeFrame(const ContactFrame &frame, double arrival);
     void drain();
     void recordInput(double t);
 
     RunOptions m_options;
+    /** The rig listened to last: where reset() goes back to after a replay of one. */
+    LiveRigOptions m_rigOptions;
+    /** The streaming source a replay replaced: what reset() starts again. */
+    RunSource::Kind m_resumeKind = RunSource::Kind::Simulation;
     /** The graph setRouter() applied since the last load: what reset() runs again. */
     std::unique_ptr<RouterGraph> m_appliedGraph;
     std::unique_ptr<DeviceManager> m_devices;
-    std::unique_ptr<SimRun> m_run;  ///< the simulation, or
-    std::unique_ptr<LiveRig> m_rig; ///< the live rig
-    std::unique_ptr<ManualOperator> m_manualOperator;
-    std::unique_ptr<SceneFeed> m_sceneFeed;
+    RunHistory m_history;
+    // The source is one of these three (or none).
+    std::unique_ptr<SimulationSource> m_simulation;
+    std::unique_ptr<LiveRig> m_rig;
+    SessionReplay m_replay{m_history};
+    RunSource *m_source = nullptr;
     std::unique_ptr<DeviceOutputSink> m_output;
     RunFeed m_feed;
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
@@ -217,13 +249,11 @@ private:
     SinkList m_outputs;
     double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};
-    RunHistory m_history;
     QTimer m_drainTimer;
     std::thread m_thread;
     std::mutex m_setupMutex; ///< held by the pipeline thread per batch of ticks
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_running{false};
-    bool m_historyAttached = true; ///< GUI thread: the feed goes to the history
     std::atomic<bool> m_manual{false};
     std::atomic<int> m_speedEpoch{0}; ///< bumped on each speed change: the pacing restarts
     int m_generation = 0;             ///< bumped on each load: late metrics are dropped

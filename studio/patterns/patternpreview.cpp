@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "patternpreview.h"
+#include "colors.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
@@ -13,9 +14,9 @@ namespace semhap {
 
 namespace {
 
-const QColor Commanded(0x00, 0x72, 0xB2); // blue
-const QColor Predicted(0xD5, 0x5E, 0x00); // vermillion
-const QColor Marker(0x55, 0x55, 0x55);
+const QColor &Commanded = colors::Confirmation;
+const QColor &Predicted = colors::Error;
+const QColor &Marker = colors::MutedText;
 
 } // namespace
 
@@ -26,8 +27,9 @@ PatternPreview::PatternPreview(QWidget *parent) : QWidget(parent)
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("previewMessage"));
     m_message->setWordWrap(true);
-    m_message->setStyleSheet(QStringLiteral("QLabel { background: #FFF3D6; border: 1px solid "
-                                            "#E69F00; padding: 6px; }"));
+    m_message->setStyleSheet(
+        QStringLiteral("QLabel { background: %1; border: 1px solid %2; padding: 6px; }")
+            .arg(colors::css(colors::ExceptionWash), colors::css(colors::Exception)));
     m_message->hide();
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(QStringLiteral("previewPlot"));
@@ -142,8 +144,8 @@ void PatternPreview::replot(const DeviceModel &model, double releaseAt)
         if (g == 0) {
             auto *legend = new QCPLegend;
             rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-            legend->setBrush(QColor(255, 255, 255, 210));
-            legend->setBorderPen(QPen(QColor(0xAA, 0xAA, 0xAA)));
+            legend->setBrush(colors::veil(210));
+            legend->setBorderPen(QPen(colors::Border));
             legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
             legend->setIconSize(16, 8);
             legend->setMargins(QMargins(4, 1, 4, 1));

@@ -119,11 +119,15 @@ bool SessionReplay::open(const QString &path, QString *error)
     m_shown = m_recorded;
     m_rerouted = false;
     m_reader = std::move(reader);
+    return true;
+}
+
+void SessionReplay::begin()
+{
     loadScene();
     refill(m_start);
     emit opened();
     emit timeChanged(m_time);
-    return true;
 }
 
 qint64 SessionReplay::skippedRows() const

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include "simengine.h"
+#include "engine.h"
 
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
-#include "manualoperator.h"
-#include "scenefeed.h"
 #include "sessionwriter.h"
 
 #include <QCoreApplication>
@@ -39,43 +37,48 @@ double seconds(Clock::duration d)
 
 } // namespace
 
-void SimEngine::StepSink::onContactFrame(const ContactFrame &frame)
+void Engine::StepSink::onContactFrame(const ContactFrame &frame)
 {
-    if (m_engine.m_recorder)
-        m_engine.m_recorder->recordContactFrame(frame, qQNaN());
-    m_engine.m_feed.push(frame);
+    m_engine.takeFrame(frame, qQNaN());
 }
 
-void SimEngine::StepSink::onEvent(const SemanticEvent &event)
+void Engine::takeFrame(const ContactFrame &frame, double arrival)
+{
+    if (m_recorder)
+        m_recorder->recordContactFrame(frame, arrival);
+    m_feed.push(frame);
+}
+
+void Engine::StepSink::onEvent(const SemanticEvent &event)
 {
     m_engine.m_outputs.onEvent(event);
 }
 
-void SimEngine::StepSink::onDeviceFrame(const DeviceFrame &frame)
+void Engine::StepSink::onDeviceFrame(const DeviceFrame &frame)
 {
     m_engine.m_outputs.onDeviceFrame(frame);
 }
 
-void SimEngine::StepSink::onNodeActivity(const NodeActivity &activity)
+void Engine::StepSink::onNodeActivity(const NodeActivity &activity)
 {
     m_engine.m_outputs.onNodeActivity(activity);
 }
 
-void SimEngine::rewire()
+void Engine::rewire()
 {
     // The recording first: it keeps what was sent, then the bands, then the readouts.
     m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
 }
 
-SimEngine::SimEngine(QObject *parent)
+Engine::Engine(QObject *parent)
     : QObject(parent), m_devices(std::make_unique<DeviceManager>())
 {
     m_drainTimer.setInterval(16);
-    connect(&m_drainTimer, &QTimer::timeout, this, &SimEngine::drain);
+    connect(&m_drainTimer, &QTimer::timeout, this, &Engine::drain);
     m_drainTimer.start();
 }
 
-SimEngine::~SimEngine()
+Engine::~Engine()
 {
     stopThread();
     if (m_recorder)
@@ -83,38 +86,58 @@ SimEngine::~SimEngine()
     m_devices->stopAll();
 }
 
-bool SimEngine::load(const RunOptions &options, QString *error)
+bool Engine::load(const RunOptions &options, QString *error)
 {
     if (!start(options, error))
         return false;
-    emit loaded();
+    emit sourceChanged();
     return true;
 }
 
-bool SimEngine::start(const RunOptions &options, QString *error)
+bool Engine::start(const RunOptions &options, QString *error)
 {
     std::unique_ptr<SimRun> run = SimRun::create(options, error);
     if (!run)
         return false;
+    emit sourceAboutToChange();
     stopSource();
-    m_run = std::move(run);
+    m_simulation = std::make_unique<SimulationSource>(std::move(run));
+    m_source = m_simulation.get();
     m_options = options;
-    m_sceneFeed = std::make_unique<SceneFeed>(m_run->world());
     install();
     startThread();
     return true;
 }
 
-bool SimEngine::listen(const LiveRigOptions &options, QString *error)
+bool Engine::openReplay(const QString &path, QString *error)
+{
+    if (!m_replay.open(path, error))
+        return false;
+    emit sourceAboutToChange();
+    if (!isReplaying()) {
+        m_resumeKind = m_source ? m_source->kind() : RunSource::Kind::Simulation;
+        stopStreaming();
+    }
+    // Whatever the run sent last goes before the replay takes the history.
+    m_feed.discard();
+    m_source = &m_replay;
+    if (m_manual.exchange(false))
+        emit manualChanged(false);
+    m_replay.begin();
+    emit sourceChanged();
+    return true;
+}
+
+bool Engine::listen(const LiveRigOptions &options, QString *error)
 {
     const int generation = m_generation;
     const bool listening = startLive(options, error);
     if (listening || m_generation != generation)
-        emit loaded(); // when the rig could not reopen its port, the simulation came back
+        emit sourceChanged(); // when the rig could not reopen its port, the simulation came back
     return listening;
 }
 
-bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
+bool Engine::startLive(const LiveRigOptions &options, QString *error)
 {
     LoadError loadError;
     std::unique_ptr<Router> router =
@@ -126,8 +149,10 @@ bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
     // A rig on the same port (a reset) has to let go of it before the new one can open it.
     const bool samePort = m_rig && options.port != 0 && options.port == m_rig->stats().port &&
                           options.address == m_rig->options().address;
-    if (samePort)
+    if (samePort) {
+        emit sourceAboutToChange();
         stopSource();
+    }
 
     // The socket belongs to the thread that reads it, so the new pipeline thread opens it;
     // it starts reading only once the old run has stopped and the new one is installed, and
@@ -157,8 +182,11 @@ bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
         }
         return false;
     }
+    emit sourceAboutToChange();
     stopSource();
     m_rig = std::move(rig);
+    m_source = m_rig.get();
+    m_rigOptions = options;
     m_options.router = options.router;
     m_options.overrides = options.overrides;
     install();
@@ -168,7 +196,7 @@ bool SimEngine::startLive(const LiveRigOptions &options, QString *error)
     return true;
 }
 
-void SimEngine::stopSource()
+void Engine::stopStreaming()
 {
     stopThread();
     stopRecording();
@@ -176,12 +204,21 @@ void SimEngine::stopSource()
         emit runningChanged(false);
     m_output.reset();
     rewire();
-    m_sceneFeed.reset();
-    m_run.reset();
+    m_source = isReplaying() ? m_source : nullptr;
+    m_simulation.reset();
     m_rig.reset();
 }
 
-void SimEngine::install()
+void Engine::stopSource()
+{
+    stopStreaming();
+    if (isReplaying()) {
+        m_source = nullptr;
+        m_replay.close();
+    }
+}
+
+void Engine::install()
 {
     ++m_generation;
     m_appliedGraph.reset();
@@ -190,39 +227,47 @@ void SimEngine::install()
     bindRouterDevices(player, &bindError);
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
-    m_manualOperator = std::make_unique<ManualOperator>();
     if (m_manual.exchange(false))
         emit manualChanged(false);
-    m_simTime = m_run ? m_run->time() : 0.0;
+    m_simTime = m_simulation ? m_simulation->run().time() : 0.0;
     m_realtimeFactor = 0.0;
     m_nextMetrics = 0.0;
     m_pendingSteps = 0;
 
-    drain(); // whatever the old run left in the feed goes before the new history starts
-    m_historyAttached = true;
-    m_history.start(liveDevicesOf(pipeline().router(), hands()), shownThresholds(),
+    m_feed.discard(); // whatever the old run left in the feed is not the new run's
+    m_history.start(liveDevicesOf(pipeline().router(), m_source->hands()), shownThresholds(),
                     pipeline().router().nodeIds());
     // A live rig has no task to count.
-    m_history.setMetrics(m_run ? m_run->metrics() : QJsonObject());
+    m_history.setMetrics(m_simulation ? m_simulation->run().metrics() : QJsonObject());
 }
 
-Pipeline &SimEngine::pipeline()
+Pipeline &Engine::pipeline()
 {
-    return m_run ? m_run->pipeline() : m_rig->pipeline();
+    return *m_source->pipeline();
 }
 
-LiveRig::Stats SimEngine::liveStats() const
+double Engine::simTime() const
+{
+    return isReplaying() ? m_replay.time() : m_simTime.load();
+}
+
+ManualOperator *Engine::manualOperator() const
+{
+    return m_simulation ? &m_simulation->manualOperator() : nullptr;
+}
+
+LiveRig::Stats Engine::liveStats() const
 {
     return m_rig ? m_rig->stats() : LiveRig::Stats();
 }
 
-QString SimEngine::liveRejection(quint64 *count) const
+QString Engine::liveRejection(quint64 *count) const
 {
     *count = 0;
     return m_rig ? m_rig->lastRejection(count) : QString();
 }
 
-LiveRigOptions SimEngine::liveOptions() const
+LiveRigOptions Engine::liveOptions() const
 {
     if (!m_rig)
         return LiveRigOptions();
@@ -231,12 +276,12 @@ LiveRigOptions SimEngine::liveOptions() const
     return options;
 }
 
-QString SimEngine::liveUri() const
+QString Engine::liveUri() const
 {
     return m_rig ? m_rig->uri() : QString();
 }
 
-void SimEngine::bindRouterDevices(const Player &player, QString *error)
+void Engine::bindRouterDevices(const Player &player, QString *error)
 {
     // The router's devices keep a band the user bound to them when the model still fits;
     // the others play on virtual devices, which show in the studio like real ones.
@@ -253,12 +298,14 @@ void SimEngine::bindRouterDevices(const Player &player, QString *error)
     }
 }
 
-bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
+bool Engine::setRouter(const RouterGraph &graph, QString *error)
 {
     if (!isLoaded()) {
         *error = tr("nothing is loaded");
         return false;
     }
+    if (isReplaying())
+        return m_replay.reroute(graph, error);
     LoadError loadError;
     std::unique_ptr<SessionWriter> recording;
     std::unique_ptr<Router> router = Router::compile(graph, &loadError, routerContext());
@@ -271,8 +318,8 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         // The old router's devices fall silent now; a device the new router keeps goes on
         // with the new router's frames from the next tick.
         silenceDevices();
-        if (m_run)
-            m_run->setRouter(std::move(router), m_sink);
+        if (m_simulation)
+            m_simulation->run().setRouter(std::move(router), m_sink);
         else
             m_rig->setRouter(std::move(router), m_sink);
         // The old router's closing events went into the recording; the new router is
@@ -283,7 +330,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         QString bindError;
         bindRouterDevices(player, &bindError);
         m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
-    rewire();
+        rewire();
         // What the old router sent is read with its numbering, before the history switches;
         // the feed is drained on this thread only, so nothing newer slips in before that.
         m_feed.drainInto(m_history);
@@ -293,7 +340,7 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
         recording->finish();
         emit recordingChanged(false);
     }
-    m_history.setRouter(liveDevicesOf(pipeline().router(), hands()), shownThresholds(),
+    m_history.setRouter(liveDevicesOf(pipeline().router(), m_source->hands()), shownThresholds(),
                         pipeline().router().nodeIds());
     m_appliedGraph = std::make_unique<RouterGraph>(graph);
     // A graph from a file or preset is named by it; an untitled one runs over the last.
@@ -304,66 +351,58 @@ bool SimEngine::setRouter(const RouterGraph &graph, QString *error)
     return true;
 }
 
-const RouterGraph &SimEngine::routerGraph() const
+const RouterGraph &Engine::routerGraph() const
 {
-    return m_run ? m_run->pipeline().router().graph() : m_rig->pipeline().router().graph();
+    return m_source->pipeline()->router().graph();
 }
 
-Hands SimEngine::hands() const
+std::array<GripperThresholds, 2> Engine::shownThresholds()
 {
-    if (!m_run)
-        return {true, true};
-    const World &world = m_run->world();
-    return {world.hasGripper(Gripper::Left), world.hasGripper(Gripper::Right)};
+    return thresholdsOf(pipeline().router(), m_source->hands());
 }
 
-std::array<GripperThresholds, 2> SimEngine::shownThresholds()
-{
-    return thresholdsOf(pipeline().router(), hands());
-}
-
-bool SimEngine::reset(QString *error)
+bool Engine::reset(QString *error)
 {
     const bool wasRunning = isRunning();
+    const RunSource::Kind kind = isReplaying() ? m_resumeKind : m_source->kind();
+    const LiveRigOptions rig = isLive() ? liveOptions() : m_rigOptions;
     std::unique_ptr<RouterGraph> applied = std::move(m_appliedGraph);
-    const bool started = m_rig ? startLive(liveOptions(), error) : start(m_options, error);
+    const bool started =
+        kind == RunSource::Kind::Rig ? startLive(rig, error) : start(m_options, error);
     if (!started)
         return false;
     if (applied && !setRouter(*applied, error))
         return false;
-    emit loaded();
+    emit sourceChanged();
     if (wasRunning)
         run();
     return true;
 }
 
-const World *SimEngine::world() const
+void Engine::run()
 {
-    return m_run ? &m_run->world() : nullptr;
-}
-
-void SimEngine::run()
-{
-    if (!isLoaded() || (m_run && m_run->isDone()) || m_running.exchange(true))
+    if (!isLoaded() || !m_source->isStreaming() ||
+        (m_simulation && m_simulation->run().isDone()) || m_running.exchange(true))
         return;
     emit runningChanged(true);
 }
 
-void SimEngine::pause()
+void Engine::pause()
 {
     if (m_running.exchange(false))
         emit runningChanged(false);
 }
 
-void SimEngine::step()
+void Engine::step()
 {
-    if (!m_run || isRunning())
+    if (!m_simulation || isRunning())
         return;
-    const int steps = int(std::lround(1.0 / StepRate / m_run->world().timestep()));
+    const int steps =
+        int(std::lround(1.0 / StepRate / m_simulation->run().world().timestep()));
     m_pendingSteps.fetch_add(std::max(1, steps));
 }
 
-void SimEngine::setSpeed(double speed)
+void Engine::setSpeed(double speed)
 {
     speed = std::clamp(speed, 0.01, 100.0);
     if (speed == m_speed.load())
@@ -373,16 +412,17 @@ void SimEngine::setSpeed(double speed)
     emit speedChanged(speed);
 }
 
-void SimEngine::setManual(bool manual)
+void Engine::setManual(bool manual)
 {
+    manual = manual && m_simulation;
     if (m_manual.exchange(manual) != manual)
         emit manualChanged(manual);
 }
 
-bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *error)
+bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
 {
-    if (!isLoaded()) {
-        *error = tr("nothing is loaded");
+    if (!isLoaded() || !m_source->pipeline()) {
+        *error = tr("nothing runs that sends to devices");
         return false;
     }
     const Player &player = pipeline().router().player();
@@ -401,43 +441,35 @@ bool SimEngine::bindDevice(const QString &name, const QString &uri, QString *err
     return true;
 }
 
-std::array<HandCommand, 2> SimEngine::handCommands()
+std::array<HandCommand, 2> Engine::handCommands()
 {
-    if (!m_run)
+    if (!m_simulation)
         return {};
     std::lock_guard<std::mutex> lock(m_setupMutex);
-    return currentCommands(m_run->world());
+    return currentCommands(m_simulation->run().world());
 }
 
-void SimEngine::stopAll()
+void Engine::stopAll()
 {
     pause();
     m_devices->stopAll();
 }
 
-void SimEngine::drain()
+void Engine::drain()
 {
-    if (!m_historyAttached) {
-        m_feed.discard();
-        return;
-    }
+    if (!m_source || !m_source->isStreaming())
+        return; // a replay fills the history itself
     m_feed.drainInto(m_history);
     m_history.commit();
 }
 
-void SimEngine::detachHistory()
-{
-    pause();
-    m_historyAttached = false;
-}
-
-void SimEngine::startThread()
+void Engine::startThread()
 {
     m_quit = false;
     m_thread = std::thread([this] { loop(); });
 }
 
-void SimEngine::stopThread()
+void Engine::stopThread()
 {
     if (!m_thread.joinable())
         return;
@@ -445,11 +477,12 @@ void SimEngine::stopThread()
     m_thread.join();
 }
 
-void SimEngine::loop()
+void Engine::loop()
 {
-    const double dt = m_run->world().timestep();
+    SimRun &run = m_simulation->run();
+    const double dt = run.world().timestep();
     Clock::time_point anchorWall = Clock::now();
-    double anchorSim = m_run->time();
+    double anchorSim = run.time();
     int epoch = m_speedEpoch.load();
     bool wasRunning = false;
     Clock::time_point rateWall = anchorWall;
@@ -463,15 +496,15 @@ void SimEngine::loop()
             if (!wasRunning || epoch != m_speedEpoch.load()) {
                 epoch = m_speedEpoch.load();
                 anchorWall = now;
-                anchorSim = m_run->time();
+                anchorSim = run.time();
             }
             const double target = anchorSim + m_speed.load() * seconds(now - anchorWall);
-            steps = std::lround(std::floor((target - m_run->time()) / dt));
+            steps = std::lround(std::floor((target - run.time()) / dt));
             if (double(steps) * dt > MaxLag) {
                 // Slower than asked: run flat out from here instead of chasing the past.
                 steps = std::lround(MaxLag / dt);
                 anchorWall = now;
-                anchorSim = m_run->time() + double(steps) * dt;
+                anchorSim = run.time() + double(steps) * dt;
             }
         } else {
             steps = m_pendingSteps.exchange(0);
@@ -480,12 +513,12 @@ void SimEngine::loop()
 
         if (steps > 0) {
             std::lock_guard<std::mutex> lock(m_setupMutex);
-            for (long k = 0; k < steps && !m_run->isDone(); ++k)
+            for (long k = 0; k < steps && !run.isDone(); ++k)
                 stepOnce();
         } else {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
-        if (m_run->isDone() && m_running.exchange(false)) {
+        if (run.isDone() && m_running.exchange(false)) {
             QMetaObject::invokeMethod(
                 this,
                 [this] {
@@ -497,22 +530,20 @@ void SimEngine::loop()
 
         const double wall = seconds(now - rateWall);
         if (wall >= 0.5) {
-            m_realtimeFactor = running ? (m_run->time() - rateSim) / wall : 0.0;
+            m_realtimeFactor = running ? (run.time() - rateSim) / wall : 0.0;
             rateWall = now;
-            rateSim = m_run->time();
+            rateSim = run.time();
         }
     }
 }
 
-void SimEngine::listenLoop()
+void Engine::listenLoop()
 {
     /** How long the thread sleeps on the socket before it looks at m_quit again (ms). */
     constexpr int WaitSlice = 5;
     const LiveRig::FrameHandler process = [this](const ContactFrame &frame, double arrival) {
-        if (m_recorder)
-            m_recorder->recordContactFrame(frame, arrival);
-        m_feed.push(frame);
-        m_rig->pipeline().process(frame, m_sink);
+        takeFrame(frame, arrival);
+        m_rig->pipeline()->process(frame, m_sink);
         m_simTime.store(frame.t, std::memory_order_relaxed);
     };
     while (!m_quit.load()) {
@@ -527,7 +558,7 @@ void SimEngine::listenLoop()
     }
 }
 
-void SimEngine::silenceDevices()
+void Engine::silenceDevices()
 {
     const Player &player = pipeline().router().player();
     for (int d = 0; d < player.deviceCount(); ++d) {
@@ -542,44 +573,46 @@ void SimEngine::silenceDevices()
     }
 }
 
-void SimEngine::stepOnce()
+void Engine::stepOnce()
 {
+    SimRun &run = m_simulation->run();
     const bool manual = m_manual.load(std::memory_order_relaxed);
-    m_run->setOperatorOverride(manual ? m_manualOperator.get() : nullptr);
-    m_run->step(m_sink);
-    const double t = m_run->time();
+    run.setOperatorOverride(manual ? &m_simulation->manualOperator() : nullptr);
+    run.step(m_sink);
+    const double t = run.time();
     if (manual && m_recorder && t >= m_nextInput) {
         m_nextInput = t + InputPeriod;
         recordInput(t);
     }
     if (m_recorder)
-        m_run->recordSceneState(*m_recorder);
+        run.recordSceneState(*m_recorder);
     m_simTime.store(t, std::memory_order_relaxed);
-    if (m_sceneFeed->wantsCapture()) {
-        const Perception &perception = m_run->perception();
+    SceneFeed &sceneFeed = *m_simulation->sceneFeed();
+    if (sceneFeed.wantsCapture()) {
+        const Perception &perception = run.perception();
         const Feeling left = perception.feeling(Gripper::Left);
         const Feeling right = perception.feeling(Gripper::Right);
-        m_sceneFeed->capture(m_run->world(), {left.shownConfirmation, left.shownWarning,
+        sceneFeed.capture(run.world(), {left.shownConfirmation, left.shownWarning,
                                               right.shownConfirmation, right.shownWarning});
     }
     if (t >= m_nextMetrics) {
         m_nextMetrics = t + MetricsPeriod;
-        const QJsonObject metrics = m_run->metrics();
+        const QJsonObject metrics = run.metrics();
         const int generation = m_generation;
         QMetaObject::invokeMethod(
             this,
             [this, metrics, generation] {
-                if (generation == m_generation && m_historyAttached)
+                if (generation == m_generation)
                     m_history.setMetrics(metrics);
             },
             Qt::QueuedConnection);
     }
 }
 
-bool SimEngine::startRecording(const QString &path, const QString &notes, QString *error)
+bool Engine::startRecording(const QString &path, const QString &notes, QString *error)
 {
-    if (!isLoaded()) {
-        *error = tr("nothing is loaded");
+    if (!isLoaded() || !m_source->isStreaming()) {
+        *error = tr("nothing runs that could be recorded");
         return false;
     }
     stopRecording();
@@ -591,7 +624,7 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
         info.routerContext = routerContext();
         info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
     } else {
-        info = m_run->sessionInfo();
+        info = m_simulation->run().sessionInfo();
         // Applied from the editor: the graph itself is in the session, its name is not.
         info.routerSource = m_options.router;
         info.overrides = m_options.overrides;
@@ -608,7 +641,8 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
         recorder = SessionWriter::create(path, info, pipeline().router(), error);
         if (!recorder)
             return false;
-        recorder->setActorTable(m_run ? &m_run->world().actors() : &m_rig->actors());
+        recorder->setActorTable(m_simulation ? &m_simulation->run().world().actors()
+                                             : &m_rig->actors());
         m_recorder = std::move(recorder);
         rewire();
         m_nextInput = 0.0;
@@ -617,7 +651,7 @@ bool SimEngine::startRecording(const QString &path, const QString &notes, QStrin
     return true;
 }
 
-void SimEngine::stopRecording()
+void Engine::stopRecording()
 {
     std::unique_ptr<SessionWriter> recorder;
     {
@@ -631,17 +665,17 @@ void SimEngine::stopRecording()
     emit recordingChanged(false);
 }
 
-QString SimEngine::recordingPath() const
+QString Engine::recordingPath() const
 {
     return m_recorder ? m_recorder->path() : QString();
 }
 
-quint64 SimEngine::recordingDropped() const
+quint64 Engine::recordingDropped() const
 {
     return m_recorder ? m_recorder->dropped() : 0;
 }
 
-QString SimEngine::recordingFileName(const QString &name) const
+QString Engine::recordingFileName(const QString &name) const
 {
     const QString time = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
     QString stem = name.simplified().left(80);
@@ -651,15 +685,15 @@ QString SimEngine::recordingFileName(const QString &name) const
         stem[0] = QLatin1Char('_'); // not a hidden file
     if (stem.isEmpty()) {
         const auto base = [](const QString &file) { return QFileInfo(file).completeBaseName(); };
-        stem = (m_rig ? QStringLiteral("live") : base(m_options.scene)) + QLatin1Char('-') +
+        stem = (isLive() ? QStringLiteral("live") : base(m_options.scene)) + QLatin1Char('-') +
                base(m_options.router);
     }
     return QStringLiteral("%1-%2.db").arg(stem, time);
 }
 
-void SimEngine::recordInput(double t)
+void Engine::recordInput(double t)
 {
-    const std::array<HandCommand, 2> commands = currentCommands(m_run->world());
+    const std::array<HandCommand, 2> commands = currentCommands(m_simulation->run().world());
     for (Gripper hand : {Gripper::Left, Gripper::Right}) {
         const HandCommand &command = commands[size_t(hand)];
         if (!command.present)

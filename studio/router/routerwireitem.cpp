@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "routerwireitem.h"
+#include "colors.h"
 
 #include "routernodeitem.h"
 
@@ -81,7 +82,7 @@ void RouterWireItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
         painter->drawPath(path());
     }
     QColor color =
-        m_error.isEmpty() ? RouterNodeItem::portColor(m_type) : QColor(0xD5, 0x5E, 0x00);
+        m_error.isEmpty() ? RouterNodeItem::portColor(m_type) : colors::Error;
     QPen pen(color, isSelected() ? 4.0 : 2.0);
     if (!m_error.isEmpty())
         pen.setStyle(Qt::DashLine);

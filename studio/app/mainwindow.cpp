@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
+#include "colors.h"
 
 #include "devicemanager.h"
 #include "devicespanel.h"
@@ -59,7 +60,7 @@ QIcon recordIcon()
     QPainter painter(&pixmap);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(0xD5, 0x5E, 0x00));
+    painter.setBrush(colors::Error);
     painter.drawEllipse(QRectF(6, 6, 20, 20));
     return QIcon(pixmap);
 }
@@ -85,7 +86,6 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     // The world runs on the engine's thread: a takeover reads it between two ticks.
     m_teleop->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
-    m_replay = new SessionReplay(m_engine.history(), this);
 
     createActions();
     createToolBar();
@@ -169,7 +169,7 @@ void MainWindow::createActions()
     connect(m_runAction, &QAction::triggered, this, &MainWindow::toggleRunning);
     m_stepAction = action(tr("Step"), QStringLiteral("stepAction"), Qt::Key_F6);
     m_stepAction->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
-    connect(m_stepAction, &QAction::triggered, &m_engine, &SimEngine::step);
+    connect(m_stepAction, &QAction::triggered, &m_engine, &Engine::step);
     m_resetAction =
         action(tr("Reset"), QStringLiteral("resetAction"), QKeySequence(Qt::CTRL | Qt::Key_R));
     m_resetAction->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
@@ -206,7 +206,7 @@ void MainWindow::createActions()
     m_teleopAction->setCheckable(true);
     m_teleopAction->setToolTip(tr("Take the grippers over from the scripted operator "
                                   "(Ctrl+T); any key or pose input does it too"));
-    connect(m_teleopAction, &QAction::toggled, &m_engine, &SimEngine::setManual);
+    connect(m_teleopAction, &QAction::toggled, &m_engine, &Engine::setManual);
     m_forcesAction = action(tr("Contact forces"), QStringLiteral("forcesAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_F));
     m_forcesAction->setCheckable(true);
@@ -348,15 +348,16 @@ void MainWindow::createToolBar()
     if (QWidget *button = bar->widgetForAction(m_stopAllAction)) {
         button->setObjectName(QStringLiteral("stopAllButton"));
         button->setStyleSheet(
-            QStringLiteral("QToolButton { background: #D55E00; color: white; font-weight: bold;"
+            QStringLiteral("QToolButton { background: %1; color: white; font-weight: bold;"
                            " border-radius: 4px; padding: 4px 14px; }"
-                           "QToolButton:pressed { background: #A04600; }"));
+                           "QToolButton:pressed { background: %2; }")
+                .arg(colors::css(colors::Error), colors::css(colors::ErrorDark)));
     }
 }
 
 void MainWindow::createReplayBar()
 {
-    m_replayBar = new ReplayBar(*m_replay, this);
+    m_replayBar = new ReplayBar(m_engine.replay(), this);
     m_replayToolBar = new QToolBar(tr("Replay"), this);
     m_replayToolBar->setObjectName(QStringLiteral("replayToolBar"));
     m_replayToolBar->setMovable(false);
@@ -478,7 +479,8 @@ void MainWindow::createStatusBar()
         return l;
     };
     m_recordLabel = label(QStringLiteral("recordLabel"));
-    m_recordLabel->setStyleSheet(QStringLiteral("color: #D55E00; font-weight: bold;"));
+    m_recordLabel->setStyleSheet(
+        QStringLiteral("color: %1; font-weight: bold;").arg(colors::css(colors::Error)));
     m_operatorLabel = label(QStringLiteral("operatorLabel"));
     m_devicesLabel = label(QStringLiteral("devicesLabel"));
     m_timeLabel = label(QStringLiteral("timeLabel"));
@@ -490,36 +492,20 @@ void MainWindow::createStatusBar()
 
 void MainWindow::connectEngine()
 {
-    connect(&m_engine, &SimEngine::loaded, this, [this] {
-        // The viewport lets go of a replay's scene before the replay frees it.
-        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
-        m_replay->close();
-        m_viewport->setCaption(QString());
-        m_viewport->setPlaceholder(
-            m_engine.isLive()
-                ? tr("Live rig on %1\nThe rig draws its own scene.").arg(m_engine.liveUri())
-                : QString());
-        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
-        m_shownRejections = 0;
-        updateMode();
-        m_teleop->setOperator(m_engine.manualOperator());
-        m_teleop->setWorld(m_engine.world());
-        m_poseInput->setOperator(m_engine.manualOperator());
-        m_poseInput->setWorld(m_engine.world());
-        m_devicesPanel->refresh();
-        syncRouterEditor();
-        m_designer->refreshDevices();
-        syncPickers();
-        updateTitle();
-        updateStatus();
+    connect(&m_engine, &Engine::sourceAboutToChange, this, [this] {
+        // Everything that holds the old source's world lets go before the engine frees it.
+        m_viewport->setScene(nullptr, nullptr);
+        m_teleop->setWorld(nullptr);
+        m_poseInput->setWorld(nullptr);
     });
-    connect(&m_engine, &SimEngine::routerChanged, this, [this] {
+    connect(&m_engine, &Engine::sourceChanged, this, &MainWindow::showSource);
+    connect(&m_engine, &Engine::routerChanged, this, [this] {
         m_devicesPanel->refresh();
         syncRouterEditor();
         syncPickers();
         updateTitle();
     });
-    connect(&m_engine, &SimEngine::runningChanged, this, [this](bool running) {
+    connect(&m_engine, &Engine::runningChanged, this, [this](bool running) {
         if (running)
             m_designer->stopAudition(); // the run's frames and an audition never mix
         m_runAction->setChecked(running);
@@ -528,19 +514,17 @@ void MainWindow::connectEngine()
             style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
         updateMode();
     });
-    connect(&m_engine, &SimEngine::manualChanged, this, [this](bool manual) {
+    connect(&m_engine, &Engine::manualChanged, this, [this](bool manual) {
         m_teleopAction->setChecked(manual);
         m_viewport->setManualControl(manual);
         updateStatus();
     });
-    connect(&m_engine, &SimEngine::recordingChanged, this, [this](bool recording) {
+    connect(&m_engine, &Engine::recordingChanged, this, [this](bool recording) {
         m_recordAction->setChecked(recording);
         m_recordAction->setText(recording ? tr("Stop recording") : tr("Record"));
         updateStatus();
     });
-    connect(m_replay, &SessionReplay::closed, this, &MainWindow::updateMode);
-    connect(m_replay, &SessionReplay::opened, this, &MainWindow::updateMode);
-    connect(&m_engine, &SimEngine::finished, this, [this] {
+    connect(&m_engine, &Engine::finished, this, [this] {
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     // Any teleoperation input hands the grippers to the user.
@@ -565,43 +549,62 @@ void MainWindow::toggleRecording()
     }
 }
 
-bool MainWindow::openSession(const QString &path)
+void MainWindow::showSource()
 {
-    m_engine.stopRecording();
-    // The viewport lets go of the scene of a replay already open: opening frees it.
-    m_viewport->setScene(nullptr, nullptr);
-    QString error;
-    const bool opened = m_replay->open(path, &error);
-    if (!opened)
-        showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
-    if (!m_replay->isOpen()) {
-        m_viewport->setScene(m_engine.world(), m_engine.sceneFeed());
-        return false;
+    const RunSource &source = *m_engine.source();
+    m_viewport->setScene(source.world(), source.sceneFeed());
+    switch (source.kind()) {
+    case RunSource::Kind::Simulation:
+        m_viewport->setCaption(QString());
+        m_viewport->setPlaceholder(QString());
+        break;
+    case RunSource::Kind::Rig:
+        m_viewport->setCaption(QString());
+        m_viewport->setPlaceholder(
+            tr("Live rig on %1\nThe rig draws its own scene.").arg(m_engine.liveUri()));
+        break;
+    case RunSource::Kind::Replay:
+        m_viewport->setCaption(tr("Replay"));
+        m_viewport->setPlaceholder(m_engine.replay().sceneNote());
+        break;
     }
-    // The history is the replay's from here: the run's last frames must not mix in.
-    m_engine.detachHistory();
-    m_engine.setManual(false);
-    m_viewport->setScene(m_replay->world(), m_replay->sceneFeed());
-    m_viewport->setPlaceholder(m_replay->sceneNote());
-    m_viewport->setCaption(tr("Replay"));
-    // A replay's bodies go where they were; nobody drives them.
-    m_teleop->setWorld(nullptr);
-    m_poseInput->setWorld(nullptr);
-    setWindowTitle(tr("semhap studio — replay of %1").arg(QFileInfo(m_replay->path()).fileName()));
-    if (m_replay->skippedRows() > 0)
+    // Only a simulation's grippers follow the user; a replay's bodies go where they were.
+    const World *drivable = source.isDrivable() ? source.world() : nullptr;
+    m_teleop->setOperator(m_engine.manualOperator());
+    m_teleop->setWorld(drivable);
+    m_poseInput->setOperator(m_engine.manualOperator());
+    m_poseInput->setWorld(drivable);
+    m_shownRejections = 0;
+    updateMode();
+    m_devicesPanel->refresh();
+    if (source.isStreaming())
+        syncRouterEditor(); // a replay is re-routed through the editor's graph: keep it
+    m_designer->refreshDevices();
+    syncPickers();
+    updateTitle();
+    updateStatus();
+    const qint64 skipped = m_engine.isReplaying() ? m_engine.replay().skippedRows() : 0;
+    if (skipped > 0)
         statusBar()->showMessage(tr("%n row(s) of the session break the stream rules and were "
                                     "skipped (semhap replay lists them)",
-                                    nullptr,
-                                    int(std::min<qint64>(m_replay->skippedRows(), INT_MAX))),
+                                    nullptr, int(std::min<qint64>(skipped, INT_MAX))),
                                  15000);
-    return opened;
+}
+
+bool MainWindow::openSession(const QString &path)
+{
+    QString error;
+    if (m_engine.openReplay(path, &error))
+        return true;
+    showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
+    return false;
 }
 
 void MainWindow::closeReplay()
 {
-    if (!m_replay->isOpen())
+    if (!m_engine.isReplaying())
         return;
-    // Loading the run again restarts the history and brings the scene back.
+    // The run the replay replaced starts again, with its scene and a fresh history.
     QString error;
     if (!m_engine.reset(&error))
         showError(tr("Could not reset the run"), error);
@@ -610,14 +613,14 @@ void MainWindow::closeReplay()
 void MainWindow::rerouteReplay()
 {
     QString error;
-    if (!m_replay->reroute(m_routerEditor->graph(), &error))
+    if (!m_engine.setRouter(m_routerEditor->graph(), &error))
         showError(tr("Could not re-route the session"), error);
 }
 
 void MainWindow::updateMode()
 {
-    const bool replaying = m_replay->isOpen();
-    const bool simulating = !replaying && !m_engine.isLive();
+    const bool replaying = m_engine.isReplaying();
+    const bool simulating = m_engine.source() && m_engine.source()->isDrivable();
     m_replayToolBar->setVisible(replaying);
     for (QAction *action : {m_runAction, m_recordAction})
         action->setEnabled(!replaying);
@@ -715,6 +718,11 @@ void MainWindow::syncRouterEditor()
 
 void MainWindow::updateTitle()
 {
+    if (m_engine.isReplaying()) {
+        setWindowTitle(tr("semhap studio — replay of %1")
+                           .arg(QFileInfo(m_engine.replay().path()).fileName()));
+        return;
+    }
     if (m_engine.isLive()) {
         setWindowTitle(
             tr("semhap studio — live rig on %1 · %2")
@@ -734,12 +742,11 @@ void MainWindow::updateStatus()
         m_recordLabel->setText(tr("Recording to %1 (%2 dropped)")
                                    .arg(QFileInfo(m_engine.recordingPath()).fileName())
                                    .arg(m_engine.recordingDropped()));
-    if (m_replay->isOpen()) {
-        m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_replay->time(), 'f', 2)));
+    m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
+    if (m_engine.isReplaying()) {
         m_rateLabel->setText(tr("replay"));
         return;
     }
-    m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
     if (m_engine.isLive()) {
         updateLiveStatus();
         updateDevicesStatus();

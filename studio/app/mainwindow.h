@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "simengine.h"
+#include "engine.h"
 #include "studiooptions.h"
 
 #include <QMainWindow>
@@ -40,7 +40,7 @@ public:
     explicit MainWindow(const StudioOptions &options, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    SimEngine &engine() { return m_engine; }
+    Engine &engine() { return m_engine; }
     SimViewport *viewport() const { return m_viewport; }
     PlotPanel *plots() const { return m_plots; }
     EventLogPanel *eventLog() const { return m_eventLog; }
@@ -53,7 +53,7 @@ public:
     QComboBox *speedPicker() const { return m_speedPicker; }
     QLineEdit *notesEdit() const { return m_notesEdit; }
     QLineEdit *sessionNameEdit() const { return m_sessionNameEdit; }
-    SessionReplay *replay() const { return m_replay; }
+    SessionReplay *replay() { return &m_engine.replay(); }
     ReplayBar *replayBar() const { return m_replayBar; }
 
     /** Loads a run (scene, router, ...) and shows what went wrong, if anything. */
@@ -86,6 +86,8 @@ private:
     void createStatusBar();
     void createReplayBar();
     void connectEngine();
+    /** Shows what the engine's new source has: its scene, what can be done with it. */
+    void showSource();
     void applyDefaultSizes();
     void restoreLayout();
     void resetLayout();
@@ -110,7 +112,7 @@ private:
     void switchRouter(const QString &router);
 
     StudioOptions m_options;
-    SimEngine m_engine;
+    Engine m_engine;
     SimViewport *m_viewport = nullptr;
     KeyboardTeleop *m_teleop = nullptr;
     PoseInput *m_poseInput = nullptr;
@@ -125,7 +127,6 @@ private:
     QComboBox *m_speedPicker = nullptr;
     QLineEdit *m_notesEdit = nullptr;
     QLineEdit *m_sessionNameEdit = nullptr;
-    SessionReplay *m_replay = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QToolBar *m_replayToolBar = nullptr;
     QLabel *m_recordLabel = nullptr;

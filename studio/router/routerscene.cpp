@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "routerscene.h"
+#include "colors.h"
 
 #include "patternlibrary.h"
 #include "routerwireitem.h"
@@ -59,18 +60,11 @@ QString summaryOf(const RouterNode &node)
     return parts.join(QStringLiteral(" · "));
 }
 
-/** The colour of a message's category: confirmation blue, exception orange. */
-QColor categoryColor(Category category)
-{
-    return category == Category::Confirmation ? QColor(0x00, 0x72, 0xB2)
-                                              : QColor(0xE6, 0x9F, 0x00);
-}
-
 } // namespace
 
 RouterScene::RouterScene(QObject *parent) : QGraphicsScene(parent)
 {
-    setBackgroundBrush(QColor(0xF2, 0xF2, 0xF2));
+    setBackgroundBrush(colors::Canvas);
     m_fadeTimer.setInterval(33);
     connect(&m_fadeTimer, &QTimer::timeout, this, &RouterScene::fade);
 }
@@ -459,7 +453,7 @@ void RouterScene::showActivity(const QString &node, const NodeActivity &activity
     if (!flash || !activity.isActive() || (was.isActive() && was.messages == activity.messages))
         return; // nothing new began passing: the wires keep their glow
     const QColor color =
-        categoryColor(activity.exception ? Category::Exception : Category::Confirmation);
+        colors::category(activity.exception ? Category::Exception : Category::Confirmation);
     for (size_t j = 0; j < m_graph.links.size(); ++j) {
         const RouterLink &link = m_graph.links[j];
         const bool in = link.to == node && m_active.value(link.from).isActive();

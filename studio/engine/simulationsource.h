@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "manualoperator.h"
+#include "runsource.h"
+#include "scenefeed.h"
+#include "simrun.h"
+
+#include <memory>
+
+namespace semhap {
+
+/**
+ * A simulation as the engine's source: the SimRun, the pictures the viewport draws of its
+ * world, and the operator the user drives the grippers through when they take over.
+ */
+class SimulationSource : public RunSource
+{
+public:
+    explicit SimulationSource(std::unique_ptr<SimRun> run);
+
+    Kind kind() const override { return Kind::Simulation; }
+    Pipeline *pipeline() override { return &m_run->pipeline(); }
+    const World *world() const override { return &m_run->world(); }
+    SceneFeed *sceneFeed() const override { return m_sceneFeed.get(); }
+    Hands hands() const override;
+
+    SimRun &run() { return *m_run; }
+    const SimRun &run() const { return *m_run; }
+    ManualOperator &manualOperator() { return m_manualOperator; }
+
+private:
+    std::unique_ptr<SimRun> m_run;
+    std::unique_ptr<SceneFeed> m_sceneFeed;
+    ManualOperator m_manualOperator;
+};
+
+} // namespace semhap
