@@ -166,6 +166,30 @@ QString PatternDocument::remove(const QString &pointer)
     return pointer.section(QLatin1Char('/'), 0, pointer.contains(QLatin1String("/of/")) ? -3 : -2);
 }
 
+bool PatternDocument::canAddPart(const QString &pointer) const
+{
+    return !m_readOnly && pointer.startsWith(QLatin1String("/tracks/"));
+}
+
+bool PatternDocument::canAddInput(const QString &pointer) const
+{
+    const WaveformType *type = waveformType(value(pointer + QStringLiteral("/type")).toString());
+    return !m_readOnly && type && type->field(QStringLiteral("of"));
+}
+
+bool PatternDocument::canRemove(const QString &pointer) const
+{
+    if (m_readOnly)
+        return false;
+    const int depth = int(pointer.count(QLatin1Char('/')));
+    if (depth == 2 && pointer.startsWith(QLatin1String("/tracks/")))
+        return value(QStringLiteral("/tracks")).toArray().size() > 1;
+    if (depth == 3 && pointer.startsWith(QLatin1String("/tracks/")))
+        return true; // an attack, sustain or release
+    const QString holder = pointer.section(QLatin1Char('/'), 0, -2);
+    return holder.endsWith(QLatin1String("/of")) && value(holder).toArray().size() > 1;
+}
+
 QJsonObject PatternDocument::newPattern(const QString &name, const QString &model)
 {
     QJsonObject release = newWaveform(QStringLiteral("ramp"));

@@ -59,6 +59,12 @@ public:
     QString addInput(const QString &pointer);
     /** Removes the node at `pointer`; returns what held it. */
     QString remove(const QString &pointer);
+    /** Whether addPart() can work on `pointer`: it is a track or inside one. */
+    bool canAddPart(const QString &pointer) const;
+    /** Whether addInput() can work on `pointer`: its type takes a list of inputs (`of`). */
+    bool canAddInput(const QString &pointer) const;
+    /** Whether remove() can take `pointer`: a track but the last, a part, a list's input but the last. */
+    bool canRemove(const QString &pointer) const;
     /** The first document of a new pattern `name` on `model`: one track, ramp-hold-release. */
     static QJsonObject newPattern(const QString &name, const QString &model);
 

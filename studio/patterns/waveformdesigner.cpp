@@ -788,17 +788,9 @@ void WaveformDesigner::updateStructureButtons()
     if (m_document->isReadOnly())
         return;
     const QString pointer = m_inspector->target();
-    const QString type = m_document->value(pointer + QStringLiteral("/type")).toString();
-    m_addInput->setEnabled(type == QLatin1String("sum") || type == QLatin1String("product") ||
-                           type == QLatin1String("sequence"));
-    m_addPart->setEnabled(pointer.startsWith(QLatin1String("/tracks/")));
-    const bool isTrack = pointer.count(QLatin1Char('/')) == 2;
-    const int tracks = int(m_document->value(QStringLiteral("/tracks")).toArray().size());
-    const bool inList =
-        pointer.section(QLatin1Char('/'), -2, -2) == QLatin1String("of") &&
-        m_document->value(pointer.section(QLatin1Char('/'), 0, -2)).toArray().size() > 1;
-    const bool isPart = pointer.count(QLatin1Char('/')) == 3;
-    m_remove->setEnabled((isTrack && tracks > 1) || isPart || inList);
+    m_addInput->setEnabled(m_document->canAddInput(pointer));
+    m_addPart->setEnabled(m_document->canAddPart(pointer));
+    m_remove->setEnabled(m_document->canRemove(pointer));
 }
 
 void WaveformDesigner::addTrack()

@@ -12,7 +12,7 @@
 
 namespace semhap {
 
-class RouterScene;
+class RouterDocument;
 
 /** Adds a node (the palette, paste). */
 class AddNodeCommand : public QUndoCommand
@@ -20,12 +20,12 @@ class AddNodeCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    AddNodeCommand(RouterScene *scene, const RouterNode &node, QUndoCommand *parent = nullptr);
+    AddNodeCommand(RouterDocument *document, const RouterNode &node, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     RouterNode m_node;
     int m_index = -1;
 };
@@ -36,13 +36,13 @@ class RemoveCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    RemoveCommand(RouterScene *scene, const QStringList &nodeIds, const std::vector<int> &links,
+    RemoveCommand(RouterDocument *document, const QStringList &nodeIds, const std::vector<int> &links,
                   QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     /** What went, by index in the graph, ascending: put back in this order, it is exact. */
     std::vector<std::pair<int, RouterNode>> m_nodes;
     std::vector<std::pair<int, RouterLink>> m_links;
@@ -54,13 +54,13 @@ class MoveNodesCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    MoveNodesCommand(RouterScene *scene, const QStringList &ids, const QList<QPointF> &from,
+    MoveNodesCommand(RouterDocument *document, const QStringList &ids, const QList<QPointF> &from,
                      const QList<QPointF> &to, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     QStringList m_ids;
     QList<QPointF> m_from;
     QList<QPointF> m_to;
@@ -72,12 +72,12 @@ class ConnectCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    ConnectCommand(RouterScene *scene, const RouterLink &link, QUndoCommand *parent = nullptr);
+    ConnectCommand(RouterDocument *document, const RouterLink &link, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     RouterLink m_link;
     int m_index = -1;
 };
@@ -88,13 +88,13 @@ class SetParamCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    SetParamCommand(RouterScene *scene, const QString &id, const QString &key,
+    SetParamCommand(RouterDocument *document, const QString &id, const QString &key,
                     const QJsonValue &value, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     QString m_id;
     QJsonObject m_before;
     QJsonObject m_after;
@@ -106,13 +106,13 @@ class RenameNodeCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    RenameNodeCommand(RouterScene *scene, const QString &from, const QString &to,
+    RenameNodeCommand(RouterDocument *document, const QString &from, const QString &to,
                       QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    RouterScene *m_scene;
+    RouterDocument *m_document;
     QString m_from;
     QString m_to;
 };

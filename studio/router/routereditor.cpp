@@ -2,10 +2,10 @@
 #include "routereditor.h"
 #include "colors.h"
 
-#include "outputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
+#include "routerdocument.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "runhistory.h"
@@ -118,14 +118,15 @@ QJsonValue parseValue(const QString &text)
 RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("routerEditor"));
-    m_scene = new RouterScene(this);
+    m_document = new RouterDocument(this);
+    m_undo = m_document->undoStack();
+    m_scene = new RouterScene(*m_document, this);
     m_view = new QGraphicsView(m_scene, this);
     m_view->setObjectName(QStringLiteral("routerView"));
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setDragMode(QGraphicsView::RubberBandDrag);
     m_view->setAcceptDrops(true);
     m_view->setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
-    m_undo = new QUndoStack(this);
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("routerStatus"));
@@ -203,7 +204,7 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
     if (QWidget *button = toolbar->widgetForAction(m_applyAction))
         button->setObjectName(QStringLiteral("applyButton"));
 
-    connect(m_scene, &RouterScene::graphChanged, this, &RouterEditor::onGraphChanged);
+    connect(m_document, &RouterDocument::changed, this, &RouterEditor::onGraphChanged);
     connect(m_scene, &QGraphicsScene::selectionChanged, this, &RouterEditor::scheduleInspector);
     connect(m_scene, &RouterScene::connectRequested, this, [this](const RouterLink &link) {
         QString reason;
@@ -217,7 +218,7 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
             });
     connect(m_scene, &RouterScene::nodesMoved, this,
             [this](const QStringList &ids, const QList<QPointF> &from, const QList<QPointF> &to) {
-                m_undo->push(new MoveNodesCommand(m_scene, ids, from, to));
+                m_undo->push(new MoveNodesCommand(m_document, ids, from, to));
             });
     connect(m_scene, &RouterScene::nodeDropped, this,
             [this](const QString &type, const QPointF &pos) { addNode(type, pos); });
@@ -227,7 +228,7 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
                       QPointF(RouterNodeItem::Width / 2, 40);
         const auto occupied = [this](const QPointF &p) {
             for (const RouterNode &node : m_scene->graph().nodes) {
-                if ((RouterScene::nodePos(node) - p).manhattanLength() < 8)
+                if ((RouterDocument::nodePos(node) - p).manhattanLength() < 8)
                     return true;
             }
             return false;
@@ -292,7 +293,8 @@ QList<QAction *> RouterEditor::createActions()
     }
     menu->addSeparator();
     item(menu, tr("Open…"), [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open router"), m_path,
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open router"),
+                                                          m_document->path(),
                                                           tr("semhap routers (*.json)"));
         QString error;
         if (!path.isEmpty() && !openFile(path, &error))
@@ -346,10 +348,9 @@ QList<QAction *> RouterEditor::createActions()
     return {fileAction, undo, redo, arrangeAction, fit};
 }
 
-void RouterEditor::setGraph(const RouterGraph &graph)
+void RouterEditor::setGraph(const RouterGraph &graph, const QString &path)
 {
-    m_scene->setGraph(graph);
-    m_undo->clear();
+    m_document->reset(RouterScene::placed(graph), path);
     m_inspected.clear();
     scheduleInspector();
     fitView();
@@ -358,7 +359,7 @@ void RouterEditor::setGraph(const RouterGraph &graph)
 
 const RouterGraph &RouterEditor::graph() const
 {
-    return m_scene->graph();
+    return m_document->graph();
 }
 
 QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
@@ -366,10 +367,10 @@ QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
     if (!routerNodeType(type))
         return QString();
     RouterNode node;
-    node.id = m_scene->uniqueId(type);
+    node.id = m_document->uniqueId(type);
     node.type = type;
     node.ui = {{QStringLiteral("x"), scenePos.x()}, {QStringLiteral("y"), scenePos.y()}};
-    m_undo->push(new AddNodeCommand(m_scene, node));
+    m_undo->push(new AddNodeCommand(m_document, node));
     m_scene->clearSelection();
     m_scene->nodeItem(node.id)->setSelected(true);
     return node.id;
@@ -381,7 +382,7 @@ bool RouterEditor::connectPorts(const RouterLink &link, QString *reason)
         showStatus(tr("Not connected: %1").arg(*reason), true);
         return false;
     }
-    m_undo->push(new ConnectCommand(m_scene, link));
+    m_undo->push(new ConnectCommand(m_document, link));
     showStatus(tr("Connected %1 to %2").arg(link.from, link.to), false);
     return true;
 }
@@ -394,7 +395,7 @@ void RouterEditor::setParam(const QString &id, const QString &key, const QJsonVa
     const QJsonObject &params = graph().nodes[size_t(index)].params;
     if (params.value(key) == value)
         return;
-    m_undo->push(new SetParamCommand(m_scene, id, key, value));
+    m_undo->push(new SetParamCommand(m_document, id, key, value));
 }
 
 bool RouterEditor::renameNode(const QString &id, const QString &newId, QString *reason)
@@ -410,7 +411,7 @@ bool RouterEditor::renameNode(const QString &id, const QString &newId, QString *
         *reason = tr("there is already a node '%1'").arg(newId);
         return false;
     }
-    m_undo->push(new RenameNodeCommand(m_scene, id, newId));
+    m_undo->push(new RenameNodeCommand(m_document, id, newId));
     return true;
 }
 
@@ -420,7 +421,7 @@ void RouterEditor::deleteSelection()
     const std::vector<int> links = m_scene->selectedLinks();
     if (ids.isEmpty() && links.empty())
         return;
-    m_undo->push(new RemoveCommand(m_scene, ids, links));
+    m_undo->push(new RemoveCommand(m_document, ids, links));
 }
 
 void RouterEditor::copySelection()
@@ -463,18 +464,18 @@ void RouterEditor::paste()
     QHash<QString, QString> ids;
     m_undo->beginMacro(tr("Paste"));
     for (RouterNode node : pasted.nodes) {
-        const QString id = m_scene->uniqueId(node.id);
+        const QString id = m_document->uniqueId(node.id);
         ids.insert(node.id, id);
         node.id = id;
-        const QPointF pos = RouterScene::nodePos(node) + QPointF(40, 40);
+        const QPointF pos = RouterDocument::nodePos(node) + QPointF(40, 40);
         node.ui.insert(QStringLiteral("x"), pos.x());
         node.ui.insert(QStringLiteral("y"), pos.y());
-        m_undo->push(new AddNodeCommand(m_scene, node));
+        m_undo->push(new AddNodeCommand(m_document, node));
     }
     for (RouterLink link : pasted.links) {
         link.from = ids.value(link.from, link.from);
         link.to = ids.value(link.to, link.to);
-        m_undo->push(new ConnectCommand(m_scene, link));
+        m_undo->push(new ConnectCommand(m_document, link));
     }
     m_undo->endMacro();
     m_scene->clearSelection();
@@ -489,8 +490,8 @@ void RouterEditor::arrange()
     QStringList ids;
     QList<QPointF> from;
     QList<QPointF> to;
-    for (const auto &[id, pos] : m_scene->arrangedPositions()) {
-        const QPointF now = RouterScene::nodePos(graph().nodes[size_t(graph().nodeIndex(id))]);
+    for (const auto &[id, pos] : RouterScene::arrangedPositions(graph())) {
+        const QPointF now = RouterDocument::nodePos(graph().nodes[size_t(graph().nodeIndex(id))]);
         if (now != pos) {
             ids.append(id);
             from.append(now);
@@ -499,7 +500,7 @@ void RouterEditor::arrange()
     }
     if (ids.isEmpty())
         return;
-    auto *command = new MoveNodesCommand(m_scene, ids, from, to);
+    auto *command = new MoveNodesCommand(m_document, ids, from, to);
     command->setText(tr("Arrange"));
     m_undo->push(command);
     fitView();
@@ -529,30 +530,15 @@ bool RouterEditor::openFile(const QString &path, QString *error)
         *error = loadError.toString();
         return false;
     }
-    m_path = path;
-    setGraph(graph);
+    setGraph(graph, path);
     showStatus(tr("Opened %1").arg(QDir::toNativeSeparators(path)), false);
     return true;
 }
 
 bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *error)
 {
-    RouterGraph graph = this->graph();
-    // The user's own patterns and models go into the file, each under a name of its own;
-    // built-ins are everywhere. The core decides both (RouterGraph::embedFiles).
-    LoadError embedError;
-    if (selfContained && !graph.embedFiles(&embedError)) {
-        *error = embedError.toString();
+    if (!m_document->save(path, selfContained, error))
         return false;
-    }
-    LoadError failure;
-    if (!OutputFile::write(path, QJsonDocument(graph.toJson()).toJson(QJsonDocument::Indented),
-                           &failure)) {
-        *error = failure.toString();
-        return false;
-    }
-    m_path = path;
-    m_undo->setClean();
     showStatus(tr("Saved %1").arg(QDir::toNativeSeparators(path)), false);
     return true;
 }
@@ -560,7 +546,8 @@ bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *er
 void RouterEditor::exportDialog(bool selfContained)
 {
     const QString path = QFileDialog::getSaveFileName(
-        this, selfContained ? tr("Save self-contained router") : tr("Save router"), m_path,
+        this, selfContained ? tr("Save self-contained router") : tr("Save router"),
+        m_document->path(),
         tr("semhap routers (*.json)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, selfContained, &error))
@@ -579,7 +566,6 @@ bool RouterEditor::newFromPreset(const QString &name, QString *error)
     } else {
         graph.name = tr("untitled");
     }
-    m_path.clear();
     setGraph(graph);
     return true;
 }

@@ -22,6 +22,7 @@ class QWidget;
 namespace semhap {
 
 class RunHistory;
+class RouterDocument;
 class RouterScene;
 
 /**
@@ -42,8 +43,11 @@ public:
     explicit RouterEditor(QWidget *parent = nullptr);
     ~RouterEditor() override;
 
-    /** Shows `graph` as a fresh document (the undo history starts again). */
-    void setGraph(const RouterGraph &graph);
+    /**
+     * Shows `graph`, from file `path` (empty: none), as a fresh document (the undo history
+     * starts again); nodes without a position are laid out.
+     */
+    void setGraph(const RouterGraph &graph, const QString &path = QString());
     /** The document being edited. */
     const RouterGraph &graph() const;
 
@@ -89,6 +93,7 @@ public:
     /** Shows the live activity of the session in `history` (null: none). */
     void setHistory(RunHistory *history);
 
+    RouterDocument *document() const { return m_document; }
     RouterScene *scene() const { return m_scene; }
     QGraphicsView *view() const { return m_view; }
     QListWidget *palette() const { return m_palette; }
@@ -119,6 +124,7 @@ private:
     void onHistoryUpdated();
     void exportDialog(bool selfContained);
 
+    RouterDocument *m_document = nullptr;
     RouterScene *m_scene = nullptr;
     QGraphicsView *m_view = nullptr;
     QListWidget *m_palette = nullptr;
@@ -126,7 +132,7 @@ private:
     QListWidget *m_errorList = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_autoApply = nullptr;
-    QUndoStack *m_undo = nullptr;
+    QUndoStack *m_undo = nullptr; ///< the document's
     QAction *m_applyAction = nullptr;
     QTimer *m_validateTimer = nullptr;
 
@@ -137,7 +143,6 @@ private:
     QString m_inspected; ///< id of the node the inspector shows
     RouterNode m_inspectedNode;
     bool m_inspectorPending = false;
-    QString m_path; ///< the file last opened or saved
 };
 
 } // namespace semhap

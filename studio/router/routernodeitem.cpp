@@ -67,10 +67,16 @@ void RouterNodeItem::setState(const QString &state, double level)
     update();
 }
 
+double RouterNodeItem::heightFor(const std::vector<PortSpec> &inputs,
+                                 const std::vector<PortSpec> &outputs)
+{
+    const size_t rows = std::max<size_t>({inputs.size(), outputs.size(), 1});
+    return HeaderHeight + double(rows) * PortSpacing + StateHeight;
+}
+
 double RouterNodeItem::height() const
 {
-    const size_t rows = std::max<size_t>({m_inputs.size(), m_outputs.size(), 1});
-    return HeaderHeight + double(rows) * PortSpacing + StateHeight;
+    return heightFor(m_inputs, m_outputs);
 }
 
 QPointF RouterNodeItem::portPos(int index, bool output) const

@@ -60,6 +60,10 @@ public:
     /** The header colour of a node type's kind (detector, logic, source, device). */
     static QColor kindColor(const QString &type);
 
+    /** The height a node with these ports is drawn at. */
+    static double heightFor(const std::vector<PortSpec> &inputs,
+                            const std::vector<PortSpec> &outputs);
+
     QRectF boundingRect() const override;
     void paint(QPainter *painter, const QStyleOptionGraphicsItem *option,
                QWidget *widget) override;

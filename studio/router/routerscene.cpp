@@ -3,6 +3,7 @@
 #include "colors.h"
 
 #include "patternlibrary.h"
+#include "routerdocument.h"
 #include "routerwireitem.h"
 
 #include <QDir>
@@ -62,20 +63,52 @@ QString summaryOf(const RouterNode &node)
 
 } // namespace
 
-RouterScene::RouterScene(QObject *parent) : QGraphicsScene(parent)
+RouterScene::RouterScene(const RouterDocument &document, QObject *parent)
+    : QGraphicsScene(parent), m_document(document)
 {
     setBackgroundBrush(colors::Canvas);
     m_fadeTimer.setInterval(33);
     connect(&m_fadeTimer, &QTimer::timeout, this, &RouterScene::fade);
+    connect(&document, &RouterDocument::graphReset, this, &RouterScene::rebuild);
+    connect(&document, &RouterDocument::nodeInserted, this, &RouterScene::insertItem);
+    connect(&document, &RouterDocument::nodeRemoved, this, &RouterScene::removeItem);
+    connect(&document, &RouterDocument::nodeRenamed, this, &RouterScene::renameItem);
+    connect(&document, &RouterDocument::nodeParamsChanged, this, [this](int index) {
+        refreshNode(m_items[size_t(index)], graph().nodes[size_t(index)]);
+        rebuildWires(); // a pattern node's ports follow its pattern's parameters
+    });
+    connect(&document, &RouterDocument::nodeMoved, this, [this](int index) {
+        m_items[size_t(index)]->setPos(RouterDocument::nodePos(graph().nodes[size_t(index)]));
+    });
+    connect(&document, &RouterDocument::linksChanged, this, &RouterScene::rebuildWires);
+    rebuild();
 }
 
-QPointF RouterScene::nodePos(const RouterNode &node)
+const RouterGraph &RouterScene::graph() const
 {
-    return {node.ui.value(QLatin1String("x")).toDouble(),
-            node.ui.value(QLatin1String("y")).toDouble()};
+    return m_document.graph();
 }
 
-void RouterScene::setGraph(const RouterGraph &graph)
+RouterGraph RouterScene::placed(const RouterGraph &graph)
+{
+    const auto hasPos = [](const RouterNode &node) {
+        return node.ui.contains(QLatin1String("x")) && node.ui.contains(QLatin1String("y"));
+    };
+    if (std::all_of(graph.nodes.begin(), graph.nodes.end(), hasPos))
+        return graph;
+    RouterGraph result = graph;
+    const std::map<QString, QPointF> positions = arrangedPositions(graph);
+    for (RouterNode &node : result.nodes) {
+        if (hasPos(node))
+            continue;
+        const QPointF p = positions.at(node.id);
+        node.ui.insert(QStringLiteral("x"), p.x());
+        node.ui.insert(QStringLiteral("y"), p.y());
+    }
+    return result;
+}
+
+void RouterScene::rebuild()
 {
     clearSelection();
     for (RouterWireItem *wire : m_wires)
@@ -87,27 +120,9 @@ void RouterScene::setGraph(const RouterGraph &graph)
     m_nodeErrors.clear();
     m_linkErrors.clear();
     m_active.clear();
-    m_graph = graph;
-    bool missing = false;
-    for (const RouterNode &node : m_graph.nodes) {
-        missing = missing || !node.ui.contains(QLatin1String("x")) ||
-                  !node.ui.contains(QLatin1String("y"));
-    }
-    // A graph without positions (the presets) is laid out; one with some keeps them.
-    if (missing) {
-        const std::map<QString, QPointF> positions = arrangedPositions();
-        for (RouterNode &node : m_graph.nodes) {
-            if (node.ui.contains(QLatin1String("x")) && node.ui.contains(QLatin1String("y")))
-                continue;
-            const QPointF p = positions.at(node.id);
-            node.ui.insert(QStringLiteral("x"), p.x());
-            node.ui.insert(QStringLiteral("y"), p.y());
-        }
-    }
-    for (const RouterNode &node : m_graph.nodes)
+    for (const RouterNode &node : graph().nodes)
         m_items.push_back(makeItem(node));
     rebuildWires();
-    emit graphChanged();
 }
 
 RouterNodeItem *RouterScene::makeItem(const RouterNode &node)
@@ -115,7 +130,7 @@ RouterNodeItem *RouterScene::makeItem(const RouterNode &node)
     auto *item = new RouterNodeItem(node.id, node.type);
     addItem(item);
     refreshNode(item, node);
-    item->setPos(nodePos(node));
+    item->setPos(RouterDocument::nodePos(node));
     connect(item, &RouterNodeItem::moved, this, [this, item] { updateWires(item); });
     return item;
 }
@@ -124,81 +139,34 @@ void RouterScene::refreshNode(RouterNodeItem *item, const RouterNode &node)
 {
     item->setId(node.id);
     item->setSummary(summaryOf(node));
-    item->setPorts(m_graph.inputsOf(node), RouterGraph::outputsOf(node));
+    item->setPorts(graph().inputsOf(node), RouterGraph::outputsOf(node));
     item->setError(m_nodeErrors.value(node.id));
 }
 
-void RouterScene::insertNode(int index, const RouterNode &node)
+void RouterScene::insertItem(int index)
 {
-    m_graph.nodes.insert(m_graph.nodes.begin() + index, node);
-    m_items.insert(m_items.begin() + index, makeItem(node));
+    m_items.insert(m_items.begin() + index, makeItem(graph().nodes[size_t(index)]));
     rebuildWires();
-    emit graphChanged();
 }
 
-void RouterScene::removeNode(int index)
+void RouterScene::removeItem(int index)
 {
     delete m_items[size_t(index)];
     m_items.erase(m_items.begin() + index);
-    m_graph.nodes.erase(m_graph.nodes.begin() + index);
     rebuildWires();
-    emit graphChanged();
 }
 
-void RouterScene::insertLink(int index, const RouterLink &link)
+void RouterScene::renameItem(int index, const QString &from)
 {
-    m_graph.links.insert(m_graph.links.begin() + index, link);
-    rebuildWires();
-    emit graphChanged();
-}
-
-void RouterScene::removeLink(int index)
-{
-    m_graph.links.erase(m_graph.links.begin() + index);
-    rebuildWires();
-    emit graphChanged();
-}
-
-void RouterScene::setNodeParams(const QString &id, const QJsonObject &params)
-{
-    const int index = m_graph.nodeIndex(id);
-    m_graph.nodes[size_t(index)].params = params;
-    refreshNode(m_items[size_t(index)], m_graph.nodes[size_t(index)]);
-    // A pattern node's ports follow its pattern's parameters.
-    rebuildWires();
-    emit graphChanged();
-}
-
-void RouterScene::setNodePos(const QString &id, const QPointF &pos)
-{
-    const int index = m_graph.nodeIndex(id);
-    RouterNode &node = m_graph.nodes[size_t(index)];
-    node.ui.insert(QStringLiteral("x"), pos.x());
-    node.ui.insert(QStringLiteral("y"), pos.y());
-    m_items[size_t(index)]->setPos(pos);
-    emit graphChanged();
-}
-
-void RouterScene::renameNode(const QString &from, const QString &to)
-{
-    const int index = m_graph.nodeIndex(from);
-    m_graph.nodes[size_t(index)].id = to;
-    for (RouterLink &link : m_graph.links) {
-        if (link.from == from)
-            link.from = to;
-        if (link.to == from)
-            link.to = to;
-    }
+    const RouterNode &node = graph().nodes[size_t(index)];
     if (m_active.contains(from))
-        m_active.insert(to, m_active.take(from));
-    refreshNode(m_items[size_t(index)], m_graph.nodes[size_t(index)]);
-    rebuildWires();
-    emit graphChanged();
+        m_active.insert(node.id, m_active.take(from));
+    refreshNode(m_items[size_t(index)], node);
 }
 
 RouterNodeItem *RouterScene::nodeItem(const QString &id) const
 {
-    const int index = m_graph.nodeIndex(id);
+    const int index = graph().nodeIndex(id);
     return index < 0 ? nullptr : m_items[size_t(index)];
 }
 
@@ -227,33 +195,20 @@ std::vector<int> RouterScene::selectedLinks() const
     return links;
 }
 
-QString RouterScene::uniqueId(const QString &base) const
-{
-    if (m_graph.nodeIndex(base) < 0)
-        return base;
-    for (int n = 2;; ++n) {
-        const QString id = base + QString::number(n);
-        if (m_graph.nodeIndex(id) < 0)
-            return id;
-    }
-}
-
-std::map<QString, QPointF> RouterScene::arrangedPositions() const
+std::map<QString, QPointF> RouterScene::arrangedPositions(const RouterGraph &graph)
 {
     // Each column in graph order for the first, then by the mean row of what feeds each
     // node, so wires run mostly straight; nodes nothing feeds go last.
     std::array<std::vector<int>, 4> columns;
-    for (size_t i = 0; i < m_graph.nodes.size(); ++i)
-        columns[size_t(columnOf(m_graph.nodes[i].type))].push_back(int(i));
+    for (size_t i = 0; i < graph.nodes.size(); ++i)
+        columns[size_t(columnOf(graph.nodes[i].type))].push_back(int(i));
     std::map<QString, double> rowOf;
     std::map<QString, QPointF> positions;
     double tallest = 0.0;
     std::array<double, 4> heights{};
-    const auto nodeHeight = [this](int i) {
-        const RouterNode &node = m_graph.nodes[size_t(i)];
-        const size_t rows =
-            std::max<size_t>({m_graph.inputsOf(node).size(), RouterGraph::outputsOf(node).size(), size_t(1)});
-        return 36.0 + double(rows) * 18.0 + 18.0;
+    const auto nodeHeight = [&graph](int i) {
+        const RouterNode &node = graph.nodes[size_t(i)];
+        return RouterNodeItem::heightFor(graph.inputsOf(node), RouterGraph::outputsOf(node));
     };
     for (size_t c = 0; c < columns.size(); ++c) {
         std::vector<std::pair<double, int>> order;
@@ -261,8 +216,8 @@ std::map<QString, QPointF> RouterScene::arrangedPositions() const
             const int i = columns[c][k];
             double sum = 0.0;
             int count = 0;
-            for (const RouterLink &link : m_graph.links) {
-                if (link.to == m_graph.nodes[size_t(i)].id && rowOf.count(link.from)) {
+            for (const RouterLink &link : graph.links) {
+                if (link.to == graph.nodes[size_t(i)].id && rowOf.count(link.from)) {
                     sum += rowOf[link.from];
                     ++count;
                 }
@@ -274,8 +229,8 @@ std::map<QString, QPointF> RouterScene::arrangedPositions() const
         double y = 0.0;
         for (size_t r = 0; r < order.size(); ++r) {
             const int i = order[r].second;
-            rowOf[m_graph.nodes[size_t(i)].id] = double(r);
-            positions[m_graph.nodes[size_t(i)].id] = QPointF(double(c) * ColumnSpacing, y);
+            rowOf[graph.nodes[size_t(i)].id] = double(r);
+            positions[graph.nodes[size_t(i)].id] = QPointF(double(c) * ColumnSpacing, y);
             y += nodeHeight(i) + RowGap;
         }
         heights[c] = y;
@@ -294,12 +249,12 @@ void RouterScene::rebuildWires()
     for (RouterWireItem *wire : m_wires)
         delete wire;
     m_wires.clear();
-    for (size_t j = 0; j < m_graph.links.size(); ++j) {
-        const RouterLink &link = m_graph.links[j];
+    for (size_t j = 0; j < graph().links.size(); ++j) {
+        const RouterLink &link = graph().links[j];
         RouterNodeItem *from = nodeItem(link.from);
         RouterNodeItem *to = nodeItem(link.to);
-        const QString fromPort = m_graph.portOf(link.from, link.fromPort, true);
-        const QString toPort = m_graph.portOf(link.to, link.toPort, false);
+        const QString fromPort = graph().portOf(link.from, link.fromPort, true);
+        const QString toPort = graph().portOf(link.to, link.toPort, false);
         RouterWireItem *wire = nullptr;
         if (from && to) {
             const auto out = std::find_if(from->outputs().begin(), from->outputs().end(),
@@ -416,11 +371,11 @@ void RouterScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
     const RouterPort &in = m_dragFrom.output ? target : m_dragFrom;
     // Default ports stay implicit, as the presets write them.
     const auto explicitName = [this](const RouterPort &port) {
-        return m_graph.portOf(port.node, QString(), port.output) == port.port ? QString() : port.port;
+        return graph().portOf(port.node, QString(), port.output) == port.port ? QString() : port.port;
     };
     const RouterLink link{out.node, explicitName(out), in.node, explicitName(in)};
     QString reason;
-    if (!m_graph.checkLink(link, &reason))
+    if (!graph().checkLink(link, &reason))
         emit connectRefused(reason, event->scenePos());
     else
         emit connectRequested(link);
@@ -454,12 +409,12 @@ void RouterScene::showActivity(const QString &node, const NodeActivity &activity
         return; // nothing new began passing: the wires keep their glow
     const QColor color =
         colors::category(activity.exception ? Category::Exception : Category::Confirmation);
-    for (size_t j = 0; j < m_graph.links.size(); ++j) {
-        const RouterLink &link = m_graph.links[j];
+    for (size_t j = 0; j < graph().links.size(); ++j) {
+        const RouterLink &link = graph().links[j];
         const bool in = link.to == node && m_active.value(link.from).isActive();
-        const int to = link.from == node ? m_graph.nodeIndex(link.to) : -1;
+        const int to = link.from == node ? graph().nodeIndex(link.to) : -1;
         // Devices report through their frames, not the router: light the voices into them.
-        const bool out = to >= 0 && isDevice(m_graph.nodes[size_t(to)].type);
+        const bool out = to >= 0 && isDevice(graph().nodes[size_t(to)].type);
         if ((in || out) && m_wires[j])
             m_wires[j]->flash(color);
     }

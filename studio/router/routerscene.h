@@ -18,14 +18,15 @@ class QGraphicsPathItem;
 
 namespace semhap {
 
+class RouterDocument;
 class RouterWireItem;
 
 /**
- * The router editor's canvas and the document it shows: it owns the RouterGraph and keeps
- * one node item per node and one wire per link in step with it. The edit functions are
- * what the undo commands call; mouse gestures only ask for edits (signals), so every edit
- * goes through the undo stack. It also checks a link before it is made, with the
- * compiler's rules, and shows validation errors and live activity.
+ * The router editor's canvas, a view of a RouterDocument: one node item per node and one
+ * wire per link, kept in step with the document's change signals. It never edits the
+ * document; mouse gestures only ask for edits (signals), so every edit goes through the
+ * document's undo stack. It checks a link before asking for it, with the core's rules
+ * (RouterGraph::checkLink), and shows validation errors and the running router's activity.
  */
 class RouterScene : public QGraphicsScene
 {
@@ -35,21 +36,10 @@ public:
     /** The MIME type of a palette entry dragged onto the canvas (the node type, UTF-8). */
     static constexpr const char *NodeTypeMime = "application/x-semhap-node-type";
 
-    explicit RouterScene(QObject *parent = nullptr);
+    explicit RouterScene(const RouterDocument &document, QObject *parent = nullptr);
 
-    /** Shows `graph`; nodes without a position in `ui` are laid out in columns by kind. */
-    void setGraph(const RouterGraph &graph);
-    /** The document, node positions in `ui` included. */
-    const RouterGraph &graph() const { return m_graph; }
-
-    void insertNode(int index, const RouterNode &node);
-    void removeNode(int index);
-    void insertLink(int index, const RouterLink &link);
-    void removeLink(int index);
-    void setNodeParams(const QString &id, const QJsonObject &params);
-    void setNodePos(const QString &id, const QPointF &pos);
-    /** Renames a node and the links that name it. */
-    void renameNode(const QString &from, const QString &to);
+    /** The document's graph, as shown. */
+    const RouterGraph &graph() const;
 
     RouterNodeItem *nodeItem(const QString &id) const;
     /** The wire of link `index`, or null when the link does not resolve to ports. */
@@ -59,11 +49,13 @@ public:
     /** Indexes of the selected wires' links. */
     std::vector<int> selectedLinks() const;
 
-    /** `base` if no node has that id, else `base` with the lowest free number appended. */
-    QString uniqueId(const QString &base) const;
-    /** Positions in columns by kind (detectors, logic, sources, devices), rows by flow. */
-    std::map<QString, QPointF> arrangedPositions() const;
-    static QPointF nodePos(const RouterNode &node);
+    /**
+     * Positions for `graph`'s nodes in columns by role (sources, logic, voices, devices),
+     * rows by flow, spaced by the height each node is drawn at.
+     */
+    static std::map<QString, QPointF> arrangedPositions(const RouterGraph &graph);
+    /** `graph` with every node that has no position (the presets) laid out; others keep theirs. */
+    static RouterGraph placed(const RouterGraph &graph);
 
     /** Marks nodes and links with the validation errors (by node id and link index). */
     void setErrors(const QHash<QString, QString> &nodeErrors,
@@ -81,8 +73,6 @@ public:
     void clearActivity();
 
 signals:
-    /** The document changed (any edit, undo or redo). */
-    void graphChanged();
     /** The user dragged a wire between two ports that may be linked. */
     void connectRequested(const semhap::RouterLink &link);
     /** The user dropped a wire where it cannot go; `reason` says why. */
@@ -101,6 +91,10 @@ protected:
     void dropEvent(QGraphicsSceneDragDropEvent *event) override;
 
 private:
+    void rebuild();
+    void insertItem(int index);
+    void removeItem(int index);
+    void renameItem(int index, const QString &from);
     RouterNodeItem *makeItem(const RouterNode &node);
     void refreshNode(RouterNodeItem *item, const RouterNode &node);
     void rebuildWires();
@@ -109,9 +103,9 @@ private:
     void refreshState(const QString &id);
     void fade();
 
-    RouterGraph m_graph;
-    std::vector<RouterNodeItem *> m_items; ///< parallel to m_graph.nodes
-    std::vector<RouterWireItem *> m_wires; ///< parallel to m_graph.links; null: unresolved
+    const RouterDocument &m_document;
+    std::vector<RouterNodeItem *> m_items; ///< parallel to graph().nodes
+    std::vector<RouterWireItem *> m_wires; ///< parallel to graph().links; null: unresolved
     QHash<QString, QString> m_nodeErrors;
     QHash<int, QString> m_linkErrors;
 

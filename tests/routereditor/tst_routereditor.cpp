@@ -8,6 +8,8 @@
 #include "gatedrouter.h"
 #include "mainwindow.h"
 #include "pipeline.h"
+#include "routercommands.h"
+#include "routerdocument.h"
 #include "routereditor.h"
 #include "routernodeitem.h"
 #include "routerscene.h"
@@ -216,6 +218,8 @@ private slots:
     void saveOpenRoundTrip();
     void selfContainedEmbedsUserPatterns();
     void selfContainedKeepsPatternsOfOneName();
+    void documentDrivesItsViews();
+    void failedSaveKeepsTheFile();
     void offersTheDesignersPatterns();
     void inspectorShowsTheNodeTypeTable();
     void engineSwapsWhileRunning();
@@ -608,6 +612,94 @@ void TestRouterEditor::selfContainedKeepsPatternsOfOneName()
     QCOMPARE(loaded.nodes[size_t(loaded.nodeIndex("left.geiger"))].params.value("pattern"),
              "mine~2");
     QVERIFY2(Router::compile(loaded, &loadError), qPrintable(loadError.toString()));
+}
+
+void TestRouterEditor::documentDrivesItsViews()
+{
+    // The document is edited; two scenes on it follow, each from its signals alone.
+    RouterDocument document;
+    RouterScene first(document);
+    RouterScene second(document);
+    QSignalSpy changed(&document, &RouterDocument::changed);
+    QSignalSpy inserted(&document, &RouterDocument::nodeInserted);
+    QSignalSpy params(&document, &RouterDocument::nodeParamsChanged);
+    QSignalSpy links(&document, &RouterDocument::linksChanged);
+    const RouterGraph c3 = RouterScene::placed(preset("C3"));
+    document.reset(c3);
+    QVERIFY(!document.isModified());
+    const auto inStep = [&](const RouterScene &scene) {
+        const RouterGraph &graph = document.graph();
+        for (const RouterNode &node : graph.nodes) {
+            const RouterNodeItem *item = scene.nodeItem(node.id);
+            if (!item || item->pos() != RouterDocument::nodePos(node))
+                return false;
+        }
+        for (size_t j = 0; j < graph.links.size(); ++j) {
+            if (!scene.wireItem(int(j)))
+                return false;
+        }
+        return scene.items().size() >= qsizetype(graph.nodes.size() + graph.links.size());
+    };
+    QVERIFY(inStep(first) && inStep(second));
+
+    QUndoStack &undo = *document.undoStack();
+    RouterNode filter{document.uniqueId("right.confirm"), "filter",
+                      QJsonObject{{"category", "confirmation"}},
+                      QJsonObject{{"x", 40.0}, {"y", 900.0}}};
+    QCOMPARE(filter.id, QString("right.confirm2"));
+    undo.push(new AddNodeCommand(&document, filter));
+    QCOMPARE(inserted.count(), 1);
+    QCOMPARE(changed.count(), 2); // the reset, then the one edit
+    undo.push(new ConnectCommand(&document, RouterLink{"right.force", {}, filter.id, {}}));
+    QCOMPARE(links.count(), 1);
+    undo.push(new SetParamCommand(&document, filter.id, "category", "exception"));
+    QCOMPARE(params.count(), 1);
+    undo.push(new RenameNodeCommand(&document, filter.id, "right.other"));
+    undo.push(new MoveNodesCommand(&document, {"right.other"}, {QPointF(40, 900)},
+                                   {QPointF(80, 950)}));
+    QVERIFY(document.isModified());
+    QVERIFY(inStep(first) && inStep(second));
+    QVERIFY(first.nodeItem("right.other") && !first.nodeItem(filter.id));
+    QCOMPARE(second.nodeItem("right.other")->pos(), QPointF(80, 950));
+    undo.push(new RemoveCommand(&document, {"right.force"}, {}));
+    QVERIFY(inStep(first) && inStep(second));
+    QVERIFY(!second.nodeItem("right.force"));
+
+    // Undoing everything gives back the graph exactly, and the views with it.
+    undo.setIndex(0);
+    QCOMPARE(document.graph().toJson(), c3.toJson());
+    QVERIFY(!document.isModified());
+    QVERIFY(inStep(first) && inStep(second));
+}
+
+void TestRouterEditor::failedSaveKeepsTheFile()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("router.json");
+    QFile existing(path);
+    QVERIFY(existing.open(QIODevice::WriteOnly));
+    existing.write("what was there");
+    existing.close();
+    RouterDocument document;
+    document.reset(preset("C3"));
+    document.undoStack()->push(
+        new SetParamCommand(&document, "right.geiger", "pattern", dir.filePath("missing.json")));
+    QString error;
+    // Self-contained, the missing pattern file stops the save before anything is written.
+    QVERIFY(!document.save(path, true, &error));
+    QVERIFY2(error.contains("missing.json"), qPrintable(error));
+    QVERIFY(existing.open(QIODevice::ReadOnly));
+    QCOMPARE(existing.readAll(), QByteArray("what was there"));
+    existing.close();
+    QVERIFY(document.isModified());
+    QVERIFY(document.path().isEmpty());
+    // A folder that does not exist: the reason, and nothing left behind.
+    QVERIFY(!document.save(dir.filePath("no/such/folder/router.json"), false, &error));
+    QVERIFY2(error.contains("cannot write"), qPrintable(error));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"router.json"});
+    QVERIFY(document.save(path, false, &error));
+    QVERIFY(!document.isModified());
+    QCOMPARE(document.path(), path);
 }
 
 void TestRouterEditor::offersTheDesignersPatterns()
