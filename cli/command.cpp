@@ -214,6 +214,12 @@ bool Command::simulationOptions(const QCommandLineParser &parser, double *durati
     return true;
 }
 
+void Command::reportWarnings(const RouterGraph &graph)
+{
+    for (const LoadError &warning : graph.warnings)
+        report(warning.toString());
+}
+
 void Command::reportDroppedEvents(const Pipeline &pipeline)
 {
     if (pipeline.droppedEvents() > 0)

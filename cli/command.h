@@ -20,6 +20,7 @@
 namespace semhap {
 
 class Pipeline;
+class RouterGraph;
 class SessionReader;
 class SessionWriter;
 
@@ -139,6 +140,8 @@ protected:
     bool renderNamedPattern(const QString &pattern, RenderOptions options,
                             RenderedPattern *rendered, DeviceModelPtr *model);
 
+    /** Reports what loading `graph` found old but readable (a deprecated spelling). */
+    void reportWarnings(const RouterGraph &graph);
     /** Says how many events the pipeline dropped, when it dropped any. */
     void reportDroppedEvents(const Pipeline &pipeline);
     /** Closes a recording, reporting dropped values and errors; false after an error line. */

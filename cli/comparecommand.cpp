@@ -344,8 +344,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         QString error;
         RunOptions probe = options;
         probe.duration = 0;
-        if (!SimRun::create(probe, &error))
+        const std::unique_ptr<SimRun> run = SimRun::create(probe, &error);
+        if (!run)
             return inputError(error);
+        reportWarnings(run->pipeline().router().graph());
     }
 
     for (const RunOptions &options : grid) {

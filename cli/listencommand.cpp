@@ -142,6 +142,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error, context);
     if (!router)
         return inputError(error.toString());
+    reportWarnings(router->graph());
     keepFromOutputs(routerName, Kept::Input);
     keepFromOutputs(parser.value(QStringLiteral("session")), Kept::Session);
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);

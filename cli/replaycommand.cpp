@@ -121,6 +121,7 @@ int ReplayCommand::execute(const QCommandLineParser &parser)
     }
     if (!router)
         return inputError(error.toString());
+    reportWarnings(router->graph());
     keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
 
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);

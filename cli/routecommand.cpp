@@ -64,6 +64,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
                    &error, context);
     if (!router)
         return inputError(error.toString());
+    reportWarnings(router->graph());
     keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
 
     const QString framesPath = parser.value(QStringLiteral("frames"));

@@ -174,6 +174,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     std::unique_ptr<SimRun> run = SimRun::create(options, &error);
     if (!run)
         return inputError(error);
+    reportWarnings(run->pipeline().router().graph());
     keepFromOutputs(options.scene, Kept::Input);
     keepFromOutputs(options.router, Kept::Input);
     keepFromOutputs(parser.value(QStringLiteral("session")), Kept::Session);

@@ -112,6 +112,7 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
             if (RouterGraph::fromJson(doc.json, doc.path, &graph, &error)) {
                 graph.baseDir = QFileInfo(doc.path).absolutePath();
                 graph.models.insert(graph.models.end(), models.begin(), models.end());
+                reportWarnings(graph);
                 ok = Router::compile(graph, &error) != nullptr;
                 what = tr("router '%1'").arg(graph.name);
             }

@@ -341,11 +341,11 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
     if (n.type == QLatin1String("gate"))
         return std::make_unique<GateNode>(param(node, QStringLiteral("mode")).toString() ==
                                           QLatin1String("open"));
-    if (n.type == QLatin1String("hysteresis")) {
-        auto hysteresis = std::make_unique<HysteresisNode>(number(node, QStringLiteral("hold")),
+    if (n.type == QLatin1String("debounce")) {
+        auto debounce = std::make_unique<DebounceNode>(number(node, QStringLiteral("hold")),
                                                            number(node, QStringLiteral("band")));
-        m_router->m_timed.push_back(hysteresis.get());
-        return hysteresis;
+        m_router->m_timed.push_back(debounce.get());
+        return debounce;
     }
     if (n.type == QLatin1String("curve")) {
         const QJsonValue points = param(node, QStringLiteral("points"));

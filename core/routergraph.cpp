@@ -68,6 +68,14 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
             !reader.object(o, where, QLatin1String("params"), &node.params, false) ||
             !reader.object(o, where, QLatin1String("ui"), &node.ui, false))
             return false;
+        // Files from before the node type had its own name are read, and told.
+        if (node.type == QLatin1String("hysteresis")) {
+            node.type = QStringLiteral("debounce");
+            graph->warnings.push_back(
+                LoadError::at(graph->file, where + QStringLiteral("/type"),
+                              QStringLiteral("deprecated: node type \"hysteresis\" is now "
+                                             "\"debounce\" (read as \"debounce\")")));
+        }
         if (!validId(node.id))
             return reader.fail(where + QStringLiteral("/id"),
                                QStringLiteral("'%1' is not a valid id (non-empty, no ':' or "

@@ -156,6 +156,8 @@ public:
     QString description;
     QString file;    ///< where it was loaded from (errors, relative pattern paths)
     QString baseDir; ///< folder relative pattern and model paths are resolved against
+    /** What loading found old but readable (a deprecated spelling), each located. */
+    std::vector<LoadError> warnings;
     std::vector<RouterNode> nodes;
     std::vector<RouterLink> links;
     std::vector<PatternPtr> patterns;   ///< embedded patterns, found by name first

@@ -268,7 +268,7 @@ void GateNode::onEvent(int port, const SemanticEvent &event)
     }
 }
 
-void HysteresisNode::onEvent(int, const SemanticEvent &event)
+void DebounceNode::onEvent(int, const SemanticEvent &event)
 {
     const int key = ActiveMessages::keyOf(event);
     ActiveMessages::Entry *entry = m_active.find(key);
@@ -317,7 +317,7 @@ void HysteresisNode::onEvent(int, const SemanticEvent &event)
     }
 }
 
-double HysteresisNode::nextTimer() const
+double DebounceNode::nextTimer() const
 {
     double next = std::numeric_limits<double>::infinity();
     for (const ActiveMessages::Entry &entry : m_active) {
@@ -327,7 +327,7 @@ double HysteresisNode::nextTimer() const
     return next;
 }
 
-void HysteresisNode::fireTimers(double t)
+void DebounceNode::fireTimers(double t)
 {
     for (;;) {
         ActiveMessages::Entry *due = nullptr;

@@ -334,10 +334,10 @@ private:
 };
 
 /** Delays ends by `hold` (a begin within it continues the message) and drops small updates. */
-class HysteresisNode : public RuntimeNode
+class DebounceNode : public RuntimeNode
 {
 public:
-    HysteresisNode(double hold, double band) : m_hold(hold), m_band(band) {}
+    DebounceNode(double hold, double band) : m_hold(hold), m_band(band) {}
     void onEvent(int port, const SemanticEvent &event) override;
     double nextTimer() const override;
     void fireTimers(double t) override;

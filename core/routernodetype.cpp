@@ -186,7 +186,7 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("block"),
                                 QStringLiteral("block: an active control stops the input; "
                                                "open: only an active control lets it through"))}},
-            {QStringLiteral("hysteresis"),
+            {QStringLiteral("debounce"),
              QStringLiteral("Holds ends back for a while and drops small intensity changes"),
              {in},
              {out},

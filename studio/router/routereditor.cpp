@@ -531,7 +531,13 @@ bool RouterEditor::openFile(const QString &path, QString *error)
         return false;
     }
     setGraph(graph, path);
-    showStatus(tr("Opened %1").arg(QDir::toNativeSeparators(path)), false);
+    // An old spelling was read; saving writes the new one.
+    QStringList warnings;
+    for (const LoadError &warning : graph.warnings)
+        warnings.append(warning.toString());
+    showStatus(warnings.isEmpty() ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
+                                  : warnings.join(QLatin1Char('\n')),
+               !warnings.isEmpty());
     return true;
 }
 

@@ -255,6 +255,14 @@ void TestCli::validate()
     QCOMPARE(bad.code, 1);
     QCOMPARE(bad.out.count('\n'), 1);
     QCOMPARE(bad.err.count('\n'), 2); // one line per broken file
+
+    // An old spelling is valid, with a located warning.
+    const Result old = semhapRun({"validate", Data + "/old-spelling-router.json"});
+    QCOMPARE(old.code, 0);
+    QCOMPARE(old.out.count('\n'), 1);
+    QVERIFY2(old.err.contains("old-spelling-router.json: /nodes/1/type: deprecated: node type "
+                              "\"hysteresis\" is now \"debounce\""),
+             old.err.constData());
 }
 
 void TestCli::realBinaryReadsStdin()

@@ -257,7 +257,7 @@ void TestPipeline::hysteresisTimerActsBetweenFrames()
     RouterGraph graph;
     LoadError error;
     QVERIFY(RouterPresets::preset("C3", &graph, &error));
-    graph.nodes.push_back({"hold", "hysteresis", QJsonObject{{"hold", 0.155}}, {}});
+    graph.nodes.push_back({"hold", "debounce", QJsonObject{{"hold", 0.155}}, {}});
     for (RouterLink &link : graph.links) {
         if (link.from == "right.confirm" && link.to == "right.squeeze")
             link.to = "hold";

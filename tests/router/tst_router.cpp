@@ -95,6 +95,7 @@ private slots:
     void presets();
     void unknownPreset();
     void graphRoundTrip();
+    void oldNodeTypeIsReadWithAWarning();
     void invalid_data();
     void invalid();
     void sessionRouterNamesNoFile();
@@ -183,7 +184,7 @@ void TestRouter::invalid_data()
     QTest::newRow("unknown type")
         << edited("nodes/1", object(R"({"id": "warn", "type": "fliter"})"))
         << "r.json: /nodes/1/type: node 'warn': unknown node type 'fliter' (known: force, slip, "
-           "signal, derivative, predict, threshold, filter, gate, hysteresis, curve, pattern, "
+           "signal, derivative, predict, threshold, filter, gate, debounce, curve, pattern, "
            "proportional, device)";
     QTest::newRow("detector without gripper")
         << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
@@ -282,10 +283,10 @@ void TestRouter::invalid_data()
              {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
         << "r.json: /nodes/0/params/points: node 'c' (curve): must be a list of [x, y] points "
            "with x increasing";
-    QTest::newRow("hysteresis band")
+    QTest::newRow("debounce band")
         << object(R"({"format": "semhap.router/1", "nodes": [
-             {"id": "h", "type": "hysteresis", "params": {"band": 2}}]})")
-        << "r.json: /nodes/0/params/band: node 'h' (hysteresis): must be within [0, 1], got "
+             {"id": "h", "type": "debounce", "params": {"band": 2}}]})")
+        << "r.json: /nodes/0/params/band: node 'h' (debounce): must be within [0, 1], got "
            "2";
     QTest::newRow("gate mode")
         << object(R"({"format": "semhap.router/1", "nodes": [
@@ -318,6 +319,28 @@ void TestRouter::invalid_data()
         << QJsonObject{{"format", "semhap.router/1"}, {"nodes", bands}}
         << "r.json: /nodes/256: node 'band256' (device): one device more than the 256 a router "
            "may drive";
+}
+
+void TestRouter::oldNodeTypeIsReadWithAWarning()
+{
+    // The debounce node was called "hysteresis", like the detectors' parameter: files that
+    // say so still load, with a located warning, and are written back with the new name.
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterGraph::fromJson(object(R"({"format": "semhap.router/1", "nodes": [
+        {"id": "f", "type": "filter"},
+        {"id": "h", "type": "hysteresis", "params": {"hold": 0.1}}]})"),
+                                  "old.json", &graph, &error));
+    QCOMPARE(graph.nodes[1].type, QString("debounce"));
+    QCOMPARE(graph.warnings.size(), size_t(1));
+    QCOMPARE(graph.warnings[0].toString(),
+             QString("old.json: /nodes/1/type: deprecated: node type \"hysteresis\" is now "
+                     "\"debounce\" (read as \"debounce\")"));
+    QCOMPARE(graph.toJson()["nodes"][1]["type"].toString(), QString("debounce"));
+    const std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    QCOMPARE(router->graph().warnings.size(), size_t(1));
+    QVERIFY(graph.nodes[0].type == "filter");
 }
 
 void TestRouter::invalid()

@@ -220,6 +220,7 @@ private slots:
     void selfContainedKeepsPatternsOfOneName();
     void documentDrivesItsViews();
     void failedSaveKeepsTheFile();
+    void opensAnOldSpelling();
     void offersTheDesignersPatterns();
     void inspectorShowsTheNodeTypeTable();
     void engineSwapsWhileRunning();
@@ -700,6 +701,27 @@ void TestRouterEditor::failedSaveKeepsTheFile()
     QVERIFY(document.save(path, false, &error));
     QVERIFY(!document.isModified());
     QCOMPARE(document.path(), path);
+}
+
+void TestRouterEditor::opensAnOldSpelling()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("old.json");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "semhap.router/1", "nodes": [
+        {"id": "h", "type": "hysteresis", "params": {"hold": 0.1}}]})");
+    file.close();
+    Fixture f;
+    QString error;
+    QVERIFY2(f.editor.openFile(path, &error), qPrintable(error));
+    QVERIFY2(f.editor.statusLabel()->text().contains("deprecated"),
+             qPrintable(f.editor.statusLabel()->text()));
+    QCOMPARE(f.editor.graph().nodes[0].type, QString("debounce"));
+    QVERIFY(f.editor.saveFile(path, false, &error));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray saved = file.readAll();
+    QVERIFY(saved.contains("\"debounce\"") && !saved.contains("hysteresis"));
 }
 
 void TestRouterEditor::offersTheDesignersPatterns()

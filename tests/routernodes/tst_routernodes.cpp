@@ -114,8 +114,8 @@ private slots:
     void filter();
     void gate_data();
     void gate();
-    void hysteresis_data();
-    void hysteresis();
+    void debounce_data();
+    void debounce();
     void curve();
     void patternNodeMergesMessages();
     void continuousPatternStartsAtStart();
@@ -207,7 +207,7 @@ void TestRouterNodes::gate()
     QCOMPARE(out.seen, expected);
 }
 
-void TestRouterNodes::hysteresis_data()
+void TestRouterNodes::debounce_data()
 {
     QTest::addColumn<double>("hold");
     QTest::addColumn<double>("band");
@@ -247,14 +247,14 @@ void TestRouterNodes::hysteresis_data()
         << QStringList{"1 break begin 0.2", "3 break end 0.2"} << never;
 }
 
-void TestRouterNodes::hysteresis()
+void TestRouterNodes::debounce()
 {
     QFETCH(double, hold);
     QFETCH(double, band);
     QFETCH(QStringList, input);
     QFETCH(QStringList, expected);
     QFETCH(double, nextTimer);
-    HysteresisNode node(hold, band);
+    DebounceNode node(hold, band);
     Recorder out;
     node.eventTargets.push_back({&out, 0});
     feed(node, input);
