@@ -43,6 +43,41 @@ QString joinEndpoint(const QString &node, const QString &port)
     return port.isEmpty() ? node : node + QLatin1Char(':') + port;
 }
 
+/**
+ * Spellings semhap 1.0 wrote, read as today's with a located warning: the debounce node was
+ * called "hysteresis" like the detectors' parameter, and a fingertip's quantities were
+ * "f.left" where the contact frame says `left.f`.
+ */
+void readOldSpellings(const QString &file, const QString &where, RouterNode *node,
+                      std::vector<LoadError> *warnings)
+{
+    const auto warn = [&](const QString &pointer, const QString &what, const QString &old,
+                          const QString &now) {
+        warnings->push_back(LoadError::at(
+            file, where + pointer,
+            QStringLiteral("deprecated: %1 \"%2\" is now \"%3\" (read as \"%3\")")
+                .arg(what, old, now)));
+    };
+    if (node->type == QLatin1String("hysteresis")) {
+        node->type = QStringLiteral("debounce");
+        warn(QStringLiteral("/type"), QStringLiteral("node type"), QStringLiteral("hysteresis"),
+             node->type);
+    }
+    static const QHash<QString, QString> quantities{
+        {QStringLiteral("f.left"), QStringLiteral("left.f")},
+        {QStringLiteral("f.right"), QStringLiteral("right.f")},
+        {QStringLiteral("n.left"), QStringLiteral("left.n")},
+        {QStringLiteral("n.right"), QStringLiteral("right.n")},
+        {QStringLiteral("friction.left"), QStringLiteral("left.friction")},
+        {QStringLiteral("friction.right"), QStringLiteral("right.friction")}};
+    const QString quantity = node->params.value(QLatin1String("quantity")).toString();
+    if (node->type == QLatin1String("signal") && quantities.contains(quantity)) {
+        node->params.insert(QStringLiteral("quantity"), quantities.value(quantity));
+        warn(QStringLiteral("/params/quantity"), QStringLiteral("quantity"), quantity,
+             quantities.value(quantity));
+    }
+}
+
 bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
 {
     if (nodes.size() > RouterGraph::MaxNodes)
@@ -68,14 +103,7 @@ bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)
             !reader.object(o, where, QLatin1String("params"), &node.params, false) ||
             !reader.object(o, where, QLatin1String("ui"), &node.ui, false))
             return false;
-        // Files from before the node type had its own name are read, and told.
-        if (node.type == QLatin1String("hysteresis")) {
-            node.type = QStringLiteral("debounce");
-            graph->warnings.push_back(
-                LoadError::at(graph->file, where + QStringLiteral("/type"),
-                              QStringLiteral("deprecated: node type \"hysteresis\" is now "
-                                             "\"debounce\" (read as \"debounce\")")));
-        }
+        readOldSpellings(graph->file, where, &node, &graph->warnings);
         if (!validId(node.id))
             return reader.fail(where + QStringLiteral("/id"),
                                QStringLiteral("'%1' is not a valid id (non-empty, no ':' or "

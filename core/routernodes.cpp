@@ -115,13 +115,13 @@ QStringList SignalNode::quantityNames()
     // In Quantity's order.
     return {QStringLiteral("F"),
             QStringLiteral("N"),
-            QStringLiteral("f.left"),
-            QStringLiteral("f.right"),
-            QStringLiteral("n.left"),
-            QStringLiteral("n.right"),
+            QStringLiteral("left.f"),
+            QStringLiteral("right.f"),
+            QStringLiteral("left.n"),
+            QStringLiteral("right.n"),
             QStringLiteral("friction"),
-            QStringLiteral("friction.left"),
-            QStringLiteral("friction.right")};
+            QStringLiteral("left.friction"),
+            QStringLiteral("right.friction")};
 }
 
 double SignalNode::frictionUse(const Fingertip &tip) const

@@ -426,9 +426,10 @@ void PlotPanel::addGripper(Gripper gripper)
     plot->forceRect = addRect(tr("%1: force").arg(gripperTitle(gripper)), 5);
     plot->forceRect->axis(QCPAxis::atLeft)->setLabel(tr("F (N)"));
     plot->left =
-        addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left finger"), Sky, 1.0);
+        addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left.f (finger)"), Sky, 1.0);
     plot->right =
-        addGraph(plot->forceRect, id + QStringLiteral(".right.f"), tr("right finger"), Green, 1.0);
+        addGraph(plot->forceRect, id + QStringLiteral(".right.f"), tr("right.f (finger)"), Green,
+                 1.0);
     plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 1.0);
     if (thresholds.hasForce) {
         const QString format = tr("%1 %2 N");

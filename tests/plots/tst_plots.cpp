@@ -197,8 +197,8 @@ void TestPlots::graphsHoldData_data()
     QTest::addColumn<double>("key");
     QTest::addColumn<double>("value");
     QTest::newRow("sum") << "right.F" << Ticks + 1 << 2.0 << 10.0;
-    QTest::newRow("left finger") << "right.left.f" << Ticks + 1 << 2.0 << 4.0;
-    QTest::newRow("right finger") << "right.right.f" << Ticks + 1 << 2.0 << 6.0;
+    QTest::newRow("left.f") << "right.left.f" << Ticks + 1 << 2.0 << 4.0;
+    QTest::newRow("right.f") << "right.right.f" << Ticks + 1 << 2.0 << 6.0;
     QTest::newRow("contacts") << "right.N" << Ticks + 1 << 2.0 << 32.0;
     QTest::newRow("device ch0") << "right.vibro.ch0" << 2 * Ticks + 1 << 2.5 << 0.25;
     QTest::newRow("device ch1") << "right.vibro.ch1" << 2 * Ticks + 1 << 2.5 << 0.5;

@@ -276,8 +276,8 @@ void TestRouter::invalid_data()
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "G"}}]})")
         << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be \"F\", \"N\", "
-           "\"f.left\", \"f.right\", \"n.left\", \"n.right\", \"friction\", "
-           "\"friction.left\" or \"friction.right\"";
+           "\"left.f\", \"right.f\", \"left.n\", \"right.n\", \"friction\", "
+           "\"left.friction\" or \"right.friction\"";
     QTest::newRow("curve points")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
@@ -341,6 +341,17 @@ void TestRouter::oldNodeTypeIsReadWithAWarning()
     QVERIFY2(router, qPrintable(error.toString()));
     QCOMPARE(router->graph().warnings.size(), size_t(1));
     QVERIFY(graph.nodes[0].type == "filter");
+
+    // A fingertip's quantity was "f.left"; it is "left.f", as the contact frame spells it.
+    QVERIFY(RouterGraph::fromJson(object(R"({"format": "semhap.router/1", "nodes": [
+        {"id": "s", "type": "signal", "params": {"gripper": "right", "quantity": "n.left"}}]})"),
+                                  "old.json", &graph, &error));
+    QCOMPARE(graph.nodes[0].params.value("quantity").toString(), QString("left.n"));
+    QCOMPARE(graph.warnings.size(), size_t(1));
+    QCOMPARE(graph.warnings[0].toString(),
+             QString("old.json: /nodes/0/params/quantity: deprecated: quantity \"n.left\" is "
+                     "now \"left.n\" (read as \"left.n\")"));
+    QVERIFY2(Router::compile(graph, &error), qPrintable(error.toString()));
 }
 
 void TestRouter::invalid()
