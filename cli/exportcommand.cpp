@@ -221,16 +221,16 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     if (!inputs)
         return false;
     inputs->write("t,hand,x,y,z,qw,qx,qy,qz,grip\n");
-    const bool inputsOk = session.readOperatorInput(
-        [&](const OperatorInput &input) {
+    const bool inputsOk = session.readHandCommands(
+        [&](const HandCommand &input) {
             row.clear();
             appendNumber(row, input.t);
             row += ',' + gripperName(input.hand).toUtf8();
-            for (double v : input.pos) {
+            for (double v : input.target.pos) {
                 row += ',';
                 appendNumber(row, v);
             }
-            for (double v : input.quat) {
+            for (double v : input.target.quat) {
                 row += ',';
                 appendNumber(row, v);
             }

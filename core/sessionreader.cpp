@@ -436,7 +436,7 @@ bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *e
     return finished(query, m_path, error);
 }
 
-bool SessionReader::readOperatorInput(const InputVisitor &visit, QString *error, double from,
+bool SessionReader::readHandCommands(const HandCommandVisitor &visit, QString *error, double from,
                                       double to)
 {
     QSqlQuery query;
@@ -446,14 +446,14 @@ bool SessionReader::readOperatorInput(const InputVisitor &visit, QString *error,
         *error = m_path + QStringLiteral(": ") + reason;
         return false;
     }
-    OperatorInput input;
+    HandCommand input;
     while (query.next()) {
         bool valid = finiteReal(query.value(1), &input.t) &&
                      gripperFromName(query.value(2).toString(), &input.hand);
         for (int i = 0; valid && i < 3; ++i)
-            valid = finiteReal(query.value(3 + i), &input.pos[size_t(i)]);
+            valid = finiteReal(query.value(3 + i), &input.target.pos[size_t(i)]);
         for (int i = 0; valid && i < 4; ++i)
-            valid = finiteReal(query.value(6 + i), &input.quat[size_t(i)]);
+            valid = finiteReal(query.value(6 + i), &input.target.quat[size_t(i)]);
         valid = valid && finiteReal(query.value(10), &input.grip);
         if (!valid) {
             rejectRow("operator_input", query.value(0),

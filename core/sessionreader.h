@@ -5,7 +5,7 @@
 #include "contactframe.h"
 #include "contactframeparser.h"
 #include "deviceframe.h"
-#include "operatorinput.h"
+#include "handcommand.h"
 #include "scenestate.h"
 #include "semanticevent.h"
 #include "sessioninfo.h"
@@ -40,7 +40,7 @@ public:
     using FrameVisitor = std::function<bool(const ContactFrame &frame, double arrival)>;
     using EventVisitor = std::function<bool(const SemanticEvent &event)>;
     using DeviceFrameVisitor = std::function<bool(const DeviceFrame &frame)>;
-    using InputVisitor = std::function<bool(const OperatorInput &input)>;
+    using HandCommandVisitor = std::function<bool(const HandCommand &input)>;
     /** Gets each skipped row as `SESSION: TABLE row N: reason`. */
     using RowErrorHandler = std::function<void(const QString &line)>;
 
@@ -93,7 +93,7 @@ public:
                     double to = Forever);
     bool readDeviceFrames(const DeviceFrameVisitor &visit, QString *error, double from = -Forever,
                           double to = Forever);
-    bool readOperatorInput(const InputVisitor &visit, QString *error, double from = -Forever,
+    bool readHandCommands(const HandCommandVisitor &visit, QString *error, double from = -Forever,
                            double to = Forever);
     /**
      * Reads the scene state shown at `t`: the latest recorded at or before it (the first

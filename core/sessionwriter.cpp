@@ -38,7 +38,7 @@ namespace {
 /** One queued value; `arrival` only means something for contact frames. */
 struct Record
 {
-    std::variant<ContactFrame, SemanticEvent, DeviceFrame, OperatorInput, SceneState> value;
+    std::variant<ContactFrame, SemanticEvent, DeviceFrame, HandCommand, SceneState> value;
     double arrival = 0.0;
 };
 
@@ -400,13 +400,13 @@ private:
         check(m_deviceInsert.exec(), m_deviceInsert);
     }
 
-    void insert(const OperatorInput &input, double)
+    void insert(const HandCommand &input, double)
     {
         m_inputInsert.addBindValue(input.t);
         m_inputInsert.addBindValue(m_grippers[size_t(input.hand)]);
-        for (double v : input.pos)
+        for (double v : input.target.pos)
             m_inputInsert.addBindValue(v);
-        for (double v : input.quat)
+        for (double v : input.target.quat)
             m_inputInsert.addBindValue(v);
         m_inputInsert.addBindValue(input.grip);
         check(m_inputInsert.exec(), m_inputInsert);
@@ -519,7 +519,7 @@ void SessionWriter::recordContactFrame(const ContactFrame &frame, double arrival
         m_dropped.fetch_add(1, std::memory_order_relaxed);
 }
 
-void SessionWriter::recordOperatorInput(const OperatorInput &input)
+void SessionWriter::recordHandCommand(const HandCommand &input)
 {
     if (!m_thread->push({input, 0.0}))
         m_dropped.fetch_add(1, std::memory_order_relaxed);

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "contactframe.h"
-#include "operatorinput.h"
+#include "handcommand.h"
 #include "pipeline.h"
 #include "scenestate.h"
 #include "sessioninfo.h"
@@ -27,7 +27,7 @@ class Router;
  * waited for.
  *
  * Use it as the pipeline's sink (events, device frames) and call recordContactFrame() for
- * each frame before the pipeline processes it; recordOperatorInput() may come from any
+ * each frame before the pipeline processes it; recordHandCommand() may come from any
  * thread. One router per session: its names are read once, at create().
  */
 class SessionWriter : public PipelineSink
@@ -58,7 +58,7 @@ public:
     /** Records a contact frame; `arrival` is its receive time (s), NaN when simulated. */
     void recordContactFrame(const ContactFrame &frame, double arrival);
     /** Records what the user commanded a hand. Any thread. */
-    void recordOperatorInput(const OperatorInput &input);
+    void recordHandCommand(const HandCommand &input);
     /** Records where the scene's bodies are (at display rate, for the replay's viewport). */
     void recordSceneState(const SceneState &state);
     void onEvent(const SemanticEvent &event) override;

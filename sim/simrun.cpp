@@ -47,7 +47,7 @@ bool SimRun::step(RunSink &sink)
 {
     if (isDone())
         return false;
-    Operator &driver = m_override ? *m_override : *m_operator;
+    Operator &driver = m_driveOperator ? *m_driveOperator : *m_operator;
     driver.act(*m_world);
     m_world->step();
     // The operator feels what the bands deliver; the caller gets everything.

@@ -61,9 +61,9 @@ public:
 
     /**
      * Drives the grippers with `op` instead of the run's own operator while it is set (the
-     * studio's user taking over); null gives them back. Not owned.
+     * studio user driving); null gives them back. Not owned.
      */
-    void setOperatorOverride(Operator *op) { m_override = op; }
+    void setDriveOperator(Operator *op) { m_driveOperator = op; }
     /** What each hand perceives of the device output (the overlay is drawn from it). */
     const Perception &perception() const { return *m_perception; }
     /** A session records the scene state this often (simulated seconds): display rate. */
@@ -100,7 +100,7 @@ private:
     std::unique_ptr<World> m_world;
     std::unique_ptr<Pipeline> m_pipeline;
     std::unique_ptr<Operator> m_operator;
-    Operator *m_override = nullptr;
+    Operator *m_driveOperator = nullptr;
     std::unique_ptr<Perception> m_perception;
     std::unique_ptr<TaskMonitor> m_task;
     double m_nextSceneState = 0.0;

@@ -3,6 +3,7 @@
 
 #include "actortable.h"
 #include "contactframe.h"
+#include "pose.h"
 #include "sceneoptions.h"
 
 #include <QString>
@@ -17,13 +18,6 @@ struct mjModel_;
 struct mjData_;
 
 namespace semhap {
-
-/** A position and an orientation (unit quaternion w, x, y, z) in world coordinates. */
-struct Pose
-{
-    std::array<double, 3> pos{};
-    std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};
-};
 
 /** A box-shaped region of the scene (a `<site>`): centre and half sizes, world axes. */
 struct Region

@@ -55,10 +55,6 @@
         <translation>router</translation>
     </message>
     <message>
-        <source>Who drives until you take over: scripted or reactive.</source>
-        <translation>Wer steuert, bis Sie übernehmen: scripted oder reactive.</translation>
-    </message>
-    <message>
         <source>name</source>
         <translation>name</translation>
     </message>
@@ -161,6 +157,10 @@
     <message>
         <source>Reaction time in seconds of the operator and of the person the router&apos;s predict nodes warn.</source>
         <translation>Reaktionszeit in Sekunden des Bedieners und der Person, die die Predict-Knoten des Routers warnen.</translation>
+    </message>
+    <message>
+        <source>Who drives until you do: scripted or reactive.</source>
+        <translation>Wer steuert, bis Sie es tun: scripted oder reactive.</translation>
     </message>
 </context>
 <context>
@@ -1253,14 +1253,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>F (N)</translation>
     </message>
     <message>
-        <source>left finger</source>
-        <translation>linker Finger</translation>
-    </message>
-    <message>
-        <source>right finger</source>
-        <translation>rechter Finger</translation>
-    </message>
-    <message>
         <source>F (sum)</source>
         <translation>F (Summe)</translation>
     </message>
@@ -1355,6 +1347,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Export PNG</source>
         <translation>PNG exportieren</translation>
+    </message>
+    <message>
+        <source>left.f (finger)</source>
+        <translation>left.f (Finger)</translation>
+    </message>
+    <message>
+        <source>right.f (finger)</source>
+        <translation>right.f (Finger)</translation>
     </message>
 </context>
 <context>
@@ -1788,8 +1788,8 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Skriptgesteuerter Bediener</translation>
     </message>
     <message>
-        <source>Click here and press W A S D to take over</source>
-        <translation>Hier klicken und W A S D drücken, um zu übernehmen</translation>
+        <source>Click here and press W A S D to drive</source>
+        <translation>Hier klicken und W A S D drücken, um zu steuern</translation>
     </message>
 </context>
 <context>

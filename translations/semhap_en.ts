@@ -55,10 +55,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Who drives until you take over: scripted or reactive.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>name</source>
         <translation type="unfinished"></translation>
     </message>
@@ -160,6 +156,10 @@
     </message>
     <message>
         <source>Reaction time in seconds of the operator and of the person the router&apos;s predict nodes warn.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who drives until you do: scripted or reactive.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1252,14 +1252,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>left finger</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>right finger</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>F (sum)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1353,6 +1345,14 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Export PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left.f (finger)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right.f (finger)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1787,7 +1787,7 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Click here and press W A S D to take over</source>
+        <source>Click here and press W A S D to drive</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -5,7 +5,7 @@
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogpanel.h"
-#include "keyboardteleop.h"
+#include "keyboarddrive.h"
 #include "liverigdialog.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
@@ -81,10 +81,10 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     setObjectName(QStringLiteral("mainWindow"));
     m_viewport = new SimViewport(this);
     setCentralWidget(m_viewport);
-    m_teleop = new KeyboardTeleop(this);
-    m_viewport->setTeleop(m_teleop);
-    // The world runs on the engine's thread: a takeover reads it between two ticks.
-    m_teleop->setStartSource([this] { return m_engine.handCommands(); });
+    m_keyboardDrive = new KeyboardDrive(this);
+    m_viewport->setKeyboardDrive(m_keyboardDrive);
+    // The world runs on the engine's thread: starting to drive reads it between two ticks.
+    m_keyboardDrive->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
 
     createActions();
@@ -201,12 +201,12 @@ void MainWindow::createActions()
         statusBar()->showMessage(tr("Stopped: every device was sent to zero."), 5000);
     });
 
-    m_teleopAction =
-        action(tr("Drive"), QStringLiteral("teleopAction"), QKeySequence(Qt::CTRL | Qt::Key_T));
-    m_teleopAction->setCheckable(true);
-    m_teleopAction->setToolTip(tr("Take the grippers over from the scripted operator "
+    m_driveAction =
+        action(tr("Drive"), QStringLiteral("driveAction"), QKeySequence(Qt::CTRL | Qt::Key_T));
+    m_driveAction->setCheckable(true);
+    m_driveAction->setToolTip(tr("Take the grippers over from the scripted operator "
                                   "(Ctrl+T); any key or pose input does it too"));
-    connect(m_teleopAction, &QAction::toggled, &m_engine, &Engine::setManual);
+    connect(m_driveAction, &QAction::toggled, &m_engine, &Engine::setDriving);
     m_forcesAction = action(tr("Contact forces"), QStringLiteral("forcesAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_F));
     m_forcesAction->setCheckable(true);
@@ -322,7 +322,7 @@ void MainWindow::createToolBar()
     connect(m_routerPicker, &QComboBox::activated, this, &MainWindow::pickRouter);
     bar->addWidget(m_routerPicker);
     bar->addSeparator();
-    bar->addAction(m_teleopAction);
+    bar->addAction(m_driveAction);
     bar->addAction(m_forcesAction);
     bar->addSeparator();
     bar->addAction(m_recordAction);
@@ -453,7 +453,7 @@ void MainWindow::createMenus()
     run->addAction(m_realTimeAction);
     run->addAction(m_fasterAction);
     run->addSeparator();
-    run->addAction(m_teleopAction);
+    run->addAction(m_driveAction);
     run->addAction(m_recordAction);
     run->addAction(m_stopAllAction);
 
@@ -495,7 +495,7 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::sourceAboutToChange, this, [this] {
         // Everything that holds the old source's world lets go before the engine frees it.
         m_viewport->setScene(nullptr, nullptr);
-        m_teleop->setWorld(nullptr);
+        m_keyboardDrive->setWorld(nullptr);
         m_poseInput->setWorld(nullptr);
     });
     connect(&m_engine, &Engine::sourceChanged, this, &MainWindow::showSource);
@@ -514,9 +514,9 @@ void MainWindow::connectEngine()
             style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
         updateMode();
     });
-    connect(&m_engine, &Engine::manualChanged, this, [this](bool manual) {
-        m_teleopAction->setChecked(manual);
-        m_viewport->setManualControl(manual);
+    connect(&m_engine, &Engine::drivingChanged, this, [this](bool driving) {
+        m_driveAction->setChecked(driving);
+        m_viewport->setDriving(driving);
         updateStatus();
     });
     connect(&m_engine, &Engine::recordingChanged, this, [this](bool recording) {
@@ -527,9 +527,9 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::finished, this, [this] {
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
-    // Any teleoperation input hands the grippers to the user.
-    connect(m_teleop, &KeyboardTeleop::engaged, this, [this] { m_engine.setManual(true); });
-    connect(m_poseInput, &PoseInput::engaged, this, [this] { m_engine.setManual(true); });
+    // Any drive input hands the grippers to the user.
+    connect(m_keyboardDrive, &KeyboardDrive::driveStarted, this, [this] { m_engine.setDriving(true); });
+    connect(m_poseInput, &PoseInput::driveStarted, this, [this] { m_engine.setDriving(true); });
 }
 
 void MainWindow::toggleRecording()
@@ -570,9 +570,9 @@ void MainWindow::showSource()
     }
     // Only a simulation's grippers follow the user; a replay's bodies go where they were.
     const World *drivable = source.isDrivable() ? source.world() : nullptr;
-    m_teleop->setOperator(m_engine.manualOperator());
-    m_teleop->setWorld(drivable);
-    m_poseInput->setOperator(m_engine.manualOperator());
+    m_keyboardDrive->setOperator(m_engine.driveOperator());
+    m_keyboardDrive->setWorld(drivable);
+    m_poseInput->setOperator(m_engine.driveOperator());
     m_poseInput->setWorld(drivable);
     m_shownRejections = 0;
     updateMode();
@@ -626,7 +626,7 @@ void MainWindow::updateMode()
         action->setEnabled(!replaying);
     // A live rig keeps its own pace and drives its own grippers.
     for (QAction *action :
-         {m_teleopAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
+         {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
         action->setEnabled(simulating);
     m_speedPicker->setEnabled(simulating);
     m_stepAction->setEnabled(simulating && !m_engine.isRunning());
@@ -756,7 +756,7 @@ void MainWindow::updateStatus()
         m_engine.isRunning()
             ? tr("%1× real time").arg(locale.toString(m_engine.realtimeFactor(), 'f', 2))
             : tr("paused"));
-    m_operatorLabel->setText(m_engine.isManual()
+    m_operatorLabel->setText(m_engine.isDriving()
                                  ? tr("You are driving")
                                  : tr("Operator: %1").arg(m_engine.options().operatorName));
     updateDevicesStatus();

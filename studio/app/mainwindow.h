@@ -16,7 +16,7 @@ namespace semhap {
 
 class DevicesPanel;
 class EventLogPanel;
-class KeyboardTeleop;
+class KeyboardDrive;
 class MetricsPanel;
 class PlotPanel;
 class PoseInput;
@@ -114,7 +114,7 @@ private:
     StudioOptions m_options;
     Engine m_engine;
     SimViewport *m_viewport = nullptr;
-    KeyboardTeleop *m_teleop = nullptr;
+    KeyboardDrive *m_keyboardDrive = nullptr;
     PoseInput *m_poseInput = nullptr;
     PlotPanel *m_plots = nullptr;
     EventLogPanel *m_eventLog = nullptr;
@@ -145,7 +145,7 @@ private:
     QAction *m_fasterAction = nullptr;
     QAction *m_realTimeAction = nullptr;
     QAction *m_stopAllAction = nullptr;
-    QAction *m_teleopAction = nullptr;
+    QAction *m_driveAction = nullptr;
     QAction *m_forcesAction = nullptr;
     QAction *m_openSceneAction = nullptr;
     QAction *m_openRouterAction = nullptr;

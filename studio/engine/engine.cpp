@@ -121,8 +121,8 @@ bool Engine::openReplay(const QString &path, QString *error)
     // Whatever the run sent last goes before the replay takes the history.
     m_feed.discard();
     m_source = &m_replay;
-    if (m_manual.exchange(false))
-        emit manualChanged(false);
+    if (m_driving.exchange(false))
+        emit drivingChanged(false);
     m_replay.begin();
     emit sourceChanged();
     return true;
@@ -227,8 +227,8 @@ void Engine::install()
     bindRouterDevices(player, &bindError);
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
-    if (m_manual.exchange(false))
-        emit manualChanged(false);
+    if (m_driving.exchange(false))
+        emit drivingChanged(false);
     m_simTime = m_simulation ? m_simulation->run().time() : 0.0;
     m_realtimeFactor = 0.0;
     m_nextMetrics = 0.0;
@@ -251,9 +251,9 @@ double Engine::simTime() const
     return isReplaying() ? m_replay.time() : m_simTime.load();
 }
 
-ManualOperator *Engine::manualOperator() const
+DriveOperator *Engine::driveOperator() const
 {
-    return m_simulation ? &m_simulation->manualOperator() : nullptr;
+    return m_simulation ? &m_simulation->driveOperator() : nullptr;
 }
 
 LiveRig::Stats Engine::liveStats() const
@@ -412,11 +412,11 @@ void Engine::setSpeed(double speed)
     emit speedChanged(speed);
 }
 
-void Engine::setManual(bool manual)
+void Engine::setDriving(bool driving)
 {
-    manual = manual && m_simulation;
-    if (m_manual.exchange(manual) != manual)
-        emit manualChanged(manual);
+    driving = driving && m_simulation;
+    if (m_driving.exchange(driving) != driving)
+        emit drivingChanged(driving);
 }
 
 bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
@@ -441,7 +441,7 @@ bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
     return true;
 }
 
-std::array<HandCommand, 2> Engine::handCommands()
+std::array<std::optional<HandCommand>, 2> Engine::handCommands()
 {
     if (!m_simulation)
         return {};
@@ -576,11 +576,11 @@ void Engine::silenceDevices()
 void Engine::stepOnce()
 {
     SimRun &run = m_simulation->run();
-    const bool manual = m_manual.load(std::memory_order_relaxed);
-    run.setOperatorOverride(manual ? &m_simulation->manualOperator() : nullptr);
+    const bool driving = m_driving.load(std::memory_order_relaxed);
+    run.setDriveOperator(driving ? &m_simulation->driveOperator() : nullptr);
     run.step(m_sink);
     const double t = run.time();
-    if (manual && m_recorder && t >= m_nextInput) {
+    if (driving && m_recorder && t >= m_nextInput) {
         m_nextInput = t + InputPeriod;
         recordInput(t);
     }
@@ -693,18 +693,11 @@ QString Engine::recordingFileName(const QString &name) const
 
 void Engine::recordInput(double t)
 {
-    const std::array<HandCommand, 2> commands = currentCommands(m_simulation->run().world());
-    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
-        const HandCommand &command = commands[size_t(hand)];
-        if (!command.present)
+    for (std::optional<HandCommand> command : currentCommands(m_simulation->run().world())) {
+        if (!command)
             continue;
-        OperatorInput input;
-        input.t = t;
-        input.hand = hand;
-        input.pos = command.target.pos;
-        input.quat = command.target.quat;
-        input.grip = command.grip;
-        m_recorder->recordOperatorInput(input);
+        command->t = t;
+        m_recorder->recordHandCommand(*command);
     }
 }
 

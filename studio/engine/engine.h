@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "handcommand.h"
 #include "liverig.h"
 #include "runfeed.h"
 #include "runhistory.h"
@@ -113,15 +112,15 @@ public:
     void setSpeed(double speed);
 
     /**
-     * Hands the grippers to the user (ManualOperator) or back to the run's own operator; a
+     * Hands the grippers to the user (DriveOperator) or back to the run's own operator; a
      * simulation only.
      */
-    void setManual(bool manual);
-    bool isManual() const { return m_manual.load(); }
+    void setDriving(bool driving);
+    bool isDriving() const { return m_driving.load(); }
     /** The user's pose-and-grip input; null unless a simulation is loaded. */
-    ManualOperator *manualOperator() const;
-    /** Each hand's target and grip now, read between two ticks: where a takeover starts. */
-    std::array<HandCommand, 2> handCommands();
+    DriveOperator *driveOperator() const;
+    /** Each hand's target and grip now, read between two ticks: where driving starts. */
+    std::array<std::optional<HandCommand>, 2> handCommands();
 
     /** Binds a router device name to a transport at a tick boundary. */
     bool bindDevice(const QString &name, const QString &uri, QString *error);
@@ -172,7 +171,7 @@ signals:
     /** A source was loaded, listened to, opened or reset (source() says which). */
     void sourceChanged();
     void runningChanged(bool running);
-    void manualChanged(bool manual);
+    void drivingChanged(bool driving);
     /** The run reached its duration. */
     void finished();
     void speedChanged(double speed);
@@ -254,7 +253,7 @@ private:
     std::mutex m_setupMutex; ///< held by the pipeline thread per batch of ticks
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_running{false};
-    std::atomic<bool> m_manual{false};
+    std::atomic<bool> m_driving{false};
     std::atomic<int> m_speedEpoch{0}; ///< bumped on each speed change: the pacing restarts
     int m_generation = 0;             ///< bumped on each load: late metrics are dropped
     double m_nextMetrics = 0.0;       ///< pipeline thread: when metrics go out next

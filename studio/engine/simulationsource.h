@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "manualoperator.h"
+#include "driveoperator.h"
 #include "runsource.h"
 #include "scenefeed.h"
 #include "simrun.h"
@@ -12,7 +12,7 @@ namespace semhap {
 
 /**
  * A simulation as the engine's source: the SimRun, the pictures the viewport draws of its
- * world, and the operator the user drives the grippers through when they take over.
+ * world, and the operator the user drives the grippers through.
  */
 class SimulationSource : public RunSource
 {
@@ -27,12 +27,12 @@ public:
 
     SimRun &run() { return *m_run; }
     const SimRun &run() const { return *m_run; }
-    ManualOperator &manualOperator() { return m_manualOperator; }
+    DriveOperator &driveOperator() { return m_manualOperator; }
 
 private:
     std::unique_ptr<SimRun> m_run;
     std::unique_ptr<SceneFeed> m_sceneFeed;
-    ManualOperator m_manualOperator;
+    DriveOperator m_manualOperator;
 };
 
 } // namespace semhap

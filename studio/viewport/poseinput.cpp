@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "poseinput.h"
 
-#include "handcommand.h"
-#include "manualoperator.h"
+#include "driveoperator.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -50,7 +49,7 @@ void PoseInput::setWorld(const World *world)
     m_world = world;
     m_hasPos = {};
     m_pose = {};
-    m_engaged = false;
+    m_driving = false;
 }
 
 bool PoseInput::listen(quint16 port, const QHostAddress &address)
@@ -59,7 +58,7 @@ bool PoseInput::listen(quint16 port, const QHostAddress &address)
     if (!m_socket.bind(address, port))
         return false;
     m_socket.setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, ReceiveBuffer);
-    m_engaged = false;
+    m_driving = false;
     m_rateClock.start();
     return true;
 }
@@ -129,7 +128,7 @@ void PoseInput::readPending()
     }
 }
 
-bool PoseInput::parse(const QByteArray &datagram, PoseCommand *command, QString *error)
+bool PoseInput::parse(const QByteArray &datagram, PoseUpdate *update, QString *error)
 {
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(datagram, &parseError);
@@ -143,21 +142,21 @@ bool PoseInput::parse(const QByteArray &datagram, PoseCommand *command, QString 
         return false;
     }
     const QJsonObject object = document.object();
-    *command = PoseCommand();
+    *update = PoseUpdate();
     for (auto it = object.begin(); it != object.end(); ++it) {
         const QString &key = it.key();
         const QJsonValue value = it.value();
         if (key == QLatin1String("hand")) {
-            if (!gripperFromName(value.toString(), &command->hand)) {
+            if (!gripperFromName(value.toString(), &update->command.hand)) {
                 *error = tr("key 'hand': expected \"left\" or \"right\"");
                 return false;
             }
         } else if (key == QLatin1String("pos")) {
-            if (!numbers(value, &command->pos)) {
+            if (!numbers(value, &update->command.target.pos)) {
                 *error = tr("key 'pos': expected an array of 3 numbers (metres)");
                 return false;
             }
-            for (double v : command->pos) {
+            for (double v : update->command.target.pos) {
                 if (std::abs(v) > MaxCoordinate) {
                     *error = tr("key 'pos': %1 is beyond %2 m from the origin (positions "
                                 "are in metres)")
@@ -166,9 +165,9 @@ bool PoseInput::parse(const QByteArray &datagram, PoseCommand *command, QString 
                     return false;
                 }
             }
-            command->hasPos = true;
+            update->hasPos = true;
         } else if (key == QLatin1String("quat")) {
-            auto &q = command->quat;
+            auto &q = update->command.target.quat;
             const bool valid = numbers(value, &q);
             const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
             if (!valid || norm < 1e-6) {
@@ -177,21 +176,21 @@ bool PoseInput::parse(const QByteArray &datagram, PoseCommand *command, QString 
             }
             for (double &v : q)
                 v /= norm;
-            command->hasQuat = true;
+            update->hasQuat = true;
         } else if (key == QLatin1String("yaw")) {
             if (!value.isDouble() || !std::isfinite(value.toDouble())) {
                 *error = tr("key 'yaw': expected a number (radians)");
                 return false;
             }
-            command->quat = yawQuaternion(value.toDouble());
-            command->hasQuat = true;
+            update->command.target.quat = yawQuaternion(value.toDouble());
+            update->hasQuat = true;
         } else if (key == QLatin1String("grip")) {
             if (!value.isDouble() || !std::isfinite(value.toDouble())) {
                 *error = tr("key 'grip': expected a number (newtons)");
                 return false;
             }
-            command->grip = value.toDouble();
-            command->hasGrip = true;
+            update->command.grip = value.toDouble();
+            update->hasGrip = true;
         } else {
             *error = tr("unknown key '%1' (expected hand, pos, quat or yaw, grip)").arg(key);
             return false;
@@ -210,40 +209,40 @@ bool PoseInput::parse(const QByteArray &datagram, PoseCommand *command, QString 
 
 void PoseInput::handle(const QByteArray &datagram)
 {
-    PoseCommand command;
+    PoseUpdate update;
     QString error;
-    if (!parse(datagram, &command, &error)) {
+    if (!parse(datagram, &update, &error)) {
         refuse(error);
         return;
     }
-    const size_t hand = size_t(command.hand);
-    if (m_world && !m_world->hasGripper(command.hand)) {
-        refuse(tr("key 'hand': this scene has no %1 gripper").arg(gripperName(command.hand)));
+    const size_t hand = size_t(update.command.hand);
+    if (m_world && !m_world->hasGripper(update.command.hand)) {
+        refuse(tr("key 'hand': this scene has no %1 gripper").arg(gripperName(update.command.hand)));
         return;
     }
-    if (command.hasQuat && !command.hasPos && !m_hasPos[hand]) {
+    if (update.hasQuat && !update.hasPos && !m_hasPos[hand]) {
         refuse(tr("key 'pos' is needed before the %1 hand can be turned on its own")
-                   .arg(gripperName(command.hand)));
+                   .arg(gripperName(update.command.hand)));
         return;
     }
-    if (command.hasPos) {
-        m_pose[hand].pos = command.pos;
+    if (update.hasPos) {
+        m_pose[hand].pos = update.command.target.pos;
         m_hasPos[hand] = true;
     }
-    if (command.hasQuat)
-        m_pose[hand].quat = command.quat;
+    if (update.hasQuat)
+        m_pose[hand].quat = update.command.target.quat;
 
     ++m_accepted;
-    if (!m_engaged) {
-        m_engaged = true;
-        emit engaged();
+    if (!m_driving) {
+        m_driving = true;
+        emit driveStarted();
     }
     if (!m_operator)
         return;
-    if (command.hasPos || command.hasQuat)
-        m_operator->setTarget(command.hand, m_pose[hand]);
-    if (command.hasGrip)
-        m_operator->setGrip(command.hand, command.grip);
+    if (update.hasPos || update.hasQuat)
+        m_operator->setTarget(update.command.hand, m_pose[hand]);
+    if (update.hasGrip)
+        m_operator->setGrip(update.command.hand, update.command.grip);
 }
 
 void PoseInput::refuse(const QString &error)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "driveoperator.h"
 #include "world.h"
 
 #include <QByteArray>
@@ -13,23 +14,18 @@
 
 namespace semhap {
 
-class ManualOperator;
-
-/** One hand's command from a datagram: what it sets, the rest left as it was. */
-struct PoseCommand
+/** What one datagram says about a hand: its command, and which parts of it it sets. */
+struct PoseUpdate
 {
-    Gripper hand = Gripper::Right;
+    HandCommand command; ///< the parts not set are left as they were
     bool hasPos = false;
-    std::array<double, 3> pos{}; ///< world frame, metres
     bool hasQuat = false;
-    std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0}; ///< unit, w x y z
     bool hasGrip = false;
-    double grip = 0.0; ///< total grip force (N); negative opens
 };
 
 /**
  * Wrist poses and grips from a tracking rig (VR, motion capture, a script) over UDP: one
- * JSON object per datagram, as studio/README.md describes, applied to a ManualOperator.
+ * JSON object per datagram, as studio/README.md describes, applied to a DriveOperator.
  * Bad datagrams are counted and described, never fatal; a flood is read in batches so the
  * GUI's event loop keeps running.
  */
@@ -47,7 +43,7 @@ public:
     ~PoseInput() override;
 
     /** Where valid commands go (null: nowhere). Not owned. */
-    void setOperator(ManualOperator *op) { m_operator = op; }
+    void setOperator(DriveOperator *op) { m_operator = op; }
     /** The scene driven (null: any hand goes): a hand it lacks is an error. */
     void setWorld(const World *world);
 
@@ -63,11 +59,11 @@ public:
      * Parses one datagram into `command`; false with `error` saying which key is wrong and
      * why. A datagram without "pos" turns or grips the hand where it is.
      */
-    static bool parse(const QByteArray &datagram, PoseCommand *command, QString *error);
+    static bool parse(const QByteArray &datagram, PoseUpdate *update, QString *error);
 
-    /** The next valid datagram takes over again (and emits engaged()). */
-    void disengage() { m_engaged = false; }
-    bool isEngaged() const { return m_engaged; }
+    /** The next valid datagram starts driving again (and emits driveStarted()). */
+    void endDrive() { m_driving = false; }
+    bool isDriving() const { return m_driving; }
 
     quint64 datagramCount() const { return m_datagrams; }
     quint64 acceptedCount() const { return m_accepted; }
@@ -78,8 +74,8 @@ public:
     double rate() const;
 
 signals:
-    /** The first valid datagram after listen() or disengage(): the rig takes the grippers. */
-    void engaged();
+    /** The first valid datagram after listen() or endDrive(): the rig takes the grippers. */
+    void driveStarted();
     /** A datagram was refused; lastError() says why. */
     void malformed(const QString &error);
 
@@ -91,13 +87,13 @@ private:
 
     QUdpSocket m_socket;
     const World *m_world = nullptr;
-    ManualOperator *m_operator = nullptr;
+    DriveOperator *m_operator = nullptr;
     /** What each hand was last sent: a datagram without a key keeps its value. */
     std::array<Pose, 2> m_pose{};
     std::array<bool, 2> m_hasPos{};
     QByteArray m_buffer;
     bool m_readScheduled = false;
-    bool m_engaged = false;
+    bool m_driving = false;
     quint64 m_datagrams = 0;
     quint64 m_accepted = 0;
     quint64 m_malformed = 0;

@@ -2,7 +2,7 @@
 #include "simviewport.h"
 #include "colors.h"
 
-#include "keyboardteleop.h"
+#include "keyboarddrive.h"
 #include "scenefeed.h"
 #include "world.h"
 
@@ -83,8 +83,8 @@ void SimViewport::setScene(const World *world, SceneFeed *feed)
         createRenderer();
         doneCurrent();
     }
-    if (m_teleop)
-        m_teleop->setWorld(world);
+    if (m_keyboardDrive)
+        m_keyboardDrive->setWorld(world);
     m_home = world ? defaultCamera(*world) : OrbitCamera();
     changeCamera(m_home);
 }
@@ -101,19 +101,19 @@ void SimViewport::setCaption(const QString &text)
     update();
 }
 
-void SimViewport::setTeleop(KeyboardTeleop *teleop)
+void SimViewport::setKeyboardDrive(KeyboardDrive *drive)
 {
-    if (m_teleop)
-        disconnect(m_teleop, nullptr, this, nullptr);
-    m_teleop = teleop;
-    if (!teleop)
+    if (m_keyboardDrive)
+        disconnect(m_keyboardDrive, nullptr, this, nullptr);
+    m_keyboardDrive = drive;
+    if (!drive)
         return;
-    teleop->setWorld(m_world);
-    teleop->setViewAzimuth(m_camera.azimuth);
-    connect(teleop, &KeyboardTeleop::changed, this, qOverload<>(&SimViewport::update));
-    // Any teleoperation input hands the grippers to the user.
-    connect(teleop, &KeyboardTeleop::engaged, this, [this] { setManualControl(true); });
-    connect(teleop, &QObject::destroyed, this, [this] { m_teleop = nullptr; });
+    drive->setWorld(m_world);
+    drive->setViewAzimuth(m_camera.azimuth);
+    connect(drive, &KeyboardDrive::changed, this, qOverload<>(&SimViewport::update));
+    // Any drive input hands the grippers to the user.
+    connect(drive, &KeyboardDrive::driveStarted, this, [this] { setDriving(true); });
+    connect(drive, &QObject::destroyed, this, [this] { m_keyboardDrive = nullptr; });
 }
 
 void SimViewport::setShowForces(bool show)
@@ -124,13 +124,13 @@ void SimViewport::setShowForces(bool show)
         m_feed->setShowForces(show);
 }
 
-void SimViewport::setManualControl(bool manual)
+void SimViewport::setDriving(bool driving)
 {
-    if (m_manual == manual)
+    if (m_driving == driving)
         return;
-    m_manual = manual;
-    if (!manual && m_teleop)
-        m_teleop->disengage(); // taking over again starts from where the script left off
+    m_driving = driving;
+    if (!driving && m_keyboardDrive)
+        m_keyboardDrive->endDrive(); // driving again starts from where the script left off
     update();
 }
 
@@ -185,8 +185,8 @@ void SimViewport::changeCamera(const OrbitCamera &camera)
         m_camera.lookAt[axis] = std::clamp(camera.lookAt[axis], m_home.lookAt[axis] - PanRange,
                                            m_home.lookAt[axis] + PanRange);
     }
-    if (m_teleop)
-        m_teleop->setViewAzimuth(m_camera.azimuth);
+    if (m_keyboardDrive)
+        m_keyboardDrive->setViewAzimuth(m_camera.azimuth);
     update();
     emit cameraChanged();
 }
@@ -283,24 +283,24 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     QString title;
     if (!m_caption.isEmpty()) {
         title = m_caption;
-    } else if (m_manual) {
-        const Gripper hand = m_teleop ? m_teleop->activeHand() : Gripper::Right;
+    } else if (m_driving) {
+        const Gripper hand = m_keyboardDrive ? m_keyboardDrive->activeHand() : Gripper::Right;
         title = hand == Gripper::Right ? tr("You are driving (right hand)")
                                        : tr("You are driving (left hand)");
-        if (m_teleop && m_teleop->command(hand).present) {
-            const double grip = m_teleop->command(hand).grip;
-            lines << (m_teleop->isClosed(hand)
+        if (m_keyboardDrive && m_keyboardDrive->command(hand)) {
+            const double grip = m_keyboardDrive->command(hand)->grip;
+            lines << (m_keyboardDrive->isClosed(hand)
                           ? tr("Grip: closed, %1 N").arg(grip, 0, 'f', 0)
                           : tr("Grip: open (closes to %1 N)")
-                                .arg(m_teleop->gripSetpoint(hand), 0, 'f', 0));
+                                .arg(m_keyboardDrive->gripSetpoint(hand), 0, 'f', 0));
         }
         lines << tr("W A S D move · R F up/down · Q E turn · Space grip · +/- force");
-        if (m_teleop && m_teleop->hasBothHands())
+        if (m_keyboardDrive && m_keyboardDrive->hasBothHands())
             lines << tr("Tab: switch hand");
     } else {
         title = tr("Scripted operator");
-        if (m_teleop)
-            lines << tr("Click here and press W A S D to take over");
+        if (m_keyboardDrive)
+            lines << tr("Click here and press W A S D to drive");
     }
 
     QFont bold = font;
@@ -406,8 +406,8 @@ void SimViewport::wheelEvent(QWheelEvent *event)
     const double notches = event->angleDelta().y() / 120.0;
     if (event->modifiers() & Qt::ControlModifier) {
         // Ctrl + wheel: the grip force, a whole step per notch.
-        if (m_teleop)
-            m_teleop->adjustGrip(int(std::lround(notches)));
+        if (m_keyboardDrive)
+            m_keyboardDrive->adjustGrip(int(std::lround(notches)));
     } else {
         OrbitCamera camera = m_camera;
         camera.distance *= std::pow(ZoomPerNotch, notches);
@@ -418,8 +418,8 @@ void SimViewport::wheelEvent(QWheelEvent *event)
 
 void SimViewport::keyPressEvent(QKeyEvent *event)
 {
-    // Auto-repeat would make a held key stutter: the teleop integrates held keys itself.
-    if (m_teleop && (event->isAutoRepeat() || m_teleop->press(event->key(), event->modifiers())))
+    // Auto-repeat would make a held key stutter: the keyboard drive integrates held keys itself.
+    if (m_keyboardDrive && (event->isAutoRepeat() || m_keyboardDrive->press(event->key(), event->modifiers())))
         event->accept();
     else
         QOpenGLWidget::keyPressEvent(event);
@@ -427,7 +427,7 @@ void SimViewport::keyPressEvent(QKeyEvent *event)
 
 void SimViewport::keyReleaseEvent(QKeyEvent *event)
 {
-    if (m_teleop && (event->isAutoRepeat() || m_teleop->release(event->key())))
+    if (m_keyboardDrive && (event->isAutoRepeat() || m_keyboardDrive->release(event->key())))
         event->accept();
     else
         QOpenGLWidget::keyReleaseEvent(event);
@@ -436,15 +436,15 @@ void SimViewport::keyReleaseEvent(QKeyEvent *event)
 void SimViewport::focusOutEvent(QFocusEvent *event)
 {
     // A key released elsewhere never reaches us: stop, or the hand drifts on.
-    if (m_teleop)
-        m_teleop->releaseAll();
+    if (m_keyboardDrive)
+        m_keyboardDrive->releaseAll();
     QOpenGLWidget::focusOutEvent(event);
 }
 
 bool SimViewport::focusNextPrevChild(bool next)
 {
     // With two hands, Tab switches between them instead of leaving the viewport.
-    if (m_teleop && m_teleop->hasBothHands())
+    if (m_keyboardDrive && m_keyboardDrive->hasBothHands())
         return false;
     return QOpenGLWidget::focusNextPrevChild(next);
 }

@@ -14,14 +14,14 @@ class QPainter;
 
 namespace semhap {
 
-class KeyboardTeleop;
+class KeyboardDrive;
 class SceneFeed;
 class World;
 
 /**
  * The simulation as a picture: draws a SceneFeed's newest capture at display rate with
  * MuJoCo's renderer, lets the mouse orbit, pan and zoom the camera, shows who drives the
- * grippers in a small overlay, and forwards teleoperation keys to a KeyboardTeleop. It only
+ * grippers in a small overlay, and forwards drive keys to a KeyboardDrive. It only
  * asks the feed for pictures; the simulation thread captures them.
  */
 class SimViewport : public QOpenGLWidget
@@ -46,16 +46,16 @@ public:
      */
     void setCaption(const QString &text);
     const QString &caption() const { return m_caption; }
-    /** Where teleoperation keys go (null: nowhere); it is given the scene. Not owned. */
-    void setTeleop(KeyboardTeleop *teleop);
-    KeyboardTeleop *teleop() const { return m_teleop; }
+    /** Where drive keys go (null: nowhere); it is given the scene. Not owned. */
+    void setKeyboardDrive(KeyboardDrive *drive);
+    KeyboardDrive *keyboardDrive() const { return m_keyboardDrive; }
 
     /** Draws contact forces as arrows. */
     void setShowForces(bool show);
     bool showForces() const { return m_showForces; }
     /** Whether the user drives the grippers (the overlay says so) or the scripted operator. */
-    void setManualControl(bool manual);
-    bool isManualControl() const { return m_manual; }
+    void setDriving(bool driving);
+    bool isDriving() const { return m_driving; }
 
     const OrbitCamera &camera() const { return m_camera; }
     void setCamera(const OrbitCamera &camera);
@@ -102,7 +102,7 @@ private:
     QString m_placeholder;
     QString m_caption;
     SceneFeed *m_feed = nullptr;
-    KeyboardTeleop *m_teleop = nullptr;
+    KeyboardDrive *m_keyboardDrive = nullptr;
     std::unique_ptr<SceneRenderer> m_renderer;
     OrbitCamera m_camera;
     OrbitCamera m_home;
@@ -112,7 +112,7 @@ private:
     QPoint m_lastMouse;
     bool m_panning = false;
     bool m_showForces = false;
-    bool m_manual = false;
+    bool m_driving = false;
     quint64 m_renderedFrames = 0;
 };
 

@@ -5,7 +5,7 @@
 // simulation, a live rig, a recording) and the router can be swapped while it runs.
 #include "devicemanager.h"
 #include "engine.h"
-#include "manualoperator.h"
+#include "driveoperator.h"
 #include "routergraph.h"
 #include "scenefeed.h"
 #include "sessionreader.h"
@@ -190,13 +190,13 @@ void TestEngine::userTakesOver()
     Engine engine;
     QString error;
     QVERIFY(engine.load(options(), &error));
-    QSignalSpy manual(&engine, &Engine::manualChanged);
-    engine.setManual(true);
+    QSignalSpy manual(&engine, &Engine::drivingChanged);
+    engine.setDriving(true);
     QCOMPARE(manual.count(), 1);
     Pose target = engine.world()->target(Gripper::Right);
     target.pos[2] += 0.05;
-    engine.manualOperator()->setTarget(Gripper::Right, target);
-    engine.manualOperator()->setGrip(Gripper::Right, 7.0);
+    engine.driveOperator()->setTarget(Gripper::Right, target);
+    engine.driveOperator()->setGrip(Gripper::Right, 7.0);
     engine.step();
     QTRY_VERIFY(engine.simTime() > 0.0);
     QTest::qWait(50);
@@ -259,7 +259,7 @@ void TestEngine::swapsSources()
     QVERIFY(engine.load(options(), &error));
     QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
     QVERIFY(engine.source()->isDrivable());
-    QVERIFY(engine.world() && engine.sceneFeed() && engine.manualOperator());
+    QVERIFY(engine.world() && engine.sceneFeed() && engine.driveOperator());
     engine.run();
     QTRY_VERIFY(engine.simTime() > 0.1);
 
@@ -268,9 +268,9 @@ void TestEngine::swapsSources()
     QVERIFY2(engine.listen(rig, &error), qPrintable(error));
     QCOMPARE(engine.source()->kind(), RunSource::Kind::Rig);
     QVERIFY(engine.isLive() && !engine.isRunning());
-    QVERIFY(!engine.world() && !engine.sceneFeed() && !engine.manualOperator());
-    engine.setManual(true); // nobody drives a rig's grippers from here
-    QVERIFY(!engine.isManual());
+    QVERIFY(!engine.world() && !engine.sceneFeed() && !engine.driveOperator());
+    engine.setDriving(true); // nobody drives a rig's grippers from here
+    QVERIFY(!engine.isDriving());
     QVERIFY(engine.liveOptions().port > 0);
     QCOMPARE(about.count(), 2);
     QCOMPARE(changed.count(), 2);

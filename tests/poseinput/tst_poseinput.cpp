@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The network pose input over loopback UDP: valid datagrams reach the ManualOperator (and
+// The network pose input over loopback UDP: valid datagrams reach the DriveOperator (and
 // through it the world's targets), bad ones are counted with a clear reason, and a flood
 // is read without freezing the event loop.
-#include "manualoperator.h"
+#include "driveoperator.h"
 #include "poseinput.h"
 #include "world.h"
 
@@ -34,7 +34,7 @@ private:
     bool waitFor(quint64 count);
 
     std::unique_ptr<World> m_world;
-    ManualOperator m_manual;
+    DriveOperator m_driving;
     std::unique_ptr<PoseInput> m_input;
     QUdpSocket m_sender;
 };
@@ -49,7 +49,7 @@ void TestPoseInput::initTestCase()
 void TestPoseInput::init()
 {
     m_input = std::make_unique<PoseInput>();
-    m_input->setOperator(&m_manual);
+    m_input->setOperator(&m_driving);
     m_input->setWorld(m_world.get());
     QVERIFY2(m_input->listen(0), qPrintable(m_input->errorString()));
     QVERIFY(m_input->isListening());
@@ -69,24 +69,24 @@ bool TestPoseInput::waitFor(quint64 count)
 
 void TestPoseInput::validDatagramsDriveTheHand()
 {
-    QSignalSpy engaged(m_input.get(), &PoseInput::engaged);
+    QSignalSpy engaged(m_input.get(), &PoseInput::driveStarted);
     send(R"({"hand":"right","pos":[0.05,-0.02,0.2],"yaw":0.5,"grip":12.5})");
     QVERIFY(waitFor(1));
     QCOMPARE(m_input->acceptedCount(), quint64(1));
     QCOMPARE(m_input->malformedCount(), quint64(0));
     QCOMPARE(engaged.count(), 1);
 
-    m_manual.act(*m_world);
+    m_driving.act(*m_world);
     const Pose target = m_world->target(Gripper::Right);
     QCOMPARE(target.pos, (std::array<double, 3>{0.05, -0.02, 0.2}));
     QVERIFY(std::abs(target.quat[0] - std::cos(0.25)) < 1e-12);
     QVERIFY(std::abs(target.quat[3] - std::sin(0.25)) < 1e-12);
     QCOMPARE(m_world->grip(Gripper::Right), 12.5);
 
-    // A quaternion instead of a yaw, normalised on the way in; engaged() only once.
+    // A quaternion instead of a yaw, normalised on the way in; driveStarted() only once.
     send(R"({"hand":"right","pos":[0,0,0.25],"quat":[2,0,0,0]})");
     QVERIFY(waitFor(2));
-    m_manual.act(*m_world);
+    m_driving.act(*m_world);
     QCOMPARE(m_world->target(Gripper::Right).quat, (std::array<double, 4>{1, 0, 0, 0}));
     QCOMPARE(engaged.count(), 1);
 }
@@ -98,7 +98,7 @@ void TestPoseInput::partialDatagramsKeepTheRest()
     send(R"({"hand":"right","grip":-20})");
     QVERIFY(waitFor(3));
     QCOMPARE(m_input->acceptedCount(), quint64(3));
-    m_manual.act(*m_world);
+    m_driving.act(*m_world);
     const Pose target = m_world->target(Gripper::Right);
     QCOMPARE(target.pos, (std::array<double, 3>{0.1, 0.0, 0.3}));
     QVERIFY(std::abs(target.quat[3] - std::sin(0.5)) < 1e-12);
@@ -142,7 +142,7 @@ void TestPoseInput::malformedDatagramsAreCounted()
     QFETCH(QByteArray, datagram);
     QFETCH(QString, error);
     QSignalSpy malformed(m_input.get(), &PoseInput::malformed);
-    QSignalSpy engaged(m_input.get(), &PoseInput::engaged);
+    QSignalSpy engaged(m_input.get(), &PoseInput::driveStarted);
     send(datagram);
     QVERIFY(waitFor(1));
     QCOMPARE(m_input->malformedCount(), quint64(1));
@@ -189,7 +189,7 @@ void TestPoseInput::floodKeepsTheEventLoopRunning()
     QCOMPARE(m_input->malformedCount(), quint64(0));
     QVERIFY(ticks > 20);
     QVERIFY(m_input->rate() > 1000);
-    m_manual.act(*m_world);
+    m_driving.act(*m_world);
     QVERIFY(m_world->target(Gripper::Right).pos[0] > 0.05); // late datagrams arrived
 }
 

@@ -44,7 +44,7 @@ struct Recording
     std::vector<double> arrivals;
     std::vector<SemanticEvent> events;
     std::vector<DeviceFrame> deviceFrames;
-    std::vector<OperatorInput> inputs;
+    std::vector<HandCommand> inputs;
     ActorTable actors;
 };
 
@@ -89,12 +89,12 @@ Recording synthetic(const Router &router, int ticks)
         for (int c = 0; c < device.channelCount; ++c)
             device.values[size_t(c)] = anyDouble(random);
         r.deviceFrames.push_back(device);
-        OperatorInput input;
+        HandCommand input;
         input.t = k * 0.001;
         input.hand = Gripper(k % 2);
-        for (double &v : input.pos)
+        for (double &v : input.target.pos)
             v = anyDouble(random);
-        for (double &v : input.quat)
+        for (double &v : input.target.quat)
             v = anyDouble(random);
         input.grip = -anyDouble(random);
         r.inputs.push_back(input);
@@ -117,7 +117,7 @@ void record(const QString &path, const Router &router, const Recording &r)
         if (i % 2 == 1) {
             writer->onEvent(r.events[i / 2]);
             writer->onDeviceFrame(r.deviceFrames[i / 2]);
-            writer->recordOperatorInput(r.inputs[i / 2]);
+            writer->recordHandCommand(r.inputs[i / 2]);
         }
     }
     QVERIFY2(writer->finish(&error), qPrintable(error));
@@ -234,15 +234,15 @@ void TestSessions::roundTripIsBitForBit()
     QCOMPARE(i, r.deviceFrames.size());
 
     i = 0;
-    QVERIFY(session->readOperatorInput(
-        [&](const OperatorInput &in) {
-            const OperatorInput &want = r.inputs[i++];
+    QVERIFY(session->readHandCommands(
+        [&](const HandCommand &in) {
+            const HandCommand &want = r.inputs[i++];
             bool same =
                 sameBits(in.t, want.t) && in.hand == want.hand && sameBits(in.grip, want.grip);
             for (size_t c = 0; c < 3; ++c)
-                same = same && sameBits(in.pos[c], want.pos[c]);
+                same = same && sameBits(in.target.pos[c], want.target.pos[c]);
             for (size_t c = 0; c < 4; ++c)
-                same = same && sameBits(in.quat[c], want.quat[c]);
+                same = same && sameBits(in.target.quat[c], want.target.quat[c]);
             return same;
         },
         &error));
@@ -500,7 +500,7 @@ void TestSessions::rowsAreCheckedAsStreamsAre()
                                       &error));
     QVERIFY(reader->readEvents([&](const SemanticEvent &) { return ++events; }, &error));
     QVERIFY(reader->readDeviceFrames([&](const DeviceFrame &) { return ++deviceFrames; }, &error));
-    QVERIFY(reader->readOperatorInput([&](const OperatorInput &) { return ++inputs; }, &error));
+    QVERIFY(reader->readHandCommands([&](const HandCommand &) { return ++inputs; }, &error));
     QCOMPARE(frames, qint64(good.frames.size()) - 5);
     QCOMPARE(events, qint64(good.events.size()) - 2);
     QCOMPARE(deviceFrames, qint64(good.deviceFrames.size()) - 1);

@@ -91,7 +91,7 @@ void TestStudio::opensOnTheDefaultsAndRuns()
     QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
-    QVERIFY(!window.engine().isManual());
+    QVERIFY(!window.engine().isDriving());
     for (const RunDevice &device : window.engine().history().devices())
         QCOMPARE(window.engine().devices().transport(device.name)->uri(),
                  "virtual:" + device.name);
@@ -199,18 +199,18 @@ void TestStudio::aKeyInTheViewportTakesOver()
 {
     MainWindow window(options());
     QVERIFY(openWindow(window));
-    auto *teleop = window.findChild<QAction *>("teleopAction");
+    auto *teleop = window.findChild<QAction *>("driveAction");
     QVERIFY(!teleop->isChecked());
     window.viewport()->setFocus();
     QTest::keyPress(window.viewport(), Qt::Key_W);
     QTest::qWait(100);
     QTest::keyRelease(window.viewport(), Qt::Key_W);
-    QTRY_VERIFY(window.engine().isManual());
+    QTRY_VERIFY(window.engine().isDriving());
     QVERIFY(teleop->isChecked());
     QTRY_COMPARE(window.findChild<QLabel *>("operatorLabel")->text(), QString("You are driving"));
     // The toolbar toggle hands the grippers back.
     teleop->trigger();
-    QVERIFY(!window.engine().isManual());
+    QVERIFY(!window.engine().isDriving());
 }
 
 void TestStudio::eventLogMovesThePlotCursor()

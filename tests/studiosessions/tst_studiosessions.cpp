@@ -181,7 +181,7 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     QVERIFY(replay->isOpen());
     QVERIFY(window.replayBar()->isVisible());
     // The run's controls are off while a replay owns the window.
-    for (const char *name : {"runAction", "stepAction", "teleopAction", "recordAction"})
+    for (const char *name : {"runAction", "stepAction", "driveAction", "recordAction"})
         QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
     QVERIFY(replay->endTime() > replay->startTime() + 3.0);
     // The viewport shows the recorded scene (schema 2 keeps its states at display rate).
@@ -367,7 +367,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QCOMPARE(window.scenePicker()->currentText(), QString("Live rig (UDP)…"));
     QVERIFY(window.viewport()->placeholder().startsWith("Live rig on udp:127.0.0.1"));
     // What only the simulation has is off: stepping, pacing, driving.
-    for (const char *name : {"stepAction", "teleopAction", "fasterAction", "slowerAction"})
+    for (const char *name : {"stepAction", "driveAction", "fasterAction", "slowerAction"})
         QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
     QVERIFY(!window.speedPicker()->isEnabled());
     QVERIFY(window.findChild<QAction *>("recordAction")->isEnabled());

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The simulation viewport in a real window with OpenGL (run under Xvfb): it draws the
 // scene, the mouse moves the camera, teleoperation keys move the active gripper's target
-// through a ManualOperator. Screenshots are saved beside the test binary to be looked at.
+// through a DriveOperator. Screenshots are saved beside the test binary to be looked at.
 #include "imagechecks.h"
-#include "keyboardteleop.h"
-#include "manualoperator.h"
+#include "keyboarddrive.h"
+#include "driveoperator.h"
 #include "scenefeed.h"
 #include "simviewport.h"
 #include "world.h"
@@ -25,7 +25,7 @@ struct Scene
 {
     std::unique_ptr<World> world;
     std::unique_ptr<SceneFeed> feed;
-    ManualOperator manual;
+    DriveOperator manual;
 };
 
 std::unique_ptr<Scene> loadScene(const QString &name, int steps)
@@ -80,7 +80,7 @@ private:
 
     std::unique_ptr<Scene> m_scene;
     SimViewport m_viewport;
-    KeyboardTeleop m_teleop;
+    KeyboardDrive m_keyboardDrive;
 };
 
 void TestViewport::pump(int ms, const SceneOverlay &overlay)
@@ -104,8 +104,8 @@ void TestViewport::initTestCase()
 {
     m_scene = loadScene("box_and_block", 50);
     QVERIFY(m_scene);
-    m_teleop.setOperator(&m_scene->manual);
-    m_viewport.setTeleop(&m_teleop);
+    m_keyboardDrive.setOperator(&m_scene->manual);
+    m_viewport.setKeyboardDrive(&m_keyboardDrive);
     m_viewport.resize(800, 600);
     m_viewport.show();
     QVERIFY(QTest::qWaitForWindowExposed(&m_viewport));
@@ -245,10 +245,10 @@ void TestViewport::wheelZooms()
 
     // Ctrl + wheel is the grip force, not the zoom.
     const double distance = m_viewport.camera().distance;
-    const double grip = m_teleop.gripSetpoint(Gripper::Right);
+    const double grip = m_keyboardDrive.gripSetpoint(Gripper::Right);
     wheel(1, Qt::ControlModifier);
     QCOMPARE(m_viewport.camera().distance, distance);
-    QCOMPARE(m_teleop.gripSetpoint(Gripper::Right), grip + KeyboardTeleop::GripStep);
+    QCOMPARE(m_keyboardDrive.gripSetpoint(Gripper::Right), grip + KeyboardDrive::GripStep);
     m_viewport.resetCamera();
 }
 
@@ -289,16 +289,16 @@ void TestViewport::keysMoveTheActiveHand()
     QFETCH(int, axis);
     QFETCH(int, sign);
     m_viewport.resetCamera();
-    m_viewport.setManualControl(false); // the script drives; the key takes over
+    m_viewport.setDriving(false); // the script drives; the key takes over
     World &world = *m_scene->world;
     const Pose before = world.target(Gripper::Right);
-    QSignalSpy engaged(&m_teleop, &KeyboardTeleop::engaged);
+    QSignalSpy engaged(&m_keyboardDrive, &KeyboardDrive::driveStarted);
 
     QTest::keyPress(&m_viewport, Qt::Key(key));
     QTest::qWait(150);
     QTest::keyRelease(&m_viewport, Qt::Key(key));
     QCOMPARE(engaged.count(), 1);
-    QVERIFY(m_viewport.isManualControl());
+    QVERIFY(m_viewport.isDriving());
     m_scene->manual.act(world);
     const Pose after = world.target(Gripper::Right);
 
@@ -323,26 +323,26 @@ void TestViewport::keysMoveTheActiveHand()
 
 void TestViewport::gripKeysRampTheGrip()
 {
-    m_viewport.setManualControl(false);
+    m_viewport.setDriving(false);
     World &world = *m_scene->world;
     QVERIFY(world.grip(Gripper::Right) <= 0);
     QTest::keyClick(&m_viewport, Qt::Key_Space);
-    QVERIFY(m_teleop.isClosed(Gripper::Right));
+    QVERIFY(m_keyboardDrive.isClosed(Gripper::Right));
     // A ramp, not a step: shortly after, the grip is on its way up.
     m_scene->manual.act(world);
-    QVERIFY(world.grip(Gripper::Right) < m_teleop.gripSetpoint(Gripper::Right));
-    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, m_teleop.gripSetpoint(Gripper::Right));
+    QVERIFY(world.grip(Gripper::Right) < m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, m_keyboardDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
-    QCOMPARE(world.grip(Gripper::Right), m_teleop.gripSetpoint(Gripper::Right));
+    QCOMPARE(world.grip(Gripper::Right), m_keyboardDrive.gripSetpoint(Gripper::Right));
 
     QTest::keyClick(&m_viewport, Qt::Key_Plus);
-    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, m_teleop.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, m_keyboardDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
-    QVERIFY(world.grip(Gripper::Right) > KeyboardTeleop::DefaultGrip);
+    QVERIFY(world.grip(Gripper::Right) > KeyboardDrive::DefaultGrip);
 
     QTest::keyClick(&m_viewport, Qt::Key_G);
-    QVERIFY(!m_teleop.isClosed(Gripper::Right));
-    QTRY_COMPARE(m_teleop.command(Gripper::Right).grip, KeyboardTeleop::OpenGrip);
+    QVERIFY(!m_keyboardDrive.isClosed(Gripper::Right));
+    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, KeyboardDrive::OpenGrip);
 }
 
 void TestViewport::forcesToggleReachesTheFeed()
@@ -359,20 +359,20 @@ void TestViewport::forcesToggleReachesTheFeed()
 void TestViewport::tabSwitchesHands()
 {
     // box_and_block has one hand: Tab is left to the focus chain.
-    QVERIFY(!m_teleop.hasBothHands());
+    QVERIFY(!m_keyboardDrive.hasBothHands());
 
     auto bimanual = loadScene("bimanual_sorting", 50);
     QVERIFY(bimanual);
     std::swap(m_scene, bimanual);
-    m_teleop.setOperator(&m_scene->manual);
+    m_keyboardDrive.setOperator(&m_scene->manual);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
-    m_viewport.setManualControl(false);
-    QVERIFY(m_teleop.hasBothHands());
-    QCOMPARE(m_teleop.activeHand(), Gripper::Right);
-    QSignalSpy engaged(&m_teleop, &KeyboardTeleop::engaged);
+    m_viewport.setDriving(false);
+    QVERIFY(m_keyboardDrive.hasBothHands());
+    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Right);
+    QSignalSpy engaged(&m_keyboardDrive, &KeyboardDrive::driveStarted);
 
     QTest::keyClick(&m_viewport, Qt::Key_Tab);
-    QCOMPARE(m_teleop.activeHand(), Gripper::Left);
+    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Left);
     QCOMPARE(engaged.count(), 1);
     // Tab did not move the focus away (asked of the window: another test may own the display).
     QCOMPARE(m_viewport.window()->focusWidget(), &m_viewport);
@@ -388,9 +388,9 @@ void TestViewport::tabSwitchesHands()
     QCOMPARE(world.target(Gripper::Right).pos, right.pos);
 
     QTest::keyClick(&m_viewport, Qt::Key_Tab);
-    QCOMPARE(m_teleop.activeHand(), Gripper::Right);
+    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Right);
     std::swap(m_scene, bimanual);
-    m_teleop.setOperator(&m_scene->manual);
+    m_keyboardDrive.setOperator(&m_scene->manual);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
 }
 
@@ -412,7 +412,7 @@ void TestViewport::screenshots()
     QVERIFY(shown);
     std::swap(m_scene, shown);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
-    m_viewport.setManualControl(manual);
+    m_viewport.setDriving(manual);
     m_viewport.setShowForces(true);
     m_viewport.resize(1280, 800);
     SceneOverlay overlay;
@@ -422,7 +422,7 @@ void TestViewport::screenshots()
     QCOMPARE(image.size(), QSize(1280, 800));
     image.save(QString("%1/viewport-%2.png").arg(QCoreApplication::applicationDirPath(), scene));
     m_viewport.setShowForces(false);
-    m_viewport.setManualControl(false);
+    m_viewport.setDriving(false);
     std::swap(m_scene, shown);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
     m_viewport.resize(800, 600);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The MuJoCo world: scenes load, fingertips report the force they grip with, fragile cubes
 // break above their force and not below, contact counts stay steady while an object slides.
-#include "manualoperator.h"
+#include "driveoperator.h"
 #include "world.h"
 
 #include <thread>
@@ -257,7 +257,7 @@ void TestWorld::manualInputDrivesTheGripper()
 {
     // The pose-and-grip input, written from another thread as the studio or a rig would.
     std::unique_ptr<World> world = loadWorld("box_and_block", 1);
-    ManualOperator input;
+    DriveOperator input;
     const auto cube = world->objectPosition(0);
     std::thread rig([&] {
         Pose above;
@@ -278,7 +278,7 @@ void TestWorld::manualInputDrivesTheGripper()
     const ContactFrame &frame = world->frame(Gripper::Right);
     QVERIFY(std::abs(frame.totalForce() - 30.0) < 1.5);
     QCOMPARE(frame.left.actor, world->objects()[0].actor);
-    QCOMPARE(input.name(), QString("manual"));
+    QCOMPARE(input.name(), QString("drive"));
 }
 
 void TestWorld::sceneStateRoundTrip_data()

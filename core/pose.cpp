@@ -1,23 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "handcommand.h"
+#include "pose.h"
 
 #include <cmath>
 
 namespace semhap {
-
-std::array<HandCommand, 2> currentCommands(const World &world)
-{
-    std::array<HandCommand, 2> commands{};
-    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
-        HandCommand &command = commands[size_t(hand)];
-        command.present = world.hasGripper(hand);
-        if (!command.present)
-            continue;
-        command.target = world.target(hand);
-        command.grip = world.grip(hand);
-    }
-    return commands;
-}
 
 std::array<double, 4> yawQuaternion(double yaw)
 {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The keyboard teleoperation without a window: directions follow the camera, the
 // workspace holds the wrist, Shift slows down, and taking over starts where the hands are.
-#include "keyboardteleop.h"
-#include "manualoperator.h"
+#include "keyboarddrive.h"
+#include "driveoperator.h"
 #include "world.h"
 
 #include <QSignalSpy>
@@ -12,7 +12,7 @@
 
 using namespace semhap;
 
-class TestKeyboardTeleop : public QObject
+class TestKeyboardDrive : public QObject
 {
     Q_OBJECT
 
@@ -31,34 +31,34 @@ private:
     Pose heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
 
     std::unique_ptr<World> m_world;
-    ManualOperator m_manual;
-    std::unique_ptr<KeyboardTeleop> m_teleop;
+    DriveOperator m_driving;
+    std::unique_ptr<KeyboardDrive> m_keyboardDrive;
 };
 
-void TestKeyboardTeleop::initTestCase()
+void TestKeyboardDrive::initTestCase()
 {
     QString error;
     m_world = World::load("box_and_block", SceneOptions(), &error);
     QVERIFY2(m_world, qPrintable(error));
 }
 
-void TestKeyboardTeleop::init()
+void TestKeyboardDrive::init()
 {
-    m_teleop = std::make_unique<KeyboardTeleop>();
-    m_teleop->setOperator(&m_manual);
-    m_teleop->setWorld(m_world.get());
+    m_keyboardDrive = std::make_unique<KeyboardDrive>();
+    m_keyboardDrive->setOperator(&m_driving);
+    m_keyboardDrive->setWorld(m_world.get());
 }
 
-Pose TestKeyboardTeleop::heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers)
+Pose TestKeyboardDrive::heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers)
 {
-    m_teleop->press(key, modifiers);
-    m_teleop->advance(seconds);
-    m_teleop->release(key);
-    m_manual.act(*m_world);
+    m_keyboardDrive->press(key, modifiers);
+    m_keyboardDrive->advance(seconds);
+    m_keyboardDrive->release(key);
+    m_driving.act(*m_world);
     return m_world->target(Gripper::Right);
 }
 
-void TestKeyboardTeleop::directionsFollowTheView_data()
+void TestKeyboardDrive::directionsFollowTheView_data()
 {
     QTest::addColumn<double>("azimuth");
     QTest::addColumn<double>("x");
@@ -70,12 +70,12 @@ void TestKeyboardTeleop::directionsFollowTheView_data()
     QTest::newRow("slanted, nearest -x") << 200.0 << -1.0 << 0.0;
 }
 
-void TestKeyboardTeleop::directionsFollowTheView()
+void TestKeyboardDrive::directionsFollowTheView()
 {
     QFETCH(double, azimuth);
     QFETCH(double, x);
     QFETCH(double, y);
-    m_teleop->setViewAzimuth(azimuth);
+    m_keyboardDrive->setViewAzimuth(azimuth);
     const Pose before = m_world->target(Gripper::Right);
     const Pose away = heldFor(Qt::Key_W, 0.2);
     QVERIFY(std::abs((away.pos[0] - before.pos[0]) - x * 0.2 * 0.15) < 0.004);
@@ -86,7 +86,7 @@ void TestKeyboardTeleop::directionsFollowTheView()
     QVERIFY(std::abs((right.pos[1] - away.pos[1]) + x * 0.2 * 0.15) < 0.004);
 }
 
-void TestKeyboardTeleop::workspaceHoldsTheWrist_data()
+void TestKeyboardDrive::workspaceHoldsTheWrist_data()
 {
     QTest::addColumn<int>("key");
     QTest::addColumn<int>("axis");
@@ -99,7 +99,7 @@ void TestKeyboardTeleop::workspaceHoldsTheWrist_data()
     QTest::newRow("away") << int(Qt::Key_W) << 1 << 0.25;
 }
 
-void TestKeyboardTeleop::workspaceHoldsTheWrist()
+void TestKeyboardDrive::workspaceHoldsTheWrist()
 {
     QFETCH(int, key);
     QFETCH(int, axis);
@@ -111,51 +111,52 @@ void TestKeyboardTeleop::workspaceHoldsTheWrist()
              qPrintable(QString::number(pose.pos[size_t(axis)])));
 }
 
-void TestKeyboardTeleop::shiftSlowsDown()
+void TestKeyboardDrive::shiftSlowsDown()
 {
     const double z = m_world->target(Gripper::Right).pos[2];
     const double fast = heldFor(Qt::Key_R, 0.2).pos[2] - z;
     const double slow = heldFor(Qt::Key_F, 0.2, Qt::ShiftModifier).pos[2] - (z + fast);
-    QVERIFY2(std::abs(slow / fast + KeyboardTeleop::SlowFactor) < 0.05,
+    QVERIFY2(std::abs(slow / fast + KeyboardDrive::SlowFactor) < 0.05,
              qPrintable(QString("%1 vs %2").arg(slow).arg(fast)));
 }
 
-void TestKeyboardTeleop::takingOverStartsWhereTheHandsAre()
+void TestKeyboardDrive::takingOverStartsWhereTheHandsAre()
 {
-    QSignalSpy engaged(m_teleop.get(), &KeyboardTeleop::engaged);
+    QSignalSpy engaged(m_keyboardDrive.get(), &KeyboardDrive::driveStarted);
     // Wherever the scripted operator left the hand, closed on something.
-    std::array<HandCommand, 2> start{};
-    start[1].present = true;
-    start[1].target.pos = {0.1, -0.05, 0.2};
-    start[1].grip = 42.0;
-    m_teleop->setStartSource([&] { return start; });
-    QVERIFY(m_teleop->press(Qt::Key_G));
+    std::array<std::optional<HandCommand>, 2> start{};
+    start[1] = HandCommand{};
+    start[1]->hand = Gripper::Right;
+    start[1]->target.pos = {0.1, -0.05, 0.2};
+    start[1]->grip = 42.0;
+    m_keyboardDrive->setStartSource([&] { return start; });
+    QVERIFY(m_keyboardDrive->press(Qt::Key_G));
     QCOMPARE(engaged.count(), 1);
-    QCOMPARE(m_teleop->command(Gripper::Right).target.pos, start[1].target.pos);
+    QCOMPARE(m_keyboardDrive->command(Gripper::Right)->target.pos, start[1]->target.pos);
     // It was closed: G opens it, ramping down from 42 N.
-    QVERIFY(!m_teleop->isClosed(Gripper::Right));
-    m_teleop->advance(0.1);
-    QCOMPARE(m_teleop->command(Gripper::Right).grip, 42.0 - 0.1 * KeyboardTeleop::GripRate);
-    m_manual.act(*m_world);
-    QCOMPARE(m_world->target(Gripper::Right).pos, start[1].target.pos);
+    QVERIFY(!m_keyboardDrive->isClosed(Gripper::Right));
+    m_keyboardDrive->advance(0.1);
+    QCOMPARE(m_keyboardDrive->command(Gripper::Right)->grip, 42.0 - 0.1 * KeyboardDrive::GripRate);
+    m_driving.act(*m_world);
+    QCOMPARE(m_world->target(Gripper::Right).pos, start[1]->target.pos);
 
     // Handed back and taken again: from wherever the hand is by then.
-    m_teleop->disengage();
-    start[1].target.pos = {-0.1, 0.05, 0.25};
-    QVERIFY(m_teleop->press(Qt::Key_Plus));
+    m_keyboardDrive->endDrive();
+    start[1]->target.pos = {-0.1, 0.05, 0.25};
+    QVERIFY(m_keyboardDrive->press(Qt::Key_Plus));
     QCOMPARE(engaged.count(), 2);
-    QCOMPARE(m_teleop->command(Gripper::Right).target.pos, start[1].target.pos);
+    QCOMPARE(m_keyboardDrive->command(Gripper::Right)->target.pos, start[1]->target.pos);
 }
 
-void TestKeyboardTeleop::unmappedKeysAreLeftAlone()
+void TestKeyboardDrive::unmappedKeysAreLeftAlone()
 {
-    QSignalSpy engaged(m_teleop.get(), &KeyboardTeleop::engaged);
-    QVERIFY(!m_teleop->press(Qt::Key_X));
-    QVERIFY(!m_teleop->press(Qt::Key_Tab)); // one hand: Tab is the focus chain's
-    QVERIFY(!m_teleop->press(Qt::Key_Shift));
+    QSignalSpy engaged(m_keyboardDrive.get(), &KeyboardDrive::driveStarted);
+    QVERIFY(!m_keyboardDrive->press(Qt::Key_X));
+    QVERIFY(!m_keyboardDrive->press(Qt::Key_Tab)); // one hand: Tab is the focus chain's
+    QVERIFY(!m_keyboardDrive->press(Qt::Key_Shift));
     QCOMPARE(engaged.count(), 0);
-    QVERIFY(!m_teleop->isEngaged());
+    QVERIFY(!m_keyboardDrive->isDriving());
 }
 
-QTEST_MAIN(TestKeyboardTeleop)
-#include "tst_keyboardteleop.moc"
+QTEST_MAIN(TestKeyboardDrive)
+#include "tst_keyboarddrive.moc"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "handcommand.h"
+#include "driveoperator.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -12,16 +12,16 @@
 
 namespace semhap {
 
-class ManualOperator;
+class DriveOperator;
 
 /**
  * The keyboard's teleoperation: held keys move the active gripper's wrist at a steady
  * speed, integrated at display rate, inside a workspace around the scene's task; a key
  * closes or opens the grip with a ramp (a guarded close, never a step). Commands go to a
- * ManualOperator. No widgets: the viewport forwards its key events here, and tests drive it
+ * DriveOperator. No widgets: the viewport forwards its key events here, and tests drive it
  * directly. The key map is in studio/README.md.
  */
-class KeyboardTeleop : public QObject
+class KeyboardDrive : public QObject
 {
     Q_OBJECT
 
@@ -39,11 +39,11 @@ public:
     /** What an open gripper is commanded (N): the fingers spread. */
     static constexpr double OpenGrip = -20.0;
 
-    explicit KeyboardTeleop(QObject *parent = nullptr);
-    ~KeyboardTeleop() override;
+    explicit KeyboardDrive(QObject *parent = nullptr);
+    ~KeyboardDrive() override;
 
     /** Where the commands go (null: nowhere). Not owned. */
-    void setOperator(ManualOperator *op) { m_operator = op; }
+    void setOperator(DriveOperator *op) { m_operator = op; }
     /**
      * The scene to drive (null clears): its hands, its workspace and its maximum grip.
      * Disengages: the next input starts from the world's targets again.
@@ -51,11 +51,11 @@ public:
     void setWorld(const World *world);
 
     /**
-     * How taking over learns where the hands are now. By default it reads the world's
+     * How starting to drive learns where the hands are now. By default it reads the world's
      * targets on the GUI thread, which is safe only while the world is not being stepped;
      * an engine stepping it on another thread hands in a reader that waits for a tick's end.
      */
-    void setStartSource(std::function<std::array<HandCommand, 2>()> source);
+    void setStartSource(std::function<std::array<std::optional<HandCommand>, 2>()> source);
 
     /** A key went down; true when it is one of the map's (the caller then eats it). */
     bool press(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
@@ -69,17 +69,20 @@ public:
     void advance(double seconds);
 
     /**
-     * Hands control back to the scripted operator: the next input takes over again from
-     * wherever the world's targets are then, and emits engaged() again.
+     * Hands control back to the scripted operator: the next input starts driving again from
+     * wherever the world's targets are then, and emits driveStarted() again.
      */
-    void disengage();
-    bool isEngaged() const { return m_engaged; }
+    void endDrive();
+    bool isDriving() const { return m_driving; }
 
     Gripper activeHand() const { return m_active; }
     /** Whether Tab has a hand to switch to. */
     bool hasBothHands() const;
     /** What `hand` is being commanded. */
-    const HandCommand &command(Gripper hand) const { return m_hands[size_t(hand)]; }
+    const std::optional<HandCommand> &command(Gripper hand) const
+    {
+        return m_hands[size_t(hand)];
+    }
     /** The force `hand` closes to (N). */
     double gripSetpoint(Gripper hand) const { return m_setpoint[size_t(hand)]; }
     bool isClosed(Gripper hand) const { return m_closed[size_t(hand)]; }
@@ -93,8 +96,8 @@ public:
     const Region &workspace() const { return m_workspace; }
 
 signals:
-    /** The first input after setWorld() or disengage(): the user takes the grippers. */
-    void engaged();
+    /** The first input after setWorld() or endDrive(): the user takes the grippers. */
+    void driveStarted();
     /** The active hand, a target or a grip changed (the HUD redraws). */
     void changed();
 
@@ -112,7 +115,7 @@ private:
         ActionCount
     };
 
-    void engage();
+    void startDrive();
     void tick();
     /** Moves the active hand by what `held` asks for over `seconds`; true if it moved. */
     bool move(const std::array<bool, ActionCount> &held, double seconds);
@@ -122,9 +125,9 @@ private:
     void updateTimer();
 
     const World *m_world = nullptr;
-    std::function<std::array<HandCommand, 2>()> m_startSource;
-    ManualOperator *m_operator = nullptr;
-    std::array<HandCommand, 2> m_hands{};
+    std::function<std::array<std::optional<HandCommand>, 2>()> m_startSource;
+    DriveOperator *m_operator = nullptr;
+    std::array<std::optional<HandCommand>, 2> m_hands{};
     std::array<double, 2> m_setpoint{DefaultGrip, DefaultGrip};
     std::array<bool, 2> m_closed{};
     std::array<double, 2> m_maxGrip{};
@@ -133,7 +136,7 @@ private:
     Region m_workspace;
     double m_viewAzimuth = 90.0;
     bool m_slow = false;
-    bool m_engaged = false;
+    bool m_driving = false;
     QTimer m_timer;
     QElapsedTimer m_clock;
 };

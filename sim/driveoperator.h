@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "handcommand.h"
 #include "operator.h"
 #include "world.h"
 
 #include <array>
 #include <mutex>
+#include <optional>
 
 namespace semhap {
 
@@ -16,29 +18,37 @@ namespace semhap {
  * thread. A command being written while the simulation steps is applied on the next step:
  * the simulation never waits for the input.
  */
-class ManualOperator : public Operator
+class DriveOperator : public Operator
 {
 public:
-    QString name() const override { return QStringLiteral("manual"); }
+    QString name() const override { return QStringLiteral("drive"); }
     void act(World &world) override;
 
     /** Sets where `hand`'s wrist should be. Thread-safe. */
     void setTarget(Gripper hand, const Pose &target);
     /** Sets `hand`'s total grip force (N; negative opens). Thread-safe. */
     void setGrip(Gripper hand, double force);
+    /** Sets what `command` says: its hand's target and grip. Thread-safe. */
+    void setCommand(const HandCommand &command);
 
 private:
-    struct Command
+    /** What one hand was last told; a part never set leaves the world's as it is. */
+    struct Update
     {
-        bool hasTarget = false;
-        Pose target;
-        bool hasGrip = false;
-        double grip = 0.0;
+        std::optional<Pose> target;
+        std::optional<double> grip;
     };
 
     std::mutex m_mutex;
-    std::array<Command, 2> m_pending{};
-    std::array<Command, 2> m_current{};
+    std::array<Update, 2> m_pending{};
+    std::array<Update, 2> m_current{};
 };
+
+/**
+ * Each hand's target and grip as the world has them now (none for a hand the scene lacks):
+ * driving starts there, so the grippers do not jump. Read the world on the thread that
+ * steps it, or while it is paused.
+ */
+std::array<std::optional<HandCommand>, 2> currentCommands(const World &world);
 
 } // namespace semhap

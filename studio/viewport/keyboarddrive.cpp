@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "keyboardteleop.h"
+#include "keyboarddrive.h"
 
-#include "manualoperator.h"
+#include "driveoperator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,27 +23,27 @@ constexpr double LongestTick = 0.25;
 
 } // namespace
 
-KeyboardTeleop::KeyboardTeleop(QObject *parent) : QObject(parent)
+KeyboardDrive::KeyboardDrive(QObject *parent) : QObject(parent)
 {
     m_timer.setInterval(int(TickSeconds * 1000));
     m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &KeyboardTeleop::tick);
+    connect(&m_timer, &QTimer::timeout, this, &KeyboardDrive::tick);
 }
 
-KeyboardTeleop::~KeyboardTeleop() = default;
+KeyboardDrive::~KeyboardDrive() = default;
 
-void KeyboardTeleop::setWorld(const World *world)
+void KeyboardDrive::setWorld(const World *world)
 {
     releaseAll();
     m_world = world;
-    m_engaged = false;
+    m_driving = false;
     m_hands = {};
     if (!world) {
         emit changed();
         return;
     }
     m_hands = currentCommands(*world);
-    m_active = m_hands[size_t(Gripper::Right)].present ? Gripper::Right : Gripper::Left;
+    m_active = m_hands[size_t(Gripper::Right)] ? Gripper::Right : Gripper::Left;
 
     // The workspace: every region of the task and every hand's start, with room around.
     std::array<double, 3> lower{1e9, 1e9, 0.0};
@@ -66,11 +66,11 @@ void KeyboardTeleop::setWorld(const World *world)
         include(lo, hi);
     }
     for (Gripper hand : {Gripper::Left, Gripper::Right}) {
-        const HandCommand &command = m_hands[size_t(hand)];
-        m_maxGrip[size_t(hand)] = command.present ? world->maxGrip(hand) : 0.0;
+        const std::optional<HandCommand> &command = m_hands[size_t(hand)];
+        m_maxGrip[size_t(hand)] = command ? world->maxGrip(hand) : 0.0;
         m_setpoint[size_t(hand)] = std::min(DefaultGrip, m_maxGrip[size_t(hand)]);
-        if (command.present)
-            include(command.target.pos, command.target.pos);
+        if (command)
+            include(command->target.pos, command->target.pos);
     }
     for (size_t axis = 0; axis < 2; ++axis) {
         m_workspace.center[axis] = (lower[axis] + upper[axis]) / 2;
@@ -81,24 +81,25 @@ void KeyboardTeleop::setWorld(const World *world)
     emit changed();
 }
 
-void KeyboardTeleop::setStartSource(std::function<std::array<HandCommand, 2>()> source)
+void KeyboardDrive::setStartSource(
+    std::function<std::array<std::optional<HandCommand>, 2>()> source)
 {
     m_startSource = std::move(source);
 }
 
-bool KeyboardTeleop::hasBothHands() const
+bool KeyboardDrive::hasBothHands() const
 {
-    return m_hands[0].present && m_hands[1].present;
+    return m_hands[0] && m_hands[1];
 }
 
-bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
+bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
 {
     if (key == Qt::Key_Shift) {
         m_slow = true;
         return false;
     }
     m_slow = modifiers.testFlag(Qt::ShiftModifier);
-    if (!m_world || !m_hands[size_t(m_active)].present)
+    if (!m_world || !m_hands[size_t(m_active)])
         return false;
 
     Action action = ActionCount;
@@ -135,7 +136,7 @@ bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
         break;
     case Qt::Key_Space:
     case Qt::Key_G:
-        engage();
+        startDrive();
         m_closed[size_t(m_active)] = !m_closed[size_t(m_active)];
         updateTimer();
         emit changed();
@@ -151,7 +152,7 @@ bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
     case Qt::Key_Backtab:
         if (!hasBothHands())
             return false;
-        engage();
+        startDrive();
         m_active = m_active == Gripper::Right ? Gripper::Left : Gripper::Right;
         emit changed();
         return true;
@@ -159,7 +160,7 @@ bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
         return false;
     }
 
-    engage();
+    startDrive();
     if (!m_held[action]) {
         m_held[action] = true;
         // A tap shorter than a tick still moves: one tick's worth now.
@@ -174,7 +175,7 @@ bool KeyboardTeleop::press(int key, Qt::KeyboardModifiers modifiers)
     return true;
 }
 
-bool KeyboardTeleop::release(int key)
+bool KeyboardDrive::release(int key)
 {
     switch (key) {
     case Qt::Key_Shift:
@@ -217,59 +218,60 @@ bool KeyboardTeleop::release(int key)
     return true;
 }
 
-void KeyboardTeleop::releaseAll()
+void KeyboardDrive::releaseAll()
 {
     m_held = {};
     m_slow = false;
     updateTimer();
 }
 
-void KeyboardTeleop::adjustGrip(int notches)
+void KeyboardDrive::adjustGrip(int notches)
 {
     const size_t hand = size_t(m_active);
-    if (!m_world || !m_hands[hand].present || notches == 0)
+    if (!m_world || !m_hands[hand] || notches == 0)
         return;
-    engage();
+    startDrive();
     m_setpoint[hand] =
         std::clamp(m_setpoint[hand] + notches * GripStep, GripStep, m_maxGrip[hand]);
     updateTimer();
     emit changed();
 }
 
-void KeyboardTeleop::disengage()
+void KeyboardDrive::endDrive()
 {
     releaseAll();
-    m_engaged = false;
+    m_driving = false;
     emit changed();
 }
 
-void KeyboardTeleop::engage()
+void KeyboardDrive::startDrive()
 {
-    if (m_engaged)
+    if (m_driving)
         return;
-    m_engaged = true;
-    // Take over where the hands are now, so nothing jumps.
+    m_driving = true;
+    // Start driving where the hands are now, so nothing jumps.
     m_hands = m_startSource ? m_startSource() : currentCommands(*m_world);
     for (size_t hand = 0; hand < 2; ++hand) {
-        m_closed[hand] = m_hands[hand].grip > 0;
+        if (!m_hands[hand])
+            continue;
+        m_closed[hand] = m_hands[hand]->grip > 0;
         if (m_closed[hand])
-            m_setpoint[hand] = std::clamp(m_hands[hand].grip, GripStep, m_maxGrip[hand]);
-        if (m_hands[hand].present)
-            send(Gripper(hand));
+            m_setpoint[hand] = std::clamp(m_hands[hand]->grip, GripStep, m_maxGrip[hand]);
+        send(Gripper(hand));
     }
     m_clock.start();
-    emit engaged();
+    emit driveStarted();
 }
 
-void KeyboardTeleop::tick()
+void KeyboardDrive::tick()
 {
     const double seconds = std::min(double(m_clock.restart()) / 1000.0, LongestTick);
     advance(seconds);
 }
 
-void KeyboardTeleop::advance(double seconds)
+void KeyboardDrive::advance(double seconds)
 {
-    if (!m_engaged)
+    if (!m_driving)
         return;
     const bool moved = move(m_held, seconds);
     if (moved)
@@ -279,9 +281,9 @@ void KeyboardTeleop::advance(double seconds)
     updateTimer();
 }
 
-bool KeyboardTeleop::move(const std::array<bool, ActionCount> &held, double seconds)
+bool KeyboardDrive::move(const std::array<bool, ActionCount> &held, double seconds)
 {
-    HandCommand &hand = m_hands[size_t(m_active)];
+    HandCommand &hand = *m_hands[size_t(m_active)];
     const double step = Speed * seconds * (m_slow ? SlowFactor : 1.0);
     // Along the table axes nearest the view: a slanted camera still moves the hand straight.
     const double azimuth = Pi / 2 * std::round(m_viewAzimuth / 90.0);
@@ -306,14 +308,14 @@ bool KeyboardTeleop::move(const std::array<bool, ActionCount> &held, double seco
     return true;
 }
 
-bool KeyboardTeleop::ramp(double seconds)
+bool KeyboardDrive::ramp(double seconds)
 {
     bool changed = false;
     for (size_t index = 0; index < 2; ++index) {
-        HandCommand &hand = m_hands[index];
         const double goal = m_closed[index] ? m_setpoint[index] : OpenGrip;
-        if (!hand.present || hand.grip == goal)
+        if (!m_hands[index] || m_hands[index]->grip == goal)
             continue;
+        HandCommand &hand = *m_hands[index];
         const double step = GripRate * seconds;
         hand.grip =
             hand.grip < goal ? std::min(goal, hand.grip + step) : std::max(goal, hand.grip - step);
@@ -324,20 +326,19 @@ bool KeyboardTeleop::ramp(double seconds)
     return changed;
 }
 
-void KeyboardTeleop::send(Gripper hand)
+void KeyboardDrive::send(Gripper hand)
 {
     if (!m_operator)
         return;
-    m_operator->setTarget(hand, m_hands[size_t(hand)].target);
-    m_operator->setGrip(hand, m_hands[size_t(hand)].grip);
+    m_operator->setCommand(*m_hands[size_t(hand)]);
 }
 
-void KeyboardTeleop::updateTimer()
+void KeyboardDrive::updateTimer()
 {
     bool busy = std::any_of(m_held.begin(), m_held.end(), [](bool held) { return held; });
     for (size_t hand = 0; hand < 2; ++hand) {
         const double goal = m_closed[hand] ? m_setpoint[hand] : OpenGrip;
-        busy = busy || (m_engaged && m_hands[hand].present && m_hands[hand].grip != goal);
+        busy = busy || (m_driving && m_hands[hand] && m_hands[hand]->grip != goal);
     }
     if (busy && !m_timer.isActive()) {
         m_clock.restart();
