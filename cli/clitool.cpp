@@ -2,7 +2,6 @@
 #include "clitool.h"
 
 #include "comparecommand.h"
-#include "semhaprevision.h"
 #include "convertcommand.h"
 #include "devicescommand.h"
 #include "emulatecommand.h"
@@ -13,6 +12,7 @@
 #include "replaycommand.h"
 #include "routecommand.h"
 #include "runcommand.h"
+#include "semhaprevision.h"
 #include "validatecommand.h"
 
 namespace semhap {

@@ -2,8 +2,8 @@
 #include "command.h"
 
 #include "inputfile.h"
-#include "pipeline.h"
 #include "patternlibrary.h"
+#include "pipeline.h"
 #include "sessioninfo.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"

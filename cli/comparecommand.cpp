@@ -253,10 +253,10 @@ void CompareCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("scene"), tr("Scene name or MJCF file."), tr("NAME|FILE")});
     parser.addOption({QStringLiteral("routers"), tr("Comma-separated routers (presets or files)."),
                       tr("LIST")});
-    parser.addOption({QStringLiteral("operator"),
-                      tr("Who drives the grippers: %1.")
-                          .arg(operatorNames().join(QStringLiteral(", "))),
-                      tr("NAME")});
+    parser.addOption(
+        {QStringLiteral("operator"),
+         tr("Who drives the grippers: %1.").arg(operatorNames().join(QStringLiteral(", "))),
+         tr("NAME")});
     parser.addOption({QStringLiteral("seeds"), tr("Seeds 1..N per router."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds per run."), tr("S")});
     parser.addOption(

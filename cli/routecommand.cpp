@@ -7,8 +7,8 @@
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
 #include "pipeline.h"
-#include "routergraph.h"
 #include "quitsignal.h"
+#include "routergraph.h"
 #include "sinklist.h"
 #include "streamsink.h"
 

@@ -103,10 +103,10 @@ void RunCommand::configure(QCommandLineParser &parser)
                       tr("NAME|FILE")});
     parser.addOption(
         {QStringLiteral("router"), tr("Router preset or router file."), tr("PRESET|FILE")});
-    parser.addOption({QStringLiteral("operator"),
-                      tr("Who drives the grippers: %1.")
-                          .arg(operatorNames().join(QStringLiteral(", "))),
-                      tr("NAME")});
+    parser.addOption(
+        {QStringLiteral("operator"),
+         tr("Who drives the grippers: %1.").arg(operatorNames().join(QStringLiteral(", "))),
+         tr("NAME")});
     parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
     parser.addOption(

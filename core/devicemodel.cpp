@@ -88,9 +88,9 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     // Below 1 Hz a band would hold each value for seconds; the player's work per second of
     // input also stays bounded by the rate.
     if (!(m_rate >= 1 && m_rate <= 100000))
-        return reader.fail(QStringLiteral("/rate"),
-                           QStringLiteral("must be between 1 and 100000 frames/s, got %1")
-                               .arg(m_rate));
+        return reader.fail(
+            QStringLiteral("/rate"),
+            QStringLiteral("must be between 1 and 100000 frames/s, got %1").arg(m_rate));
 
     QJsonArray channels;
     if (!reader.array(json, root, QLatin1String("channels"), &channels))

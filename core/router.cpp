@@ -69,7 +69,8 @@ private:
     double number(int node, const QString &key) const;
     Gripper gripper(int node) const;
     QStringList channels(int node) const;
-    /** A filter parameter as a bit set over its choices; absent: 0, which a filter takes as any. */
+    /** A filter parameter as a bit set over its choices; absent: 0, which a filter takes as any.
+     */
     unsigned choiceBits(int node, const QString &key) const;
 
     bool buildNode(int node);
@@ -318,8 +319,8 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
         SignalNode::Quantity quantity = SignalNode::Quantity();
         SignalNode::quantityFromName(param(node, QStringLiteral("quantity")).toString(),
                                      &quantity);
-        auto signal =
-            std::make_unique<SignalNode>(gripper(node), quantity, number(node, QStringLiteral("mu")));
+        auto signal = std::make_unique<SignalNode>(gripper(node), quantity,
+                                                   number(node, QStringLiteral("mu")));
         m_router->m_signals.push_back(signal.get());
         return signal;
     }
@@ -343,7 +344,7 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
                                           QLatin1String("open"));
     if (n.type == QLatin1String("debounce")) {
         auto debounce = std::make_unique<DebounceNode>(number(node, QStringLiteral("hold")),
-                                                           number(node, QStringLiteral("band")));
+                                                       number(node, QStringLiteral("band")));
         m_router->m_timed.push_back(debounce.get());
         return debounce;
     }
@@ -444,7 +445,8 @@ bool RouterCompiler::checkSize()
                                                   .arg(RouterGraph::MaxLinks));
     int devices = 0;
     for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
-        if (m_graph.nodes[i].type == QLatin1String("device") && ++devices > RouterGraph::MaxDevices)
+        if (m_graph.nodes[i].type == QLatin1String("device") &&
+            ++devices > RouterGraph::MaxDevices)
             return failNode(int(i), QString(),
                             QStringLiteral("one device more than the %1 a router may drive")
                                 .arg(RouterGraph::MaxDevices));
@@ -469,9 +471,9 @@ bool RouterCompiler::resolveLinks()
                         QStringLiteral("dangling link: no node '%1'").arg(link.to));
         const NodeInfo &from = m_info[size_t(r.from)];
         NodeInfo &to = m_info[size_t(r.to)];
-        const QString fromPort =
-            link.fromPort.isEmpty() && !from.type->outputs.empty() ? from.type->outputs.front().name
-                                                                    : link.fromPort;
+        const QString fromPort = link.fromPort.isEmpty() && !from.type->outputs.empty()
+                                     ? from.type->outputs.front().name
+                                     : link.fromPort;
         const QString toPort =
             link.toPort.isEmpty() && !to.inputs.empty() ? to.inputs.front().name : link.toPort;
         const auto out = std::find_if(from.type->outputs.begin(), from.type->outputs.end(),
@@ -481,16 +483,16 @@ bool RouterCompiler::resolveLinks()
         const int linksIntoPort =
             in == to.inputs.end() ? 0 : to.inputLinks[size_t(in - to.inputs.begin())];
         RouterGraph::LinkEnd end = RouterGraph::LinkEnd::Both;
-        const QString problem =
-            RouterGraph::portProblem(m_graph.nodes[size_t(r.from)], fromPort,
-                                     m_graph.nodes[size_t(r.to)], to.inputs, toPort,
-                                     linksIntoPort, &end);
+        const QString problem = RouterGraph::portProblem(m_graph.nodes[size_t(r.from)], fromPort,
+                                                         m_graph.nodes[size_t(r.to)], to.inputs,
+                                                         toPort, linksIntoPort, &end);
         if (!problem.isEmpty())
             return fail(end == RouterGraph::LinkEnd::From ? where + QStringLiteral("/from")
                         : end == RouterGraph::LinkEnd::To ? where + QStringLiteral("/to")
                                                           : where,
                         problem);
-        const QString key = QStringLiteral("%1\n%2\n%3\n%4").arg(link.from, fromPort, link.to, toPort);
+        const QString key =
+            QStringLiteral("%1\n%2\n%3\n%4").arg(link.from, fromPort, link.to, toPort);
         if (seen.contains(key))
             return fail(where, QStringLiteral("'%1:%2' already feeds '%3:%4'")
                                    .arg(link.from, fromPort, link.to, toPort));
@@ -580,9 +582,9 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
     const QString where = jsonPointerChild(QStringLiteral("/links"), linkIndex);
 
     std::vector<PlayerInput::Route> routes;
-    const QString problem = RouterGraph::voiceProblem(
-        m_graph.nodes[size_t(link.from)], source.pattern.get(), source.channels,
-        m_graph.nodes[size_t(link.to)], model, &routes);
+    const QString problem =
+        RouterGraph::voiceProblem(m_graph.nodes[size_t(link.from)], source.pattern.get(),
+                                  source.channels, m_graph.nodes[size_t(link.to)], model, &routes);
     if (!problem.isEmpty())
         return fail(where, problem);
     if (auto *pattern = dynamic_cast<PatternNode *>(runtime)) {

@@ -53,10 +53,10 @@ void readOldSpellings(const QString &file, const QString &where, RouterNode *nod
 {
     const auto warn = [&](const QString &pointer, const QString &what, const QString &old,
                           const QString &now) {
-        warnings->push_back(LoadError::at(
-            file, where + pointer,
-            QStringLiteral("deprecated: %1 \"%2\" is now \"%3\" (read as \"%3\")")
-                .arg(what, old, now)));
+        warnings->push_back(
+            LoadError::at(file, where + pointer,
+                          QStringLiteral("deprecated: %1 \"%2\" is now \"%3\" (read as \"%3\")")
+                              .arg(what, old, now)));
     };
     if (node->type == QLatin1String("hysteresis")) {
         node->type = QStringLiteral("debounce");
@@ -177,8 +177,7 @@ QString embed(std::vector<Ptr> &list, const Ptr &item, Parse parse)
 }
 
 /** An embedded item named `name`, or null. */
-template<typename Ptr>
-Ptr embedded(const std::vector<Ptr> &list, const QString &name)
+template<typename Ptr> Ptr embedded(const std::vector<Ptr> &list, const QString &name)
 {
     const auto found =
         std::find_if(list.begin(), list.end(), [&](const Ptr &p) { return p->name() == name; });
@@ -216,8 +215,8 @@ DeviceModelPtr RouterGraph::model(const QString &nameOrPath, QString *reason) co
         return found;
     const bool isFile = InputFile::namesFile(nameOrPath);
     if (isFile && !filesAllowed) {
-        *reason =
-            QStringLiteral("names the file '%1'; this router must carry its models").arg(nameOrPath);
+        *reason = QStringLiteral("names the file '%1'; this router must carry its models")
+                      .arg(nameOrPath);
         return nullptr;
     }
     LoadError error;
@@ -320,8 +319,7 @@ QString RouterGraph::portProblem(const RouterNode &from, const QString &fromPort
     if (out->type != in->type) {
         *end = LinkEnd::Both;
         return QStringLiteral("port type mismatch: '%1:%2' sends %3, '%4:%5' takes %6")
-            .arg(from.id, outName, portTypeName(out->type), to.id, inName,
-                 portTypeName(in->type));
+            .arg(from.id, outName, portTypeName(out->type), to.id, inName, portTypeName(in->type));
     }
     if (!in->multiple && linksIntoPort > 0)
         return QStringLiteral("'%1:%2' takes a single link and already has one")
@@ -370,8 +368,8 @@ bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const
     const int fromIndex = nodeIndex(link.from);
     const int toIndex = nodeIndex(link.to);
     if (fromIndex < 0 || toIndex < 0) {
-        *reason = QStringLiteral("dangling link: no node '%1'")
-                      .arg(fromIndex < 0 ? link.from : link.to);
+        *reason =
+            QStringLiteral("dangling link: no node '%1'").arg(fromIndex < 0 ? link.from : link.to);
         return false;
     }
     const RouterNode &from = nodes[size_t(fromIndex)];
@@ -409,8 +407,8 @@ bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const
         // Whether the voice fits the device; a pattern or model that cannot be found is the
         // node's problem, which the compiler reports on the node.
         QString ignored;
-        const DeviceModelPtr device = model(to.params.value(QLatin1String("model")).toString(),
-                                            &ignored);
+        const DeviceModelPtr device =
+            model(to.params.value(QLatin1String("model")).toString(), &ignored);
         const PatternPtr played = playedPattern(from);
         if (!device || (from.type == QLatin1String("pattern") && !played))
             return true;

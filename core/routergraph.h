@@ -116,8 +116,7 @@ public:
      */
     static QString voiceProblem(const RouterNode &from, const Pattern *pattern,
                                 const QStringList &channels, const RouterNode &device,
-                                const DeviceModel &model,
-                                std::vector<PlayerInput::Route> *routes);
+                                const DeviceModel &model, std::vector<PlayerInput::Route> *routes);
     /** Why a node hears too many detectors (the fan-in limit). */
     static QString fanInProblem();
     /** Whether a node of `type` raises messages of its own (force, slip, threshold). */

@@ -122,8 +122,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {},
              {value},
              {gripperParam(),
-              ParamSpec::choice(QStringLiteral("quantity"), SignalNode::quantityNames(),
-                                QString(), QStringLiteral("The quantity it reads")),
+              ParamSpec::choice(QStringLiteral("quantity"), SignalNode::quantityNames(), QString(),
+                                QStringLiteral("The quantity it reads")),
               ParamSpec::number(QStringLiteral("mu"), 0, QString(),
                                 QStringLiteral("The friction coefficient of the friction "
                                                "quantities; absent: the frames' own"))
@@ -170,10 +170,10 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {out},
              {ParamSpec::anyOf(QStringLiteral("message"), messageNames(),
                                QStringLiteral("The messages it passes")),
-              ParamSpec::anyOf(QStringLiteral("category"),
-                               {categoryName(Category::Confirmation),
-                                categoryName(Category::Exception)},
-                               QStringLiteral("The categories it passes")),
+              ParamSpec::anyOf(
+                  QStringLiteral("category"),
+                  {categoryName(Category::Confirmation), categoryName(Category::Exception)},
+                  QStringLiteral("The categories it passes")),
               ParamSpec::anyOf(QStringLiteral("gripper"), gripperNames(),
                                QStringLiteral("The grippers whose messages it passes"))}},
             {QStringLiteral("gate"),

@@ -437,7 +437,7 @@ bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *e
 }
 
 bool SessionReader::readHandCommands(const HandCommandVisitor &visit, QString *error, double from,
-                                      double to)
+                                     double to)
 {
     QSqlQuery query;
     QString reason;

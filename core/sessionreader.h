@@ -94,7 +94,7 @@ public:
     bool readDeviceFrames(const DeviceFrameVisitor &visit, QString *error, double from = -Forever,
                           double to = Forever);
     bool readHandCommands(const HandCommandVisitor &visit, QString *error, double from = -Forever,
-                           double to = Forever);
+                          double to = Forever);
     /**
      * Reads the scene state shown at `t`: the latest recorded at or before it (the first
      * one before the first). False when there are none, or with `error` when the database

@@ -120,8 +120,9 @@ void UdpFrameSource::handle(const QByteArray &datagram, double arrival,
         const qsizetype dropped = batch.size() - i - 1;
         m_stats.rejected += quint64(dropped);
         reject(QStringLiteral("[%1]: ").arg(i) + reason +
-               (dropped > 0 ? QStringLiteral(" (the batch's %1 later frame(s) dropped)").arg(dropped)
-                            : QString()));
+               (dropped > 0
+                    ? QStringLiteral(" (the batch's %1 later frame(s) dropped)").arg(dropped)
+                    : QString()));
         return;
     }
 }

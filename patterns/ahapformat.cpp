@@ -85,9 +85,10 @@ bool AhapReader::nonNegative(const QJsonObject &object, const QString &pointer, 
 
 bool AhapReader::read(const QJsonObject &json, HapticTimeline *timeline)
 {
-    ignoreUnknownKeys(json, QString(),
-                      {QLatin1String("Version"), QLatin1String("Metadata"), QLatin1String("Pattern")},
-                      m_warnings);
+    ignoreUnknownKeys(
+        json, QString(),
+        {QLatin1String("Version"), QLatin1String("Metadata"), QLatin1String("Pattern")},
+        m_warnings);
     QJsonArray pattern;
     if (!array(json, QString(), QLatin1String("Pattern"), &pattern))
         return false;
@@ -301,10 +302,10 @@ bool AhapReader::readParameter(const QJsonObject &parameter, const QString &poin
     QString id;
     double time = 0.0;
     double value = 0.0;
-    ignoreUnknownKeys(parameter, pointer,
-                      {QLatin1String("ParameterID"), QLatin1String("Time"),
-                       QLatin1String("ParameterValue")},
-                      m_warnings);
+    ignoreUnknownKeys(
+        parameter, pointer,
+        {QLatin1String("ParameterID"), QLatin1String("Time"), QLatin1String("ParameterValue")},
+        m_warnings);
     if (!string(parameter, pointer, QLatin1String("ParameterID"), &id) ||
         !nonNegative(parameter, pointer, QLatin1String("Time"), &time, true) ||
         !number(parameter, pointer, QLatin1String("ParameterValue"), &value))

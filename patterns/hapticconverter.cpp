@@ -218,17 +218,18 @@ QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
         description += QStringLiteral(" as a %1 Hz modulation").arg(freq, 0, 'g', 3);
     }
     const QString channel = options.channel.isEmpty() ? QStringLiteral("*") : options.channel;
-    QJsonObject pattern{{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
-            {QStringLiteral("name"),
-             options.name.isEmpty() ? QStringLiteral("imported") : options.name},
-            {QStringLiteral("model"), options.model},
-            {QStringLiteral("description"), QString(description + QLatin1Char('.'))},
-            {QStringLiteral("tracks"),
-             QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{channel}},
-                                    {QStringLiteral("attack"), attack},
-                                    {QStringLiteral("sustain"),
-                                     QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
-                                                 {QStringLiteral("value"), 0}}}}}}};
+    QJsonObject pattern{
+        {QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+        {QStringLiteral("name"),
+         options.name.isEmpty() ? QStringLiteral("imported") : options.name},
+        {QStringLiteral("model"), options.model},
+        {QStringLiteral("description"), QString(description + QLatin1Char('.'))},
+        {QStringLiteral("tracks"),
+         QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{channel}},
+                                {QStringLiteral("attack"), attack},
+                                {QStringLiteral("sustain"),
+                                 QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
+                                             {QStringLiteral("value"), 0}}}}}}};
     if (timeline.sharpness >= 0)
         pattern.insert(QStringLiteral("sharpness"), timeline.sharpness);
     return pattern;

@@ -44,9 +44,10 @@ bool MetaHapticReader::unitKey(const QJsonObject &object, const QString &pointer
 
 bool MetaHapticReader::read(const QJsonObject &json, HapticTimeline *timeline)
 {
-    ignoreUnknownKeys(json, QString(),
-                      {QLatin1String("version"), QLatin1String("metadata"), QLatin1String("signals")},
-                      m_warnings);
+    ignoreUnknownKeys(
+        json, QString(),
+        {QLatin1String("version"), QLatin1String("metadata"), QLatin1String("signals")},
+        m_warnings);
     QJsonObject version;
     QJsonObject signalsObject;
     QJsonObject continuous;
@@ -145,8 +146,8 @@ bool MetaHapticReader::readEnvelope(const QJsonArray &points, const QString &poi
         const QString accentAt = jsonPointerChild(item, QLatin1String("emphasis"));
         double strength = 0.0;
         double accentFrequency = 0.0;
-        ignoreUnknownKeys(accent, accentAt, {QLatin1String("amplitude"), QLatin1String("frequency")},
-                          m_warnings);
+        ignoreUnknownKeys(accent, accentAt,
+                          {QLatin1String("amplitude"), QLatin1String("frequency")}, m_warnings);
         if (!unitKey(accent, accentAt, QLatin1String("amplitude"), &strength) ||
             !unitKey(accent, accentAt, QLatin1String("frequency"), &accentFrequency))
             return false;

@@ -67,11 +67,11 @@ struct ParamSpec
     static ParamSpec of(const QString &name, ParamKind kind, ParamAbsent absent,
                         const QString &help);
 
-    ParamSpec atLeast(double value) const;   ///< a number's inclusive minimum
-    ParamSpec above(double value) const;     ///< a number's exclusive minimum
-    ParamSpec atMost(double value) const;    ///< a number's inclusive maximum
-    ParamSpec required() const;              ///< must be given
-    ParamSpec computed() const;              ///< absent: worked out elsewhere
+    ParamSpec atLeast(double value) const;                 ///< a number's inclusive minimum
+    ParamSpec above(double value) const;                   ///< a number's exclusive minimum
+    ParamSpec atMost(double value) const;                  ///< a number's inclusive maximum
+    ParamSpec required() const;                            ///< must be given
+    ParamSpec computed() const;                            ///< absent: worked out elsewhere
     ParamSpec startingWith(const QJsonValue &value) const; ///< sets example
 
     /**

@@ -102,6 +102,37 @@ QJsonValue Number::toJson(const ParamTable &params) const
     return o;
 }
 
+NumberJson NumberJson::read(const QJsonValue &json)
+{
+    NumberJson number;
+    if (!json.isObject()) {
+        number.constant = json.toDouble();
+        return number;
+    }
+    const QJsonObject o = json.toObject();
+    number.param = o.value(QLatin1String("param")).toString();
+    number.gain = o.value(QLatin1String("gain")).toDouble(1.0);
+    number.offset = o.value(QLatin1String("offset")).toDouble(0.0);
+    number.curve = o.value(QLatin1String("curve"));
+    return number;
+}
+
+QJsonValue NumberJson::toJson() const
+{
+    if (!isBound())
+        return constant;
+    QJsonObject o{{QStringLiteral("param"), param}};
+    if (!curve.isUndefined()) {
+        o.insert(QStringLiteral("curve"), curve);
+        return o;
+    }
+    if (gain != 1.0)
+        o.insert(QStringLiteral("gain"), gain);
+    if (offset != 0.0)
+        o.insert(QStringLiteral("offset"), offset);
+    return o;
+}
+
 void insertNumber(QJsonObject &object, const QString &key, const Number &number,
                   const ParamTable &params, double defaultValue)
 {

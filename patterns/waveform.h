@@ -91,6 +91,27 @@ private:
     Curve m_curve;
 };
 
+/**
+ * A Number as its JSON writes it, read without a pattern's parameter table: what an editor
+ * shows and changes of a binding. The waveform parser checks the same JSON strictly; this
+ * reads what is there and writes it back in its shortest form.
+ */
+struct NumberJson
+{
+    double constant = 0.0;
+    QString param; ///< empty: a constant
+    double gain = 1.0;
+    double offset = 0.0;
+    /** The `curve` points as written; undefined: gain and offset apply. */
+    QJsonValue curve{QJsonValue::Undefined};
+
+    bool isBound() const { return !param.isEmpty(); }
+    /** Reads `json`: a number, or a `{"param": …}` object. */
+    static NumberJson read(const QJsonValue &json);
+    /** A number, or `{"param"}` with its `curve`, else `gain` and `offset` unless 1 and 0. */
+    QJsonValue toJson() const;
+};
+
 /** Writes `number` under `key` unless it is the constant `defaultValue`, keeping files short. */
 void insertNumber(QJsonObject &object, const QString &key, const Number &number,
                   const ParamTable &params, double defaultValue);

@@ -11,6 +11,11 @@ const ParamSpec *WaveformType::field(const QString &name) const
     return findParamSpec(fields, name);
 }
 
+bool WaveformType::bindsParams() const
+{
+    return type != QLatin1String("param");
+}
+
 bool WaveformType::isModifier() const
 {
     for (const ParamSpec &spec : fields) {
@@ -83,8 +88,8 @@ const std::vector<WaveformType> &waveformTypes()
          {ParamSpec::of(QStringLiteral("points"), ParamKind::Points, ParamAbsent::Required,
                         QStringLiteral("[time, value] points, times from 0 and not "
                                        "decreasing"))
-              .startingWith(QJsonArray{QJsonArray{0, 0}, QJsonArray{0.2, 1},
-                                       QJsonArray{0.5, 0.5}}),
+              .startingWith(
+                  QJsonArray{QJsonArray{0, 0}, QJsonArray{0.2, 1}, QJsonArray{0.5, 0.5}}),
           startField()}},
         {QStringLiteral("sine"),
          QStringLiteral("offset + amp * sin(2 pi (freq t + phase))"),
@@ -154,8 +159,8 @@ QJsonObject newWaveform(const QString &type, const QJsonValue &previous)
         if (field.absent != ParamAbsent::Required)
             continue;
         if (field.kind == ParamKind::Waveform) {
-            node.insert(field.name, previous.isObject() ? previous
-                                                        : newWaveform(QStringLiteral("const")));
+            node.insert(field.name,
+                        previous.isObject() ? previous : newWaveform(QStringLiteral("const")));
         } else if (field.kind == ParamKind::Waveforms) {
             QJsonArray inputs = field.example.toArray();
             if (previous.isObject() && !inputs.isEmpty())

@@ -26,6 +26,11 @@ struct WaveformType
     const ParamSpec *field(const QString &name) const;
     /** Whether it takes other waveforms as inputs (`in` or `of`). */
     bool isModifier() const;
+    /**
+     * Whether its Number fields may be bound to a pattern parameter: all but `param`, whose
+     * numbers shape the parameter it reads.
+     */
+    bool bindsParams() const;
 };
 
 /** Every waveform type, in menu order. */

@@ -10,8 +10,8 @@ QColor category(Category category)
 
 QColor series(int index)
 {
-    static const QColor order[SeriesCount] = {Blue,       Orange, Green, Vermillion,
-                                              Sky,        Purple, Black, Yellow};
+    static const QColor order[SeriesCount] = {Blue, Orange, Green, Vermillion,
+                                              Sky,  Purple, Black, Yellow};
     return order[size_t(index) % SeriesCount];
 }
 

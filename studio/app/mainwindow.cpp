@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogpanel.h"
@@ -205,7 +205,7 @@ void MainWindow::createActions()
         action(tr("Drive"), QStringLiteral("driveAction"), QKeySequence(Qt::CTRL | Qt::Key_T));
     m_driveAction->setCheckable(true);
     m_driveAction->setToolTip(tr("Take the grippers over from the scripted operator "
-                                  "(Ctrl+T); any key or pose input does it too"));
+                                 "(Ctrl+T); any key or pose input does it too"));
     connect(m_driveAction, &QAction::toggled, &m_engine, &Engine::setDriving);
     m_forcesAction = action(tr("Contact forces"), QStringLiteral("forcesAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_F));
@@ -528,7 +528,8 @@ void MainWindow::connectEngine()
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     // Any drive input hands the grippers to the user.
-    connect(m_keyboardDrive, &KeyboardDrive::driveStarted, this, [this] { m_engine.setDriving(true); });
+    connect(m_keyboardDrive, &KeyboardDrive::driveStarted, this,
+            [this] { m_engine.setDriving(true); });
     connect(m_poseInput, &PoseInput::driveStarted, this, [this] { m_engine.setDriving(true); });
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "numberedit.h"
 
+#include "waveform.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -66,40 +68,27 @@ void NumberEdit::setNumber(const QJsonValue &json, const QStringList &params, do
     for (const QString &param : params)
         m_source->addItem(param, param);
     m_value->setRange(minimum, maximum);
-    const QJsonObject bound = json.toObject();
-    m_curveJson = bound.value(QLatin1String("curve"));
-    if (json.isObject()) {
-        const QString param = bound.value(QLatin1String("param")).toString();
-        if (m_source->findData(param) < 0)
-            m_source->addItem(param, param);
-        m_source->setCurrentIndex(m_source->findData(param));
-        m_gain->setValue(bound.value(QLatin1String("gain")).toDouble(1.0));
-        m_offset->setValue(bound.value(QLatin1String("offset")).toDouble(0.0));
-    } else {
-        m_source->setCurrentIndex(0);
-        m_value->setValue(json.toDouble());
-        m_gain->setValue(1.0);
-        m_offset->setValue(0.0);
-    }
+    const NumberJson number = NumberJson::read(json);
+    m_curveJson = number.curve;
+    if (number.isBound() && m_source->findData(number.param) < 0)
+        m_source->addItem(number.param, number.param);
+    m_source->setCurrentIndex(number.isBound() ? m_source->findData(number.param) : 0);
+    m_value->setValue(number.constant);
+    m_gain->setValue(number.gain);
+    m_offset->setValue(number.offset);
     updateVisibility();
     m_updating = false;
 }
 
 QJsonValue NumberEdit::number() const
 {
-    const QString param = m_source->currentData().toString();
-    if (param.isEmpty())
-        return m_value->value();
-    QJsonObject bound{{QStringLiteral("param"), param}};
-    if (!m_curveJson.isUndefined()) {
-        bound.insert(QStringLiteral("curve"), m_curveJson);
-        return bound;
-    }
-    if (m_gain->value() != 1.0)
-        bound.insert(QStringLiteral("gain"), m_gain->value());
-    if (m_offset->value() != 0.0)
-        bound.insert(QStringLiteral("offset"), m_offset->value());
-    return bound;
+    NumberJson number;
+    number.constant = m_value->value();
+    number.param = m_source->currentData().toString();
+    number.gain = m_gain->value();
+    number.offset = m_offset->value();
+    number.curve = m_curveJson;
+    return number.toJson();
 }
 
 void NumberEdit::updateVisibility()

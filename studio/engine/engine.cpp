@@ -70,8 +70,7 @@ void Engine::rewire()
     m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
 }
 
-Engine::Engine(QObject *parent)
-    : QObject(parent), m_devices(std::make_unique<DeviceManager>())
+Engine::Engine(QObject *parent) : QObject(parent), m_devices(std::make_unique<DeviceManager>())
 {
     m_drainTimer.setInterval(16);
     connect(&m_drainTimer, &QTimer::timeout, this, &Engine::drain);
@@ -397,8 +396,7 @@ void Engine::step()
 {
     if (!m_simulation || isRunning())
         return;
-    const int steps =
-        int(std::lround(1.0 / StepRate / m_simulation->run().world().timestep()));
+    const int steps = int(std::lround(1.0 / StepRate / m_simulation->run().world().timestep()));
     m_pendingSteps.fetch_add(std::max(1, steps));
 }
 
@@ -593,7 +591,7 @@ void Engine::stepOnce()
         const Feeling left = perception.feeling(Gripper::Left);
         const Feeling right = perception.feeling(Gripper::Right);
         sceneFeed.capture(run.world(), {left.shownConfirmation, left.shownWarning,
-                                              right.shownConfirmation, right.shownWarning});
+                                        right.shownConfirmation, right.shownWarning});
     }
     if (t >= m_nextMetrics) {
         m_nextMetrics = t + MetricsPeriod;

@@ -104,7 +104,8 @@ public:
     void run();
     void pause();
     bool isRunning() const { return m_running.load(); }
-    /** While paused: one display frame's worth of steps (1/60 s of simulated time); a simulation only. */
+    /** While paused: one display frame's worth of steps (1/60 s of simulated time); a simulation
+     * only. */
     void step();
 
     /** Simulated seconds per real second (1 = real time). */

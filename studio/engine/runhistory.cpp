@@ -52,8 +52,8 @@ std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands 
 RunHistory::RunHistory(QObject *parent) : QObject(parent) {}
 
 void RunHistory::start(const std::vector<RunDevice> &devices,
-                        const std::array<GripperThresholds, 2> &thresholds,
-                        const QStringList &nodeIds)
+                       const std::array<GripperThresholds, 2> &thresholds,
+                       const QStringList &nodeIds)
 {
     for (auto &series : m_frames)
         series.clear();
@@ -73,8 +73,8 @@ void RunHistory::start(const std::vector<RunDevice> &devices,
 }
 
 void RunHistory::setRouter(const std::vector<RunDevice> &devices,
-                            const std::array<GripperThresholds, 2> &thresholds,
-                            const QStringList &nodeIds)
+                           const std::array<GripperThresholds, 2> &thresholds,
+                           const QStringList &nodeIds)
 {
     std::vector<RunSeries<DeviceFrame>> series(devices.size());
     for (size_t d = 0; d < devices.size(); ++d) {

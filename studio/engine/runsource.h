@@ -20,7 +20,8 @@ class World;
 class RunSource
 {
 public:
-    enum class Kind {
+    enum class Kind
+    {
         Simulation, ///< a MuJoCo scene stepped on the pipeline thread (SimulationSource)
         Rig,        ///< contact frames from an external rig over UDP (LiveRig)
         Replay      ///< a recorded session, scrubbed on the GUI thread (SessionReplay)

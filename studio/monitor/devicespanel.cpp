@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "devicespanel.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "devicemanager.h"
 #include "deviceuri.h"
 #include "levelmeter.h"

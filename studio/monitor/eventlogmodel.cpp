@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "eventlogmodel.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "runhistory.h"
 
 #include <QColor>

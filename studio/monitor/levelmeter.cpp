@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "levelmeter.h"
+
 #include "colors.h"
 
 #include <QLocale>
@@ -9,7 +10,6 @@
 #include <cmath>
 
 namespace semhap {
-
 
 LevelMeter::LevelMeter(QWidget *parent) : QWidget(parent)
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "plotpanel.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "outputfile.h"
 
 #include <QFileDialog>
@@ -427,17 +427,15 @@ void PlotPanel::addGripper(Gripper gripper)
     plot->forceRect->axis(QCPAxis::atLeft)->setLabel(tr("F (N)"));
     plot->left =
         addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left.f (finger)"), Sky, 1.0);
-    plot->right =
-        addGraph(plot->forceRect, id + QStringLiteral(".right.f"), tr("right.f (finger)"), Green,
-                 1.0);
+    plot->right = addGraph(plot->forceRect, id + QStringLiteral(".right.f"),
+                           tr("right.f (finger)"), Green, 1.0);
     plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 1.0);
     if (thresholds.hasForce) {
         const QString format = tr("%1 %2 N");
         addThreshold(plot->forceRect, id + QStringLiteral(".grasp"),
                      format.arg(tr("grasp"), number(thresholds.grasp)), thresholds.grasp, Blue);
         addThreshold(plot->forceRect, id + QStringLiteral(".break"),
-                     format.arg(tr("break"), number(thresholds.brk)), thresholds.brk,
-                     Orange);
+                     format.arg(tr("break"), number(thresholds.brk)), thresholds.brk, Orange);
         addThreshold(plot->forceRect, id + QStringLiteral(".max"),
                      format.arg(tr("max"), number(thresholds.max)), thresholds.max, Vermillion);
         plot->thresholdTop = std::max({thresholds.grasp, thresholds.brk, thresholds.max});

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "nodeinspector.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "numberedit.h"
 #include "patterndocument.h"
 #include "waveformtype.h"
@@ -225,9 +225,8 @@ void NodeInspector::addWaveformFields(const QJsonObject &node)
             name->setToolTip(field.help);
             name->addItems(paramNames());
             name->setCurrentText(node.value(field.name).toString());
-            connect(name, &QComboBox::activated, this, [this, name, key = field.name] {
-                edit(key, name->currentText());
-            });
+            connect(name, &QComboBox::activated, this,
+                    [this, name, key = field.name] { edit(key, name->currentText()); });
             m_form->addRow(label, name);
             break;
         }
@@ -247,7 +246,8 @@ void NodeInspector::addWaveformFields(const QJsonObject &node)
         }
     }
     if (inputs)
-        m_form->addRow(QString(), new QLabel(tr("Its inputs are the children in the tree."), this));
+        m_form->addRow(QString(),
+                       new QLabel(tr("Its inputs are the children in the tree."), this));
 }
 
 QString NodeInspector::fieldLabel(const ParamSpec &field)
@@ -286,8 +286,8 @@ void NodeInspector::addNumber(const QJsonObject &node, const ParamSpec &field,
     const QString key = field.name;
     edit->setObjectName(fieldName(key));
     edit->setToolTip(field.help);
-    // The `param` waveform maps through plain numbers; everywhere else a Number may bind.
-    const bool plain = node.value(QLatin1String("type")) == QLatin1String("param");
+    const WaveformType *type = waveformType(node.value(QLatin1String("type")).toString());
+    const bool plain = type && !type->bindsParams();
     edit->setNumber(node.contains(key) ? node.value(key) : QJsonValue(field.defaultNumber),
                     plain ? QStringList() : paramNames(), std::max(field.minimum, -Unbounded),
                     std::min(field.maximum, Unbounded));

@@ -130,8 +130,9 @@ QString PatternDocument::addTrack()
 {
     const QString pointer =
         QStringLiteral("/tracks/%1").arg(value(QStringLiteral("/tracks")).toArray().size());
-    setValue(pointer, QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
-                                  {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))}});
+    setValue(pointer,
+             QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                         {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))}});
     return pointer;
 }
 
@@ -194,14 +195,15 @@ QJsonObject PatternDocument::newPattern(const QString &name, const QString &mode
 {
     QJsonObject release = newWaveform(QStringLiteral("ramp"));
     release.insert(QStringLiteral("to"), 0);
-    return {{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
-            {QStringLiteral("name"), name},
-            {QStringLiteral("model"), model},
-            {QStringLiteral("tracks"),
-             QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
-                                    {QStringLiteral("attack"), newWaveform(QStringLiteral("ramp"))},
-                                    {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))},
-                                    {QStringLiteral("release"), release}}}}};
+    return {
+        {QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+        {QStringLiteral("name"), name},
+        {QStringLiteral("model"), model},
+        {QStringLiteral("tracks"),
+         QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{QStringLiteral("*")}},
+                                {QStringLiteral("attack"), newWaveform(QStringLiteral("ramp"))},
+                                {QStringLiteral("sustain"), newWaveform(QStringLiteral("const"))},
+                                {QStringLiteral("release"), release}}}}};
 }
 
 QJsonValue PatternDocument::valueAt(const QJsonValue &root, const QString &pointer)

@@ -63,7 +63,8 @@ public:
     bool canAddPart(const QString &pointer) const;
     /** Whether addInput() can work on `pointer`: its type takes a list of inputs (`of`). */
     bool canAddInput(const QString &pointer) const;
-    /** Whether remove() can take `pointer`: a track but the last, a part, a list's input but the last. */
+    /** Whether remove() can take `pointer`: a track but the last, a part, a list's input but the
+     * last. */
     bool canRemove(const QString &pointer) const;
     /** The first document of a new pattern `name` on `model`: one track, ramp-hold-release. */
     static QJsonObject newPattern(const QString &name, const QString &model);

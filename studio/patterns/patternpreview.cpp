@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "patternpreview.h"
+
 #include "colors.h"
 
 #include <QLabel>

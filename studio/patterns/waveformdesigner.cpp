@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "waveformdesigner.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "devicemanager.h"
 #include "hapticconverter.h"
 #include "jsonreader.h"
@@ -76,16 +76,14 @@ QString numberText(const QJsonValue &value)
         return QLocale().toString(value.toDouble(), 'g', 4);
     if (value.isString())
         return value.toString();
-    const QJsonObject bound = value.toObject();
-    QString text = bound.value(QLatin1String("param")).toString();
-    if (bound.contains(QLatin1String("curve")))
+    const NumberJson number = NumberJson::read(value);
+    QString text = number.param;
+    if (!number.curve.isUndefined())
         return text + QStringLiteral("→curve");
-    if (bound.contains(QLatin1String("gain")))
-        text = QLocale().toString(bound.value(QLatin1String("gain")).toDouble(), 'g', 4) +
-               QStringLiteral("·") + text;
-    if (bound.contains(QLatin1String("offset")))
-        text += QStringLiteral("+") +
-                QLocale().toString(bound.value(QLatin1String("offset")).toDouble(), 'g', 4);
+    if (number.gain != 1.0)
+        text = QLocale().toString(number.gain, 'g', 4) + QStringLiteral("·") + text;
+    if (number.offset != 0.0)
+        text += QStringLiteral("+") + QLocale().toString(number.offset, 'g', 4);
     return text;
 }
 
@@ -420,9 +418,8 @@ QWidget *WaveformDesigner::createControls()
     m_beginButton = new QPushButton(tr("Audition"), box);
     m_beginButton->setObjectName(QStringLiteral("auditionBegin"));
     m_beginButton->setToolTip(tr("Begin the pattern on the device now (again: restart it)"));
-    m_beginButton->setStyleSheet(
-        QStringLiteral("QPushButton { color: %1; font-weight: bold; }")
-            .arg(colors::css(colors::Confirmation)));
+    m_beginButton->setStyleSheet(QStringLiteral("QPushButton { color: %1; font-weight: bold; }")
+                                     .arg(colors::css(colors::Confirmation)));
     m_endButton = new QPushButton(tr("End"), box);
     m_endButton->setObjectName(QStringLiteral("auditionEnd"));
     m_endButton->setToolTip(tr("End the pattern: its release plays"));
@@ -840,9 +837,9 @@ void WaveformDesigner::applyJsonText()
     LoadError error;
     if (!parseJsonObject(m_jsonText->toPlainText().toUtf8(), file, &json, &error) ||
         !Pattern::fromJson(json, file, &error)) {
-        m_jsonError->setText(QStringLiteral("<span style='color:%1'>%2</span>")
-                                 .arg(colors::css(colors::Error),
-                                      error.toString().toHtmlEscaped()));
+        m_jsonError->setText(
+            QStringLiteral("<span style='color:%1'>%2</span>")
+                .arg(colors::css(colors::Error), error.toString().toHtmlEscaped()));
         return;
     }
     m_jsonError->setText(QStringLiteral("<span style='color:%1'>%2</span>")

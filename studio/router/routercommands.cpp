@@ -7,7 +7,8 @@
 
 namespace semhap {
 
-AddNodeCommand::AddNodeCommand(RouterDocument *document, const RouterNode &node, QUndoCommand *parent)
+AddNodeCommand::AddNodeCommand(RouterDocument *document, const RouterNode &node,
+                               QUndoCommand *parent)
     : QUndoCommand(tr("Add %1").arg(node.id), parent), m_document(document), m_node(node)
 {}
 
@@ -74,7 +75,8 @@ void MoveNodesCommand::undo()
         m_document->setNodePos(m_ids[i], m_from[i]);
 }
 
-ConnectCommand::ConnectCommand(RouterDocument *document, const RouterLink &link, QUndoCommand *parent)
+ConnectCommand::ConnectCommand(RouterDocument *document, const RouterLink &link,
+                               QUndoCommand *parent)
     : QUndoCommand(tr("Connect %1 to %2").arg(link.from, link.to), parent), m_document(document),
       m_link(link)
 {}
@@ -112,10 +114,10 @@ void SetParamCommand::undo()
     m_document->setNodeParams(m_id, m_before);
 }
 
-RenameNodeCommand::RenameNodeCommand(RouterDocument *document, const QString &from, const QString &to,
-                                     QUndoCommand *parent)
-    : QUndoCommand(tr("Rename %1 to %2").arg(from, to), parent), m_document(document), m_from(from),
-      m_to(to)
+RenameNodeCommand::RenameNodeCommand(RouterDocument *document, const QString &from,
+                                     const QString &to, QUndoCommand *parent)
+    : QUndoCommand(tr("Rename %1 to %2").arg(from, to), parent), m_document(document),
+      m_from(from), m_to(to)
 {}
 
 void RenameNodeCommand::redo()

@@ -20,7 +20,8 @@ class AddNodeCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    AddNodeCommand(RouterDocument *document, const RouterNode &node, QUndoCommand *parent = nullptr);
+    AddNodeCommand(RouterDocument *document, const RouterNode &node,
+                   QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
@@ -36,8 +37,8 @@ class RemoveCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    RemoveCommand(RouterDocument *document, const QStringList &nodeIds, const std::vector<int> &links,
-                  QUndoCommand *parent = nullptr);
+    RemoveCommand(RouterDocument *document, const QStringList &nodeIds,
+                  const std::vector<int> &links, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
@@ -72,7 +73,8 @@ class ConnectCommand : public QUndoCommand
     Q_DECLARE_TR_FUNCTIONS(RouterCommands)
 
 public:
-    ConnectCommand(RouterDocument *document, const RouterLink &link, QUndoCommand *parent = nullptr);
+    ConnectCommand(RouterDocument *document, const RouterLink &link,
+                   QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 

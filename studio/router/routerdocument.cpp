@@ -8,8 +8,7 @@
 
 namespace semhap {
 
-RouterDocument::RouterDocument(QObject *parent) : QObject(parent), m_undo(new QUndoStack(this))
-{}
+RouterDocument::RouterDocument(QObject *parent) : QObject(parent), m_undo(new QUndoStack(this)) {}
 
 RouterDocument::~RouterDocument() = default;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "routereditor.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
@@ -293,9 +293,8 @@ QList<QAction *> RouterEditor::createActions()
     }
     menu->addSeparator();
     item(menu, tr("Open…"), [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open router"),
-                                                          m_document->path(),
-                                                          tr("semhap routers (*.json)"));
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open router"), m_document->path(), tr("semhap routers (*.json)"));
         QString error;
         if (!path.isEmpty() && !openFile(path, &error))
             showStatus(error, true);
@@ -553,8 +552,7 @@ void RouterEditor::exportDialog(bool selfContained)
 {
     const QString path = QFileDialog::getSaveFileName(
         this, selfContained ? tr("Save self-contained router") : tr("Save router"),
-        m_document->path(),
-        tr("semhap routers (*.json)"));
+        m_document->path(), tr("semhap routers (*.json)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, selfContained, &error))
         showStatus(error, true);
@@ -697,7 +695,8 @@ void RouterEditor::showStatus(const QString &text, bool warning)
 {
     m_status->setText(text);
     m_status->setStyleSheet(
-        warning ? QStringLiteral("QLabel { color: %1; }").arg(colors::css(colors::ErrorDark)) : QString());
+        warning ? QStringLiteral("QLabel { color: %1; }").arg(colors::css(colors::ErrorDark))
+                : QString());
 }
 
 void RouterEditor::onGraphChanged()
@@ -786,10 +785,9 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
     const QString id = node.id;
     const QString objectName = QStringLiteral("param:") + key;
     const QString help = spec ? spec->help : tr("Not a parameter of this node: clear it");
-    auto *label = new QLabel(spec && !spec->unit.isEmpty()
-                                 ? QStringLiteral("%1 (%2)").arg(key, spec->unit)
-                                 : key,
-                             form->parentWidget());
+    auto *label = new QLabel(
+        spec && !spec->unit.isEmpty() ? QStringLiteral("%1 (%2)").arg(key, spec->unit) : key,
+        form->parentWidget());
     label->setToolTip(help);
     if (kind == ParamKind::Choice || kind == ParamKind::Choices || name) {
         QStringList choices = spec->choices;
@@ -871,8 +869,7 @@ void RouterEditor::commitText(const QString &id, const QString &key, const QStri
     const QJsonValue value = parseValue(text);
     // A numeric-looking pattern or model name is still a name.
     const ParamSpec *spec = findParamSpec(graph().paramsOf(graph().nodes[size_t(index)]), key);
-    const bool name =
-        spec && (spec->kind == ParamKind::Pattern || spec->kind == ParamKind::Model);
+    const bool name = spec && (spec->kind == ParamKind::Pattern || spec->kind == ParamKind::Model);
     setParam(id, key, name && !value.isUndefined() ? QJsonValue(text.trimmed()) : value);
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "routernodeitem.h"
+
 #include "colors.h"
 
 #include <QFontMetricsF>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "routerscene.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "patternlibrary.h"
 #include "routerdocument.h"
 #include "routerwireitem.h"
@@ -371,7 +371,8 @@ void RouterScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
     const RouterPort &in = m_dragFrom.output ? target : m_dragFrom;
     // Default ports stay implicit, as the presets write them.
     const auto explicitName = [this](const RouterPort &port) {
-        return graph().portOf(port.node, QString(), port.output) == port.port ? QString() : port.port;
+        return graph().portOf(port.node, QString(), port.output) == port.port ? QString()
+                                                                              : port.port;
     };
     const RouterLink link{out.node, explicitName(out), in.node, explicitName(in)};
     QString reason;
@@ -445,7 +446,7 @@ void RouterScene::refreshState(const QString &id)
             messages.append(messageName(message));
     }
     item->setState(tr("%1 %2").arg(messages.join(QLatin1Char('+')),
-                                    QLocale().toString(activity.level, 'f', 2)),
+                                   QLocale().toString(activity.level, 'f', 2)),
                    activity.level);
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "routerwireitem.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "routernodeitem.h"
 
 #include <QPainter>
@@ -81,8 +81,7 @@ void RouterWireItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
         painter->setPen(QPen(halo, 3.0 + 6.0 * lit, Qt::SolidLine, Qt::RoundCap));
         painter->drawPath(path());
     }
-    QColor color =
-        m_error.isEmpty() ? RouterNodeItem::portColor(m_type) : colors::Error;
+    QColor color = m_error.isEmpty() ? RouterNodeItem::portColor(m_type) : colors::Error;
     QPen pen(color, isSelected() ? 4.0 : 2.0);
     if (!m_error.isEmpty())
         pen.setStyle(Qt::DashLine);

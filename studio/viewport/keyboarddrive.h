@@ -79,10 +79,7 @@ public:
     /** Whether Tab has a hand to switch to. */
     bool hasBothHands() const;
     /** What `hand` is being commanded. */
-    const std::optional<HandCommand> &command(Gripper hand) const
-    {
-        return m_hands[size_t(hand)];
-    }
+    const std::optional<HandCommand> &command(Gripper hand) const { return m_hands[size_t(hand)]; }
     /** The force `hand` closes to (N). */
     double gripSetpoint(Gripper hand) const { return m_setpoint[size_t(hand)]; }
     bool isClosed(Gripper hand) const { return m_closed[size_t(hand)]; }

@@ -217,7 +217,8 @@ void PoseInput::handle(const QByteArray &datagram)
     }
     const size_t hand = size_t(update.command.hand);
     if (m_world && !m_world->hasGripper(update.command.hand)) {
-        refuse(tr("key 'hand': this scene has no %1 gripper").arg(gripperName(update.command.hand)));
+        refuse(
+            tr("key 'hand': this scene has no %1 gripper").arg(gripperName(update.command.hand)));
         return;
     }
     if (update.hasQuat && !update.hasPos && !m_hasPos[hand]) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "simviewport.h"
-#include "colors.h"
 
+#include "colors.h"
 #include "keyboarddrive.h"
 #include "scenefeed.h"
 #include "world.h"
@@ -419,7 +419,8 @@ void SimViewport::wheelEvent(QWheelEvent *event)
 void SimViewport::keyPressEvent(QKeyEvent *event)
 {
     // Auto-repeat would make a held key stutter: the keyboard drive integrates held keys itself.
-    if (m_keyboardDrive && (event->isAutoRepeat() || m_keyboardDrive->press(event->key(), event->modifiers())))
+    if (m_keyboardDrive &&
+        (event->isAutoRepeat() || m_keyboardDrive->press(event->key(), event->modifiers())))
         event->accept();
     else
         QOpenGLWidget::keyPressEvent(event);

@@ -4,9 +4,9 @@
 // RunHistory every 16 ms while a 1280×800 PlotPanel follows. Prints the replots per second,
 // the GUI thread's CPU share and the feed's drops. `--screenshot DIR` instead fills 12 s of
 // the same synthetic run and saves the panel at 1280×800 and 1920×1080.
+#include "plotpanel.h"
 #include "runfeed.h"
 #include "runhistory.h"
-#include "plotpanel.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

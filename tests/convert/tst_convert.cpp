@@ -251,8 +251,8 @@ void TestConvert::modulationMarksSharpness()
                                                nullptr, &error));
     QVERIFY(modulated.sharpness < 0);
     QVERIFY(maxDifference(modulated.intensity, timeline.intensity) > 0.3);
-    QVERIFY(HapticConverter::patternToTimeline(own, QStringLiteral("p"), lra4Options(),
-                                               &modulated, nullptr, &error));
+    QVERIFY(HapticConverter::patternToTimeline(own, QStringLiteral("p"), lra4Options(), &modulated,
+                                               nullptr, &error));
     QCOMPARE(modulated.sharpness, 0.5);
 }
 
@@ -268,8 +268,8 @@ void TestConvert::compatibilityCorpus_data()
     QTest::addColumn<double>("sharpness"); // < 0: none
     QTest::addColumn<Samples>("samples");  // (t, intensity)
     QTest::newRow("AHAP transient, sustained and decaying events")
-        << "transient-and-continuous.ahap" << 0 << (0.4 * 0.8 * 0.025 + 0.6 * 0.6 * 0.5) /
-                                                       (0.8 * 0.025 + 0.6 * 0.5)
+        << "transient-and-continuous.ahap" << 0
+        << (0.4 * 0.8 * 0.025 + 0.6 * 0.6 * 0.5) / (0.8 * 0.025 + 0.6 * 0.5)
         << Samples{{0.01, 0.8}, {0.15, 0.3}, {0.3, 0.6}, {0.5, 0.3}, {0.9, 0.5}, {1.1, 0.0}};
     QTest::newRow("AHAP dynamic parameters and curves")
         << "parameters.ahap" << 5 << 0.5
@@ -312,13 +312,16 @@ void TestConvert::compatibilityCorpus()
     QCOMPARE(pattern.contains(QLatin1String("sharpness")), sharpness >= 0);
     if (sharpness >= 0)
         QVERIFY(std::abs(pattern.value(QLatin1String("sharpness")).toDouble() - sharpness) < 1e-6);
-    const QJsonObject attack =
-        pattern.value(QLatin1String("tracks"))[0].toObject().value(QLatin1String("attack")).toObject();
+    const QJsonObject attack = pattern.value(QLatin1String("tracks"))[0]
+                                   .toObject()
+                                   .value(QLatin1String("attack"))
+                                   .toObject();
     QCOMPARE(attack.value(QLatin1String("type")).toString(), QStringLiteral("keyframes"));
 
     // The envelope, sampled.
     HapticTimeline imported;
-    QVERIFY(HapticConverter::patternToTimeline(pattern, path, options, &imported, nullptr, &error));
+    QVERIFY(
+        HapticConverter::patternToTimeline(pattern, path, options, &imported, nullptr, &error));
     for (const auto &[t, v] : samples)
         QVERIFY2(std::abs(imported.intensity.value(t) - v) < 0.002,
                  qPrintable(QStringLiteral("at %1 s: %2, expected %3")

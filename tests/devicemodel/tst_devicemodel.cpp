@@ -159,7 +159,8 @@ void TestDeviceModel::malformed_data()
         << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 0, "channels": []})")
         << "m.json: /rate: must be between 1 and 100000 frames/s, got 0";
     QTest::newRow("rate below 1 Hz")
-        << QByteArray(R"({"format": "semhap.device/1", "name": "x", "rate": 1e-300, "channels": []})")
+        << QByteArray(
+               R"({"format": "semhap.device/1", "name": "x", "rate": 1e-300, "channels": []})")
         << "m.json: /rate: must be between 1 and 100000 frames/s, got 1e-300";
     QTest::newRow("slash in name")
         << QByteArray(R"({"format": "semhap.device/1", "name": "a/b", "rate": 1})")

@@ -4,8 +4,8 @@
 // rebound at tick boundaries, the user can take the grippers over, and the source (a
 // simulation, a live rig, a recording) and the router can be swapped while it runs.
 #include "devicemanager.h"
-#include "engine.h"
 #include "driveoperator.h"
+#include "engine.h"
 #include "routergraph.h"
 #include "scenefeed.h"
 #include "sessionreader.h"
@@ -320,7 +320,8 @@ void TestEngine::swapsTheRouterMidGrasp()
     // The new router's devices get frames; the history saw no gap.
     bool sent = false;
     for (int d = 0; d < int(engine.history().devices().size()); ++d)
-        sent = sent || engine.history().deviceFrames(d).end() > engine.history().deviceFrames(d).begin();
+        sent = sent ||
+               engine.history().deviceFrames(d).end() > engine.history().deviceFrames(d).begin();
     QVERIFY(sent);
     QCOMPARE(engine.dropped(), quint64(0));
 
@@ -355,7 +356,7 @@ void TestEngine::recordsAndReplays()
     QVERIFY(!engine.source()->pipeline());
     QVERIFY(!engine.source()->isDrivable());
     QVERIFY(engine.world()); // the recorded scene states, for the viewport
-    engine.run(); // a replay is scrubbed, not run
+    engine.run();            // a replay is scrubbed, not run
     QVERIFY(!engine.isRunning());
     QVERIFY(!engine.startRecording(dir.filePath("again.db"), QString(), &error));
     QVERIFY(!engine.bindDevice("right.vibro", "virtual:x", &error));

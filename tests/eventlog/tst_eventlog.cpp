@@ -2,10 +2,10 @@
 // The event log and the metrics panel on a live history: rows and their columns, batched
 // appends and the row cap, the filters driven through their widgets, the time a click
 // reports, reset; metrics shown with human labels and formatted values.
+#include "colors.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "metricspanel.h"
-#include "colors.h"
 #include "runhistory.h"
 
 #include <QCheckBox>

@@ -24,7 +24,8 @@ int main(int argc, char *argv[])
         return false;
     };
     const bool ok =
-        write(QFile::decodeName(argv[1]) + QStringLiteral("/large.ahap"), semhap::largeAhap(5000)) &&
+        write(QFile::decodeName(argv[1]) + QStringLiteral("/large.ahap"),
+              semhap::largeAhap(5000)) &&
         write(QFile::decodeName(argv[2]) + QStringLiteral("/large.json"),
               QJsonDocument(semhap::largeRouter(30000)).toJson(QJsonDocument::Compact));
     return ok ? 0 : 1;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The keyboard teleoperation without a window: directions follow the camera, the
 // workspace holds the wrist, Shift slows down, and taking over starts where the hands are.
-#include "keyboarddrive.h"
 #include "driveoperator.h"
+#include "keyboarddrive.h"
 #include "world.h"
 
 #include <QSignalSpy>

@@ -5,9 +5,9 @@
 // recordings that keep each frame's arrival time.
 #include "contactframereader.h"
 #include "devicemanager.h"
+#include "engine.h"
 #include "routergraph.h"
 #include "sessionreader.h"
-#include "engine.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -56,8 +56,7 @@ QList<QByteArray> traceLines(int count)
 class Sender
 {
 public:
-    explicit Sender(Engine &engine) : m_engine(engine), m_port(quint16(engine.liveStats().port))
-    {}
+    explicit Sender(Engine &engine) : m_engine(engine), m_port(quint16(engine.liveStats().port)) {}
 
     void send(const QByteArray &datagram)
     {

@@ -192,8 +192,8 @@ void TestOutputs::outputIsAnInput_data()
                        "100",    "--out",           path("mine.json")}
         << path("mine.json") << "it is the same file as the input";
     QTest::newRow("emulate: the live log onto its model")
-        << QStringList{"emulate", "--model", path("model.json"), "--udp", "127.0.0.1:0",
-                       "--log", path("model.json")}
+        << QStringList{"emulate",     "--model", path("model.json"), "--udp",
+                       "127.0.0.1:0", "--log",   path("model.json")}
         << path("model.json") << "it is the same file as the input";
 }
 

@@ -155,8 +155,9 @@ void TestPattern::errors_data()
     for (int i = 0; i <= Pattern::MaxTracks; ++i)
         tracks += QByteArray(i ? "," : "") + R"({"channels": ["*"]})";
     QTest::newRow("too many tracks")
-        << QByteArray(R"({"format": "semhap.pattern/1", "name": "p", "model": "lra4", "tracks": [)" +
-                      tracks + "]}")
+        << QByteArray(
+               R"({"format": "semhap.pattern/1", "name": "p", "model": "lra4", "tracks": [)" +
+               tracks + "]}")
         << "FILE: /tracks: 1025 tracks, more than the 1024 a pattern may have";
     QTest::newRow("no format") << QByteArray(R"({"name":"p"})") << "FILE: missing key 'format'";
     QTest::newRow("wrong format")

@@ -370,7 +370,8 @@ void TestPipeline::overfullTickIsCounted()
     // tick, two more than a tick holds. They are counted, for the commands to say so.
     RouterGraph graph;
     for (int d = 0; d < 17; ++d)
-        graph.nodes.push_back({QString("f%1").arg(d), "force", QJsonObject{{"gripper", "right"}}, {}});
+        graph.nodes.push_back(
+            {QString("f%1").arg(d), "force", QJsonObject{{"gripper", "right"}}, {}});
     LoadError error;
     std::unique_ptr<Router> compiled = Router::compile(graph, &error);
     QVERIFY2(compiled, qPrintable(error.toString()));

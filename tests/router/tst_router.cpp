@@ -199,10 +199,11 @@ void TestRouter::invalid_data()
     QTest::newRow("detector param type") << edited("nodes/0/params/max", "lots")
                                          << "r.json: /nodes/0/params/max: node 'right.force' "
                                             "(force): must be a finite number, found a string";
-    QTest::newRow("unknown detector param") << edited("nodes/0/params/loss", 3)
-                                            << "r.json: /nodes/0/params/loss: node 'right.force' "
-                                               "(force): unknown parameter 'loss' (known: gripper, "
-                                               "grasp, break, max, hysteresis, minDuration)";
+    QTest::newRow("unknown detector param")
+        << edited("nodes/0/params/loss", 3)
+        << "r.json: /nodes/0/params/loss: node 'right.force' "
+           "(force): unknown parameter 'loss' (known: gripper, "
+           "grasp, break, max, hysteresis, minDuration)";
     QTest::newRow("filter value") << edited("nodes/1/params/category", "warning")
                                   << "r.json: /nodes/1/params/category: node 'warn' (filter): "
                                      "must be \"confirmation\" or \"exception\", or a list of "
@@ -367,10 +368,9 @@ void TestRouter::sessionRouterNamesNoFile()
     // make replay read another file.
     RouterGraph graph;
     LoadError error;
-    QVERIFY(RouterGraph::fromJson(
-        object(R"({"format": "semhap.router/1", "nodes": [
+    QVERIFY(RouterGraph::fromJson(object(R"({"format": "semhap.router/1", "nodes": [
             {"id": "p", "type": "pattern", "params": {"pattern": "/etc/passwd.json"}}]})"),
-        "s.db", &graph, &error));
+                                  "s.db", &graph, &error));
     graph.filesAllowed = false;
     QVERIFY(!Router::compile(graph, &error));
     QCOMPARE(error.toString(), QString("s.db: /nodes/0/params/pattern: node 'p' (pattern): names "
@@ -564,8 +564,9 @@ void TestRouter::deviceHands()
 
     graph.nodes[0].params.insert("hand", "middle");
     QVERIFY(!Router::compile(graph, &error));
-    QCOMPARE(error.toString(), QString("<input>: /nodes/0/params/hand: node 'lefty.vibro' (device): must "
-                                       "be \"left\" or \"right\""));
+    QCOMPARE(error.toString(),
+             QString("<input>: /nodes/0/params/hand: node 'lefty.vibro' (device): must "
+                     "be \"left\" or \"right\""));
 }
 
 void TestRouter::activityShowsWhatRouted()
@@ -728,8 +729,9 @@ void TestRouter::invalidPredictive_data()
     QTest::newRow("negative tau") << withParam(predictiveRouter(), 1, "tau", -0.1)
                                   << "r.json: /nodes/1/params/tau: node 'F.predicted' "
                                      "(predict): must not be negative, got -0.1";
-    QTest::newRow("zero mu") << withParam(predictiveRouter(), 0, "mu", 0)
-                             << "r.json: /nodes/0/params/mu: node 'F' (signal): must be positive, got 0";
+    QTest::newRow("zero mu")
+        << withParam(predictiveRouter(), 0, "mu", 0)
+        << "r.json: /nodes/0/params/mu: node 'F' (signal): must be positive, got 0";
 }
 
 void TestRouter::invalidPredictive()

@@ -5,6 +5,7 @@
 // restore the exact graph, files round-trip, and the engine swaps routers while running.
 #include "contactframereader.h"
 #include "devicemanager.h"
+#include "engine.h"
 #include "gatedrouter.h"
 #include "mainwindow.h"
 #include "pipeline.h"
@@ -15,7 +16,6 @@
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "runhistory.h"
-#include "engine.h"
 #include "studio.h"
 #include "userpatterns.h"
 
@@ -538,7 +538,8 @@ void TestRouterEditor::inspectorShowsTheNodeTypeTable()
     auto *hysteresis = f.editor.inspector()->findChild<QLineEdit *>("param:hysteresis");
     QVERIFY(hysteresis);
     QCOMPARE(hysteresis->toolTip(), threshold.param("hysteresis")->help);
-    QVERIFY2(hysteresis->placeholderText().contains("0"), qPrintable(hysteresis->placeholderText()));
+    QVERIFY2(hysteresis->placeholderText().contains("0"),
+             qPrintable(hysteresis->placeholderText()));
     auto *message = f.editor.inspector()->findChild<QComboBox *>("param:message");
     QVERIFY(message);
     for (const QString &choice : threshold.param("message")->choices)
@@ -656,8 +657,8 @@ void TestRouterEditor::documentDrivesItsViews()
     undo.push(new SetParamCommand(&document, filter.id, "category", "exception"));
     QCOMPARE(params.count(), 1);
     undo.push(new RenameNodeCommand(&document, filter.id, "right.other"));
-    undo.push(new MoveNodesCommand(&document, {"right.other"}, {QPointF(40, 900)},
-                                   {QPointF(80, 950)}));
+    undo.push(
+        new MoveNodesCommand(&document, {"right.other"}, {QPointF(40, 900)}, {QPointF(80, 950)}));
     QVERIFY(document.isModified());
     QVERIFY(inStep(first) && inStep(second));
     QVERIFY(first.nodeItem("right.other") && !first.nodeItem(filter.id));

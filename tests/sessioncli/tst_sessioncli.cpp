@@ -251,8 +251,9 @@ void TestSessionCli::exportCsv()
                                         "left_fz,left_mu,right_f,right_n,right_actor,right_fx,"
                                         "right_fy,right_fz,right_mu,arrival"));
     // The simulation knows the friction coefficient of what a finger touches.
-    QVERIFY(std::any_of(frames.begin() + 1, frames.end(),
-                        [](const QByteArray &row) { return row.split(',').at(8).toDouble() > 0; }));
+    QVERIFY(std::any_of(frames.begin() + 1, frames.end(), [](const QByteArray &row) {
+        return row.split(',').at(8).toDouble() > 0;
+    }));
     QCOMPARE(frames.size() - 1, contents(m_dir.filePath("with.frames")).count('\n'));
     const QList<QByteArray> devices = contents(csv + "/device_frames.csv").split('\n');
     QVERIFY(devices.first().startsWith("t,left.air.b1,"));
@@ -418,8 +419,8 @@ void TestSessionCli::listenClosesItsSessionOnSigterm()
     QByteArray err;
     // With a band bound, a signal used to stop it and end the process there, the session
     // left unclosed.
-    const quint16 port = startListen(
-        listen, {"--session", session, "--bind", "right.vibro=virtual:band"}, &err);
+    const quint16 port =
+        startListen(listen, {"--session", session, "--bind", "right.vibro=virtual:band"}, &err);
     QVERIFY2(port, err.constData());
     QUdpSocket sender;
     for (int k = 0; k < 10; ++k)
@@ -441,9 +442,9 @@ void TestSessionCli::runClosesItsSessionOnSigterm()
     const QString session = m_dir.filePath("run-terminated.db");
     const QString frames = m_dir.filePath("run-terminated.jsonl");
     QProcess run;
-    run.start(SEMHAP_CLI_BINARY, {"run", "--scene", "box_and_block", "--router", "C3",
-                                  "--operator", "scripted", "--duration", "600", "--realtime",
-                                  "--session", session, "--frames", frames});
+    run.start(SEMHAP_CLI_BINARY,
+              {"run", "--scene", "box_and_block", "--router", "C3", "--operator", "scripted",
+               "--duration", "600", "--realtime", "--session", session, "--frames", frames});
     QVERIFY(run.waitForStarted());
     QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(session), 10000);
     QThread::msleep(1000);

@@ -496,8 +496,8 @@ void TestSessions::rowsAreCheckedAsStreamsAre()
     qint64 events = 0;
     qint64 deviceFrames = 0;
     qint64 inputs = 0;
-    QVERIFY(reader->readContactFrames([&](const ContactFrame &, double) { return ++frames; },
-                                      &error));
+    QVERIFY(
+        reader->readContactFrames([&](const ContactFrame &, double) { return ++frames; }, &error));
     QVERIFY(reader->readEvents([&](const SemanticEvent &) { return ++events; }, &error));
     QVERIFY(reader->readDeviceFrames([&](const DeviceFrame &) { return ++deviceFrames; }, &error));
     QVERIFY(reader->readHandCommands([&](const HandCommand &) { return ++inputs; }, &error));

@@ -380,7 +380,7 @@ void TestSimRun::commandLineErrors_data()
         << base + QStringList{"--scene", "box_and_block", "--cubes", "99"} << 1
         << "box_and_block: asked for 99 cubes, the scene has 24";
     // compare reads --duration and --cubes by the same rules as run.
-    const QStringList compare{"compare",  "--scene",    "box_and_block", "--routers", "none",
+    const QStringList compare{"compare",    "--scene",  "box_and_block", "--routers", "none",
                               "--operator", "scripted", "--seeds",       "1"};
     QTest::newRow("compare: negative cubes")
         << compare + QStringList{"--duration", "1", "--cubes", "-2"} << 2

@@ -315,9 +315,12 @@ void TestStudio::screenshotsOfEveryPanel_data()
     QTest::addColumn<QSize>("size");
     QTest::addColumn<QString>("scene");
     QTest::addColumn<QString>("language");
-    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block" << "en";
-    QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting" << "en";
-    QTest::newRow("1280x800-de") << QSize(1280, 800) << "bimanual_sorting" << "de";
+    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block"
+                              << "en";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting"
+                               << "en";
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "bimanual_sorting"
+                                 << "de";
 }
 
 // Pictures of the window with each bottom dock (and the patterns tab) raised, to be looked at
@@ -395,8 +398,7 @@ void TestStudio::screenshotsOfEveryPanel()
     window.routerEditor()->fitView();
     QGraphicsView *view = window.routerEditor()->view();
     for (const RouterNode &node : window.routerEditor()->graph().nodes) {
-        const QRectF box =
-            window.routerEditor()->scene()->nodeItem(node.id)->sceneBoundingRect();
+        const QRectF box = window.routerEditor()->scene()->nodeItem(node.id)->sceneBoundingRect();
         QVERIFY2(view->viewport()->rect().contains(view->mapFromScene(box).boundingRect()),
                  qPrintable(node.id + " is outside the router's view"));
     }

@@ -2,9 +2,9 @@
 // The simulation viewport in a real window with OpenGL (run under Xvfb): it draws the
 // scene, the mouse moves the camera, teleoperation keys move the active gripper's target
 // through a DriveOperator. Screenshots are saved beside the test binary to be looked at.
+#include "driveoperator.h"
 #include "imagechecks.h"
 #include "keyboarddrive.h"
-#include "driveoperator.h"
 #include "scenefeed.h"
 #include "simviewport.h"
 #include "world.h"
@@ -331,12 +331,14 @@ void TestViewport::gripKeysRampTheGrip()
     // A ramp, not a step: shortly after, the grip is on its way up.
     m_scene->manual.act(world);
     QVERIFY(world.grip(Gripper::Right) < m_keyboardDrive.gripSetpoint(Gripper::Right));
-    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip,
+                 m_keyboardDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
     QCOMPARE(world.grip(Gripper::Right), m_keyboardDrive.gripSetpoint(Gripper::Right));
 
     QTest::keyClick(&m_viewport, Qt::Key_Plus);
-    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip,
+                 m_keyboardDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
     QVERIFY(world.grip(Gripper::Right) > KeyboardDrive::DefaultGrip);
 

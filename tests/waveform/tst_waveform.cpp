@@ -93,6 +93,8 @@ class TestWaveform : public QObject
 
 private slots:
     void typeTable();
+    void numberJson_data();
+    void numberJson();
     void samples_data();
     void samples();
     void durations_data();
@@ -523,6 +525,46 @@ void TestWaveform::errors()
 }
 
 QTEST_GUILESS_MAIN(TestWaveform)
+void TestWaveform::numberJson_data()
+{
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("param");
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<double>("offset");
+    QTest::addColumn<bool>("curve");
+    QTest::newRow("constant") << "1.5"
+                              << "" << 1.0 << 0.0 << false;
+    QTest::newRow("bound") << R"({"param": "intensity"})"
+                           << "intensity" << 1.0 << 0.0 << false;
+    QTest::newRow("linear") << R"({"param": "intensity", "gain": 18, "offset": 2})"
+                            << "intensity" << 18.0 << 2.0 << false;
+    QTest::newRow("curve") << R"({"param": "intensity", "curve": [[0, 2], [1, 20]]})"
+                           << "intensity" << 1.0 << 0.0 << true;
+}
+
+void TestWaveform::numberJson()
+{
+    // What an editor reads of a Number, and writes back exactly as it came, in the form the
+    // parser reads.
+    QFETCH(QString, json);
+    QFETCH(QString, param);
+    QFETCH(double, gain);
+    QFETCH(double, offset);
+    QFETCH(bool, curve);
+    const QJsonValue value = QJsonDocument::fromJson(("[" + json + "]").toUtf8()).array().first();
+    const NumberJson number = NumberJson::read(value);
+    QCOMPARE(number.param, param);
+    QCOMPARE(number.isBound(), !param.isEmpty());
+    QCOMPARE(number.gain, gain);
+    QCOMPARE(number.offset, offset);
+    QCOMPARE(!number.curve.isUndefined(), curve);
+    QCOMPARE(number.toJson(), value);
+    const QJsonObject ramp{{"type", "ramp"}, {"from", 0}, {"to", number.toJson()}, {"time", 1}};
+    ParamTable params; // declares intensity
+    WaveformParser parser(params, QStringLiteral("t.json"));
+    QVERIFY2(parser.parse(ramp, QString()), qPrintable(parser.error().toString()));
+}
+
 void TestWaveform::typeTable()
 {
     // Every type the table lists parses from its required fields' starting values (what the
@@ -546,12 +588,23 @@ void TestWaveform::typeTable()
         const WaveformPtr waveform = parser.parse(json, QString());
         QVERIFY2(waveform, qPrintable(parser.error().toString()));
         QCOMPARE(waveform->type(), type.type);
-        QCOMPARE(type.isModifier(),
-                 type.field("in") != nullptr || type.field("of") != nullptr);
+        QCOMPARE(type.isModifier(), type.field("in") != nullptr || type.field("of") != nullptr);
+        // Its first Number field bound to a parameter parses exactly when the type says so.
+        for (const ParamSpec &field : type.fields) {
+            if (field.kind != ParamKind::Number)
+                continue;
+            QJsonObject bound = json;
+            bound.insert(field.name, QJsonObject{{"param", "intensity"}});
+            WaveformParser binding(table, QStringLiteral("test.json"));
+            QVERIFY2(bool(binding.parse(bound, QString())) == type.bindsParams(),
+                     qPrintable(type.type + '.' + field.name));
+            break;
+        }
     }
     WaveformParser parser(table, QStringLiteral("test.json"));
     QVERIFY(!parser.parse(QJsonObject{{"type", "triangle"}, {"freq", 1}}, QString()));
-    QCOMPARE(parser.error().toString(), QString("test.json: /type: unknown waveform type 'triangle'"));
+    QCOMPARE(parser.error().toString(),
+             QString("test.json: /type: unknown waveform type 'triangle'"));
 }
 
 #include "tst_waveform.moc"

@@ -192,7 +192,8 @@ void TestWaveformDesigner::documentStructureEdits()
     QCOMPARE(document.addPart("/tracks/1/sustain", "release"), QString("/tracks/1/release"));
     QCOMPARE(document.value("/tracks/1/release/to").toDouble(), 0.0);
     QVERIFY(document.addPart("/params", "attack").isEmpty());
-    document.setValue("/tracks/1/sustain", newWaveform("sum", document.value("/tracks/1/sustain")));
+    document.setValue("/tracks/1/sustain",
+                      newWaveform("sum", document.value("/tracks/1/sustain")));
     QCOMPARE(document.addInput("/tracks/1/sustain"), QString("/tracks/1/sustain/of/2"));
     QVERIFY2(document.pattern(), qPrintable(document.error().toString()));
     QCOMPARE(document.remove("/tracks/1/sustain/of/2"), QString("/tracks/1/sustain"));
