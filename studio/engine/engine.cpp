@@ -450,7 +450,14 @@ std::array<std::optional<HandCommand>, 2> Engine::handCommands()
 void Engine::stopAll()
 {
     pause();
+    // The bands first: they go to zero before anything here waits for the pipeline thread.
     m_devices->stopAll();
+    // Then what the readouts and the recording show is what the bands were sent: idle.
+    if (m_source && m_source->pipeline()) {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        silenceDevices();
+    }
+    drain();
 }
 
 void Engine::drain()
@@ -566,8 +573,7 @@ void Engine::silenceDevices()
         silence.channelCount = player.deviceModel(d).channelCount();
         for (int c = 0; c < silence.channelCount; ++c)
             silence.values[size_t(c)] = player.deviceModel(d).channels()[size_t(c)].min;
-        m_output->onDeviceFrame(silence);
-        m_feed.onDeviceFrame(silence);
+        m_outputs.onDeviceFrame(silence);
     }
 }
 

@@ -126,7 +126,11 @@ public:
     /** Binds a router device name to a transport at a tick boundary. */
     bool bindDevice(const QString &name, const QString &uri, QString *error);
     DeviceManager &devices() { return *m_devices; }
-    /** Sends zero to every device now, from any thread; works even while the run is busy. */
+    /**
+     * Pauses and sends every device zero now (the bands before anything waits for the
+     * pipeline thread); the history, so the meters and plots, and the recording then show
+     * each device's idle values. GUI thread.
+     */
     void stopAll();
 
     RunHistory &history() { return m_history; }

@@ -33,6 +33,7 @@ private slots:
     void resetStartsAgain();
     void finishesAtTheDuration();
     void stopAllPauses();
+    void stopAllShowsWhatTheBandsWereSent();
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
@@ -247,6 +248,35 @@ void TestEngine::stopAllPauses()
     engine.run();
     engine.stopAll();
     QVERIFY(!engine.isRunning());
+}
+
+void TestEngine::stopAllShowsWhatTheBandsWereSent()
+{
+    // Mid-grasp the right hand's bands are driven; after Stop all, what the readouts show
+    // (the history's newest frame of every device) is each channel's idle value, at once.
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    const RunHistory &history = engine.history();
+    const auto driven = [&] {
+        for (int d = 0; d < int(history.devices().size()); ++d) {
+            const RunSeries<DeviceFrame> &frames = history.deviceFrames(d);
+            if (frames.end() == frames.begin())
+                continue;
+            const DeviceFrame &last = frames.last();
+            for (int c = 0; c < last.channelCount; ++c) {
+                if (last.values[size_t(c)] > 0.0)
+                    return true;
+            }
+        }
+        return false;
+    };
+    QVERIFY(QTest::qWaitFor(driven, 5000));
+    engine.stopAll();
+    QVERIFY(!driven());
+    for (int d = 0; d < int(history.devices().size()); ++d)
+        QVERIFY(history.deviceFrames(d).end() > history.deviceFrames(d).begin());
 }
 
 void TestEngine::swapsSources()
