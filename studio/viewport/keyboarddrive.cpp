@@ -99,6 +99,9 @@ bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
         return false;
     }
     m_slow = modifiers.testFlag(Qt::ShiftModifier);
+    // Ctrl+R, Ctrl+F, Ctrl+= … are the window's shortcuts: they never take the grippers.
+    if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
+        return false;
     if (!m_world || !m_hands[size_t(m_active)])
         return false;
 

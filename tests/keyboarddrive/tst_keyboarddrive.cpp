@@ -26,12 +26,14 @@ private slots:
     void shiftSlowsDown();
     void takingOverStartsWhereTheHandsAre();
     void unmappedKeysAreLeftAlone();
+    void shortcutsAreLeftAlone_data();
+    void shortcutsAreLeftAlone();
 
 private:
     Pose heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
 
     std::unique_ptr<World> m_world;
-    DriveOperator m_driving;
+    DriveOperator m_operator;
     std::unique_ptr<KeyboardDrive> m_keyboardDrive;
 };
 
@@ -45,7 +47,7 @@ void TestKeyboardDrive::initTestCase()
 void TestKeyboardDrive::init()
 {
     m_keyboardDrive = std::make_unique<KeyboardDrive>();
-    m_keyboardDrive->setOperator(&m_driving);
+    m_keyboardDrive->setOperator(&m_operator);
     m_keyboardDrive->setWorld(m_world.get());
 }
 
@@ -54,7 +56,7 @@ Pose TestKeyboardDrive::heldFor(int key, double seconds, Qt::KeyboardModifiers m
     m_keyboardDrive->press(key, modifiers);
     m_keyboardDrive->advance(seconds);
     m_keyboardDrive->release(key);
-    m_driving.act(*m_world);
+    m_operator.act(*m_world);
     return m_world->target(Gripper::Right);
 }
 
@@ -137,7 +139,7 @@ void TestKeyboardDrive::takingOverStartsWhereTheHandsAre()
     QVERIFY(!m_keyboardDrive->isClosed(Gripper::Right));
     m_keyboardDrive->advance(0.1);
     QCOMPARE(m_keyboardDrive->command(Gripper::Right)->grip, 42.0 - 0.1 * KeyboardDrive::GripRate);
-    m_driving.act(*m_world);
+    m_operator.act(*m_world);
     QCOMPARE(m_world->target(Gripper::Right).pos, start[1]->target.pos);
 
     // Handed back and taken again: from wherever the hand is by then.
@@ -156,6 +158,37 @@ void TestKeyboardDrive::unmappedKeysAreLeftAlone()
     QVERIFY(!m_keyboardDrive->press(Qt::Key_Shift));
     QCOMPARE(engaged.count(), 0);
     QVERIFY(!m_keyboardDrive->isDriving());
+}
+
+void TestKeyboardDrive::shortcutsAreLeftAlone_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::addColumn<int>("modifiers");
+    QTest::newRow("Ctrl+R (reset)") << int(Qt::Key_R) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+F (forces)") << int(Qt::Key_F) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+= (faster)") << int(Qt::Key_Equal) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl++ (faster)") << int(Qt::Key_Plus) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+Shift+R (record)")
+        << int(Qt::Key_R) << int(Qt::ControlModifier | Qt::ShiftModifier);
+    QTest::newRow("Alt+W") << int(Qt::Key_W) << int(Qt::AltModifier);
+    QTest::newRow("Meta+Space") << int(Qt::Key_Space) << int(Qt::MetaModifier);
+}
+
+void TestKeyboardDrive::shortcutsAreLeftAlone()
+{
+    // The window's shortcuts reach the window: pressing one in the viewport neither moves a
+    // hand nor takes the grippers from the operator.
+    QFETCH(int, key);
+    QFETCH(int, modifiers);
+    QSignalSpy started(m_keyboardDrive.get(), &KeyboardDrive::driveStarted);
+    QVERIFY(!m_keyboardDrive->press(key, Qt::KeyboardModifiers(modifiers)));
+    QCOMPARE(started.count(), 0);
+    QVERIFY(!m_keyboardDrive->isDriving());
+    // The same key alone is the map's.
+    if (key != Qt::Key_Equal && key != Qt::Key_Plus) {
+        QVERIFY(m_keyboardDrive->press(key));
+        QVERIFY(m_keyboardDrive->isDriving());
+    }
 }
 
 QTEST_MAIN(TestKeyboardDrive)
