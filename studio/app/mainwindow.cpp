@@ -262,7 +262,13 @@ void MainWindow::createActions()
             openLiveRig(dialog.options());
     });
     m_preferencesAction =
-        action(tr("Preferences…"), QStringLiteral("preferencesAction"), QKeySequence::Preferences);
+        action(tr("Preferences…"), QStringLiteral("preferencesAction"),
+               QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    // Ctrl+, everywhere (Linux desktops define no standard key); the platform's own too.
+    if (const QList<QKeySequence> own = QKeySequence::keyBindings(QKeySequence::Preferences);
+        !own.isEmpty() && !own.contains(m_preferencesAction->shortcut()))
+        m_preferencesAction->setShortcuts(QList<QKeySequence>{m_preferencesAction->shortcut()} +
+                                          own);
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
     connect(m_preferencesAction, &QAction::triggered, this, &MainWindow::showPreferences);
     m_resetLayoutAction = action(tr("Reset layout"), QStringLiteral("resetLayoutAction"), {});

@@ -22,6 +22,7 @@ const QString SessionsFolderKey = QStringLiteral("sessions/folder");
 
 PreferencesDialog::PreferencesDialog(QWidget *parent) : QDialog(parent)
 {
+    setObjectName(QStringLiteral("preferencesDialog"));
     setWindowTitle(tr("Preferences"));
     m_language = new QComboBox(this);
     m_language->setObjectName(QStringLiteral("languagePicker"));

@@ -163,6 +163,17 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
 
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
     QVERIFY(window.engine().simTime() < 0.5);
+
+    // Ctrl+, opens the preferences, as the manual says, on Linux too.
+    QString opened;
+    QTimer::singleShot(300, [&] {
+        if (QWidget *dialog = QApplication::activeModalWidget()) {
+            opened = dialog->objectName();
+            dialog->close();
+        }
+    });
+    QTest::keyClick(&window, Qt::Key_Comma, Qt::ControlModifier);
+    QTRY_COMPARE(opened, QString("preferencesDialog"));
 }
 
 void TestStudio::timeWindowFollowsTheSpinBox()
