@@ -319,6 +319,21 @@ void TestStudio::screenshotHook()
     studio.start(SEMHAP_STUDIO_BINARY, {"--speed", "fast"});
     QVERIFY(studio.waitForFinished(60000));
     QCOMPARE(studio.exitCode(), 2);
+
+    // The help and the version need no display (a terminal over ssh, a packaging check).
+    QProcessEnvironment headless = env;
+    headless.remove("DISPLAY");
+    headless.remove("WAYLAND_DISPLAY");
+    headless.remove("QT_QPA_PLATFORM");
+    studio.setProcessEnvironment(headless);
+    for (const char *ask : {"--help", "--version"}) {
+        studio.start(SEMHAP_STUDIO_BINARY, {ask});
+        QVERIFY(studio.waitForFinished(60000));
+        QCOMPARE(studio.exitCode(), 0);
+        const QString out = QString::fromUtf8(studio.readAllStandardOutput());
+        QVERIFY2(out.contains(QString(ask) == "--help" ? "--scene" : "semhap-studio "),
+                 qPrintable(out));
+    }
 }
 
 void TestStudio::screenshotsOfEveryPanel_data()
