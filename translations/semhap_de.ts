@@ -406,6 +406,10 @@
         <source>End</source>
         <translation>Ende</translation>
     </message>
+    <message>
+        <source>Begin and end</source>
+        <translation>Beginn und Ende</translation>
+    </message>
 </context>
 <context>
     <name>semhap::LiveRigDialog</name>

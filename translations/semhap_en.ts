@@ -406,6 +406,10 @@
         <source>End</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Begin and end</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::LiveRigDialog</name>

@@ -23,9 +23,10 @@ class EventLogFilter : public QSortFilterProxyModel
 public:
     using QSortFilterProxyModel::QSortFilterProxyModel;
 
-    void setChoice(int role, int value)
+    /** Keeps rows whose `role` value `v` has bit `v` set in `accepted` (-1: every row). */
+    void setChoice(int role, int accepted)
     {
-        m_choices[role] = value;
+        m_choices[role] = accepted;
         invalidateFilter();
     }
     void setText(const QString &text)
@@ -40,7 +41,7 @@ protected:
         const QAbstractItemModel *model = sourceModel();
         const QModelIndex first = model->index(row, 0, parent);
         for (auto it = m_choices.cbegin(); it != m_choices.cend(); ++it) {
-            if (it.value() >= 0 && model->data(first, it.key()).toInt() != it.value())
+            if (!((it.value() >> model->data(first, it.key()).toInt()) & 1))
                 return false;
         }
         if (m_text.isEmpty())
@@ -61,14 +62,20 @@ private:
 
 namespace {
 
-/** A combo box of "all" (-1) and the given choices, each with its enum value as data. */
+/** The filter's mask for one enum value. */
+int only(int value)
+{
+    return 1 << value;
+}
+
+/** A combo box of "all" (mask -1) and the given choices, each with its mask as data. */
 QComboBox *choiceBox(const QString &all, const QList<QPair<QString, int>> &choices,
                      QWidget *parent)
 {
     auto *box = new QComboBox(parent);
     box->addItem(all, -1);
-    for (const auto &[text, value] : choices)
-        box->addItem(text, value);
+    for (const auto &[text, mask] : choices)
+        box->addItem(text, mask);
     return box;
 }
 
@@ -89,18 +96,24 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
     m_follow->setChecked(true);
     m_gripper =
         choiceBox(tr("All grippers"),
-                  {{tr("Left"), int(Gripper::Left)}, {tr("Right"), int(Gripper::Right)}}, this);
+                  {{tr("Left"), only(int(Gripper::Left))}, {tr("Right"), only(int(Gripper::Right))}},
+                  this);
     m_gripper->setObjectName(QStringLiteral("gripperFilter"));
     m_category = choiceBox(tr("All categories"),
-                           {{tr("Confirmation"), int(Category::Confirmation)},
-                            {tr("Exception"), int(Category::Exception)}},
+                           {{tr("Confirmation"), only(int(Category::Confirmation))},
+                            {tr("Exception"), only(int(Category::Exception))}},
                            this);
     m_category->setObjectName(QStringLiteral("categoryFilter"));
     m_phase = choiceBox(tr("All phases"),
-                        {{tr("Begin"), int(EventPhase::Begin)},
-                         {tr("Update"), int(EventPhase::Update)},
-                         {tr("End"), int(EventPhase::End)}},
+                        {{tr("Begin"), only(int(EventPhase::Begin))},
+                         {tr("Update"), only(int(EventPhase::Update))},
+                         {tr("End"), only(int(EventPhase::End))}},
                         this);
+    // First and chosen at the start: a message's begin and end, without the stream of
+    // intensity updates between them that would bury them.
+    m_phase->insertItem(0, tr("Begin and end"),
+                        only(int(EventPhase::Begin)) | only(int(EventPhase::End)));
+    m_phase->setCurrentIndex(0);
     m_phase->setObjectName(QStringLiteral("phaseFilter"));
 
     m_view->setObjectName(QStringLiteral("eventTable"));
@@ -150,6 +163,7 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
                                                   {m_category, EventLogModel::CategoryRole},
                                                   {m_phase, EventLogModel::PhaseRole}};
     for (const auto &[box, role] : boxes) {
+        m_filter->setChoice(role, box->currentData().toInt());
         connect(box, &QComboBox::currentIndexChanged, this, [this, box = box, role = role] {
             m_filter->setChoice(role, box->currentData().toInt());
         });

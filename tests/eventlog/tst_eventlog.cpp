@@ -91,6 +91,12 @@ void choose(QComboBox *box, int index)
         QTest::keyClick(box, Qt::Key_Down);
 }
 
+/** Shows every phase, updates included: the panel starts on begins and ends. */
+void showAllPhases(EventLogPanel &panel)
+{
+    choose(panel.findChild<QComboBox *>(QStringLiteral("phaseFilter")), 1);
+}
+
 } // namespace
 
 class TestEventLog : public QObject
@@ -173,24 +179,26 @@ void TestEventLog::filters_data()
 {
     QTest::addColumn<int>("gripper");  ///< combo index: all, left, right
     QTest::addColumn<int>("category"); ///< all, confirmation, exception
-    QTest::addColumn<int>("phase");    ///< all, begin, update, end
+    QTest::addColumn<int>("phase");    ///< begin and end (the default), all, begin, update, end
     QTest::addColumn<QString>("text");
     QTest::addColumn<QStringList>("times");
     const QStringList all = {"0.100", "0.250", "1.000", "2.500", "3.000", "3.200", "4.000"};
-    QTest::newRow("everything") << 0 << 0 << 0 << "" << all;
-    QTest::newRow("left") << 1 << 0 << 0 << "" << QStringList{"1.000", "4.000"};
-    QTest::newRow("right") << 2 << 0 << 0 << ""
+    QTest::newRow("by default, no updates")
+        << 0 << 0 << 0 << "" << QStringList{"0.100", "1.000", "2.500", "3.000", "3.200", "4.000"};
+    QTest::newRow("everything") << 0 << 0 << 1 << "" << all;
+    QTest::newRow("left") << 1 << 0 << 1 << "" << QStringList{"1.000", "4.000"};
+    QTest::newRow("right") << 2 << 0 << 1 << ""
                            << QStringList{"0.100", "0.250", "2.500", "3.000", "3.200"};
     QTest::newRow("confirmations")
-        << 0 << 1 << 0 << "" << QStringList{"0.100", "0.250", "1.000", "4.000"};
-    QTest::newRow("exceptions") << 0 << 2 << 0 << "" << QStringList{"2.500", "3.000", "3.200"};
-    QTest::newRow("updates") << 0 << 0 << 2 << "" << QStringList{"0.250"};
-    QTest::newRow("ends") << 0 << 0 << 3 << "" << QStringList{"3.200", "4.000"};
-    QTest::newRow("text detector") << 0 << 0 << 0 << "left.FORCE" << QStringList{"1.000", "4.000"};
-    QTest::newRow("text message") << 0 << 0 << 0 << "break" << QStringList{"3.000", "3.200"};
-    QTest::newRow("right exception begins") << 2 << 2 << 1 << "" << QStringList{"2.500", "3.000"};
-    QTest::newRow("nothing matches") << 1 << 2 << 0 << "" << QStringList{};
-    QTest::newRow("no such text") << 0 << 0 << 0 << "zzz" << QStringList{};
+        << 0 << 1 << 1 << "" << QStringList{"0.100", "0.250", "1.000", "4.000"};
+    QTest::newRow("exceptions") << 0 << 2 << 1 << "" << QStringList{"2.500", "3.000", "3.200"};
+    QTest::newRow("updates") << 0 << 0 << 3 << "" << QStringList{"0.250"};
+    QTest::newRow("ends") << 0 << 0 << 4 << "" << QStringList{"3.200", "4.000"};
+    QTest::newRow("text detector") << 0 << 0 << 1 << "left.FORCE" << QStringList{"1.000", "4.000"};
+    QTest::newRow("text message") << 0 << 0 << 1 << "break" << QStringList{"3.000", "3.200"};
+    QTest::newRow("right exception begins") << 2 << 2 << 2 << "" << QStringList{"2.500", "3.000"};
+    QTest::newRow("nothing matches") << 1 << 2 << 1 << "" << QStringList{};
+    QTest::newRow("no such text") << 0 << 0 << 1 << "zzz" << QStringList{};
 }
 
 void TestEventLog::filters()
@@ -219,6 +227,7 @@ void TestEventLog::clickReportsTheTime()
     RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
+    showAllPhases(panel);
     panel.resize(640, 800);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
@@ -247,6 +256,7 @@ void TestEventLog::followKeepsTheNewestInView()
     RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
+    showAllPhases(panel);
     panel.resize(420, 600);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
@@ -273,6 +283,7 @@ void TestEventLog::resetClears()
     RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
+    showAllPhases(panel);
     append(history, 0, run().size());
     QCOMPARE(panel.view()->model()->rowCount(), int(run().size()));
     startRun(history);
@@ -286,6 +297,7 @@ void TestEventLog::longRunStaysCapped()
     RunHistory history;
     startRun(history);
     EventLogPanel panel(history);
+    showAllPhases(panel);
     panel.resize(640, 800);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
