@@ -171,6 +171,12 @@ private:
             m_deviceInsert.clear();
             m_inputInsert.clear();
             m_sceneInsert.clear();
+            // A finished session is one file: back to a rollback journal, so readers (the
+            // studio's replay, `semhap replay`, opening it read-only) leave no -wal or -shm
+            // beside it. WAL was for recording; a killed recording keeps it and recovers.
+            QSqlQuery journal(db);
+            check(journal.exec(QStringLiteral("PRAGMA journal_mode=DELETE")), journal);
+            journal.clear();
             db.close();
         }
         QSqlDatabase::removeDatabase(m_connection);

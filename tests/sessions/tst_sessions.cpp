@@ -160,6 +160,7 @@ private slots:
     void metadataAndRouter();
     void timeWindow();
     void neverOverwrites();
+    void finishedSessionIsOneFile();
     void sceneStates();
     void schemaOneStillOpens();
     void damagedFiles_data();
@@ -336,6 +337,31 @@ void TestSessions::neverOverwrites()
     QCOMPARE(error, path + ": already exists (a session is never overwritten)");
     QVERIFY(file.open(QIODevice::ReadOnly));
     QCOMPARE(file.readAll(), QByteArray("precious"));
+}
+
+void TestSessions::finishedSessionIsOneFile()
+{
+    // Recorded in WAL mode, a finished session is one file again, and reading it (as the
+    // studio's replay does, read-only) leaves no -wal or -shm beside it.
+    const auto router = c3();
+    QTemporaryDir dir;
+    const QString path = dir.filePath("one.db");
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    ContactFrame frame;
+    frame.t = 1.0;
+    writer->recordContactFrame(frame, qQNaN());
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+    writer.reset();
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"one.db"});
+    {
+        std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+        QVERIFY2(reader, qPrintable(error));
+        QCOMPARE(reader->contactFrameCount(), qint64(1));
+    }
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"one.db"});
 }
 
 void TestSessions::sceneStates()
