@@ -104,6 +104,9 @@ bool Engine::start(const RunOptions &options, QString *error)
     m_source = m_simulation.get();
     m_options = options;
     install();
+    // A first picture before the thread starts: a run loaded or reset while paused shows
+    // its scene at once, not a blank viewport until Step or Run.
+    m_simulation->sceneFeed()->capture(m_simulation->run().world(), SceneOverlay());
     startThread();
     return true;
 }

@@ -76,6 +76,7 @@ void TestEngine::loadsPausedWithVirtualDevices()
     QVERIFY(!engine.isRunning());
     QVERIFY(engine.world());
     QVERIFY(engine.sceneFeed());
+    QVERIFY(engine.sceneFeed()->takeLatest()); // a picture to draw before the first step
     QCOMPARE(engine.simTime(), 0.0);
     const auto devices = engine.history().devices();
     QVERIFY(!devices.empty());

@@ -45,6 +45,7 @@ private slots:
     void opensOnTheDefaultsAndRuns();
     void picksSceneAndRouter();
     void runStepAndSpeedFromTheKeyboard();
+    void pausedResetShowsTheScene();
     void timeWindowFollowsTheSpinBox();
     void stopAllWorksFromAnywhere();
     void aKeyInTheViewportTakesOver();
@@ -174,6 +175,22 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
     });
     QTest::keyClick(&window, Qt::Key_Comma, Qt::ControlModifier);
     QTRY_COMPARE(opened, QString("preferencesDialog"));
+}
+
+void TestStudio::pausedResetShowsTheScene()
+{
+    // Paused, then reset: the new run has not stepped, yet the viewport shows its scene.
+    MainWindow window(options());
+    QVERIFY(openWindow(window));
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(!window.engine().isRunning());
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
+    QCOMPARE(window.engine().simTime(), 0.0);
+    QTest::qWait(500);
+    auto *viewport = window.findChild<SimViewport *>();
+    QString why;
+    QVERIFY2(looksDrawn(viewport->grabFramebuffer(), &why), qPrintable(why));
+    QCOMPARE(window.engine().simTime(), 0.0);
 }
 
 void TestStudio::timeWindowFollowsTheSpinBox()
