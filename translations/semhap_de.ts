@@ -1961,16 +1961,8 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation> s</translation>
     </message>
     <message>
-        <source>When the preview ends the pattern (its release starts)</source>
-        <translation>Wann die Vorschau das Muster beendet (sein Abklingen beginnt)</translation>
-    </message>
-    <message>
         <source>Hold</source>
         <translation>Halten</translation>
-    </message>
-    <message>
-        <source>Preview without an end: the sustain goes on</source>
-        <translation>Vorschau ohne Ende: Das Halten dauert an</translation>
     </message>
     <message>
         <source>Model</source>
@@ -2131,6 +2123,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Valid pattern</source>
         <translation>Gültiges Muster</translation>
+    </message>
+    <message>
+        <source>When the preview and the audition end the pattern (its release starts)</source>
+        <translation>Wann Vorschau und Vorhören das Muster beenden (sein Abklingen beginnt)</translation>
+    </message>
+    <message>
+        <source>Preview and audition without an end: the sustain goes on</source>
+        <translation>Vorschau und Vorhören ohne Ende: das Halten geht weiter</translation>
     </message>
 </context>
 </TS>

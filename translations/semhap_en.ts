@@ -1960,15 +1960,7 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>When the preview ends the pattern (its release starts)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Hold</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Preview without an end: the sustain goes on</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2129,6 +2121,14 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Valid pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When the preview and the audition end the pattern (its release starts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preview and audition without an end: the sustain goes on</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

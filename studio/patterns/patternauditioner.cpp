@@ -28,7 +28,7 @@ PatternAuditioner::~PatternAuditioner()
 }
 
 bool PatternAuditioner::begin(const PatternPtr &pattern, const TransportSource &source,
-                              double intensity, QString *reason)
+                              double intensity, double endAt, QString *reason)
 {
     Transport *transport = source ? source() : nullptr;
     if (!pattern || !transport) {
@@ -44,6 +44,7 @@ bool PatternAuditioner::begin(const PatternPtr &pattern, const TransportSource &
     m_clock.start();
     m_frames = 0;
     m_idleSince = -1.0;
+    m_endAt = endAt;
     m_voice->setParam(ParamTable::Intensity, intensity, 0.0);
     m_voice->begin(0.0);
     // The timer runs at the device's rate, up to 500 Hz (a 2 ms interval).
@@ -95,6 +96,9 @@ void PatternAuditioner::tick()
         return;
     }
     const double t = now();
+    // The end the preview shows, at its time rather than at this tick's.
+    if (m_endAt >= 0.0 && t >= m_endAt && m_voice->isActive())
+        m_voice->end(m_endAt);
     m_voice->advance(t);
     DeviceFrame frame;
     frame.t = t;

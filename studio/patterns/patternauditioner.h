@@ -35,10 +35,12 @@ public:
 
     /**
      * Begins `pattern` now on the transport `source` gives (the pattern must be for its
-     * model); restarts it if already playing. False with `reason` when it cannot play.
+     * model); restarts it if already playing. It ends by itself `endAt` seconds after the
+     * begin, as the preview draws it; a negative `endAt` holds until end() or stop(). False
+     * with `reason` when it cannot play.
      */
     bool begin(const PatternPtr &pattern, const TransportSource &source, double intensity,
-               QString *reason);
+               double endAt, QString *reason);
     /** Starts the release; the audition stops by itself once the voice is idle. */
     void end();
     /** Sends every channel to zero at once and stops. */
@@ -66,6 +68,7 @@ private:
     int m_channels = 0;
     int m_frames = 0;
     double m_idleSince = -1.0;
+    double m_endAt = -1.0; ///< when the voice ends by itself; negative: held
 };
 
 } // namespace semhap

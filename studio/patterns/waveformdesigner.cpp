@@ -390,11 +390,12 @@ QWidget *WaveformDesigner::createControls()
     m_endAt->setValue(1.5);
     m_endAt->setSuffix(tr(" s"));
     m_endAt->setKeyboardTracking(false);
-    m_endAt->setToolTip(tr("When the preview ends the pattern (its release starts)"));
+    m_endAt->setToolTip(tr("When the preview and the audition end the pattern (its release "
+                           "starts)"));
     connect(m_endAt, &QDoubleSpinBox::valueChanged, this, &WaveformDesigner::updatePreview);
     m_hold = new QCheckBox(tr("Hold"), box);
     m_hold->setObjectName(QStringLiteral("hold"));
-    m_hold->setToolTip(tr("Preview without an end: the sustain goes on"));
+    m_hold->setToolTip(tr("Preview and audition without an end: the sustain goes on"));
     connect(m_hold, &QCheckBox::toggled, this, [this](bool hold) {
         m_endAt->setEnabled(!hold);
         updatePreview();
@@ -931,7 +932,7 @@ void WaveformDesigner::beginAudition()
             return name.isEmpty() ? m_virtual.get()
                                   : (m_devices ? m_devices->transport(name) : nullptr);
         },
-        m_intensity->value() / 100.0, &reason);
+        m_intensity->value() / 100.0, m_hold->isChecked() ? -1.0 : m_endAt->value(), &reason);
     if (!started)
         reportError(tr("Cannot audition on %1").arg(m_devicePicker->currentText()), reason);
     else

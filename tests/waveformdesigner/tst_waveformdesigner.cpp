@@ -29,6 +29,7 @@
 #include <QSlider>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QElapsedTimer>
 #include <QTest>
 #include <QToolBar>
 #include <QTreeWidget>
@@ -147,6 +148,7 @@ private slots:
     void pneumaticSmearsPulses();
     void jsonTabShowsErrors();
     void auditionReachesEmulator();
+    void auditionEndsWhereThePreviewDoes();
     void importAhap();
     void screenshot();
 };
@@ -385,6 +387,33 @@ void TestWaveformDesigner::auditionReachesEmulator()
     QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionEnd")), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(!f.designer.auditioner()->isPlaying(), 3000);
     QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+void TestWaveformDesigner::auditionEndsWhereThePreviewDoes()
+{
+    // On the virtual device: with End at 0.3 s the audition releases at 0.3 s and stops by
+    // itself, as the preview draws it; with Hold it goes on until Stop.
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("vib.rampup"));
+    auto *endAt = f.child<QDoubleSpinBox>(QStringLiteral("endAt"));
+    endAt->setValue(0.3);
+    PatternAuditioner *auditioner = f.designer.auditioner();
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QVERIFY(auditioner->isActive());
+    QTRY_VERIFY_WITH_TIMEOUT(!auditioner->isActive(), 2000);
+    QVERIFY2(clock.elapsed() >= 250, qPrintable(QString::number(clock.elapsed())));
+    QTRY_VERIFY_WITH_TIMEOUT(!auditioner->isPlaying(), 3000);
+
+    QTest::mouseClick(f.child<QCheckBox>(QStringLiteral("hold")), Qt::LeftButton);
+    QVERIFY(!endAt->isEnabled());
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QTest::qWait(800);
+    QVERIFY(auditioner->isActive());
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionStop")), Qt::LeftButton);
+    QVERIFY(!auditioner->isPlaying());
 }
 
 void TestWaveformDesigner::importAhap()
