@@ -59,6 +59,12 @@ void VirtualTransport::store(const DeviceFrame &frame)
 {
     m_history[size_t(m_count % HistorySize)] = frame;
     ++m_count;
+    const double now = monotonicSeconds();
+    if (now - m_windowStart >= 1.0) {
+        m_rate = m_windowCount > 0 ? (m_count - m_windowCount) / (now - m_windowStart) : 0.0;
+        m_windowStart = now;
+        m_windowCount = m_count;
+    }
 }
 
 TransportStatus VirtualTransport::status() const
@@ -69,6 +75,9 @@ TransportStatus VirtualTransport::status() const
     s.responding = m_open;
     s.armed = isArmed();
     s.framesSent = std::uint32_t(m_count);
+    // A window that ran past its second without closing means the frames slowed or stopped.
+    const double open = monotonicSeconds() - m_windowStart;
+    s.framesPerSecond = open >= 1.0 ? (m_count - m_windowCount) / open : m_rate;
     s.identity = m_model->name();
     return s;
 }

@@ -44,6 +44,11 @@ private:
     std::array<DeviceFrame, HistorySize> m_history{};
     int m_count = 0;
     int m_stops = 0;
+    // The frame rate the status reports, as a real link counts it: frames over the last
+    // whole second, and what the current window has seen once it runs past a second.
+    double m_windowStart = 0.0;
+    int m_windowCount = 0;
+    double m_rate = 0.0;
     bool m_open = false;
 };
 

@@ -7,6 +7,8 @@
 #include "transportfactory.h"
 #include "virtualtransport.h"
 
+#include <QElapsedTimer>
+#include <QThread>
 #include <QTest>
 
 using namespace semhap;
@@ -35,6 +37,7 @@ private slots:
     void inflationLimit();
     void inflationLimitOnlyForPneumatic();
     void virtualTransport();
+    void virtualTransportCountsItsRate();
     void stopAllGetsThrough();
     void factoryMakesEachKind();
     void hidEnumerationWithoutDevices();
@@ -234,6 +237,33 @@ void TestTransports::virtualTransport()
     t.setArmed(false);
     t.send(frameOf({1, 1, 1, 1}));
     QCOMPARE(t.lastFrame().values[0], 0.0);
+}
+
+void TestTransports::virtualTransportCountsItsRate()
+{
+    // A virtual device reports the frames it really got per second, as a real link does,
+    // and falls to 0 once they stop.
+    VirtualTransport transport(QStringLiteral("v"), DeviceModelLibrary::builtin("lra4"));
+    QString error;
+    QVERIFY(transport.open(&error));
+    QCOMPARE(transport.status().framesPerSecond, 0.0);
+    DeviceFrame frame;
+    frame.channelCount = 4;
+    QElapsedTimer clock;
+    clock.start();
+    int sent = 0;
+    while (clock.elapsed() < 2100) {
+        transport.send(frame);
+        ++sent;
+        QThread::msleep(10);
+    }
+    const double expected = sent / (clock.elapsed() / 1000.0);
+    const double rate = transport.status().framesPerSecond;
+    QVERIFY2(std::abs(rate - expected) < 0.25 * expected,
+             qPrintable(QStringLiteral("%1 reported, %2 sent").arg(rate).arg(expected)));
+    QThread::msleep(2500);
+    QVERIFY2(transport.status().framesPerSecond < 0.3 * expected,
+             qPrintable(QString::number(transport.status().framesPerSecond)));
 }
 
 void TestTransports::stopAllGetsThrough()
