@@ -1494,14 +1494,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Wiedergabe schließen</translation>
     </message>
     <message>
-        <source>Showing: re-routed</source>
-        <translation>Angezeigt: neu geleitet</translation>
-    </message>
-    <message>
-        <source>Showing: recorded</source>
-        <translation>Angezeigt: aufgezeichnet</translation>
-    </message>
-    <message>
         <source>Pause</source>
         <translation>Anhalten</translation>
     </message>
@@ -1512,6 +1504,50 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>%1 / %2 s</source>
         <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>Showing: re-routed through %1</source>
+        <translation>Angezeigt: neu geroutet über %1</translation>
+    </message>
+    <message>
+        <source>Showing: recorded with %1</source>
+        <translation>Angezeigt: aufgezeichnet mit %1</translation>
+    </message>
+    <message>
+        <source>unknown date</source>
+        <translation>unbekanntes Datum</translation>
+    </message>
+    <message>
+        <source>live rig</source>
+        <translation>Live-Rig</translation>
+    </message>
+    <message>
+        <source>Notes: %1</source>
+        <translation>Notizen: %1</translation>
+    </message>
+    <message>
+        <source>Recorded by: %1</source>
+        <translation>Aufgezeichnet von: %1</translation>
+    </message>
+    <message>
+        <source>Operator: %1, seed %2</source>
+        <translation>Bediener: %1, Seed %2</translation>
+    </message>
+    <message>
+        <source>Router: %1</source>
+        <translation>Router: %1</translation>
+    </message>
+    <message>
+        <source>Started: %1</source>
+        <translation>Begonnen: %1</translation>
+    </message>
+    <message>
+        <source>Ended: %1</source>
+        <translation>Beendet: %1</translation>
+    </message>
+    <message>
+        <source>Ended: never closed (the recording was cut off)</source>
+        <translation>Beendet: nie geschlossen (die Aufzeichnung brach ab)</translation>
     </message>
 </context>
 <context>

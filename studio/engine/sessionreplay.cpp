@@ -8,6 +8,8 @@
 #include "sessionreader.h"
 #include "world.h"
 
+#include <QFileInfo>
+
 #include <algorithm>
 
 namespace semhap {
@@ -187,9 +189,26 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
     streams.activity = std::move(collector.activity);
     m_shown = std::move(streams);
     m_rerouted = true;
+    m_reroutedWith = graph.file.isEmpty() ? graph.name : QFileInfo(graph.file).completeBaseName();
     refill(m_time);
     emit streamsChanged();
     return true;
+}
+
+QString SessionReplay::routerName() const
+{
+    if (m_rerouted)
+        return m_reroutedWith;
+    const SessionInfo &recorded = info();
+    if (!recorded.routerSource.isEmpty())
+        return QFileInfo(recorded.routerSource).completeBaseName();
+    return recorded.router.value(QLatin1String("name")).toString();
+}
+
+const SessionInfo &SessionReplay::info() const
+{
+    static const SessionInfo none;
+    return m_reader ? m_reader->info() : none;
 }
 
 void SessionReplay::showRecorded()

@@ -3,6 +3,7 @@
 
 #include "runhistory.h"
 #include "runsource.h"
+#include "sessioninfo.h"
 
 #include <QObject>
 #include <QString>
@@ -67,6 +68,10 @@ public:
     void showRecorded();
     /** Whether the events shown are a re-routing's rather than the recording's. */
     bool isRerouted() const { return m_rerouted; }
+    /** The name of the router shown: the re-routing's, else the recording's. */
+    QString routerName() const;
+    /** What the session says of itself: scene, router, operator, dates, notes. */
+    const SessionInfo &info() const;
 
     qsizetype frameCount() const { return qsizetype(m_frames.size()); }
 
@@ -109,6 +114,7 @@ private:
     Streams m_recorded;
     Streams m_shown;
     bool m_rerouted = false;
+    QString m_reroutedWith; ///< the re-routing graph's name
     double m_start = 0.0;
     double m_end = 0.0;
     double m_time = 0.0;

@@ -4,6 +4,7 @@
 #include "sessionreplay.h"
 
 #include <QComboBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -42,6 +43,7 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
     connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
         m_replay.seek(m_replay.startTime() + double(value) / StepsPerSecond);
     });
+    m_slider->setMinimumWidth(160);
     layout->addWidget(m_slider, 1);
 
     m_time = new QLabel(this);
@@ -58,6 +60,9 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
     m_speed->setCurrentIndex(2);
     layout->addWidget(m_speed);
 
+    m_about = new QLabel(this);
+    m_about->setObjectName(QStringLiteral("replayAbout"));
+    layout->addWidget(m_about);
     m_source = new QLabel(this);
     m_source->setObjectName(QStringLiteral("replaySource"));
     layout->addWidget(m_source);
@@ -85,8 +90,9 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
     connect(&m_replay, &SessionReplay::opened, this, &ReplayBar::sessionOpened);
     connect(&m_replay, &SessionReplay::timeChanged, this, &ReplayBar::showTime);
     const auto showSource = [this] {
-        m_source->setText(m_replay.isRerouted() ? tr("Showing: re-routed")
-                                                : tr("Showing: recorded"));
+        m_source->setText(m_replay.isRerouted()
+                              ? tr("Showing: re-routed through %1").arg(m_replay.routerName())
+                              : tr("Showing: recorded with %1").arg(m_replay.routerName()));
         m_recorded->setEnabled(m_replay.isRerouted());
     };
     connect(&m_replay, &SessionReplay::streamsChanged, this, showSource);
@@ -111,6 +117,28 @@ void ReplayBar::setPlaying(bool playing)
 
 void ReplayBar::sessionOpened()
 {
+    // What the session was, in a word (the scrubber keeps the room); the rest on hover.
+    const SessionInfo &info = m_replay.info();
+    const QLocale locale;
+    const QString started =
+        info.started.isValid()
+            ? locale.toString(info.started.toLocalTime(), QLocale::ShortFormat)
+            : tr("unknown date");
+    const QString what = info.scene.isEmpty() ? tr("live rig") : QFileInfo(info.scene).completeBaseName();
+    m_about->setText(what);
+    QStringList details;
+    if (!info.notes.isEmpty())
+        details << tr("Notes: %1").arg(info.notes);
+    details << tr("Recorded by: %1").arg(info.source);
+    if (!info.operatorName.isEmpty())
+        details << tr("Operator: %1, seed %2").arg(info.operatorName, info.seed);
+    details << tr("Router: %1").arg(info.routerSource);
+    details << tr("Started: %1").arg(started);
+    details << (info.ended.isValid()
+                    ? tr("Ended: %1").arg(locale.toString(info.ended.toLocalTime(),
+                                                          QLocale::ShortFormat))
+                    : tr("Ended: never closed (the recording was cut off)"));
+    m_about->setToolTip(details.join(QLatin1Char('\n')));
     const QSignalBlocker block(m_slider);
     m_slider->setRange(
         0, int(std::lround((m_replay.endTime() - m_replay.startTime()) * StepsPerSecond)));

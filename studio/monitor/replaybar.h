@@ -53,6 +53,7 @@ private:
     QComboBox *m_speed = nullptr;
     QToolButton *m_reroute = nullptr;
     QToolButton *m_recorded = nullptr;
+    QLabel *m_about = nullptr; ///< the scene and the date; its tooltip, the rest
     QLabel *m_source = nullptr;
     QToolButton *m_close = nullptr;
     QTimer m_timer;

@@ -17,6 +17,7 @@
 #include "sessionreader.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
+#include "widgetchecks.h"
 #include "world.h"
 
 #include <QCheckBox>
@@ -184,6 +185,14 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     for (const char *name : {"runAction", "stepAction", "driveAction", "recordAction"})
         QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
     QVERIFY(replay->endTime() > replay->startTime() + 3.0);
+    // The bar says what the session was: its scene, and on hover its notes and dates.
+    auto *about = window.replayBar()->findChild<QLabel *>("replayAbout");
+    QCOMPARE(about->text(), QString("box_and_block"));
+    QVERIFY(about->toolTip().contains("Started: "));
+    QVERIFY2(about->toolTip().contains("Notes: participant 7"), qPrintable(about->toolTip()));
+    QVERIFY(about->toolTip().contains("Recorded by: studio"));
+    QCOMPARE(window.replayBar()->findChild<QLabel *>("replaySource")->text(),
+             QString("Showing: recorded with C3"));
     // The viewport shows the recorded scene (schema 2 keeps its states at display rate).
     QVERIFY2(replay->world(), qPrintable(replay->sceneNote()));
     QCOMPARE(window.viewport()->placeholder(), QString());
@@ -191,6 +200,11 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     const std::vector<double> atStart = replay->world()->sceneState();
     const quint64 drawn = window.viewport()->renderedFrames();
     QTRY_VERIFY(window.viewport()->renderedFrames() > drawn);
+    // At 1280 px the bar's words all fit.
+    QTest::qWait(100);
+    QCOMPARE(clippedTexts(window.replayBar()), QStringList());
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(shots + "/replay-1280x800.png");
 
     // Scrub from the keyboard: to the end, then one page (1 s) back.
     QSlider *slider = window.replayBar()->slider();
@@ -300,6 +314,8 @@ void TestStudioSessions::reroutesThroughTheEditorsRouter()
     window.routerEditor()->setGraph(c1);
     QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
     QVERIFY(replay->isRerouted());
+    QCOMPARE(window.replayBar()->findChild<QLabel *>("replaySource")->text(),
+             QString("Showing: re-routed through C1"));
     QVERIFY(sameEvents(replay->events(), expected.events));
     QVERIFY(window.replayBar()->recordedButton()->isEnabled());
     QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
