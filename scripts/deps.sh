@@ -9,6 +9,8 @@ packages=(
     # Qt 6 and the libraries of the studio, the simulation and the devices
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-qpa-plugins
     libqt6opengl6-dev libqt6sql6-sqlite libqcustomplot-dev libqcustomplot2.1-qt6
+    # Qt's own words (dialog buttons, file dialogs) in the studio's languages
+    qt6-translations-l10n
     libmujoco-dev libqhull-dev libhidapi-dev libserialport-dev
     # statistics (semhap compare's paired tests)
     libgsl-dev

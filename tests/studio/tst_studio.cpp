@@ -19,6 +19,7 @@
 #include "widgetchecks.h"
 
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QGraphicsView>
 #include <QImage>
@@ -304,6 +305,18 @@ void TestStudio::switchesToGerman()
     QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
     QCOMPARE(window->findChild<QAction *>("stopAllAction")->text(), QString("Alles stoppen"));
     QCOMPARE(window->findChild<QDockWidget *>("eventsDock")->windowTitle(), QString("Ereignisse"));
+    // Qt's own words too: a dialog's standard buttons.
+    QString cancel;
+    QTimer::singleShot(0, this, [&cancel] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        QWidget *dialog = QApplication::activeModalWidget();
+        auto *buttons = dialog->findChild<QDialogButtonBox *>();
+        QVERIFY(buttons);
+        cancel = buttons->button(QDialogButtonBox::Cancel)->text();
+        dialog->close();
+    });
+    window->findChild<QAction *>("preferencesAction")->trigger();
+    QCOMPARE(cancel, QString("Abbrechen"));
     studio.setLanguage("en");
     QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
              QString("Plots"));
