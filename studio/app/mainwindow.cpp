@@ -707,6 +707,15 @@ void MainWindow::syncPickers()
     };
     sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
     sync(m_routerPicker, m_engine.options().router);
+    // An edit applied from the editor runs under the name it started from: say so (`C3*`).
+    const bool edited = m_engine.isRouterEdited();
+    for (int i = 0; i < m_routerPicker->count(); ++i) {
+        const QString value = m_routerPicker->itemData(i).toString();
+        const QString name = RouterPresets::names().contains(value) ? value
+                                                                    : QFileInfo(value).fileName();
+        m_routerPicker->setItemText(
+            i, edited && i == m_routerPicker->currentIndex() ? name + QLatin1Char('*') : name);
+    }
     int speed = RealTimeIndex;
     for (int i = 0; i < SpeedCount; ++i) {
         if (std::abs(Speeds[i] - m_engine.speed()) < 1e-9)

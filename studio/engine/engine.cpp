@@ -9,6 +9,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QRegularExpression>
 
 #include <chrono>
@@ -356,6 +357,31 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
 const RouterGraph &Engine::routerGraph() const
 {
     return m_source->pipeline()->router().graph();
+}
+
+bool Engine::isRouterEdited() const
+{
+    if (!m_appliedGraph || !m_source || !m_source->pipeline())
+        return false;
+    RouterGraph named;
+    LoadError error;
+    if (!RouterPresets::load(m_options.router, &named, &error))
+        return true; // nothing of that name to match any more
+    // What routes, not where the editor drew it.
+    const auto routing = [](const RouterGraph &graph) {
+        QJsonObject json = graph.toJson();
+        QJsonArray nodes = json.value(QLatin1String("nodes")).toArray();
+        for (QJsonValueRef node : nodes) {
+            QJsonObject object = node.toObject();
+            object.remove(QLatin1String("ui"));
+            node = object;
+        }
+        json.insert(QStringLiteral("nodes"), nodes);
+        json.remove(QLatin1String("name"));
+        json.remove(QLatin1String("description"));
+        return json;
+    };
+    return routing(named) != routing(routerGraph());
 }
 
 std::array<GripperThresholds, 2> Engine::shownThresholds()

@@ -88,6 +88,12 @@ public:
     bool setRouter(const RouterGraph &graph, QString *error);
     /** The graph of the router that runs (valid while a simulation or a rig is loaded). */
     const RouterGraph &routerGraph() const;
+    /**
+     * Whether the router that runs routes differently from the preset or file
+     * options().router names: an edit applied from the editor (`C3*` in the toolbar). Node
+     * positions do not count.
+     */
+    bool isRouterEdited() const;
 
     /**
      * Loads the current options again from the start, with the router last applied; a live

@@ -793,9 +793,20 @@ void TestRouterEditor::engineSwapsWhileRunning()
     // Every event after the swap names a detector of C4.
     for (qint64 i = eventsBefore; i < history.events().end(); ++i)
         QVERIFY(c4.nodeIndex(history.nodeName(history.events().at(i).node)) >= 0);
+    // The preset as it is, laid out by the editor, is not an edit; a changed parameter is,
+    // and stays one over a reset (the toolbar says C4*).
+    QVERIFY(!engine.isRouterEdited());
+    QVERIFY(engine.setRouter(RouterScene::placed(c4), &error));
+    QVERIFY(!engine.isRouterEdited());
+    RouterGraph edited = c4;
+    edited.nodes[0].params.insert("grasp", 25);
+    QVERIFY2(engine.setRouter(edited, &error), qPrintable(error));
+    QCOMPARE(engine.options().router, "C4");
+    QVERIFY(engine.isRouterEdited());
     // Reset runs the applied graph again.
     QVERIFY(engine.reset(&error));
     QCOMPARE(engine.routerGraph().name, "C4");
+    QVERIFY(engine.isRouterEdited());
     engine.pause();
 }
 

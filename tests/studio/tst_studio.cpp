@@ -139,6 +139,19 @@ void TestStudio::picksSceneAndRouter()
     QTRY_VERIFY_WITH_TIMEOUT(!window.engine().history().frames(Gripper::Left).isEmpty(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     QVERIFY(window.windowTitle().contains("C1"));
+
+    // An edit applied from the router editor runs as "C1*" until another router is picked.
+    QCOMPARE(router->currentText(), QString("C1"));
+    RouterEditor *editor = window.routerEditor();
+    editor->setParam("left.slip", "loss", 30);
+    QVERIFY(editor->apply());
+    QTRY_COMPARE(router->currentText(), QString("C1*"));
+    const int c3 = router->findData("C3");
+    while (router->currentIndex() != c3)
+        QTest::keyClick(router, c3 > router->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(window.engine().options().router, QString("C3"));
+    QCOMPARE(router->currentText(), QString("C3"));
+    QCOMPARE(router->itemText(c1), QString("C1"));
 }
 
 void TestStudio::runStepAndSpeedFromTheKeyboard()
