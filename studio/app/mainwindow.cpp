@@ -25,6 +25,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -103,6 +104,9 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
         resize(options.size);
 
     m_engine.setSpeed(options.speed);
+    // A modal dialog takes the keyboard from the window, and its shortcuts with it: Stop all
+    // must still work from there.
+    qApp->installEventFilter(this);
     if (options.live) {
         // Without the rig, the scene is still there to look at.
         if (!openLiveRig(options.liveRig))
@@ -828,6 +832,21 @@ void MainWindow::showError(const QString &what, const QString &error)
     box->setInformativeText(error);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+}
+
+bool MainWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() != QEvent::KeyPress ||
+        static_cast<QKeyEvent *>(event)->key() != Qt::Key_Escape || !watched->isWidgetType())
+        return QMainWindow::eventFilter(watched, event);
+    // Once per key press: at the widget it is delivered to first, inside a modal dialog.
+    QWidget *modal = QApplication::activeModalWidget();
+    auto *widget = static_cast<QWidget *>(watched);
+    if (!modal || modal == this || widget->window() != modal)
+        return QMainWindow::eventFilter(watched, event);
+    if (widget == (modal->focusWidget() ? modal->focusWidget() : modal))
+        m_stopAllAction->trigger();
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::showPreferences()

@@ -77,6 +77,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    /** Esc in a modal dialog stops everything too (the dialog closes as usual). */
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     void createActions();

@@ -30,6 +30,7 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QStatusBar>
 #include <QTimer>
 
 #include <qcustomplot.h>
@@ -235,6 +236,22 @@ void TestStudio::stopAllWorksFromAnywhere()
     window.engine().run();
     QTest::mouseClick(window.findChild<QWidget *>("stopAllButton"), Qt::LeftButton);
     QVERIFY(!window.engine().isRunning());
+
+    // A modal dialog has the keyboard: Esc there stops everything too, and closes it.
+    window.engine().run();
+    bool closed = false;
+    QTimer::singleShot(0, this, [&closed] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        QWidget *dialog = QApplication::activeModalWidget();
+        QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog, Qt::Key_Escape);
+        QTest::qWait(200);
+        closed = !dialog->isVisible();
+        dialog->close(); // whatever happened, the test goes on
+    });
+    window.findChild<QAction *>("preferencesAction")->trigger();
+    QVERIFY(closed);
+    QVERIFY(!window.engine().isRunning());
+    QVERIFY(window.statusBar()->currentMessage().startsWith("Stopped"));
 }
 
 void TestStudio::aKeyInTheViewportTakesOver()
