@@ -713,10 +713,10 @@ void MainWindow::syncPickers()
     sync(m_routerPicker, m_engine.options().router);
     // An edit applied from the editor runs under the name it started from: say so (`C3*`).
     const bool edited = m_engine.isRouterEdited();
+    const QStringList presets = RouterPresets::names();
     for (int i = 0; i < m_routerPicker->count(); ++i) {
         const QString value = m_routerPicker->itemData(i).toString();
-        const QString name = RouterPresets::names().contains(value) ? value
-                                                                    : QFileInfo(value).fileName();
+        const QString name = presets.contains(value) ? value : QFileInfo(value).fileName();
         m_routerPicker->setItemText(
             i, edited && i == m_routerPicker->currentIndex() ? name + QLatin1Char('*') : name);
     }

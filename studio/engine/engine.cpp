@@ -124,8 +124,7 @@ bool Engine::openReplay(const QString &path, QString *error)
     // Whatever the run sent last goes before the replay takes the history.
     m_feed.discard();
     m_source = &m_replay;
-    if (m_driving.exchange(false))
-        emit drivingChanged(false);
+    setDriving(false);
     m_replay.begin();
     emit sourceChanged();
     return true;
@@ -230,8 +229,7 @@ void Engine::install()
     bindRouterDevices(player, &bindError);
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
-    if (m_driving.exchange(false))
-        emit drivingChanged(false);
+    setDriving(false);
     m_simTime = m_simulation ? m_simulation->run().time() : 0.0;
     m_realtimeFactor = 0.0;
     m_nextMetrics = 0.0;
