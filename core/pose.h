@@ -18,4 +18,13 @@ std::array<double, 4> yawQuaternion(double yaw);
 /** `pose` turned about the vertical axis through its position by `yaw` radians. */
 Pose turnedAboutVertical(const Pose &pose, double yaw);
 
+/**
+ * `pose` turned by `angle` radians about the world-frame direction `axis` (unit length)
+ * through its position.
+ */
+Pose turnedAbout(const Pose &pose, const std::array<double, 3> &axis, double angle);
+
+/** How far `pose`'s z axis leans from the world's vertical (radians, 0 … π). */
+double tiltFromVertical(const Pose &pose);
+
 } // namespace semhap

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "driveoperator.h"
 
+#include <algorithm>
+
 namespace semhap {
 
 void DriveOperator::setTarget(Gripper hand, const Pose &target)
@@ -36,15 +38,64 @@ void DriveOperator::act(World &world)
         }
         m_mutex.unlock();
     }
+    std::array<DriveStatus, 2> status{};
     for (Gripper hand : {Gripper::Left, Gripper::Right}) {
         const Update &update = m_current[size_t(hand)];
         if (!world.hasGripper(hand))
             continue;
-        if (update.target)
-            world.setTarget(hand, *update.target);
+        if (update.target) {
+            DriveStatus &out = status[size_t(hand)];
+            out.driven = true;
+            out.target = *update.target;
+            out.floor = guard(world, hand, out.target.pos[2]);
+            if (out.floor)
+                out.target.pos[2] = std::max(out.target.pos[2], *out.floor);
+            out.surface = world.surfaceBelow(hand, out.target.pos);
+            world.setTarget(hand, out.target);
+        }
         if (update.grip)
             world.setGrip(hand, *update.grip);
     }
+    // The readers (the viewport, at display rate) take this lock briefly; a step that finds
+    // it taken keeps the previous status rather than wait.
+    if (m_statusMutex.try_lock()) {
+        m_status = status;
+        m_statusMutex.unlock();
+    }
+}
+
+std::optional<double> DriveOperator::guard(const World &world, Gripper hand, double targetZ)
+{
+    const size_t index = size_t(hand);
+    std::optional<double> &floor = m_floor[index];
+    const double support = world.supportForce(hand);
+    const double wrist = world.gripperPose(hand).pos[2];
+    const double dt = world.timestep();
+    if (floor) {
+        if (targetZ >= *floor)
+            floor.reset(); // the user lifts: the target is free again
+        else
+            m_quiet[index] = support < GuardForce ? m_quiet[index] + dt : 0.0;
+    }
+    if (!floor && support > GuardForce && targetZ < wrist) {
+        floor = wrist;
+        m_quiet[index] = 0.0;
+    }
+    if (floor) {
+        // Hold the push near GuardPush; when nothing has pushed back for a while (the cube
+        // below broke or was taken), go on down, but only at the approach speed.
+        if (m_quiet[index] > GuardQuiet)
+            *floor -= GuardApproach * dt;
+        else
+            *floor += (support - GuardPush) * GuardRate * dt;
+    }
+    return floor;
+}
+
+DriveStatus DriveOperator::status(Gripper hand) const
+{
+    const std::lock_guard<std::mutex> lock(m_statusMutex);
+    return m_status[size_t(hand)];
 }
 
 std::array<std::optional<HandCommand>, 2> currentCommands(const World &world)

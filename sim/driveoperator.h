@@ -11,16 +11,48 @@
 
 namespace semhap {
 
+/** What the simulation made of one hand's drive command at its last step. */
+struct DriveStatus
+{
+    bool driven = false; ///< the hand has been given a target
+    Pose target;         ///< the wrist target the world was given (after the guard)
+    /** The surface straight below the target (m; what the drop line reaches), if any. */
+    std::optional<double> surface;
+    /**
+     * While the fingers or a held object rest on something: the lowest wrist height (m)
+     * a target may ask for. A target below it is raised to it (the guarded move).
+     */
+    std::optional<double> floor;
+};
+
 /**
  * The pose-and-grip input: whatever drives the grippers from outside — the studio's
- * keyboard and mouse, a VR or motion-capture rig over the network — sets each hand's
- * wrist target and grip here, from any thread; act() applies the latest on the simulation
- * thread. A command being written while the simulation steps is applied on the next step:
- * the simulation never waits for the input.
+ * keyboard, gamepad and 3D mouse, a VR or motion-capture rig over the network — sets each
+ * hand's wrist target and grip here, from any thread; act() applies the latest on the
+ * simulation thread. A command being written while the simulation steps is applied on the
+ * next step: the simulation never waits for the input.
+ *
+ * Moves are guarded: once the fingertips are pushed up by what is under them (the pads on
+ * a cube, a held cube set down) while the target is below the wrist, the target stops at a
+ * floor that settles where the push is GuardPush. Holding "down" then presses with a few
+ * newtons instead of burying the target in a stack (the wrist's weld gives about 100 N per
+ * millimetre). Lifting the target above the floor ends the guard; when the push goes away
+ * (the cube below was taken) the floor descends at GuardApproach until something pushes.
  */
 class DriveOperator : public Operator
 {
 public:
+    /** Upward fingertip force (N) from which a move is guarded: more than a cube weighs. */
+    static constexpr double GuardForce = 1.5;
+    /** The push (N) a guarded move settles at. */
+    static constexpr double GuardPush = 2.5;
+    /** How fast the floor follows the push's error (m/s per N): settles in tens of ms. */
+    static constexpr double GuardRate = 1e-3;
+    /** How long the push may be gone (s) before the guarded target descends again… */
+    static constexpr double GuardQuiet = 0.1;
+    /** …at this speed (m/s), so that meeting the next surface is gentle. */
+    static constexpr double GuardApproach = 0.03;
+
     QString name() const override { return QStringLiteral("drive"); }
     void act(World &world) override;
 
@@ -30,8 +62,13 @@ public:
     void setGrip(Gripper hand, double force);
     /** Sets what `command` says: its hand's target and grip. Thread-safe. */
     void setCommand(const HandCommand &command);
+    /** What the last step made of `hand`'s command. Thread-safe. */
+    DriveStatus status(Gripper hand) const;
 
 private:
+    /** The guard's floor for `hand` this step (none: the target is free); see the class. */
+    std::optional<double> guard(const World &world, Gripper hand, double targetZ);
+
     /** What one hand was last told; a part never set leaves the world's as it is. */
     struct Update
     {
@@ -42,6 +79,11 @@ private:
     std::mutex m_mutex;
     std::array<Update, 2> m_pending{};
     std::array<Update, 2> m_current{};
+    /** Per hand: the guard's floor while it holds, and how long its push has been gone. */
+    std::array<std::optional<double>, 2> m_floor{};
+    std::array<double, 2> m_quiet{};
+    mutable std::mutex m_statusMutex;
+    std::array<DriveStatus, 2> m_status{};
 };
 
 /**

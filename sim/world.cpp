@@ -764,6 +764,53 @@ double World::fingerTravel(Gripper gripper) const
            2;
 }
 
+double World::supportForce(Gripper gripper) const
+{
+    double up = 0.0;
+    for (int finger = 0; finger < 2; ++finger)
+        up += d->tips[size_t(int(gripper) * 2 + finger)].fworld[2];
+    return up;
+}
+
+std::optional<double> World::surfaceBelow(Gripper gripper,
+                                          const std::array<double, 3> &point) const
+{
+    const mjModel *m = d->model.get();
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    const int handRoot = m->body_rootid[h.body];
+    auto held = [&](int root) {
+        const int object = d->objectOfBody[size_t(root)];
+        if (object < 0)
+            return false;
+        const int actor = m_objects[size_t(object)].actor;
+        for (int finger = 0; finger < 2; ++finger) {
+            const Private::Tip &tip = d->tips[size_t(int(gripper) * 2 + finger)];
+            for (int i = 0; i < tip.touchedCount; ++i) {
+                if (tip.touched[size_t(i)].actor == actor)
+                    return true;
+            }
+        }
+        return false;
+    };
+    // mj_ray stops at the first geom; the gripper and what it holds are looked through by
+    // casting again just below them. A gripper has a few dozen geoms at most in a column.
+    constexpr int MaxLayers = 64;
+    mjtNum from[3] = {point[0], point[1], point[2]};
+    const mjtNum down[3] = {0.0, 0.0, -1.0};
+    for (int layer = 0; layer < MaxLayers; ++layer) {
+        int geom = -1;
+        const mjtNum distance = mj_ray(m, d->data.get(), from, down, nullptr, 1, -1, &geom);
+        if (distance < 0 || geom < 0)
+            return std::nullopt;
+        const int root = m->body_rootid[m->geom_bodyid[geom]];
+        const double z = from[2] - distance;
+        if (root != handRoot && !held(root))
+            return z;
+        from[2] = z - 1e-4;
+    }
+    return std::nullopt;
+}
+
 Pose World::gripperPose(Gripper gripper) const
 {
     const Private::Hand &h = d->hands[size_t(gripper)];

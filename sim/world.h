@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 // MuJoCo's handles, for the renderer in sim/ (its header stays out of the others' way).
@@ -87,6 +88,18 @@ public:
     double fingerTravel(Gripper gripper) const;
     /** The highest total grip force the actuators can give (N). */
     double maxGrip(Gripper gripper) const;
+    /**
+     * How hard the surfaces under the gripper push its fingertips up (N, the world's vertical
+     * component of the fingertips' contact forces): pads resting on a cube, or a held cube
+     * set down on a stack. A carried cube's weight pulls down and does not count.
+     */
+    double supportForce(Gripper gripper) const;
+    /**
+     * The height (m) of the first surface straight below `point` that is neither part of the
+     * gripper nor an object its fingertips touch (what a held cube would land on); none
+     * when nothing is below.
+     */
+    std::optional<double> surfaceBelow(Gripper gripper, const std::array<double, 3> &point) const;
 
     /** The contact frame of the last step (t = the time its contacts were computed). */
     const ContactFrame &frame(Gripper gripper) const;

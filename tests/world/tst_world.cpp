@@ -88,6 +88,8 @@ private slots:
     void liftHoldsOrSlips();
     void countFallsRowByRowWhileSliding();
     void manualInputDrivesTheGripper();
+    void guardedMoveStopsOnWhatIsBelow_data();
+    void guardedMoveStopsOnWhatIsBelow();
     void sceneStateRoundTrip_data();
     void sceneStateRoundTrip();
     void restingCubesSleepUntilTouched();
@@ -279,6 +281,86 @@ void TestWorld::manualInputDrivesTheGripper()
     QVERIFY(std::abs(frame.totalForce() - 30.0) < 1.5);
     QCOMPARE(frame.left.actor, world->objects()[0].actor);
     QCOMPARE(input.name(), QString("drive"));
+}
+
+void TestWorld::guardedMoveStopsOnWhatIsBelow_data()
+{
+    QTest::addColumn<bool>("holding");
+    // Open fingers pressed onto a cube's top; a held cube set down on the table.
+    QTest::newRow("pads on a cube") << false;
+    QTest::newRow("held cube on the table") << true;
+}
+
+void TestWorld::guardedMoveStopsOnWhatIsBelow()
+{
+    // A user holding "down" for two seconds (0.15 m/s, as the drive's full speed): the target
+    // would end 30 cm below where the fingers are stopped. The guard keeps the push to what
+    // the weld gives over DriveOperator::GuardDepth, and no cube breaks.
+    QFETCH(bool, holding);
+    std::unique_ptr<World> world = loadWorld("box_and_block", 1);
+    const auto cube = world->objectPosition(0);
+    const double cubeTop = cube[2] + 0.025;
+    DriveOperator input;
+    auto drive = [&](const std::array<double, 3> &to, double grip, double seconds) {
+        const Pose from = world->target(Gripper::Right);
+        const int steps = int(std::lround(seconds / world->timestep()));
+        for (int k = 1; k <= steps; ++k) {
+            Pose p = from;
+            for (size_t i = 0; i < 3; ++i)
+                p.pos[i] = from.pos[i] + (to[i] - from.pos[i]) * k / steps;
+            input.setTarget(Gripper::Right, p);
+            input.setGrip(Gripper::Right, grip);
+            input.act(*world);
+            world->step();
+        }
+    };
+    if (holding) {
+        drive({cube[0], cube[1], cube[2] + 0.2}, -20, 0.6);
+        drive({cube[0], cube[1], cube[2] + 0.06}, -20, 0.6);
+        drive({cube[0], cube[1], cube[2] + 0.06}, 30, 0.5);
+        drive({cube[0], cube[1], cube[2] + 0.16}, 30, 0.6);
+        // In the air: what is below is the table, seen through the held cube.
+        const DriveStatus carrying = input.status(Gripper::Right);
+        QVERIFY(carrying.surface);
+        QVERIFY2(*carrying.surface < cube[2] - 0.02, qPrintable(QString::number(*carrying.surface)));
+        QVERIFY(!carrying.floor);
+    } else {
+        drive({cube[0], cube[1], cube[2] + 0.2}, -20, 0.6);
+        // Over the cube: the drop line reaches its top.
+        const DriveStatus above = input.status(Gripper::Right);
+        QVERIFY(above.surface);
+        QVERIFY2(std::abs(*above.surface - cubeTop) < 0.003,
+                 qPrintable(QString::number(*above.surface)));
+    }
+    const Pose start = world->target(Gripper::Right);
+    const double grip = holding ? 30 : -20;
+    double peak = 0.0;
+    double settledPush = 0.0;
+    double settledWrist = 0.0;
+    const int steps = int(std::lround(2.0 / world->timestep()));
+    for (int k = 1; k <= steps; ++k) {
+        Pose p = start;
+        p.pos[2] -= 0.15 * k * world->timestep();
+        input.setTarget(Gripper::Right, p);
+        input.setGrip(Gripper::Right, grip);
+        input.act(*world);
+        world->step();
+        QVERIFY(world->fractures().empty());
+        peak = std::max(peak, world->frame(Gripper::Right).totalForce());
+        if (k == steps * 3 / 4)
+            settledWrist = world->gripperPose(Gripper::Right).pos[2];
+        if (k > steps * 3 / 4)
+            settledPush = std::max(settledPush, world->supportForce(Gripper::Right));
+    }
+    const DriveStatus status = input.status(Gripper::Right);
+    QVERIFY(status.floor);
+    // The world was given a target at the wrist, not 15 cm under it; the push settled.
+    const double wrist = world->gripperPose(Gripper::Right).pos[2];
+    QVERIFY(status.target.pos[2] > wrist - 0.001);
+    QVERIFY2(settledWrist - wrist < 0.002, qPrintable(QString::number(settledWrist - wrist)));
+    QVERIFY2(settledPush < DriveOperator::GuardPush + 0.5, qPrintable(QString::number(settledPush)));
+    // The impact at full speed is over in a step or two; it is reported, not hidden.
+    qInfo("impact peak %.1f N, settled push %.2f N", peak, settledPush);
 }
 
 void TestWorld::sceneStateRoundTrip_data()
