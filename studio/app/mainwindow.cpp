@@ -5,7 +5,7 @@
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogpanel.h"
-#include "keyboarddrive.h"
+#include "handdrive.h"
 #include "liverigdialog.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
@@ -82,10 +82,10 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     setObjectName(QStringLiteral("mainWindow"));
     m_viewport = new SimViewport(this);
     setCentralWidget(m_viewport);
-    m_keyboardDrive = new KeyboardDrive(this);
-    m_viewport->setKeyboardDrive(m_keyboardDrive);
+    m_handDrive = new HandDrive(this);
+    m_viewport->setHandDrive(m_handDrive);
     // The world runs on the engine's thread: starting to drive reads it between two ticks.
-    m_keyboardDrive->setStartSource([this] { return m_engine.handCommands(); });
+    m_handDrive->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
 
     createActions();
@@ -505,7 +505,7 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::sourceAboutToChange, this, [this] {
         // Everything that holds the old source's world lets go before the engine frees it.
         m_viewport->setScene(nullptr, nullptr);
-        m_keyboardDrive->setWorld(nullptr);
+        m_handDrive->setWorld(nullptr);
         m_poseInput->setWorld(nullptr);
     });
     connect(&m_engine, &Engine::sourceChanged, this, &MainWindow::showSource);
@@ -538,7 +538,7 @@ void MainWindow::connectEngine()
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     // Any drive input hands the grippers to the user.
-    connect(m_keyboardDrive, &KeyboardDrive::driveStarted, this,
+    connect(m_handDrive, &HandDrive::driveStarted, this,
             [this] { m_engine.setDriving(true); });
     connect(m_poseInput, &PoseInput::driveStarted, this, [this] { m_engine.setDriving(true); });
 }
@@ -581,8 +581,8 @@ void MainWindow::showSource()
     }
     // Only a simulation's grippers follow the user; a replay's bodies go where they were.
     const World *drivable = source.isDrivable() ? source.world() : nullptr;
-    m_keyboardDrive->setOperator(m_engine.driveOperator());
-    m_keyboardDrive->setWorld(drivable);
+    m_handDrive->setOperator(m_engine.driveOperator());
+    m_handDrive->setWorld(drivable);
     m_poseInput->setOperator(m_engine.driveOperator());
     m_poseInput->setWorld(drivable);
     m_shownRejections = 0;

@@ -16,7 +16,7 @@ namespace semhap {
 
 class DevicesPanel;
 class EventLogPanel;
-class KeyboardDrive;
+class HandDrive;
 class MetricsPanel;
 class PlotPanel;
 class PoseInput;
@@ -116,7 +116,7 @@ private:
     StudioOptions m_options;
     Engine m_engine;
     SimViewport *m_viewport = nullptr;
-    KeyboardDrive *m_keyboardDrive = nullptr;
+    HandDrive *m_handDrive = nullptr;
     PoseInput *m_poseInput = nullptr;
     PlotPanel *m_plots = nullptr;
     EventLogPanel *m_eventLog = nullptr;

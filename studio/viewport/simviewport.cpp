@@ -2,7 +2,7 @@
 #include "simviewport.h"
 
 #include "colors.h"
-#include "keyboarddrive.h"
+#include "handdrive.h"
 #include "scenefeed.h"
 #include "world.h"
 
@@ -83,8 +83,8 @@ void SimViewport::setScene(const World *world, SceneFeed *feed)
         createRenderer();
         doneCurrent();
     }
-    if (m_keyboardDrive)
-        m_keyboardDrive->setWorld(world);
+    if (m_handDrive)
+        m_handDrive->setWorld(world);
     m_home = world ? defaultCamera(*world) : OrbitCamera();
     changeCamera(m_home);
 }
@@ -101,19 +101,19 @@ void SimViewport::setCaption(const QString &text)
     update();
 }
 
-void SimViewport::setKeyboardDrive(KeyboardDrive *drive)
+void SimViewport::setHandDrive(HandDrive *drive)
 {
-    if (m_keyboardDrive)
-        disconnect(m_keyboardDrive, nullptr, this, nullptr);
-    m_keyboardDrive = drive;
+    if (m_handDrive)
+        disconnect(m_handDrive, nullptr, this, nullptr);
+    m_handDrive = drive;
     if (!drive)
         return;
     drive->setWorld(m_world);
     drive->setViewAzimuth(m_camera.azimuth);
-    connect(drive, &KeyboardDrive::changed, this, qOverload<>(&SimViewport::update));
+    connect(drive, &HandDrive::changed, this, qOverload<>(&SimViewport::update));
     // Any drive input hands the grippers to the user.
-    connect(drive, &KeyboardDrive::driveStarted, this, [this] { setDriving(true); });
-    connect(drive, &QObject::destroyed, this, [this] { m_keyboardDrive = nullptr; });
+    connect(drive, &HandDrive::driveStarted, this, [this] { setDriving(true); });
+    connect(drive, &QObject::destroyed, this, [this] { m_handDrive = nullptr; });
 }
 
 void SimViewport::setShowForces(bool show)
@@ -129,8 +129,8 @@ void SimViewport::setDriving(bool driving)
     if (m_driving == driving)
         return;
     m_driving = driving;
-    if (!driving && m_keyboardDrive)
-        m_keyboardDrive->endDrive(); // driving again starts from where the script left off
+    if (!driving && m_handDrive)
+        m_handDrive->endDrive(); // driving again starts from where the script left off
     update();
 }
 
@@ -185,8 +185,8 @@ void SimViewport::changeCamera(const OrbitCamera &camera)
         m_camera.lookAt[axis] = std::clamp(camera.lookAt[axis], m_home.lookAt[axis] - PanRange,
                                            m_home.lookAt[axis] + PanRange);
     }
-    if (m_keyboardDrive)
-        m_keyboardDrive->setViewAzimuth(m_camera.azimuth);
+    if (m_handDrive)
+        m_handDrive->setViewAzimuth(m_camera.azimuth);
     update();
     emit cameraChanged();
 }
@@ -284,22 +284,22 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     if (!m_caption.isEmpty()) {
         title = m_caption;
     } else if (m_driving) {
-        const Gripper hand = m_keyboardDrive ? m_keyboardDrive->activeHand() : Gripper::Right;
+        const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
         title = hand == Gripper::Right ? tr("You are driving (right hand)")
                                        : tr("You are driving (left hand)");
-        if (m_keyboardDrive && m_keyboardDrive->command(hand)) {
-            const double grip = m_keyboardDrive->command(hand)->grip;
-            lines << (m_keyboardDrive->isClosed(hand)
+        if (m_handDrive && m_handDrive->command(hand)) {
+            const double grip = m_handDrive->command(hand)->grip;
+            lines << (m_handDrive->isClosed(hand)
                           ? tr("Grip: closed, %1 N").arg(grip, 0, 'f', 0)
                           : tr("Grip: open (closes to %1 N)")
-                                .arg(m_keyboardDrive->gripSetpoint(hand), 0, 'f', 0));
+                                .arg(m_handDrive->gripSetpoint(hand), 0, 'f', 0));
         }
         lines << tr("W A S D move · R F up/down · Q E turn · Space grip · +/- force");
-        if (m_keyboardDrive && m_keyboardDrive->hasBothHands())
+        if (m_handDrive && m_handDrive->hasBothHands())
             lines << tr("Tab: switch hand");
     } else {
         title = tr("Scripted operator");
-        if (m_keyboardDrive)
+        if (m_handDrive)
             lines << tr("Click here and press W A S D to drive");
     }
 
@@ -406,8 +406,8 @@ void SimViewport::wheelEvent(QWheelEvent *event)
     const double notches = event->angleDelta().y() / 120.0;
     if (event->modifiers() & Qt::ControlModifier) {
         // Ctrl + wheel: the grip force, a whole step per notch.
-        if (m_keyboardDrive)
-            m_keyboardDrive->adjustGrip(int(std::lround(notches)));
+        if (m_handDrive)
+            m_handDrive->adjustGrip(int(std::lround(notches)));
     } else {
         OrbitCamera camera = m_camera;
         camera.distance *= std::pow(ZoomPerNotch, notches);
@@ -419,8 +419,8 @@ void SimViewport::wheelEvent(QWheelEvent *event)
 void SimViewport::keyPressEvent(QKeyEvent *event)
 {
     // Auto-repeat would make a held key stutter: the keyboard drive integrates held keys itself.
-    if (m_keyboardDrive &&
-        (event->isAutoRepeat() || m_keyboardDrive->press(event->key(), event->modifiers())))
+    if (m_handDrive &&
+        (event->isAutoRepeat() || m_handDrive->press(event->key(), event->modifiers())))
         event->accept();
     else
         QOpenGLWidget::keyPressEvent(event);
@@ -428,7 +428,7 @@ void SimViewport::keyPressEvent(QKeyEvent *event)
 
 void SimViewport::keyReleaseEvent(QKeyEvent *event)
 {
-    if (m_keyboardDrive && (event->isAutoRepeat() || m_keyboardDrive->release(event->key())))
+    if (m_handDrive && (event->isAutoRepeat() || m_handDrive->release(event->key())))
         event->accept();
     else
         QOpenGLWidget::keyReleaseEvent(event);
@@ -437,15 +437,15 @@ void SimViewport::keyReleaseEvent(QKeyEvent *event)
 void SimViewport::focusOutEvent(QFocusEvent *event)
 {
     // A key released elsewhere never reaches us: stop, or the hand drifts on.
-    if (m_keyboardDrive)
-        m_keyboardDrive->releaseAll();
+    if (m_handDrive)
+        m_handDrive->releaseAll();
     QOpenGLWidget::focusOutEvent(event);
 }
 
 bool SimViewport::focusNextPrevChild(bool next)
 {
     // With two hands, Tab switches between them instead of leaving the viewport.
-    if (m_keyboardDrive && m_keyboardDrive->hasBothHands())
+    if (m_handDrive && m_handDrive->hasBothHands())
         return false;
     return QOpenGLWidget::focusNextPrevChild(next);
 }

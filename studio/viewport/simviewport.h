@@ -14,14 +14,14 @@ class QPainter;
 
 namespace semhap {
 
-class KeyboardDrive;
+class HandDrive;
 class SceneFeed;
 class World;
 
 /**
  * The simulation as a picture: draws a SceneFeed's newest capture at display rate with
  * MuJoCo's renderer, lets the mouse orbit, pan and zoom the camera, shows who drives the
- * grippers in a small overlay, and forwards drive keys to a KeyboardDrive. It only
+ * grippers in a small overlay, and forwards drive keys to a HandDrive. It only
  * asks the feed for pictures; the simulation thread captures them.
  */
 class SimViewport : public QOpenGLWidget
@@ -47,8 +47,8 @@ public:
     void setCaption(const QString &text);
     const QString &caption() const { return m_caption; }
     /** Where drive keys go (null: nowhere); it is given the scene. Not owned. */
-    void setKeyboardDrive(KeyboardDrive *drive);
-    KeyboardDrive *keyboardDrive() const { return m_keyboardDrive; }
+    void setHandDrive(HandDrive *drive);
+    HandDrive *handDrive() const { return m_handDrive; }
 
     /** Draws contact forces as arrows. */
     void setShowForces(bool show);
@@ -102,7 +102,7 @@ private:
     QString m_placeholder;
     QString m_caption;
     SceneFeed *m_feed = nullptr;
-    KeyboardDrive *m_keyboardDrive = nullptr;
+    HandDrive *m_handDrive = nullptr;
     std::unique_ptr<SceneRenderer> m_renderer;
     OrbitCamera m_camera;
     OrbitCamera m_home;

@@ -4,7 +4,7 @@
 // through a DriveOperator. Screenshots are saved beside the test binary to be looked at.
 #include "driveoperator.h"
 #include "imagechecks.h"
-#include "keyboarddrive.h"
+#include "handdrive.h"
 #include "scenefeed.h"
 #include "simviewport.h"
 #include "world.h"
@@ -80,7 +80,7 @@ private:
 
     std::unique_ptr<Scene> m_scene;
     SimViewport m_viewport;
-    KeyboardDrive m_keyboardDrive;
+    HandDrive m_handDrive;
 };
 
 void TestViewport::pump(int ms, const SceneOverlay &overlay)
@@ -104,8 +104,8 @@ void TestViewport::initTestCase()
 {
     m_scene = loadScene("box_and_block", 50);
     QVERIFY(m_scene);
-    m_keyboardDrive.setOperator(&m_scene->manual);
-    m_viewport.setKeyboardDrive(&m_keyboardDrive);
+    m_handDrive.setOperator(&m_scene->manual);
+    m_viewport.setHandDrive(&m_handDrive);
     m_viewport.resize(800, 600);
     m_viewport.show();
     QVERIFY(QTest::qWaitForWindowExposed(&m_viewport));
@@ -245,10 +245,10 @@ void TestViewport::wheelZooms()
 
     // Ctrl + wheel is the grip force, not the zoom.
     const double distance = m_viewport.camera().distance;
-    const double grip = m_keyboardDrive.gripSetpoint(Gripper::Right);
+    const double grip = m_handDrive.gripSetpoint(Gripper::Right);
     wheel(1, Qt::ControlModifier);
     QCOMPARE(m_viewport.camera().distance, distance);
-    QCOMPARE(m_keyboardDrive.gripSetpoint(Gripper::Right), grip + KeyboardDrive::GripStep);
+    QCOMPARE(m_handDrive.gripSetpoint(Gripper::Right), grip + HandDrive::GripStep);
     m_viewport.resetCamera();
 }
 
@@ -292,7 +292,7 @@ void TestViewport::keysMoveTheActiveHand()
     m_viewport.setDriving(false); // the script drives; the key takes over
     World &world = *m_scene->world;
     const Pose before = world.target(Gripper::Right);
-    QSignalSpy engaged(&m_keyboardDrive, &KeyboardDrive::driveStarted);
+    QSignalSpy engaged(&m_handDrive, &HandDrive::driveStarted);
 
     QTest::keyPress(&m_viewport, Qt::Key(key));
     QTest::qWait(150);
@@ -327,24 +327,24 @@ void TestViewport::gripKeysRampTheGrip()
     World &world = *m_scene->world;
     QVERIFY(world.grip(Gripper::Right) <= 0);
     QTest::keyClick(&m_viewport, Qt::Key_Space);
-    QVERIFY(m_keyboardDrive.isClosed(Gripper::Right));
+    QVERIFY(m_handDrive.isClosed(Gripper::Right));
     // A ramp, not a step: shortly after, the grip is on its way up.
     m_scene->manual.act(world);
-    QVERIFY(world.grip(Gripper::Right) < m_keyboardDrive.gripSetpoint(Gripper::Right));
-    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip,
-                 m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QVERIFY(world.grip(Gripper::Right) < m_handDrive.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_handDrive.command(Gripper::Right)->grip,
+                 m_handDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
-    QCOMPARE(world.grip(Gripper::Right), m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QCOMPARE(world.grip(Gripper::Right), m_handDrive.gripSetpoint(Gripper::Right));
 
     QTest::keyClick(&m_viewport, Qt::Key_Plus);
-    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip,
-                 m_keyboardDrive.gripSetpoint(Gripper::Right));
+    QTRY_COMPARE(m_handDrive.command(Gripper::Right)->grip,
+                 m_handDrive.gripSetpoint(Gripper::Right));
     m_scene->manual.act(world);
-    QVERIFY(world.grip(Gripper::Right) > KeyboardDrive::DefaultGrip);
+    QVERIFY(world.grip(Gripper::Right) > HandDrive::DefaultGrip);
 
     QTest::keyClick(&m_viewport, Qt::Key_G);
-    QVERIFY(!m_keyboardDrive.isClosed(Gripper::Right));
-    QTRY_COMPARE(m_keyboardDrive.command(Gripper::Right)->grip, KeyboardDrive::OpenGrip);
+    QVERIFY(!m_handDrive.isClosed(Gripper::Right));
+    QTRY_COMPARE(m_handDrive.command(Gripper::Right)->grip, HandDrive::OpenGrip);
 }
 
 void TestViewport::forcesToggleReachesTheFeed()
@@ -361,20 +361,20 @@ void TestViewport::forcesToggleReachesTheFeed()
 void TestViewport::tabSwitchesHands()
 {
     // box_and_block has one hand: Tab is left to the focus chain.
-    QVERIFY(!m_keyboardDrive.hasBothHands());
+    QVERIFY(!m_handDrive.hasBothHands());
 
     auto bimanual = loadScene("bimanual_sorting", 50);
     QVERIFY(bimanual);
     std::swap(m_scene, bimanual);
-    m_keyboardDrive.setOperator(&m_scene->manual);
+    m_handDrive.setOperator(&m_scene->manual);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
     m_viewport.setDriving(false);
-    QVERIFY(m_keyboardDrive.hasBothHands());
-    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Right);
-    QSignalSpy engaged(&m_keyboardDrive, &KeyboardDrive::driveStarted);
+    QVERIFY(m_handDrive.hasBothHands());
+    QCOMPARE(m_handDrive.activeHand(), Gripper::Right);
+    QSignalSpy engaged(&m_handDrive, &HandDrive::driveStarted);
 
     QTest::keyClick(&m_viewport, Qt::Key_Tab);
-    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Left);
+    QCOMPARE(m_handDrive.activeHand(), Gripper::Left);
     QCOMPARE(engaged.count(), 1);
     // Tab did not move the focus away (asked of the window: another test may own the display).
     QCOMPARE(m_viewport.window()->focusWidget(), &m_viewport);
@@ -390,9 +390,9 @@ void TestViewport::tabSwitchesHands()
     QCOMPARE(world.target(Gripper::Right).pos, right.pos);
 
     QTest::keyClick(&m_viewport, Qt::Key_Tab);
-    QCOMPARE(m_keyboardDrive.activeHand(), Gripper::Right);
+    QCOMPARE(m_handDrive.activeHand(), Gripper::Right);
     std::swap(m_scene, bimanual);
-    m_keyboardDrive.setOperator(&m_scene->manual);
+    m_handDrive.setOperator(&m_scene->manual);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
 }
 

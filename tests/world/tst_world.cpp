@@ -322,7 +322,8 @@ void TestWorld::guardedMoveStopsOnWhatIsBelow()
         // In the air: what is below is the table, seen through the held cube.
         const DriveStatus carrying = input.status(Gripper::Right);
         QVERIFY(carrying.surface);
-        QVERIFY2(*carrying.surface < cube[2] - 0.02, qPrintable(QString::number(*carrying.surface)));
+        QVERIFY2(*carrying.surface < cube[2] - 0.02,
+                 qPrintable(QString::number(*carrying.surface)));
         QVERIFY(!carrying.floor);
     } else {
         drive({cube[0], cube[1], cube[2] + 0.2}, -20, 0.6);
@@ -358,7 +359,8 @@ void TestWorld::guardedMoveStopsOnWhatIsBelow()
     const double wrist = world->gripperPose(Gripper::Right).pos[2];
     QVERIFY(status.target.pos[2] > wrist - 0.001);
     QVERIFY2(settledWrist - wrist < 0.002, qPrintable(QString::number(settledWrist - wrist)));
-    QVERIFY2(settledPush < DriveOperator::GuardPush + 0.5, qPrintable(QString::number(settledPush)));
+    QVERIFY2(settledPush < DriveOperator::GuardPush + 0.5,
+             qPrintable(QString::number(settledPush)));
     // The impact at full speed is over in a step or two; it is reported, not hidden.
     qInfo("impact peak %.1f N, settled push %.2f N", peak, settledPush);
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "keyboarddrive.h"
+#include "handdrive.h"
 
 #include "driveoperator.h"
 
@@ -20,24 +20,27 @@ constexpr double LowestWrist = 0.06;
 constexpr double HighestWrist = 0.45;
 // A long stall (a breakpoint) must not turn into a jump; a slow software-GL frame may.
 constexpr double LongestTick = 0.25;
+// A trigger must move this much (of its travel) to take the grip: sensor noise does not.
+constexpr double GripDeadband = 0.02;
 
 } // namespace
 
-KeyboardDrive::KeyboardDrive(QObject *parent) : QObject(parent)
+HandDrive::HandDrive(QObject *parent) : QObject(parent)
 {
     m_timer.setInterval(int(TickSeconds * 1000));
     m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &KeyboardDrive::tick);
+    connect(&m_timer, &QTimer::timeout, this, &HandDrive::tick);
 }
 
-KeyboardDrive::~KeyboardDrive() = default;
+HandDrive::~HandDrive() = default;
 
-void KeyboardDrive::setWorld(const World *world)
+void HandDrive::setWorld(const World *world)
 {
     releaseAll();
     m_world = world;
     m_driving = false;
     m_hands = {};
+    m_analogueGrip = {};
     if (!world) {
         emit changed();
         return;
@@ -81,18 +84,17 @@ void KeyboardDrive::setWorld(const World *world)
     emit changed();
 }
 
-void KeyboardDrive::setStartSource(
-    std::function<std::array<std::optional<HandCommand>, 2>()> source)
+void HandDrive::setStartSource(std::function<std::array<std::optional<HandCommand>, 2>()> source)
 {
     m_startSource = std::move(source);
 }
 
-bool KeyboardDrive::hasBothHands() const
+bool HandDrive::hasBothHands() const
 {
     return m_hands[0] && m_hands[1];
 }
 
-bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
+bool HandDrive::press(int key, Qt::KeyboardModifiers modifiers)
 {
     if (key == Qt::Key_Shift) {
         m_slow = true;
@@ -139,10 +141,7 @@ bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
         break;
     case Qt::Key_Space:
     case Qt::Key_G:
-        startDrive();
-        m_closed[size_t(m_active)] = !m_closed[size_t(m_active)];
-        updateTimer();
-        emit changed();
+        toggleGrip();
         return true;
     case Qt::Key_Plus:
     case Qt::Key_Equal:
@@ -155,9 +154,7 @@ bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
     case Qt::Key_Backtab:
         if (!hasBothHands())
             return false;
-        startDrive();
-        m_active = m_active == Gripper::Right ? Gripper::Left : Gripper::Right;
-        emit changed();
+        switchHand();
         return true;
     default:
         return false;
@@ -167,8 +164,11 @@ bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
     if (!m_held[action]) {
         m_held[action] = true;
         // A tap shorter than a tick still moves: one tick's worth now.
-        std::array<bool, ActionCount> tap{};
-        tap[action] = true;
+        std::array<bool, ActionCount> held = m_held;
+        m_held = {};
+        m_held[action] = true;
+        const DriveRates tap = heldRates();
+        m_held = held;
         if (move(tap, TickSeconds)) {
             send(m_active);
             emit changed();
@@ -178,7 +178,7 @@ bool KeyboardDrive::press(int key, Qt::KeyboardModifiers modifiers)
     return true;
 }
 
-bool KeyboardDrive::release(int key)
+bool HandDrive::release(int key)
 {
     switch (key) {
     case Qt::Key_Shift:
@@ -221,14 +221,80 @@ bool KeyboardDrive::release(int key)
     return true;
 }
 
-void KeyboardDrive::releaseAll()
+void HandDrive::releaseAll()
 {
     m_held = {};
+    m_deviceRates = {};
     m_slow = false;
     updateTimer();
 }
 
-void KeyboardDrive::adjustGrip(int notches)
+void HandDrive::toggleGrip()
+{
+    const size_t hand = size_t(m_active);
+    if (!m_world || !m_hands[hand])
+        return;
+    startDrive();
+    m_analogueGrip[hand].reset();
+    m_closed[hand] = !m_closed[hand];
+    updateTimer();
+    emit changed();
+}
+
+void HandDrive::switchHand()
+{
+    if (!m_world || !hasBothHands())
+        return;
+    startDrive();
+    m_active = m_active == Gripper::Right ? Gripper::Left : Gripper::Right;
+    emit changed();
+}
+
+void HandDrive::setRates(DriveDevice device, const DriveRates &rates)
+{
+    DriveRates &was = m_deviceRates[size_t(device)];
+    // A device's first report is where its trigger rests, not a move.
+    const bool gripMoved =
+        rates.grip && was.grip && std::abs(*rates.grip - *was.grip) > GripDeadband;
+    const bool wasIdle = was.isIdle();
+    std::optional<double> lastGrip = was.grip;
+    was = rates;
+    // An unchanged trigger keeps its last taken value, so a small drift never takes the grip.
+    if (lastGrip && rates.grip && !gripMoved)
+        was.grip = lastGrip;
+    const size_t hand = size_t(m_active);
+    if (!m_world || !m_hands[hand]) {
+        was = DriveRates();
+        return;
+    }
+    if (!rates.isIdle() || gripMoved)
+        startDrive();
+    if (gripMoved && m_driving) {
+        m_analogueGrip[hand] = std::clamp(*rates.grip, 0.0, 1.0);
+        m_closed[hand] = *m_analogueGrip[hand] > 0.0;
+        emit changed();
+    }
+    if (wasIdle && !rates.isIdle()) {
+        // Like a key's tap: a flick shorter than a tick still moves.
+        if (move(heldRates(), TickSeconds)) {
+            send(m_active);
+            emit changed();
+        }
+    }
+    updateTimer();
+}
+
+void HandDrive::setSpeed(double metresPerSecond)
+{
+    m_speed = std::clamp(metresPerSecond, MinSpeed, MaxSpeed);
+}
+
+DriveStatus HandDrive::status(Gripper hand) const
+{
+    return m_operator ? m_operator->status(hand) : DriveStatus();
+}
+
+void HandDrive::adjustGrip(int notches)
 {
     const size_t hand = size_t(m_active);
     if (!m_world || !m_hands[hand] || notches == 0)
@@ -240,14 +306,14 @@ void KeyboardDrive::adjustGrip(int notches)
     emit changed();
 }
 
-void KeyboardDrive::endDrive()
+void HandDrive::endDrive()
 {
     releaseAll();
     m_driving = false;
     emit changed();
 }
 
-void KeyboardDrive::startDrive()
+void HandDrive::startDrive()
 {
     if (m_driving)
         return;
@@ -258,6 +324,7 @@ void KeyboardDrive::startDrive()
         if (!m_hands[hand])
             continue;
         m_closed[hand] = m_hands[hand]->grip > 0;
+        m_analogueGrip[hand].reset();
         if (m_closed[hand])
             m_setpoint[hand] = std::clamp(m_hands[hand]->grip, GripStep, m_maxGrip[hand]);
         send(Gripper(hand));
@@ -266,17 +333,17 @@ void KeyboardDrive::startDrive()
     emit driveStarted();
 }
 
-void KeyboardDrive::tick()
+void HandDrive::tick()
 {
     const double seconds = std::min(double(m_clock.restart()) / 1000.0, LongestTick);
     advance(seconds);
 }
 
-void KeyboardDrive::advance(double seconds)
+void HandDrive::advance(double seconds)
 {
     if (!m_driving)
         return;
-    const bool moved = move(m_held, seconds);
+    const bool moved = move(heldRates(), seconds);
     if (moved)
         send(m_active);
     if (ramp(seconds) || moved)
@@ -284,38 +351,86 @@ void KeyboardDrive::advance(double seconds)
     updateTimer();
 }
 
-bool KeyboardDrive::move(const std::array<bool, ActionCount> &held, double seconds)
+DriveRates HandDrive::heldRates() const
 {
+    auto key = [this](Action action) { return m_held[action] ? 1.0 : 0.0; };
+    DriveRates sum;
+    sum.forward = key(Away) - key(Toward);
+    sum.right = key(Right) - key(Left);
+    sum.up = key(Up) - key(Down);
+    sum.turn = key(TurnLeft) - key(TurnRight);
+    for (const DriveRates &device : m_deviceRates) {
+        sum.forward += device.forward;
+        sum.right += device.right;
+        sum.up += device.up;
+        sum.turn += device.turn;
+        sum.tilt += device.tilt;
+        sum.roll += device.roll;
+    }
+    for (double *rate : {&sum.forward, &sum.right, &sum.up, &sum.turn, &sum.tilt, &sum.roll})
+        *rate = std::clamp(*rate, -1.0, 1.0);
+    return sum;
+}
+
+bool HandDrive::move(const DriveRates &rates, double seconds)
+{
+    if (rates.isIdle())
+        return false;
     HandCommand &hand = *m_hands[size_t(m_active)];
-    const double step = Speed * seconds * (m_slow ? SlowFactor : 1.0);
+    const double scale = m_speed / DefaultSpeed * (m_slow ? SlowFactor : 1.0);
+    const double step = m_speed * seconds * (m_slow ? SlowFactor : 1.0);
     // Along the table axes nearest the view: a slanted camera still moves the hand straight.
     const double azimuth = Pi / 2 * std::round(m_viewAzimuth / 90.0);
     const double awayX = std::round(std::cos(azimuth));
     const double awayY = std::round(std::sin(azimuth));
-    const double forward = (held[Away] ? 1 : 0) - (held[Toward] ? 1 : 0);
-    const double right = (held[Right] ? 1 : 0) - (held[Left] ? 1 : 0);
-    const double up = (held[Up] ? 1 : 0) - (held[Down] ? 1 : 0);
-    const double turn = (held[TurnLeft] ? 1 : 0) - (held[TurnRight] ? 1 : 0);
-    if (forward == 0 && right == 0 && up == 0 && turn == 0)
-        return false;
 
-    const std::array<double, 3> delta{step * (forward * awayX + right * awayY),
-                                      step * (forward * awayY - right * awayX), step * up};
+    const std::array<double, 3> delta{step * (rates.forward * awayX + rates.right * awayY),
+                                      step * (rates.forward * awayY - rates.right * awayX),
+                                      step * rates.up};
+    // The guard: while the fingers rest on something, the target stays above the floor the
+    // simulation reports, so releasing "down" and pressing "up" lifts at once.
+    const std::optional<double> floor = status(m_active).floor;
     for (size_t axis = 0; axis < 3; ++axis) {
         const double lo = m_workspace.center[axis] - m_workspace.half[axis];
         const double hi = m_workspace.center[axis] + m_workspace.half[axis];
-        hand.target.pos[axis] = std::clamp(hand.target.pos[axis] + delta[axis], lo, hi);
+        double next = hand.target.pos[axis] + delta[axis];
+        if (axis == 2 && floor && delta[2] < 0)
+            next = std::max(next, *floor);
+        hand.target.pos[axis] = std::clamp(next, lo, hi);
     }
-    if (turn != 0)
-        hand.target = turnedAboutVertical(hand.target, turn * TurnRate * seconds);
+    const double turnStep = TurnRate * seconds * scale;
+    if (rates.turn != 0)
+        hand.target = turnedAboutVertical(hand.target, rates.turn * turnStep);
+    if (rates.tilt != 0 || rates.roll != 0) {
+        // Tilt swings the fingers away (about the viewer's right), roll to the right (about
+        // the view's away axis); a step that would lean past MaxTilt is shortened.
+        const std::array<double, 3> rightAxis{awayY, -awayX, 0.0};
+        const std::array<double, 3> awayAxis{awayX, awayY, 0.0};
+        for (double fraction = 1.0; fraction > 1.0 / 64; fraction /= 2) {
+            Pose leaned = turnedAbout(hand.target, rightAxis, -rates.tilt * turnStep * fraction);
+            leaned = turnedAbout(leaned, awayAxis, rates.roll * turnStep * fraction);
+            if (tiltFromVertical(leaned) <= MaxTilt ||
+                tiltFromVertical(leaned) < tiltFromVertical(hand.target)) {
+                hand.target = leaned;
+                break;
+            }
+        }
+    }
     return true;
 }
 
-bool KeyboardDrive::ramp(double seconds)
+double HandDrive::gripGoal(size_t hand) const
+{
+    if (m_analogueGrip[hand])
+        return *m_analogueGrip[hand] > 0.0 ? *m_analogueGrip[hand] * m_setpoint[hand] : OpenGrip;
+    return m_closed[hand] ? m_setpoint[hand] : OpenGrip;
+}
+
+bool HandDrive::ramp(double seconds)
 {
     bool changed = false;
     for (size_t index = 0; index < 2; ++index) {
-        const double goal = m_closed[index] ? m_setpoint[index] : OpenGrip;
+        const double goal = gripGoal(index);
         if (!m_hands[index] || m_hands[index]->grip == goal)
             continue;
         HandCommand &hand = *m_hands[index];
@@ -329,20 +444,18 @@ bool KeyboardDrive::ramp(double seconds)
     return changed;
 }
 
-void KeyboardDrive::send(Gripper hand)
+void HandDrive::send(Gripper hand)
 {
     if (!m_operator)
         return;
     m_operator->setCommand(*m_hands[size_t(hand)]);
 }
 
-void KeyboardDrive::updateTimer()
+void HandDrive::updateTimer()
 {
-    bool busy = std::any_of(m_held.begin(), m_held.end(), [](bool held) { return held; });
-    for (size_t hand = 0; hand < 2; ++hand) {
-        const double goal = m_closed[hand] ? m_setpoint[hand] : OpenGrip;
-        busy = busy || (m_driving && m_hands[hand] && m_hands[hand]->grip != goal);
-    }
+    bool busy = !heldRates().isIdle();
+    for (size_t hand = 0; hand < 2; ++hand)
+        busy = busy || (m_driving && m_hands[hand] && m_hands[hand]->grip != gripGoal(hand));
     if (busy && !m_timer.isActive()) {
         m_clock.restart();
         m_timer.start();

@@ -9,28 +9,68 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 
 namespace semhap {
 
 class DriveOperator;
 
+/** The analogue devices that drive beside the keyboard. */
+enum class DriveDevice
+{
+    Gamepad,
+    SpaceMouse,
+};
+constexpr int DriveDeviceCount = 2;
+
 /**
- * The keyboard's teleoperation: held keys move the active gripper's wrist at a steady
- * speed, integrated at display rate, inside a workspace around the scene's task; a key
- * closes or opens the grip with a ramp (a guarded close, never a step). Commands go to a
- * DriveOperator. No widgets: the viewport forwards its key events here, and tests drive it
- * directly. The key map is in studio/README.md.
+ * What an analogue device asks of the active hand now: rates in [-1, 1] of the drive's full
+ * speeds (dead zones already taken out), in the frame the keyboard's keys use.
  */
-class KeyboardDrive : public QObject
+struct DriveRates
+{
+    double forward = 0.0; ///< away from the viewer, along the table axis nearest the view
+    double right = 0.0;   ///< to the viewer's right
+    double up = 0.0;
+    double turn = 0.0; ///< about the vertical, counter-clockwise seen from above
+    double tilt = 0.0; ///< the fingers swing away from the viewer
+    double roll = 0.0; ///< the fingers swing to the viewer's right
+    /**
+     * An analogue grip in [0, 1] (a trigger): 0 opens, 1 closes with the hand's grip force.
+     * None: the device has no grip control. A value only takes the grip when it changes.
+     */
+    std::optional<double> grip;
+
+    bool isIdle() const
+    {
+        return forward == 0 && right == 0 && up == 0 && turn == 0 && tilt == 0 && roll == 0;
+    }
+};
+
+/**
+ * The user's rate-controlled teleoperation of the grippers: held keys and the analogue
+ * devices (gamepad, 3D mouse; see GamepadInput, SpaceMouseInput) move the active gripper's
+ * wrist at rates, integrated at display rate, inside a workspace around the scene's task;
+ * a key, a button or a trigger closes or opens the grip through a ramp (a guarded close,
+ * never a step). Commands go to a DriveOperator, whose guard the drive follows: a target
+ * does not descend below the floor the fingers rest on. No widgets: the viewport forwards
+ * its key events here, and tests drive it directly. The key map is in docs/studio.md.
+ */
+class HandDrive : public QObject
 {
     Q_OBJECT
 
 public:
-    /** Wrist speed with a movement key held (m/s); Shift moves at SlowFactor of it. */
-    static constexpr double Speed = 0.15;
+    /** Full wrist speed (m/s) until setSpeed(); Shift moves at SlowFactor of it. */
+    static constexpr double DefaultSpeed = 0.15;
+    /** The speeds setSpeed() accepts (m/s). */
+    static constexpr double MinSpeed = 0.02;
+    static constexpr double MaxSpeed = 0.5;
     static constexpr double SlowFactor = 0.25;
-    /** Wrist turn rate (rad/s). */
+    /** Wrist turn and tilt rate at full deflection (rad/s). */
     static constexpr double TurnRate = 1.5;
+    /** How far the fingers may lean from pointing straight down (rad): 40°. */
+    static constexpr double MaxTilt = 0.7;
     /** How fast the grip command ramps (N/s): a 30 N close takes 0.2 s. */
     static constexpr double GripRate = 150.0;
     /** The force a close ramps to until the user changes it (N), and its step. */
@@ -39,8 +79,8 @@ public:
     /** What an open gripper is commanded (N): the fingers spread. */
     static constexpr double OpenGrip = -20.0;
 
-    explicit KeyboardDrive(QObject *parent = nullptr);
-    ~KeyboardDrive() override;
+    explicit HandDrive(QObject *parent = nullptr);
+    ~HandDrive() override;
 
     /** Where the commands go (null: nowhere). Not owned. */
     void setOperator(DriveOperator *op) { m_operator = op; }
@@ -65,6 +105,20 @@ public:
     void releaseAll();
     /** Changes the active hand's grip force by `notches` steps (Ctrl + wheel, +/-). */
     void adjustGrip(int notches);
+    /** Closes the active hand if it is open, opens it if closed (Space, a button). */
+    void toggleGrip();
+    /** Makes the other hand the active one, when the scene has two (Tab, a button). */
+    void switchHand();
+
+    /**
+     * What `device` asks for now (it sends this whenever it changes, or zeros when it goes
+     * away). The first rate or grip change takes the grippers, as a key does; the device's
+     * rates add to the keys' and to the other device's.
+     */
+    void setRates(DriveDevice device, const DriveRates &rates);
+    /** The full wrist speed (m/s) at a held key or full deflection; turning scales with it. */
+    void setSpeed(double metresPerSecond);
+    double speed() const { return m_speed; }
     /** Moves by what the held keys and grip ramps do in `seconds` (the timer's tick). */
     void advance(double seconds);
 
@@ -78,6 +132,8 @@ public:
     Gripper activeHand() const { return m_active; }
     /** Whether Tab has a hand to switch to. */
     bool hasBothHands() const;
+    /** What the simulation made of `hand`'s command (the guard, the surface below). */
+    DriveStatus status(Gripper hand) const;
     /** What `hand` is being commanded. */
     const std::optional<HandCommand> &command(Gripper hand) const { return m_hands[size_t(hand)]; }
     /** The force `hand` closes to (N). */
@@ -114,8 +170,12 @@ private:
 
     void startDrive();
     void tick();
-    /** Moves the active hand by what `held` asks for over `seconds`; true if it moved. */
-    bool move(const std::array<bool, ActionCount> &held, double seconds);
+    /** The keys' rates and every device's, added up, each in [-1, 1]. */
+    DriveRates heldRates() const;
+    /** Moves the active hand at `rates` over `seconds`; true if it moved. */
+    bool move(const DriveRates &rates, double seconds);
+    /** The force `hand`'s grip ramps to now. */
+    double gripGoal(size_t hand) const;
     /** Ramps every hand's grip towards its goal; true if a grip changed. */
     bool ramp(double seconds);
     void send(Gripper hand);
@@ -129,6 +189,10 @@ private:
     std::array<bool, 2> m_closed{};
     std::array<double, 2> m_maxGrip{};
     std::array<bool, ActionCount> m_held{};
+    std::array<DriveRates, DriveDeviceCount> m_deviceRates{};
+    /** Per hand: the analogue grip in [0, 1] that owns its grip, until a key toggles it. */
+    std::array<std::optional<double>, 2> m_analogueGrip{};
+    double m_speed = DefaultSpeed;
     Gripper m_active = Gripper::Right;
     Region m_workspace;
     double m_viewAzimuth = 90.0;

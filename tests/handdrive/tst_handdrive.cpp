@@ -1,0 +1,346 @@
+// SPDX-License-Identifier: MIT
+// The rate teleoperation without a window: directions follow the camera, the workspace
+// holds the wrist, Shift slows down, taking over starts where the hands are, analogue
+// devices move in proportion and grip with their trigger, and a descent stops on a cube.
+#include "driveoperator.h"
+#include "handdrive.h"
+#include "world.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+class TestHandDrive : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void directionsFollowTheView_data();
+    void directionsFollowTheView();
+    void workspaceHoldsTheWrist_data();
+    void workspaceHoldsTheWrist();
+    void shiftSlowsDown();
+    void takingOverStartsWhereTheHandsAre();
+    void unmappedKeysAreLeftAlone();
+    void shortcutsAreLeftAlone_data();
+    void shortcutsAreLeftAlone();
+    void analogueRatesMoveInProportion();
+    void analogueGripFollowsTheTrigger();
+    void idleTriggerLeavesTheGripAlone();
+    void leanIsLimited();
+    void descentStopsOnTheCube();
+
+private:
+    Pose heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
+
+    std::unique_ptr<World> m_world;
+    DriveOperator m_operator;
+    std::unique_ptr<HandDrive> m_handDrive;
+};
+
+void TestHandDrive::initTestCase()
+{
+    QString error;
+    m_world = World::load("box_and_block", SceneOptions(), &error);
+    QVERIFY2(m_world, qPrintable(error));
+}
+
+void TestHandDrive::init()
+{
+    m_handDrive = std::make_unique<HandDrive>();
+    m_handDrive->setOperator(&m_operator);
+    m_handDrive->setWorld(m_world.get());
+}
+
+Pose TestHandDrive::heldFor(int key, double seconds, Qt::KeyboardModifiers modifiers)
+{
+    m_handDrive->press(key, modifiers);
+    m_handDrive->advance(seconds);
+    m_handDrive->release(key);
+    m_operator.act(*m_world);
+    return m_world->target(Gripper::Right);
+}
+
+void TestHandDrive::directionsFollowTheView_data()
+{
+    QTest::addColumn<double>("azimuth");
+    QTest::addColumn<double>("x");
+    QTest::addColumn<double>("y");
+    // W moves away from the viewer along the table axis nearest the view.
+    QTest::newRow("looking along +y") << 90.0 << 0.0 << 1.0;
+    QTest::newRow("looking along +x") << 0.0 << 1.0 << 0.0;
+    QTest::newRow("looking along -y") << -90.0 << 0.0 << -1.0;
+    QTest::newRow("slanted, nearest -x") << 200.0 << -1.0 << 0.0;
+}
+
+void TestHandDrive::directionsFollowTheView()
+{
+    QFETCH(double, azimuth);
+    QFETCH(double, x);
+    QFETCH(double, y);
+    m_handDrive->setViewAzimuth(azimuth);
+    const Pose before = m_world->target(Gripper::Right);
+    const Pose away = heldFor(Qt::Key_W, 0.2);
+    QVERIFY(std::abs((away.pos[0] - before.pos[0]) - x * 0.2 * 0.15) < 0.004);
+    QVERIFY(std::abs((away.pos[1] - before.pos[1]) - y * 0.2 * 0.15) < 0.004);
+    // D is to the viewer's right: away turned a quarter clockwise seen from above.
+    const Pose right = heldFor(Qt::Key_D, 0.2);
+    QVERIFY(std::abs((right.pos[0] - away.pos[0]) - y * 0.2 * 0.15) < 0.004);
+    QVERIFY(std::abs((right.pos[1] - away.pos[1]) + x * 0.2 * 0.15) < 0.004);
+}
+
+void TestHandDrive::workspaceHoldsTheWrist_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::addColumn<int>("axis");
+    QTest::addColumn<double>("limit");
+    // box_and_block: pick and place span x -0.28..0.28, y -0.13..0.13; 12 cm around them.
+    QTest::newRow("up") << int(Qt::Key_R) << 2 << 0.45;
+    QTest::newRow("down to the table") << int(Qt::Key_F) << 2 << 0.06;
+    QTest::newRow("right") << int(Qt::Key_D) << 0 << 0.40;
+    QTest::newRow("left") << int(Qt::Key_A) << 0 << -0.40;
+    QTest::newRow("away") << int(Qt::Key_W) << 1 << 0.25;
+}
+
+void TestHandDrive::workspaceHoldsTheWrist()
+{
+    QFETCH(int, key);
+    QFETCH(int, axis);
+    QFETCH(double, limit);
+    Pose pose;
+    for (int k = 0; k < 40; ++k) // 10 s held, in ticks the length of a long stall
+        pose = heldFor(key, 0.25);
+    QVERIFY2(std::abs(pose.pos[size_t(axis)] - limit) < 1e-9,
+             qPrintable(QString::number(pose.pos[size_t(axis)])));
+}
+
+void TestHandDrive::shiftSlowsDown()
+{
+    const double z = m_world->target(Gripper::Right).pos[2];
+    const double fast = heldFor(Qt::Key_R, 0.2).pos[2] - z;
+    const double slow = heldFor(Qt::Key_F, 0.2, Qt::ShiftModifier).pos[2] - (z + fast);
+    QVERIFY2(std::abs(slow / fast + HandDrive::SlowFactor) < 0.05,
+             qPrintable(QString("%1 vs %2").arg(slow).arg(fast)));
+}
+
+void TestHandDrive::takingOverStartsWhereTheHandsAre()
+{
+    QSignalSpy engaged(m_handDrive.get(), &HandDrive::driveStarted);
+    // Wherever the scripted operator left the hand, closed on something.
+    std::array<std::optional<HandCommand>, 2> start{};
+    start[1] = HandCommand{};
+    start[1]->hand = Gripper::Right;
+    start[1]->target.pos = {0.1, -0.05, 0.2};
+    start[1]->grip = 42.0;
+    m_handDrive->setStartSource([&] { return start; });
+    QVERIFY(m_handDrive->press(Qt::Key_G));
+    QCOMPARE(engaged.count(), 1);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->target.pos, start[1]->target.pos);
+    // It was closed: G opens it, ramping down from 42 N.
+    QVERIFY(!m_handDrive->isClosed(Gripper::Right));
+    m_handDrive->advance(0.1);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->grip, 42.0 - 0.1 * HandDrive::GripRate);
+    m_operator.act(*m_world);
+    QCOMPARE(m_world->target(Gripper::Right).pos, start[1]->target.pos);
+
+    // Handed back and taken again: from wherever the hand is by then.
+    m_handDrive->endDrive();
+    start[1]->target.pos = {-0.1, 0.05, 0.25};
+    QVERIFY(m_handDrive->press(Qt::Key_Plus));
+    QCOMPARE(engaged.count(), 2);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->target.pos, start[1]->target.pos);
+}
+
+void TestHandDrive::unmappedKeysAreLeftAlone()
+{
+    QSignalSpy engaged(m_handDrive.get(), &HandDrive::driveStarted);
+    QVERIFY(!m_handDrive->press(Qt::Key_X));
+    QVERIFY(!m_handDrive->press(Qt::Key_Tab)); // one hand: Tab is the focus chain's
+    QVERIFY(!m_handDrive->press(Qt::Key_Shift));
+    QCOMPARE(engaged.count(), 0);
+    QVERIFY(!m_handDrive->isDriving());
+}
+
+void TestHandDrive::shortcutsAreLeftAlone_data()
+{
+    QTest::addColumn<int>("key");
+    QTest::addColumn<int>("modifiers");
+    QTest::newRow("Ctrl+R (reset)") << int(Qt::Key_R) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+F (forces)") << int(Qt::Key_F) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+= (faster)") << int(Qt::Key_Equal) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl++ (faster)") << int(Qt::Key_Plus) << int(Qt::ControlModifier);
+    QTest::newRow("Ctrl+Shift+R (record)")
+        << int(Qt::Key_R) << int(Qt::ControlModifier | Qt::ShiftModifier);
+    QTest::newRow("Alt+W") << int(Qt::Key_W) << int(Qt::AltModifier);
+    QTest::newRow("Meta+Space") << int(Qt::Key_Space) << int(Qt::MetaModifier);
+}
+
+void TestHandDrive::shortcutsAreLeftAlone()
+{
+    // The window's shortcuts reach the window: pressing one in the viewport neither moves a
+    // hand nor takes the grippers from the operator.
+    QFETCH(int, key);
+    QFETCH(int, modifiers);
+    QSignalSpy started(m_handDrive.get(), &HandDrive::driveStarted);
+    QVERIFY(!m_handDrive->press(key, Qt::KeyboardModifiers(modifiers)));
+    QCOMPARE(started.count(), 0);
+    QVERIFY(!m_handDrive->isDriving());
+    // The same key alone is the map's.
+    if (key != Qt::Key_Equal && key != Qt::Key_Plus) {
+        QVERIFY(m_handDrive->press(key));
+        QVERIFY(m_handDrive->isDriving());
+    }
+}
+
+void TestHandDrive::analogueRatesMoveInProportion()
+{
+    QSignalSpy started(m_handDrive.get(), &HandDrive::driveStarted);
+    m_handDrive->setViewAzimuth(0.0); // looking along +x: forward is +x, right is -y
+    m_handDrive->setSpeed(0.2);
+    const Pose before = m_world->target(Gripper::Right);
+    DriveRates rates;
+    rates.forward = 0.5;
+    rates.right = -0.25;
+    rates.up = 0.1;
+    m_handDrive->setRates(DriveDevice::Gamepad, rates);
+    QCOMPARE(started.count(), 1);
+    // The flick's first tick, then half a second.
+    m_handDrive->advance(0.5);
+    m_handDrive->setRates(DriveDevice::Gamepad, DriveRates());
+    m_handDrive->advance(0.5); // idle: nothing moves
+    m_operator.act(*m_world);
+    const Pose after = m_world->target(Gripper::Right);
+    const double seconds = 0.5 + 1.0 / 60;
+    QVERIFY(std::abs((after.pos[0] - before.pos[0]) - 0.5 * 0.2 * seconds) < 1e-6);
+    QVERIFY(std::abs((after.pos[1] - before.pos[1]) - 0.25 * 0.2 * seconds) < 1e-6);
+    QVERIFY(std::abs((after.pos[2] - before.pos[2]) - 0.1 * 0.2 * seconds) < 1e-6);
+    // Two devices and a key add up, but never beyond full speed.
+    DriveRates full;
+    full.up = 1.0;
+    m_handDrive->setRates(DriveDevice::Gamepad, full);
+    m_handDrive->setRates(DriveDevice::SpaceMouse, full);
+    m_handDrive->press(Qt::Key_R);
+    const double z = m_handDrive->command(Gripper::Right)->target.pos[2];
+    m_handDrive->advance(0.1);
+    QVERIFY(std::abs(m_handDrive->command(Gripper::Right)->target.pos[2] - z - 0.2 * 0.1) < 1e-9);
+    m_handDrive->releaseAll();
+}
+
+void TestHandDrive::analogueGripFollowsTheTrigger()
+{
+    DriveRates rates;
+    rates.grip = 0.0; // the device's first report: where its trigger rests
+    m_handDrive->setRates(DriveDevice::Gamepad, rates);
+    QVERIFY(!m_handDrive->isDriving());
+    rates.grip = 0.5;
+    m_handDrive->setRates(DriveDevice::Gamepad, rates);
+    QVERIFY(m_handDrive->isDriving());
+    QVERIFY(m_handDrive->isClosed(Gripper::Right));
+    m_handDrive->advance(1.0); // the ramp is long done
+    const double setpoint = m_handDrive->gripSetpoint(Gripper::Right);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->grip, 0.5 * setpoint);
+    rates.grip = 1.0;
+    m_handDrive->setRates(DriveDevice::Gamepad, rates);
+    m_handDrive->advance(1.0);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->grip, setpoint);
+    // Released: the fingers open.
+    rates.grip = 0.0;
+    m_handDrive->setRates(DriveDevice::Gamepad, rates);
+    QVERIFY(!m_handDrive->isClosed(Gripper::Right));
+    m_handDrive->advance(1.0);
+    QCOMPARE(m_handDrive->command(Gripper::Right)->grip, HandDrive::OpenGrip);
+}
+
+void TestHandDrive::idleTriggerLeavesTheGripAlone()
+{
+    // A gamepad at rest reports its trigger at 0 again and again; the keyboard's close holds,
+    // and an idle device never takes the grippers from the operator.
+    QSignalSpy started(m_handDrive.get(), &HandDrive::driveStarted);
+    DriveRates rest;
+    rest.grip = 0.0;
+    m_handDrive->setRates(DriveDevice::Gamepad, rest);
+    m_handDrive->setRates(DriveDevice::Gamepad, rest);
+    QCOMPARE(started.count(), 0);
+    QVERIFY(m_handDrive->press(Qt::Key_Space));
+    if (!m_handDrive->isClosed(Gripper::Right)) // it was closed when the drive began
+        QVERIFY(m_handDrive->press(Qt::Key_Space));
+    QVERIFY(m_handDrive->isClosed(Gripper::Right));
+    for (int k = 0; k < 10; ++k) {
+        rest.grip = 0.01 * (k % 2); // noise inside the dead band
+        m_handDrive->setRates(DriveDevice::Gamepad, rest);
+        m_handDrive->advance(0.1);
+    }
+    QVERIFY(m_handDrive->isClosed(Gripper::Right));
+    QCOMPARE(m_handDrive->command(Gripper::Right)->grip,
+             m_handDrive->gripSetpoint(Gripper::Right));
+}
+
+void TestHandDrive::leanIsLimited()
+{
+    DriveRates rates;
+    rates.tilt = 1.0;
+    rates.roll = 0.5;
+    m_handDrive->setRates(DriveDevice::SpaceMouse, rates);
+    for (int k = 0; k < 20; ++k)
+        m_handDrive->advance(0.25);
+    const double lean = tiltFromVertical(m_handDrive->command(Gripper::Right)->target);
+    QVERIFY2(lean <= HandDrive::MaxTilt + 1e-9 && lean > HandDrive::MaxTilt - 0.1,
+             qPrintable(QString::number(lean)));
+    // Back the other way: upright again.
+    rates.tilt = -1.0;
+    rates.roll = -0.5;
+    m_handDrive->setRates(DriveDevice::SpaceMouse, rates);
+    const double before = lean;
+    m_handDrive->advance(0.1);
+    QVERIFY(tiltFromVertical(m_handDrive->command(Gripper::Right)->target) < before);
+    m_handDrive->releaseAll();
+}
+
+void TestHandDrive::descentStopsOnTheCube()
+{
+    // "Down" held over a cube with the simulation running: the drive's own target stops at
+    // the guard's floor, so "up" lifts at once instead of first climbing out of the cube.
+    QString error;
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
+    QVERIFY2(world, qPrintable(error));
+    DriveOperator op;
+    HandDrive drive;
+    drive.setOperator(&op);
+    drive.setWorld(world.get());
+    const auto cube = world->objectPosition(0);
+    Pose above = world->target(Gripper::Right);
+    above.pos = {cube[0], cube[1], cube[2] + 0.15};
+    op.setTarget(Gripper::Right, above);
+    op.setGrip(Gripper::Right, HandDrive::OpenGrip);
+    const int stepsPerTick = int(std::lround(1.0 / 60 / world->timestep()));
+    auto run = [&](double seconds) {
+        for (int tick = 0; tick < int(seconds * 60); ++tick) {
+            drive.advance(1.0 / 60);
+            for (int k = 0; k < stepsPerTick; ++k) {
+                op.act(*world);
+                world->step();
+            }
+        }
+    };
+    run(0.5);
+    QVERIFY(drive.press(Qt::Key_F));
+    run(3.0);
+    const DriveStatus status = drive.status(Gripper::Right);
+    QVERIFY(status.floor);
+    const double target = drive.command(Gripper::Right)->target.pos[2];
+    QVERIFY2(target >= *status.floor - 0.002,
+             qPrintable(QString("%1 vs floor %2").arg(target).arg(*status.floor)));
+    QVERIFY(world->frame(Gripper::Right).totalForce() < 10.0);
+    drive.release(Qt::Key_F);
+    QVERIFY(drive.press(Qt::Key_R));
+    run(0.2);
+    QVERIFY(world->gripperPose(Gripper::Right).pos[2] > *status.floor + 0.01);
+}
+
+QTEST_MAIN(TestHandDrive)
+#include "tst_handdrive.moc"
