@@ -72,7 +72,7 @@ std::optional<double> DriveOperator::guard(const World &world, Gripper hand, dou
     const double wrist = world.gripperPose(hand).pos[2];
     const double dt = world.timestep();
     if (floor) {
-        if (targetZ >= *floor)
+        if (targetZ > *floor + GuardRelease)
             floor.reset(); // the user lifts: the target is free again
         else
             m_quiet[index] = support < GuardForce ? m_quiet[index] + dt : 0.0;

@@ -36,8 +36,8 @@ struct DriveStatus
  * a cube, a held cube set down) while the target is below the wrist, the target stops at a
  * floor that settles where the push is GuardPush. Holding "down" then presses with a few
  * newtons instead of burying the target in a stack (the wrist's weld gives about 100 N per
- * millimetre). Lifting the target above the floor ends the guard; when the push goes away
- * (the cube below was taken) the floor descends at GuardApproach until something pushes.
+ * millimetre). Lifting the target GuardRelease above the floor ends the guard; when the push goes
+ * away (the cube below was taken) the floor descends at GuardApproach until something pushes.
  */
 class DriveOperator : public Operator
 {
@@ -48,6 +48,11 @@ public:
     static constexpr double GuardPush = 2.5;
     /** How fast the floor follows the push's error (m/s per N): settles in tens of ms. */
     static constexpr double GuardRate = 1e-3;
+    /**
+     * How far above the floor (m) a target must be to end the guard: a drive that holds its
+     * target on the floor keeps it while the floor settles.
+     */
+    static constexpr double GuardRelease = 0.002;
     /** How long the push may be gone (s) before the guarded target descends again… */
     static constexpr double GuardQuiet = 0.1;
     /** …at this speed (m/s), so that meeting the next surface is gentle. */
