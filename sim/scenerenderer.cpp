@@ -28,6 +28,48 @@ struct SceneRenderer::Private
     ~Private() { mjr_freeContext(&context); }
 };
 
+namespace {
+
+constexpr double GhostRadius = 0.012;
+constexpr double DiscRadius = 0.014;
+
+/** Appends a decoration geom to `scene`; null when it is full. */
+mjvGeom *addGeom(mjvScene &scene, int type, const mjtNum size[3], const mjtNum pos[3],
+                 const float rgba[4])
+{
+    if (scene.ngeom >= scene.maxgeom)
+        return nullptr;
+    mjvGeom *geom = scene.geoms + scene.ngeom++;
+    mjv_initGeom(geom, type, size, pos, nullptr, rgba);
+    geom->category = mjCAT_DECOR;
+    geom->objtype = mjOBJ_UNKNOWN;
+    geom->objid = -1;
+    return geom;
+}
+
+void addMarker(mjvScene &scene, const WristMarker &marker)
+{
+    // Cyan while free, amber while the guard holds; the other hand's ghost is fainter.
+    const float alpha = marker.active ? 0.55f : 0.25f;
+    const float free[4] = {0.35f, 0.85f, 1.0f, alpha};
+    const float guarded[4] = {1.0f, 0.7f, 0.2f, alpha};
+    const float *rgba = marker.guarded ? guarded : free;
+    const mjtNum ghost[3] = {GhostRadius, GhostRadius, GhostRadius};
+    const mjtNum at[3] = {marker.target[0], marker.target[1], marker.target[2]};
+    addGeom(scene, mjGEOM_SPHERE, ghost, at, rgba);
+    if (!marker.surface || *marker.surface >= marker.target[2])
+        return;
+    const mjtNum below[3] = {marker.target[0], marker.target[1], *marker.surface + 0.0005};
+    const float line[4] = {rgba[0], rgba[1], rgba[2], 0.9f};
+    if (mjvGeom *drop = addGeom(scene, mjGEOM_LINE, ghost, at, line))
+        mjv_makeConnector(drop, mjGEOM_LINE, 2.0, at[0], at[1], at[2] - GhostRadius, below[0],
+                          below[1], below[2]);
+    const mjtNum disc[3] = {DiscRadius, DiscRadius, 0.0005};
+    addGeom(scene, mjGEOM_CYLINDER, disc, below, line);
+}
+
+} // namespace
+
 SceneRenderer::SceneRenderer(const World &world) : d(std::make_unique<Private>()), m_world(world)
 {
     d->cameraData.reset(mj_makeData(world.model()));
@@ -67,10 +109,16 @@ bool SceneRenderer::render(SceneFeed &feed, unsigned int target, int width, int 
     cam.elevation = m_camera.elevation;
     mjv_updateCamera(m_world.model(), d->cameraData.get(), &cam, &scene);
 
+    // The markers go on top of the captured geoms for this render only: the feed's buffer
+    // is drawn again, unmarked or marked anew, on the next frame.
+    const int captured = scene.ngeom;
+    for (const WristMarker &marker : m_markers)
+        addMarker(scene, marker);
     const int w = std::min(width, d->context.offWidth);
     const int h = std::min(height, d->context.offHeight);
     mjr_setBuffer(mjFB_OFFSCREEN, &d->context);
     mjr_render(mjrRect{0, 0, w, h}, &scene, &d->context);
+    scene.ngeom = captured;
 
     QOpenGLExtraFunctions *gl = QOpenGLContext::currentContext()->extraFunctions();
     gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, d->context.offFBO);

@@ -3,6 +3,8 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace semhap {
 
@@ -16,6 +18,18 @@ struct OrbitCamera
     double distance = 0.9;
     double azimuth = 90.0;    ///< degrees
     double elevation = -30.0; ///< degrees
+};
+
+/**
+ * Where a driven wrist is asked to go, drawn over the scene: a translucent ghost at the
+ * target, and a drop line to the surface straight below it.
+ */
+struct WristMarker
+{
+    std::array<double, 3> target{};
+    std::optional<double> surface; ///< the height the drop line reaches (none: no line)
+    bool active = false;           ///< the hand the user drives now (the other is fainter)
+    bool guarded = false;          ///< resting on something: the target stopped descending
 };
 
 /**
@@ -39,6 +53,8 @@ public:
     bool isInitialized() const;
 
     OrbitCamera &camera() { return m_camera; }
+    /** What is drawn over the scene from the next render on (empty: nothing). */
+    void setMarkers(const std::vector<WristMarker> &markers) { m_markers = markers; }
 
     /**
      * Renders the feed's newest picture into framebuffer `target` (width × height); false
@@ -54,6 +70,7 @@ private:
     std::unique_ptr<Private> d;
     const World &m_world;
     OrbitCamera m_camera;
+    std::vector<WristMarker> m_markers;
 };
 
 } // namespace semhap

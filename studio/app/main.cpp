@@ -34,8 +34,8 @@ int readCommandLine(semhap::StudioOptions *options)
     if (semhap::StudioOptions::parse(QCoreApplication::arguments().mid(1), options, &message,
                                      &help))
         return -1;
-    std::fprintf(help ? stdout : stderr, "%s%s", help ? "" : "semhap-studio: ",
-                 qPrintable(message));
+    std::fprintf(help ? stdout : stderr, "%s%s",
+                 help ? "" : "semhap-studio: ", qPrintable(message));
     if (!help)
         std::fprintf(stderr, "\n");
     return help ? 0 : 2;

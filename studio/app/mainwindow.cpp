@@ -5,6 +5,7 @@
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogpanel.h"
+#include "gamepadinput.h"
 #include "handdrive.h"
 #include "liverigdialog.h"
 #include "metricspanel.h"
@@ -16,6 +17,7 @@
 #include "routergraph.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
+#include "teleopsettings.h"
 #include "waveformdesigner.h"
 #include "world.h"
 
@@ -87,6 +89,8 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     // The world runs on the engine's thread: starting to drive reads it between two ticks.
     m_handDrive->setStartSource([this] { return m_engine.handCommands(); });
     m_poseInput = new PoseInput(this);
+    m_gamepad = new GamepadInput(this);
+    m_gamepad->setDrive(m_handDrive);
 
     createActions();
     createToolBar();
@@ -114,6 +118,20 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     } else if (openRun(options.run) && options.autoRun) {
         m_engine.run();
     }
+    applyTeleopSettings();
+    connect(m_gamepad, &GamepadInput::triggered, this, [this](GamepadMapping::Action action) {
+        if (action == GamepadMapping::HandBack)
+            m_driveAction->setChecked(false);
+        else if (action == GamepadMapping::NextCamera)
+            m_viewport->nextCameraPreset();
+    });
+    connect(m_gamepad, &GamepadInput::controllersChanged, this, [this] {
+        const QStringList pads = m_gamepad->controllers();
+        statusBar()->showMessage(pads.isEmpty()
+                                     ? tr("No gamepad connected")
+                                     : tr("Gamepad: %1").arg(pads.join(QStringLiteral(", "))),
+                                 5000);
+    });
     if (options.posePort > 0) {
         if (!m_poseInput->listen(quint16(options.posePort)))
             statusBar()->showMessage(
@@ -126,6 +144,20 @@ MainWindow::~MainWindow()
     // Before the engine goes: nothing may still write to its operator.
     delete m_poseInput;
     m_poseInput = nullptr;
+    delete m_gamepad;
+    m_gamepad = nullptr;
+}
+
+void MainWindow::applyTeleopSettings()
+{
+    const TeleopSettings settings = TeleopSettings::load();
+    m_handDrive->setSpeed(settings.speed);
+    m_gamepad->setMapping(settings.gamepadMapping);
+    if (!settings.gamepad) {
+        m_gamepad->stop();
+    } else if (!m_gamepad->start()) {
+        statusBar()->showMessage(tr("Gamepads are off: %1").arg(m_gamepad->errorString()), 10000);
+    }
 }
 
 bool MainWindow::openRun(const RunOptions &options)
@@ -265,9 +297,8 @@ void MainWindow::createActions()
         if (dialog.exec() == QDialog::Accepted)
             openLiveRig(dialog.options());
     });
-    m_preferencesAction =
-        action(tr("Preferences…"), QStringLiteral("preferencesAction"),
-               QKeySequence(Qt::CTRL | Qt::Key_Comma));
+    m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
+                                 QKeySequence(Qt::CTRL | Qt::Key_Comma));
     // Ctrl+, everywhere (Linux desktops define no standard key); the platform's own too.
     if (const QList<QKeySequence> own = QKeySequence::keyBindings(QKeySequence::Preferences);
         !own.isEmpty() && !own.contains(m_preferencesAction->shortcut()))
@@ -470,6 +501,9 @@ void MainWindow::createMenus()
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_forcesAction);
     view->addAction(m_resetCameraAction);
+    QMenu *camera = view->addMenu(tr("&Camera"));
+    for (int preset = 0; preset < CameraPresetCount; ++preset)
+        camera->addAction(m_viewport->cameraPresetAction(CameraPreset(preset)));
     view->addSeparator();
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         view->addAction(dock->toggleViewAction());
@@ -538,8 +572,7 @@ void MainWindow::connectEngine()
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     // Any drive input hands the grippers to the user.
-    connect(m_handDrive, &HandDrive::driveStarted, this,
-            [this] { m_engine.setDriving(true); });
+    connect(m_handDrive, &HandDrive::driveStarted, this, [this] { m_engine.setDriving(true); });
     connect(m_poseInput, &PoseInput::driveStarted, this, [this] { m_engine.setDriving(true); });
 }
 
@@ -854,6 +887,7 @@ void MainWindow::showPreferences()
     PreferencesDialog dialog(this);
     if (dialog.exec() != QDialog::Accepted)
         return;
+    applyTeleopSettings();
     if (dialog.languageChanged())
         emit languageChangeRequested(dialog.language());
 }

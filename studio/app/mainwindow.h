@@ -16,6 +16,7 @@ namespace semhap {
 
 class DevicesPanel;
 class EventLogPanel;
+class GamepadInput;
 class HandDrive;
 class MetricsPanel;
 class PlotPanel;
@@ -105,6 +106,8 @@ private:
     void pickRouter(int index);
     void setSpeedIndex(int index);
     void showPreferences();
+    /** Applies the saved driving settings: speed, the gamepad on or off and its mapping. */
+    void applyTeleopSettings();
     void toggleRunning();
     void toggleRecording();
     void rerouteReplay();
@@ -118,6 +121,7 @@ private:
     SimViewport *m_viewport = nullptr;
     HandDrive *m_handDrive = nullptr;
     PoseInput *m_poseInput = nullptr;
+    GamepadInput *m_gamepad = nullptr;
     PlotPanel *m_plots = nullptr;
     EventLogPanel *m_eventLog = nullptr;
     DevicesPanel *m_devicesPanel = nullptr;

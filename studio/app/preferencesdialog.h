@@ -1,14 +1,24 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "teleopsettings.h"
+
 #include <QDialog>
 
+#include <array>
+
+class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLineEdit;
 
 namespace semhap {
 
-/** The studio's settings a user changes rarely: the interface language, where sessions go. */
+/**
+ * The studio's settings a user changes rarely: the interface language, where sessions go
+ * (General), and how the grippers are driven (Driving: the wrist's speed, the gamepad's
+ * mapping and dead zone, the 3D mouse).
+ */
 class PreferencesDialog : public QDialog
 {
     Q_OBJECT
@@ -20,7 +30,18 @@ public:
     QString language() const;
     bool languageChanged() const;
 
+    /** The driving settings as the dialog shows them now. */
+    TeleopSettings teleopSettings() const;
+
     QComboBox *languagePicker() const { return m_language; }
+    QComboBox *gamepadControl(GamepadMapping::Motion motion) const
+    {
+        return m_motions[size_t(motion)];
+    }
+    QComboBox *gamepadButton(GamepadMapping::Action action) const
+    {
+        return m_actions[size_t(action)];
+    }
     QLineEdit *sessionsFolderEdit() const { return m_sessionsFolder; }
 
     /** The saved language setting (empty: follow the system). */
@@ -31,10 +52,20 @@ public:
     static QString defaultSessionsFolder();
 
 private:
+    QWidget *createGeneralPage();
+    QWidget *createDrivingPage();
+    void showMapping(const GamepadMapping &mapping);
     void save();
 
     QComboBox *m_language = nullptr;
     QLineEdit *m_sessionsFolder = nullptr;
+    QDoubleSpinBox *m_speed = nullptr;
+    QCheckBox *m_gamepad = nullptr;
+    QDoubleSpinBox *m_gamepadDeadZone = nullptr;
+    std::array<QComboBox *, GamepadMapping::MotionCount> m_motions{};
+    std::array<QComboBox *, GamepadMapping::ActionCount> m_actions{};
+    QCheckBox *m_spaceMouse = nullptr;
+    QDoubleSpinBox *m_spaceMouseDeadZone = nullptr;
     QString m_initial;
 };
 

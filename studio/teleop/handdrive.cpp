@@ -379,10 +379,7 @@ bool HandDrive::move(const DriveRates &rates, double seconds)
     HandCommand &hand = *m_hands[size_t(m_active)];
     const double scale = m_speed / DefaultSpeed * (m_slow ? SlowFactor : 1.0);
     const double step = m_speed * seconds * (m_slow ? SlowFactor : 1.0);
-    // Along the table axes nearest the view: a slanted camera still moves the hand straight.
-    const double azimuth = Pi / 2 * std::round(m_viewAzimuth / 90.0);
-    const double awayX = std::round(std::cos(azimuth));
-    const double awayY = std::round(std::sin(azimuth));
+    const auto [awayX, awayY] = awayDirection();
 
     const std::array<double, 3> delta{step * (rates.forward * awayX + rates.right * awayY),
                                       step * (rates.forward * awayY - rates.right * awayX),
@@ -417,6 +414,13 @@ bool HandDrive::move(const DriveRates &rates, double seconds)
         }
     }
     return true;
+}
+
+std::array<double, 2> HandDrive::awayDirection() const
+{
+    // Along the table axes nearest the view: a slanted camera still moves the hand straight.
+    const double azimuth = Pi / 2 * std::round(m_viewAzimuth / 90.0);
+    return {std::round(std::cos(azimuth)), std::round(std::sin(azimuth))};
 }
 
 double HandDrive::gripGoal(size_t hand) const

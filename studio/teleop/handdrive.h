@@ -145,6 +145,8 @@ public:
      * axis nearest the view, D moves to the viewer's right.
      */
     void setViewAzimuth(double degrees) { m_viewAzimuth = degrees; }
+    /** The table axis W moves along, as a unit (x, y): the one nearest the view. */
+    std::array<double, 2> awayDirection() const;
     /** Where the wrist may go: the task's regions with some room around them. */
     const Region &workspace() const { return m_workspace; }
 

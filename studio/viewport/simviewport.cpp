@@ -7,6 +7,7 @@
 #include "world.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -35,6 +36,8 @@ constexpr double Highest = 0.0;
 constexpr double PanRange = 1.5;
 // MuJoCo's default vertical field of view (degrees): a pan moves with the mouse.
 constexpr double FieldOfView = 45.0;
+// The wrist is this far above the pads' centre (m): Follow looks halfway.
+constexpr double FingerReach = 0.06;
 
 const QColor &Background = colors::SceneGround;
 
@@ -63,6 +66,24 @@ SimViewport::SimViewport(QWidget *parent)
     m_showForcesAction->setCheckable(true);
     connect(m_showForcesAction, &QAction::toggled, this, &SimViewport::setShowForces);
 
+    const QString presetNames[CameraPresetCount] = {tr("Across the jaws"), tr("From the top"),
+                                                    tr("From the side"), tr("Follow the hand")};
+    const char *const presetIds[CameraPresetCount] = {"cameraAcrossJaws", "cameraTop",
+                                                      "cameraSide", "cameraFollow"};
+    auto *presets = new QActionGroup(this);
+    for (int p = 0; p < CameraPresetCount; ++p) {
+        auto *preset = new QAction(presetNames[p], presets);
+        preset->setObjectName(QLatin1String(presetIds[p]));
+        preset->setCheckable(true);
+        preset->setShortcut(QKeySequence(Qt::Key_1 + p));
+        preset->setShortcutContext(Qt::WidgetShortcut);
+        connect(preset, &QAction::triggered, this,
+                [this, p] { setCameraPreset(CameraPreset(p)); });
+        addAction(preset);
+        m_presetActions[size_t(p)] = preset;
+    }
+    m_presetActions[0]->setChecked(true);
+
     m_frameTimer.setInterval(FrameMs);
     connect(&m_frameTimer, &QTimer::timeout, this, &SimViewport::frame);
 }
@@ -86,7 +107,7 @@ void SimViewport::setScene(const World *world, SceneFeed *feed)
     if (m_handDrive)
         m_handDrive->setWorld(world);
     m_home = world ? defaultCamera(*world) : OrbitCamera();
-    changeCamera(m_home);
+    setCameraPreset(m_preset);
 }
 
 void SimViewport::setPlaceholder(const QString &text)
@@ -141,13 +162,49 @@ void SimViewport::setCamera(const OrbitCamera &camera)
 
 void SimViewport::resetCamera()
 {
-    changeCamera(m_home);
+    setCameraPreset(CameraPreset::AcrossJaws);
 }
 
-OrbitCamera SimViewport::defaultCamera(const World &world)
+void SimViewport::setCameraPreset(CameraPreset preset)
 {
-    // The box around the task's regions and the grippers, seen from the front (looking
-    // along +y, so the scene's x runs left to right) and a little from above.
+    m_preset = preset;
+    m_presetActions[size_t(preset)]->setChecked(true);
+    OrbitCamera camera = m_world ? presetCamera(*m_world, preset) : OrbitCamera();
+    const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
+    if (preset == CameraPreset::Follow && m_handDrive && m_handDrive->command(hand)) {
+        // Across this hand's jaws: its fingers close along its own y axis.
+        const auto &q = m_handDrive->command(hand)->target.quat;
+        const double yaw =
+            std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
+        camera.azimuth = yaw * 180 / Pi;
+    }
+    changeCamera(camera);
+    if (preset == CameraPreset::Follow)
+        follow();
+}
+
+void SimViewport::nextCameraPreset()
+{
+    setCameraPreset(CameraPreset((int(m_preset) + 1) % CameraPresetCount));
+}
+
+void SimViewport::follow()
+{
+    if (!m_handDrive || !m_handDrive->command(m_handDrive->activeHand()))
+        return;
+    const Pose &target = m_handDrive->command(m_handDrive->activeHand())->target;
+    OrbitCamera camera = m_camera;
+    // Between the wrist and the pads, so the fingers and what they hold are in the middle.
+    camera.lookAt = {target.pos[0], target.pos[1], target.pos[2] - FingerReach / 2};
+    if (camera.lookAt != m_camera.lookAt)
+        changeCamera(camera);
+}
+
+OrbitCamera SimViewport::presetCamera(const World &world, CameraPreset preset)
+{
+    // The box around the task's regions and the grippers. The fingers close along y, so the
+    // default view looks along +x (across the jaws, the pick side nearest) and a little
+    // from above.
     double lowX = 1e9, highX = -1e9, lowY = 1e9, highY = -1e9;
     auto include = [&](double x, double y, double halfX, double halfY) {
         lowX = std::min(lowX, x - halfX);
@@ -170,8 +227,25 @@ OrbitCamera SimViewport::defaultCamera(const World &world)
     camera.lookAt = {(lowX + highX) / 2, (lowY + highY) / 2, 0.12};
     const double halfWidth = std::max((highX - lowX) / 2, (highY - lowY) / 2);
     camera.distance = std::clamp(0.25 + 1.6 * halfWidth, Nearest, Farthest);
-    camera.azimuth = 90.0;
-    camera.elevation = -35.0;
+    camera.azimuth = 0.0;
+    camera.elevation = -30.0;
+    switch (preset) {
+    case CameraPreset::AcrossJaws:
+        break;
+    case CameraPreset::Top:
+        camera.lookAt[2] = 0.0;
+        camera.distance = std::clamp(0.3 + 2.0 * halfWidth, Nearest, Farthest);
+        camera.elevation = Lowest;
+        break;
+    case CameraPreset::Side:
+        camera.azimuth = 90.0;
+        camera.elevation = -20.0;
+        break;
+    case CameraPreset::Follow:
+        camera.distance = 0.45;
+        camera.elevation = -20.0;
+        break;
+    }
     return camera;
 }
 
@@ -243,6 +317,7 @@ void SimViewport::paintGL()
     bool drawn = false;
     if (m_renderer && m_feed) {
         m_renderer->camera() = m_camera;
+        m_renderer->setMarkers(markers());
         drawn = m_renderer->render(*m_feed, defaultFramebufferObject(),
                                    int(std::lround(width() * ratio)),
                                    int(std::lround(height() * ratio)));
@@ -294,7 +369,26 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
                           : tr("Grip: open (closes to %1 N)")
                                 .arg(m_handDrive->gripSetpoint(hand), 0, 'f', 0));
         }
+        if (m_handDrive) {
+            const DriveStatus status = m_handDrive->status(hand);
+            if (status.floor)
+                lines << tr("Resting on what is below: the wrist stops here");
+            else if (status.driven && status.surface)
+                lines << tr("Wrist %1 cm above the surface below")
+                             .arg((status.target.pos[2] - *status.surface) * 100, 0, 'f', 1);
+        }
         lines << tr("W A S D move · R F up/down · Q E turn · Space grip · +/- force");
+        if (m_handDrive) {
+            // Which table axes the keys follow now, so a turned camera is no surprise.
+            const auto [x, y] = m_handDrive->awayDirection();
+            auto axis = [](double ax, double ay) {
+                return ax > 0.5    ? QStringLiteral("+x")
+                       : ax < -0.5 ? QStringLiteral("−x")
+                       : ay > 0.5  ? QStringLiteral("+y")
+                                   : QStringLiteral("−y");
+            };
+            lines << tr("W goes %1, D goes %2 · 1–4 camera").arg(axis(x, y), axis(y, -x));
+        }
         if (m_handDrive && m_handDrive->hasBothHands())
             lines << tr("Tab: switch hand");
     } else {
@@ -333,10 +427,31 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     }
 }
 
+std::vector<WristMarker> SimViewport::markers() const
+{
+    std::vector<WristMarker> markers;
+    if (!m_driving || !m_handDrive)
+        return markers;
+    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
+        if (!m_handDrive->command(hand))
+            continue;
+        const DriveStatus status = m_handDrive->status(hand);
+        WristMarker marker;
+        marker.target = status.driven ? status.target.pos : m_handDrive->command(hand)->target.pos;
+        marker.surface = status.surface;
+        marker.guarded = status.floor.has_value();
+        marker.active = hand == m_handDrive->activeHand();
+        markers.push_back(marker);
+    }
+    return markers;
+}
+
 void SimViewport::frame()
 {
     if (!m_feed)
         return;
+    if (m_preset == CameraPreset::Follow)
+        follow();
     m_feed->request();
     // Redraw only when the simulation sent something new (a paused run costs nothing).
     if (m_feed->takeLatest())

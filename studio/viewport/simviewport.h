@@ -7,7 +7,9 @@
 #include <QPoint>
 #include <QTimer>
 
+#include <array>
 #include <memory>
+#include <vector>
 
 class QAction;
 class QPainter;
@@ -15,6 +17,16 @@ class QPainter;
 namespace semhap {
 
 class HandDrive;
+
+/** The camera views a key or the View menu picks. */
+enum class CameraPreset
+{
+    AcrossJaws, ///< the default: across the fingers' closing axis, so the gap shows
+    Top,
+    Side, ///< along the closing axis
+    Follow,
+};
+constexpr int CameraPresetCount = 4;
 class SceneFeed;
 class World;
 
@@ -59,13 +71,30 @@ public:
 
     const OrbitCamera &camera() const { return m_camera; }
     void setCamera(const OrbitCamera &camera);
-    /** Back to the scene's default view (also a double-click). */
+    /** Back to the scene's default view (also a double-click): across the jaws. */
     void resetCamera();
-    /** A view that frames the scene's task: its regions and grippers, from the front. */
-    static OrbitCamera defaultCamera(const World &world);
+    /**
+     * One of the preset views (keys 1–4); Follow keeps the active hand's wrist target in
+     * the middle, looking across its jaws, until another view or a pan.
+     */
+    void setCameraPreset(CameraPreset preset);
+    /** The next preset after the last one picked (a gamepad button). */
+    void nextCameraPreset();
+    CameraPreset cameraPreset() const { return m_preset; }
+    /** A view that frames the scene's task, its regions and grippers, from the preset's side. */
+    static OrbitCamera presetCamera(const World &world, CameraPreset preset);
+    static OrbitCamera defaultCamera(const World &world)
+    {
+        return presetCamera(world, CameraPreset::AcrossJaws);
+    }
 
     /** Actions for the main window's menus: reset the camera, show contact forces. */
     QAction *resetCameraAction() const { return m_resetCamera; }
+    /** The presets' actions (checkable, keys 1–4 while the viewport has the focus). */
+    QAction *cameraPresetAction(CameraPreset preset) const
+    {
+        return m_presetActions[size_t(preset)];
+    }
     QAction *showForcesAction() const { return m_showForcesAction; }
 
     /** Frames drawn from a picture so far (tests, a frame-rate readout). */
@@ -97,6 +126,10 @@ private:
     void frame();
     void changeCamera(const OrbitCamera &camera);
     void drawOverlay(QPainter &painter, bool hasPicture);
+    /** The driven hands' ghosts and drop lines, from the drive and its status. */
+    std::vector<WristMarker> markers() const;
+    /** Follow: the active hand's target in the middle, across its jaws. */
+    void follow();
 
     const World *m_world = nullptr;
     QString m_placeholder;
@@ -109,6 +142,8 @@ private:
     QTimer m_frameTimer;
     QAction *m_resetCamera;
     QAction *m_showForcesAction;
+    std::array<QAction *, CameraPresetCount> m_presetActions{};
+    CameraPreset m_preset = CameraPreset::AcrossJaws;
     QPoint m_lastMouse;
     bool m_panning = false;
     bool m_showForces = false;

@@ -6,6 +6,8 @@
 #include "devicemanager.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
+#include "gamepadinput.h"
+#include "handdrive.h"
 #include "imagechecks.h"
 #include "mainwindow.h"
 #include "openwindow.h"
@@ -21,6 +23,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QGraphicsView>
 #include <QImage>
 #include <QLabel>
@@ -28,9 +31,10 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStatusBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QStatusBar>
 #include <QTimer>
 
 #include <qcustomplot.h>
@@ -51,6 +55,7 @@ private slots:
     void timeWindowFollowsTheSpinBox();
     void stopAllWorksFromAnywhere();
     void aKeyInTheViewportTakesOver();
+    void drivingPreferencesApply();
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
     void switchesToGerman();
@@ -252,6 +257,40 @@ void TestStudio::stopAllWorksFromAnywhere()
     QVERIFY(closed);
     QVERIFY(!window.engine().isRunning());
     QVERIFY(window.statusBar()->currentMessage().startsWith("Stopped"));
+}
+
+void TestStudio::drivingPreferencesApply()
+{
+    // Preferences → Driving: a new wrist speed and a remapped gamepad control reach the
+    // window's drive and gamepad at once, and are there again in the next window.
+    MainWindow window(options());
+    QVERIFY(openWindow(window));
+    QTimer::singleShot(0, this, [] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        auto *tabs = dialog->findChild<QTabWidget *>("preferencesTabs");
+        tabs->setCurrentIndex(1);
+        if (const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !folder.isEmpty())
+            dialog->grab().save(folder + "/preferences-driving.png");
+        auto *speed = dialog->findChild<QDoubleSpinBox *>("driveSpeed");
+        speed->selectAll();
+        QTest::keyClicks(speed, "25");
+        QComboBox *turn = dialog->gamepadControl(GamepadMapping::Turn);
+        turn->setFocus();
+        while (turn->currentData().toString() != "leftshoulder+rightshoulder")
+            QTest::keyClick(turn, Qt::Key_Down);
+        QTest::keyClick(dialog, Qt::Key_Return);
+    });
+    window.findChild<QAction *>("preferencesAction")->trigger();
+    QCOMPARE(window.findChild<HandDrive *>()->speed(), 0.25);
+    QCOMPARE(window.findChild<GamepadInput *>()->mapping().motions[GamepadMapping::Turn],
+             QString("leftshoulder+rightshoulder"));
+    MainWindow again(options());
+    QCOMPARE(again.findChild<HandDrive *>()->speed(), 0.25);
+    QCOMPARE(again.findChild<GamepadInput *>()->mapping().motions[GamepadMapping::Turn],
+             QString("leftshoulder+rightshoulder"));
+    TeleopSettings().save(); // the defaults again for the other tests
 }
 
 void TestStudio::aKeyInTheViewportTakesOver()

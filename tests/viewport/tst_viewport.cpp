@@ -3,8 +3,8 @@
 // scene, the mouse moves the camera, teleoperation keys move the active gripper's target
 // through a DriveOperator. Screenshots are saved beside the test binary to be looked at.
 #include "driveoperator.h"
-#include "imagechecks.h"
 #include "handdrive.h"
+#include "imagechecks.h"
 #include "scenefeed.h"
 #include "simviewport.h"
 #include "world.h"
@@ -69,6 +69,8 @@ private slots:
     void gripKeysRampTheGrip();
     void forcesToggleReachesTheFeed();
     void tabSwitchesHands();
+    void cameraPresetsOnKeys();
+    void ghostShowsTheTarget();
     void screenshots_data();
     void screenshots();
     void showsThePlaceholder();
@@ -222,9 +224,9 @@ void TestViewport::rightDragPans()
     QTest::mouseRelease(&m_viewport, Qt::RightButton, {}, QPoint(300, 300));
     const OrbitCamera after = m_viewport.camera();
     QCOMPARE(after.azimuth, before.azimuth);
-    // Looking along +y, dragging the scene left moves the look-at point right (+x).
-    QVERIFY(after.lookAt[0] > before.lookAt[0] + 0.05);
-    QVERIFY(std::abs(after.lookAt[1] - before.lookAt[1]) < 1e-9);
+    // Looking along +x, dragging the scene left moves the look-at point right (-y).
+    QVERIFY(after.lookAt[1] < before.lookAt[1] - 0.05);
+    QVERIFY(std::abs(after.lookAt[0] - before.lookAt[0]) < 1e-9);
 }
 
 void TestViewport::wheelZooms()
@@ -270,11 +272,11 @@ void TestViewport::keysMoveTheActiveHand_data()
     QTest::addColumn<int>("key");
     QTest::addColumn<int>("axis"); // 0..2: position x, y, z; 3: yaw
     QTest::addColumn<int>("sign");
-    // The default view looks along +y: away is +y, right is +x.
-    QTest::newRow("W: away") << int(Qt::Key_W) << 1 << 1;
-    QTest::newRow("S: toward") << int(Qt::Key_S) << 1 << -1;
-    QTest::newRow("A: left") << int(Qt::Key_A) << 0 << -1;
-    QTest::newRow("D: right") << int(Qt::Key_D) << 0 << 1;
+    // The default view looks across the jaws, along +x: away is +x, right is -y.
+    QTest::newRow("W: away") << int(Qt::Key_W) << 0 << 1;
+    QTest::newRow("S: toward") << int(Qt::Key_S) << 0 << -1;
+    QTest::newRow("A: left") << int(Qt::Key_A) << 1 << 1;
+    QTest::newRow("D: right") << int(Qt::Key_D) << 1 << -1;
     QTest::newRow("R: up") << int(Qt::Key_R) << 2 << 1;
     QTest::newRow("F: down") << int(Qt::Key_F) << 2 << -1;
     QTest::newRow("Up arrow: up") << int(Qt::Key_Up) << 2 << 1;
@@ -386,7 +388,7 @@ void TestViewport::tabSwitchesHands()
     QTest::qWait(100);
     QTest::keyRelease(&m_viewport, Qt::Key_D);
     m_scene->manual.act(world);
-    QVERIFY(world.target(Gripper::Left).pos[0] > left.pos[0] + 0.005);
+    QVERIFY(world.target(Gripper::Left).pos[1] < left.pos[1] - 0.005);
     QCOMPARE(world.target(Gripper::Right).pos, right.pos);
 
     QTest::keyClick(&m_viewport, Qt::Key_Tab);
@@ -394,6 +396,67 @@ void TestViewport::tabSwitchesHands()
     std::swap(m_scene, bimanual);
     m_handDrive.setOperator(&m_scene->manual);
     m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+}
+
+void TestViewport::cameraPresetsOnKeys()
+{
+    // 1–4 in the viewport: across the jaws (the default), top, side, follow the hand.
+    QTest::keyClick(&m_viewport, Qt::Key_2);
+    QCOMPARE(m_viewport.cameraPreset(), CameraPreset::Top);
+    QCOMPARE(m_viewport.camera().elevation, -89.0);
+    QTest::keyClick(&m_viewport, Qt::Key_3);
+    QCOMPARE(m_viewport.camera().azimuth, 90.0);
+    QVERIFY(m_viewport.cameraPresetAction(CameraPreset::Side)->isChecked());
+    QTest::keyClick(&m_viewport, Qt::Key_1);
+    QCOMPARE(m_viewport.camera().azimuth, 0.0);
+    QCOMPARE(m_viewport.camera().elevation, -30.0);
+
+    m_viewport.setDriving(false);
+    QTest::keyClick(&m_viewport, Qt::Key_4);
+    QCOMPARE(m_viewport.cameraPreset(), CameraPreset::Follow);
+    QTest::keyPress(&m_viewport, Qt::Key_W); // takes the grippers and moves the hand
+    QTest::qWait(200);
+    QTest::keyRelease(&m_viewport, Qt::Key_W);
+    pump(100);
+    const Pose target = m_handDrive.command(m_handDrive.activeHand())->target;
+    QCOMPARE(m_viewport.camera().lookAt[0], target.pos[0]);
+    QCOMPARE(m_viewport.camera().lookAt[1], target.pos[1]);
+    // The gamepad's camera button goes round them all.
+    m_viewport.nextCameraPreset();
+    QCOMPARE(m_viewport.cameraPreset(), CameraPreset::AcrossJaws);
+    m_viewport.setDriving(false);
+}
+
+void TestViewport::ghostShowsTheTarget()
+{
+    // While the user drives, the wrist target shows as a cyan ghost with a drop line; the
+    // scripted operator's run shows none.
+    auto cyan = [this] {
+        const QImage image = grab();
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                count += c.blue() > 150 && c.green() > 120 && c.red() < c.green() - 40 ? 1 : 0;
+            }
+        }
+        return count;
+    };
+    m_viewport.resetCamera();
+    m_viewport.setDriving(false);
+    pump(150);
+    const int scripted = cyan();
+    QTest::keyPress(&m_viewport, Qt::Key_R); // drive: up a little
+    QTest::qWait(50);
+    QTest::keyRelease(&m_viewport, Qt::Key_R);
+    m_scene->manual.act(*m_scene->world); // the operator reports the target and the surface
+    QVERIFY(m_handDrive.status(Gripper::Right).surface);
+    m_viewport.update();
+    pump(150);
+    const int driving = cyan();
+    qInfo("cyan pixels: %d scripted, %d driving", scripted, driving);
+    QVERIFY(driving > scripted + 100);
+    m_viewport.setDriving(false);
 }
 
 void TestViewport::screenshots_data()
