@@ -815,6 +815,22 @@ Das Rig zeichnet seine Szene selbst.</translation>
             <numerusform>%n Zeilen der Sitzung verletzen die Regeln der Datenströme und wurden übersprungen (semhap replay nennt sie)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>No gamepad connected</source>
+        <translation>Kein Gamepad verbunden</translation>
+    </message>
+    <message>
+        <source>Gamepad: %1</source>
+        <translation>Gamepad: %1</translation>
+    </message>
+    <message>
+        <source>Gamepads are off: %1</source>
+        <translation>Gamepads sind aus: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Camera</source>
+        <translation>&amp;Kamera</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1454,6 +1470,206 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
         <translation>Eine neue Sprache baut das Fenster neu auf, und der Lauf beginnt von vorn. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner.</translation>
     </message>
+    <message>
+        <source>General</source>
+        <translation>Allgemein</translation>
+    </message>
+    <message>
+        <source>Driving</source>
+        <translation>Steuern</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Left stick →</source>
+        <translation>Linker Stick →</translation>
+    </message>
+    <message>
+        <source>Left stick ←</source>
+        <translation>Linker Stick ←</translation>
+    </message>
+    <message>
+        <source>Left stick ↓</source>
+        <translation>Linker Stick ↓</translation>
+    </message>
+    <message>
+        <source>Left stick ↑</source>
+        <translation>Linker Stick ↑</translation>
+    </message>
+    <message>
+        <source>Right stick →</source>
+        <translation>Rechter Stick →</translation>
+    </message>
+    <message>
+        <source>Right stick ←</source>
+        <translation>Rechter Stick ←</translation>
+    </message>
+    <message>
+        <source>Right stick ↓</source>
+        <translation>Rechter Stick ↓</translation>
+    </message>
+    <message>
+        <source>Right stick ↑</source>
+        <translation>Rechter Stick ↑</translation>
+    </message>
+    <message>
+        <source>Left trigger</source>
+        <translation>Linker Trigger</translation>
+    </message>
+    <message>
+        <source>Left trigger, reversed</source>
+        <translation>Linker Trigger, umgekehrt</translation>
+    </message>
+    <message>
+        <source>Right trigger</source>
+        <translation>Rechter Trigger</translation>
+    </message>
+    <message>
+        <source>Right trigger, reversed</source>
+        <translation>Rechter Trigger, umgekehrt</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Guide</source>
+        <translation>Guide</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Left stick press</source>
+        <translation>Linker Stick gedrückt</translation>
+    </message>
+    <message>
+        <source>Right stick press</source>
+        <translation>Rechter Stick gedrückt</translation>
+    </message>
+    <message>
+        <source>Left shoulder</source>
+        <translation>Linke Schultertaste</translation>
+    </message>
+    <message>
+        <source>Right shoulder</source>
+        <translation>Rechte Schultertaste</translation>
+    </message>
+    <message>
+        <source>D-pad ↑</source>
+        <translation>Steuerkreuz ↑</translation>
+    </message>
+    <message>
+        <source>D-pad ↓</source>
+        <translation>Steuerkreuz ↓</translation>
+    </message>
+    <message>
+        <source>D-pad ←</source>
+        <translation>Steuerkreuz ←</translation>
+    </message>
+    <message>
+        <source>D-pad →</source>
+        <translation>Steuerkreuz →</translation>
+    </message>
+    <message>
+        <source> cm/s</source>
+        <translation> cm/s</translation>
+    </message>
+    <message>
+        <source>How fast the wrist moves with a key held or a stick pushed all the way; Shift moves at a quarter of it</source>
+        <translation>Wie schnell sich das Handgelenk bewegt, solange eine Taste gehalten oder ein Stick ganz ausgelenkt wird; mit Umschalt ein Viertel davon</translation>
+    </message>
+    <message>
+        <source>Drive with a gamepad</source>
+        <translation>Mit einem Gamepad steuern</translation>
+    </message>
+    <message>
+        <source>How far a stick may rest off-centre without moving the wrist</source>
+        <translation>Wie weit ein Stick außerhalb der Mitte ruhen darf, ohne das Handgelenk zu bewegen</translation>
+    </message>
+    <message>
+        <source>Away / toward:</source>
+        <translation>Weg / heran:</translation>
+    </message>
+    <message>
+        <source>Right / left:</source>
+        <translation>Rechts / links:</translation>
+    </message>
+    <message>
+        <source>Up / down:</source>
+        <translation>Hoch / runter:</translation>
+    </message>
+    <message>
+        <source>Turn:</source>
+        <translation>Drehen:</translation>
+    </message>
+    <message>
+        <source>Tilt:</source>
+        <translation>Neigen:</translation>
+    </message>
+    <message>
+        <source>Roll:</source>
+        <translation>Rollen:</translation>
+    </message>
+    <message>
+        <source>Grip:</source>
+        <translation>Griff:</translation>
+    </message>
+    <message>
+        <source>Close / open:</source>
+        <translation>Schließen / öffnen:</translation>
+    </message>
+    <message>
+        <source>Switch hand:</source>
+        <translation>Hand wechseln:</translation>
+    </message>
+    <message>
+        <source>Grip force +5 N:</source>
+        <translation>Griffkraft +5 N:</translation>
+    </message>
+    <message>
+        <source>Grip force −5 N:</source>
+        <translation>Griffkraft −5 N:</translation>
+    </message>
+    <message>
+        <source>Hand back (Drive off):</source>
+        <translation>Zurückgeben (Steuern aus):</translation>
+    </message>
+    <message>
+        <source>Next camera view:</source>
+        <translation>Nächste Kameraansicht:</translation>
+    </message>
+    <message>
+        <source>Stick dead zone:</source>
+        <translation>Totzone der Sticks:</translation>
+    </message>
+    <message>
+        <source>Default mapping</source>
+        <translation>Standardbelegung</translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Gamepad</translation>
+    </message>
+    <message>
+        <source>Drive with a 3D mouse (through spacenavd)</source>
+        <translation>Mit einer 3D-Maus steuern (über spacenavd)</translation>
+    </message>
+    <message>
+        <source>3D mouse</source>
+        <translation>3D-Maus</translation>
+    </message>
+    <message>
+        <source>Dead zone:</source>
+        <translation>Totzone:</translation>
+    </message>
+    <message>
+        <source>Wrist speed:</source>
+        <translation>Handgelenk-Geschwindigkeit:</translation>
+    </message>
 </context>
 <context>
     <name>semhap::ReplayBar</name>
@@ -1830,6 +2046,34 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Click here and press W A S D to drive</source>
         <translation>Hier klicken und W A S D drücken, um zu steuern</translation>
+    </message>
+    <message>
+        <source>Across the jaws</source>
+        <translation>Quer zu den Backen</translation>
+    </message>
+    <message>
+        <source>From the top</source>
+        <translation>Von oben</translation>
+    </message>
+    <message>
+        <source>From the side</source>
+        <translation>Von der Seite</translation>
+    </message>
+    <message>
+        <source>Follow the hand</source>
+        <translation>Der Hand folgen</translation>
+    </message>
+    <message>
+        <source>Resting on what is below: the wrist stops here</source>
+        <translation>Liegt auf dem Untergrund auf: das Handgelenk hält hier an</translation>
+    </message>
+    <message>
+        <source>Wrist %1 cm above the surface below</source>
+        <translation>Handgelenk %1 cm über der Fläche darunter</translation>
+    </message>
+    <message>
+        <source>W goes %1, D goes %2 · 1–4 camera</source>
+        <translation>W geht %1, D geht %2 · 1–4 Kamera</translation>
     </message>
 </context>
 <context>

@@ -814,6 +814,22 @@ The rig draws its own scene.</source>
             <numerusform></numerusform>
         </translation>
     </message>
+    <message>
+        <source>No gamepad connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gamepad: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gamepads are off: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1453,6 +1469,206 @@ The rig draws its own scene.</source>
         <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>General</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Driving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left stick →</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left stick ←</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left stick ↓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left stick ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right stick →</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right stick ←</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right stick ↓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right stick ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left trigger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left trigger, reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right trigger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right trigger, reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left stick press</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right stick press</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left shoulder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right shoulder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>D-pad ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>D-pad ↓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>D-pad ←</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>D-pad →</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> cm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast the wrist moves with a key held or a stick pushed all the way; Shift moves at a quarter of it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive with a gamepad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far a stick may rest off-centre without moving the wrist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Away / toward:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right / left:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Up / down:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tilt:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Roll:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close / open:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch hand:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip force +5 N:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip force −5 N:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hand back (Drive off):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next camera view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stick dead zone:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Default mapping</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive with a 3D mouse (through spacenavd)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3D mouse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead zone:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrist speed:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::ReplayBar</name>
@@ -1828,6 +2044,34 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Click here and press W A S D to drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Across the jaws</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resting on what is below: the wrist stops here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrist %1 cm above the surface below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>W goes %1, D goes %2 · 1–4 camera</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
