@@ -831,6 +831,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>&amp;Camera</source>
         <translation>&amp;Kamera</translation>
     </message>
+    <message>
+        <source>3D mouse: %1</source>
+        <translation>3D-Maus: %1</translation>
+    </message>
+    <message>
+        <source>3D mouse disconnected: the wrist stopped</source>
+        <translation>3D-Maus getrennt: das Handgelenk steht</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2074,6 +2082,13 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>W goes %1, D goes %2 · 1–4 camera</source>
         <translation>W geht %1, D geht %2 · 1–4 Kamera</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SpaceMouseInput</name>
+    <message>
+        <source>3D mouse</source>
+        <translation>3D-Maus</translation>
     </message>
 </context>
 <context>

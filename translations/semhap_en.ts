@@ -830,6 +830,14 @@ The rig draws its own scene.</source>
         <source>&amp;Camera</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>3D mouse: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3D mouse disconnected: the wrist stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2072,6 +2080,13 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>W goes %1, D goes %2 · 1–4 camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SpaceMouseInput</name>
+    <message>
+        <source>3D mouse</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

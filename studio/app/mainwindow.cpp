@@ -17,6 +17,7 @@
 #include "routergraph.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
+#include "spacemouseinput.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
 #include "world.h"
@@ -91,6 +92,8 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     m_poseInput = new PoseInput(this);
     m_gamepad = new GamepadInput(this);
     m_gamepad->setDrive(m_handDrive);
+    m_spaceMouse = new SpaceMouseInput(this);
+    m_spaceMouse->setDrive(m_handDrive);
 
     createActions();
     createToolBar();
@@ -132,6 +135,11 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
                                      : tr("Gamepad: %1").arg(pads.join(QStringLiteral(", "))),
                                  5000);
     });
+    connect(m_spaceMouse, &SpaceMouseInput::connectionChanged, this, [this](bool connected) {
+        statusBar()->showMessage(connected ? tr("3D mouse: %1").arg(m_spaceMouse->deviceName())
+                                           : tr("3D mouse disconnected: the wrist stopped"),
+                                 5000);
+    });
     if (options.posePort > 0) {
         if (!m_poseInput->listen(quint16(options.posePort)))
             statusBar()->showMessage(
@@ -146,6 +154,8 @@ MainWindow::~MainWindow()
     m_poseInput = nullptr;
     delete m_gamepad;
     m_gamepad = nullptr;
+    delete m_spaceMouse;
+    m_spaceMouse = nullptr;
 }
 
 void MainWindow::applyTeleopSettings()
@@ -153,6 +163,11 @@ void MainWindow::applyTeleopSettings()
     const TeleopSettings settings = TeleopSettings::load();
     m_handDrive->setSpeed(settings.speed);
     m_gamepad->setMapping(settings.gamepadMapping);
+    m_spaceMouse->setDeadZone(settings.spaceMouseDeadZone);
+    if (!settings.spaceMouse)
+        m_spaceMouse->stop();
+    else if (!m_spaceMouse->isStarted())
+        m_spaceMouse->start(); // false only while another window holds libspnav
     if (!settings.gamepad) {
         m_gamepad->stop();
     } else if (!m_gamepad->start()) {

@@ -17,6 +17,7 @@ namespace semhap {
 class DevicesPanel;
 class EventLogPanel;
 class GamepadInput;
+class SpaceMouseInput;
 class HandDrive;
 class MetricsPanel;
 class PlotPanel;
@@ -106,7 +107,7 @@ private:
     void pickRouter(int index);
     void setSpeedIndex(int index);
     void showPreferences();
-    /** Applies the saved driving settings: speed, the gamepad on or off and its mapping. */
+    /** Applies the saved driving settings: speed, the gamepad and the 3D mouse. */
     void applyTeleopSettings();
     void toggleRunning();
     void toggleRecording();
@@ -122,6 +123,7 @@ private:
     HandDrive *m_handDrive = nullptr;
     PoseInput *m_poseInput = nullptr;
     GamepadInput *m_gamepad = nullptr;
+    SpaceMouseInput *m_spaceMouse = nullptr;
     PlotPanel *m_plots = nullptr;
     EventLogPanel *m_eventLog = nullptr;
     DevicesPanel *m_devicesPanel = nullptr;

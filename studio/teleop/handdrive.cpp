@@ -404,8 +404,8 @@ bool HandDrive::move(const DriveRates &rates, double seconds)
         const std::array<double, 3> rightAxis{awayY, -awayX, 0.0};
         const std::array<double, 3> awayAxis{awayX, awayY, 0.0};
         for (double fraction = 1.0; fraction > 1.0 / 64; fraction /= 2) {
-            Pose leaned = turnedAbout(hand.target, rightAxis, -rates.tilt * turnStep * fraction);
-            leaned = turnedAbout(leaned, awayAxis, rates.roll * turnStep * fraction);
+            Pose leaned = turnedAbout(hand.target, rightAxis, rates.tilt * turnStep * fraction);
+            leaned = turnedAbout(leaned, awayAxis, -rates.roll * turnStep * fraction);
             if (tiltFromVertical(leaned) <= MaxTilt ||
                 tiltFromVertical(leaned) < tiltFromVertical(hand.target)) {
                 hand.target = leaned;

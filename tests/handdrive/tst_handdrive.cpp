@@ -33,6 +33,8 @@ private slots:
     void analogueGripFollowsTheTrigger();
     void idleTriggerLeavesTheGripAlone();
     void leanIsLimited();
+    void leanFollowsTheView_data();
+    void leanFollowsTheView();
     void descentStopsOnTheCube();
 
 private:
@@ -298,6 +300,39 @@ void TestHandDrive::leanIsLimited()
     const double before = lean;
     m_handDrive->advance(0.1);
     QVERIFY(tiltFromVertical(m_handDrive->command(Gripper::Right)->target) < before);
+    m_handDrive->releaseAll();
+}
+
+void TestHandDrive::leanFollowsTheView_data()
+{
+    QTest::addColumn<bool>("tilt");
+    QTest::addColumn<double>("x"); // where the fingers swing, looking along +x
+    QTest::addColumn<double>("y");
+    QTest::newRow("tilt: away") << true << 1.0 << 0.0;
+    QTest::newRow("roll: to the right") << false << 0.0 << -1.0;
+}
+
+void TestHandDrive::leanFollowsTheView()
+{
+    QFETCH(bool, tilt);
+    QFETCH(double, x);
+    QFETCH(double, y);
+    m_handDrive->setViewAzimuth(0.0);
+    DriveRates rates;
+    (tilt ? rates.tilt : rates.roll) = 1.0;
+    m_handDrive->setRates(DriveDevice::SpaceMouse, rates);
+    m_handDrive->advance(0.1);
+    m_handDrive->setRates(DriveDevice::SpaceMouse, DriveRates());
+    // The fingers point along the wrist's -z: -(the rotation's third column).
+    const auto &q = m_handDrive->command(Gripper::Right)->target.quat;
+    const double fx = -2 * (q[1] * q[3] + q[0] * q[2]);
+    const double fy = -2 * (q[2] * q[3] - q[0] * q[1]);
+    QVERIFY2(fx * x + fy * y > 0.05 && std::abs(fx * y - fy * x) < 1e-6,
+             qPrintable(QString("fingers swing (%1, %2)").arg(fx).arg(fy)));
+    // Back upright for the next test.
+    (tilt ? rates.tilt : rates.roll) = -1.0;
+    m_handDrive->setRates(DriveDevice::SpaceMouse, rates);
+    m_handDrive->advance(0.1 + 1.0 / 60);
     m_handDrive->releaseAll();
 }
 
