@@ -2,6 +2,7 @@
 #include "driveoperator.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -25,13 +26,26 @@ void DriveOperator::setCommand(const HandCommand &command)
 
 void DriveOperator::act(World &world)
 {
+    const double now = world.time();
+    const double dt = world.timestep();
     // Never wait for the input's thread: if it is writing, use what came before.
     if (m_mutex.try_lock()) {
         for (size_t hand = 0; hand < 2; ++hand) {
             Update &pending = m_pending[hand];
             Update &current = m_current[hand];
-            if (pending.target)
+            if (pending.target && world.hasGripper(Gripper(hand))) {
+                // Glide from where the target is now to the new one over the time since the
+                // last command, so an input that updates ten times a second moves as
+                // smoothly as one at sixty.
+                Glide &glide = m_glide[hand];
+                glide.from = glide.started ? glide.at(now) : world.target(Gripper(hand));
+                glide.to = *pending.target;
+                glide.span = glide.started ? std::clamp(now - glide.arrival, dt, MaxGlide) : dt;
+                glide.start = now;
+                glide.arrival = now;
+                glide.started = true;
                 current.target = pending.target;
+            }
             if (pending.grip)
                 current.grip = pending.grip;
             pending = Update();
@@ -46,7 +60,7 @@ void DriveOperator::act(World &world)
         if (update.target) {
             DriveStatus &out = status[size_t(hand)];
             out.driven = true;
-            out.target = *update.target;
+            out.target = m_glide[size_t(hand)].at(now + dt);
             out.floor = guard(world, hand, out.target.pos[2]);
             if (out.floor)
                 out.target.pos[2] = std::max(out.target.pos[2], *out.floor);
@@ -64,6 +78,29 @@ void DriveOperator::act(World &world)
     }
 }
 
+Pose DriveOperator::Glide::at(double t) const
+{
+    const double f = span > 0 ? std::clamp((t - start) / span, 0.0, 1.0) : 1.0;
+    if (f >= 1.0)
+        return to; // exactly what was asked, not what rounding makes of it
+    Pose pose = to;
+    for (size_t axis = 0; axis < 3; ++axis)
+        pose.pos[axis] = from.pos[axis] + (to.pos[axis] - from.pos[axis]) * f;
+    // Normalised linear interpolation, the short way round: the turns between two commands
+    // are small.
+    const double dot = from.quat[0] * to.quat[0] + from.quat[1] * to.quat[1] +
+                       from.quat[2] * to.quat[2] + from.quat[3] * to.quat[3];
+    const double sign = dot < 0 ? -1.0 : 1.0;
+    double norm = 0.0;
+    for (size_t i = 0; i < 4; ++i) {
+        pose.quat[i] = from.quat[i] + (sign * to.quat[i] - from.quat[i]) * f;
+        norm += pose.quat[i] * pose.quat[i];
+    }
+    for (double &q : pose.quat)
+        q /= std::sqrt(norm);
+    return pose;
+}
+
 std::optional<double> DriveOperator::guard(const World &world, Gripper hand, double targetZ)
 {
     const size_t index = size_t(hand);
@@ -72,8 +109,10 @@ std::optional<double> DriveOperator::guard(const World &world, Gripper hand, dou
     const double wrist = world.gripperPose(hand).pos[2];
     const double dt = world.timestep();
     if (floor) {
-        if (targetZ > *floor + GuardRelease)
-            floor.reset(); // the user lifts: the target is free again
+        // The user lifts: a target above the wrist is free again. (Not "above the floor": a
+        // drive holding its target on an older floor is not lifting.)
+        if (targetZ > wrist + GuardRelease)
+            floor.reset();
         else
             m_quiet[index] = support < GuardForce ? m_quiet[index] + dt : 0.0;
     }

@@ -32,25 +32,33 @@ struct DriveStatus
  * simulation thread. A command being written while the simulation steps is applied on the
  * next step: the simulation never waits for the input.
  *
+ * A new target is not jumped to: it glides there from the previous one over the time
+ * between the two commands (at most MaxGlide), so an input that updates ten times a second
+ * (a studio on a slow display, a tracker at a low rate) moves the wrist as smoothly as one
+ * at sixty; commands every step are applied as they come.
+ *
  * Moves are guarded: once the fingertips are pushed up by what is under them (the pads on
  * a cube, a held cube set down) while the target is below the wrist, the target stops at a
  * floor that settles where the push is GuardPush. Holding "down" then presses with a few
  * newtons instead of burying the target in a stack (the wrist's weld gives about 100 N per
- * millimetre). Lifting the target GuardRelease above the floor ends the guard; when the push goes
- * away (the cube below was taken) the floor descends at GuardApproach until something pushes.
+ * millimetre). Lifting the target GuardRelease above the wrist ends the guard; when the
+ * push goes away (the cube below was taken) the floor descends at GuardApproach until something
+ * pushes.
  */
 class DriveOperator : public Operator
 {
 public:
     /** Upward fingertip force (N) from which a move is guarded: more than a cube weighs. */
     static constexpr double GuardForce = 1.5;
+    /** The longest a new target takes to be reached (s). */
+    static constexpr double MaxGlide = 0.25;
     /** The push (N) a guarded move settles at. */
     static constexpr double GuardPush = 2.5;
     /** How fast the floor follows the push's error (m/s per N): settles in tens of ms. */
     static constexpr double GuardRate = 1e-3;
     /**
-     * How far above the floor (m) a target must be to end the guard: a drive that holds its
-     * target on the floor keeps it while the floor settles.
+     * How far above the wrist (m) a target must be to end the guard: the user lifts. A drive
+     * holding its target on an older floor keeps the guard while the floor settles.
      */
     static constexpr double GuardRelease = 0.002;
     /** How long the push may be gone (s) before the guarded target descends again… */
@@ -74,6 +82,19 @@ private:
     /** The guard's floor for `hand` this step (none: the target is free); see the class. */
     std::optional<double> guard(const World &world, Gripper hand, double targetZ);
 
+    /** A target's way from the previous command to the newest. */
+    struct Glide
+    {
+        Pose from;
+        Pose to;
+        double start = 0.0;   ///< simulated time the newest command arrived
+        double span = 0.0;    ///< how long the way takes: the time since the one before
+        double arrival = 0.0; ///< when the newest command arrived
+        bool started = false;
+        /** Where the target is at simulated time `t`. */
+        Pose at(double t) const;
+    };
+
     /** What one hand was last told; a part never set leaves the world's as it is. */
     struct Update
     {
@@ -84,6 +105,7 @@ private:
     std::mutex m_mutex;
     std::array<Update, 2> m_pending{};
     std::array<Update, 2> m_current{};
+    std::array<Glide, 2> m_glide{};
     /** Per hand: the guard's floor while it holds, and how long its push has been gone. */
     std::array<std::optional<double>, 2> m_floor{};
     std::array<double, 2> m_quiet{};
