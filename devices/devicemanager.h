@@ -46,6 +46,8 @@ public:
 
     /** Adds an address that cannot be discovered (virtual, UDP) to the listing. */
     void addConfigured(const QString &uri);
+    /** The addresses added with addConfigured(), in the order they came. */
+    QStringList configured() const { return m_configured; }
     /** Everything present now: serial ports, HID devices, then the configured addresses. */
     std::vector<PortInfo> present() const;
     /**

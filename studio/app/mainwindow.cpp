@@ -20,6 +20,7 @@
 #include "spacemouseinput.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
+#include "workspace.h"
 #include "world.h"
 
 #include <QAction>
@@ -79,8 +80,8 @@ QDockWidget *makeDock(const QString &title, const QString &name, QWidget *conten
 
 } // namespace
 
-MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
-    : QMainWindow(parent), m_options(options)
+MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidget *parent)
+    : QMainWindow(parent), m_workspace(workspace), m_options(options), m_engine(workspace.engine())
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_viewport = new SimViewport(this);
@@ -110,16 +111,20 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
     if (!options.size.isEmpty())
         resize(options.size);
 
-    m_engine.setSpeed(options.speed);
     // A modal dialog takes the keyboard from the window, and its shortcuts with it: Stop all
     // must still work from there.
     qApp->installEventFilter(this);
-    if (options.live) {
-        // Without the rig, the scene is still there to look at.
-        if (!openLiveRig(options.liveRig))
-            openRun(options.run);
-    } else if (openRun(options.run) && options.autoRun) {
-        m_engine.run();
+    if (m_engine.isLoaded()) {
+        showWorkspace();
+    } else {
+        m_engine.setSpeed(options.speed);
+        if (options.live) {
+            // Without the rig, the scene is still there to look at.
+            if (!openLiveRig(options.liveRig))
+                openRun(options.run);
+        } else if (openRun(options.run) && options.autoRun) {
+            m_engine.run();
+        }
     }
     applyTeleopSettings();
     connect(m_gamepad, &GamepadInput::triggered, this, [this](GamepadMapping::Action action) {
@@ -149,7 +154,7 @@ MainWindow::MainWindow(const StudioOptions &options, QWidget *parent)
 
 MainWindow::~MainWindow()
 {
-    // Before the engine goes: nothing may still write to its operator.
+    // First: nothing may write to the drive or the engine's operator while the window goes.
     delete m_poseInput;
     m_poseInput = nullptr;
     delete m_gamepad;
@@ -388,12 +393,16 @@ void MainWindow::createToolBar()
     m_sessionNameEdit->setToolTip(tr("Names the next recording's file (empty: scene, router and "
                                      "time); File → Preferences says where it goes"));
     m_sessionNameEdit->setMaximumWidth(140);
+    m_sessionNameEdit->setText(m_workspace.sessionName());
+    connect(m_sessionNameEdit, &QLineEdit::textChanged, &m_workspace, &Workspace::setSessionName);
     bar->addWidget(m_sessionNameEdit);
     m_notesEdit = new QLineEdit(bar);
     m_notesEdit->setObjectName(QStringLiteral("sessionNotes"));
     m_notesEdit->setPlaceholderText(tr("Session notes"));
     m_notesEdit->setToolTip(tr("Kept with the next recording (participant, condition, …)"));
     m_notesEdit->setMaximumWidth(180);
+    m_notesEdit->setText(m_workspace.sessionNotes());
+    connect(m_notesEdit, &QLineEdit::textChanged, &m_workspace, &Workspace::setSessionNotes);
     bar->addWidget(m_notesEdit);
 
     // Kept apart and in a colour of its own, so it is found without looking.
@@ -431,12 +440,12 @@ void MainWindow::createDocks()
     m_eventLog = new EventLogPanel(m_engine.history(), this);
     m_devicesPanel = new DevicesPanel(m_engine.devices(), m_engine.history(), this);
     m_metricsPanel = new MetricsPanel(m_engine.history(), this);
-    m_routerEditor = new RouterEditor(this);
+    m_routerEditor = new RouterEditor(&m_workspace.routerDocument(), this);
     m_routerEditor->setHistory(&m_engine.history());
     m_routerEditor->setApplyFunction([this](const RouterGraph &graph, QString *error) {
         return m_engine.setRouter(graph, error);
     });
-    m_designer = new WaveformDesigner(&m_engine.devices(), this);
+    m_designer = new WaveformDesigner(&m_engine.devices(), &m_workspace.patternDocument(), this);
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
@@ -469,6 +478,8 @@ void MainWindow::createDocks()
     events->raise();
 
     connect(m_eventLog, &EventLogPanel::eventActivated, m_plots, &PlotPanel::setCursorTime);
+    connect(m_devicesPanel, &DevicesPanel::addressAdded, &m_workspace,
+            &Workspace::saveDeviceAddresses);
     connect(m_devicesPanel, &DevicesPanel::bindRequested, this,
             [this](const QString &name, const QString &uri) {
                 QString error;
@@ -557,7 +568,11 @@ void MainWindow::connectEngine()
         m_handDrive->setWorld(nullptr);
         m_poseInput->setWorld(nullptr);
     });
-    connect(&m_engine, &Engine::sourceChanged, this, &MainWindow::showSource);
+    connect(&m_engine, &Engine::sourceChanged, this, [this] {
+        showSource();
+        if (m_engine.source()->isStreaming())
+            syncRouterEditor(); // a replay is re-routed through the editor's graph: keep it
+    });
     connect(&m_engine, &Engine::routerChanged, this, [this] {
         m_devicesPanel->refresh();
         syncRouterEditor();
@@ -567,22 +582,10 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::runningChanged, this, [this](bool running) {
         if (running)
             m_designer->stopAudition(); // the run's frames and an audition never mix
-        m_runAction->setChecked(running);
-        m_runAction->setText(running ? tr("Pause") : tr("Run"));
-        m_runAction->setIcon(
-            style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-        updateMode();
+        showRunning(running);
     });
-    connect(&m_engine, &Engine::drivingChanged, this, [this](bool driving) {
-        m_driveAction->setChecked(driving);
-        m_viewport->setDriving(driving);
-        updateStatus();
-    });
-    connect(&m_engine, &Engine::recordingChanged, this, [this](bool recording) {
-        m_recordAction->setChecked(recording);
-        m_recordAction->setText(recording ? tr("Stop recording") : tr("Record"));
-        updateStatus();
-    });
+    connect(&m_engine, &Engine::drivingChanged, this, &MainWindow::showDriving);
+    connect(&m_engine, &Engine::recordingChanged, this, &MainWindow::showRecording);
     connect(&m_engine, &Engine::finished, this, [this] {
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
@@ -636,8 +639,6 @@ void MainWindow::showSource()
     m_shownRejections = 0;
     updateMode();
     m_devicesPanel->refresh();
-    if (source.isStreaming())
-        syncRouterEditor(); // a replay is re-routed through the editor's graph: keep it
     m_designer->refreshDevices();
     syncPickers();
     updateTitle();
@@ -648,6 +649,37 @@ void MainWindow::showSource()
                                     "skipped (semhap replay lists them)",
                                     nullptr, int(std::min<qint64>(skipped, INT_MAX))),
                                  15000);
+}
+
+void MainWindow::showWorkspace()
+{
+    showSource();
+    showRunning(m_engine.isRunning());
+    showDriving(m_engine.isDriving());
+    showRecording(m_engine.isRecording());
+}
+
+void MainWindow::showRunning(bool running)
+{
+    m_runAction->setChecked(running);
+    m_runAction->setText(running ? tr("Pause") : tr("Run"));
+    m_runAction->setIcon(
+        style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    updateMode();
+}
+
+void MainWindow::showDriving(bool driving)
+{
+    m_driveAction->setChecked(driving);
+    m_viewport->setDriving(driving);
+    updateStatus();
+}
+
+void MainWindow::showRecording(bool recording)
+{
+    m_recordAction->setChecked(recording);
+    m_recordAction->setText(recording ? tr("Stop recording") : tr("Record"));
+    updateStatus();
 }
 
 bool MainWindow::openSession(const QString &path)
@@ -934,12 +966,17 @@ void MainWindow::resetLayout()
     applyDefaultSizes();
 }
 
-void MainWindow::closeEvent(QCloseEvent *event)
+void MainWindow::saveLayout()
 {
-    m_engine.stopAll();
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState(LayoutVersion));
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    m_engine.stopAll();
+    saveLayout();
     event->accept();
 }
 

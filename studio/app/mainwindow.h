@@ -27,21 +27,31 @@ class RouterEditor;
 class SessionReplay;
 class SimViewport;
 class WaveformDesigner;
+class Workspace;
 
 /**
  * The studio's window: the simulation viewport in the middle, docks for the live plots,
  * the event log, the devices, the task metrics and the waveform designer, a toolbar that runs,
  * pauses, steps, resets and paces the run and picks scene and router, and a stop-all that always
  * works. The dock layout is saved on close and restored on the next start.
+ *
+ * The window is a view of a Workspace: the run, the devices, the recording and the editors'
+ * documents live there, so a window built again around the same workspace (another
+ * interface language) goes on where the last one was.
  */
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
 
 public:
-    explicit MainWindow(const StudioOptions &options, QWidget *parent = nullptr);
+    /**
+     * Shows `workspace`, which must outlive the window. An empty workspace gets the run
+     * `options` asks for; a loaded one is shown as it is.
+     */
+    MainWindow(Workspace &workspace, const StudioOptions &options, QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    Workspace &workspace() { return m_workspace; }
     Engine &engine() { return m_engine; }
     SimViewport *viewport() const { return m_viewport; }
     PlotPanel *plots() const { return m_plots; }
@@ -72,6 +82,9 @@ public:
      * Shows what went wrong (a port in use), if anything.
      */
     bool openLiveRig(const LiveRigOptions &options);
+
+    /** Saves the window's geometry and dock layout for the next window. */
+    void saveLayout();
 
 signals:
     /** The user chose another interface language (its code, empty: the system's). */
@@ -117,8 +130,15 @@ private:
     /** Runs `router` on what runs now: the scene, or the live rig. */
     void switchRouter(const QString &router);
 
+    /** Shows what the engine holds when the window opens on a loaded workspace. */
+    void showWorkspace();
+    void showRunning(bool running);
+    void showDriving(bool driving);
+    void showRecording(bool recording);
+
+    Workspace &m_workspace;
     StudioOptions m_options;
-    Engine m_engine;
+    Engine &m_engine;
     SimViewport *m_viewport = nullptr;
     HandDrive *m_handDrive = nullptr;
     PoseInput *m_poseInput = nullptr;

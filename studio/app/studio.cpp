@@ -43,7 +43,7 @@ void Studio::install(const QString &language)
 
 void Studio::buildWindow()
 {
-    m_window = std::make_unique<MainWindow>(m_options);
+    m_window = std::make_unique<MainWindow>(m_workspace, m_options);
     connect(m_window.get(), &MainWindow::languageChangeRequested, this, &Studio::setLanguage,
             Qt::QueuedConnection);
     m_window->show();
@@ -72,11 +72,12 @@ void Studio::start()
 
 void Studio::setLanguage(const QString &language)
 {
-    // The new window opens where the old one was, with its layout (saved on close).
+    // The new window opens where the old one was, with its layout. The old one is not
+    // closed (closing stops every device): it only goes, and the run goes on.
     m_options.size = QSize();
     m_options.restoreLayout = true;
     if (m_window)
-        m_window->close();
+        m_window->saveLayout();
     m_window.reset();
     install(language);
     buildWindow();

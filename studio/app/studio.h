@@ -2,6 +2,7 @@
 #pragma once
 
 #include "studiooptions.h"
+#include "workspace.h"
 
 #include <QObject>
 #include <QPointer>
@@ -15,8 +16,10 @@ class MainWindow;
 
 /**
  * The studio as an application: installs the interface language (the command line's, the
- * saved setting's or the system's), shows the main window — building it again when the
- * user switches language — and runs the testing hooks (`--screenshot`, `--quit-after`).
+ * saved setting's or the system's), holds the Workspace and shows the main window over it —
+ * building the window again when the user switches language, over the same workspace, so
+ * the run, the devices, the recording and the edits go on — and runs the testing hooks
+ * (`--screenshot`, `--quit-after`).
  */
 class Studio : public QObject
 {
@@ -29,10 +32,14 @@ public:
     /** Shows the window and arms the testing hooks. */
     void start();
     MainWindow *window() const { return m_window.get(); }
+    Workspace &workspace() { return m_workspace; }
     /** The language in use ("en", "de"). */
     QString language() const { return m_language; }
 
-    /** Installs `language` ("en", "de"; empty: the system's) and rebuilds the window. */
+    /**
+     * Installs `language` ("en", "de"; empty: the system's) and builds the window again, where
+     * it was and with its layout, over the same workspace.
+     */
     void setLanguage(const QString &language);
 
     /** Grabs the whole window, docks and viewport included, to a PNG. */
@@ -47,7 +54,8 @@ private:
     void buildWindow();
 
     StudioOptions m_options;
-    std::unique_ptr<MainWindow> m_window;
+    Workspace m_workspace;
+    std::unique_ptr<MainWindow> m_window; ///< after the workspace: it goes first
     QTranslator m_translator;
     QTranslator m_qtTranslator;
     QString m_language;

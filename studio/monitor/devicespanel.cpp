@@ -322,6 +322,7 @@ void DevicesPanel::addAddress()
     m_manager.addConfigured(uri.toString());
     m_address->clear();
     rescan();
+    emit addressAdded(uri.toString());
 }
 
 void DevicesPanel::requestBind(Row &row, const QString &uri)

@@ -45,6 +45,8 @@ signals:
      * `virtual:NAME`, so the run keeps going without the band.
      */
     void bindRequested(const QString &name, const QString &uri);
+    /** The user added an address to the listing (DeviceManager::addConfigured). */
+    void addressAdded(const QString &uri);
 
 protected:
     void showEvent(QShowEvent *event) override;

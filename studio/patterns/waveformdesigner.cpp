@@ -110,11 +110,12 @@ QString waveformSummary(const QJsonObject &node)
 
 } // namespace
 
-WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
-    : QWidget(parent), m_devices(devices), m_userFolder(userPatternFolder())
+WaveformDesigner::WaveformDesigner(DeviceManager *devices, PatternDocument *document,
+                                   QWidget *parent)
+    : QWidget(parent), m_devices(devices), m_userFolder(userPatternFolder()),
+      m_document(document ? document : new PatternDocument(this))
 {
     setObjectName(QStringLiteral("waveformDesigner"));
-    m_document = new PatternDocument(this);
     m_auditioner = new PatternAuditioner(this);
     m_preview = new PatternPreview(this);
     m_inspector = new NodeInspector(*m_document, this);
@@ -186,7 +187,12 @@ WaveformDesigner::WaveformDesigner(DeviceManager *devices, QWidget *parent)
 
     refreshLibrary();
     refreshDevices();
-    openBuiltin(QStringLiteral("air.squeeze")); // the canonical confirmation
+    if (m_document->json().isEmpty()) {
+        openBuiltin(QStringLiteral("air.squeeze")); // the canonical confirmation
+    } else {
+        onDocumentChanged();
+        onStateChanged();
+    }
 }
 
 WaveformDesigner::~WaveformDesigner()

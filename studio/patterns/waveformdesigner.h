@@ -41,8 +41,13 @@ class WaveformDesigner : public QWidget
     Q_OBJECT
 
 public:
-    /** `devices` (may be null) offers its bound devices for audition; it must outlive this. */
-    explicit WaveformDesigner(DeviceManager *devices, QWidget *parent = nullptr);
+    /**
+     * `devices` (may be null) offers its bound devices for audition; `document` is the
+     * pattern to show (null: a document of the designer's own, opened on a built-in). Both
+     * must outlive the designer.
+     */
+    explicit WaveformDesigner(DeviceManager *devices, PatternDocument *document = nullptr,
+                              QWidget *parent = nullptr);
     ~WaveformDesigner() override;
 
     PatternDocument *document() const { return m_document; }

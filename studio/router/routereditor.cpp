@@ -115,10 +115,10 @@ QJsonValue parseValue(const QString &text)
 
 } // namespace
 
-RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
+RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
+    : QWidget(parent), m_document(document ? document : new RouterDocument(this))
 {
     setObjectName(QStringLiteral("routerEditor"));
-    m_document = new RouterDocument(this);
     m_undo = m_document->undoStack();
     m_scene = new RouterScene(*m_document, this);
     m_view = new QGraphicsView(m_scene, this);
@@ -247,7 +247,13 @@ RouterEditor::RouterEditor(QWidget *parent) : QWidget(parent)
     });
     connect(m_errorList, &QListWidget::itemClicked, m_errorList, &QListWidget::itemActivated);
 
-    setGraph(RouterGraph());
+    if (document) {
+        // An editor built again over a document shows it as it is, edits and undo kept.
+        fitView();
+        validate();
+    } else {
+        setGraph(RouterGraph());
+    }
 }
 
 RouterEditor::~RouterEditor() = default;

@@ -40,7 +40,8 @@ public:
     /** Sends a graph to the running session; false with a one-line error. */
     using ApplyFunction = std::function<bool(const RouterGraph &graph, QString *error)>;
 
-    explicit RouterEditor(QWidget *parent = nullptr);
+    /** Edits `document` (null: a document of the editor's own); it must outlive the editor. */
+    explicit RouterEditor(RouterDocument *document = nullptr, QWidget *parent = nullptr);
     ~RouterEditor() override;
 
     /**

@@ -8,6 +8,7 @@
 #include "engine.h"
 #include "gatedrouter.h"
 #include "mainwindow.h"
+#include "workspace.h"
 #include "pipeline.h"
 #include "routercommands.h"
 #include "routerdocument.h"
@@ -880,7 +881,8 @@ void TestRouterEditor::screenshot()
     options.restoreLayout = false;
     options.posePort = 0;
     options.speed = 4.0;
-    MainWindow window(options);
+    Workspace workspace;
+    MainWindow window(workspace, options);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     window.findChild<QDockWidget *>("routerDock")->raise();

@@ -4,6 +4,7 @@
 // key and teleoperation drive the engine; the layout is saved and restored; German can be
 // switched on in the preferences; `--screenshot` grabs the window and quits.
 #include "devicemanager.h"
+#include "devicespanel.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "gamepadinput.h"
@@ -11,6 +12,7 @@
 #include "imagechecks.h"
 #include "mainwindow.h"
 #include "openwindow.h"
+#include "patterndocument.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
 #include "routereditor.h"
@@ -18,7 +20,9 @@
 #include "routerscene.h"
 #include "simviewport.h"
 #include "studio.h"
+#include "waveformdesigner.h"
 #include "widgetchecks.h"
+#include "workspace.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -27,6 +31,7 @@
 #include <QGraphicsView>
 #include <QImage>
 #include <QLabel>
+#include <QLineEdit>
 #include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
@@ -36,6 +41,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QUndoStack>
 
 #include <qcustomplot.h>
 
@@ -59,12 +65,15 @@ private slots:
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
     void switchesToGerman();
+    void languageSwitchKeepsTheWork();
     void screenshotHook();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
 
 private:
     StudioOptions options() const;
+    /** Picks `language` in File → Preferences, as a person would, and waits for the window. */
+    static void pickLanguage(Studio &studio, const QString &language);
     QTemporaryDir m_config;
 };
 
@@ -94,7 +103,8 @@ StudioOptions TestStudio::options() const
 
 void TestStudio::opensOnTheDefaultsAndRuns()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
     QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
@@ -118,7 +128,8 @@ void TestStudio::opensOnTheDefaultsAndRuns()
 
 void TestStudio::picksSceneAndRouter()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QSignalSpy loaded(&window.engine(), &Engine::sourceChanged);
 
@@ -162,7 +173,8 @@ void TestStudio::picksSceneAndRouter()
 
 void TestStudio::runStepAndSpeedFromTheKeyboard()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     QTest::keyClick(&window, Qt::Key_F5);
@@ -200,7 +212,8 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
 void TestStudio::pausedResetShowsTheScene()
 {
     // Paused, then reset: the new run has not stepped, yet the viewport shows its scene.
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(!window.engine().isRunning());
@@ -215,7 +228,8 @@ void TestStudio::pausedResetShowsTheScene()
 
 void TestStudio::timeWindowFollowsTheSpinBox()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     auto *spin = window.plots()->findChild<QAbstractSpinBox *>();
     QVERIFY(spin);
@@ -229,7 +243,8 @@ void TestStudio::timeWindowFollowsTheSpinBox()
 
 void TestStudio::stopAllWorksFromAnywhere()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     // With the focus in a text field of a dock, Esc still stops everything.
@@ -263,7 +278,8 @@ void TestStudio::drivingPreferencesApply()
 {
     // Preferences → Driving: a new wrist speed and a remapped gamepad control reach the
     // window's drive and gamepad at once, and are there again in the next window.
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QTimer::singleShot(0, this, [] {
         QTRY_VERIFY(QApplication::activeModalWidget());
@@ -286,7 +302,8 @@ void TestStudio::drivingPreferencesApply()
     QCOMPARE(window.findChild<HandDrive *>()->speed(), 0.25);
     QCOMPARE(window.findChild<GamepadInput *>()->mapping().motions[GamepadMapping::Turn],
              QString("leftshoulder+rightshoulder"));
-    MainWindow again(options());
+    Workspace againWorkspace;
+    MainWindow again(againWorkspace, options());
     QCOMPARE(again.findChild<HandDrive *>()->speed(), 0.25);
     QCOMPARE(again.findChild<GamepadInput *>()->mapping().motions[GamepadMapping::Turn],
              QString("leftshoulder+rightshoulder"));
@@ -295,7 +312,8 @@ void TestStudio::drivingPreferencesApply()
 
 void TestStudio::aKeyInTheViewportTakesOver()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     auto *teleop = window.findChild<QAction *>("driveAction");
     QVERIFY(!teleop->isChecked());
@@ -313,7 +331,8 @@ void TestStudio::aKeyInTheViewportTakesOver()
 
 void TestStudio::eventLogMovesThePlotCursor()
 {
-    MainWindow window(options());
+    Workspace workspace;
+    MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     window.engine().pause();
@@ -332,12 +351,14 @@ void TestStudio::layoutIsSavedAndRestored()
 {
     StudioOptions o = options();
     {
-        MainWindow window(o);
+        Workspace workspace;
+        MainWindow window(workspace, o);
         QVERIFY(openWindow(window));
         window.findChild<QDockWidget *>("metricsDock")->close();
         window.close();
     }
-    MainWindow window(o);
+    Workspace workspace;
+    MainWindow window(workspace, o);
     QVERIFY(openWindow(window));
     QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
     QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
@@ -353,21 +374,7 @@ void TestStudio::switchesToGerman()
     QVERIFY(QTest::qWaitForWindowExposed(studio.window()));
     QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
              QString("Plots"));
-    QSignalSpy rebuilt(&studio, &Studio::windowRebuilt);
-
-    // The preferences dialog is modal: answer it once it is up.
-    QTimer::singleShot(0, this, [] {
-        QTRY_VERIFY(QApplication::activeModalWidget());
-        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
-        QVERIFY(dialog);
-        QComboBox *picker = dialog->languagePicker();
-        picker->setFocus();
-        while (picker->currentData().toString() != "de")
-            QTest::keyClick(picker, Qt::Key_Down);
-        QTest::keyClick(dialog, Qt::Key_Return);
-    });
-    studio.window()->findChild<QAction *>("preferencesAction")->trigger();
-    QTRY_COMPARE(rebuilt.count(), 1);
+    pickLanguage(studio, "de");
     QCOMPARE(studio.language(), QString("de"));
     QCOMPARE(PreferencesDialog::savedLanguage(), QString("de"));
     MainWindow *window = studio.window();
@@ -389,6 +396,116 @@ void TestStudio::switchesToGerman()
     studio.setLanguage("en");
     QCOMPARE(studio.window()->findChild<QDockWidget *>("plotsDock")->windowTitle(),
              QString("Plots"));
+}
+
+void TestStudio::pickLanguage(Studio &studio, const QString &language)
+{
+    QSignalSpy rebuilt(&studio, &Studio::windowRebuilt);
+    // The preferences dialog is modal: answer it once it is up.
+    QTimer::singleShot(0, [language] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QComboBox *picker = dialog->languagePicker();
+        picker->setFocus();
+        picker->setCurrentIndex(0);
+        while (picker->currentData().toString() != language &&
+               picker->currentIndex() < picker->count() - 1)
+            QTest::keyClick(picker, Qt::Key_Down);
+        QCOMPARE(picker->currentData().toString(), language);
+        QTest::keyClick(dialog, Qt::Key_Return);
+    });
+    studio.window()->findChild<QAction *>("preferencesAction")->trigger();
+    QTRY_COMPARE(rebuilt.count(), 1);
+}
+
+void TestStudio::languageSwitchKeepsTheWork()
+{
+    // A person sets up a session — an edited router applied and another edit not yet, a band
+    // address added, bound and armed, a recording with notes, the grippers driven — and
+    // switches the language: all of it is there in the new window, and the run never stopped.
+    QTemporaryDir sessions;
+    QSettings().setValue("sessions/folder", sessions.path());
+    Studio studio(options());
+    studio.start();
+    MainWindow *window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    Engine &engine = window->engine();
+    QTRY_VERIFY_WITH_TIMEOUT(engine.simTime() > 1.0, 20000);
+
+    // The router: one edit applied (C3*), one more left in the editor.
+    RouterEditor *editor = window->routerEditor();
+    window->findChild<QDockWidget *>("routerDock")->raise();
+    editor->setParam("right.force", "grasp", 25.0);
+    QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
+    QTRY_COMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    editor->setParam("right.force", "grasp", 30.0);
+    const QJsonObject edited = editor->graph().toJson();
+    const int undoSteps = editor->undoStack()->count();
+
+    // A pattern being designed, not saved yet.
+    window->findChild<QDockWidget *>("patternsDock")->raise();
+    WaveformDesigner *designer = window->waveformDesigner();
+    designer->duplicate();
+    designer->document()->setValue("/description", "mine, not saved");
+    const QJsonObject pattern = designer->document()->json();
+
+    // A band's address, bound and armed.
+    window->findChild<QDockWidget *>("devicesDock")->raise();
+    DevicesPanel *devices = window->devicesPanel();
+    auto *address = devices->findChild<QLineEdit *>("address");
+    address->setFocus();
+    QTest::keyClicks(address, "udp:127.0.0.1:9");
+    QTest::mouseClick(devices->findChild<QWidget *>("addButton"), Qt::LeftButton);
+    auto *uri = devices->findChild<QComboBox *>("uri:right.vibro");
+    QVERIFY(uri);
+    uri->setCurrentText("udp:127.0.0.1:9");
+    QTest::mouseClick(devices->findChild<QWidget *>("connect:right.vibro"), Qt::LeftButton);
+    QTRY_COMPARE(engine.devices().transport("right.vibro")->uri(), QString("udp:127.0.0.1:9"));
+    QTest::mouseClick(devices->findChild<QWidget *>("armAll"), Qt::LeftButton);
+    QVERIFY(engine.devices().transport("right.vibro")->isArmed());
+
+    // A recording with notes, and the user driving.
+    auto *notes = window->notesEdit();
+    notes->setFocus();
+    QTest::keyClicks(notes, "participant 7");
+    window->findChild<QAction *>("recordAction")->trigger();
+    QVERIFY(engine.isRecording());
+    const QString recording = engine.recordingPath();
+    window->findChild<QAction *>("driveAction")->trigger();
+    QVERIFY(engine.isDriving());
+    const double before = engine.simTime();
+
+    pickLanguage(studio, "de");
+    window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QCOMPARE(&window->engine(), &engine);
+    QVERIFY(engine.isRunning());
+    QTRY_VERIFY(engine.simTime() > before + 0.5);
+    QCOMPARE(window->scenePicker()->currentData().toString(), QString("box_and_block"));
+    QCOMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window->routerEditor()->graph().toJson(), edited);
+    QCOMPARE(window->routerEditor()->undoStack()->count(), undoSteps);
+    QCOMPARE(window->waveformDesigner()->document()->json(), pattern);
+    QVERIFY(window->waveformDesigner()->document()->isModified());
+    QCOMPARE(engine.devices().transport("right.vibro")->uri(), QString("udp:127.0.0.1:9"));
+    QVERIFY(engine.devices().transport("right.vibro")->isArmed());
+    QCOMPARE(window->devicesPanel()->findChild<QComboBox *>("uri:right.vibro")->currentText(),
+             QString("udp:127.0.0.1:9"));
+    QVERIFY(engine.isRecording());
+    QCOMPARE(engine.recordingPath(), recording);
+    QVERIFY(window->findChild<QAction *>("recordAction")->isChecked());
+    QVERIFY(window->findChild<QLabel *>("recordLabel")->isVisible());
+    QCOMPARE(window->notesEdit()->text(), QString("participant 7"));
+    QVERIFY(engine.isDriving());
+    QVERIFY(window->findChild<QAction *>("driveAction")->isChecked());
+    QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
+
+    // The address the user added is there at the next start, in the listing.
+    Workspace next;
+    QVERIFY(next.engine().devices().configured().contains("udp:127.0.0.1:9"));
+    window->findChild<QAction *>("recordAction")->trigger();
+    studio.setLanguage("en");
 }
 
 void TestStudio::screenshotHook()

@@ -6,6 +6,7 @@
 #include "eventlogpanel.h"
 #include "liverigdialog.h"
 #include "mainwindow.h"
+#include "workspace.h"
 #include "openwindow.h"
 #include "pipeline.h"
 #include "plotpanel.h"
@@ -142,7 +143,8 @@ void TestStudioSessions::engineRecordsWhatTheHistorySees()
 
 void TestStudioSessions::windowRecordsReopensAndScrubs()
 {
-    MainWindow window(studioOptions());
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
     QVERIFY(window.engine().isRunning());
     // Where recordings go: File → Preferences, typed into the sessions folder field.
@@ -306,7 +308,8 @@ void TestStudioSessions::reroutesThroughTheEditorsRouter()
     pipeline.flush(expected);
     QVERIFY(!expected.events.empty());
 
-    MainWindow window(studioOptions());
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
     QVERIFY(window.openSession(path));
     SessionReplay *replay = window.replay();
@@ -341,7 +344,8 @@ void TestStudioSessions::replaySaysWhichRowsItSkipped()
         db.close();
     }
     QSqlDatabase::removeDatabase("damage");
-    MainWindow window(studioOptions());
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
     QVERIFY(window.openSession(path));
     QCOMPARE(window.replay()->skippedRows(), qint64(3));
@@ -355,7 +359,8 @@ void TestStudioSessions::replaySaysWhichRowsItSkipped()
 
 void TestStudioSessions::windowListensToALiveRig()
 {
-    MainWindow window(studioOptions());
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
     int port = 0;
     {
