@@ -839,6 +839,10 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>3D mouse disconnected: the wrist stopped</source>
         <translation>3D-Maus getrennt: das Handgelenk steht</translation>
     </message>
+    <message>
+        <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
+        <translation>Der Router-Editor behält Ihre Änderungen, die gerade nicht laufen: Anwenden startet sie.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2096,6 +2100,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>%1: could not write the screenshot</source>
         <translation>%1: Bildschirmfoto konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Some of what you left open could not be opened again</source>
+        <translation>Einiges von dem, was Sie offen gelassen hatten, ließ sich nicht wieder öffnen</translation>
+    </message>
+    <message>
+        <source>Your work is not being saved</source>
+        <translation>Ihre Arbeit wird nicht gesichert</translation>
     </message>
 </context>
 <context>

@@ -838,6 +838,10 @@ The rig draws its own scene.</source>
         <source>3D mouse disconnected: the wrist stopped</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2094,6 +2098,14 @@ The rig draws its own scene.</source>
     <name>semhap::Studio</name>
     <message>
         <source>%1: could not write the screenshot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Some of what you left open could not be opened again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Your work is not being saved</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -13,6 +13,7 @@
 #include "poseinput.h"
 #include "preferencesdialog.h"
 #include "replaybar.h"
+#include "routerdocument.h"
 #include "routereditor.h"
 #include "routergraph.h"
 #include "sessionreplay.h"
@@ -812,8 +813,16 @@ void MainWindow::syncRouterEditor()
 {
     // After Apply the editor holds the running graph already, with its undo history.
     const RouterGraph &running = m_engine.routerGraph();
-    if (running.toJson() != m_routerEditor->graph().toJson())
-        m_routerEditor->setGraph(running);
+    if (running.toJson() == m_routerEditor->graph().toJson())
+        return;
+    // Edits not saved are never thrown away: they stay in the editor beside what runs.
+    if (m_routerEditor->document()->isModified()) {
+        statusBar()->showMessage(tr("The router editor keeps your edits, which are not what "
+                                    "runs now: Apply runs them."),
+                                 10000);
+        return;
+    }
+    m_routerEditor->setGraph(running);
 }
 
 void MainWindow::updateTitle()

@@ -85,6 +85,8 @@ public:
 
     /** Saves the window's geometry and dock layout for the next window. */
     void saveLayout();
+    /** Says what went wrong, in the status bar and a message box that does not block. */
+    void showError(const QString &what, const QString &error);
 
 signals:
     /** The user chose another interface language (its code, empty: the system's). */
@@ -115,7 +117,6 @@ private:
     void syncPickers();
     /** Shows the running router in the editor unless the editor already holds it. */
     void syncRouterEditor();
-    void showError(const QString &what, const QString &error);
     void pickScene(int index);
     void pickRouter(int index);
     void setSpeedIndex(int index);

@@ -51,7 +51,22 @@ void Studio::buildWindow()
 
 void Studio::start()
 {
+    // What was open when the studio last went — quit or crashed — opens again.
+    QStringList problems;
+    Engine &engine = m_workspace.engine();
+    engine.setSpeed(m_options.speed);
+    const bool restored = m_workspace.restore(Workspace::defaultFile(), m_options, &problems);
+    m_workspace.autosaveTo(Workspace::defaultFile());
     buildWindow();
+    if (restored && m_options.autoRun)
+        engine.run();
+    if (!problems.isEmpty())
+        m_window->showError(tr("Some of what you left open could not be opened again"),
+                            problems.join(QLatin1Char('\n')));
+    connect(&m_workspace, &Workspace::autosaveFailed, this, [this](const QString &error) {
+        if (m_window)
+            m_window->showError(tr("Your work is not being saved"), error);
+    });
     if (m_options.quitAfter < 0)
         return;
     QTimer::singleShot(int(m_options.quitAfter * 1000), this, [this] {

@@ -164,6 +164,9 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
         o.liveRig.router = o.run.router;
     }
     o.restoreLayout = !parser.isSet(defaultLayout);
+    for (const QCommandLineOption *option :
+         {&scene, &router, &op, &seed, &reactionTime, &cubes, &listen})
+        o.runGiven = o.runGiven || parser.isSet(*option);
     *options = o;
     return true;
 }

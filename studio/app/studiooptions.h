@@ -27,6 +27,8 @@ public:
     bool live = false;         ///< `--listen`: start on a live rig instead of the scene
     LiveRigOptions liveRig;    ///< where `--listen` listens (router: `--router`)
     bool restoreLayout = true; ///< `--default-layout` ignores the saved one
+    /** The command line names a run (scene, router, …): it wins over the saved workspace's. */
+    bool runGiven = false;
 
     /**
      * Reads the command line (`args` without the program name). False with a message for

@@ -3,10 +3,21 @@
 
 #include "devicemanager.h"
 #include "deviceuri.h"
+#include "jsonreader.h"
+#include "outputfile.h"
 #include "patterndocument.h"
 #include "routerdocument.h"
+#include "studiooptions.h"
 
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QSettings>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -14,6 +25,67 @@ namespace {
 
 /** Where the device addresses the user added are kept between sessions. */
 const QString AddressesKey = QStringLiteral("devices/addresses");
+
+QJsonArray toArray(const QStringList &list)
+{
+    return QJsonArray::fromStringList(list);
+}
+
+/** Reads the strings of the optional array `key`; false (recorded in `reader`) otherwise. */
+bool readStrings(JsonReader &reader, const QJsonObject &object, const QString &pointer,
+                 QLatin1String key, QStringList *out)
+{
+    QJsonArray array;
+    if (!reader.array(object, pointer, key, &array, false))
+        return false;
+    for (int i = 0; i < array.size(); ++i) {
+        if (!array[i].isString())
+            return reader.fail(jsonPointerChild(jsonPointerChild(pointer, key), i),
+                               QStringLiteral("expected a string, found ") +
+                                   jsonTypeName(array[i]));
+        out->append(array[i].toString());
+    }
+    return true;
+}
+
+/**
+ * A router graph as the workspace keeps it: the document, and where it came from (its file
+ * and the folder its relative pattern and model paths are resolved against).
+ */
+QJsonObject graphEntry(const RouterGraph &graph)
+{
+    return QJsonObject{{QStringLiteral("graph"), graph.toJson()},
+                       {QStringLiteral("file"), graph.file},
+                       {QStringLiteral("base_dir"), graph.baseDir}};
+}
+
+/**
+ * Reads a graphEntry() at `pointer` of the workspace file `path`, its errors located there
+ * (`/router/graph/nodes/2/…`); `extraKeys` are the entry's other keys, read by the caller.
+ */
+bool readGraphEntry(const QJsonObject &entry, const QString &path, const QString &pointer,
+                    std::initializer_list<QLatin1String> keys, RouterGraph *graph,
+                    LoadError *error)
+{
+    JsonReader reader(path);
+    QJsonObject json;
+    QString file;
+    QString baseDir;
+    if (!reader.checkKeys(entry, pointer, keys) ||
+        !reader.object(entry, pointer, QLatin1String("graph"), &json) ||
+        !reader.string(entry, pointer, QLatin1String("file"), &file, false) ||
+        !reader.string(entry, pointer, QLatin1String("base_dir"), &baseDir, false)) {
+        *error = reader.error();
+        return false;
+    }
+    if (!RouterGraph::fromJson(json, path, graph, error)) {
+        error->pointer = pointer + QStringLiteral("/graph") + error->pointer;
+        return false;
+    }
+    graph->file = file;
+    graph->baseDir = baseDir;
+    return true;
+}
 
 } // namespace
 
@@ -31,13 +103,326 @@ Workspace::Workspace(QObject *parent)
             qWarning("%s: %s: %s", qPrintable(settings.fileName()), qPrintable(AddressesKey),
                      qPrintable(error));
     }
+    m_autosaveTimer.setInterval(AutosaveInterval);
+    connect(&m_autosaveTimer, &QTimer::timeout, this, [this] { autosave(); });
 }
 
-Workspace::~Workspace() = default;
+Workspace::~Workspace()
+{
+    if (!m_autosavePath.isEmpty())
+        autosave();
+}
 
 void Workspace::saveDeviceAddresses()
 {
     QSettings().setValue(AddressesKey, m_engine.devices().configured());
+}
+
+QString Workspace::defaultFile()
+{
+    return QFileInfo(QSettings().fileName()).absolutePath() + QStringLiteral("/workspace.json");
+}
+
+QJsonObject Workspace::toJson() const
+{
+    const Engine &engine = m_engine;
+    QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)}};
+    if (engine.isLive()) {
+        const LiveRigOptions rig = engine.liveOptions();
+        json.insert(QStringLiteral("live_rig"),
+                    QJsonObject{{QStringLiteral("address"), rig.address},
+                                {QStringLiteral("port"), rig.port},
+                                {QStringLiteral("router"), rig.router},
+                                {QStringLiteral("overrides"), toArray(rig.overrides)}});
+    } else if (engine.isLoaded()) {
+        const RunOptions &run = engine.options();
+        QJsonObject simulation{{QStringLiteral("scene"), run.scene},
+                               {QStringLiteral("router"), run.router},
+                               {QStringLiteral("overrides"), toArray(run.overrides)},
+                               {QStringLiteral("operator"), run.operatorName},
+                               {QStringLiteral("seed"), double(run.seed)},
+                               {QStringLiteral("reaction_time"), run.reactionTime}};
+        if (run.sceneOptions.cubes >= 0)
+            simulation.insert(QStringLiteral("cubes"), run.sceneOptions.cubes);
+        json.insert(QStringLiteral("simulation"), simulation);
+    }
+    // A replay shows a recorded router; the run it replaced has its own.
+    if (engine.isLoaded() && !engine.isReplaying() && engine.isRouterEdited())
+        json.insert(QStringLiteral("router"), graphEntry(engine.routerGraph()));
+
+    QJsonArray bindings;
+    for (const BoundDevice &device : engine.devices().status()) {
+        if (device.uri == QStringLiteral("virtual:") + device.name)
+            continue; // what every device of a router gets anyway
+        bindings.append(QJsonObject{{QStringLiteral("device"), device.name},
+                                    {QStringLiteral("uri"), device.uri},
+                                    {QStringLiteral("model"), device.model}});
+    }
+    json.insert(QStringLiteral("bindings"), bindings);
+
+    QJsonObject routerDocument = graphEntry(m_routerDocument->graph());
+    routerDocument.insert(QStringLiteral("path"), m_routerDocument->path());
+    routerDocument.insert(QStringLiteral("modified"), m_routerDocument->isModified());
+    json.insert(QStringLiteral("router_document"), routerDocument);
+    if (!m_patternDocument->json().isEmpty())
+        json.insert(QStringLiteral("pattern_document"),
+                    QJsonObject{{QStringLiteral("pattern"), m_patternDocument->json()},
+                                {QStringLiteral("file"), m_patternDocument->path()},
+                                {QStringLiteral("read_only"), m_patternDocument->isReadOnly()},
+                                {QStringLiteral("modified"), m_patternDocument->isModified()}});
+    json.insert(QStringLiteral("session"), QJsonObject{{QStringLiteral("name"), m_sessionName},
+                                                       {QStringLiteral("notes"), m_sessionNotes}});
+    return json;
+}
+
+bool Workspace::restore(const QString &path, const StudioOptions &options, QStringList *problems)
+{
+    if (!QFileInfo::exists(path))
+        return false;
+    QJsonObject json;
+    LoadError error;
+    if (!readJsonObjectFile(path, &json, &error) ||
+        !checkFormat(json, path, QLatin1String(Format), &error)) {
+        problems->append(error.toString());
+        return false;
+    }
+    JsonReader reader(path);
+    if (!reader.checkKeys(json, QString(),
+                          {QLatin1String("format"), QLatin1String("simulation"),
+                           QLatin1String("live_rig"), QLatin1String("router"),
+                           QLatin1String("bindings"), QLatin1String("router_document"),
+                           QLatin1String("pattern_document"), QLatin1String("session")})) {
+        problems->append(reader.error().toString());
+        return false;
+    }
+    restoreRun(json, path, options, problems);
+    restoreDocuments(json, path, problems);
+    return m_engine.isLoaded();
+}
+
+void Workspace::restoreRun(const QJsonObject &json, const QString &path,
+                           const StudioOptions &options, QStringList *problems)
+{
+    if (options.runGiven)
+        return; // the command line's run wins
+    JsonReader reader(path);
+    QJsonObject simulation;
+    QJsonObject rig;
+    if (!reader.object(json, QString(), QLatin1String("simulation"), &simulation, false) ||
+        !reader.object(json, QString(), QLatin1String("live_rig"), &rig, false)) {
+        problems->append(reader.error().toString());
+        return;
+    }
+    QString error;
+    if (!rig.isEmpty()) {
+        LiveRigOptions live = options.liveRig;
+        double port = live.port;
+        if (!reader.checkKeys(rig, QStringLiteral("/live_rig"),
+                              {QLatin1String("address"), QLatin1String("port"),
+                               QLatin1String("router"), QLatin1String("overrides")}) ||
+            !reader.string(rig, QStringLiteral("/live_rig"), QLatin1String("address"),
+                           &live.address) ||
+            !reader.number(rig, QStringLiteral("/live_rig"), QLatin1String("port"), &port) ||
+            !reader.string(rig, QStringLiteral("/live_rig"), QLatin1String("router"),
+                           &live.router) ||
+            !readStrings(reader, rig, QStringLiteral("/live_rig"), QLatin1String("overrides"),
+                         &live.overrides)) {
+            problems->append(reader.error().toString());
+            return;
+        }
+        if (port < 0 || port > 65535 || port != int(port)) {
+            problems->append(LoadError::at(path, QStringLiteral("/live_rig/port"),
+                                           QStringLiteral("expected a port from 0 to 65535"))
+                                 .toString());
+            return;
+        }
+        live.port = int(port);
+        if (!m_engine.listen(live, &error)) {
+            problems->append(LoadError::at(path, QStringLiteral("/live_rig"), error).toString());
+            return;
+        }
+    } else if (!simulation.isEmpty()) {
+        const QString at = QStringLiteral("/simulation");
+        RunOptions run = options.run;
+        double seed = double(run.seed);
+        double cubes = run.sceneOptions.cubes;
+        if (!reader.checkKeys(simulation, at,
+                              {QLatin1String("scene"), QLatin1String("cubes"),
+                               QLatin1String("router"), QLatin1String("overrides"),
+                               QLatin1String("operator"), QLatin1String("seed"),
+                               QLatin1String("reaction_time")}) ||
+            !reader.string(simulation, at, QLatin1String("scene"), &run.scene) ||
+            !reader.number(simulation, at, QLatin1String("cubes"), &cubes, false) ||
+            !reader.string(simulation, at, QLatin1String("router"), &run.router) ||
+            !readStrings(reader, simulation, at, QLatin1String("overrides"), &run.overrides) ||
+            !reader.string(simulation, at, QLatin1String("operator"), &run.operatorName) ||
+            !reader.number(simulation, at, QLatin1String("seed"), &seed) ||
+            !reader.number(simulation, at, QLatin1String("reaction_time"), &run.reactionTime)) {
+            problems->append(reader.error().toString());
+            return;
+        }
+        if (seed < 0 || seed > 1e15 || seed != std::floor(seed)) {
+            problems->append(LoadError::at(path, at + QStringLiteral("/seed"),
+                                           QStringLiteral("expected a whole number from 0 to "
+                                                          "1e15"))
+                                 .toString());
+            return;
+        }
+        if (cubes < -1 || cubes > 1000 || cubes != std::floor(cubes)) {
+            problems->append(LoadError::at(path, at + QStringLiteral("/cubes"),
+                                           QStringLiteral("expected a whole number from 0 to "
+                                                          "1000"))
+                                 .toString());
+            return;
+        }
+        run.seed = std::uint64_t(seed);
+        run.sceneOptions.cubes = int(cubes);
+        if (!m_engine.load(run, &error)) {
+            problems->append(LoadError::at(path, at, error).toString());
+            return;
+        }
+    } else {
+        return;
+    }
+
+    QJsonObject edited;
+    if (!reader.object(json, QString(), QLatin1String("router"), &edited, false)) {
+        problems->append(reader.error().toString());
+    } else if (!edited.isEmpty()) {
+        RouterGraph graph;
+        LoadError graphError;
+        if (!readGraphEntry(
+                edited, path, QStringLiteral("/router"),
+                {QLatin1String("graph"), QLatin1String("file"), QLatin1String("base_dir")}, &graph,
+                &graphError))
+            problems->append(graphError.toString());
+        else if (!m_engine.setRouter(graph, &error))
+            problems->append(LoadError::at(path, QStringLiteral("/router"), error).toString());
+    }
+
+    QJsonArray bindings;
+    if (!reader.array(json, QString(), QLatin1String("bindings"), &bindings, false)) {
+        problems->append(reader.error().toString());
+        return;
+    }
+    const std::vector<BoundDevice> devices = m_engine.devices().status();
+    for (int i = 0; i < bindings.size(); ++i) {
+        const QString at = jsonPointerChild(QStringLiteral("/bindings"), i);
+        const QJsonObject binding = bindings[i].toObject();
+        JsonReader bindingReader(path);
+        QString device;
+        QString uri;
+        QString model;
+        if (!bindings[i].isObject() ||
+            !bindingReader.checkKeys(
+                binding, at,
+                {QLatin1String("device"), QLatin1String("uri"), QLatin1String("model")}) ||
+            !bindingReader.string(binding, at, QLatin1String("device"), &device) ||
+            !bindingReader.string(binding, at, QLatin1String("uri"), &uri) ||
+            !bindingReader.string(binding, at, QLatin1String("model"), &model)) {
+            problems->append(
+                bindingReader.error().isSet()
+                    ? bindingReader.error().toString()
+                    : LoadError::at(path, at, QStringLiteral("expected an object")).toString());
+            continue;
+        }
+        // Only to the same device of the same model: a band is never driven as another.
+        const bool fits = std::any_of(devices.begin(), devices.end(), [&](const BoundDevice &d) {
+            return d.name == device && d.model == model;
+        });
+        if (!fits)
+            continue;
+        if (!m_engine.bindDevice(device, uri, &error))
+            problems->append(LoadError::at(path, at, error).toString());
+    }
+}
+
+void Workspace::restoreDocuments(const QJsonObject &json, const QString &path,
+                                 QStringList *problems)
+{
+    JsonReader reader(path);
+    QJsonObject router;
+    QJsonObject pattern;
+    QJsonObject session;
+    if (!reader.object(json, QString(), QLatin1String("router_document"), &router, false) ||
+        !reader.object(json, QString(), QLatin1String("pattern_document"), &pattern, false) ||
+        !reader.object(json, QString(), QLatin1String("session"), &session, false)) {
+        problems->append(reader.error().toString());
+        return;
+    }
+
+    // Unsaved edits come back as unsaved: the stack is marked as never clean.
+    if (!router.isEmpty()) {
+        const QString at = QStringLiteral("/router_document");
+        JsonReader documentReader(path);
+        QString file;
+        RouterGraph graph;
+        LoadError error;
+        if (!readGraphEntry(router, path, at,
+                            {QLatin1String("graph"), QLatin1String("file"),
+                             QLatin1String("base_dir"), QLatin1String("path"),
+                             QLatin1String("modified")},
+                            &graph, &error)) {
+            problems->append(error.toString());
+        } else if (!documentReader.string(router, at, QLatin1String("path"), &file, false)) {
+            problems->append(documentReader.error().toString());
+        } else {
+            m_routerDocument->reset(graph, file);
+            if (router.value(QLatin1String("modified")).toBool())
+                m_routerDocument->undoStack()->resetClean();
+        }
+    }
+    if (!pattern.isEmpty()) {
+        const QString at = QStringLiteral("/pattern_document");
+        JsonReader documentReader(path);
+        QJsonObject content;
+        QString file;
+        if (!documentReader.checkKeys(pattern, at,
+                                      {QLatin1String("pattern"), QLatin1String("file"),
+                                       QLatin1String("read_only"), QLatin1String("modified")}) ||
+            !documentReader.object(pattern, at, QLatin1String("pattern"), &content) ||
+            !documentReader.string(pattern, at, QLatin1String("file"), &file, false)) {
+            problems->append(documentReader.error().toString());
+        } else {
+            // The designer shows why a pattern does not load; it is kept as it was.
+            m_patternDocument->reset(content, file,
+                                     pattern.value(QLatin1String("read_only")).toBool());
+            if (pattern.value(QLatin1String("modified")).toBool())
+                m_patternDocument->undoStack()->resetClean();
+        }
+    }
+    const QString at = QStringLiteral("/session");
+    if (!reader.string(session, at, QLatin1String("name"), &m_sessionName, false) ||
+        !reader.string(session, at, QLatin1String("notes"), &m_sessionNotes, false))
+        problems->append(reader.error().toString());
+}
+
+void Workspace::autosaveTo(const QString &path)
+{
+    m_autosavePath = path;
+    m_autosaveTimer.start();
+}
+
+bool Workspace::autosave(QString *error)
+{
+    if (m_autosavePath.isEmpty())
+        return true;
+    const QByteArray bytes = QJsonDocument(toJson()).toJson(QJsonDocument::Indented);
+    if (bytes == m_saved)
+        return true;
+    LoadError failure;
+    QDir().mkpath(QFileInfo(m_autosavePath).absolutePath());
+    if (!OutputFile::write(m_autosavePath, bytes, &failure)) {
+        if (error)
+            *error = failure.toString();
+        if (!m_autosaveFailing)
+            emit autosaveFailed(failure.toString());
+        m_autosaveFailing = true;
+        return false;
+    }
+    m_saved = bytes;
+    m_autosaveFailing = false;
+    return true;
 }
 
 } // namespace semhap

@@ -3,32 +3,44 @@
 
 #include "engine.h"
 
+#include <QJsonObject>
 #include <QObject>
 #include <QString>
+#include <QTimer>
 
 namespace semhap {
 
 class PatternDocument;
 class RouterDocument;
+struct StudioOptions;
 
 /**
  * What the user works on, apart from any window: the engine (the run with its scene and
  * running router, the devices with their addresses, bindings and armed state, the
  * recording), the router editor's document and the pattern designer's, and the next
  * recording's name and notes. The studio rebuilds its window around the same workspace
- * (another interface language), so none of it is lost; the device addresses the user
- * added are also kept for the next start.
+ * (another interface language), so none of it is lost.
+ *
+ * It also outlives the studio: autosaveTo() keeps it in a `semhap.workspace/1` file, and
+ * restore() opens it again at the next start — after a quit or a crash alike. The device
+ * addresses the user added are kept in the settings.
  */
 class Workspace : public QObject
 {
     Q_OBJECT
 
 public:
+    /** The file format's name and version. */
+    static constexpr const char *Format = "semhap.workspace/1";
+    /** How often (ms) autosaveTo() writes the workspace when something changed. */
+    static constexpr int AutosaveInterval = 2000;
+
     /**
      * Adds the device addresses saved by earlier sessions to the device listing (those that
      * no longer parse are left out, with a warning naming the settings file).
      */
     explicit Workspace(QObject *parent = nullptr);
+    /** Writes the workspace a last time when it autosaves. */
     ~Workspace() override;
 
     Engine &engine() { return m_engine; }
@@ -44,12 +56,56 @@ public:
     QString sessionNotes() const { return m_sessionNotes; }
     void setSessionNotes(const QString &notes) { m_sessionNotes = notes; }
 
+    /** Where the studio keeps its workspace: `workspace.json` beside its settings file. */
+    static QString defaultFile();
+
+    /**
+     * The workspace as its file holds it: the run (a simulation's scene, cubes, router,
+     * operator, seed and reaction time, or a live rig's address, port and router), the
+     * running router's graph when it is an edit, the bindings to real devices (with their
+     * models), the two documents (content, file, read-only, modified) and the next
+     * recording's name and notes. A replay is not kept: the run it replaced is.
+     */
+    QJsonObject toJson() const;
+
+    /**
+     * Opens the workspace saved in `path` (none there: false, nothing to say). The saved
+     * run is loaded (paused) unless `options` names a run of its own; an edited router is
+     * applied again; bindings come back where the router still has a device of that name
+     * and model, disarmed as every real band starts; the documents come back with their
+     * unsaved edits shown as not saved (their undo history does not survive). Whatever
+     * cannot come back is left out and said in `problems`, each as `FILE: /pointer:
+     * reason` (or `FILE:LINE:COL:` for broken JSON). True when a run was loaded.
+     */
+    bool restore(const QString &path, const StudioOptions &options, QStringList *problems);
+
+    /**
+     * From now on writes the workspace to `path` (through a temporary and a rename) every
+     * AutosaveInterval when it changed, and when the workspace goes; a write that fails is
+     * reported once by autosaveFailed().
+     */
+    void autosaveTo(const QString &path);
+    /** Writes the workspace to the autosave file now if it changed; false with `error`. */
+    bool autosave(QString *error = nullptr);
+
+signals:
+    /** The autosave file could not be written (`FILE: cannot write: reason`). */
+    void autosaveFailed(const QString &error);
+
 private:
+    void restoreRun(const QJsonObject &run, const QString &path, const StudioOptions &options,
+                    QStringList *problems);
+    void restoreDocuments(const QJsonObject &json, const QString &path, QStringList *problems);
+
     Engine m_engine;
     RouterDocument *m_routerDocument;
     PatternDocument *m_patternDocument;
     QString m_sessionName;
     QString m_sessionNotes;
+    QString m_autosavePath;
+    QByteArray m_saved; ///< what the autosave file holds
+    QTimer m_autosaveTimer;
+    bool m_autosaveFailing = false; ///< reported once until a write works again
 };
 
 } // namespace semhap

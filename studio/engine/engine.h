@@ -132,6 +132,7 @@ public:
     /** Binds a router device name to a transport at a tick boundary. */
     bool bindDevice(const QString &name, const QString &uri, QString *error);
     DeviceManager &devices() { return *m_devices; }
+    const DeviceManager &devices() const { return *m_devices; }
     /**
      * Pauses and sends every device zero now (the bands before anything waits for the
      * pipeline thread); the history, so the meters and plots, and the recording then show

@@ -15,6 +15,7 @@
 #include "patterndocument.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
+#include "routerdocument.h"
 #include "routereditor.h"
 #include "routernodeitem.h"
 #include "routerscene.h"
@@ -26,10 +27,13 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QGraphicsView>
 #include <QImage>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
@@ -66,6 +70,10 @@ private slots:
     void layoutIsSavedAndRestored();
     void switchesToGerman();
     void languageSwitchKeepsTheWork();
+    void workComesBackAfterARestart();
+    void workComesBackAfterACrash();
+    void brokenWorkspacesAreReported_data();
+    void brokenWorkspacesAreReported();
     void screenshotHook();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
@@ -88,6 +96,7 @@ void TestStudio::initTestCase()
 void TestStudio::init()
 {
     QSettings().clear();
+    QFile::remove(Workspace::defaultFile()); // each test starts on the defaults
 }
 
 StudioOptions TestStudio::options() const
@@ -506,6 +515,161 @@ void TestStudio::languageSwitchKeepsTheWork()
     QVERIFY(next.engine().devices().configured().contains("udp:127.0.0.1:9"));
     window->findChild<QAction *>("recordAction")->trigger();
     studio.setLanguage("en");
+}
+
+void TestStudio::workComesBackAfterARestart()
+{
+    // What a person left at quitting — an applied router edit, another edit in the editor,
+    // a pattern not saved, a band bound, the notes — is there at the next start; the band
+    // comes back disarmed, as every real band starts.
+    QJsonObject edited;
+    QJsonObject pattern;
+    {
+        Studio studio(options());
+        studio.start();
+        MainWindow *window = studio.window();
+        QVERIFY(QTest::qWaitForWindowExposed(window));
+        Engine &engine = window->engine();
+        RouterEditor *editor = window->routerEditor();
+        editor->setParam("right.force", "grasp", 25.0);
+        QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
+        QTRY_COMPARE(window->routerPicker()->currentText(), QString("C3*"));
+        editor->setParam("right.force", "grasp", 30.0);
+        edited = editor->graph().toJson();
+        window->waveformDesigner()->duplicate();
+        window->waveformDesigner()->document()->setValue("/description", "mine, not saved");
+        pattern = window->waveformDesigner()->document()->json();
+        QString error;
+        QVERIFY2(engine.bindDevice("right.vibro", "udp:127.0.0.1:9", &error), qPrintable(error));
+        engine.devices().armAll(true);
+        window->notesEdit()->setFocus();
+        QTest::keyClicks(window->notesEdit(), "participant 7");
+        window->close();
+    }
+    Studio studio(options());
+    studio.start();
+    MainWindow *window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    Engine &engine = window->engine();
+    QVERIFY(engine.isRunning());
+    QCOMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    const RouterGraph &running = engine.routerGraph();
+    QCOMPARE(running.nodes[size_t(running.nodeIndex("right.force"))].params.value("grasp"),
+             QJsonValue(25.0));
+    QCOMPARE(window->routerEditor()->graph().toJson(), edited);
+    QVERIFY(window->routerEditor()->document()->isModified());
+    QCOMPARE(window->waveformDesigner()->document()->json(), pattern);
+    QVERIFY(window->waveformDesigner()->document()->isModified());
+    QVERIFY(
+        window->waveformDesigner()->findChild<QLabel *>("banner")->text().contains("not saved"));
+    QCOMPARE(engine.devices().transport("right.vibro")->uri(), QString("udp:127.0.0.1:9"));
+    QVERIFY(!engine.devices().transport("right.vibro")->isArmed());
+    QCOMPARE(window->notesEdit()->text(), QString("participant 7"));
+
+    // A run named on the command line wins over the saved one; the rest comes back.
+    window->close();
+    StudioOptions named;
+    QString message;
+    bool help = false;
+    QVERIFY(StudioOptions::parse({"--scene", "bimanual_sorting", "--pose-port", "0"}, &named,
+                                 &message, &help));
+    Studio again(named);
+    again.start();
+    QCOMPARE(again.window()->engine().options().scene, QString("bimanual_sorting"));
+    QCOMPARE(again.window()->routerPicker()->currentText(), QString("C3"));
+    QCOMPARE(again.window()->routerEditor()->graph().toJson(), edited);
+    QCOMPARE(again.window()->notesEdit()->text(), QString("participant 7"));
+}
+
+void TestStudio::workComesBackAfterACrash()
+{
+    // The studio killed without warning: the workspace it wrote a moment before is whole,
+    // and the next start opens it.
+    QTemporaryDir dir;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("QT_QPA_PLATFORM", "xcb");
+    env.insert("XDG_CONFIG_HOME", dir.path());
+    const QString file = dir.filePath("semhap/workspace.json");
+    QProcess studio;
+    studio.setProcessEnvironment(env);
+    studio.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    studio.start(SEMHAP_STUDIO_BINARY,
+                 {"--scene", "bimanual_sorting", "--router", "C1", "--pose-port", "0"});
+    QVERIFY(studio.waitForStarted());
+    const auto saved = [&file](QJsonObject *simulation) {
+        QFile f(file);
+        if (!f.open(QIODevice::ReadOnly))
+            return false;
+        const QJsonObject json = QJsonDocument::fromJson(f.readAll()).object();
+        *simulation = json.value("simulation").toObject();
+        return json.value("format").toString() == "semhap.workspace/1";
+    };
+    QJsonObject simulation;
+    QTRY_VERIFY_WITH_TIMEOUT(saved(&simulation), 30000);
+    studio.kill();
+    QVERIFY(studio.waitForFinished());
+    QVERIFY(saved(&simulation));
+    QCOMPARE(simulation.value("scene").toString(), QString("bimanual_sorting"));
+    QCOMPARE(simulation.value("router").toString(), QString("C1"));
+
+    // Started again without naming a run, it opens the same one (and keeps it when it quits).
+    studio.start(SEMHAP_STUDIO_BINARY, {"--quit-after", "1", "--pose-port", "0"});
+    QVERIFY(studio.waitForFinished(60000));
+    QCOMPARE(studio.exitCode(), 0);
+    QVERIFY(saved(&simulation));
+    QCOMPARE(simulation.value("scene").toString(), QString("bimanual_sorting"));
+    QCOMPARE(simulation.value("router").toString(), QString("C1"));
+}
+
+void TestStudio::brokenWorkspacesAreReported_data()
+{
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("problem"); // after "FILE"
+    QTest::newRow("not JSON") << QByteArray("{\n  \"format\": \"semhap.workspace/1\",\n  oops")
+                              << ":3:";
+    QTest::newRow("another format")
+        << QByteArray(R"({"format": "semhap.router/1"})") << ": /format:";
+    QTest::newRow("unknown key")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
+           "colour": 1}})")
+        << ": /simulation: unknown key 'colour'";
+    QTest::newRow("scene gone")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "/gone.xml",
+           "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25}})")
+        << ": /simulation: ";
+    QTest::newRow("broken edit")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
+           "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25},
+           "router": {"graph": {"format": "semhap.router/1", "nodes": [{"id": "x",
+           "type": "nope"}]}}})")
+        << ": /router: ";
+    QTest::newRow("bad binding")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
+           "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25},
+           "bindings": [{"device": "right.vibro", "uri": "serial:", "model": "lra4"}]})")
+        << ": /bindings/0: ";
+}
+
+void TestStudio::brokenWorkspacesAreReported()
+{
+    // A workspace file that does not read leaves the studio on its defaults (or on what
+    // did read), and says where the file is wrong.
+    QFETCH(QByteArray, content);
+    QFETCH(QString, problem);
+    const QString file = Workspace::defaultFile();
+    QDir().mkpath(QFileInfo(file).absolutePath());
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(content);
+    f.close();
+    Studio studio(options());
+    studio.start();
+    MainWindow *window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QVERIFY(window->engine().isLoaded());
+    const QString message = window->statusBar()->currentMessage();
+    QVERIFY2(message.contains(file + problem), qPrintable(message));
+    window->close();
 }
 
 void TestStudio::screenshotHook()
