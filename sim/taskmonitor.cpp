@@ -102,6 +102,8 @@ void TaskMonitor::observe(World &world)
         m_breaks.add(fracture.t, m_warnings[size_t(Gripper::Right)], m_reactionTime);
     observeGrasp(world);
     observeTransfers(world);
+    // Before the refill, which puts the finished pile back in the box.
+    observeCompletion(world);
     if (m_container >= 0)
         observeContainer(world);
     refill(world);
@@ -171,6 +173,26 @@ void TaskMonitor::observeTransfers(const World &world)
             ++m_transfers;
         }
     }
+}
+
+void TaskMonitor::observeCompletion(const World &world)
+{
+    // The pile is finished once none of its cubes is left to carry: each one is over the
+    // partition or broken (a broken cube cannot be transferred). A cube dropped outside
+    // box B is still to be carried; if the box is refilled before it is, the next pile
+    // counts.
+    if (m_completedAt >= 0 || !m_hasPlace || m_container >= 0)
+        return;
+    bool any = false;
+    for (size_t i = 0; i < world.objects().size(); ++i) {
+        if (!isCube(world, i))
+            continue;
+        if (!m_transferred[i] && !world.objects()[i].broken)
+            return;
+        any = true;
+    }
+    if (any)
+        m_completedAt = world.time();
 }
 
 void TaskMonitor::observeContainer(World &world)
@@ -280,19 +302,16 @@ void TaskMonitor::refill(World &world)
     if (!m_hasPick || m_grasped >= 0 || world.grip(Gripper::Right) > 0)
         return;
     const auto &objects = world.objects();
-    const auto isCube = [&](size_t i) {
-        return int(i) != m_container && objects[i].name.startsWith(QLatin1String("cube"));
-    };
     for (size_t i = 0; i < objects.size(); ++i) {
         // Not while a cube is still on its way (it may yet land in the box or count).
-        if (isCube(i) && !objects[i].broken &&
+        if (isCube(world, i) && !objects[i].broken &&
             (m_pick.contains(world.objectPosition(int(i))) ||
              speed(world.objectVelocity(int(i))) >= AtRest))
             return;
     }
     bool any = false;
     for (size_t i = 0; i < objects.size(); ++i) {
-        if (!isCube(i))
+        if (!isCube(world, i))
             continue;
         if (m_container >= 0 && !objects[i].broken && isInContainer(world, int(i)))
             continue;
@@ -301,6 +320,12 @@ void TaskMonitor::refill(World &world)
     }
     if (any)
         ++m_refills;
+}
+
+bool TaskMonitor::isCube(const World &world, size_t object) const
+{
+    return int(object) != m_container &&
+           world.objects()[object].name.startsWith(QLatin1String("cube"));
 }
 
 bool TaskMonitor::isOnBase(const World &world, int container, const Region &home)
@@ -375,6 +400,9 @@ QJsonObject TaskMonitor::metrics() const
         {QStringLiteral("breaks_warned_in_time_share"), mean(m_breaks.inTime, breaks)},
         {QStringLiteral("box_refills"), m_refills},
     };
+    if (m_hasPlace && m_container < 0)
+        metrics.insert(QStringLiteral("completion_time"),
+                       m_completedAt >= 0 ? QJsonValue(m_completedAt) : QJsonValue());
     int confirmations = m_confirmations[size_t(Gripper::Right)].onsets;
     int grasps = m_grasps;
     if (m_container >= 0) {

@@ -31,6 +31,13 @@ public:
     /** The metrics so far, snake_case keys; averages over nothing are null. */
     QJsonObject metrics() const;
 
+    /**
+     * When the pile was first finished (simulated s): every cube of the box_and_block pile
+     * transferred or broken, none left to carry. Negative until then, and always for a task
+     * without a pile to finish (the bimanual one). docs/metrics.md, `completion_time`.
+     */
+    double completionTime() const { return m_completedAt; }
+
     static constexpr double RespawnPenalty = 2.0;
     /** How far from its home site (m) a container still stands on its base. */
     static constexpr double OffHome = 0.01;
@@ -65,9 +72,13 @@ private:
 
     void observeGrasp(World &world);
     void observeTransfers(const World &world);
+    /** Notes the first time no cube of the pile is left to carry (box_and_block). */
+    void observeCompletion(const World &world);
     void observeContainer(World &world);
     void observeContainerSlip(const World &world, bool held);
     void refill(World &world);
+    /** Whether `object` is one of the cubes (not the container). */
+    bool isCube(const World &world, size_t object) const;
     /** Whether `object` is inside the container: within its walls, above its floor. */
     bool isInContainer(const World &world, int object) const;
     /** Puts the container back on its home site, empty: its cubes go back to the box. */
@@ -95,6 +106,7 @@ private:
     std::vector<bool> m_transferred;
     int m_transfers = 0;
     int m_refills = 0;
+    double m_completedAt = -1.0; ///< when the pile was first finished; -1: not yet
 
     // What each hand felt, and the failures it was warned of.
     std::array<Cue, 2> m_warnings{};

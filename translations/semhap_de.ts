@@ -843,6 +843,14 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
         <translation>Der Router-Editor behält Ihre Änderungen, die gerade nicht laufen: Anwenden startet sie.</translation>
     </message>
+    <message>
+        <source>Task done
+The pile was finished after %1 s.
+Carry on with the refilled box, or reset (%2) to start over.</source>
+        <translation>Aufgabe erledigt
+Der Stapel war nach %1 s abgearbeitet.
+Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2), um neu zu beginnen.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -981,6 +989,10 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>%1 %</source>
         <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Completion time</source>
+        <translation>Zeit bis zum Abschluss</translation>
     </message>
 </context>
 <context>

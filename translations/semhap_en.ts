@@ -840,6 +840,11 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
+    </message>
+    <message>
+        <source>Task done
+The pile was finished after %1 s.
+Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -979,6 +984,10 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Completion time</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -30,6 +30,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QJsonValue>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -590,6 +591,8 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::finished, this, [this] {
         statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
+    connect(&m_engine.history(), &RunHistory::metricsChanged, this, &MainWindow::showTaskDone);
+    connect(&m_engine.history(), &RunHistory::reset, this, &MainWindow::showTaskDone);
     // Any drive input hands the grippers to the user.
     connect(m_handDrive, &HandDrive::driveStarted, this, [this] { m_engine.setDriving(true); });
     connect(m_poseInput, &PoseInput::driveStarted, this, [this] { m_engine.setDriving(true); });
@@ -658,6 +661,7 @@ void MainWindow::showWorkspace()
     showRunning(m_engine.isRunning());
     showDriving(m_engine.isDriving());
     showRecording(m_engine.isRecording());
+    showTaskDone();
 }
 
 void MainWindow::showRunning(bool running)
@@ -740,6 +744,21 @@ void MainWindow::switchRouter(const QString &router)
     options.overrides.clear();
     if (openRun(options) && running)
         m_engine.run();
+}
+
+void MainWindow::showTaskDone()
+{
+    // TaskMonitor decides when the task is done (docs/metrics.md); this only says so.
+    const QJsonValue done = m_engine.history().metrics().value(QLatin1String("completion_time"));
+    const QString notice =
+        done.isDouble()
+            ? tr("Task done\nThe pile was finished after %1 s.\nCarry on with the refilled box, "
+                 "or reset (%2) to start over.")
+                  .arg(QLocale().toString(done.toDouble(), 'f', 1),
+                       m_resetAction->shortcut().toString(QKeySequence::NativeText))
+            : QString();
+    if (notice != m_viewport->notice())
+        m_viewport->setNotice(notice);
 }
 
 void MainWindow::toggleRunning()

@@ -130,6 +130,8 @@ private:
     void updateMode();
     /** Runs `router` on what runs now: the scene, or the live rig. */
     void switchRouter(const QString &router);
+    /** Says over the viewport that the task is done, once its metrics say so; else nothing. */
+    void showTaskDone();
 
     /** Shows what the engine holds when the window opens on a loaded workspace. */
     void showWorkspace();

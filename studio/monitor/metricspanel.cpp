@@ -39,6 +39,8 @@ struct KnownMetric
 
 // docs/metrics.md, in the order a reader looks for them.
 const KnownMetric Known[] = {
+    {"completion_time", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Completion time"),
+     Kind::Seconds},
     {"cubes_transferred", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Cubes transferred"),
      Kind::Count},
     {"cubes_broken", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Cubes broken"), Kind::Count},

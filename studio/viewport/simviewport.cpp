@@ -46,6 +46,58 @@ double clampAngle(double degrees)
     return std::remainder(degrees, 360.0);
 }
 
+/**
+ * A bold heading over lines of text in a rounded dark box, readable over the floor and over
+ * the black sky alike, placed in `area` by `alignment` (left and top: its corner; centred
+ * and bottom: along its bottom edge). Lines wider than the area wrap.
+ */
+void drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
+                 const QString &title, const QStringList &lines, const QColor &rim,
+                 qreal rimWidth = 1.0)
+{
+    const QFont font = painter.font();
+    QFont bold = font;
+    bold.setBold(true);
+    const QFontMetrics boldMetrics(bold);
+    const QFontMetrics metrics(font);
+    const int pad = metrics.height() / 2;
+    const Qt::Alignment horizontal = alignment & Qt::AlignHorizontal_Mask;
+    const int flags = int(horizontal) | Qt::TextWordWrap;
+    const int widest = std::max(1, int(area.width()) - 2 * pad);
+    const QRect room(0, 0, widest, 1 << 20);
+    QRect text = boldMetrics.boundingRect(room, flags, title);
+    std::vector<QRect> lineRects;
+    for (const QString &line : lines) {
+        lineRects.push_back(metrics.boundingRect(room, flags, line));
+        text.setWidth(std::max(text.width(), lineRects.back().width()));
+    }
+    qreal height = text.height();
+    for (const QRect &line : lineRects)
+        height += line.height();
+    QRectF box(area.left(), area.top(), text.width() + 2 * pad, height + pad * 3 / 2);
+    if (horizontal & Qt::AlignHCenter)
+        box.moveLeft(area.center().x() - box.width() / 2);
+    if (alignment & Qt::AlignBottom)
+        box.moveBottom(area.bottom());
+
+    QPainterPath path;
+    path.addRoundedRect(box, pad / 2.0, pad / 2.0);
+    painter.fillPath(path, colors::OverlayGround);
+    painter.setPen(QPen(rim, rimWidth));
+    painter.drawPath(path);
+    qreal y = box.top() + pad * 3 / 4;
+    const auto draw = [&](const QFont &f, const QColor &colour, qreal h, const QString &t) {
+        painter.setFont(f);
+        painter.setPen(colour);
+        painter.drawText(QRectF(box.left() + pad, y, text.width(), h), flags, t);
+        y += h;
+    };
+    draw(bold, Qt::white, boldMetrics.boundingRect(room, flags, title).height(), title);
+    for (int i = 0; i < int(lines.size()); ++i)
+        draw(font, colors::OverlayText, lineRects[size_t(i)].height(), lines[i]);
+    painter.setFont(font);
+}
+
 } // namespace
 
 SimViewport::SimViewport(QWidget *parent)
@@ -119,6 +171,12 @@ void SimViewport::setPlaceholder(const QString &text)
 void SimViewport::setCaption(const QString &text)
 {
     m_caption = text;
+    update();
+}
+
+void SimViewport::setNotice(const QString &text)
+{
+    m_notice = text;
     update();
 }
 
@@ -337,6 +395,18 @@ void SimViewport::paintGL()
     gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     painter.endNativePainting();
     drawOverlay(painter, drawn);
+    if (!m_notice.isEmpty())
+        drawNotice(painter);
+}
+
+void SimViewport::drawNotice(QPainter &painter)
+{
+    // Centred at the bottom, clear of the driver's box in the top corner.
+    QStringList lines = m_notice.split(QLatin1Char('\n'));
+    const QString title = lines.takeFirst();
+    const int pad = painter.fontMetrics().height() / 2;
+    drawTextBox(painter, QRectF(rect()).adjusted(pad, pad, -pad, -pad),
+                Qt::AlignHCenter | Qt::AlignBottom, title, lines, colors::Ok, 3.0);
 }
 
 void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
@@ -397,34 +467,9 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
             lines << tr("Click here and press W A S D to drive");
     }
 
-    QFont bold = font;
-    bold.setBold(true);
-    const QFontMetrics boldMetrics(bold);
-    const QFontMetrics metrics(font);
-    const int pad = metrics.height() / 2;
-    int textWidth = boldMetrics.horizontalAdvance(title);
-    for (const QString &line : lines)
-        textWidth = std::max(textWidth, metrics.horizontalAdvance(line));
-    const int textHeight = boldMetrics.height() + int(lines.size()) * metrics.height();
-    const QRectF box(pad, pad, textWidth + 2 * pad, textHeight + pad * 3 / 2);
-
-    QPainterPath path;
-    path.addRoundedRect(box, pad / 2.0, pad / 2.0);
-    // Dark grey with a light rim: readable over the floor and over the black sky alike.
-    painter.fillPath(path, colors::OverlayGround);
-    painter.setPen(QPen(colors::veil(90), 1));
-    painter.drawPath(path);
-    painter.setPen(Qt::white);
-    painter.setFont(bold);
-    int y = int(box.top()) + pad * 3 / 4 + boldMetrics.ascent();
-    painter.drawText(int(box.left()) + pad, y, title);
-    painter.setFont(font);
-    painter.setPen(colors::OverlayText);
-    y += boldMetrics.descent();
-    for (const QString &line : lines) {
-        y += metrics.height();
-        painter.drawText(int(box.left()) + pad, y, line);
-    }
+    const int pad = QFontMetrics(font).height() / 2;
+    drawTextBox(painter, QRectF(rect()).adjusted(pad, pad, -pad, -pad),
+                Qt::AlignLeft | Qt::AlignTop, title, lines, colors::veil(90));
 }
 
 std::vector<WristMarker> SimViewport::markers() const

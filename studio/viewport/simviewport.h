@@ -58,6 +58,12 @@ public:
      */
     void setCaption(const QString &text);
     const QString &caption() const { return m_caption; }
+    /**
+     * A notice over the top of the picture until it is cleared (empty), such as the task's
+     * end: its first line is the heading, the others say more.
+     */
+    void setNotice(const QString &text);
+    const QString &notice() const { return m_notice; }
     /** Where drive keys go (null: nowhere); it is given the scene. Not owned. */
     void setHandDrive(HandDrive *drive);
     HandDrive *handDrive() const { return m_handDrive; }
@@ -126,6 +132,7 @@ private:
     void frame();
     void changeCamera(const OrbitCamera &camera);
     void drawOverlay(QPainter &painter, bool hasPicture);
+    void drawNotice(QPainter &painter);
     /** The driven hands' ghosts and drop lines, from the drive and its status. */
     std::vector<WristMarker> markers() const;
     /** Follow: the active hand's target in the middle, across its jaws. */
@@ -134,6 +141,7 @@ private:
     const World *m_world = nullptr;
     QString m_placeholder;
     QString m_caption;
+    QString m_notice;
     SceneFeed *m_feed = nullptr;
     HandDrive *m_handDrive = nullptr;
     std::unique_ptr<SceneRenderer> m_renderer;

@@ -186,6 +186,8 @@ private slots:
     void dropWarningLeadTime_data();
     void dropWarningLeadTime();
     void emptiedBoxIsRefilled();
+    void pileFinished_data();
+    void pileFinished();
     void bimanualTaskNeverStalls();
     void confirmationsAndSlipEpisodes();
     void stressScripts_data();
@@ -198,9 +200,10 @@ void TestSimRun::metricsOfKnownEpisodes_data()
     QTest::addColumn<int>("transferred");
     QTest::addColumn<int>("dropped");
     QTest::addColumn<int>("broken");
-    QTest::newRow("firm grip: transferred") << 40.0 << 1 << 0 << 0;
-    QTest::newRow("too little grip: dropped") << 5.0 << 0 << 1 << 0;
-    QTest::newRow("too much grip: broken") << 140.0 << 0 << 0 << 1;
+    QTest::addColumn<bool>("finished"); ///< the one-cube pile: none left to carry
+    QTest::newRow("firm grip: transferred") << 40.0 << 1 << 0 << 0 << true;
+    QTest::newRow("too little grip: dropped") << 5.0 << 0 << 1 << 0 << false;
+    QTest::newRow("too much grip: broken") << 140.0 << 0 << 0 << 1 << true;
 }
 
 void TestSimRun::metricsOfKnownEpisodes()
@@ -209,7 +212,9 @@ void TestSimRun::metricsOfKnownEpisodes()
     QFETCH(int, transferred);
     QFETCH(int, dropped);
     QFETCH(int, broken);
-    const QJsonObject m = pickAndPlace(force);
+    QFETCH(bool, finished);
+    double fractureAt = -1.0;
+    const QJsonObject m = pickAndPlace(force, {}, &fractureAt);
     QCOMPARE(m.value("cubes_transferred").toInt(), transferred);
     QCOMPARE(m.value("cubes_dropped").toInt(), dropped);
     QCOMPARE(m.value("cubes_broken").toInt(), broken);
@@ -222,6 +227,15 @@ void TestSimRun::metricsOfKnownEpisodes()
     }
     if (broken)
         QVERIFY(m.value("average_peak_grasp_force").toDouble() > 120.0);
+    // A broken cube cannot be carried: the pile is finished on the step it breaks (the
+    // fracture is timed at the step's start, the pile at its end).
+    QVERIFY(m.contains("completion_time"));
+    QCOMPARE(m.value("completion_time").isDouble(), finished);
+    if (broken)
+        QVERIFY2(std::abs(m.value("completion_time").toDouble() - fractureAt - 0.002) < 1e-9,
+                 qPrintable(QString("finished at %1 s, broken at %2 s")
+                                .arg(m.value("completion_time").toDouble())
+                                .arg(fractureAt)));
 }
 
 void TestSimRun::runIsDeterministic()
@@ -590,6 +604,67 @@ void TestSimRun::emptiedBoxIsRefilled()
     const auto pos = world->objectPosition(0);
     QVERIFY2(std::abs(pos[0] - home[0]) < 0.002 && std::abs(pos[2] - home[2]) < 0.002,
              qPrintable(QString("at %1 %2 %3").arg(pos[0]).arg(pos[1]).arg(pos[2])));
+}
+
+void TestSimRun::pileFinished_data()
+{
+    QTest::addColumn<int>("cubes");
+    QTest::addColumn<int>("seed");
+    QTest::newRow("one cube") << 1 << 1;
+    QTest::newRow("two cubes") << 2 << 2;
+    QTest::newRow("two cubes, one broken") << 2 << 10;
+}
+
+void TestSimRun::pileFinished()
+{
+    // The scripted operator carries a small pile over the partition: the completion time is
+    // the step on which the last cube was counted (transferred or broken), not a step before,
+    // and it stays once the refill has put the pile back.
+    QFETCH(int, cubes);
+    QFETCH(int, seed);
+    RunOptions options;
+    options.scene = "box_and_block";
+    options.sceneOptions.cubes = cubes;
+    options.seed = std::uint64_t(seed);
+    options.duration = 90;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    QVERIFY2(run, qPrintable(error));
+    RunSink sink;
+    int gone = 0; // transferred or broken
+    while (run->step(sink)) {
+        const QJsonObject m = run->metrics();
+        QVERIFY(m.contains("completion_time"));
+        gone = m.value("cubes_transferred").toInt() + m.value("cubes_broken").toInt();
+        if (m.value("completion_time").isDouble()) {
+            QCOMPARE(m.value("completion_time").toDouble(), run->time());
+            break;
+        }
+        QVERIFY2(gone < cubes, qPrintable(QString("%1 of %2 cubes gone at %3 s, not finished")
+                                              .arg(gone)
+                                              .arg(cubes)
+                                              .arg(run->time())));
+    }
+    QCOMPARE(gone, cubes);
+    const double done = run->time();
+    while (run->time() < done + 5.0 && run->step(sink)) {
+    }
+    const QJsonObject after = run->metrics();
+    QVERIFY(after.value("box_refills").toInt() >= 1);
+    QCOMPARE(after.value("completion_time").toDouble(), done);
+
+    // `semhap run` exports it; the bimanual task has no pile to finish.
+    const CliResult r =
+        semhapRun({"run", "--scene", "box_and_block", "--router", "C3", "--operator", "scripted",
+                   "--cubes", QString::number(cubes), "--seed", QString::number(seed),
+                   "--duration", QString::number(done + 0.5), "--metrics", "-"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(QJsonDocument::fromJson(r.out).object().value("completion_time").toDouble(), done);
+    const CliResult bimanual =
+        semhapRun({"run", "--scene", "bimanual_sorting", "--router", "C3", "--operator",
+                   "scripted", "--duration", "0.1", "--metrics", "-"});
+    QCOMPARE(bimanual.code, 0);
+    QVERIFY(!QJsonDocument::fromJson(bimanual.out).object().contains("completion_time"));
 }
 
 void TestSimRun::bimanualTaskNeverStalls()

@@ -3,6 +3,7 @@
 // the embedded defaults and runs; scene and router pickers, run/step/speed, the stop-all
 // key and teleoperation drive the engine; the layout is saved and restored; German can be
 // switched on in the preferences; `--screenshot` grabs the window and quits.
+#include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogmodel.h"
@@ -11,6 +12,7 @@
 #include "handdrive.h"
 #include "imagechecks.h"
 #include "mainwindow.h"
+#include "metricspanel.h"
 #include "openwindow.h"
 #include "patterndocument.h"
 #include "plotpanel.h"
@@ -51,6 +53,46 @@
 
 using namespace semhap;
 
+namespace {
+
+/** The window sizes and languages a picture of a new piece of the window is taken at. */
+void addWindowRows()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "en";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "en";
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "de";
+}
+
+/** A studio at the test row's size and language; its window is shown and active. */
+std::unique_ptr<Studio> startStudio(StudioOptions o)
+{
+    QFETCH(QSize, size);
+    QFETCH(QString, language);
+    o.size = size;
+    auto studio = std::make_unique<Studio>(o);
+    studio->start();
+    if (language != "en")
+        studio->setLanguage(language);
+    if (!openWindow(*studio->window()))
+        qWarning("the window did not become active");
+    return studio;
+}
+
+/** Saves `widget` as NAME-ROW.png in $SEMHAP_SCREENSHOTS, to be looked at, if it is set. */
+void savePicture(QWidget *widget, const QString &name)
+{
+    const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    QString error;
+    if (!folder.isEmpty() &&
+        !Studio::screenshot(
+            widget, QString("%1/%2-%3.png").arg(folder, name, QTest::currentDataTag()), &error))
+        qWarning("%s", qPrintable(error));
+}
+
+} // namespace
+
 class TestStudio : public QObject
 {
     Q_OBJECT
@@ -77,6 +119,8 @@ private slots:
     void screenshotHook();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
+    void saysWhenTheTaskIsDone_data();
+    void saysWhenTheTaskIsDone();
 
 private:
     StudioOptions options() const;
@@ -810,6 +854,70 @@ void TestStudio::screenshotsOfEveryPanel()
     }
     const QStringList clipped = clippedTexts(&window);
     QVERIFY2(clipped.isEmpty(), qPrintable("router: " + clipped.join("; ")));
+}
+
+void TestStudio::saysWhenTheTaskIsDone_data()
+{
+    addWindowRows();
+}
+
+void TestStudio::saysWhenTheTaskIsDone()
+{
+    // A pile of one cube, which the scripted operator carries over the partition (seed 1,
+    // in 5.3 s): the viewport says the task is done and stays saying so while the run goes
+    // on, the metrics give the time, and a reset takes the notice away.
+    StudioOptions o = options();
+    o.speed = 8.0;
+    o.run.sceneOptions.cubes = 1;
+    o.run.seed = 1;
+    o.autoRun = false;
+    const std::unique_ptr<Studio> studio = startStudio(o);
+    MainWindow &window = *studio->window();
+    QVERIFY(window.isActiveWindow());
+    window.findChild<QDockWidget *>("metricsDock")->raise();
+    QLabel *time = nullptr;
+    QTRY_VERIFY((time = window.metricsPanel()->findChild<QLabel *>("completion_time")));
+    const QString notYet = MetricsPanel::format("completion_time", QJsonValue());
+    QCOMPARE(time->text(), notYet);
+    QCOMPARE(window.viewport()->notice(), QString());
+    QTest::qWait(300);
+    const int greenBefore = pixelsOfColour(window.viewport()->grabFramebuffer(), colors::Ok, 16);
+
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(window.engine().isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!window.viewport()->notice().isEmpty(), 60000);
+    const double done = window.engine().history().metrics().value("completion_time").toDouble();
+    QVERIFY2(done > 4.0 && done < 7.0, qPrintable(QString::number(done)));
+    QCOMPARE(time->text(), MetricsPanel::format("completion_time", done));
+    QVERIFY2(window.viewport()->notice().contains(QLocale().toString(done, 'f', 1)),
+             qPrintable(window.viewport()->notice()));
+    QTest::qWait(300);
+    savePicture(&window, "taskdone");
+    // On screen: the notice's green rim over the picture.
+    const QImage picture = window.viewport()->grabFramebuffer();
+    QVERIFY2(pixelsOfColour(picture, colors::Ok, 16) > greenBefore + 200,
+             qPrintable(QString("%1 green pixels, %2 before")
+                            .arg(pixelsOfColour(picture, colors::Ok, 16))
+                            .arg(greenBefore)));
+    const QStringList clipped = clippedTexts(&window);
+    QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("; ")));
+
+    // The run goes on (the box is refilled); the notice stays, in a window rebuilt in the
+    // other language too, until a reset.
+    const double t = window.engine().simTime();
+    QTRY_VERIFY(window.engine().simTime() > t + 2.0);
+    QVERIFY(!window.viewport()->notice().isEmpty());
+    window.engine().pause();
+    QFETCH(QString, language);
+    studio->setLanguage(language == "en" ? "de" : "en");
+    MainWindow &rebuilt = *studio->window();
+    QVERIFY(openWindow(rebuilt));
+    QVERIFY2(rebuilt.viewport()->notice().contains(QLocale().toString(done, 'f', 1)),
+             qPrintable(rebuilt.viewport()->notice()));
+    QTest::keyClick(&rebuilt, Qt::Key_R, Qt::ControlModifier);
+    QTRY_COMPARE(rebuilt.viewport()->notice(), QString());
+    QTRY_COMPARE(rebuilt.metricsPanel()->findChild<QLabel *>("completion_time")->text(),
+                 MetricsPanel::format("completion_time", QJsonValue()));
 }
 
 QTEST_MAIN(TestStudio)
