@@ -1982,6 +1982,14 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>(default: %1)</source>
         <translation>(Standard: %1)</translation>
     </message>
+    <message>
+        <source>%1 (your file)</source>
+        <translation>%1 (Ihre Datei)</translation>
+    </message>
+    <message>
+        <source>Rename pattern</source>
+        <translation>Muster umbenennen</translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>
@@ -2120,6 +2128,25 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Your work is not being saved</source>
         <translation>Ihre Arbeit wird nicht gesichert</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::UserPatterns</name>
+    <message>
+        <source>A pattern needs a name.</source>
+        <translation>Ein Muster braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot name a file: a pattern&apos;s name may not contain &apos;/&apos; or &apos;\&apos; or begin with &apos;.&apos;.</source>
+        <translation>„%1“ kann keine Datei benennen: Der Name eines Musters darf weder „/“ noch „\“ enthalten noch mit „.“ beginnen.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is the name of a built-in pattern: choose another.</source>
+        <translation>„%1“ ist der Name eines eingebauten Musters: Wählen Sie einen anderen.</translation>
+    </message>
+    <message>
+        <source>Another of your patterns is named &apos;%1&apos;: choose another name.</source>
+        <translation>Ein anderes Ihrer Muster heißt „%1“: Wählen Sie einen anderen Namen.</translation>
     </message>
 </context>
 <context>
@@ -2450,6 +2477,18 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Preview and audition without an end: the sustain goes on</source>
         <translation>Vorschau und Vorhören ohne Ende: das Halten geht weiter</translation>
+    </message>
+    <message>
+        <source>Could not save %1 as %2</source>
+        <translation>%1 konnte nicht als %2 gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Saved %1, but could not remove %2</source>
+        <translation>%1 gespeichert, aber %2 konnte nicht entfernt werden</translation>
+    </message>
+    <message>
+        <source>Renamed %1 to %2</source>
+        <translation>%1 in %2 umbenannt</translation>
     </message>
 </context>
 </TS>

@@ -1978,6 +1978,14 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>(default: %1)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (your file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rename pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>
@@ -2115,6 +2123,25 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Your work is not being saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::UserPatterns</name>
+    <message>
+        <source>A pattern needs a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot name a file: a pattern&apos;s name may not contain &apos;/&apos; or &apos;\&apos; or begin with &apos;.&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is the name of a built-in pattern: choose another.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another of your patterns is named &apos;%1&apos;: choose another name.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2445,6 +2472,18 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Preview and audition without an end: the sustain goes on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save %1 as %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1, but could not remove %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Renamed %1 to %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -499,6 +499,8 @@ void MainWindow::createDocks()
     });
     connect(m_designer, &WaveformDesigner::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 8000); });
+    connect(m_designer, &WaveformDesigner::patternRenamed, m_routerEditor,
+            &RouterEditor::followRenamedPattern);
 }
 
 void MainWindow::createMenus()

@@ -18,6 +18,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
@@ -472,12 +473,10 @@ void WaveformDesigner::refreshLibrary()
         auto *item = new QListWidgetItem(lockIcon(), name, m_library);
         item->setToolTip(tr("Built-in, read-only: duplicate it to edit"));
     }
-    const QDir folder(m_userFolder);
-    for (const QFileInfo &file :
-         folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-        auto *item = new QListWidgetItem(file.completeBaseName(), m_library);
-        item->setData(PathRole, file.absoluteFilePath());
-        item->setToolTip(file.absoluteFilePath());
+    for (const UserPattern &pattern : userPatterns(m_userFolder)) {
+        auto *item = new QListWidgetItem(pattern.name, m_library);
+        item->setData(PathRole, pattern.path);
+        item->setToolTip(pattern.path);
     }
     if (!m_document->path().isEmpty() && !QFileInfo::exists(m_document->path())) {
         auto *item = new QListWidgetItem(
@@ -645,11 +644,54 @@ void WaveformDesigner::save()
         saveAs();
         return;
     }
+    if (QFileInfo(m_document->path()).dir() == QDir(m_userFolder)) {
+        saveUserPattern();
+        return;
+    }
     QString error;
     if (!saveFile(m_document->path(), &error))
         reportError(tr("Could not save"), error);
     else
         emit message(tr("Saved %1").arg(m_document->path()));
+}
+
+bool WaveformDesigner::saveUserPattern()
+{
+    // In the user folder a pattern's file is named after it, so the library and the router
+    // editor list it by name: editing the name moves the file.
+    const QString from = m_document->path();
+    const QString name = m_document->json().value(QLatin1String("name")).toString();
+    const QString to = userPatternPath(m_userFolder, name);
+    const bool renamed = QDir::cleanPath(QFileInfo(from).absoluteFilePath()) != to;
+    if (renamed) {
+        const QString problem = userPatternNameProblem(m_userFolder, name, from);
+        if (!problem.isEmpty()) {
+            reportError(
+                tr("Could not save %1 as %2").arg(QFileInfo(from).completeBaseName(), name),
+                problem);
+            return false;
+        }
+    }
+    // The new file is written whole (through a temporary) before the old one goes.
+    QString error;
+    if (!saveFile(to, &error)) {
+        reportError(tr("Could not save"), error);
+        return false;
+    }
+    if (!renamed || !QFileInfo::exists(from)) {
+        emit message(tr("Saved %1").arg(to));
+        return true;
+    }
+    QFile old(from);
+    if (!old.remove()) {
+        reportError(tr("Saved %1, but could not remove %2").arg(to, from), old.errorString());
+        refreshLibrary();
+        return false;
+    }
+    refreshLibrary();
+    emit message(tr("Renamed %1 to %2").arg(QFileInfo(from).completeBaseName(), name));
+    emit patternRenamed(from, to);
+    return true;
 }
 
 void WaveformDesigner::saveAs()

@@ -84,6 +84,11 @@ signals:
     void auditionStarting();
     /** A one-line message for the status bar. */
     void message(const QString &text);
+    /**
+     * A user pattern was renamed: saved under its new name as `to`, its file `from` removed.
+     * Routers being edited that name `from` follow it (RouterEditor::followRenamedPattern).
+     */
+    void patternRenamed(const QString &from, const QString &to);
 
 private:
     void createActions();
@@ -101,6 +106,11 @@ private:
     void applyJsonText();
     void openLibraryItem();
     void save();
+    /**
+     * Saves a pattern of the user folder under its name, moving its file when the name was
+     * edited; false (with the reason shown) when the name is taken or a write fails.
+     */
+    bool saveUserPattern();
     void saveAs();
     void importFile();
     void exportFile();

@@ -2,6 +2,7 @@
 #include "routereditor.h"
 
 #include "colors.h"
+#include "inputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
@@ -18,6 +19,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGraphicsView>
 #include <QJsonArray>
@@ -401,6 +403,25 @@ void RouterEditor::setParam(const QString &id, const QString &key, const QJsonVa
     if (params.value(key) == value)
         return;
     m_undo->push(new SetParamCommand(m_document, id, key, value));
+}
+
+void RouterEditor::followRenamedPattern(const QString &from, const QString &to)
+{
+    QStringList ids;
+    for (const RouterNode &node : graph().nodes) {
+        const QString named = node.params.value(QLatin1String("pattern")).toString();
+        // `from` is gone: compare the paths, not the files.
+        if (node.type == QLatin1String("pattern") && InputFile::namesFile(named) &&
+            QDir::cleanPath(QDir(graph().baseDir).absoluteFilePath(named)) ==
+                QDir::cleanPath(QFileInfo(from).absoluteFilePath()))
+            ids.append(node.id);
+    }
+    if (ids.isEmpty())
+        return;
+    m_undo->beginMacro(tr("Rename pattern"));
+    for (const QString &id : ids)
+        setParam(id, QStringLiteral("pattern"), to);
+    m_undo->endMacro();
 }
 
 bool RouterEditor::renameNode(const QString &id, const QString &newId, QString *reason)
@@ -801,8 +822,6 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
             for (const PatternPtr &pattern : graph().patterns)
                 choices.append(pattern->name());
             choices.append(PatternLibrary::builtinNames());
-            // The designer's saved patterns, by path: the router loads them from there.
-            choices.append(userPatternFiles());
         } else if (kind == ParamKind::Model) {
             for (const DeviceModelPtr &model : graph().models)
                 choices.append(model->name());
@@ -817,6 +836,16 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
             combo->addItem(absentText(*spec), QString());
         for (const QString &choice : choices)
             combo->addItem(choice, choice);
+        if (kind == ParamKind::Pattern) {
+            // The designer's saved patterns, by name; the node names the file, which the
+            // router loads (and a self-contained save embeds).
+            for (const UserPattern &pattern : userPatterns()) {
+                const bool taken = combo->findText(pattern.name) >= 0;
+                combo->addItem(taken ? tr("%1 (your file)").arg(pattern.name) : pattern.name,
+                               pattern.path);
+                combo->setItemData(combo->count() - 1, pattern.path, Qt::ToolTipRole);
+            }
+        }
         const QString current = valueText(value);
         int at = combo->findData(current);
         if (at < 0 && !current.isEmpty()) {
@@ -824,11 +853,20 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
             at = combo->count() - 1;
         }
         if (name) {
-            combo->setEditText(current);
-            connect(combo, &QComboBox::textActivated, this,
-                    [this, id, key](const QString &text) { commitText(id, key, text); });
+            combo->setCurrentIndex(std::max(at, 0));
+            combo->setEditText(at >= 0 ? combo->itemText(at) : current);
+            // What an entry stands for (a file for the user's patterns), or what was typed.
+            const auto chosen = [combo](const QString &text) {
+                const int i = combo->findText(text);
+                return i >= 0 ? combo->itemData(i).toString() : text;
+            };
+            connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {
+                commitText(id, key, combo->itemData(i).toString());
+            });
             connect(combo->lineEdit(), &QLineEdit::editingFinished, this,
-                    [this, id, key, combo] { commitText(id, key, combo->currentText()); });
+                    [this, id, key, combo, chosen] {
+                        commitText(id, key, chosen(combo->currentText()));
+                    });
         } else {
             combo->setCurrentIndex(std::max(at, 0));
             connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {

@@ -58,6 +58,11 @@ public:
     bool connectPorts(const RouterLink &link, QString *reason);
     /** Sets a node parameter (undefined: back to the default), as the inspector does. */
     void setParam(const QString &id, const QString &key, const QJsonValue &value);
+    /**
+     * Points the pattern nodes that name the user's pattern file `from` at `to`, as one
+     * undoable step: the designer renamed it. Embedded patterns keep their names.
+     */
+    void followRenamedPattern(const QString &from, const QString &to);
     /** Renames a node, keeping its links; false with the reason when the id is not free. */
     bool renameNode(const QString &id, const QString &newId, QString *reason);
     /** Deletes the selected nodes (with their links) and wires. */

@@ -223,6 +223,7 @@ private slots:
     void failedSaveKeepsTheFile();
     void opensAnOldSpelling();
     void offersTheDesignersPatterns();
+    void followsARenamedPattern();
     void inspectorShowsTheNodeTypeTable();
     void engineSwapsWhileRunning();
     void liveActivityLightsWires();
@@ -738,18 +739,81 @@ void TestRouterEditor::offersTheDesignersPatterns()
     f.select("left.geiger");
     auto *combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
     QVERIFY(combo);
+    // Listed by name; the node stores the file, as the core reads it.
     const int at = combo->findData(path);
     QVERIFY2(at >= 0, qPrintable(path));
+    QCOMPARE(combo->itemText(at), QString("my.slipwarning"));
+    for (int i = 0; i < combo->count(); ++i)
+        QVERIFY2(!combo->itemText(i).contains('/'), qPrintable(combo->itemText(i)));
     combo->setFocus();
     while (combo->currentIndex() != at)
         QTest::keyClick(combo, combo->currentIndex() < at ? Qt::Key_Down : Qt::Key_Up);
-    QTRY_COMPARE(f.editor.graph()
-                     .nodes[size_t(f.editor.graph().nodeIndex("left.geiger"))]
-                     .params.value("pattern")
-                     .toString(),
-                 path);
+    const auto stored = [&f] {
+        return f.editor.graph()
+            .nodes[size_t(f.editor.graph().nodeIndex("left.geiger"))]
+            .params.value("pattern")
+            .toString();
+    };
+    QTRY_COMPARE(stored(), path);
     QCOMPARE(f.editor.validate(), QStringList());
+    // The inspector, built again, shows the node's pattern by its name.
+    QTRY_VERIFY(f.editor.inspector()->findChild<QComboBox *>("param:pattern") != combo);
+    combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
+    QCOMPARE(combo->currentText(), QString("my.slipwarning"));
+
+    // Typing a name picks what it names: a built-in by name, the user's pattern by its file.
+    for (const QString &name : {QString("vib.geiger"), QString("my.slipwarning")}) {
+        combo = f.editor.inspector()->findChild<QComboBox *>("param:pattern");
+        combo->lineEdit()->selectAll();
+        QTest::keyClicks(combo->lineEdit(), name);
+        QTest::keyClick(combo->lineEdit(), Qt::Key_Return);
+        QTRY_COMPARE(stored(), name == "vib.geiger" ? name : path);
+        QCoreApplication::processEvents(); // the inspector rebuilds queued
+    }
+
+    // Saved, the router names the file, as the core reads it (self-contained embeds it).
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(f.editor.saveFile(dir.filePath("plain.json"), false, &error), qPrintable(error));
+    RouterGraph plain;
+    LoadError loadError;
+    QVERIFY(RouterGraph::fromFile(dir.filePath("plain.json"), &plain, &loadError));
+    QCOMPARE(plain.nodes[size_t(plain.nodeIndex("left.geiger"))].params.value("pattern"), path);
     QFile::remove(path);
+}
+
+void TestRouterEditor::followsARenamedPattern()
+{
+    // The designer renamed a user pattern: the nodes that name its file name the new one, as
+    // one undoable step; nodes naming other patterns are left alone.
+    Fixture f;
+    f.editor.setGraph(preset("C3"));
+    const QString from = "/tmp/patterns/mine.json";
+    const QString to = "/tmp/patterns/yours.json";
+    f.editor.setParam("left.geiger", "pattern", from);
+    f.editor.setParam("right.geiger", "pattern", from);
+    const QString squeeze = f.editor.graph()
+                                .nodes[size_t(f.editor.graph().nodeIndex("right.squeeze"))]
+                                .params.value("pattern")
+                                .toString();
+    const int steps = f.editor.undoStack()->count();
+    f.editor.followRenamedPattern(from, to);
+    const auto pattern = [&f](const char *id) {
+        return f.editor.graph()
+            .nodes[size_t(f.editor.graph().nodeIndex(id))]
+            .params.value("pattern")
+            .toString();
+    };
+    QCOMPARE(pattern("left.geiger"), to);
+    QCOMPARE(pattern("right.geiger"), to);
+    QCOMPARE(pattern("right.squeeze"), squeeze);
+    QCOMPARE(f.editor.undoStack()->count(), steps + 1);
+    f.editor.undoStack()->undo();
+    QCOMPARE(pattern("left.geiger"), from);
+    QCOMPARE(pattern("right.geiger"), from);
+    // Nothing names the file: no step.
+    f.editor.followRenamedPattern("/tmp/patterns/other.json", to);
+    QCOMPARE(f.editor.undoStack()->index(), steps);
 }
 
 void TestRouterEditor::engineSwapsWhileRunning()

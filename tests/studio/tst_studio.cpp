@@ -23,6 +23,7 @@
 #include "routerscene.h"
 #include "simviewport.h"
 #include "studio.h"
+#include "userpatterns.h"
 #include "waveformdesigner.h"
 #include "widgetchecks.h"
 #include "workspace.h"
@@ -47,6 +48,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 #include <QUndoStack>
 
 #include <qcustomplot.h>
@@ -54,6 +56,54 @@
 using namespace semhap;
 
 namespace {
+
+/**
+ * A home folder of the test's own for as long as it lives: the user pattern folder, the
+ * sessions folder and the documents folder are in it.
+ */
+class OwnHome
+{
+public:
+    OwnHome()
+    {
+        for (const char *name : {"HOME", "XDG_CONFIG_HOME", "XDG_DATA_HOME"})
+            m_saved.append({name, qgetenv(name), qEnvironmentVariableIsSet(name)});
+        QDir(m_home.path()).mkpath("Documents");
+        qputenv("HOME", m_home.path().toUtf8());
+        qputenv("XDG_CONFIG_HOME", m_home.filePath(".config").toUtf8());
+        qputenv("XDG_DATA_HOME", m_home.filePath(".local/share").toUtf8());
+    }
+    ~OwnHome()
+    {
+        for (const Saved &saved : m_saved) {
+            if (saved.set)
+                qputenv(saved.name, saved.value);
+            else
+                qunsetenv(saved.name);
+        }
+    }
+    QString documents() const { return m_home.filePath("Documents"); }
+
+private:
+    struct Saved
+    {
+        const char *name;
+        QByteArray value;
+        bool set;
+    };
+    QTemporaryDir m_home;
+    QList<Saved> m_saved;
+};
+
+/** Clicks the toolbar button of the designer's action `name`. */
+void clickDesignerAction(MainWindow &window, const QString &name)
+{
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    auto *bar = window.waveformDesigner()->findChild<QToolBar *>("designerToolBar");
+    QWidget *button = bar->widgetForAction(window.waveformDesigner()->findChild<QAction *>(name));
+    QVERIFY(button);
+    QTest::mouseClick(button, Qt::LeftButton);
+}
 
 /** The window sizes and languages a picture of a new piece of the window is taken at. */
 void addWindowRows()
@@ -121,6 +171,8 @@ private slots:
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
     void saysWhenTheTaskIsDone();
+    void routerFollowsARenamedPattern_data();
+    void routerFollowsARenamedPattern();
 
 private:
     StudioOptions options() const;
@@ -918,6 +970,75 @@ void TestStudio::saysWhenTheTaskIsDone()
     QTRY_COMPARE(rebuilt.viewport()->notice(), QString());
     QTRY_COMPARE(rebuilt.metricsPanel()->findChild<QLabel *>("completion_time")->text(),
                  MetricsPanel::format("completion_time", QJsonValue()));
+}
+
+void TestStudio::routerFollowsARenamedPattern_data()
+{
+    addWindowRows();
+}
+
+void TestStudio::routerFollowsARenamedPattern()
+{
+    // A router node plays one of the user's patterns, listed by its name; renamed in the
+    // Patterns dock (a taken name refused first), the node follows the file, the inspector
+    // shows the new name and the graph still compiles.
+    OwnHome home; // the user pattern folder is in it
+    StudioOptions o = options();
+    o.autoRun = false;
+    const std::unique_ptr<Studio> studio = startStudio(o);
+    MainWindow &window = *studio->window();
+    QVERIFY(window.isActiveWindow());
+    WaveformDesigner *designer = window.waveformDesigner();
+    QCOMPARE(designer->userFolder(), userPatternFolder());
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    designer->openBuiltin("air.squeeze");
+    designer->duplicate();
+    clickDesignerAction(window, "savePattern"); // air.squeeze.copy: a name to collide with
+    designer->openBuiltin("vib.geiger");
+    designer->duplicate();
+    clickDesignerAction(window, "savePattern");
+    const QString old = designer->document()->path();
+    QVERIFY(QFileInfo::exists(old));
+    RouterEditor *editor = window.routerEditor();
+    editor->setParam("right.geiger", "pattern", old);
+    QCOMPARE(editor->validate(), QStringList());
+
+    designer->document()->setValue("/name", "air.squeeze.copy");
+    clickDesignerAction(window, "savePattern");
+    QVERIFY(QFileInfo::exists(old));
+    QVERIFY2(window.statusBar()->currentMessage().contains("air.squeeze.copy"),
+             qPrintable(window.statusBar()->currentMessage()));
+    QTest::qWait(100); // the inspector rebuilds queued
+    savePicture(&window, "pattern-rename-refused");
+
+    designer->document()->setValue("/name", "my.warning");
+    clickDesignerAction(window, "savePattern");
+    const QString renamed = userPatternPath(userPatternFolder(), "my.warning");
+    QVERIFY(QFileInfo::exists(renamed));
+    QVERIFY(!QFileInfo::exists(old));
+    const RouterGraph &graph = editor->graph();
+    const auto pattern = [&graph] {
+        return graph.nodes[size_t(graph.nodeIndex("right.geiger"))]
+            .params.value("pattern")
+            .toString();
+    };
+    QCOMPARE(pattern(), renamed);
+    QCOMPARE(editor->validate(), QStringList());
+
+    // The inspector shows the node's pattern by its name.
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    editor->scene()->clearSelection();
+    editor->scene()->nodeItem("right.geiger")->setSelected(true);
+    QComboBox *picker = nullptr;
+    QTRY_VERIFY((picker = editor->inspector()->findChild<QComboBox *>("param:pattern")));
+    QTRY_COMPARE(picker->currentText(), QString("my.warning"));
+    editor->view()->centerOn(editor->scene()->nodeItem("right.geiger"));
+    QTest::qWait(200);
+    savePicture(&window, "router-user-pattern");
+
+    // One step back in the editor names the old file again.
+    editor->undoStack()->undo();
+    QCOMPARE(pattern(), old);
 }
 
 QTEST_MAIN(TestStudio)

@@ -20,8 +20,10 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -29,7 +31,6 @@
 #include <QSlider>
 #include <QTabWidget>
 #include <QTemporaryDir>
-#include <QElapsedTimer>
 #include <QTest>
 #include <QToolBar>
 #include <QTreeWidget>
@@ -81,6 +82,46 @@ struct Fixture
             }
         }
         QFAIL(qPrintable(QStringLiteral("no tree node %1").arg(pointer)));
+    }
+    /** Clicks a library entry, as a user picks a pattern. */
+    void clickLibraryItem(const QString &text) const
+    {
+        auto *library = child<QListWidget>(QStringLiteral("library"));
+        const QList<QListWidgetItem *> items = library->findItems(text, Qt::MatchExactly);
+        QCOMPARE(items.size(), 1);
+        library->scrollToItem(items.first());
+        QTest::mouseClick(library->viewport(), Qt::LeftButton, {},
+                          library->visualItemRect(items.first()).center());
+    }
+    /** The library's entries, as shown. */
+    QStringList libraryTexts() const
+    {
+        QStringList texts;
+        auto *library = child<QListWidget>(QStringLiteral("library"));
+        for (int i = 0; i < library->count(); ++i)
+            texts.append(library->item(i)->text());
+        return texts;
+    }
+    /** Saves a copy of the built-in `builtin` as a user pattern; its file. */
+    QString saveCopyOf(const QString &builtin) const
+    {
+        clickLibraryItem(builtin);
+        trigger(QStringLiteral("duplicatePattern"));
+        trigger(QStringLiteral("savePattern"));
+        return designer.document()->path();
+    }
+    /** Types a new name into the pattern's Name field, as a user renames it. */
+    void typeName(const QString &name) const
+    {
+        clickTreeNode(QString());
+        QCoreApplication::processEvents(); // the inspector rebuilds queued
+        auto *field = child<QLineEdit>(QStringLiteral("field:name"));
+        QVERIFY(field);
+        QTest::mouseClick(field, Qt::LeftButton);
+        field->selectAll();
+        QTest::keyClicks(field, name);
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(designer.document()->json().value(QLatin1String("name")).toString(), name);
     }
     /** Types `text` into a number field of the inspector and presses Enter. */
     void typeNumber(const QString &field, const QString &text) const
@@ -144,6 +185,9 @@ private slots:
     void undoRedoRestoresJson();
     void documentStructureEdits();
     void duplicateSaveOpen();
+    void renamingMovesTheFile();
+    void takenNamesAreRefused_data();
+    void takenNamesAreRefused();
     void builtinIsReadOnly();
     void pneumaticSmearsPulses();
     void jsonTabShowsErrors();
@@ -267,6 +311,92 @@ void TestWaveformDesigner::duplicateSaveOpen()
     QCOMPARE(f.designer.document()->json(), saved);
     QVERIFY(f.designer.document()->pattern());
     QVERIFY(!f.designer.document()->isReadOnly());
+}
+
+void TestWaveformDesigner::renamingMovesTheFile()
+{
+    // A saved pattern renamed in its Name field: Save writes it under the new name, removes
+    // the old file, lists it under the new name, and says so (routers follow the signal).
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    const QString old = f.saveCopyOf(QStringLiteral("vib.geiger"));
+    QCOMPARE(old, f.folder.filePath(QStringLiteral("vib.geiger.copy.json")));
+    QVERIFY(QFileInfo::exists(old));
+    f.typeName(QStringLiteral("my.buzz"));
+    QSignalSpy renamed(&f.designer, &WaveformDesigner::patternRenamed);
+    f.trigger(QStringLiteral("savePattern"));
+    const QString moved = f.folder.filePath(QStringLiteral("my.buzz.json"));
+    QVERIFY(QFileInfo::exists(moved));
+    QVERIFY(!QFileInfo::exists(old));
+    QCOMPARE(QDir(f.folder.path()).entryList(QDir::Files | QDir::Hidden),
+             QStringList{QStringLiteral("my.buzz.json")});
+    QCOMPARE(f.designer.document()->path(), moved);
+    QVERIFY(!f.designer.document()->isModified());
+    QFile file(moved);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(QJsonDocument::fromJson(file.readAll()).object().value(QLatin1String("name")),
+             QStringLiteral("my.buzz"));
+    QVERIFY(f.libraryTexts().contains(QStringLiteral("my.buzz")));
+    QVERIFY(!f.libraryTexts().contains(QStringLiteral("vib.geiger.copy")));
+    QCOMPARE(renamed.count(), 1);
+    QCOMPARE(renamed.first(), (QVariantList{old, moved}));
+
+    // Saved again under the same name: nothing moves.
+    f.clickTreeNode(QStringLiteral("/tracks/0/sustain"));
+    f.typeNumber(QStringLiteral("width"), QStringLiteral("0.03"));
+    f.trigger(QStringLiteral("savePattern"));
+    QCOMPARE(renamed.count(), 1);
+    QVERIFY(QFileInfo::exists(moved));
+}
+
+void TestWaveformDesigner::takenNamesAreRefused_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("another user pattern's") << "mine"
+                                            << "Another of your patterns";
+    QTest::newRow("a built-in's") << "air.squeeze"
+                                  << "built-in";
+    QTest::newRow("not a file name") << "a/b"
+                                     << "cannot name a file";
+    QTest::newRow("hidden") << ".hidden"
+                            << "cannot name a file";
+    // Its file could be written, not the temporary beside it: the write fails, late.
+    QTest::newRow("too long to write") << QString(248, QLatin1Char('x')) << "cannot write";
+}
+
+void TestWaveformDesigner::takenNamesAreRefused()
+{
+    // A rename that cannot be done says why and moves nothing: both patterns' files stay as
+    // they were and the edit stays unsaved.
+    QFETCH(QString, name);
+    QFETCH(QString, reason);
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.saveCopyOf(QStringLiteral("air.squeeze"));
+    f.typeName(QStringLiteral("mine"));
+    f.trigger(QStringLiteral("savePattern"));
+    const QString other = f.saveCopyOf(QStringLiteral("vib.geiger"));
+    QVERIFY(QFileInfo::exists(f.folder.filePath(QStringLiteral("mine.json"))));
+    QFile file(other);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray contents = file.readAll();
+    file.close();
+    const QStringList files = QDir(f.folder.path()).entryList(QDir::Files | QDir::Hidden);
+
+    f.typeName(name);
+    QSignalSpy messages(&f.designer, &WaveformDesigner::message);
+    QSignalSpy renamed(&f.designer, &WaveformDesigner::patternRenamed);
+    f.trigger(QStringLiteral("savePattern"));
+    QCOMPARE(messages.count(), 1);
+    QVERIFY2(messages.first().first().toString().contains(reason),
+             qPrintable(messages.first().first().toString()));
+    QCOMPARE(renamed.count(), 0);
+    QCOMPARE(QDir(f.folder.path()).entryList(QDir::Files | QDir::Hidden), files);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), contents);
+    QCOMPARE(f.designer.document()->path(), other);
+    QVERIFY(f.designer.document()->isModified());
 }
 
 void TestWaveformDesigner::builtinIsReadOnly()
