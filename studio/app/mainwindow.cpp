@@ -5,6 +5,7 @@
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "eventlogpanel.h"
+#include "filedialogs.h"
 #include "gamepadinput.h"
 #include "handdrive.h"
 #include "liverigdialog.h"
@@ -29,7 +30,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDockWidget>
-#include <QFileDialog>
+#include <QFileInfo>
 #include <QJsonValue>
 #include <QKeyEvent>
 #include <QLabel>
@@ -277,8 +278,8 @@ void MainWindow::createActions()
     m_openSceneAction =
         action(tr("Open scene…"), QStringLiteral("openSceneAction"), QKeySequence::Open);
     connect(m_openSceneAction, &QAction::triggered, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(),
-                                                          tr("MuJoCo scenes (*.xml)"));
+        const QString file = FileDialogs::openFile(this, FileKind::Scene, tr("Open scene"),
+                                                   tr("MuJoCo scenes (*.xml)"));
         if (file.isEmpty())
             return;
         RunOptions options = m_engine.options();
@@ -288,8 +289,8 @@ void MainWindow::createActions()
     m_openRouterAction = action(tr("Open router…"), QStringLiteral("openRouterAction"),
                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     connect(m_openRouterAction, &QAction::triggered, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Open router"), QString(),
-                                                          tr("semhap routers (*.json)"));
+        const QString file = FileDialogs::openFile(this, FileKind::Router, tr("Open router"),
+                                                   tr("semhap routers (*.json)"));
         if (file.isEmpty())
             return;
         switchRouter(file);
@@ -304,9 +305,8 @@ void MainWindow::createActions()
     m_openSessionAction = action(tr("Open session…"), QStringLiteral("openSessionAction"),
                                  QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O));
     connect(m_openSessionAction, &QAction::triggered, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(
-            this, tr("Open session"), PreferencesDialog::sessionsFolder(),
-            tr("semhap sessions (*.db);;All files (*)"));
+        const QString file = FileDialogs::openFile(this, FileKind::Session, tr("Open session"),
+                                                   tr("semhap sessions (*.db);;All files (*)"));
         if (!file.isEmpty())
             openSession(file);
     });

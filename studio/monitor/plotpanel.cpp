@@ -2,9 +2,9 @@
 #include "plotpanel.h"
 
 #include "colors.h"
+#include "filedialogs.h"
 #include "outputfile.h"
 
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -169,9 +169,11 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     auto *windowLabel = new QLabel(tr("&Window:"), this);
     windowLabel->setBuddy(m_windowSpin);
     auto *csvButton = new QToolButton(this);
+    csvButton->setObjectName(QStringLiteral("exportCsv"));
     csvButton->setText(tr("Export CSV…"));
     csvButton->setToolTip(tr("Save the visible time range as CSV"));
     auto *pngButton = new QToolButton(this);
+    pngButton->setObjectName(QStringLiteral("exportPng"));
     pngButton->setText(tr("Export PNG…"));
     pngButton->setToolTip(tr("Save the plots as an image"));
 
@@ -967,8 +969,8 @@ bool PlotPanel::exportPng(const QString &path, QString *error)
 
 void PlotPanel::exportCsvDialog()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Plots as CSV"), QString(),
-                                                      tr("CSV files (*.csv)"));
+    const QString path = FileDialogs::saveFile(
+        this, FileKind::PlotExport, tr("Export Plots as CSV"), QString(), tr("CSV files (*.csv)"));
     QString error;
     if (!path.isEmpty() && !exportCsv(path, &error))
         QMessageBox::warning(this, tr("Export CSV"), error);
@@ -976,8 +978,9 @@ void PlotPanel::exportCsvDialog()
 
 void PlotPanel::exportPngDialog()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Plots as PNG"), QString(),
-                                                      tr("PNG images (*.png)"));
+    const QString path =
+        FileDialogs::saveFile(this, FileKind::PlotExport, tr("Export Plots as PNG"), QString(),
+                              tr("PNG images (*.png)"));
     QString error;
     if (!path.isEmpty() && !exportPng(path, &error))
         QMessageBox::warning(this, tr("Export PNG"), error);

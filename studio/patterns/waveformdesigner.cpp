@@ -3,6 +3,7 @@
 
 #include "colors.h"
 #include "devicemanager.h"
+#include "filedialogs.h"
 #include "hapticconverter.h"
 #include "jsonreader.h"
 #include "nodeinspector.h"
@@ -19,7 +20,6 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -224,16 +224,15 @@ void WaveformDesigner::createActions()
     // No Ctrl+O: the main window opens scenes with it, and a shared shortcut fires neither.
     action(tr("Open…"), QStringLiteral("openPattern"), {}, nullptr)
         ->setToolTip(tr("Open a pattern, an AHAP or a .haptic file"));
-    connect(findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this,
-            [this] {
-                const QString path =
-                    QFileDialog::getOpenFileName(this, tr("Open pattern"), m_userFolder,
-                                                 tr("Patterns and haptic files "
-                                                    "(*.json *.ahap *.haptic)"));
-                QString error;
-                if (!path.isEmpty() && !openFile(path, &error))
-                    reportError(tr("Could not open %1").arg(path), error);
-            });
+    connect(
+        findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this, [this] {
+            const QString path =
+                FileDialogs::openFile(this, FileKind::Pattern, tr("Open pattern"),
+                                      tr("Patterns and haptic files (*.json *.ahap *.haptic)"));
+            QString error;
+            if (!path.isEmpty() && !openFile(path, &error))
+                reportError(tr("Could not open %1").arg(path), error);
+        });
     m_saveAction = action(tr("Save"), QStringLiteral("savePattern"), QKeySequence::Save,
                           &WaveformDesigner::save);
     action(tr("Save as…"), QStringLiteral("saveAsPattern"), QKeySequence::SaveAs,
@@ -697,9 +696,9 @@ bool WaveformDesigner::saveUserPattern()
 void WaveformDesigner::saveAs()
 {
     const QString name = m_document->json().value(QLatin1String("name")).toString();
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save pattern"), QDir(m_userFolder).filePath(name + QStringLiteral(".json")),
-        tr("Patterns (*.json)"));
+    const QString path =
+        FileDialogs::saveFile(this, FileKind::Pattern, tr("Save pattern"),
+                              userPatternPath(m_userFolder, name), tr("Patterns (*.json)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, &error))
         reportError(tr("Could not save %1").arg(path), error);
@@ -707,8 +706,9 @@ void WaveformDesigner::saveAs()
 
 void WaveformDesigner::importFile()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import haptic file"), QString(),
-                                                      tr("Haptic files (*.ahap *.haptic)"));
+    const QString path =
+        FileDialogs::openFile(this, FileKind::HapticFile, tr("Import haptic file"),
+                              tr("Haptic files (*.ahap *.haptic)"));
     QString error;
     if (!path.isEmpty() && !openFile(path, &error))
         reportError(tr("Could not import %1").arg(path), error);
@@ -717,9 +717,9 @@ void WaveformDesigner::importFile()
 void WaveformDesigner::exportFile()
 {
     const QString name = m_document->json().value(QLatin1String("name")).toString();
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export pattern"), name + QStringLiteral(".ahap"),
-                                     tr("Apple AHAP (*.ahap);;Meta Haptics (*.haptic)"));
+    const QString path = FileDialogs::saveFile(this, FileKind::HapticFile, tr("Export pattern"),
+                                               name + QStringLiteral(".ahap"),
+                                               tr("Apple AHAP (*.ahap);;Meta Haptics (*.haptic)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, &error))
         reportError(tr("Could not export %1").arg(path), error);

@@ -2,6 +2,7 @@
 #include "routereditor.h"
 
 #include "colors.h"
+#include "filedialogs.h"
 #include "inputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
@@ -18,7 +19,6 @@
 #include <QClipboard>
 #include <QComboBox>
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGraphicsView>
@@ -301,8 +301,8 @@ QList<QAction *> RouterEditor::createActions()
     }
     menu->addSeparator();
     item(menu, tr("Open…"), [this] {
-        const QString path = QFileDialog::getOpenFileName(
-            this, tr("Open router"), m_document->path(), tr("semhap routers (*.json)"));
+        const QString path = FileDialogs::openFile(this, FileKind::Router, tr("Open router"),
+                                                   tr("semhap routers (*.json)"));
         QString error;
         if (!path.isEmpty() && !openFile(path, &error))
             showStatus(error, true);
@@ -577,9 +577,14 @@ bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *er
 
 void RouterEditor::exportDialog(bool selfContained)
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, selfContained ? tr("Save self-contained router") : tr("Save router"),
-        m_document->path(), tr("semhap routers (*.json)"));
+    // A router opened from a file is offered back to its file.
+    const QString path =
+        FileDialogs::saveFile(this, FileKind::Router,
+                              selfContained ? tr("Save self-contained router") : tr("Save router"),
+                              !m_document->path().isEmpty() ? m_document->path()
+                              : graph().name.isEmpty()      ? QString()
+                                                       : graph().name + QStringLiteral(".json"),
+                              tr("semhap routers (*.json)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, selfContained, &error))
         showStatus(error, true);

@@ -34,11 +34,13 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QGraphicsView>
 #include <QImage>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
@@ -52,6 +54,8 @@
 #include <QUndoStack>
 
 #include <qcustomplot.h>
+
+#include <functional>
 
 using namespace semhap;
 
@@ -94,6 +98,28 @@ private:
     QTemporaryDir m_home;
     QList<Saved> m_saved;
 };
+
+/**
+ * Does `open` (which opens a file dialog) and answers the dialog: with `answer` when given,
+ * else Cancel. The folder the dialog started in.
+ */
+QString dialogFolder(const std::function<void()> &open, const QString &answer = QString())
+{
+    QString folder = QStringLiteral("(no file dialog)");
+    QTimer::singleShot(0, [&folder, answer] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        folder = dialog->directory().absolutePath();
+        if (answer.isEmpty()) {
+            dialog->reject();
+            return;
+        }
+        dialog->selectFile(answer);
+        QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog, Qt::Key_Return);
+    });
+    open();
+    return folder;
+}
 
 /** Clicks the toolbar button of the designer's action `name`. */
 void clickDesignerAction(MainWindow &window, const QString &name)
@@ -171,6 +197,9 @@ private slots:
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
     void saysWhenTheTaskIsDone();
+    void fileDialogsStartWhereTheirKindLives_data();
+    void fileDialogsStartWhereTheirKindLives();
+    void fileDialogsRememberTheirKindsFolder();
     void routerFollowsARenamedPattern_data();
     void routerFollowsARenamedPattern();
 
@@ -970,6 +999,99 @@ void TestStudio::saysWhenTheTaskIsDone()
     QTRY_COMPARE(rebuilt.viewport()->notice(), QString());
     QTRY_COMPARE(rebuilt.metricsPanel()->findChild<QLabel *>("completion_time")->text(),
                  MetricsPanel::format("completion_time", QJsonValue()));
+}
+
+void TestStudio::fileDialogsStartWhereTheirKindLives_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::addColumn<QString>("folder"); ///< sessions, patterns or documents
+    QTest::newRow("open session") << "key:Ctrl+Alt+O"
+                                  << "sessions";
+    QTest::newRow("open scene") << "key:Ctrl+O"
+                                << "documents";
+    QTest::newRow("open router") << "key:Ctrl+Shift+O"
+                                 << "documents";
+    QTest::newRow("designer: open pattern") << "designer:openPattern"
+                                            << "patterns";
+    QTest::newRow("designer: save as") << "designer:saveAsPattern"
+                                       << "patterns";
+    QTest::newRow("designer: import") << "designer:importPattern"
+                                      << "documents";
+    QTest::newRow("designer: export") << "designer:exportPattern"
+                                      << "documents";
+    QTest::newRow("router editor: open") << "router:Open…"
+                                         << "documents";
+    QTest::newRow("router editor: save") << "router:Save…"
+                                         << "documents";
+    QTest::newRow("plots: CSV") << "plots:exportCsv"
+                                << "documents";
+    QTest::newRow("plots: PNG") << "plots:exportPng"
+                                << "documents";
+}
+
+namespace {
+
+/** Opens the file dialog `how` names: a shortcut, a designer action, a router editor menu
+ * entry or a plots button. */
+void openDialog(MainWindow &window, const QString &how)
+{
+    const QString what = how.section(':', 1);
+    if (how.startsWith("key:")) {
+        const QKeySequence key(what);
+        QTest::keyClick(&window, key[0].key(), key[0].keyboardModifiers());
+    } else if (how.startsWith("designer:")) {
+        clickDesignerAction(window, what);
+    } else if (how.startsWith("router:")) {
+        window.findChild<QDockWidget *>("routerDock")->raise();
+        for (QAction *action : window.routerEditor()->findChild<QMenu *>("routerMenu")->actions())
+            if (action->text() == what)
+                action->trigger();
+    } else {
+        window.findChild<QDockWidget *>("plotsDock")->raise();
+        QTest::mouseClick(window.plots()->findChild<QToolButton *>(what), Qt::LeftButton);
+    }
+}
+
+} // namespace
+
+void TestStudio::fileDialogsStartWhereTheirKindLives()
+{
+    QFETCH(QString, how);
+    QFETCH(QString, folder);
+    OwnHome home;
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    window.engine().pause();
+    const QString expected = folder == "sessions"   ? PreferencesDialog::sessionsFolder()
+                             : folder == "patterns" ? userPatternFolder()
+                                                    : home.documents();
+    QCOMPARE(dialogFolder([&] { openDialog(window, how); }), QDir(expected).absolutePath());
+}
+
+void TestStudio::fileDialogsRememberTheirKindsFolder()
+{
+    // The folder a kind of file was last saved to is where its next dialog starts, in the
+    // next window too; other kinds keep theirs.
+    OwnHome home;
+    QTemporaryDir exports;
+    {
+        Workspace workspace;
+        MainWindow window(workspace, options());
+        QVERIFY(openWindow(window));
+        window.engine().pause();
+        dialogFolder([&] { openDialog(window, "plots:exportCsv"); }, exports.filePath("a.csv"));
+        QVERIFY(QFileInfo::exists(exports.filePath("a.csv")));
+        QCOMPARE(dialogFolder([&] { openDialog(window, "plots:exportPng"); }), exports.path());
+    }
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    window.engine().pause();
+    QCOMPARE(dialogFolder([&] { openDialog(window, "plots:exportCsv"); }), exports.path());
+    QCOMPARE(dialogFolder([&] { openDialog(window, "key:Ctrl+Shift+O"); }), home.documents());
+    QCOMPARE(dialogFolder([&] { openDialog(window, "designer:importPattern"); }),
+             home.documents());
 }
 
 void TestStudio::routerFollowsARenamedPattern_data()

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#include "filedialogs.h"
+
+#include "preferencesdialog.h"
+#include "userpatterns.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+
+namespace semhap {
+
+namespace {
+
+/** Where the folder last used for `kind` is kept; empty for a kind with a fixed home. */
+QString settingsKey(FileKind kind)
+{
+    switch (kind) {
+    case FileKind::Session:
+    case FileKind::Pattern:
+        break;
+    case FileKind::Router:
+        return QStringLiteral("fileDialogs/routers");
+    case FileKind::Scene:
+        return QStringLiteral("fileDialogs/scenes");
+    case FileKind::HapticFile:
+        return QStringLiteral("fileDialogs/hapticFiles");
+    case FileKind::PlotExport:
+        return QStringLiteral("fileDialogs/plotExports");
+    }
+    return QString();
+}
+
+} // namespace
+
+QString FileDialogs::startFolder(FileKind kind)
+{
+    QString home;
+    if (kind == FileKind::Session)
+        home = PreferencesDialog::sessionsFolder();
+    else if (kind == FileKind::Pattern)
+        home = userPatternFolder();
+    if (!home.isEmpty()) {
+        QDir().mkpath(home); // the studio's own folders: a dialog opens in them even when new
+        return home;
+    }
+    const QString last = QSettings().value(settingsKey(kind)).toString();
+    if (!last.isEmpty() && QFileInfo(last).isDir())
+        return last;
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return documents.isEmpty() ? QDir::homePath() : documents;
+}
+
+void FileDialogs::remember(FileKind kind, const QString &path)
+{
+    const QString key = settingsKey(kind);
+    if (!key.isEmpty() && !path.isEmpty())
+        QSettings().setValue(key, QFileInfo(path).absolutePath());
+}
+
+QString FileDialogs::openFile(QWidget *parent, FileKind kind, const QString &caption,
+                              const QString &filter)
+{
+    const QString path = QFileDialog::getOpenFileName(parent, caption, startFolder(kind), filter);
+    remember(kind, path);
+    return path;
+}
+
+QString FileDialogs::saveFile(QWidget *parent, FileKind kind, const QString &caption,
+                              const QString &name, const QString &filter)
+{
+    const QString start = startFolder(kind); // made if it is the kind's own folder
+    const QString offered = QFileInfo(name).isAbsolute() ? name : QDir(start).filePath(name);
+    const QString path = QFileDialog::getSaveFileName(parent, caption, offered, filter);
+    remember(kind, path);
+    return path;
+}
+
+} // namespace semhap
