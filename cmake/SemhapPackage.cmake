@@ -52,6 +52,10 @@ install(FILES ${semhap_desktop}/semhap.bash-completion
     DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME semhap-studio)
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/../resources/traces/demo.jsonl
     DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
+# The manual and the reference pages with their pictures: the studio's Help → Documentation
+# opens the installed studio.md.
+install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}
+    FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
 
 # Man pages from the programs' own --help (help2man), so they list every option there is.
 find_program(HELP2MAN help2man)

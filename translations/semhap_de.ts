@@ -412,6 +412,88 @@
     </message>
 </context>
 <context>
+    <name>semhap::HandDrive</name>
+    <message>
+        <source>Move the wrist away from you</source>
+        <translation>Das Handgelenk von Ihnen weg bewegen</translation>
+    </message>
+    <message>
+        <source>Move the wrist towards you</source>
+        <translation>Das Handgelenk zu Ihnen hin bewegen</translation>
+    </message>
+    <message>
+        <source>Move the wrist to the left</source>
+        <translation>Das Handgelenk nach links bewegen</translation>
+    </message>
+    <message>
+        <source>Move the wrist to the right</source>
+        <translation>Das Handgelenk nach rechts bewegen</translation>
+    </message>
+    <message>
+        <source>Raise the wrist</source>
+        <translation>Das Handgelenk anheben</translation>
+    </message>
+    <message>
+        <source>Lower the wrist (it stops on what is below)</source>
+        <translation>Das Handgelenk senken (es hält auf dem an, was darunter liegt)</translation>
+    </message>
+    <message>
+        <source>Turn the wrist left</source>
+        <translation>Das Handgelenk nach links drehen</translation>
+    </message>
+    <message>
+        <source>Turn the wrist right</source>
+        <translation>Das Handgelenk nach rechts drehen</translation>
+    </message>
+    <message>
+        <source>Close or open the grip</source>
+        <translation>Den Griff schließen oder öffnen</translation>
+    </message>
+    <message>
+        <source>Grip force up a step</source>
+        <translation>Griffkraft eine Stufe höher</translation>
+    </message>
+    <message>
+        <source>Grip force down a step</source>
+        <translation>Griffkraft eine Stufe niedriger</translation>
+    </message>
+    <message>
+        <source>Switch hand (scenes with two)</source>
+        <translation>Hand wechseln (Szenen mit zwei Händen)</translation>
+    </message>
+    <message>
+        <source>Hold: move at a quarter of the speed</source>
+        <translation>Halten: mit einem Viertel der Geschwindigkeit bewegen</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::KeyMapDialog</name>
+    <message>
+        <source>Key map</source>
+        <translation>Tastenbelegung</translation>
+    </message>
+    <message>
+        <source>Anywhere in the window</source>
+        <translation>Überall im Fenster</translation>
+    </message>
+    <message>
+        <source>In the viewport (click it first)</source>
+        <translation>In der Szenenansicht (zuerst hineinklicken)</translation>
+    </message>
+    <message>
+        <source>In the %1 panel</source>
+        <translation>Im Bereich %1</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation>Was sie tun</translation>
+    </message>
+</context>
+<context>
     <name>semhap::LiveRigDialog</name>
     <message>
         <source>Listen for a live rig</source>
@@ -842,6 +924,38 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
         <translation>Der Router-Editor behält Ihre Änderungen, die gerade nicht laufen: Anwenden startet sie.</translation>
+    </message>
+    <message>
+        <source>Key map</source>
+        <translation>Tastenbelegung</translation>
+    </message>
+    <message>
+        <source>Every shortcut and drive key of the window</source>
+        <translation>Alle Tastenkürzel und Steuertasten des Fensters</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Dokumentation</translation>
+    </message>
+    <message>
+        <source>Open the studio&apos;s manual</source>
+        <translation>Das Handbuch des Studios öffnen</translation>
+    </message>
+    <message>
+        <source>The manual is not installed</source>
+        <translation>Das Handbuch ist nicht installiert</translation>
+    </message>
+    <message>
+        <source>Read docs/studio.md in semhap&apos;s sources.</source>
+        <translation>Lesen Sie docs/studio.md in den Quellen von semhap.</translation>
+    </message>
+    <message>
+        <source>Could not open the manual</source>
+        <translation>Das Handbuch konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>No program opens %1.</source>
+        <translation>Kein Programm öffnet %1.</translation>
     </message>
     <message>
         <source>Task done

@@ -412,6 +412,88 @@
     </message>
 </context>
 <context>
+    <name>semhap::HandDrive</name>
+    <message>
+        <source>Move the wrist away from you</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the wrist towards you</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the wrist to the left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the wrist to the right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Raise the wrist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower the wrist (it stops on what is below)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the wrist left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the wrist right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close or open the grip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip force up a step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip force down a step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch hand (scenes with two)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold: move at a quarter of the speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::KeyMapDialog</name>
+    <message>
+        <source>Key map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Anywhere in the window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In the viewport (click it first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In the %1 panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::LiveRigDialog</name>
     <message>
         <source>Listen for a live rig</source>
@@ -840,6 +922,39 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>The router editor keeps your edits, which are not what runs now: Apply runs them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Key map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every shortcut and drive key of the window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the studio&apos;s manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The manual is not installed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read docs/studio.md in semhap&apos;s sources.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open the manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No program opens %1.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Task done

@@ -8,6 +8,7 @@
 #include "filedialogs.h"
 #include "gamepadinput.h"
 #include "handdrive.h"
+#include "keymapdialog.h"
 #include "liverigdialog.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
@@ -20,6 +21,7 @@
 #include "sessionreplay.h"
 #include "simviewport.h"
 #include "spacemouseinput.h"
+#include "studio.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
 #include "workspace.h"
@@ -29,6 +31,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDesktopServices>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QJsonValue>
@@ -541,7 +544,48 @@ void MainWindow::createMenus()
     view->addAction(m_resetLayoutAction);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    addHelpActions(help);
     help->addAction(m_aboutAction);
+}
+
+void MainWindow::addHelpActions(QMenu *help)
+{
+    auto *keyMap = new QAction(tr("Key map"), this);
+    keyMap->setObjectName(QStringLiteral("keyMapAction"));
+    keyMap->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
+    keyMap->setToolTip(tr("Every shortcut and drive key of the window"));
+    connect(keyMap, &QAction::triggered, this, [this] {
+        // One map at a time; it stays open beside the window while the user drives.
+        auto *dialog = findChild<KeyMapDialog *>();
+        if (!dialog) {
+            dialog = new KeyMapDialog(this);
+            dialog->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
+    auto *manual = new QAction(tr("Documentation"), this);
+    manual->setObjectName(QStringLiteral("documentationAction"));
+    manual->setShortcut(QKeySequence::HelpContents);
+    manual->setToolTip(tr("Open the studio's manual"));
+    connect(manual, &QAction::triggered, this, &MainWindow::showManual);
+    for (QAction *action : {keyMap, manual}) {
+        addAction(action);
+        help->addAction(action);
+    }
+    help->addSeparator();
+}
+
+void MainWindow::showManual()
+{
+    const QUrl url = Studio::manualUrl();
+    if (url.isEmpty())
+        showError(tr("The manual is not installed"),
+                  tr("Read docs/studio.md in semhap's sources."));
+    else if (!QDesktopServices::openUrl(url))
+        showError(tr("Could not open the manual"),
+                  tr("No program opens %1.").arg(url.toDisplayString()));
 }
 
 void MainWindow::createStatusBar()

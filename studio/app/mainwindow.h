@@ -10,6 +10,7 @@ class QActionGroup;
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QMenu;
 class QToolBar;
 
 namespace semhap {
@@ -130,6 +131,10 @@ private:
     void updateMode();
     /** Runs `router` on what runs now: the scene, or the live rig. */
     void switchRouter(const QString &router);
+    /** Help → Key map and Help → Documentation, added to `help`. */
+    void addHelpActions(QMenu *help);
+    /** Opens the manual in the desktop's viewer, or says where it is not. */
+    void showManual();
     /** Says over the viewport that the task is done, once its metrics say so; else nothing. */
     void showTaskDone();
 

@@ -5,6 +5,8 @@
 #include "preferencesdialog.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QLibraryInfo>
 #include <QTimer>
 
@@ -97,6 +99,19 @@ void Studio::setLanguage(const QString &language)
     install(language);
     buildWindow();
     emit windowRebuilt();
+}
+
+QUrl Studio::manualUrl()
+{
+    // Installed: beside the programs, so an extracted package and any --prefix find it too.
+    const QStringList places{QDir(QCoreApplication::applicationDirPath())
+                                 .filePath(QStringLiteral(SEMHAP_DOCS_FROM_BINARY "/studio.md")),
+                             QStringLiteral(SEMHAP_SOURCE_DOCS "/studio.md")};
+    for (const QString &place : places) {
+        if (QFileInfo(place).isFile())
+            return QUrl::fromLocalFile(QFileInfo(place).canonicalFilePath());
+    }
+    return QUrl();
 }
 
 bool Studio::screenshot(QWidget *window, const QString &path, QString *error)

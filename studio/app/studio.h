@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QTranslator>
+#include <QUrl>
 
 #include <memory>
 
@@ -41,6 +42,12 @@ public:
      * it was and with its layout, over the same workspace.
      */
     void setLanguage(const QString &language);
+
+    /**
+     * The manual (docs/studio.md): installed with the programs (`share/doc/semhap`), else in
+     * the sources the build came from; empty when neither is there.
+     */
+    static QUrl manualUrl();
 
     /** Grabs the whole window, docks and viewport included, to a PNG. */
     static bool screenshot(QWidget *window, const QString &path, QString *error);

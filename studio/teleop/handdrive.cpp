@@ -23,6 +23,16 @@ constexpr double LongestTick = 0.25;
 // A trigger must move this much (of its travel) to take the grip: sensor noise does not.
 constexpr double GripDeadband = 0.02;
 
+/** What `key` does in the keyboard drive, if anything. */
+std::optional<DriveKeyAction> actionOf(int key)
+{
+    for (const DriveKey &entry : HandDrive::keyTable()) {
+        if (entry.key == key)
+            return entry.action;
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 HandDrive::HandDrive(QObject *parent) : QObject(parent)
@@ -94,9 +104,72 @@ bool HandDrive::hasBothHands() const
     return m_hands[0] && m_hands[1];
 }
 
+const std::vector<DriveKey> &HandDrive::keyTable()
+{
+    static const std::vector<DriveKey> keys{
+        {Qt::Key_W, DriveKeyAction::Away},
+        {Qt::Key_S, DriveKeyAction::Toward},
+        {Qt::Key_A, DriveKeyAction::Left},
+        {Qt::Key_D, DriveKeyAction::Right},
+        {Qt::Key_R, DriveKeyAction::Up},
+        {Qt::Key_Up, DriveKeyAction::Up},
+        {Qt::Key_PageUp, DriveKeyAction::Up},
+        {Qt::Key_F, DriveKeyAction::Down},
+        {Qt::Key_Down, DriveKeyAction::Down},
+        {Qt::Key_PageDown, DriveKeyAction::Down},
+        {Qt::Key_Q, DriveKeyAction::TurnLeft},
+        {Qt::Key_Left, DriveKeyAction::TurnLeft},
+        {Qt::Key_E, DriveKeyAction::TurnRight},
+        {Qt::Key_Right, DriveKeyAction::TurnRight},
+        {Qt::Key_Space, DriveKeyAction::Grip},
+        {Qt::Key_G, DriveKeyAction::Grip},
+        {Qt::Key_Plus, DriveKeyAction::MoreForce},
+        {Qt::Key_Equal, DriveKeyAction::MoreForce},
+        {Qt::Key_Minus, DriveKeyAction::LessForce},
+        {Qt::Key_Tab, DriveKeyAction::SwitchHand},
+        {Qt::Key_Backtab, DriveKeyAction::SwitchHand},
+        {Qt::Key_Shift, DriveKeyAction::Slow},
+    };
+    return keys;
+}
+
+QString HandDrive::actionText(DriveKeyAction action)
+{
+    switch (action) {
+    case DriveKeyAction::Away:
+        return tr("Move the wrist away from you");
+    case DriveKeyAction::Toward:
+        return tr("Move the wrist towards you");
+    case DriveKeyAction::Left:
+        return tr("Move the wrist to the left");
+    case DriveKeyAction::Right:
+        return tr("Move the wrist to the right");
+    case DriveKeyAction::Up:
+        return tr("Raise the wrist");
+    case DriveKeyAction::Down:
+        return tr("Lower the wrist (it stops on what is below)");
+    case DriveKeyAction::TurnLeft:
+        return tr("Turn the wrist left");
+    case DriveKeyAction::TurnRight:
+        return tr("Turn the wrist right");
+    case DriveKeyAction::Grip:
+        return tr("Close or open the grip");
+    case DriveKeyAction::MoreForce:
+        return tr("Grip force up a step");
+    case DriveKeyAction::LessForce:
+        return tr("Grip force down a step");
+    case DriveKeyAction::SwitchHand:
+        return tr("Switch hand (scenes with two)");
+    case DriveKeyAction::Slow:
+        return tr("Hold: move at a quarter of the speed");
+    }
+    return QString();
+}
+
 bool HandDrive::press(int key, Qt::KeyboardModifiers modifiers)
 {
-    if (key == Qt::Key_Shift) {
+    const std::optional<DriveKeyAction> action = actionOf(key);
+    if (action == DriveKeyAction::Slow) {
         m_slow = true;
         return false;
     }
@@ -104,71 +177,38 @@ bool HandDrive::press(int key, Qt::KeyboardModifiers modifiers)
     // Ctrl+R, Ctrl+F, Ctrl+= … are the window's shortcuts: they never take the grippers.
     if (modifiers & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
-    if (!m_world || !m_hands[size_t(m_active)])
+    if (!action || !m_world || !m_hands[size_t(m_active)])
         return false;
 
-    Action action = ActionCount;
-    switch (key) {
-    case Qt::Key_W:
-        action = Away;
-        break;
-    case Qt::Key_S:
-        action = Toward;
-        break;
-    case Qt::Key_A:
-        action = Left;
-        break;
-    case Qt::Key_D:
-        action = Right;
-        break;
-    case Qt::Key_R:
-    case Qt::Key_Up:
-    case Qt::Key_PageUp:
-        action = Up;
-        break;
-    case Qt::Key_F:
-    case Qt::Key_Down:
-    case Qt::Key_PageDown:
-        action = Down;
-        break;
-    case Qt::Key_Q:
-    case Qt::Key_Left:
-        action = TurnLeft;
-        break;
-    case Qt::Key_E:
-    case Qt::Key_Right:
-        action = TurnRight;
-        break;
-    case Qt::Key_Space:
-    case Qt::Key_G:
+    switch (*action) {
+    case DriveKeyAction::Grip:
         toggleGrip();
         return true;
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:
+    case DriveKeyAction::MoreForce:
         adjustGrip(1);
         return true;
-    case Qt::Key_Minus:
+    case DriveKeyAction::LessForce:
         adjustGrip(-1);
         return true;
-    case Qt::Key_Tab:
-    case Qt::Key_Backtab:
+    case DriveKeyAction::SwitchHand:
         if (!hasBothHands())
             return false;
         switchHand();
         return true;
     default:
-        return false;
+        break;
     }
 
+    const size_t held = size_t(*action);
     startDrive();
-    if (!m_held[action]) {
-        m_held[action] = true;
+    if (!m_held[held]) {
+        m_held[held] = true;
         // A tap shorter than a tick still moves: one tick's worth now.
-        std::array<bool, ActionCount> held = m_held;
+        const std::array<bool, HeldDriveKeyActions> before = m_held;
         m_held = {};
-        m_held[action] = true;
+        m_held[held] = true;
         const DriveRates tap = heldRates();
-        m_held = held;
+        m_held = before;
         if (move(tap, TickSeconds)) {
             send(m_active);
             emit changed();
@@ -180,43 +220,14 @@ bool HandDrive::press(int key, Qt::KeyboardModifiers modifiers)
 
 bool HandDrive::release(int key)
 {
-    switch (key) {
-    case Qt::Key_Shift:
+    const std::optional<DriveKeyAction> action = actionOf(key);
+    if (action == DriveKeyAction::Slow) {
         m_slow = false;
         return false;
-    case Qt::Key_W:
-        m_held[Away] = false;
-        break;
-    case Qt::Key_S:
-        m_held[Toward] = false;
-        break;
-    case Qt::Key_A:
-        m_held[Left] = false;
-        break;
-    case Qt::Key_D:
-        m_held[Right] = false;
-        break;
-    case Qt::Key_R:
-    case Qt::Key_Up:
-    case Qt::Key_PageUp:
-        m_held[Up] = false;
-        break;
-    case Qt::Key_F:
-    case Qt::Key_Down:
-    case Qt::Key_PageDown:
-        m_held[Down] = false;
-        break;
-    case Qt::Key_Q:
-    case Qt::Key_Left:
-        m_held[TurnLeft] = false;
-        break;
-    case Qt::Key_E:
-    case Qt::Key_Right:
-        m_held[TurnRight] = false;
-        break;
-    default:
-        return false;
     }
+    if (!action || int(*action) >= HeldDriveKeyActions)
+        return false;
+    m_held[size_t(*action)] = false;
     updateTimer();
     return true;
 }
@@ -353,12 +364,12 @@ void HandDrive::advance(double seconds)
 
 DriveRates HandDrive::heldRates() const
 {
-    auto key = [this](Action action) { return m_held[action] ? 1.0 : 0.0; };
+    auto key = [this](DriveKeyAction action) { return m_held[size_t(action)] ? 1.0 : 0.0; };
     DriveRates sum;
-    sum.forward = key(Away) - key(Toward);
-    sum.right = key(Right) - key(Left);
-    sum.up = key(Up) - key(Down);
-    sum.turn = key(TurnLeft) - key(TurnRight);
+    sum.forward = key(DriveKeyAction::Away) - key(DriveKeyAction::Toward);
+    sum.right = key(DriveKeyAction::Right) - key(DriveKeyAction::Left);
+    sum.up = key(DriveKeyAction::Up) - key(DriveKeyAction::Down);
+    sum.turn = key(DriveKeyAction::TurnLeft) - key(DriveKeyAction::TurnRight);
     for (const DriveRates &device : m_deviceRates) {
         sum.forward += device.forward;
         sum.right += device.right;

@@ -10,6 +10,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace semhap {
 
@@ -45,6 +46,35 @@ struct DriveRates
     {
         return forward == 0 && right == 0 && up == 0 && turn == 0 && tilt == 0 && roll == 0;
     }
+};
+
+/** What a key of the keyboard drive does. */
+enum class DriveKeyAction
+{
+    // Held: the active hand moves while the key is down.
+    Away,
+    Toward,
+    Left,
+    Right,
+    Up,
+    Down,
+    TurnLeft,
+    TurnRight,
+    // Pressed.
+    Grip,
+    MoreForce,
+    LessForce,
+    SwitchHand,
+    Slow, ///< held with the others: they move at HandDrive::SlowFactor of the speed
+};
+/** How many of DriveKeyAction's first values move the hand while held. */
+constexpr int HeldDriveKeyActions = int(DriveKeyAction::TurnRight) + 1;
+
+/** A key of the keyboard drive and what it does. */
+struct DriveKey
+{
+    Qt::Key key;
+    DriveKeyAction action;
 };
 
 /**
@@ -96,6 +126,15 @@ public:
      * an engine stepping it on another thread hands in a reader that waits for a tick's end.
      */
     void setStartSource(std::function<std::array<std::optional<HandCommand>, 2>()> source);
+
+    /**
+     * Every key the keyboard drive answers, in the order the key map lists them: press() and
+     * release() go by this table, and Help → Key map shows it. A key held with Ctrl, Alt or
+     * Meta is the window's, never the drive's.
+     */
+    static const std::vector<DriveKey> &keyTable();
+    /** What `action` does, translated, for the key map. */
+    static QString actionText(DriveKeyAction action);
 
     /** A key went down; true when it is one of the map's (the caller then eats it). */
     bool press(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier);
@@ -157,19 +196,6 @@ signals:
     void changed();
 
 private:
-    enum Action
-    {
-        Away,
-        Toward,
-        Left,
-        Right,
-        Up,
-        Down,
-        TurnLeft,
-        TurnRight,
-        ActionCount
-    };
-
     void startDrive();
     void tick();
     /** The keys' rates and every device's, added up, each in [-1, 1]. */
@@ -190,7 +216,7 @@ private:
     std::array<double, 2> m_setpoint{DefaultGrip, DefaultGrip};
     std::array<bool, 2> m_closed{};
     std::array<double, 2> m_maxGrip{};
-    std::array<bool, ActionCount> m_held{};
+    std::array<bool, HeldDriveKeyActions> m_held{}; ///< by DriveKeyAction
     std::array<DriveRates, DriveDeviceCount> m_deviceRates{};
     /** Per hand: the analogue grip in [0, 1] that owns its grip, until a key toggles it. */
     std::array<std::optional<double>, 2> m_analogueGrip{};

@@ -11,6 +11,7 @@
 #include "gamepadinput.h"
 #include "handdrive.h"
 #include "imagechecks.h"
+#include "keymapdialog.h"
 #include "mainwindow.h"
 #include "metricspanel.h"
 #include "openwindow.h"
@@ -29,6 +30,7 @@
 #include "workspace.h"
 
 #include <QComboBox>
+#include <QDesktopServices>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
@@ -42,6 +44,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QProcess>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -51,6 +54,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+#include <QTreeWidget>
 #include <QUndoStack>
 
 #include <qcustomplot.h>
@@ -60,6 +64,18 @@
 using namespace semhap;
 
 namespace {
+
+/** Catches what QDesktopServices is asked to open, instead of a browser. */
+class UrlCatcher : public QObject
+{
+    Q_OBJECT
+
+public:
+    QList<QUrl> urls;
+
+public slots:
+    void open(const QUrl &url) { urls.append(url); }
+};
 
 /**
  * A home folder of the test's own for as long as it lives: the user pattern folder, the
@@ -197,6 +213,8 @@ private slots:
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
     void saysWhenTheTaskIsDone();
+    void keyMapAndManual_data();
+    void keyMapAndManual();
     void fileDialogsStartWhereTheirKindLives_data();
     void fileDialogsStartWhereTheirKindLives();
     void fileDialogsRememberTheirKindsFolder();
@@ -999,6 +1017,84 @@ void TestStudio::saysWhenTheTaskIsDone()
     QTRY_COMPARE(rebuilt.viewport()->notice(), QString());
     QTRY_COMPARE(rebuilt.metricsPanel()->findChild<QLabel *>("completion_time")->text(),
                  MetricsPanel::format("completion_time", QJsonValue()));
+}
+
+void TestStudio::keyMapAndManual_data()
+{
+    addWindowRows();
+}
+
+void TestStudio::keyMapAndManual()
+{
+    // Help → Key map (Ctrl+/) lists every shortcut of the window's actions and the drive
+    // keys, in the interface language; Help → Documentation (F1) opens the manual.
+    QFETCH(QString, language);
+    // What three rows say, in the interface language.
+    const bool de = language == "de";
+    const QString stopAll = de ? "Alles stoppen" : "Stop all";
+    const QString preferences = de ? "Einstellungen" : "Preferences";
+    const QString away =
+        de ? "Das Handgelenk von Ihnen weg bewegen" : "Move the wrist away from you";
+    const std::unique_ptr<Studio> studio = startStudio(options());
+    MainWindow &window = *studio->window();
+    QVERIFY(window.isActiveWindow());
+    QTest::keyClick(&window, Qt::Key_Slash, Qt::ControlModifier);
+    KeyMapDialog *map = nullptr;
+    QTRY_VERIFY((map = window.findChild<KeyMapDialog *>()) && map->isVisible());
+
+    QMultiHash<QString, QString> rows; // keys -> what they do
+    for (int g = 0; g < map->tree()->topLevelItemCount(); ++g) {
+        const QTreeWidgetItem *group = map->tree()->topLevelItem(g);
+        for (int r = 0; r < group->childCount(); ++r)
+            rows.insert(group->child(r)->text(0), group->child(r)->text(1));
+    }
+    const auto keys = [](const QKeySequence &key) {
+        return key.toString(QKeySequence::NativeText);
+    };
+    QCOMPARE(rows.value(keys(Qt::Key_Escape)), stopAll);
+    QVERIFY2(rows.value(keys(QKeySequence(Qt::CTRL | Qt::Key_Comma))).startsWith(preferences),
+             qPrintable(rows.value(keys(QKeySequence(Qt::CTRL | Qt::Key_Comma)))));
+    QCOMPARE(rows.value(keys(Qt::Key_W)), away);
+    for (const Qt::Key key : {Qt::Key_A, Qt::Key_S, Qt::Key_D})
+        QVERIFY2(rows.contains(keys(key)), qPrintable(keys(key)));
+    // Every action's shortcut is there with its action, wherever the action lives.
+    for (const QAction *action : window.findChildren<QAction *>()) {
+        for (const QKeySequence &shortcut : action->shortcuts()) {
+            bool listed = false;
+            for (auto it = rows.begin(); it != rows.end() && !listed; ++it)
+                listed = it.key().split(", ").contains(keys(shortcut)) &&
+                         action->iconText().startsWith(it.value());
+            QVERIFY2(listed, qPrintable(keys(shortcut) + " " + action->iconText()));
+        }
+    }
+    savePicture(map, "keymap");
+    QVERIFY2(clippedTexts(map).isEmpty(), qPrintable(clippedTexts(map).join("; ")));
+    // Every row reads whole: nothing to scroll sideways to, no text elided in its column.
+    QVERIFY(!map->tree()->horizontalScrollBar()->isVisible());
+    const QFontMetrics metrics(map->tree()->font());
+    for (QTreeWidgetItemIterator it(map->tree()); *it; ++it) {
+        if (!(*it)->parent())
+            continue;
+        for (int column : {0, 1}) {
+            const QRect cell = map->tree()->visualItemRect(*it);
+            const int room =
+                map->tree()->columnWidth(column) -
+                (column == 0 ? cell.left() - map->tree()->columnViewportPosition(0) : 0);
+            QVERIFY2(metrics.horizontalAdvance((*it)->text(column)) < room,
+                     qPrintable((*it)->text(column)));
+        }
+    }
+    map->close();
+
+    UrlCatcher catcher;
+    QDesktopServices::setUrlHandler("file", &catcher, "open");
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QTest::keyClick(&window, Qt::Key_F1);
+    QDesktopServices::unsetUrlHandler("file");
+    QCOMPARE(catcher.urls.size(), 1);
+    const QString manual = catcher.urls.first().toLocalFile();
+    QVERIFY2(manual.endsWith("/studio.md") && QFileInfo(manual).isFile(), qPrintable(manual));
 }
 
 void TestStudio::fileDialogsStartWhereTheirKindLives_data()
