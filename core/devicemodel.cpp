@@ -183,6 +183,16 @@ double DeviceModel::clamp(int channel, double value) const
     return value > c.max ? c.max : value;
 }
 
+DeviceFrame DeviceModel::restFrame(double t) const
+{
+    DeviceFrame frame;
+    frame.t = t;
+    frame.channelCount = std::min(channelCount(), MaxChannels);
+    for (int c = 0; c < frame.channelCount; ++c)
+        frame.values[size_t(c)] = m_channels[size_t(c)].min;
+    return frame;
+}
+
 double DeviceModel::modulationLimit() const
 {
     const double quarterRate = m_rate / 4;

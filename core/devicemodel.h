@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "deviceframe.h"
 #include "loaderror.h"
 
 #include <QJsonObject>
@@ -58,6 +59,8 @@ public:
     double responseDelay() const { return m_latency + m_tau; }
 
     double clamp(int channel, double value) const;
+    /** Every channel at its lower limit, at time `t`: the device at rest (a stop-all). */
+    DeviceFrame restFrame(double t) const;
     /**
      * The fastest amplitude modulation the output still follows (Hz): the lag's corner
      * frequency, at most a quarter of the rate. Imported sharpness is mapped below it.

@@ -167,18 +167,21 @@ void LinkTransport::writeValues(double now)
         frame = m_slot;
         m_slotFresh = false;
     }
-    std::array<double, MaxChannels> safe{};
-    m_safety.apply(frame.values.data(), frame.channelCount, now, gain(), isArmed(), safe.data());
+    DeviceFrame safe = frame;
+    safe.channelCount = m_model->channelCount();
+    m_safety.apply(frame.values.data(), frame.channelCount, now, gain(), isArmed(),
+                   safe.values.data());
     std::array<std::uint16_t, MaxChannels> wire{};
-    const int count = m_model->channelCount();
-    for (int c = 0; c < count; ++c) {
+    for (int c = 0; c < safe.channelCount; ++c) {
         const ChannelSpec &spec = m_model->channels()[size_t(c)];
-        wire[size_t(c)] = protocol::toWire(safe[size_t(c)], spec.min, spec.max);
+        wire[size_t(c)] = protocol::toWire(safe.values[size_t(c)], spec.min, spec.max);
     }
     std::array<std::uint8_t, protocol::MaxEncodedFrame + 1> bytes{};
-    const int size = protocol::encodeSetValues(m_sequence++, wire.data(), count, bytes.data());
+    const int size =
+        protocol::encodeSetValues(m_sequence++, wire.data(), safe.channelCount, bytes.data());
     writeFrame(bytes.data(), size);
     if (m_linkOpen) {
+        m_sent.append(safe);
         std::lock_guard<std::mutex> lock(m_statusMutex);
         ++m_status.framesSent;
     }
@@ -189,6 +192,10 @@ void LinkTransport::writeStops()
     m_safety.reset();
     for (int i = 0; i < StopRepeats; ++i)
         writeMessage(protocol::MessageType::StopAll);
+    if (!m_linkOpen)
+        return;
+    // The band is at rest from the latest time it was sent anything.
+    m_sent.append(m_model->restFrame(m_sent.last().t));
 }
 
 void LinkTransport::readReplies(double now)

@@ -5,6 +5,7 @@
 #include "devicemodel.h"
 #include "protocol.h"
 #include "safetyfilter.h"
+#include "sentlog.h"
 
 #include <QString>
 
@@ -34,7 +35,7 @@ struct TransportStatus
  * Where a device's frames go: one interface for the virtual, serial, UDP and HID links, so
  * the pipeline, the device manager and tests drive them alike. send() never blocks (latest
  * value wins); stopAll() always gets through; safety (clamp, gain, inflation limit, armed)
- * is applied inside, whatever the caller did.
+ * is applied inside, whatever the caller did, and what goes out is kept in sent().
  */
 class Transport
 {
@@ -64,9 +65,15 @@ public:
     /** Master gain 0..1 applied to every channel. */
     void setGain(double gain) { m_gain.store(gain); }
     double gain() const { return m_gain.load(); }
+    /**
+     * The frames sent, as the device got them (after safety; a stop-all's rest values
+     * too), with the `t` their caller gave: what meters and plots show.
+     */
+    const SentLog &sent() const { return m_sent; }
 
 protected:
     DeviceModelPtr m_model;
+    SentLog m_sent; ///< each transport appends where its values leave
     std::atomic<bool> m_armed{false};
     std::atomic<double> m_gain{1.0};
 };

@@ -43,21 +43,16 @@ void VirtualTransport::send(const DeviceFrame &frame)
 
 void VirtualTransport::stopAll()
 {
-    DeviceFrame zero;
-    zero.channelCount = m_model->channelCount();
-    for (int c = 0; c < zero.channelCount; ++c)
-        zero.values[size_t(c)] = m_model->channels()[size_t(c)].min;
     std::lock_guard<std::mutex> lock(m_mutex);
-    if (m_count > 0)
-        zero.t = m_history[size_t((m_count - 1) % HistorySize)].t;
     m_safety.reset();
-    store(zero);
+    // At rest from the latest time it was sent anything.
+    store(m_model->restFrame(m_sent.last().t));
     ++m_stops;
 }
 
 void VirtualTransport::store(const DeviceFrame &frame)
 {
-    m_history[size_t(m_count % HistorySize)] = frame;
+    m_sent.append(frame);
     ++m_count;
     const double now = monotonicSeconds();
     if (now - m_windowStart >= 1.0) {
@@ -80,22 +75,6 @@ TransportStatus VirtualTransport::status() const
     s.framesPerSecond = open >= 1.0 ? (m_count - m_windowCount) / open : m_rate;
     s.identity = m_model->name();
     return s;
-}
-
-DeviceFrame VirtualTransport::lastFrame() const
-{
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_count > 0 ? m_history[size_t((m_count - 1) % HistorySize)] : DeviceFrame{};
-}
-
-std::vector<DeviceFrame> VirtualTransport::history() const
-{
-    std::lock_guard<std::mutex> lock(m_mutex);
-    std::vector<DeviceFrame> out;
-    const int first = std::max(0, m_count - HistorySize);
-    for (int i = first; i < m_count; ++i)
-        out.push_back(m_history[size_t(i % HistorySize)]);
-    return out;
 }
 
 int VirtualTransport::stopCount() const

@@ -3,22 +3,18 @@
 
 #include "transport.h"
 
-#include <array>
 #include <mutex>
 
 namespace semhap {
 
 /**
- * The embedded default: no hardware, it keeps the latest frames (after safety) for
- * previews and monitors. Armed from the start. No thread: send() takes a tiny mutex that readers
- * hold only to copy.
+ * The embedded default: no hardware; what it sends (after safety) is only kept in sent(),
+ * for previews and monitors. Armed from the start. No thread: send() applies the safety
+ * filter under a tiny mutex.
  */
 class VirtualTransport : public Transport
 {
 public:
-    /** Frames kept for monitors. */
-    static constexpr int HistorySize = 256;
-
     VirtualTransport(const QString &name, DeviceModelPtr model);
 
     QString uri() const override;
@@ -28,21 +24,17 @@ public:
     void stopAll() override;
     TransportStatus status() const override;
 
-    /** The latest frame as a device would have received it. */
-    DeviceFrame lastFrame() const;
-    /** Up to HistorySize frames, oldest first. */
-    std::vector<DeviceFrame> history() const;
     /** Stop-alls received (tests check that one got through). */
     int stopCount() const;
 
 private:
+    /** Sends `frame` (mutex held): into sent() and the rate count. */
     void store(const DeviceFrame &frame);
 
     QString m_name;
     SafetyFilter m_safety;
     mutable std::mutex m_mutex;
-    std::array<DeviceFrame, HistorySize> m_history{};
-    int m_count = 0;
+    int m_count = 0; ///< frames sent
     int m_stops = 0;
     // The frame rate the status reports, as a real link counts it: frames over the last
     // whole second, and what the current window has seen once it runs past a second.

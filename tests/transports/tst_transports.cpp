@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Transports without hardware: URIs, safety (clamp, gain, inflation limit, armed, stop-all),
-// the virtual transport, HID enumeration.
+// the virtual transport, what a transport says it sent (against an emulated band's
+// setpoints), HID enumeration.
 #include "deviceuri.h"
+#include "emulatedband.h"
 #include "hidlink.h"
 #include "safetyfilter.h"
 #include "transportfactory.h"
 #include "virtualtransport.h"
 
 #include <QElapsedTimer>
-#include <QThread>
 #include <QTest>
+#include <QThread>
 
 using namespace semhap;
 
@@ -39,6 +41,9 @@ private slots:
     void virtualTransport();
     void virtualTransportCountsItsRate();
     void stopAllGetsThrough();
+    void sentLogReadsWhatIsNew();
+    void sentIsWhatTheBandGot_data();
+    void sentIsWhatTheBandGot();
     void factoryMakesEachKind();
     void hidEnumerationWithoutDevices();
 };
@@ -224,19 +229,18 @@ void TestTransports::virtualTransport()
     QVERIFY(t.isArmed());
     t.setGain(0.5);
     t.send(frameOf({1.0, 0.5, 2.0, -1.0}));
-    const DeviceFrame last = t.lastFrame();
+    const DeviceFrame last = t.sent().last();
     QCOMPARE(last.channelCount, 4);
     QCOMPARE(last.values[0], 0.5);
     QCOMPARE(last.values[1], 0.25);
     QCOMPARE(last.values[2], 0.5);
     QCOMPARE(last.values[3], 0.0);
-    for (int i = 0; i < VirtualTransport::HistorySize + 10; ++i)
+    for (int i = 0; i < SentLog::Capacity + 10; ++i)
         t.send(frameOf({0.1 * (i % 10), 0, 0, 0}));
-    QCOMPARE(int(t.history().size()), VirtualTransport::HistorySize);
-    QCOMPARE(t.status().framesSent, std::uint32_t(VirtualTransport::HistorySize + 11));
+    QCOMPARE(t.status().framesSent, std::uint32_t(SentLog::Capacity + 11));
     t.setArmed(false);
     t.send(frameOf({1, 1, 1, 1}));
-    QCOMPARE(t.lastFrame().values[0], 0.0);
+    QCOMPARE(t.sent().last().values[0], 0.0);
 }
 
 void TestTransports::virtualTransportCountsItsRate()
@@ -275,10 +279,100 @@ void TestTransports::stopAllGetsThrough()
     t.send(frameOf({1, 1, 1, 1, 1, 1}));
     t.stopAll();
     QCOMPARE(t.stopCount(), 1);
-    QCOMPARE(t.lastFrame().values[0], 0.0);
+    QCOMPARE(t.sent().last().values[0], 0.0);
     t.close();
     QCOMPARE(t.stopCount(), 2);
     QVERIFY(!t.status().connected);
+}
+
+void TestTransports::sentLogReadsWhatIsNew()
+{
+    SentLog log;
+    QCOMPARE(log.last().channelCount, 0);
+    std::uint64_t next = 0;
+    std::vector<DeviceFrame> frames;
+    QCOMPARE(log.readSince(&next, &frames), std::uint64_t(0));
+    QVERIFY(frames.empty());
+    for (int i = 0; i < 3; ++i) {
+        DeviceFrame frame = frameOf({0.1 * i});
+        frame.t = i;
+        log.append(frame);
+    }
+    QCOMPARE(log.readSince(&next, &frames), std::uint64_t(0));
+    QCOMPARE(int(frames.size()), 3);
+    QCOMPARE(frames[2].t, 2.0);
+    QCOMPARE(next, std::uint64_t(3));
+    // Only what is new, and what was overwritten before it was read is counted.
+    for (int i = 3; i < SentLog::Capacity + 13; ++i) {
+        DeviceFrame frame = frameOf({0.0});
+        frame.t = i;
+        log.append(frame);
+    }
+    frames.clear();
+    QCOMPARE(log.readSince(&next, &frames), std::uint64_t(10));
+    QCOMPARE(int(frames.size()), SentLog::Capacity);
+    QCOMPARE(frames.front().t, 13.0);
+    QCOMPARE(log.last().t, double(SentLog::Capacity + 12));
+    frames.clear();
+    QCOMPARE(log.readSince(&next, &frames), std::uint64_t(0));
+    QVERIFY(frames.empty());
+}
+
+void TestTransports::sentIsWhatTheBandGot_data()
+{
+    QTest::addColumn<bool>("link"); ///< over UDP to an emulated band, else virtual
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<bool>("armed");
+    QTest::addColumn<double>("asked");
+    QTest::addColumn<double>("got");
+    for (const bool link : {false, true}) {
+        const char *kind = link ? "udp" : "virtual";
+        QTest::addRow("%s gain 0.5", kind) << link << 0.5 << true << 1.0 << 0.5;
+        QTest::addRow("%s clamped", kind) << link << 1.0 << true << 2.0 << 1.0;
+        QTest::addRow("%s disarmed", kind) << link << 1.0 << false << 1.0 << 0.0;
+    }
+}
+
+void TestTransports::sentIsWhatTheBandGot()
+{
+    // What a transport keeps as sent — the readouts' one source — is what leaves it after
+    // clamp, gain and arming: for a link, what the band receives.
+    QFETCH(bool, link);
+    QFETCH(double, gain);
+    QFETCH(bool, armed);
+    QFETCH(double, asked);
+    QFETCH(double, got);
+    EmulatedBand band(QStringLiteral("lra4"));
+    QString error;
+    QVERIFY2(!link || band.start(&error), qPrintable(error));
+    std::unique_ptr<Transport> transport =
+        TransportFactory::create(link ? band.uri() : QStringLiteral("virtual:v"),
+                                 DeviceModelLibrary::builtin(QStringLiteral("lra4")), &error);
+    QVERIFY2(transport && transport->open(&error), qPrintable(error));
+    transport->setGain(gain);
+    transport->setArmed(armed);
+    DeviceFrame frame = frameOf({asked, asked, 0.25, 0.0});
+    frame.t = 7.5;
+    transport->send(frame);
+    QTRY_COMPARE(transport->sent().last().t, 7.5); // a link's I/O thread writes it
+    const DeviceFrame sent = transport->sent().last();
+    QCOMPARE(sent.t, 7.5);
+    QCOMPARE(sent.channelCount, 4);
+    QCOMPARE(sent.values[0], got);
+    QCOMPARE(sent.values[2], armed ? 0.25 * gain : 0.0);
+    if (link) {
+        QTRY_VERIFY(band.state().setpoints.size() == 4 &&
+                    std::abs(band.state().setpoints[0] - got) < 1e-3);
+        QVERIFY(std::abs(band.state().setpoints[2] - sent.values[2]) < 1e-3);
+    }
+
+    // A stop-all is kept as the rest values, from the latest time sent.
+    const std::uint64_t before = transport->sent().count();
+    transport->stopAll();
+    QTRY_VERIFY(transport->sent().count() > before);
+    QCOMPARE(transport->sent().last().t, 7.5);
+    QCOMPARE(transport->sent().last().values[0], 0.0);
+    transport->close();
 }
 
 void TestTransports::factoryMakesEachKind()
