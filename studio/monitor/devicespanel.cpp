@@ -76,6 +76,7 @@ QString hexId(int id)
 /** One router device's widgets and what they last showed. */
 struct DevicesPanel::Row
 {
+    int device = 0; ///< the history's index of the device (rows list idle devices last)
     QString name;
     QString model;
     QComboBox *uri = nullptr;
@@ -246,6 +247,7 @@ void DevicesPanel::rebuildRows()
     for (const RunDevice *entry : devices) {
         const RunDevice &device = *entry;
         auto row = std::make_unique<Row>();
+        row->device = int(entry - m_history.devices().data());
         row->name = device.name;
         row->model = device.model;
         auto *box = new QGroupBox(
@@ -374,12 +376,12 @@ void DevicesPanel::refresh()
 
 void DevicesPanel::showLevels()
 {
-    for (size_t d = 0; d < m_rows.size(); ++d) {
-        const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(int(d));
+    for (const auto &row : m_rows) {
+        const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(row->device);
         if (frames.isEmpty())
             continue;
         const DeviceFrame &frame = frames.last();
-        m_rows[d]->meter->setValues(
+        row->meter->setValues(
             std::vector<double>(frame.values.begin(), frame.values.begin() + frame.channelCount));
     }
 }

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QStringList>
 #include <QTabBar>
+#include <QTest>
 #include <QWidget>
 
 #include <cstdlib>
@@ -81,4 +82,18 @@ inline int pixelsOfColour(const QImage &image, const QColor &colour, int toleran
         }
     }
     return count;
+}
+
+/** Picks `text` in a combo box (editable too) with the arrow keys, as a user would. */
+inline bool choose(QComboBox *box, const QString &text)
+{
+    box->setFocus();
+    for (const Qt::Key key : {Qt::Key_Up, Qt::Key_Down}) {
+        for (int i = 0; i <= box->count(); ++i) {
+            if (box->currentText() == text)
+                return true;
+            QTest::keyClick(box, key);
+        }
+    }
+    return box->currentText() == text;
 }

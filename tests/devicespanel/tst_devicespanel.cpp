@@ -9,6 +9,7 @@
 #include "emulator.h"
 #include "levelmeter.h"
 #include "runhistory.h"
+#include "widgetchecks.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -74,20 +75,6 @@ struct Fixture
     QString state() const { return child<QLabel>(QStringLiteral("state:") + Band)->text(); }
 };
 
-/** Picks `text` in an editable combo box with the arrow keys, as a user would. */
-bool choose(QComboBox *box, const QString &text)
-{
-    box->setFocus();
-    for (const Qt::Key key : {Qt::Key_Up, Qt::Key_Down}) {
-        for (int i = 0; i <= box->count(); ++i) {
-            if (box->currentText() == text)
-                return true;
-            QTest::keyClick(box, key);
-        }
-    }
-    return box->currentText() == text;
-}
-
 } // namespace
 
 class TestDevicesPanel : public QObject
@@ -98,6 +85,7 @@ private slots:
     void addAddress_data();
     void addAddress();
     void connectToEmulator();
+    void metersShowTheirOwnDevice();
     void screenshot();
 };
 
@@ -200,6 +188,35 @@ void TestDevicesPanel::connectToEmulator()
     QVERIFY(!f.child<QPushButton>(QStringLiteral("disconnect:") + Band)->isEnabled());
     // The band's watchdog takes it to rest once the host has gone.
     QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+void TestDevicesPanel::metersShowTheirOwnDevice()
+{
+    // A device of a hand the scene lacks is listed last, yet every row's meter shows its own
+    // device's frames (the left band here comes first in the router).
+    RunHistory history;
+    DeviceManager manager;
+    const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+    history.start({{QStringLiteral("left.vibro"), lra4->name(), lra4->channelNames(), true},
+                   {Band, lra4->name(), lra4->channelNames(), false}},
+                  {}, {});
+    DevicesPanel panel(manager, history);
+    panel.resize(420, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const std::vector<std::vector<double>> levels = {{0.1, 0.1, 0.1, 0.1}, {0.9, 0.8, 0.7, 0.6}};
+    for (int d = 0; d < 2; ++d) {
+        DeviceFrame frame;
+        frame.t = 1.0;
+        frame.device = d;
+        frame.channelCount = 4;
+        std::copy(levels[size_t(d)].begin(), levels[size_t(d)].end(), frame.values.begin());
+        history.append(frame);
+    }
+    history.commit();
+    QCOMPARE(panel.findChild<LevelMeter *>(QStringLiteral("levels:") + Band)->values(), levels[1]);
+    QCOMPARE(panel.findChild<LevelMeter *>(QStringLiteral("levels:left.vibro"))->values(),
+             levels[0]);
 }
 
 /** With SEMHAP_SCREENSHOTS=DIR: the panel of a bimanual run, for docs/screenshots. */

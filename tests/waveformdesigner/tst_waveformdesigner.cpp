@@ -15,6 +15,7 @@
 #include "patternpreview.h"
 #include "waveformdesigner.h"
 #include "waveformtype.h"
+#include "widgetchecks.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -145,20 +146,6 @@ struct Fixture
         return values;
     }
 };
-
-/** Picks `text` in a combo box with the arrow keys, as a user would. */
-bool choose(QComboBox *box, const QString &text)
-{
-    box->setFocus();
-    for (const Qt::Key key : {Qt::Key_Up, Qt::Key_Down}) {
-        for (int i = 0; i <= box->count(); ++i) {
-            if (box->currentText() == text)
-                return true;
-            QTest::keyClick(box, key);
-        }
-    }
-    return box->currentText() == text;
-}
 
 double peakToPeak(const std::vector<double> &values, const std::vector<double> &t, double from)
 {
