@@ -231,7 +231,10 @@ void MainWindow::createActions()
     connect(m_runAction, &QAction::triggered, this, &MainWindow::toggleRunning);
     m_stepAction = action(tr("Step"), QStringLiteral("stepAction"), Qt::Key_F6);
     m_stepAction->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
-    connect(m_stepAction, &QAction::triggered, &m_engine, &Engine::step);
+    connect(m_stepAction, &QAction::triggered, this, [this] {
+        m_designer->stopAudition(); // the run's frames and an audition never mix
+        m_engine.step();
+    });
     m_resetAction =
         action(tr("Reset"), QStringLiteral("resetAction"), QKeySequence(Qt::CTRL | Qt::Key_R));
     m_resetAction->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
@@ -451,6 +454,7 @@ void MainWindow::createDocks()
         return m_engine.setRouter(graph, error);
     });
     m_designer = new WaveformDesigner(&m_engine.devices(), &m_workspace.patternDocument(), this);
+    m_designer->setRunClock([this] { return m_engine.readoutTime(); });
 
     setDockNestingEnabled(true);
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);

@@ -67,7 +67,8 @@ void Engine::StepSink::onNodeActivity(const NodeActivity &activity)
 
 void Engine::rewire()
 {
-    // The recording first: it keeps what was sent, then the bands, then the readouts.
+    // The recording first: it keeps what the router asked for; then the bands, whose sent
+    // frames are the readouts' device frames (m_sent); then the feed, for the rest.
     m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
 }
 
@@ -238,6 +239,7 @@ void Engine::install()
     m_feed.discard(); // whatever the old run left in the feed is not the new run's
     m_history.start(liveDevicesOf(pipeline().router(), m_source->hands()), shownThresholds(),
                     pipeline().router().nodeIds());
+    m_sent.start(deviceNames(), *m_devices);
     // A live rig has no task to count.
     m_history.setMetrics(m_simulation ? m_simulation->run().metrics() : QJsonObject());
 }
@@ -318,11 +320,14 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
         std::lock_guard<std::mutex> lock(m_setupMutex);
         // The old router's devices fall silent now; a device the new router keeps goes on
         // with the new router's frames from the next tick.
-        silenceDevices();
+        silenceDevices(m_outputs);
         if (m_simulation)
             m_simulation->run().setRouter(std::move(router), m_sink);
         else
             m_rig->setRouter(std::move(router), m_sink);
+        // What the old router's devices were sent is read with its numbering, before a
+        // rebinding frees a transport.
+        m_sent.drainInto(m_history);
         // The old router's closing events went into the recording; the new router is
         // another session.
         recording = std::move(m_recorder);
@@ -332,6 +337,7 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
         bindRouterDevices(player, &bindError);
         m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
         rewire();
+        m_sent.rebind(deviceNames(), *m_devices);
         // What the old router sent is read with its numbering, before the history switches;
         // the feed is drained on this thread only, so nothing newer slips in before that.
         m_feed.drainInto(m_history);
@@ -415,8 +421,13 @@ void Engine::run()
 
 void Engine::pause()
 {
-    if (m_running.exchange(false))
-        emit runningChanged(false);
+    if (!m_running.exchange(false))
+        return;
+    // The batch under way ends first: nothing the run sends follows a pause (an audition).
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+    }
+    emit runningChanged(false);
 }
 
 void Engine::step()
@@ -456,13 +467,15 @@ bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
         *error = tr("the router has no device '%1'").arg(name);
         return false;
     }
-    // At a tick boundary: the output sink holds the transports it sends to.
+    // At a tick boundary: the output sink and the sent feed hold the transports.
     std::lock_guard<std::mutex> lock(m_setupMutex);
+    m_sent.drainInto(m_history); // what the transport being replaced sent
     if (!m_devices->bind(name, uri,
                          std::make_shared<const DeviceModel>(player.deviceModel(device)), error))
         return false;
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
+    m_sent.rebind(deviceNames(), *m_devices);
     return true;
 }
 
@@ -479,10 +492,12 @@ void Engine::stopAll()
     pause();
     // The bands first: they go to zero before anything here waits for the pipeline thread.
     m_devices->stopAll();
-    // Then what the readouts and the recording show is what the bands were sent: idle.
+    // The readouts show the rest values the transports sent; the recording, which keeps
+    // what the router asked for, shows the stop too.
     if (m_source && m_source->pipeline()) {
         std::lock_guard<std::mutex> lock(m_setupMutex);
-        silenceDevices();
+        if (m_recorder)
+            silenceDevices(*m_recorder);
     }
     drain();
 }
@@ -492,6 +507,7 @@ void Engine::drain()
     if (!m_source || !m_source->isStreaming())
         return; // a replay fills the history itself
     m_feed.drainInto(m_history);
+    m_sent.drainInto(m_history);
     m_history.commit();
 }
 
@@ -584,24 +600,29 @@ void Engine::listenLoop()
         std::lock_guard<std::mutex> lock(m_setupMutex);
         m_rig->poll(process, !m_running.load());
         if (m_rig->endIfSilent(m_sink)) {
-            silenceDevices(); // the meters show it too
+            silenceDevices(m_outputs);
             m_devices->stopAll();
         }
     }
 }
 
-void Engine::silenceDevices()
+void Engine::silenceDevices(PipelineSink &sink)
 {
     const Player &player = pipeline().router().player();
     for (int d = 0; d < player.deviceCount(); ++d) {
-        DeviceFrame silence;
-        silence.t = pipeline().now();
+        DeviceFrame silence = player.deviceModel(d).restFrame(pipeline().now());
         silence.device = d;
-        silence.channelCount = player.deviceModel(d).channelCount();
-        for (int c = 0; c < silence.channelCount; ++c)
-            silence.values[size_t(c)] = player.deviceModel(d).channels()[size_t(c)].min;
-        m_outputs.onDeviceFrame(silence);
+        sink.onDeviceFrame(silence);
     }
+}
+
+QStringList Engine::deviceNames()
+{
+    const Player &player = pipeline().router().player();
+    QStringList names;
+    for (int d = 0; d < player.deviceCount(); ++d)
+        names.append(player.deviceName(d));
+    return names;
 }
 
 void Engine::stepOnce()

@@ -4,6 +4,7 @@
 #include "liverig.h"
 #include "runfeed.h"
 #include "runhistory.h"
+#include "sentfeed.h"
 #include "sessionreplay.h"
 #include "simrun.h"
 #include "simulationsource.h"
@@ -12,6 +13,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -28,9 +30,9 @@ class SessionWriter;
  * stepped on the pipeline thread at a chosen speed of real time, a live rig's frames
  * received on that thread as they come, or a recorded session scrubbed from the GUI — its
  * streams in the RunHistory every panel reads, its device frames sent to the DeviceManager's
- * bound transports. The pipeline never waits for the GUI; the GUI waits for the pipeline only
- * to change the run's set-up (load, reset, rebind), and then only until the current batch of
- * ticks ends.
+ * bound transports, and what those sent (SentFeed) in the history too. The pipeline never
+ * waits for the GUI; the GUI waits for the pipeline only to change the run's set-up (load,
+ * reset, rebind) or to pause, and then only until the current batch of ticks ends.
  */
 class Engine : public QObject
 {
@@ -108,6 +110,7 @@ public:
     bool isLoaded() const { return m_source != nullptr; }
 
     void run();
+    /** Stops the run; no tick runs after it returns (it waits for the current batch). */
     void pause();
     bool isRunning() const { return m_running.load(); }
     /** While paused: one display frame's worth of steps (1/60 s of simulated time); a simulation
@@ -135,8 +138,8 @@ public:
     const DeviceManager &devices() const { return *m_devices; }
     /**
      * Pauses and sends every device zero now (the bands before anything waits for the
-     * pipeline thread); the history, so the meters and plots, and the recording then show
-     * each device's idle values. GUI thread.
+     * pipeline thread); the history, so the meters and plots, shows the rest values the
+     * transports sent, at once, and the recording each device's idle values. GUI thread.
      */
     void stopAll();
 
@@ -151,10 +154,15 @@ public:
 
     /** Simulated seconds, the live rig's latest `t`, or the replay's time shown. */
     double simTime() const;
+    /**
+     * The latest time the readouts show: the run's, or an audition's drawn on past a paused
+     * run. Where a new audition's frames begin (docs/studio.md, Audition). GUI thread.
+     */
+    double readoutTime() const { return std::max(simTime(), m_history.now()); }
     /** Simulated seconds per wall second over the last second of running. */
     double realtimeFactor() const { return m_realtimeFactor.load(); }
-    /** Values the feed dropped because the GUI fell behind. */
-    quint64 dropped() const { return m_feed.dropped(); }
+    /** Values the feeds dropped (or transports overwrote) because the GUI fell behind. */
+    quint64 dropped() const { return m_feed.dropped() + m_sent.lost(); }
 
     /**
      * Records the running session from the next tick into a new session database at `path`
@@ -225,8 +233,10 @@ private:
     void startThread();
     void loop();
     void listenLoop();
-    /** Sends every device of the running router its idle values, through the readouts. */
-    void silenceDevices();
+    /** Sends every device of the running router its idle values, into `sink`. */
+    void silenceDevices(PipelineSink &sink);
+    /** The running router's device names, by index: what the SentFeed reads. */
+    QStringList deviceNames();
     /** Rebuilds m_outputs after the recorder or the device output changed (setup lock held). */
     void rewire();
     void stepOnce();
@@ -254,6 +264,7 @@ private:
     RunSource *m_source = nullptr;
     std::unique_ptr<DeviceOutputSink> m_output;
     RunFeed m_feed;
+    SentFeed m_sent; ///< GUI thread; rebound under m_setupMutex with every binding
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
     std::unique_ptr<SessionWriter> m_recorder;
     /** Where the pipeline's output goes: the recorder, the bands, the feed (rewire()). */

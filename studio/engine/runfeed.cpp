@@ -6,7 +6,7 @@
 namespace semhap {
 
 RunFeed::RunFeed(std::size_t capacity)
-    : m_frames(capacity), m_events(capacity), m_deviceFrames(capacity), m_activity(capacity)
+    : m_frames(capacity), m_events(capacity), m_activity(capacity)
 {}
 
 void RunFeed::count(bool pushed)
@@ -25,11 +25,6 @@ void RunFeed::onEvent(const SemanticEvent &event)
     count(m_events.push(event));
 }
 
-void RunFeed::onDeviceFrame(const DeviceFrame &frame)
-{
-    count(m_deviceFrames.push(frame));
-}
-
 void RunFeed::onNodeActivity(const NodeActivity &activity)
 {
     count(m_activity.push(activity));
@@ -43,9 +38,6 @@ void RunFeed::drainInto(RunHistory &history)
     SemanticEvent event;
     while (m_events.pop(&event))
         history.append(event);
-    DeviceFrame deviceFrame;
-    while (m_deviceFrames.pop(&deviceFrame))
-        history.append(deviceFrame);
     NodeActivity activity;
     while (m_activity.pop(&activity))
         history.append(activity);
@@ -58,9 +50,6 @@ void RunFeed::discard()
     }
     SemanticEvent event;
     while (m_events.pop(&event)) {
-    }
-    DeviceFrame deviceFrame;
-    while (m_deviceFrames.pop(&deviceFrame)) {
     }
     NodeActivity activity;
     while (m_activity.pop(&activity)) {

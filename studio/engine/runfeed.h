@@ -2,7 +2,6 @@
 #pragma once
 
 #include "contactframe.h"
-#include "deviceframe.h"
 #include "pipeline.h"
 #include "semanticevent.h"
 #include "spscring.h"
@@ -17,6 +16,8 @@ class RunHistory;
  * The handover from the pipeline thread to the GUI: one lock-free queue per stream. The
  * pipeline pushes and never waits — when the GUI falls behind, the newest values are
  * dropped and counted — and the GUI drains everything into a RunHistory at display rate.
+ * Device frames do not come this way: the history shows what the transports sent
+ * (SentFeed), not what the pipeline asked for.
  */
 class RunFeed : public PipelineSink
 {
@@ -27,7 +28,6 @@ public:
     // Pipeline thread.
     void push(const ContactFrame &frame);
     void onEvent(const SemanticEvent &event) override;
-    void onDeviceFrame(const DeviceFrame &frame) override;
     void onNodeActivity(const NodeActivity &activity) override;
 
     // GUI thread.
@@ -43,7 +43,6 @@ private:
 
     SpscRing<ContactFrame> m_frames;
     SpscRing<SemanticEvent> m_events;
-    SpscRing<DeviceFrame> m_deviceFrames;
     SpscRing<NodeActivity> m_activity;
     std::atomic<quint64> m_dropped{0};
 };

@@ -68,7 +68,9 @@ void RunHistory::start(const std::vector<RunDevice> &devices,
     mapNodes(nodeIds);
     m_metrics = QJsonObject();
     m_now = 0.0;
+    m_runNow = 0.0;
     m_dirty = false;
+    m_rewound = false;
     emit reset();
 }
 
@@ -107,6 +109,7 @@ void RunHistory::append(const ContactFrame &frame)
 {
     m_frames[size_t(frame.gripper)].append(frame);
     m_now = std::max(m_now, frame.t);
+    m_runNow = std::max(m_runNow, frame.t);
     m_dirty = true;
 }
 
@@ -121,6 +124,7 @@ void RunHistory::append(const NodeActivity &routed)
     activity.node = mapNode(routed.node);
     m_activity.append(activity);
     m_now = std::max(m_now, activity.t);
+    m_runNow = std::max(m_runNow, activity.t);
     m_dirty = true;
 }
 
@@ -130,6 +134,7 @@ void RunHistory::append(const SemanticEvent &routed)
     event.node = mapNode(routed.node);
     m_events.append(event);
     m_now = std::max(m_now, event.t);
+    m_runNow = std::max(m_runNow, event.t);
     m_dirty = true;
     const QString node = nodeName(event.node);
     if (event.phase == EventPhase::Begin) {
@@ -160,9 +165,30 @@ void RunHistory::append(const DeviceFrame &frame)
 {
     if (frame.device < 0 || size_t(frame.device) >= m_deviceFrames.size())
         return;
-    m_deviceFrames[size_t(frame.device)].append(frame);
+    RunSeries<DeviceFrame> &series = m_deviceFrames[size_t(frame.device)];
+    if (!series.isEmpty() && frame.t < series.last().t) {
+        series.dropAfter(frame.t);
+        m_rewound = true;
+    }
+    series.append(frame);
     m_now = std::max(m_now, frame.t);
     m_dirty = true;
+}
+
+double RunHistory::latest() const
+{
+    double t = 0.0;
+    const auto newest = [&t](const auto &series) {
+        if (!series.isEmpty())
+            t = std::max(t, series.last().t);
+    };
+    for (const auto &series : m_frames)
+        newest(series);
+    newest(m_events);
+    newest(m_activity);
+    for (const auto &series : m_deviceFrames)
+        newest(series);
+    return t;
 }
 
 void RunHistory::setMetrics(const QJsonObject &metrics)
@@ -178,6 +204,10 @@ void RunHistory::commit()
     if (!m_dirty)
         return;
     m_dirty = false;
+    if (m_rewound) {
+        m_rewound = false;
+        m_now = latest();
+    }
     const double oldest = m_now - m_keepSeconds;
     for (auto &series : m_frames)
         series.trimBefore(oldest);
@@ -185,10 +215,10 @@ void RunHistory::commit()
     m_activity.trimBefore(oldest);
     for (auto &series : m_deviceFrames)
         series.trimBefore(oldest);
-    // Open spans grow with time even without events.
+    // Open spans grow with the run's time even without events (not with an audition's).
     for (auto &span : m_spans) {
         if (span.active)
-            span.end = m_now;
+            span.end = m_runNow;
     }
     m_spans.erase(
         std::remove_if(m_spans.begin(), m_spans.end(),

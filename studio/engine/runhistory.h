@@ -71,7 +71,8 @@ struct MessageSpan
 
 /**
  * A growing series the GUI reads by running index: values keep their index while the
- * oldest are trimmed, so a view remembers where it stopped and reads only what is new.
+ * oldest are trimmed, so a view remembers where it stopped and reads only what is new —
+ * unless the newest were taken back (rewinds() changed): then it reads all again.
  */
 template<typename T> class RunSeries
 {
@@ -90,6 +91,17 @@ public:
             ++m_first;
         }
     }
+    /** Drops the values newer than `t` (by their `t`); counts a rewind if any went. */
+    void dropAfter(double t)
+    {
+        if (m_values.empty() || !(m_values.back().t > t))
+            return;
+        while (!m_values.empty() && m_values.back().t > t)
+            m_values.pop_back();
+        ++m_rewinds;
+    }
+    /** How often values were taken back from the end: what a view read of them is gone. */
+    int rewinds() const { return m_rewinds; }
     void clear()
     {
         m_first += qint64(m_values.size());
@@ -99,6 +111,7 @@ public:
 private:
     std::deque<T> m_values;
     qint64 m_first = 0;
+    int m_rewinds = 0;
 };
 
 /**
@@ -131,6 +144,11 @@ public:
     void append(const ContactFrame &frame);
     /** Keeps `event`, its `node` renumbered from the running router's to the history's. */
     void append(const SemanticEvent &event);
+    /**
+     * Keeps what a device was sent. A frame earlier than the device's newest takes the time
+     * after it back: the paused run goes on from where it stopped, and what an audition drew
+     * ahead of it leaves the device's series (and now() follows).
+     */
     void append(const DeviceFrame &frame);
     /** Keeps a router node's activity, its `node` renumbered like an event's. */
     void append(const NodeActivity &activity);
@@ -142,7 +160,7 @@ public:
     double keepSeconds() const { return m_keepSeconds; }
     void setKeepSeconds(double seconds);
 
-    /** The latest pipeline time seen (s). */
+    /** The latest time seen (s): the run's, or an audition's drawn on past a paused run. */
     double now() const { return m_now; }
 
     const RunSeries<ContactFrame> &frames(Gripper gripper) const
@@ -174,6 +192,8 @@ signals:
 
 private:
     void mapNodes(const QStringList &nodeIds);
+    /** The newest time any series holds. */
+    double latest() const;
     /** The running router's node index as the history's. */
     int mapNode(int node) const;
 
@@ -189,7 +209,9 @@ private:
     QJsonObject m_metrics;
     double m_keepSeconds = 120.0;
     double m_now = 0.0;
+    double m_runNow = 0.0; ///< the run's own latest time (not a device's): where open spans end
     bool m_dirty = false;
+    bool m_rewound = false; ///< a device series was taken back since the last commit
 };
 
 } // namespace semhap

@@ -126,6 +126,7 @@ struct PlotPanel::DevicePlot
     QCPAxisRect *rect = nullptr;
     std::vector<QCPGraph *> graphs;
     qint64 next = 0;
+    int rewinds = 0;  ///< the series' rewinds() when it was read
     double low = 0.0; ///< the value range seen since the run started, at least 0..1
     double high = 1.0;
 };
@@ -483,6 +484,7 @@ void PlotPanel::addDevice(int device)
         plot->graphs.push_back(graph);
     }
     plot->next = m_history.deviceFrames(device).begin();
+    plot->rewinds = m_history.deviceFrames(device).rewinds();
     m_devices.push_back(std::move(plot));
 }
 
@@ -540,6 +542,13 @@ void PlotPanel::appendNew()
     std::vector<QVector<QCPGraphData>> channels;
     for (auto &plot : m_devices) {
         const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
+        if (frames.rewinds() != plot->rewinds) {
+            // The run went on where an audition had drawn ahead of it: draw it again.
+            plot->rewinds = frames.rewinds();
+            plot->next = frames.begin();
+            for (QCPGraph *graph : plot->graphs)
+                graph->data()->clear();
+        }
         channels.assign(plot->graphs.size(), QVector<QCPGraphData>());
         for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
             const DeviceFrame &frame = frames.at(i);

@@ -28,7 +28,7 @@ PatternAuditioner::~PatternAuditioner()
 }
 
 bool PatternAuditioner::begin(const PatternPtr &pattern, const TransportSource &source,
-                              double intensity, double endAt, QString *reason)
+                              double intensity, double endAt, double startTime, QString *reason)
 {
     Transport *transport = source ? source() : nullptr;
     if (!pattern || !transport) {
@@ -45,6 +45,7 @@ bool PatternAuditioner::begin(const PatternPtr &pattern, const TransportSource &
     m_frames = 0;
     m_idleSince = -1.0;
     m_endAt = endAt;
+    m_startTime = startTime;
     m_voice->setParam(ParamTable::Intensity, intensity, 0.0);
     m_voice->begin(0.0);
     // The timer runs at the device's rate, up to 500 Hz (a 2 ms interval).
@@ -101,7 +102,7 @@ void PatternAuditioner::tick()
         m_voice->end(m_endAt);
     m_voice->advance(t);
     DeviceFrame frame;
-    frame.t = t;
+    frame.t = m_startTime + t;
     frame.channelCount = m_channels;
     mixVoice(*m_voice, m_routes, transport->model(), frame.values.data());
     transport->send(frame);

@@ -36,11 +36,12 @@ public:
     /**
      * Begins `pattern` now on the transport `source` gives (the pattern must be for its
      * model); restarts it if already playing. It ends by itself `endAt` seconds after the
-     * begin, as the preview draws it; a negative `endAt` holds until end() or stop(). False
-     * with `reason` when it cannot play.
+     * begin, as the preview draws it; a negative `endAt` holds until end() or stop(). Its
+     * frames are stamped `startTime` plus the seconds since the begin: where the readouts
+     * draw them. False with `reason` when it cannot play.
      */
     bool begin(const PatternPtr &pattern, const TransportSource &source, double intensity,
-               double endAt, QString *reason);
+               double endAt, double startTime, QString *reason);
     /** Starts the release; the audition stops by itself once the voice is idle. */
     void end();
     /** Sends every channel to zero at once and stops. */
@@ -68,7 +69,8 @@ private:
     int m_channels = 0;
     int m_frames = 0;
     double m_idleSince = -1.0;
-    double m_endAt = -1.0; ///< when the voice ends by itself; negative: held
+    double m_endAt = -1.0;    ///< when the voice ends by itself; negative: held
+    double m_startTime = 0.0; ///< the frames' time at the begin
 };
 
 } // namespace semhap

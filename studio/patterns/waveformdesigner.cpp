@@ -973,6 +973,8 @@ void WaveformDesigner::beginAudition()
     } else {
         emit auditionStarting();
     }
+    // Read once the run has paused: the audition is drawn on from where the run stopped.
+    const double startTime = !name.isEmpty() && m_runClock ? m_runClock() : 0.0;
     QString reason;
     const bool started = m_auditioner->begin(
         pattern,
@@ -980,7 +982,8 @@ void WaveformDesigner::beginAudition()
             return name.isEmpty() ? m_virtual.get()
                                   : (m_devices ? m_devices->transport(name) : nullptr);
         },
-        m_intensity->value() / 100.0, m_hold->isChecked() ? -1.0 : m_endAt->value(), &reason);
+        m_intensity->value() / 100.0, m_hold->isChecked() ? -1.0 : m_endAt->value(), startTime,
+        &reason);
     if (!started)
         reportError(tr("Cannot audition on %1").arg(m_devicePicker->currentText()), reason);
     else

@@ -5,6 +5,7 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -74,6 +75,11 @@ public:
     void refreshLibrary();
     /** Lists the devices to audition on again (call after bindings changed). */
     void refreshDevices();
+    /**
+     * The time the run's readouts are at, read as an audition on a bound device begins: its
+     * frames are stamped from there, so the plots draw it on after the run (none: from 0).
+     */
+    void setRunClock(std::function<double()> clock) { m_runClock = std::move(clock); }
 
 public slots:
     /** Stops the audition, sending the device to zero. */
@@ -126,6 +132,7 @@ private:
     void reportError(const QString &what, const QString &error);
 
     DeviceManager *m_devices;
+    std::function<double()> m_runClock;
     QString m_userFolder;
     PatternDocument *m_document = nullptr;
     PatternPreview *m_preview = nullptr;

@@ -1,17 +1,21 @@
 // SPDX-License-Identifier: MIT
-// The live plots under load: a producer thread pushes two grippers' contact frames and two
-// 8-channel devices' frames at 1 kHz through a RunFeed; the GUI thread drains it into the
-// RunHistory every 16 ms while a 1280×800 PlotPanel follows. Prints the replots per second,
-// the GUI thread's CPU share and the feed's drops. `--screenshot DIR` instead fills 12 s of
+// The live plots under load: a producer thread pushes two grippers' contact frames through
+// a RunFeed and sends two 8-channel devices' frames to virtual transports at 1 kHz; the GUI
+// thread drains the feed and what the transports sent (a SentFeed) into the RunHistory
+// every 16 ms while a 1280×800 PlotPanel follows. Prints the replots per second, the GUI
+// thread's CPU share and the feeds' drops. `--screenshot DIR` instead fills 12 s of
 // the same synthetic run and saves the panel at 1280×800 and 1920×1080.
+#include "devicemanager.h"
 #include "plotpanel.h"
 #include "runfeed.h"
 #include "runhistory.h"
+#include "sentfeed.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QJsonArray>
 #include <QTest>
 #include <QTimer>
 
@@ -160,13 +164,31 @@ private:
     std::array<bool, 2> m_slip{};
 };
 
+const QStringList Bands = {QStringLiteral("right.band"), QStringLiteral("left.band")};
+
+/** The bands' model: eight channels 0..1 at 1 kHz. */
+DeviceModelPtr band8()
+{
+    QJsonArray channels;
+    for (int c = 0; c < Channels; ++c)
+        channels.append(QJsonObject{{QStringLiteral("name"), QStringLiteral("m%1").arg(c)},
+                                    {QStringLiteral("unit"), QStringLiteral("amplitude")},
+                                    {QStringLiteral("min"), 0},
+                                    {QStringLiteral("max"), 1}});
+    LoadError error;
+    return DeviceModel::fromJson(
+        QJsonObject{{QStringLiteral("format"), QLatin1String(DeviceModel::Format)},
+                    {QStringLiteral("name"), QStringLiteral("band8")},
+                    {QStringLiteral("rate"), 1000},
+                    {QStringLiteral("channels"), channels}},
+        QString(), &error);
+}
+
 void startRun(RunHistory &history)
 {
-    QStringList channels;
-    for (int c = 0; c < Channels; ++c)
-        channels << QStringLiteral("m%1").arg(c);
-    history.start({{QStringLiteral("right.band"), QStringLiteral("band8"), channels},
-                   {QStringLiteral("left.band"), QStringLiteral("band8"), channels}},
+    const QStringList channels = band8()->channelNames();
+    history.start({{Bands[0], QStringLiteral("band8"), channels},
+                   {Bands[1], QStringLiteral("band8"), channels}},
                   {thresholds(), thresholds()},
                   {QStringLiteral("right.force"), QStringLiteral("right.slip"),
                    QStringLiteral("left.force"), QStringLiteral("left.slip")});
@@ -227,6 +249,18 @@ int main(int argc, char *argv[])
 
     const double seconds = std::max(1.0, parser.value(secondsOption).toDouble());
     RunFeed feed;
+    DeviceManager devices;
+    QString error;
+    for (const QString &band : Bands) {
+        if (!devices.bind(band, QStringLiteral("virtual:") + band, band8(), &error)) {
+            std::fprintf(stderr, "%s\n", qPrintable(error));
+            return 1;
+        }
+    }
+    const std::array<Transport *, 2> transports = {devices.transport(Bands[0]),
+                                                   devices.transport(Bands[1])};
+    SentFeed sent;
+    sent.start(Bands, devices);
     std::atomic<bool> done{false};
     std::thread producer([&] {
         Scenario scenario;
@@ -244,7 +278,7 @@ int main(int argc, char *argv[])
                 for (int e = 0; e < tick.eventCount; ++e)
                     feed.onEvent(tick.events[size_t(e)]);
                 for (const DeviceFrame &frame : tick.devices)
-                    feed.onDeviceFrame(frame);
+                    transports[size_t(frame.device)]->send(frame);
             }
             std::this_thread::sleep_for(std::chrono::microseconds(500));
         }
@@ -253,6 +287,7 @@ int main(int argc, char *argv[])
     QTimer drain;
     QObject::connect(&drain, &QTimer::timeout, [&] {
         feed.drainInto(history);
+        sent.drainInto(history);
         history.commit();
     });
     drain.start(16);
@@ -281,6 +316,7 @@ int main(int argc, char *argv[])
                 elapsed, Channels);
     std::printf("replots/s      %.1f\n", double(replots) / elapsed);
     std::printf("GUI thread CPU %.1f %% of one core\n", 100.0 * cpu / elapsed);
-    std::printf("feed drops     %llu\n", static_cast<unsigned long long>(feed.dropped()));
+    std::printf("feed drops     %llu\n",
+                static_cast<unsigned long long>(feed.dropped() + sent.lost()));
     return 0;
 }

@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <map>
+
 using namespace semhap;
 
 class TestEngine : public QObject
@@ -34,6 +36,9 @@ private slots:
     void finishesAtTheDuration();
     void stopAllPauses();
     void stopAllShowsWhatTheBandsWereSent();
+    void readoutsShowWhatTheBandsWereSent_data();
+    void readoutsShowWhatTheBandsWereSent();
+    void theRunTakesBackWhatAnAuditionDrewAhead();
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
@@ -278,6 +283,135 @@ void TestEngine::stopAllShowsWhatTheBandsWereSent()
     QVERIFY(!driven());
     for (int d = 0; d < int(history.devices().size()); ++d)
         QVERIFY(history.deviceFrames(d).end() > history.deviceFrames(d).begin());
+}
+
+void TestEngine::readoutsShowWhatTheBandsWereSent_data()
+{
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<bool>("armed");
+    QTest::newRow("gain 0.5") << 0.5 << true;
+    QTest::newRow("disarmed") << 1.0 << false;
+}
+
+void TestEngine::readoutsShowWhatTheBandsWereSent()
+{
+    // The history's device frames — what the meters and plots read — are what the bands were
+    // sent: the router's request (kept in the recording) scaled by each band's gain, and
+    // each channel's lower limit from a disarmed band, frame for frame.
+    QFETCH(double, gain);
+    QFETCH(bool, armed);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("sent.db");
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    for (const RunDevice &device : engine.history().devices()) {
+        engine.devices().transport(device.name)->setGain(gain);
+        engine.devices().transport(device.name)->setArmed(armed);
+    }
+    QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    QTRY_VERIFY(engine.simTime() > 4.0);
+    engine.pause();
+    engine.stopRecording();
+    QTest::qWait(100); // the last frames reach the history
+
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    const RunHistory &history = engine.history();
+    std::map<std::pair<QString, qint64>, DeviceFrame> asked;
+    QVERIFY(reader->readDeviceFrames(
+        [&](const DeviceFrame &frame) {
+            asked[{reader->deviceNames()[frame.device], std::llround(frame.t * 1e6)}] = frame;
+            return true;
+        },
+        &error));
+    int compared = 0;
+    int driven = 0; // frames the router asked a channel above its lower limit in
+    for (int d = 0; d < int(history.devices().size()); ++d) {
+        const RunDevice &device = history.devices()[size_t(d)];
+        const DeviceModel &model = engine.devices().transport(device.name)->model();
+        const RunSeries<DeviceFrame> &frames = history.deviceFrames(d);
+        for (qint64 i = frames.begin(); i < frames.end(); ++i) {
+            const DeviceFrame &sent = frames.at(i);
+            const auto it = asked.find({device.name, std::llround(sent.t * 1e6)});
+            if (it == asked.end())
+                continue; // before the recording started
+            ++compared;
+            bool above = false;
+            for (int c = 0; c < model.channelCount(); ++c) {
+                const double low = model.channels()[size_t(c)].min;
+                const double request = model.clamp(c, it->second.values[size_t(c)]);
+                above = above || request > low + 1e-3;
+                const double expected = armed ? low + (request - low) * gain : low;
+                QVERIFY2(std::abs(sent.values[size_t(c)] - expected) < 1e-4,
+                         qPrintable(QString("%1.%2 at %3: %4 shown, %5 asked, %6 sent")
+                                        .arg(device.name)
+                                        .arg(c)
+                                        .arg(sent.t)
+                                        .arg(sent.values[size_t(c)])
+                                        .arg(request)
+                                        .arg(expected)));
+            }
+            driven += above ? 1 : 0;
+        }
+    }
+    QVERIFY2(compared > 1000, qPrintable(QString::number(compared)));
+    QVERIFY2(driven > 10, qPrintable(QString::number(driven)));
+}
+
+void TestEngine::theRunTakesBackWhatAnAuditionDrewAhead()
+{
+    // An audition on a paused run's band is drawn on from the run's time (a grasp's span
+    // does not grow with it); when the run goes on from where it stopped, what the audition
+    // drew ahead of it leaves the band's series.
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    engine.pause();
+    const double paused = engine.simTime();
+    QTRY_COMPARE(engine.readoutTime(), paused);
+    const RunHistory &history = engine.history();
+    const QString name = QStringLiteral("right.vibro");
+    int device = 0;
+    while (history.devices()[size_t(device)].name != name)
+        ++device;
+    Transport *band = engine.devices().transport(name);
+    const double start = engine.readoutTime();
+    for (int k = 1; k <= 50; ++k) {
+        DeviceFrame frame;
+        frame.t = start + 0.01 * k;
+        frame.channelCount = 4;
+        frame.values.fill(0.02 * k);
+        band->send(frame);
+    }
+    QTRY_COMPARE(history.deviceFrames(device).last().t, start + 0.5);
+    QCOMPARE(history.deviceFrames(device).last().values[0], 1.0);
+    QCOMPARE(history.now(), start + 0.5);
+    QCOMPARE(engine.readoutTime(), start + 0.5);
+    const auto grasp =
+        std::find_if(history.spans().begin(), history.spans().end(), [](const MessageSpan &span) {
+            return span.active && span.message == Message::Grasp;
+        });
+    QVERIFY(grasp != history.spans().end());
+    QVERIFY2(grasp->end <= paused, qPrintable(QString::number(grasp->end - paused)));
+    // Stop all: the band rests from where the audition was.
+    engine.stopAll();
+    QCOMPARE(history.deviceFrames(device).last().t, start + 0.5);
+    QCOMPARE(history.deviceFrames(device).last().values[0], 0.0);
+
+    const int rewinds = history.deviceFrames(device).rewinds();
+    engine.run();
+    QTRY_VERIFY(engine.simTime() > paused + 1.0);
+    engine.pause();
+    QTest::qWait(100);
+    QCOMPARE(history.deviceFrames(device).rewinds(), rewinds + 1);
+    const RunSeries<DeviceFrame> &frames = history.deviceFrames(device);
+    for (qint64 i = frames.begin() + 1; i < frames.end(); ++i)
+        QVERIFY(frames.at(i).t >= frames.at(i - 1).t);
+    QVERIFY(frames.last().t <= engine.simTime());
+    QVERIFY(history.now() <= engine.simTime());
 }
 
 void TestEngine::swapsSources()

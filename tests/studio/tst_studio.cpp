@@ -12,9 +12,11 @@
 #include "handdrive.h"
 #include "imagechecks.h"
 #include "keymapdialog.h"
+#include "levelmeter.h"
 #include "mainwindow.h"
 #include "metricspanel.h"
 #include "openwindow.h"
+#include "patternauditioner.h"
 #include "patterndocument.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
@@ -44,6 +46,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QProcess>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
@@ -198,6 +201,9 @@ private slots:
     void pausedResetShowsTheScene();
     void timeWindowFollowsTheSpinBox();
     void stopAllWorksFromAnywhere();
+    void auditionShowsInTheReadouts_data();
+    void auditionShowsInTheReadouts();
+    void disarmedBandsReadZero();
     void aKeyInTheViewportTakesOver();
     void drivingPreferencesApply();
     void eventLogMovesThePlotCursor();
@@ -424,6 +430,178 @@ void TestStudio::stopAllWorksFromAnywhere()
     QVERIFY(closed);
     QVERIFY(!window.engine().isRunning());
     QVERIFY(window.statusBar()->currentMessage().startsWith("Stopped"));
+}
+
+void TestStudio::auditionShowsInTheReadouts_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << "en";
+    QTest::newRow("de") << "de";
+}
+
+// An audition on a bound band plays alone (the run pauses), and its readouts show it: the
+// Devices meters and the band's plot row draw what the band was sent — vib.rampup's ramp,
+// after the paused run's time — and Stop all reads zero at once. Screenshots of both docks
+// while it plays (beside the test binary, or in $SEMHAP_SCREENSHOTS).
+void TestStudio::auditionShowsInTheReadouts()
+{
+    QFETCH(QString, language);
+    Studio studio(options());
+    studio.start();
+    if (language != "en")
+        studio.setLanguage(language);
+    MainWindow &window = *studio.window();
+    QVERIFY(openWindow(window)); // active: Esc is the window's shortcut
+    // Past the first grasp (at 2.4 s), for the pictures.
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > 3.0, 20000);
+
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    WaveformDesigner *designer = window.waveformDesigner();
+    designer->openBuiltin("vib.rampup"); // up to 1 in 0.5 s, then 0; released at 1.5 s
+    QVERIFY(choose(designer->findChild<QComboBox *>("auditionDevice"), "right.vibro — lra4"));
+    const SentLog &sent = window.engine().devices().transport("right.vibro")->sent();
+    std::uint64_t next = sent.count();
+    QTest::mouseClick(designer->findChild<QPushButton *>("auditionBegin"), Qt::LeftButton);
+    QVERIFY(designer->auditioner()->isPlaying());
+    QVERIFY(!window.engine().isRunning());
+    const double paused = window.engine().simTime();
+    window.findChild<QDockWidget *>("plotsDock")->raise();
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+
+    auto *meter = window.findChild<LevelMeter *>("levels:right.vibro");
+    QVERIFY(meter);
+    QTRY_VERIFY_WITH_TIMEOUT(meter->values().at(0) > 0.6, 3000);
+
+    // The band's row draws the frames the band was sent, one for one — the ramp, after the
+    // run's time — and the axis goes on with it.
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    QCPGraph *m1 = nullptr;
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        if (plot->graph(g)->objectName() == "right.vibro.m1")
+            m1 = plot->graph(g);
+    }
+    QVERIFY(m1);
+    const auto drawnTo = [m1] { return (m1->data()->constEnd() - 1)->key; };
+    QTRY_VERIFY(drawnTo() > paused + 0.5);
+    QTRY_VERIFY(m1->keyAxis()->range().upper > paused + 0.5);
+    const double drawn = drawnTo();
+    std::vector<DeviceFrame> frames;
+    sent.readSince(&next, &frames);
+    // The run's last frames before the pause, the audition's, and those not drawn yet.
+    const auto outside = [&](const DeviceFrame &f) { return f.t <= paused || f.t > drawn; };
+    frames.erase(std::remove_if(frames.begin(), frames.end(), outside), frames.end());
+    QVERIFY(!frames.empty());
+    int compared = 0;
+    for (auto it = m1->data()->findBegin(paused); it != m1->data()->constEnd(); ++it) {
+        if (it->key <= paused)
+            continue;
+        const auto frame = std::find_if(frames.begin(), frames.end(),
+                                        [&](const DeviceFrame &f) { return f.t == it->key; });
+        QVERIFY2(frame != frames.end(), qPrintable(QString::number(it->key - paused)));
+        QCOMPARE(it->value, frame->values[0]);
+        ++compared;
+    }
+    QCOMPARE(compared, int(frames.size()));
+    int ramp = 0;
+    double previous = 0.0;
+    for (const DeviceFrame &frame : frames) {
+        if (frame.t > paused + 0.45)
+            break;
+        QVERIFY(frame.values[0] >= previous);
+        QVERIFY2(std::abs(frame.values[0] - (frame.t - paused) / 0.5) < 0.1,
+                 qPrintable(QString("%1 at %2 s").arg(frame.values[0]).arg(frame.t - paused)));
+        previous = frame.values[0];
+        ++ramp;
+    }
+    // The audition's timer runs on the GUI thread: how many frames a loaded machine manages.
+    qInfo("%d frames in the ramp's first 0.45 s", ramp);
+    QVERIFY(ramp >= 3);
+
+    // Released at 1.5 s from its peak: the pictures show the whole shape and falling meters
+    // (the Devices panel scrolled to the band, as a user would).
+    for (QWidget *w = meter; w; w = w->parentWidget()) {
+        if (auto *area = qobject_cast<QScrollArea *>(w)) {
+            area->ensureWidgetVisible(meter);
+            area->horizontalScrollBar()->setValue(0);
+        }
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(drawnTo() > paused + 1.6, 3000);
+    QVERIFY(meter->values().at(0) > 0.3);
+    const QString dir = qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")
+                            ? qEnvironmentVariable("SEMHAP_SCREENSHOTS")
+                            : QCoreApplication::applicationDirPath();
+    QString error;
+    QVERIFY2(Studio::screenshot(&window, QString("%1/studio-audition-%2.png").arg(dir, language),
+                                &error),
+             qPrintable(error));
+
+    // Again, and Stop all mid-ramp: the band, its meters and its row are at rest at once.
+    QTRY_VERIFY_WITH_TIMEOUT(!designer->auditioner()->isPlaying(), 3000);
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    QTest::mouseClick(designer->findChild<QPushButton *>("auditionBegin"), Qt::LeftButton);
+    window.findChild<QDockWidget *>("plotsDock")->raise();
+    QTRY_VERIFY_WITH_TIMEOUT(meter->values().at(0) > 0.3, 3000);
+    QTest::keyClick(&window, Qt::Key_Escape);
+    QVERIFY(!designer->auditioner()->isPlaying());
+    QCOMPARE(meter->values(), std::vector<double>(4, 0.0));
+    QCOMPARE((m1->data()->constEnd() - 1)->value, 0.0);
+    QVERIFY(drawnTo() > paused + 2.0); // the second audition went on after the first
+
+    // Step (F6) stops an audition too; the run goes on from its own time, and what the
+    // auditions drew after it leaves the plots.
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    QTest::mouseClick(designer->findChild<QPushButton *>("auditionBegin"), Qt::LeftButton);
+    QVERIFY(designer->auditioner()->isPlaying());
+    QTest::keyClick(&window, Qt::Key_F6);
+    QVERIFY(!designer->auditioner()->isPlaying());
+    QTRY_VERIFY(window.engine().simTime() > paused);
+    QTRY_VERIFY(drawnTo() > paused && drawnTo() <= window.engine().simTime());
+    QVERIFY(m1->keyAxis()->range().upper <= window.engine().simTime());
+}
+
+// The readouts show what the bands were sent: disarmed (Devices → Disarm all), the router's
+// requests on a grasp reach the meters and plots as zeros; armed again, they show.
+void TestStudio::disarmedBandsReadZero()
+{
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    QTest::mouseClick(window.findChild<QPushButton *>("disarmAll"), Qt::LeftButton);
+    const double disarmed = window.engine().simTime();
+    // The highest level a meter shows now or a device's plot row drew after `from`.
+    const auto shown = [&window](double from) {
+        double high = 0.0;
+        auto *plot = window.plots()->findChild<QCustomPlot *>();
+        for (int g = 0; g < plot->graphCount(); ++g) {
+            const QString id = plot->graph(g)->objectName();
+            const auto &devices = window.engine().history().devices();
+            if (std::none_of(devices.begin(), devices.end(),
+                             [&](const RunDevice &d) { return id.startsWith(d.name + '.'); }))
+                continue;
+            for (auto it = plot->graph(g)->data()->findBegin(from);
+                 it != plot->graph(g)->data()->constEnd(); ++it)
+                high = std::max(high, it->key > from ? it->value : 0.0);
+        }
+        for (LevelMeter *meter : window.findChildren<LevelMeter *>()) {
+            for (double value : meter->values())
+                high = std::max(high, value);
+        }
+        return high;
+    };
+    // The scripted operator grasps (C3 confirms it on the right band) and lets go.
+    const auto grasps = [&window] {
+        int count = 0;
+        for (const MessageSpan &span : window.engine().history().spans())
+            count += span.message == Message::Grasp ? 1 : 0;
+        return count;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(grasps() > 0, 30000);
+    QTest::qWait(1000);
+    QCOMPARE(shown(disarmed + 0.1), 0.0);
+    QTest::mouseClick(window.findChild<QPushButton *>("armAll"), Qt::LeftButton);
+    const double armed = window.engine().simTime();
+    QTRY_VERIFY_WITH_TIMEOUT(shown(armed) > 0.1, 30000);
 }
 
 void TestStudio::drivingPreferencesApply()

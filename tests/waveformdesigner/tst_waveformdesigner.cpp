@@ -180,6 +180,7 @@ private slots:
     void jsonTabShowsErrors();
     void auditionReachesEmulator();
     void auditionEndsWhereThePreviewDoes();
+    void auditionIsStampedFromTheRun();
     void importAhap();
     void screenshot();
 };
@@ -531,6 +532,39 @@ void TestWaveformDesigner::auditionEndsWhereThePreviewDoes()
     QVERIFY(auditioner->isActive());
     QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionStop")), Qt::LeftButton);
     QVERIFY(!auditioner->isPlaying());
+}
+
+void TestWaveformDesigner::auditionIsStampedFromTheRun()
+{
+    // On a bound device the audition's frames carry the run's time from where its readouts
+    // are (here 42 s), so the plots draw it on after the run; the transport keeps them as
+    // sent, clamped and scaled by its gain.
+    DeviceManager manager;
+    const QString name = QStringLiteral("right.vibro");
+    QString error;
+    QVERIFY(manager.bind(name, QStringLiteral("virtual:") + name,
+                         DeviceModelLibrary::builtin(QStringLiteral("lra4")), &error));
+    manager.transport(name)->setGain(0.5);
+    Fixture f(&manager);
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.setRunClock([] { return 42.0; });
+    f.designer.refreshDevices();
+    f.designer.openBuiltin(QStringLiteral("vib.rampup"));
+    QVERIFY(choose(f.child<QComboBox>(QStringLiteral("auditionDevice")),
+                   name + QStringLiteral(" — lra4")));
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    const SentLog &sent = manager.transport(name)->sent();
+    QTRY_VERIFY_WITH_TIMEOUT(sent.last().t > 42.6, 3000);
+    std::uint64_t next = 0;
+    std::vector<DeviceFrame> frames;
+    sent.readSince(&next, &frames);
+    QVERIFY(frames.front().t >= 42.0);
+    double peak = 0.0;
+    for (const DeviceFrame &frame : frames)
+        peak = std::max(peak, frame.values[0]);
+    QVERIFY2(std::abs(peak - 0.5) < 0.02, qPrintable(QString::number(peak))); // 1 at gain 0.5
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionStop")), Qt::LeftButton);
+    QCOMPARE(sent.last().values[0], 0.0);
 }
 
 void TestWaveformDesigner::importAhap()
