@@ -261,7 +261,7 @@ void TestTransports::virtualTransportCountsItsRate()
         ++sent;
         QThread::msleep(10);
     }
-    const double expected = sent / (clock.elapsed() / 1000.0);
+    const double expected = sent / (double(clock.elapsed()) / 1000.0);
     const double rate = transport.status().framesPerSecond;
     QVERIFY2(std::abs(rate - expected) < 0.25 * expected,
              qPrintable(QStringLiteral("%1 reported, %2 sent").arg(rate).arg(expected)));
