@@ -16,8 +16,9 @@ packages=(
     libsdl2-dev libspnav-dev
     # statistics (semhap compare's paired tests)
     libgsl-dev
-    # GUI tests and screenshots without a display
-    xvfb xauth libgl1-mesa-dri
+    # GUI tests and screenshots without a display; a real window manager (openbox) and the
+    # X tools that read windows' frames, for the studio's placement on small screens
+    xvfb xauth libgl1-mesa-dri openbox x11-utils
     # the desktop package: man pages, metadata checks, .deb dependencies
     help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )

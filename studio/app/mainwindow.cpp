@@ -24,6 +24,7 @@
 #include "studio.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
+#include "windowplacement.h"
 #include "workspace.h"
 #include "world.h"
 
@@ -109,13 +110,18 @@ MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidg
     createStatusBar();
     createReplayBar();
     connectEngine();
-    resize(options.size.isEmpty() ? QSize(1280, 800) : options.size);
+    if (options.size.isEmpty())
+        setGeometry(WindowPlacement::defaultGeometry(this));
+    else
+        resize(options.size);
     applyDefaultSizes();
     m_defaultState = saveState(LayoutVersion);
     restoreLayout();
     updateMode(); // a layout saved during a replay does not bring its bar back
     if (!options.size.isEmpty())
         resize(options.size);
+    else
+        new WindowPlacement(this); // the whole window on its screen, also a restored one
 
     // A modal dialog takes the keyboard from the window, and its shortcuts with it: Stop all
     // must still work from there.

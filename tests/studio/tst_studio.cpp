@@ -27,6 +27,7 @@
 #include "simviewport.h"
 #include "studio.h"
 #include "userpatterns.h"
+#include "virtualscreen.h"
 #include "waveformdesigner.h"
 #include "widgetchecks.h"
 #include "workspace.h"
@@ -63,6 +64,7 @@
 #include <qcustomplot.h>
 
 #include <functional>
+#include <memory>
 
 using namespace semhap;
 
@@ -215,6 +217,8 @@ private slots:
     void brokenWorkspacesAreReported_data();
     void brokenWorkspacesAreReported();
     void screenshotHook();
+    void firstWindowFitsTheScreen_data();
+    void firstWindowFitsTheScreen();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
@@ -1035,6 +1039,86 @@ void TestStudio::screenshotHook()
         QVERIFY2(out.contains(QString(ask) == "--help" ? "--scene" : "semhap-studio "),
                  qPrintable(out));
     }
+}
+
+void TestStudio::firstWindowFitsTheScreen_data()
+{
+    QTest::addColumn<QSize>("screen");
+    QTest::addColumn<bool>("windowManager");
+    QTest::addColumn<QSize>("savedOnLarger"); // a window of this size closed on 2560×1440
+    QTest::addColumn<bool>("roomy");          // the window should use most of the screen
+    QTest::newRow("1280x800") << QSize(1280, 800) << true << QSize() << false;
+    QTest::newRow("1366x768") << QSize(1366, 768) << true << QSize() << false;
+    QTest::newRow("1366x768, no window manager") << QSize(1366, 768) << false << QSize() << false;
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << true << QSize() << true;
+    QTest::newRow("2560x1440") << QSize(2560, 1440) << true << QSize() << true;
+    QTest::newRow("1366x768, saved on 2560x1440")
+        << QSize(1366, 768) << true << QSize(2400, 1300) << false;
+}
+
+// The real semhap-studio on screens of its own, framed by a real window manager (openbox)
+// with a 36 px panel: the whole window, title bar and frame included, lies in the area the
+// panel leaves, so the status bar at its bottom shows; on a large screen it uses the room.
+void TestStudio::firstWindowFitsTheScreen()
+{
+    QFETCH(QSize, screen);
+    QFETCH(bool, windowManager);
+    QFETCH(QSize, savedOnLarger);
+    QFETCH(bool, roomy);
+    constexpr int Panel = 36;
+    QTemporaryDir dir;
+    const auto studioOn = [&](VirtualScreen &display, const QStringList &arguments) {
+        auto studio = std::make_unique<QProcess>();
+        QProcessEnvironment env = display.environment();
+        env.insert("XDG_CONFIG_HOME", dir.path());
+        studio->setProcessEnvironment(env);
+        studio->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        studio->start(SEMHAP_STUDIO_BINARY, QStringList{"--pose-port", "0"} + arguments);
+        return studio;
+    };
+    QString error;
+    if (savedOnLarger.isValid()) {
+        VirtualScreen large;
+        QVERIFY2(large.start(QSize(2560, 1440), true, Panel, dir.path(), &error),
+                 qPrintable(error));
+        auto studio = studioOn(
+            large,
+            {"--size", QString("%1x%2").arg(savedOnLarger.width()).arg(savedOnLarger.height())});
+        QVERIFY(QTest::qWaitFor(
+            [&] { return large.window("semhap-studio").inside.size() == savedOnLarger; }, 30000));
+        studio->terminate(); // closes the window as the user would: the geometry is saved
+        QVERIFY(studio->waitForFinished(30000));
+    }
+    VirtualScreen display;
+    QVERIFY2(display.start(screen, windowManager, Panel, dir.path(), &error), qPrintable(error));
+    const QRect area = display.workArea();
+    auto studio = studioOn(display, {});
+    const auto fits = [&] {
+        const VirtualScreen::Window window = display.window("semhap-studio");
+        return !window.id.isEmpty() && area.contains(window.frame);
+    };
+    // On screen, then placed again once the window manager has framed it; and it stays so.
+    QVERIFY(QTest::qWaitFor([&] { return !display.window("semhap-studio").id.isEmpty(); }, 30000));
+    const bool placed = QTest::qWaitFor(fits, 10000);
+    QTest::qWait(1000);
+    const VirtualScreen::Window window = display.window("semhap-studio");
+    QVERIFY2(placed && fits(), qPrintable(QString("frame %1,%2 %3x%4 on a work area of %5x%6")
+                                              .arg(window.frame.x())
+                                              .arg(window.frame.y())
+                                              .arg(window.frame.width())
+                                              .arg(window.frame.height())
+                                              .arg(area.width())
+                                              .arg(area.height())));
+    if (windowManager)
+        QVERIFY(window.frame.height() > window.inside.height()); // a title bar is counted
+    if (roomy) {
+        QVERIFY2(
+            window.frame.width() >= area.width() * 8 / 10 &&
+                window.frame.height() >= area.height() * 8 / 10,
+            qPrintable(QString("%1x%2").arg(window.frame.width()).arg(window.frame.height())));
+    }
+    studio->terminate();
+    QVERIFY(studio->waitForFinished(30000));
 }
 
 void TestStudio::screenshotsOfEveryPanel_data()
