@@ -31,6 +31,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTimer>
 #include <QToolBar>
@@ -129,6 +130,10 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     m_view->setDragMode(QGraphicsView::RubberBandDrag);
     m_view->setAcceptDrops(true);
     m_view->setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    // Hidden behind another tab, the view has no size of its own to fit the graph to.
+    m_view->viewport()->installEventFilter(this);
+    for (QScrollBar *bar : {m_view->horizontalScrollBar(), m_view->verticalScrollBar()})
+        connect(bar, &QScrollBar::actionTriggered, this, [this] { m_fitted = false; });
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("routerStatus"));
@@ -245,6 +250,7 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
             m_scene->clearSelection();
             node->setSelected(true);
             m_view->centerOn(node);
+            m_fitted = false;
         }
     });
     connect(m_errorList, &QListWidget::itemClicked, m_errorList, &QListWidget::itemActivated);
@@ -534,9 +540,12 @@ void RouterEditor::arrange()
 
 void RouterEditor::fitView()
 {
+    m_fitted = true;
+    m_fitting = true;
     const QRectF bounds = m_scene->itemsBoundingRect().adjusted(-16, -16, 16, 16);
     if (bounds.isEmpty()) {
         m_view->resetTransform();
+        m_fitting = false;
         return;
     }
     m_view->setSceneRect(bounds.united(m_view->sceneRect()));
@@ -546,6 +555,14 @@ void RouterEditor::fitView()
         m_view->resetTransform();
         m_view->centerOn(bounds.center());
     }
+    m_fitting = false;
+}
+
+bool RouterEditor::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_view->viewport() && event->type() == QEvent::Resize && m_fitted && !m_fitting)
+        fitView();
+    return QWidget::eventFilter(watched, event);
 }
 
 bool RouterEditor::openFile(const QString &path, QString *error)

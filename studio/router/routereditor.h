@@ -73,7 +73,10 @@ public:
     void paste();
     /** Lays the nodes out in columns by kind, as one undoable move. */
     void arrange();
-    /** Zooms the view to show the whole graph. */
+    /**
+     * Zooms the view to show the whole graph, and keeps it so as the view is shown and
+     * resized until the user scrolls.
+     */
     void fitView();
 
     /** Opens a `semhap.router/1` file as a fresh document. */
@@ -113,6 +116,10 @@ signals:
     /** The graph was applied to the session. */
     void applied();
 
+protected:
+    /** The view's first show (a tab raised) and its resizes fit the graph again. */
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
     /** Makes the editor's actions; returns the toolbar's, in order. */
     QList<QAction *> createActions();
@@ -149,6 +156,8 @@ private:
     QString m_inspected; ///< id of the node the inspector shows
     RouterNode m_inspectedNode;
     bool m_inspectorPending = false;
+    bool m_fitted = true;   ///< the view shows the whole graph and follows its size
+    bool m_fitting = false; ///< inside fitView (its scroll bars resize the view)
 };
 
 } // namespace semhap

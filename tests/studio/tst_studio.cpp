@@ -53,6 +53,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -219,6 +220,8 @@ private slots:
     void screenshotHook();
     void firstWindowFitsTheScreen_data();
     void firstWindowFitsTheScreen();
+    void routerFitsItsGraphWhenRaised_data();
+    void routerFitsItsGraphWhenRaised();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
@@ -1121,6 +1124,76 @@ void TestStudio::firstWindowFitsTheScreen()
     QVERIFY(studio->waitForFinished(30000));
 }
 
+void TestStudio::routerFitsItsGraphWhenRaised_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("scene");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block";
+    QTest::newRow("1366x768, bimanual") << QSize(1366, 768) << "bimanual_sorting";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "box_and_block";
+    QTest::newRow("1920x1080, bimanual") << QSize(1920, 1080) << "bimanual_sorting";
+}
+
+/** Whether every node of the router editor's graph lies inside its view; which not, else. */
+static QStringList nodesOutsideTheView(RouterEditor *editor)
+{
+    QStringList outside;
+    QGraphicsView *view = editor->view();
+    for (const RouterNode &node : editor->graph().nodes) {
+        const QRectF box = editor->scene()->nodeItem(node.id)->sceneBoundingRect();
+        if (!view->viewport()->rect().contains(view->mapFromScene(box).boundingRect()))
+            outside.append(node.id);
+    }
+    return outside;
+}
+
+// The Router tab sits behind the plots: its canvas is first shown when the tab is raised,
+// and then shows the whole graph, at every window size; so after the window grows.
+void TestStudio::routerFitsItsGraphWhenRaised()
+{
+    QFETCH(QSize, size);
+    QFETCH(QString, scene);
+    StudioOptions o = options();
+    o.size = size;
+    o.run.scene = scene;
+    Workspace workspace;
+    MainWindow window(workspace, o);
+    QVERIFY(openWindow(window));
+    QTabBar *right = nullptr;
+    for (QTabBar *bar : window.findChildren<QTabBar *>()) {
+        for (int i = 0; i < bar->count(); ++i)
+            right = bar->tabText(i) == "Router" ? bar : right;
+    }
+    QVERIFY(right);
+    for (int i = 0; i < right->count(); ++i) {
+        if (right->tabText(i) == "Router")
+            QTest::mouseClick(right, Qt::LeftButton, {}, right->tabRect(i).center());
+    }
+    QTRY_VERIFY(window.routerEditor()->view()->isVisible());
+    QTest::qWait(100);
+    QStringList outside = nodesOutsideTheView(window.routerEditor());
+    QVERIFY2(outside.isEmpty(), qPrintable(outside.join(", ") + " outside the router's view"));
+    // Not blown up either: the graph fills the view one way or the other.
+    const QRect drawn = window.routerEditor()
+                            ->view()
+                            ->mapFromScene(window.routerEditor()->scene()->itemsBoundingRect())
+                            .boundingRect();
+    const QRect room = window.routerEditor()->view()->viewport()->rect();
+    QVERIFY2(drawn.width() > room.width() * 6 / 10 || drawn.height() > room.height() * 6 / 10 ||
+                 window.routerEditor()->view()->transform().m11() == 1.0,
+             qPrintable(QString("the graph takes %1x%2 of %3x%4")
+                            .arg(drawn.width())
+                            .arg(drawn.height())
+                            .arg(room.width())
+                            .arg(room.height())));
+
+    // The window shrinks (moved to a smaller screen): the graph still fits.
+    window.resize(size - QSize(240, 120));
+    QTest::qWait(200);
+    outside = nodesOutsideTheView(window.routerEditor());
+    QVERIFY2(outside.isEmpty(), qPrintable(outside.join(", ") + " outside after a resize"));
+}
+
 void TestStudio::screenshotsOfEveryPanel_data()
 {
     QTest::addColumn<QSize>("size");
@@ -1206,13 +1279,13 @@ void TestStudio::screenshotsOfEveryPanel()
         !window.routerEditor()->scene()->nodeItem("right.force")->state().isEmpty() ||
             !window.routerEditor()->scene()->nodeItem("left.slip")->state().isEmpty(),
         20000);
-    window.routerEditor()->fitView();
-    QGraphicsView *view = window.routerEditor()->view();
-    for (const RouterNode &node : window.routerEditor()->graph().nodes) {
-        const QRectF box = window.routerEditor()->scene()->nodeItem(node.id)->sceneBoundingRect();
-        QVERIFY2(view->viewport()->rect().contains(view->mapFromScene(box).boundingRect()),
-                 qPrintable(node.id + " is outside the router's view"));
-    }
+    const QStringList outside = nodesOutsideTheView(window.routerEditor());
+    QVERIFY2(outside.isEmpty(), qPrintable(outside.join(", ") + " outside the router's view"));
+    QString error;
+    QVERIFY2(
+        Studio::screenshot(
+            &window, QString("%1/studio-%2-router.png").arg(dir, QTest::currentDataTag()), &error),
+        qPrintable(error));
     const QStringList clipped = clippedTexts(&window);
     QVERIFY2(clipped.isEmpty(), qPrintable("router: " + clipped.join("; ")));
 }
