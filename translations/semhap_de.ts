@@ -164,6 +164,25 @@
     </message>
 </context>
 <context>
+    <name>UndoActions</name>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation>Wiederholen: %1</translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation>Rückgängig: %1</translation>
+    </message>
+</context>
+<context>
     <name>semhap::DevicesPanel</name>
     <message>
         <source>not bound</source>
@@ -1955,14 +1974,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Eigenständig speichern…</translation>
     </message>
     <message>
-        <source>Undo</source>
-        <translation>Rückgängig</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Wiederholen</translation>
-    </message>
-    <message>
         <source>Arrange</source>
         <translation>Anordnen</translation>
     </message>
@@ -2345,14 +2356,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Das Muster als AHAP oder .haptic exportieren (docs/convert.md)</translation>
     </message>
     <message>
-        <source>Undo</source>
-        <translation>Rückgängig</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Wiederholen</translation>
-    </message>
-    <message>
         <source>Library</source>
         <translation>Bibliothek</translation>
     </message>
@@ -2603,6 +2606,14 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Renamed %1 to %2</source>
         <translation>%1 in %2 umbenannt</translation>
+    </message>
+    <message>
+        <source>Pattern</source>
+        <translation>Muster</translation>
+    </message>
+    <message>
+        <source>New, open, save as, import and export</source>
+        <translation>Neu, öffnen, speichern unter, importieren und exportieren</translation>
     </message>
 </context>
 </TS>

@@ -45,6 +45,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QToolButton>
 
 #include <algorithm>
 #include <climits>
@@ -363,6 +364,12 @@ void MainWindow::createToolBar()
     bar->addAction(m_runAction);
     bar->addAction(m_stepAction);
     bar->addAction(m_resetAction);
+    // Step and Reset go by their players' icons (their tooltips name them): the room is the
+    // session name's and notes', in German too.
+    for (QAction *action : {m_stepAction, m_resetAction}) {
+        if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(action)))
+            button->setToolButtonStyle(Qt::ToolButtonIconOnly);
+    }
     bar->addSeparator();
 
     m_speedPicker = new QComboBox(bar);

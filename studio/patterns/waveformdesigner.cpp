@@ -12,6 +12,7 @@
 #include "patternlibrary.h"
 #include "patternpreview.h"
 #include "transportfactory.h"
+#include "undoactions.h"
 #include "userpatterns.h"
 
 #include <QAction>
@@ -39,6 +40,7 @@
 #include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -123,11 +125,32 @@ WaveformDesigner::WaveformDesigner(DeviceManager *devices, PatternDocument *docu
     m_inspector->setObjectName(QStringLiteral("inspector"));
 
     createActions();
+    // The rarer file commands in a menu, as in the router editor: Save, Duplicate, Undo and
+    // Redo stay in sight in the dock of a 1280 px window, in German too.
+    auto *fileMenu = new QMenu(this);
+    fileMenu->setObjectName(QStringLiteral("patternMenu"));
+    for (const char *name :
+         {"newPattern", "openPattern", "saveAsPattern", "", "importPattern", "exportPattern"}) {
+        if (*name)
+            fileMenu->addAction(findChild<QAction *>(QLatin1String(name)));
+        else
+            fileMenu->addSeparator();
+    }
+    auto *fileAction = new QAction(tr("Pattern"), this);
+    fileAction->setObjectName(QStringLiteral("patternMenuAction"));
+    fileAction->setToolTip(tr("New, open, save as, import and export"));
+    fileAction->setMenu(fileMenu);
     auto *toolBar = new QToolBar(this);
     toolBar->setObjectName(QStringLiteral("designerToolBar"));
     toolBar->setIconSize(QSize(16, 16));
     toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    toolBar->addActions(actions());
+    toolBar->addAction(fileAction);
+    if (auto *button = qobject_cast<QToolButton *>(toolBar->widgetForAction(fileAction)))
+        button->setPopupMode(QToolButton::InstantPopup);
+    toolBar->addSeparator();
+    toolBar->addActions({m_saveAction, m_duplicateAction});
+    toolBar->addSeparator();
+    toolBar->addActions({m_undoAction, m_redoAction});
 
     m_banner = new QLabel(this);
     m_banner->setObjectName(QStringLiteral("banner"));
@@ -244,16 +267,10 @@ void WaveformDesigner::createActions()
         ->setToolTip(tr("Import an Apple AHAP or a Meta .haptic file as a new pattern"));
     action(tr("Export…"), QStringLiteral("exportPattern"), {}, &WaveformDesigner::exportFile)
         ->setToolTip(tr("Export the pattern as AHAP or .haptic (docs/convert.md)"));
-    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("Undo"));
+    m_undoAction = UndoActions::undo(m_document->undoStack(), this);
     m_undoAction->setObjectName(QStringLiteral("undo"));
-    m_undoAction->setShortcut(QKeySequence::Undo);
-    m_undoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    addAction(m_undoAction);
-    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("Redo"));
+    m_redoAction = UndoActions::redo(m_document->undoStack(), this);
     m_redoAction->setObjectName(QStringLiteral("redo"));
-    m_redoAction->setShortcut(QKeySequence::Redo);
-    m_redoAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    addAction(m_redoAction);
 }
 
 QWidget *WaveformDesigner::createLibrary()

@@ -11,6 +11,7 @@
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "runhistory.h"
+#include "undoactions.h"
 #include "userpatterns.h"
 
 #include <QAction>
@@ -320,14 +321,10 @@ QList<QAction *> RouterEditor::createActions()
     item(menu, tr("Save self-contained…"), [this] { exportDialog(true); });
     addAction(fileAction);
 
-    QAction *undo = m_undo->createUndoAction(this, tr("Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    undo->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    addAction(undo);
-    QAction *redo = m_undo->createRedoAction(this, tr("Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    redo->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    addAction(redo);
+    QAction *undo = UndoActions::undo(m_undo, this);
+    undo->setObjectName(QStringLiteral("routerUndo"));
+    QAction *redo = UndoActions::redo(m_undo, this);
+    redo->setObjectName(QStringLiteral("routerRedo"));
     auto *arrangeAction = new QAction(tr("Arrange"), this);
     arrangeAction->setToolTip(tr("Lay the nodes out in columns: detectors, logic, patterns, "
                                  "devices"));

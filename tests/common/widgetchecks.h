@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QEvent>
 #include <QImage>
 #include <QLabel>
@@ -31,6 +32,22 @@ inline QString widgetPath(const QWidget *widget)
     return names.join(QLatin1Char('/'));
 }
 
+/**
+ * Whether `widget` shows when `root` does: visible to it, and not in a dock behind another
+ * dock's tab (such a dock is moved out of the window, keeping a size it does not show).
+ */
+inline bool showsIn(const QWidget *widget, const QWidget *root)
+{
+    if (!widget->isVisibleTo(root))
+        return false;
+    for (const QWidget *w = widget; w && w != root; w = w->parentWidget()) {
+        if (qobject_cast<const QDockWidget *>(w) && w->parentWidget() &&
+            !w->parentWidget()->rect().intersects(w->geometry()))
+            return false;
+    }
+    return true;
+}
+
 inline QStringList clippedTexts(const QWidget *root)
 {
     // A label whose text just changed is laid out on the next pass: let it.
@@ -47,13 +64,13 @@ inline QStringList clippedTexts(const QWidget *root)
                                .arg(room));
     };
     for (const QLabel *label : root->findChildren<QLabel *>()) {
-        if (!label->isVisibleTo(root) || label->wordWrap() || label->text().contains('<') ||
+        if (!showsIn(label, root) || label->wordWrap() || label->text().contains('<') ||
             label->text().contains('\n') || !label->pixmap().isNull())
             continue;
         check(label, label->text(), label->contentsRect().width() - 2 * label->margin());
     }
     for (const QAbstractButton *button : root->findChildren<QAbstractButton *>()) {
-        if (!button->isVisibleTo(root) || button->text().isEmpty())
+        if (!showsIn(button, root) || button->text().isEmpty())
             continue;
         // A button's own padding and icon take room: its size hint is what the style asks
         // for the whole text; less than that is a cut.

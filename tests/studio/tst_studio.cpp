@@ -15,6 +15,7 @@
 #include "levelmeter.h"
 #include "mainwindow.h"
 #include "metricspanel.h"
+#include "nodeinspector.h"
 #include "openwindow.h"
 #include "patternauditioner.h"
 #include "patterndocument.h"
@@ -23,6 +24,7 @@
 #include "routerdocument.h"
 #include "routereditor.h"
 #include "routernodeitem.h"
+#include "routernodetype.h"
 #include "routerscene.h"
 #include "simviewport.h"
 #include "studio.h"
@@ -45,6 +47,7 @@
 #include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMenu>
 #include <QProcess>
 #include <QScrollArea>
@@ -59,7 +62,9 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QUndoStack>
 
 #include <qcustomplot.h>
@@ -143,14 +148,25 @@ QString dialogFolder(const std::function<void()> &open, const QString &answer = 
     return folder;
 }
 
-/** Clicks the toolbar button of the designer's action `name`. */
+/** Clicks the designer's action `name`: its toolbar button, or its entry in the Pattern menu. */
 void clickDesignerAction(MainWindow &window, const QString &name)
 {
     window.findChild<QDockWidget *>("patternsDock")->raise();
-    auto *bar = window.waveformDesigner()->findChild<QToolBar *>("designerToolBar");
-    QWidget *button = bar->widgetForAction(window.waveformDesigner()->findChild<QAction *>(name));
-    QVERIFY(button);
-    QTest::mouseClick(button, Qt::LeftButton);
+    WaveformDesigner *designer = window.waveformDesigner();
+    auto *bar = designer->findChild<QToolBar *>("designerToolBar");
+    auto *action = designer->findChild<QAction *>(name);
+    QVERIFY(action);
+    if (QWidget *button = bar->widgetForAction(action)) {
+        QTest::mouseClick(button, Qt::LeftButton);
+        return;
+    }
+    auto *menu = designer->findChild<QMenu *>("patternMenu");
+    QVERIFY(menu && menu->actions().contains(action));
+    QWidget *menuButton =
+        bar->widgetForAction(designer->findChild<QAction *>("patternMenuAction"));
+    // No waiting in between: a caller may have a dialog's answer queued for what it opens.
+    menu->popup(menuButton->mapToGlobal(menuButton->rect().bottomLeft()));
+    QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action).center());
 }
 
 /** The window sizes and languages a picture of a new piece of the window is taken at. */
@@ -222,6 +238,8 @@ private slots:
     void firstWindowFitsTheScreen();
     void routerFitsItsGraphWhenRaised_data();
     void routerFitsItsGraphWhenRaised();
+    void toolbarsFitAt1280_data();
+    void toolbarsFitAt1280();
     void screenshotsOfEveryPanel_data();
     void screenshotsOfEveryPanel();
     void saysWhenTheTaskIsDone_data();
@@ -1192,6 +1210,82 @@ void TestStudio::routerFitsItsGraphWhenRaised()
     QTest::qWait(200);
     outside = nodesOutsideTheView(window.routerEditor());
     QVERIFY2(outside.isEmpty(), qPrintable(outside.join(", ") + " outside after a resize"));
+}
+
+/** Clicks the tab named `title` among the window's dock tabs. */
+static bool raiseTab(MainWindow &window, const QString &title)
+{
+    for (QTabBar *bar : window.findChildren<QTabBar *>()) {
+        for (int i = 0; i < bar->count(); ++i) {
+            if (bar->tabText(i) == title) {
+                QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+void TestStudio::toolbarsFitAt1280_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << "en";
+    QTest::newRow("de") << "de";
+}
+
+// At 1280×800, in either language, every toolbar of the window and its docks shows all of
+// its buttons and fields (none in the "»" overflow menu, no field squeezed), and the
+// editors' Undo and Redo stay in sight after an edit (their names no longer grow with it).
+void TestStudio::toolbarsFitAt1280()
+{
+    QFETCH(QString, language);
+    StudioOptions o = options();
+    o.autoRun = false;
+    Studio studio(o);
+    studio.start();
+    if (language != "en")
+        studio.setLanguage(language);
+    MainWindow &window = *studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    // An edit in each editor: what Undo would undo has a name now.
+    window.routerEditor()->setParam("right.force", "grasp", 25);
+    window.waveformDesigner()->findChild<QAction *>("duplicatePattern")->trigger();
+    window.waveformDesigner()->document()->setValue("/description", QJsonValue("a copy"));
+    QVERIFY(window.routerEditor()->undoStack()->canUndo());
+    QVERIFY(window.waveformDesigner()->document()->undoStack()->canUndo());
+
+    for (const QString dock : {"plotsDock", "routerDock", "patternsDock"}) {
+        QVERIFY(raiseTab(window, window.findChild<QDockWidget *>(dock)->windowTitle()));
+        QTest::qWait(100);
+        for (QToolBar *bar : window.findChildren<QToolBar *>()) {
+            if (!bar->isVisible() || !showsIn(bar, &window))
+                continue;
+            auto *more = bar->findChild<QToolButton *>("qt_toolbar_ext_button");
+            QVERIFY2(more && !more->isVisible(),
+                     qPrintable(QString("%1: the toolbar %2 overflows (%3 px for %4 px)")
+                                    .arg(dock, bar->objectName())
+                                    .arg(bar->width())
+                                    .arg(bar->sizeHint().width())));
+            const QStringList clipped = clippedTexts(bar);
+            QVERIFY2(clipped.isEmpty(), qPrintable(dock + ": " + clipped.join("; ")));
+        }
+    }
+    for (QWidget *editor : {static_cast<QWidget *>(window.routerEditor()),
+                            static_cast<QWidget *>(window.waveformDesigner())}) {
+        QVERIFY(raiseTab(window, qobject_cast<QDockWidget *>(editor->parentWidget())
+                                     ? editor->parentWidget()->windowTitle()
+                                     : QString()));
+        QTest::qWait(100);
+        auto *bar = editor->findChild<QToolBar *>();
+        for (QAction *action : editor->actions()) {
+            if (action->shortcut() != QKeySequence(QKeySequence::Undo) &&
+                action->shortcuts() != QKeySequence::keyBindings(QKeySequence::Redo))
+                continue;
+            QWidget *button = bar->widgetForAction(action);
+            QVERIFY2(button && button->isVisible(),
+                     qPrintable(action->text() + " is not in sight in " + editor->objectName()));
+        }
+    }
 }
 
 void TestStudio::screenshotsOfEveryPanel_data()
