@@ -245,14 +245,6 @@
         <translation>VID:PID</translation>
     </message>
     <message>
-        <source>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</source>
-        <translation>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</translation>
-    </message>
-    <message>
-        <source>An address that cannot be discovered: a UDP band, a pseudo-terminal or a virtual device</source>
-        <translation>Eine Adresse, die nicht automatisch gefunden werden kann: ein UDP-Armband, ein Pseudo-Terminal oder ein virtuelles Gerät</translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
@@ -313,8 +305,16 @@
         <translation>%1 von %2 freigegeben</translation>
     </message>
     <message>
-        <source>%1 — %2 (its hand is not in this scene)</source>
-        <translation>%1 — %2 (seine Hand ist nicht in dieser Szene)</translation>
+        <source>e.g. udp:127.0.0.1:9000</source>
+        <translation>z. B. udp:127.0.0.1:9000</translation>
+    </message>
+    <message>
+        <source>An address that cannot be discovered: a UDP band (udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a virtual device (virtual:x)</source>
+        <translation>Eine Adresse, die nicht automatisch gefunden werden kann: ein UDP-Armband (udp:127.0.0.1:9000), ein Pseudo-Terminal (serial:/dev/pts/3) oder ein virtuelles Gerät (virtual:x)</translation>
+    </message>
+    <message>
+        <source>Its hand is not in this scene.</source>
+        <translation>Seine Hand ist nicht in dieser Szene.</translation>
     </message>
 </context>
 <context>

@@ -245,14 +245,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>An address that cannot be discovered: a UDP band, a pseudo-terminal or a virtual device</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation type="unfinished"></translation>
     </message>
@@ -313,7 +305,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 — %2 (its hand is not in this scene)</source>
+        <source>e.g. udp:127.0.0.1:9000</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An address that cannot be discovered: a UDP band (udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a virtual device (virtual:x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its hand is not in this scene.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

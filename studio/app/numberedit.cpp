@@ -5,7 +5,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QJsonObject>
 #include <QLabel>
 
@@ -25,7 +25,8 @@ QDoubleSpinBox *makeSpin(const QString &name, const QString &prefix, QWidget *pa
     spin->setKeyboardTracking(false);
     spin->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     // The range's widest number would make the form too wide for a dock.
-    spin->setMinimumWidth(spin->fontMetrics().horizontalAdvance(QStringLiteral("-000.0000")) + 24);
+    spin->setMinimumWidth(
+        spin->fontMetrics().horizontalAdvance(prefix + QStringLiteral("-000.0000")) + 24);
     return spin;
 }
 
@@ -33,7 +34,9 @@ QDoubleSpinBox *makeSpin(const QString &name, const QString &prefix, QWidget *pa
 
 NumberEdit::NumberEdit(QWidget *parent) : QWidget(parent)
 {
-    auto *layout = new QHBoxLayout(this);
+    // A constant on one row: the source and the value. A bound number puts its gain and
+    // offset on a second row, so that three fields fit an inspector's width.
+    auto *layout = new QGridLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     m_source = new QComboBox(this);
     m_source->setObjectName(QStringLiteral("source"));
@@ -46,11 +49,13 @@ NumberEdit::NumberEdit(QWidget *parent) : QWidget(parent)
     m_offset = makeSpin(QStringLiteral("offset"), tr("+ "), this);
     m_offset->setToolTip(tr("Offset: the value is gain × parameter + offset"));
     m_curve = new QLabel(tr("through a curve (edit it in the JSON tab)"), this);
-    layout->addWidget(m_source);
-    layout->addWidget(m_value, 1);
-    layout->addWidget(m_gain, 1);
-    layout->addWidget(m_offset, 1);
-    layout->addWidget(m_curve, 1);
+    m_curve->setWordWrap(true);
+    layout->addWidget(m_source, 0, 0);
+    layout->addWidget(m_value, 0, 1);
+    layout->addWidget(m_gain, 1, 0);
+    layout->addWidget(m_offset, 1, 1);
+    layout->addWidget(m_curve, 1, 0, 1, 2);
+    layout->setColumnStretch(1, 1);
     connect(m_source, &QComboBox::activated, this, [this] {
         updateVisibility();
         commit();

@@ -101,9 +101,10 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     m_present->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_present->header()->setStretchLastSection(true);
     m_address->setObjectName(QStringLiteral("address"));
-    m_address->setPlaceholderText(tr("udp:127.0.0.1:9000, serial:/dev/pts/3, virtual:x"));
-    m_address->setToolTip(tr("An address that cannot be discovered: a UDP band, a "
-                             "pseudo-terminal or a virtual device"));
+    m_address->setPlaceholderText(tr("e.g. udp:127.0.0.1:9000"));
+    m_address->setToolTip(tr("An address that cannot be discovered: a UDP band "
+                             "(udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a "
+                             "virtual device (virtual:x)"));
     auto *add = new QPushButton(tr("Add"), this);
     add->setObjectName(QStringLiteral("addButton"));
     auto *rescanButton = new QPushButton(tr("Rescan"), this);
@@ -112,13 +113,16 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     m_message->setWordWrap(true);
     m_message->setStyleSheet(QStringLiteral("color: %1;").arg(colors::css(colors::Error)));
     m_message->hide();
+    // The address on a line of its own, the buttons under it: the box is narrow beside
+    // the router's devices in a 1280 px window.
     auto *addRow = new QHBoxLayout;
-    addRow->addWidget(m_address, 1);
     addRow->addWidget(add);
     addRow->addWidget(rescanButton);
+    addRow->addStretch(1);
     auto *presentBox = new QGroupBox(tr("Present devices"));
     auto *presentLayout = new QVBoxLayout(presentBox);
     presentLayout->addWidget(m_present, 1);
+    presentLayout->addWidget(m_address);
     presentLayout->addLayout(addRow);
     presentLayout->addWidget(m_message);
 
@@ -250,10 +254,7 @@ void DevicesPanel::rebuildRows()
         row->device = int(entry - m_history.devices().data());
         row->name = device.name;
         row->model = device.model;
-        auto *box = new QGroupBox(
-            device.idle
-                ? tr("%1 — %2 (its hand is not in this scene)").arg(device.name, device.model)
-                : tr("%1 — %2").arg(device.name, device.model));
+        auto *box = new QGroupBox(tr("%1 — %2").arg(device.name, device.model));
         row->uri = new QComboBox(box);
         row->uri->setObjectName(QStringLiteral("uri:") + device.name);
         row->uri->setEditable(true);
@@ -287,16 +288,23 @@ void DevicesPanel::rebuildRows()
         }
         row->meter->setChannels(channels);
 
+        // The URI on a line of its own, then the buttons and the state, then the details:
+        // a row fits the dock of a 1280 px window without scrolling sideways.
         auto *bindLine = new QHBoxLayout;
-        bindLine->addWidget(row->uri, 1);
         bindLine->addWidget(connectButton);
         bindLine->addWidget(row->disconnect);
-        auto *stateLine = new QHBoxLayout;
-        stateLine->addWidget(row->state, 0, Qt::AlignTop);
-        stateLine->addWidget(row->details, 1);
+        bindLine->addWidget(row->state);
+        bindLine->addStretch(1);
         auto *boxLayout = new QVBoxLayout(box);
+        if (device.idle) {
+            // Inside the box, wrapped: a title does not wrap and would widen every row.
+            auto *idle = new QLabel(tr("Its hand is not in this scene."), box);
+            idle->setWordWrap(true);
+            boxLayout->addWidget(idle);
+        }
+        boxLayout->addWidget(row->uri);
         boxLayout->addLayout(bindLine);
-        boxLayout->addLayout(stateLine);
+        boxLayout->addWidget(row->details);
         boxLayout->addWidget(row->meter);
         m_rowsLayout->insertWidget(m_rowsLayout->count() - 1, box);
 

@@ -6,13 +6,16 @@
 #include "patterndocument.h"
 #include "waveformtype.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFocusEvent>
 #include <QFormLayout>
 #include <QHash>
 #include <QJsonArray>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QVBoxLayout>
 
@@ -54,6 +57,53 @@ QJsonValue pointsJson(const QString &text)
     }
     return points;
 }
+
+/** Lines of text that wrap, for prose; `finished` runs when the keyboard leaves it. */
+class TextBox : public QPlainTextEdit
+{
+public:
+    TextBox(const QString &text, QWidget *parent) : QPlainTextEdit(text, parent)
+    {
+        setTabChangesFocus(true);
+        setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+        connect(document()->documentLayout(), &QAbstractTextDocumentLayout::documentSizeChanged,
+                this, &TextBox::fitText);
+    }
+
+    std::function<void()> finished;
+
+protected:
+    void focusOutEvent(QFocusEvent *event) override
+    {
+        QPlainTextEdit::focusOutEvent(event);
+        if (finished && event->reason() != Qt::PopupFocusReason)
+            finished();
+    }
+
+    void resizeEvent(QResizeEvent *event) override
+    {
+        QPlainTextEdit::resizeEvent(event);
+        fitText();
+    }
+
+private:
+    /** As tall as its wrapped text, two to six lines: a description reads whole. */
+    void fitText()
+    {
+        // A plain text layout measures its document in lines.
+        const int lines = int(document()->documentLayout()->documentSize().height());
+        setVerticalScrollBarPolicy(lines > MaxLines ? Qt::ScrollBarAsNeeded
+                                                    : Qt::ScrollBarAlwaysOff);
+        const int shown = std::clamp(lines, 2, MaxLines);
+        const int height = shown * fontMetrics().lineSpacing() +
+                           2 * (frameWidth() + int(document()->documentMargin()));
+        if (height != this->height())
+            setFixedHeight(height);
+    }
+
+    static constexpr int MaxLines = 6;
+};
 
 } // namespace
 
@@ -156,11 +206,14 @@ void NodeInspector::addPatternFields()
     const QJsonObject &json = m_document.json();
     addText(QStringLiteral("name"), tr("Name"), json.value(QLatin1String("name")).toString(),
             [](const QString &text) { return QJsonValue(text.trimmed()); });
-    addText(QStringLiteral("description"), tr("Description"),
-            json.value(QLatin1String("description")).toString(), [](const QString &text) {
-                return text.trimmed().isEmpty() ? QJsonValue(QJsonValue::Undefined)
-                                                : QJsonValue(text.trimmed());
-            });
+    addText(
+        QStringLiteral("description"), tr("Description"),
+        json.value(QLatin1String("description")).toString(),
+        [](const QString &text) {
+            return text.trimmed().isEmpty() ? QJsonValue(QJsonValue::Undefined)
+                                            : QJsonValue(text.trimmed());
+        },
+        TextShape::Lines);
     QStringList params;
     const QJsonObject declared = json.value(QLatin1String("params")).toObject();
     for (auto it = declared.begin(); it != declared.end(); ++it)
@@ -193,7 +246,7 @@ void NodeInspector::addTrackFields()
                 return out.isEmpty() ? QJsonValue(QJsonArray{QStringLiteral("*")})
                                      : QJsonValue(out);
             });
-    m_form->addRow(QString(), new QLabel(tr("* drives every channel of the model"), this));
+    addNote(tr("* drives every channel of the model"));
 }
 
 void NodeInspector::addWaveformFields(const QJsonObject &node)
@@ -246,8 +299,7 @@ void NodeInspector::addWaveformFields(const QJsonObject &node)
         }
     }
     if (inputs)
-        m_form->addRow(QString(),
-                       new QLabel(tr("Its inputs are the children in the tree."), this));
+        addNote(tr("Its inputs are the children in the tree."));
 }
 
 QString NodeInspector::fieldLabel(const ParamSpec &field)
@@ -323,23 +375,47 @@ void NodeInspector::addStart(const QJsonObject &node)
 }
 
 void NodeInspector::addText(const QString &key, const QString &label, const QString &text,
-                            const std::function<QJsonValue(const QString &)> &toJson)
+                            const std::function<QJsonValue(const QString &)> &toJson,
+                            TextShape shape)
 {
-    auto *line = new QLineEdit(text, this);
-    line->setObjectName(fieldName(key));
-    connect(line, &QLineEdit::editingFinished, this, [this, key, line, toJson, text] {
-        if (line->text() == text)
+    QWidget *field = nullptr;
+    std::function<QString()> typed;
+    if (shape == TextShape::Lines) {
+        auto *box = new TextBox(text, this);
+        field = box;
+        typed = [box] { return box->toPlainText(); };
+    } else {
+        auto *line = new QLineEdit(text, this);
+        field = line;
+        typed = [line] { return line->text(); };
+    }
+    field->setObjectName(fieldName(key));
+    const auto commit = [this, key, field, typed, toJson, text] {
+        if (typed() == text)
             return;
-        const QJsonValue value = toJson(line->text());
+        const QJsonValue value = toJson(typed());
         if (value.isNull()) {
-            line->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid %1; }")
-                                    .arg(colors::css(colors::Exception)));
-            line->setToolTip(tr("Not understood; nothing was changed"));
+            field->setStyleSheet(QStringLiteral("%1 { border: 2px solid %2; }")
+                                     .arg(QLatin1String(field->metaObject()->className()),
+                                          colors::css(colors::Exception)));
+            field->setToolTip(tr("Not understood; nothing was changed"));
             return;
         }
         edit(key, value);
-    });
-    m_form->addRow(label, line);
+    };
+    if (auto *line = qobject_cast<QLineEdit *>(field))
+        connect(line, &QLineEdit::editingFinished, this, commit);
+    else
+        static_cast<TextBox *>(field)->finished = commit;
+    m_form->addRow(label, field);
+}
+
+void NodeInspector::addNote(const QString &text)
+{
+    // Wrapped: a note never makes the form wider than the inspector.
+    auto *note = new QLabel(text, this);
+    note->setWordWrap(true);
+    m_form->addRow(QString(), note);
 }
 
 void NodeInspector::edit(const QString &key, const QJsonValue &value)

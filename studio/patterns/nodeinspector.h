@@ -45,9 +45,21 @@ private:
     /** A field's translated display name and unit: "Frequency (Hz)". */
     static QString fieldLabel(const ParamSpec &field);
     void addStart(const QJsonObject &node);
-    /** A line edit; `toJson` gives null for text it does not understand, undefined to remove. */
+    /** How a text field shows its text: one line, or lines that wrap (prose). */
+    enum class TextShape
+    {
+        Line,
+        Lines
+    };
+    /**
+     * A text field that commits when the keyboard leaves it (a line also on Return);
+     * `toJson` gives null for text it does not understand, undefined to remove.
+     */
     void addText(const QString &key, const QString &label, const QString &text,
-                 const std::function<QJsonValue(const QString &)> &toJson);
+                 const std::function<QJsonValue(const QString &)> &toJson,
+                 TextShape shape = TextShape::Line);
+    /** A line of explanation under the fields. */
+    void addNote(const QString &text);
     void edit(const QString &key, const QJsonValue &value);
     QStringList paramNames() const;
 

@@ -238,6 +238,8 @@ private slots:
     void firstWindowFitsTheScreen();
     void routerFitsItsGraphWhenRaised_data();
     void routerFitsItsGraphWhenRaised();
+    void inspectorsShowEveryFieldWhole_data();
+    void inspectorsShowEveryFieldWhole();
     void toolbarsFitAt1280_data();
     void toolbarsFitAt1280();
     void screenshotsOfEveryPanel_data();
@@ -1224,6 +1226,87 @@ static bool raiseTab(MainWindow &window, const QString &title)
         }
     }
     return false;
+}
+
+void TestStudio::inspectorsShowEveryFieldWhole_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << "en";
+    QTest::newRow("de") << "de";
+}
+
+// At 1280×800, in either language: the router editor's inspector for a node of every type
+// and every node of C3p, and the pattern designer's inspector for every node of every
+// built-in pattern, show each field whole: none cut by the dock or a scroll area, no text
+// or value squeezed.
+void TestStudio::inspectorsShowEveryFieldWhole()
+{
+    QFETCH(QString, language);
+    StudioOptions o = options();
+    o.run.router = "C3p";
+    o.autoRun = false;
+    Studio studio(o);
+    studio.start();
+    if (language != "en")
+        studio.setLanguage(language);
+    MainWindow &window = *studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    QStringList clipped;
+    const auto look = [&](QWidget *dock, const QString &what) {
+        QCoreApplication::processEvents(); // the inspectors rebuild queued
+        QCoreApplication::processEvents();
+        const QStringList here = clippedTexts(dock);
+        for (const QString &text : here)
+            clipped.append(what + ": " + text);
+        if (!shots.isEmpty() && !here.isEmpty())
+            window.grab().save(QString("%1/inspector-%2-%3.png")
+                                   .arg(shots, language, QString(what).replace('/', '_')));
+    };
+
+    RouterEditor *editor = window.routerEditor();
+    QVERIFY(raiseTab(window, window.findChild<QDockWidget *>("routerDock")->windowTitle()));
+    QTRY_VERIFY(editor->view()->isVisible());
+    QListWidget *palette = editor->palette();
+    for (const RouterNodeType &type : routerNodeTypes()) {
+        const QList<QListWidgetItem *> items = palette->findItems(type.type, Qt::MatchExactly);
+        QCOMPARE(items.size(), 1);
+        palette->scrollToItem(items.front());
+        const QPoint center = palette->visualItemRect(items.front()).center();
+        QTest::mouseClick(palette->viewport(), Qt::LeftButton, {}, center);
+        QTest::mouseDClick(palette->viewport(), Qt::LeftButton, {}, center);
+        QTRY_COMPARE(editor->scene()->selectedNodeIds().size(), 1);
+    }
+    editor->arrange(); // apart, so that a click hits the node it means
+    for (const RouterNode &node : editor->graph().nodes) {
+        RouterNodeItem *item = editor->scene()->nodeItem(node.id);
+        editor->view()->ensureVisible(item);
+        QTest::mouseClick(editor->view()->viewport(), Qt::LeftButton, {},
+                          editor->view()->mapFromScene(item->mapToScene(QPointF(60, 10))));
+        QTRY_COMPARE(editor->scene()->selectedNodeIds(), QStringList{node.id});
+        QTRY_VERIFY(editor->inspector()->findChild<QLineEdit *>("nodeId"));
+        look(window.findChild<QDockWidget *>("routerDock"), "router/" + node.id);
+    }
+
+    WaveformDesigner *designer = window.waveformDesigner();
+    QVERIFY(raiseTab(window, window.findChild<QDockWidget *>("patternsDock")->windowTitle()));
+    QTRY_VERIFY(designer->isVisible());
+    auto *library = designer->findChild<QListWidget *>("library");
+    for (int row = 0; row < library->count(); ++row) {
+        library->scrollToItem(library->item(row));
+        QTest::mouseClick(library->viewport(), Qt::LeftButton, {},
+                          library->visualItemRect(library->item(row)).center());
+        QTreeWidget *tree = designer->tree();
+        QTRY_VERIFY(tree->topLevelItemCount() > 0);
+        for (QTreeWidgetItemIterator it(tree); *it; ++it) {
+            tree->scrollToItem(*it);
+            QTest::mouseClick(tree->viewport(), Qt::LeftButton, {},
+                              tree->visualItemRect(*it).center());
+            look(window.findChild<QDockWidget *>("patternsDock"),
+                 library->item(row)->text() + "/" + (*it)->text(0).section(' ', 0, 0));
+        }
+    }
+    QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("\n")));
 }
 
 void TestStudio::toolbarsFitAt1280_data()
