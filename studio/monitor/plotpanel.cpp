@@ -138,6 +138,9 @@ struct PlotPanel::SpanView
     QString node;
     Message message = Message::Grasp;
     double begin = 0.0;
+    double end = 0.0;
+    bool active = true;
+    int row = 0; ///< the label's own row under the rect's title (a kind of message each)
     std::array<QCPItemRect *, 2> shades{};
     std::array<QCPItemStraightLine *, 2> beginLines{};
     std::array<QCPItemStraightLine *, 2> endLines{};
@@ -234,6 +237,7 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
     // Pixels are known only once the plot is laid out (after a resize, say).
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
+    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::layoutSpanLabels);
     connect(&m_history, &RunHistory::reset, this, [this] {
         m_cursorTime = std::numeric_limits<double>::quiet_NaN();
         rebuild();
@@ -640,10 +644,11 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
     font.setBold(true);
     view.label->setFont(font);
     view.label->setBrush(colors::veil(170));
-    // One row per message below the rect's title, so overlapping spans stay readable.
-    const int row = int(span.message) + (threshold ? 3 : 0);
+    // A row per kind of message below the rect's title, so overlapping spans stay readable
+    // (layoutSpanLabels() places it).
+    view.row = int(span.message) + (threshold ? 3 : 0);
     place(view.label->position, plot.forceRect, QCPItemPosition::ptPlotCoords,
-          QCPItemPosition::ptAxisRectRatio, span.begin, 0.14 + 0.13 * row);
+          QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
     return view;
 }
 
@@ -672,6 +677,8 @@ void PlotPanel::syncSpans()
             view = m_spans.end() - 1;
         }
         view->seen = true;
+        view->end = span.end;
+        view->active = span.active;
         placeSpan(*view, span);
     }
     // Spans the history forgot.
@@ -727,12 +734,65 @@ void PlotPanel::setTimeRange(double lower, double upper)
     for (QCPAxisRect *rect : m_rects)
         rect->axis(QCPAxis::atBottom)->setRange(lower, upper);
     m_syncingRange = false;
-    // Labels of spans that began before the view stay at its left edge.
-    for (SpanView &view : m_spans)
-        view.label->position->setCoords(std::max(view.begin, lower),
-                                        view.label->position->coords().y());
     fitValueAxes();
     updateCursor();
+}
+
+void PlotPanel::layoutSpanLabels()
+{
+    for (const auto &plot : m_grippers) {
+        const QRect area = plot->forceRect->rect();
+        const QCPAxis *time = plot->forceRect->axis(QCPAxis::atBottom);
+        const QCPRange range = time->range();
+        // A span's label shows while the span does: from its begin, or from the view's left
+        // edge while it goes on; an ended span out of view takes it along.
+        std::vector<SpanView *> shown;
+        for (SpanView &view : m_spans) {
+            if (view.gripper != plot->gripper)
+                continue;
+            view.label->setVisible(false);
+            const bool inView =
+                view.begin <= range.upper && (view.active || view.end >= range.lower);
+            if (inView && area.height() > 0)
+                shown.push_back(&view);
+        }
+        std::stable_sort(shown.begin(), shown.end(),
+                         [](const SpanView *a, const SpanView *b) { return a->begin < b->begin; });
+        // In rows as tall as a label under the rect's title, in the upper part where the
+        // force curves leave room: each kind of message on its own row, so the labels read
+        // as lanes; a label that would cover another waits until it would not (its span is
+        // shaded anyway). A rect too short for a kind's row lends it the first free row.
+        std::vector<QRectF> taken;
+        for (SpanView *view : shown) {
+            const double x = std::max(view->begin, range.lower);
+            view->label->position->setCoords(x, 0.0);
+            const QRectF box(view->label->topLeft->pixelPosition(),
+                             view->label->bottomRight->pixelPosition());
+            const double rowHeight = box.height() + 1.0;
+            // Less the title's row; a squeezed rect still has the one under its title.
+            int rows = int(area.height() * 0.75 / rowHeight) - 1;
+            if (rows < 1 && area.height() >= 2 * rowHeight)
+                rows = 1;
+            std::vector<int> tries{view->row};
+            if (view->row >= rows) {
+                tries.clear();
+                for (int row = 0; row < rows; ++row)
+                    tries.push_back(row);
+            }
+            for (int row : tries) {
+                const QRectF at = box.translated(0.0, (row + 1) * rowHeight);
+                const auto overlaps = [&at](const QRectF &other) {
+                    return other.adjusted(-2.0, 0.0, 2.0, 0.0).intersects(at);
+                };
+                if (std::any_of(taken.begin(), taken.end(), overlaps))
+                    continue;
+                taken.push_back(at);
+                view->label->position->setCoords(x, (at.top() - area.top()) / area.height());
+                view->label->setVisible(true);
+                break;
+            }
+        }
+    }
 }
 
 void PlotPanel::onTimeRangeChanged(const QCPRange &range)

@@ -89,6 +89,8 @@ private:
     void syncSpans();
     SpanView makeSpanView(const MessageSpan &span, const GripperPlot &plot);
     void placeSpan(const SpanView &view, const MessageSpan &span);
+    /** Shows the labels of the spans in view, none over another (the pixels are laid out). */
+    void layoutSpanLabels();
     void fitValueAxes();
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);

@@ -150,6 +150,9 @@ private slots:
     void thresholdLines();
     void spans_data();
     void spans();
+    void spanLabelsNeverOverlap_data();
+    void spanLabelsNeverOverlap();
+    void spanLabelLeavesWithItsSpan();
     void onlyNewSamplesAppended();
     void bimanualRightFirst();
     void windowSpinBox_data();
@@ -283,6 +286,107 @@ void TestPlots::spans()
     auto *text = itemNamed<QCPItemText>(m_plot, span);
     QVERIFY(text);
     QCOMPARE(text->text(), label);
+}
+
+/** The message-span labels drawn in the plot: their rectangles on screen, by name. */
+static QList<std::pair<QString, QRectF>> spanLabels(QCustomPlot *plot)
+{
+    QList<std::pair<QString, QRectF>> labels;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        auto *text = qobject_cast<QCPItemText *>(plot->item(i));
+        if (!text || !text->objectName().startsWith("span.") || !text->visible())
+            continue;
+        const QRectF box(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition());
+        if (box.intersects(text->clipAxisRect()->rect()))
+            labels.append({text->objectName(), box});
+    }
+    return labels;
+}
+
+void TestPlots::spanLabelsNeverOverlap_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("1280x800") << QSize(1280, 800);
+    QTest::newRow("a short dock, 400x300") << QSize(400, 300);
+}
+
+// Short spans close together, of every kind (a grip that chatters, breaks and slips, a
+// threshold node's warnings): their labels are laid out so that none covers another.
+void TestPlots::spanLabelsNeverOverlap()
+{
+    QFETCH(QSize, size);
+    m_panel->resize(size);
+    startRun(*m_history); // forgets the spans fill() made
+    appendTicks(*m_history, 0, Ticks);
+    for (int k = 0; k < 30; ++k) {
+        const double t = 0.1 + 0.15 * k;
+        const Message message = k % 3 == 0   ? Message::Grasp
+                                : k % 3 == 1 ? Message::Break
+                                             : Message::Slip;
+        const int node = message == Message::Slip ? 1 : 0;
+        m_history->append(eventAt(t, node, message, EventPhase::Begin));
+        m_history->append(eventAt(t + 0.1, node, message, EventPhase::End));
+        SemanticEvent warning = eventAt(t + 0.05, 2, Message::Break, EventPhase::Begin);
+        warning.detector = DetectorKind::Threshold;
+        m_history->append(warning);
+        warning.t += 0.08;
+        warning.phase = EventPhase::End;
+        m_history->append(warning);
+    }
+    // The left hand holds something the while: its label shows in its own plot.
+    for (int k = 0; k <= Ticks; ++k)
+        m_history->append(frameAt(k / 10.0, Gripper::Left));
+    SemanticEvent held = eventAt(0.5, 0, Message::Grasp, EventPhase::Begin);
+    held.gripper = Gripper::Left;
+    m_history->append(held);
+    m_history->commit();
+    m_plot->replot();
+    const QList<std::pair<QString, QRectF>> labels = spanLabels(m_plot);
+    const auto shows = [&labels](const QString &prefix) {
+        return std::any_of(labels.begin(), labels.end(), [&prefix](const auto &label) {
+            return label.first.startsWith(prefix);
+        });
+    };
+    QVERIFY(shows("span.right."));
+    QVERIFY(shows("span.left."));
+    for (int i = 0; i < labels.size(); ++i) {
+        for (int j = i + 1; j < labels.size(); ++j) {
+            QVERIFY2(
+                !labels[i].second.intersects(labels[j].second),
+                qPrintable(QString("%1 and %2 overlap").arg(labels[i].first, labels[j].first)));
+        }
+    }
+    if (const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !dir.isEmpty())
+        m_panel->grab().save(QString("%1/plots-span-labels-%2.png").arg(dir).arg(size.width()));
+}
+
+// A span that ended before the view's left edge takes its label along; one still active
+// keeps it at the edge.
+void TestPlots::spanLabelLeavesWithItsSpan()
+{
+    m_history->append(eventAt(4.8, 0, Message::Grasp, EventPhase::Begin)); // still active
+    m_history->commit();
+    m_panel->setWindowSeconds(2.0); // 3 .. 5 s: the grasp of 1 .. 2 s is out of view
+    m_plot->replot();
+    QStringList names;
+    for (const auto &[name, box] : spanLabels(m_plot))
+        names.append(name);
+    QCOMPARE(names.count("span.right.grasp"), 1); // the active one, not the ended one
+    QVERIFY2(names.contains("span.right.break"), qPrintable(names.join(", ")));
+    QVERIFY2(names.contains("span.right.slip"), qPrintable(names.join(", ")));
+
+    // Further on, the break and the slip go too; the active grasp stays at the left edge.
+    appendTicks(*m_history, Ticks + 1, Ticks + 25); // now 7.5 s: 5.5 .. 7.5
+    m_history->commit();
+    m_plot->replot();
+    names.clear();
+    QRectF grasp;
+    for (const auto &[name, box] : spanLabels(m_plot)) {
+        names.append(name);
+        grasp = name == "span.right.grasp" ? box : grasp;
+    }
+    QCOMPARE(names, QStringList{"span.right.grasp"});
+    QCOMPARE(grasp.left(), timeAxis()->axisRect()->rect().left() * 1.0);
 }
 
 void TestPlots::onlyNewSamplesAppended()
