@@ -139,6 +139,10 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
   <visual>
     <global offwidth="1920" offheight="1080"/>
     <quality shadowsize="2048"/>
+    <!-- The headlight and the lamp add up where both face a surface (the top view): MuJoCo's
+         default headlight (diffuse 0.4, specular 0.5) with the lamp burnt the floor and the
+         cubes to white. Together they light a face turned to both at 0.95. -->
+    <headlight ambient="0.2 0.2 0.2" diffuse="0.35 0.35 0.35" specular="0.1 0.1 0.1"/>
   </visual>
   <default>
     <!-- Taxels collide with the world (contype 1) but not with each other (2 & 1 = 0), so
@@ -155,7 +159,11 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
              rgb2="0.62 0.70 0.80" width="256" height="256"/>
     <texture name="grid" type="2d" builtin="checker" rgb1="0.82 0.84 0.86" rgb2="0.74 0.76 0.78"
              width="512" height="512"/>
-    <material name="floor" texture="grid" texrepeat="8 8" reflectance="0.05"/>
+    <!-- Matte, not a mirror: MuJoCo 2.2 draws a reflective plane's mirror image of the scene
+         wherever the plane shows, also between a wall and the box floor behind it, so the
+         pads' and the walls' reflections showed through the boxes and a white strip ran
+         under the partition. -->
+    <material name="floor" texture="grid" texrepeat="8 8" specular="0.1" shininess="0.2"/>
   </asset>"""
 
 
@@ -168,7 +176,7 @@ def opening(model, fragile):
 {fragile}
   </custom>
   <worldbody>
-    <light pos="0 -0.3 1.2" dir="0 0.2 -1" diffuse="0.8 0.8 0.8"/>
+    <light pos="0 -0.3 1.2" dir="0 0.2 -1" diffuse="0.4 0.4 0.4" specular="0.1 0.1 0.1"/>
     <geom name="floor" type="plane" size="1 1 0.05" material="floor"/>"""
 
 
