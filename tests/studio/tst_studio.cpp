@@ -1228,11 +1228,26 @@ static bool raiseTab(MainWindow &window, const QString &title)
     return false;
 }
 
-void TestStudio::inspectorsShowEveryFieldWhole_data()
+/** A row per interface language, "en" and "de", in column `language`. */
+static void languageRows()
 {
     QTest::addColumn<QString>("language");
     QTest::newRow("en") << "en";
     QTest::newRow("de") << "de";
+}
+
+/** Starts `studio` in `language`, switched to as a user does it (the window is rebuilt). */
+static MainWindow &startIn(Studio &studio, const QString &language)
+{
+    studio.start();
+    if (language != "en")
+        studio.setLanguage(language);
+    return *studio.window();
+}
+
+void TestStudio::inspectorsShowEveryFieldWhole_data()
+{
+    languageRows();
 }
 
 // At 1280×800, in either language: the router editor's inspector for a node of every type
@@ -1246,10 +1261,7 @@ void TestStudio::inspectorsShowEveryFieldWhole()
     o.run.router = "C3p";
     o.autoRun = false;
     Studio studio(o);
-    studio.start();
-    if (language != "en")
-        studio.setLanguage(language);
-    MainWindow &window = *studio.window();
+    MainWindow &window = startIn(studio, language);
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
     QStringList clipped;
@@ -1311,9 +1323,7 @@ void TestStudio::inspectorsShowEveryFieldWhole()
 
 void TestStudio::toolbarsFitAt1280_data()
 {
-    QTest::addColumn<QString>("language");
-    QTest::newRow("en") << "en";
-    QTest::newRow("de") << "de";
+    languageRows();
 }
 
 // At 1280×800, in either language, every toolbar of the window and its docks shows all of
@@ -1325,10 +1335,7 @@ void TestStudio::toolbarsFitAt1280()
     StudioOptions o = options();
     o.autoRun = false;
     Studio studio(o);
-    studio.start();
-    if (language != "en")
-        studio.setLanguage(language);
-    MainWindow &window = *studio.window();
+    MainWindow &window = startIn(studio, language);
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     // An edit in each editor: what Undo would undo has a name now.
     window.routerEditor()->setParam("right.force", "grasp", 25);

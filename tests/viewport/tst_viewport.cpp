@@ -81,6 +81,10 @@ private:
     /** Runs the event loop for `ms`, capturing whenever the viewport asks (the sim thread). */
     void pump(int ms, const SceneOverlay &overlay = {});
     QImage grab();
+    /** Shows scene `name`, settled for a second, at 1280×800; the scene shown before. */
+    std::unique_ptr<Scene> showSettled(const QString &name);
+    /** Shows `previous` again, at the tests' usual 800×600. */
+    void showAgain(std::unique_ptr<Scene> previous);
 
     std::unique_ptr<Scene> m_scene;
     SimViewport m_viewport;
@@ -102,6 +106,24 @@ QImage TestViewport::grab()
 {
     const QImage image = m_viewport.grabFramebuffer();
     return image.convertToFormat(QImage::Format_ARGB32);
+}
+
+std::unique_ptr<Scene> TestViewport::showSettled(const QString &name)
+{
+    auto shown = loadScene(name, 500);
+    if (!shown)
+        return nullptr;
+    std::swap(m_scene, shown);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    m_viewport.resize(1280, 800);
+    return shown;
+}
+
+void TestViewport::showAgain(std::unique_ptr<Scene> previous)
+{
+    m_scene = std::move(previous);
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    m_viewport.resize(800, 600);
 }
 
 void TestViewport::initTestCase()
@@ -475,13 +497,10 @@ void TestViewport::screenshots()
     QFETCH(QString, scene);
     QFETCH(bool, confirm);
     QFETCH(bool, manual);
-    auto shown = loadScene(scene, 500); // a second: everything has settled
-    QVERIFY(shown);
-    std::swap(m_scene, shown);
-    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
+    auto previous = showSettled(scene);
+    QVERIFY(previous);
     m_viewport.setDriving(manual);
     m_viewport.setShowForces(true);
-    m_viewport.resize(1280, 800);
     SceneOverlay overlay;
     overlay.rightConfirm = confirm ? 1.0 : 0.0;
     pump(300, overlay);
@@ -490,9 +509,7 @@ void TestViewport::screenshots()
     image.save(QString("%1/viewport-%2.png").arg(QCoreApplication::applicationDirPath(), scene));
     m_viewport.setShowForces(false);
     m_viewport.setDriving(false);
-    std::swap(m_scene, shown);
-    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
-    m_viewport.resize(800, 600);
+    showAgain(std::move(previous));
 }
 
 void TestViewport::presetsAreWellExposed_data()
@@ -506,18 +523,15 @@ void TestViewport::presetsAreWellExposed_data()
     }
 }
 
-// Each camera preset (keys 1–4) shows the scene without blown-out white: the top view
-// looked at a floor and cubes burnt white by two lights, a reflective floor showed the sky
-// through the box walls. Pictures beside the binary, or in $SEMHAP_SCREENSHOTS.
+// Each camera preset (keys 1–4) shows the scene without burnt white: the top view looked at
+// a floor and cubes burnt white by two lights, and the mirroring floor showed white inside
+// the boxes. Pictures beside the binary, or in $SEMHAP_SCREENSHOTS.
 void TestViewport::presetsAreWellExposed()
 {
     QFETCH(QString, scene);
     QFETCH(int, key);
-    auto shown = loadScene(scene, 500); // a second: everything has settled
-    QVERIFY(shown);
-    std::swap(m_scene, shown);
-    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
-    m_viewport.resize(1280, 800);
+    auto previous = showSettled(scene);
+    QVERIFY(previous);
     m_viewport.setFocus();
     QTest::keyClick(&m_viewport, Qt::Key(key));
     pump(300);
@@ -532,9 +546,7 @@ void TestViewport::presetsAreWellExposed()
     QVERIFY2(looksDrawn(image, &why), qPrintable(why));
     QVERIFY2(looksExposed(image, &why), qPrintable(why));
     QTest::keyClick(&m_viewport, Qt::Key_1);
-    std::swap(m_scene, shown);
-    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
-    m_viewport.resize(800, 600);
+    showAgain(std::move(previous));
 }
 
 void TestViewport::showsThePlaceholder()
