@@ -238,6 +238,7 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     // Pixels are known only once the plot is laid out (after a resize, say).
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::layoutSpanLabels);
+    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::keepReadableHeight);
     connect(&m_history, &RunHistory::reset, this, [this] {
         m_cursorTime = std::numeric_limits<double>::quiet_NaN();
         rebuild();
@@ -324,7 +325,21 @@ void PlotPanel::rebuild()
         m_cursorLines.push_back(line);
     }
     updateInteractions();
-    m_plot->updateGeometry(); // the scroll area reads the new rects' minimum height
+    // Fewer rects may need less height; keepReadableHeight() sets what they need.
+    m_plot->setMinimumHeight(0);
+    m_plot->updateGeometry();
+}
+
+void PlotPanel::keepReadableHeight()
+{
+    // What the rects need is known only once a layout has placed their axes and titles,
+    // and the scroll area does not ask again by itself: the plot is held at least that
+    // high, so rects added while it shows (a hand that comes later) keep their height and
+    // the panel scrolls. A new height lays the plot out again, which then asks for the same.
+    const QWidget *plot = m_plot; // QCustomPlot hides the hint QWidget makes public
+    const int wanted = plot->minimumSizeHint().height();
+    if (wanted != m_plot->minimumHeight())
+        m_plot->setMinimumHeight(wanted);
 }
 
 QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)

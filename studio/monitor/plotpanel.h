@@ -91,6 +91,8 @@ private:
     void placeSpan(const SpanView &view, const MessageSpan &span);
     /** Shows the labels of the spans in view, none over another (the pixels are laid out). */
     void layoutSpanLabels();
+    /** Holds the plot as high as its rects need, so the panel scrolls instead (afterLayout). */
+    void keepReadableHeight();
     void fitValueAxes();
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);

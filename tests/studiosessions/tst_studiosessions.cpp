@@ -6,7 +6,6 @@
 #include "eventlogpanel.h"
 #include "liverigdialog.h"
 #include "mainwindow.h"
-#include "workspace.h"
 #include "openwindow.h"
 #include "pipeline.h"
 #include "plotpanel.h"
@@ -19,6 +18,7 @@
 #include "sessionreplay.h"
 #include "simviewport.h"
 #include "widgetchecks.h"
+#include "workspace.h"
 #include "world.h"
 
 #include <QCheckBox>
@@ -418,6 +418,16 @@ void TestStudioSessions::windowListensToALiveRig()
     QTRY_VERIFY2(rate->text().contains("1 malformed"), qPrintable(rate->text()));
     QTRY_VERIFY(window.statusBar()->currentMessage().contains("invalid JSON"));
     QVERIFY(window.findChild<QLabel *>("operatorLabel")->text().contains("Live rig"));
+    // The rig's second hand came after the plots were built for the scene's one: its rects
+    // are added and every rect keeps its readable height, the panel scrolling instead.
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    QTRY_COMPARE(plot->axisRectCount(), 11); // two hands' force and contacts, seven devices
+    plot->replot();
+    for (QCPAxisRect *rect : plot->axisRects())
+        QVERIFY2(rect->rect().height() >= rect->minimumSize().height() - 1,
+                 qPrintable(QString("%1 px high, %2 wanted")
+                                .arg(rect->rect().height())
+                                .arg(rect->minimumSize().height())));
     if (qEnvironmentVariableIsSet("SEMHAP_LIVE_SCREENSHOT")) {
         QTest::qWait(500);
         window.grab().save(qEnvironmentVariable("SEMHAP_LIVE_SCREENSHOT"));
