@@ -37,12 +37,14 @@ void DriveOperator::act(World &world)
                 // Glide from where the target is now to the new one over the time since the
                 // last command, so an input that updates ten times a second moves as
                 // smoothly as one at sixty.
+                // A command after a pause in the input (the first, or the first after the
+                // run's own operator drove) starts from where the world's target is now.
                 Glide &glide = m_glide[hand];
-                glide.from = glide.started ? glide.at(now) : world.target(Gripper(hand));
+                const bool following = glide.started && now - glide.start <= MaxGlide;
+                glide.from = following ? glide.at(now) : world.target(Gripper(hand));
                 glide.to = *pending.target;
-                glide.span = glide.started ? std::clamp(now - glide.arrival, dt, MaxGlide) : dt;
+                glide.span = following ? std::max(now - glide.start, dt) : dt;
                 glide.start = now;
-                glide.arrival = now;
                 glide.started = true;
                 current.target = pending.target;
             }

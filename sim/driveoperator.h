@@ -87,9 +87,8 @@ private:
     {
         Pose from;
         Pose to;
-        double start = 0.0;   ///< simulated time the newest command arrived
-        double span = 0.0;    ///< how long the way takes: the time since the one before
-        double arrival = 0.0; ///< when the newest command arrived
+        double start = 0.0; ///< simulated time the newest command arrived
+        double span = 0.0;  ///< how long the way takes: the time since the one before
         bool started = false;
         /** Where the target is at simulated time `t`. */
         Pose at(double t) const;

@@ -157,6 +157,17 @@ void TestHandDrive::takingOverStartsWhereTheHandsAre()
     QVERIFY(m_handDrive->press(Qt::Key_Plus));
     QCOMPARE(engaged.count(), 2);
     QCOMPARE(m_handDrive->command(Gripper::Right)->target.pos, start[1]->target.pos);
+    // The run's own operator had moved the hand there meanwhile: the wrist goes on from
+    // where it is, with no lurch back to where the last drive left it.
+    Pose moved = m_world->target(Gripper::Right);
+    moved.pos = start[1]->target.pos;
+    m_world->setTarget(Gripper::Right, moved);
+    for (int k = 0; k < 500; ++k)
+        m_world->step();
+    m_handDrive->release(Qt::Key_Plus);
+    m_handDrive->advance(0.0);
+    m_operator.act(*m_world);
+    QCOMPARE(m_world->target(Gripper::Right).pos, start[1]->target.pos);
 }
 
 void TestHandDrive::unmappedKeysAreLeftAlone()
