@@ -423,7 +423,8 @@ void Engine::pause()
 {
     if (!m_running.exchange(false))
         return;
-    // The batch under way ends first: nothing the run sends follows a pause (an audition).
+    // The step under way ends first (a batch looks at m_running before each step): nothing
+    // the run sends follows a pause (an audition).
     {
         std::lock_guard<std::mutex> lock(m_setupMutex);
     }
@@ -489,16 +490,21 @@ std::array<std::optional<HandCommand>, 2> Engine::handCommands()
 
 void Engine::stopAll()
 {
-    pause();
     // The bands first: they go to zero before anything here waits for the pipeline thread.
+    const bool wasRunning = m_running.exchange(false);
     m_devices->stopAll();
-    // The readouts show the rest values the transports sent; the recording, which keeps
-    // what the router asked for, shows the stop too.
-    if (m_source && m_source->pipeline()) {
+    {
+        // The step under way ends (a batch looks at m_running before each step); what it
+        // sent after the stop is sent to rest again.
         std::lock_guard<std::mutex> lock(m_setupMutex);
-        if (m_recorder)
+        m_devices->stopAll();
+        // The readouts show the rest values the transports sent; the recording, which keeps
+        // what the router asked for, shows the stop too.
+        if (m_source && m_source->pipeline() && m_recorder)
             silenceDevices(*m_recorder);
     }
+    if (wasRunning)
+        emit runningChanged(false);
     drain();
 }
 
@@ -561,7 +567,9 @@ void Engine::loop()
 
         if (steps > 0) {
             std::lock_guard<std::mutex> lock(m_setupMutex);
-            for (long k = 0; k < steps && !run.isDone(); ++k)
+            // A pause or a stop-all ends a running batch at the next step, also one that
+            // came while this thread waited for the lock.
+            for (long k = 0; k < steps && !run.isDone() && (!running || m_running.load()); ++k)
                 stepOnce();
         } else {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));

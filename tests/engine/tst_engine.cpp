@@ -36,6 +36,7 @@ private slots:
     void finishesAtTheDuration();
     void stopAllPauses();
     void stopAllShowsWhatTheBandsWereSent();
+    void nothingIsSentAfterAPauseOrAStop();
     void readoutsShowWhatTheBandsWereSent_data();
     void readoutsShowWhatTheBandsWereSent();
     void theRunTakesBackWhatAnAuditionDrewAhead();
@@ -283,6 +284,46 @@ void TestEngine::stopAllShowsWhatTheBandsWereSent()
     QVERIFY(!driven());
     for (int d = 0; d < int(history.devices().size()); ++d)
         QVERIFY(history.deviceFrames(d).end() > history.deviceFrames(d).begin());
+}
+
+void TestEngine::nothingIsSentAfterAPauseOrAStop()
+{
+    // Mid-grasp at eight times real time (batches of up to 100 steps), paused or stopped at
+    // odd moments: once pause() or stopAll() returns, no band is sent anything more, and
+    // after a stop-all every band rests.
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    engine.setSpeed(8.0);
+    const QStringList names = engine.devices().boundNames();
+    const auto counts = [&] {
+        std::vector<std::uint64_t> sent;
+        for (const QString &name : names)
+            sent.push_back(engine.devices().transport(name)->sent().count());
+        return sent;
+    };
+    for (int round = 0; round < 20; ++round) {
+        engine.run();
+        QTest::qWait(3 + 7 * (round % 4));
+        const bool stop = round % 2 == 1;
+        if (stop)
+            engine.stopAll();
+        else
+            engine.pause();
+        const std::vector<std::uint64_t> before = counts();
+        QTest::qWait(30);
+        QVERIFY2(counts() == before, qPrintable(QString("round %1").arg(round)));
+        if (!stop)
+            continue;
+        for (const QString &name : names) {
+            const Transport *band = engine.devices().transport(name);
+            const DeviceFrame last = band->sent().last();
+            const DeviceFrame rest = band->model().restFrame(last.t);
+            for (int c = 0; c < last.channelCount; ++c)
+                QCOMPARE(last.values[size_t(c)], rest.values[size_t(c)]);
+        }
+    }
 }
 
 void TestEngine::readoutsShowWhatTheBandsWereSent_data()
