@@ -7,6 +7,7 @@
 #include "sessioninfo.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"
+#include "simrun.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -206,8 +207,8 @@ bool Command::simulationOptions(const QCommandLineParser &parser, double *durati
         return false;
     }
     if (parser.isSet(QStringLiteral("cubes")) &&
-        (count < 0 || count != std::floor(count) || count > 1e6)) {
-        usageError(tr("--cubes must be a whole number >= 0"));
+        (count < 0 || count != std::floor(count) || count > RunOptions::MaxCubes)) {
+        usageError(tr("--cubes must be a whole number from 0 to %1").arg(RunOptions::MaxCubes));
         return false;
     }
     *cubes = int(count);

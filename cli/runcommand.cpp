@@ -160,7 +160,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (!routerContextOption(parser, &context))
         return ExitUsage;
     options.reactionTime = context.reactionTime;
-    if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
+    if (seed < 0 || seed != std::floor(seed) || seed > RunOptions::MaxSeed)
         return usageError(tr("--seed must be a whole number >= 0"));
     options.seed = std::uint64_t(seed);
 

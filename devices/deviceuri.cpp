@@ -86,11 +86,16 @@ bool DeviceUri::parse(const QString &text, DeviceUri *uri, QString *error)
     return true;
 }
 
+QString DeviceUri::virtualFor(const QString &name)
+{
+    return QStringLiteral("virtual:") + name;
+}
+
 QString DeviceUri::toString() const
 {
     switch (scheme) {
     case Scheme::Virtual:
-        return QStringLiteral("virtual:") + name;
+        return virtualFor(name);
     case Scheme::Serial:
         return baud == DefaultBaud ? QStringLiteral("serial:") + name
                                    : QStringLiteral("serial:%1?baud=%2").arg(name).arg(baud);

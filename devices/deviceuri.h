@@ -33,6 +33,11 @@ struct DeviceUri
     static bool parse(const QString &text, DeviceUri *uri, QString *error);
     /** The canonical spelling (hex IDs with four digits, baud only when not the default). */
     QString toString() const;
+    /**
+     * `virtual:NAME`: where a router device `name` plays when no band is bound to it (its
+     * frames show in the studio, nothing leaves the machine).
+     */
+    static QString virtualFor(const QString &name);
 };
 
 } // namespace semhap

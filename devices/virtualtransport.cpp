@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "virtualtransport.h"
 
+#include "deviceuri.h"
 #include "monotonic.h"
 
 namespace semhap {
@@ -14,7 +15,7 @@ VirtualTransport::VirtualTransport(const QString &name, DeviceModelPtr model)
 
 QString VirtualTransport::uri() const
 {
-    return QStringLiteral("virtual:") + m_name;
+    return DeviceUri::virtualFor(m_name);
 }
 
 bool VirtualTransport::open(QString *)

@@ -163,6 +163,25 @@ bool JsonReader::array(const QJsonObject &object, const QString &pointer, QLatin
     return true;
 }
 
+bool JsonReader::strings(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                         QStringList *out, bool required)
+{
+    QJsonArray items;
+    if (!array(object, pointer, key, &items, required))
+        return false;
+    if (!object.contains(key))
+        return true;
+    QStringList values;
+    for (int i = 0; i < items.size(); ++i) {
+        if (!items[i].isString())
+            return fail(jsonPointerChild(jsonPointerChild(pointer, key), i),
+                        QStringLiteral("expected a string, found ") + jsonTypeName(items[i]));
+        values.append(items[i].toString());
+    }
+    *out = values;
+    return true;
+}
+
 namespace {
 
 /**

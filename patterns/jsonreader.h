@@ -58,6 +58,9 @@ public:
                 QJsonObject *out, bool required = true);
     bool array(const QJsonObject &object, const QString &pointer, QLatin1String key,
                QJsonArray *out, bool required = true);
+    /** An array of strings, each checked. */
+    bool strings(const QJsonObject &object, const QString &pointer, QLatin1String key,
+                 QStringList *out, bool required = true);
 
 private:
     QString m_file;

@@ -1,12 +1,66 @@
 // SPDX-License-Identifier: MIT
 #include "simrun.h"
 
+#include "jsonreader.h"
 #include "sessionwriter.h"
 #include "sinklist.h"
+
+#include <QJsonArray>
 
 #include <cmath>
 
 namespace semhap {
+
+QJsonObject RunOptions::toJson() const
+{
+    QJsonObject json{{QStringLiteral("scene"), scene},
+                     {QStringLiteral("router"), router},
+                     {QStringLiteral("overrides"), QJsonArray::fromStringList(overrides)},
+                     {QStringLiteral("operator"), operatorName},
+                     {QStringLiteral("seed"), double(seed)},
+                     {QStringLiteral("reaction_time"), reactionTime}};
+    if (sceneOptions.cubes >= 0)
+        json.insert(QStringLiteral("cubes"), sceneOptions.cubes);
+    return json;
+}
+
+bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QString &pointer,
+                          RunOptions *options)
+{
+    RunOptions o = *options;
+    double seed = double(o.seed);
+    double cubes = o.sceneOptions.cubes;
+    if (!reader.checkKeys(json, pointer,
+                          {QLatin1String("scene"), QLatin1String("cubes"), QLatin1String("router"),
+                           QLatin1String("overrides"), QLatin1String("operator"),
+                           QLatin1String("seed"), QLatin1String("reaction_time")}) ||
+        !reader.string(json, pointer, QLatin1String("scene"), &o.scene, false) ||
+        !reader.number(json, pointer, QLatin1String("cubes"), &cubes, false) ||
+        !reader.string(json, pointer, QLatin1String("router"), &o.router, false) ||
+        !reader.strings(json, pointer, QLatin1String("overrides"), &o.overrides, false) ||
+        !reader.string(json, pointer, QLatin1String("operator"), &o.operatorName, false) ||
+        !reader.number(json, pointer, QLatin1String("seed"), &seed, false) ||
+        !reader.number(json, pointer, QLatin1String("reaction_time"), &o.reactionTime, false))
+        return false;
+    const auto whole = [](double v, double low, double high) {
+        return v >= low && v <= high && v == std::floor(v);
+    };
+    if (!whole(seed, 0, MaxSeed))
+        return reader.fail(
+            jsonPointerChild(pointer, QStringLiteral("seed")),
+            QStringLiteral("expected a whole number from 0 to %1").arg(MaxSeed, 0, 'g', 3));
+    if (json.contains(QLatin1String("cubes")) && !whole(cubes, 0, MaxCubes))
+        return reader.fail(jsonPointerChild(pointer, QStringLiteral("cubes")),
+                           QStringLiteral("expected a whole number from 0 to %1").arg(MaxCubes));
+    if (!(o.reactionTime >= 0 && o.reactionTime <= SessionInfo::MaxReactionTime))
+        return reader.fail(
+            jsonPointerChild(pointer, QStringLiteral("reaction_time")),
+            QStringLiteral("expected seconds from 0 to %1").arg(SessionInfo::MaxReactionTime));
+    o.seed = std::uint64_t(seed);
+    o.sceneOptions.cubes = int(cubes);
+    *options = o;
+    return true;
+}
 
 std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error)
 {

@@ -17,6 +17,7 @@
 
 namespace semhap {
 
+class JsonReader;
 class SessionWriter;
 
 /** Everything that defines a headless run; same options, same run. */
@@ -30,6 +31,23 @@ struct RunOptions
     std::uint64_t seed = 1;
     double duration = 60.0;                    ///< simulated seconds
     double reactionTime = DefaultReactionTime; ///< the reactive operator's delay (s)
+
+    /** The largest seed: whole numbers above 2^53 do not survive a JSON number. */
+    static constexpr double MaxSeed = 9e15;
+    /** The most cubes a scene may be asked to keep in play. */
+    static constexpr int MaxCubes = 1000;
+
+    /**
+     * What makes the run, as JSON: `scene`, `cubes` (when not the scene's default),
+     * `router`, `overrides`, `operator`, `seed`, `reaction_time`; not the duration.
+     */
+    QJsonObject toJson() const;
+    /**
+     * Reads toJson()'s object at `pointer` over `options` (a key left out keeps its value),
+     * checking each value's type and range; false with the located reason in `reader`.
+     */
+    static bool fromJson(JsonReader &reader, const QJsonObject &json, const QString &pointer,
+                         RunOptions *options);
 };
 
 /** Receives a run's streams: contact frames besides the pipeline's events and frames. */

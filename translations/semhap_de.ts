@@ -2616,4 +2616,15 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Neu, öffnen, speichern unter, importieren und exportieren</translation>
     </message>
 </context>
+<context>
+    <name>semhap::Workspace</name>
+    <message>
+        <source>%1: the file as it was is kept as %2</source>
+        <translation>%1: die Datei, wie sie war, bleibt als %2 erhalten</translation>
+    </message>
+    <message>
+        <source>%1 stays unbound: the router that runs has no %2 device &apos;%3&apos;</source>
+        <translation>%1 bleibt ungebunden: der laufende Router hat kein %2-Gerät &apos;%3&apos;</translation>
+    </message>
+</context>
 </TS>

@@ -2613,4 +2613,15 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
+<context>
+    <name>semhap::Workspace</name>
+    <message>
+        <source>%1: the file as it was is kept as %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 stays unbound: the router that runs has no %2 device &apos;%3&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
 </TS>

@@ -22,7 +22,12 @@ Studio::Studio(const StudioOptions &options, QObject *parent) : QObject(parent),
     install(language);
 }
 
-Studio::~Studio() = default;
+Studio::~Studio()
+{
+    // The window goes before the workspace writes itself a last time (and may say it
+    // could not).
+    m_window.reset();
+}
 
 void Studio::install(const QString &language)
 {
@@ -60,6 +65,7 @@ void Studio::start()
     const bool restored = m_workspace.restore(Workspace::defaultFile(), m_options, &problems);
     m_workspace.autosaveTo(Workspace::defaultFile());
     buildWindow();
+    m_workspace.restoreBindings(&problems); // to the run restored or the window opened
     if (restored && m_options.autoRun)
         engine.run();
     if (!problems.isEmpty())

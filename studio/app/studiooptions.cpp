@@ -108,13 +108,13 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     o.run.router = parser.value(router);
     o.run.operatorName = parser.value(op);
     double value = 0.0;
-    if (!number(seed, 0, 1e15, &value))
+    if (!number(seed, 0, RunOptions::MaxSeed, &value))
         return false;
     o.run.seed = std::uint64_t(value);
     if (!number(reactionTime, 0, SessionInfo::MaxReactionTime, &o.run.reactionTime))
         return false;
     if (parser.isSet(cubes)) {
-        if (!number(cubes, 0, 1000, &value))
+        if (!number(cubes, 0, RunOptions::MaxCubes, &value))
             return false;
         o.run.sceneOptions.cubes = int(value);
     }

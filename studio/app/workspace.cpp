@@ -26,28 +26,6 @@ namespace {
 /** Where the device addresses the user added are kept between sessions. */
 const QString AddressesKey = QStringLiteral("devices/addresses");
 
-QJsonArray toArray(const QStringList &list)
-{
-    return QJsonArray::fromStringList(list);
-}
-
-/** Reads the strings of the optional array `key`; false (recorded in `reader`) otherwise. */
-bool readStrings(JsonReader &reader, const QJsonObject &object, const QString &pointer,
-                 QLatin1String key, QStringList *out)
-{
-    QJsonArray array;
-    if (!reader.array(object, pointer, key, &array, false))
-        return false;
-    for (int i = 0; i < array.size(); ++i) {
-        if (!array[i].isString())
-            return reader.fail(jsonPointerChild(jsonPointerChild(pointer, key), i),
-                               QStringLiteral("expected a string, found ") +
-                                   jsonTypeName(array[i]));
-        out->append(array[i].toString());
-    }
-    return true;
-}
-
 /**
  * A router graph as the workspace keeps it: the document, and where it came from (its file
  * and the folder its relative pattern and model paths are resolved against).
@@ -120,7 +98,11 @@ void Workspace::saveDeviceAddresses()
 
 QString Workspace::defaultFile()
 {
-    return QFileInfo(QSettings().fileName()).absolutePath() + QStringLiteral("/workspace.json");
+    // Beside the settings and named after them: another program of the organisation (a
+    // test) keeps its own.
+    const QFileInfo settings(QSettings().fileName());
+    return settings.absolutePath() + QLatin1Char('/') + settings.completeBaseName() +
+           QStringLiteral(".workspace.json");
 }
 
 QJsonObject Workspace::toJson() const
@@ -129,22 +111,14 @@ QJsonObject Workspace::toJson() const
     QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)}};
     if (engine.isLive()) {
         const LiveRigOptions rig = engine.liveOptions();
-        json.insert(QStringLiteral("live_rig"),
-                    QJsonObject{{QStringLiteral("address"), rig.address},
-                                {QStringLiteral("port"), rig.port},
-                                {QStringLiteral("router"), rig.router},
-                                {QStringLiteral("overrides"), toArray(rig.overrides)}});
+        json.insert(
+            QStringLiteral("live_rig"),
+            QJsonObject{{QStringLiteral("address"), rig.address},
+                        {QStringLiteral("port"), rig.port},
+                        {QStringLiteral("router"), rig.router},
+                        {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}});
     } else if (engine.isLoaded()) {
-        const RunOptions &run = engine.options();
-        QJsonObject simulation{{QStringLiteral("scene"), run.scene},
-                               {QStringLiteral("router"), run.router},
-                               {QStringLiteral("overrides"), toArray(run.overrides)},
-                               {QStringLiteral("operator"), run.operatorName},
-                               {QStringLiteral("seed"), double(run.seed)},
-                               {QStringLiteral("reaction_time"), run.reactionTime}};
-        if (run.sceneOptions.cubes >= 0)
-            simulation.insert(QStringLiteral("cubes"), run.sceneOptions.cubes);
-        json.insert(QStringLiteral("simulation"), simulation);
+        json.insert(QStringLiteral("simulation"), engine.options().toJson());
     }
     // A replay shows a recorded router; the run it replaced has its own.
     if (engine.isLoaded() && !engine.isReplaying() && engine.isRouterEdited())
@@ -152,7 +126,7 @@ QJsonObject Workspace::toJson() const
 
     QJsonArray bindings;
     for (const BoundDevice &device : engine.devices().status()) {
-        if (device.uri == QStringLiteral("virtual:") + device.name)
+        if (device.uri == DeviceUri::virtualFor(device.name))
             continue; // what every device of a router gets anyway
         bindings.append(QJsonObject{{QStringLiteral("device"), device.name},
                                     {QStringLiteral("uri"), device.uri},
@@ -177,34 +151,54 @@ QJsonObject Workspace::toJson() const
 
 bool Workspace::restore(const QString &path, const StudioOptions &options, QStringList *problems)
 {
+    m_restored = QJsonObject();
+    m_restoredPath = path;
+    m_copyKept = false;
     if (!QFileInfo::exists(path))
         return false;
     QJsonObject json;
     LoadError error;
+    JsonReader reader(path);
     if (!readJsonObjectFile(path, &json, &error) ||
         !checkFormat(json, path, QLatin1String(Format), &error)) {
         problems->append(error.toString());
-        return false;
-    }
-    JsonReader reader(path);
-    if (!reader.checkKeys(json, QString(),
-                          {QLatin1String("format"), QLatin1String("simulation"),
-                           QLatin1String("live_rig"), QLatin1String("router"),
-                           QLatin1String("bindings"), QLatin1String("router_document"),
-                           QLatin1String("pattern_document"), QLatin1String("session")})) {
+    } else if (!reader.checkKeys(json, QString(),
+                                 {QLatin1String("format"), QLatin1String("simulation"),
+                                  QLatin1String("live_rig"), QLatin1String("router"),
+                                  QLatin1String("bindings"), QLatin1String("router_document"),
+                                  QLatin1String("pattern_document"), QLatin1String("session")})) {
         problems->append(reader.error().toString());
-        return false;
+    } else {
+        m_restored = json;
+        if (!options.runGiven) // the command line's run wins
+            restoreRun(json, path, options, problems);
+        restoreDocuments(json, path, problems);
     }
-    restoreRun(json, path, options, problems);
-    restoreDocuments(json, path, problems);
+    if (!problems->isEmpty())
+        keepCopy(path, problems);
     return m_engine.isLoaded();
+}
+
+void Workspace::keepCopy(const QString &path, QStringList *problems)
+{
+    // The next autosave writes only what came back: what did not is kept beside it.
+    if (m_copyKept)
+        return;
+    m_copyKept = true;
+    QFile file(path);
+    LoadError error;
+    const QString copy = path + QStringLiteral(".bak");
+    if (!file.open(QIODevice::ReadOnly) || !OutputFile::write(copy, file.readAll(), &error))
+        problems->append(error.isSet()
+                             ? error.toString()
+                             : path + QStringLiteral(": cannot read: ") + file.errorString());
+    else
+        problems->append(tr("%1: the file as it was is kept as %2").arg(path, copy));
 }
 
 void Workspace::restoreRun(const QJsonObject &json, const QString &path,
                            const StudioOptions &options, QStringList *problems)
 {
-    if (options.runGiven)
-        return; // the command line's run wins
     JsonReader reader(path);
     QJsonObject simulation;
     QJsonObject rig;
@@ -215,68 +209,37 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
     }
     QString error;
     if (!rig.isEmpty()) {
+        const QString at = QStringLiteral("/live_rig");
         LiveRigOptions live = options.liveRig;
         double port = live.port;
-        if (!reader.checkKeys(rig, QStringLiteral("/live_rig"),
+        if (!reader.checkKeys(rig, at,
                               {QLatin1String("address"), QLatin1String("port"),
                                QLatin1String("router"), QLatin1String("overrides")}) ||
-            !reader.string(rig, QStringLiteral("/live_rig"), QLatin1String("address"),
-                           &live.address) ||
-            !reader.number(rig, QStringLiteral("/live_rig"), QLatin1String("port"), &port) ||
-            !reader.string(rig, QStringLiteral("/live_rig"), QLatin1String("router"),
-                           &live.router) ||
-            !readStrings(reader, rig, QStringLiteral("/live_rig"), QLatin1String("overrides"),
-                         &live.overrides)) {
+            !reader.string(rig, at, QLatin1String("address"), &live.address) ||
+            !reader.number(rig, at, QLatin1String("port"), &port) ||
+            !reader.string(rig, at, QLatin1String("router"), &live.router) ||
+            !reader.strings(rig, at, QLatin1String("overrides"), &live.overrides, false)) {
             problems->append(reader.error().toString());
             return;
         }
-        if (port < 0 || port > 65535 || port != int(port)) {
-            problems->append(LoadError::at(path, QStringLiteral("/live_rig/port"),
+        if (port < 0 || port > 65535 || port != std::floor(port)) {
+            problems->append(LoadError::at(path, at + QStringLiteral("/port"),
                                            QStringLiteral("expected a port from 0 to 65535"))
                                  .toString());
             return;
         }
         live.port = int(port);
         if (!m_engine.listen(live, &error)) {
-            problems->append(LoadError::at(path, QStringLiteral("/live_rig"), error).toString());
+            problems->append(LoadError::at(path, at, error).toString());
             return;
         }
     } else if (!simulation.isEmpty()) {
         const QString at = QStringLiteral("/simulation");
         RunOptions run = options.run;
-        double seed = double(run.seed);
-        double cubes = run.sceneOptions.cubes;
-        if (!reader.checkKeys(simulation, at,
-                              {QLatin1String("scene"), QLatin1String("cubes"),
-                               QLatin1String("router"), QLatin1String("overrides"),
-                               QLatin1String("operator"), QLatin1String("seed"),
-                               QLatin1String("reaction_time")}) ||
-            !reader.string(simulation, at, QLatin1String("scene"), &run.scene) ||
-            !reader.number(simulation, at, QLatin1String("cubes"), &cubes, false) ||
-            !reader.string(simulation, at, QLatin1String("router"), &run.router) ||
-            !readStrings(reader, simulation, at, QLatin1String("overrides"), &run.overrides) ||
-            !reader.string(simulation, at, QLatin1String("operator"), &run.operatorName) ||
-            !reader.number(simulation, at, QLatin1String("seed"), &seed) ||
-            !reader.number(simulation, at, QLatin1String("reaction_time"), &run.reactionTime)) {
+        if (!RunOptions::fromJson(reader, simulation, at, &run)) {
             problems->append(reader.error().toString());
             return;
         }
-        if (seed < 0 || seed > 1e15 || seed != std::floor(seed)) {
-            problems->append(LoadError::at(path, at + QStringLiteral("/seed"),
-                                           QStringLiteral("expected a whole number from 0 to "
-                                                          "1e15"))
-                                 .toString());
-            return;
-        }
-        if (cubes < -1 || cubes > 1000 || cubes != std::floor(cubes)) {
-            problems->append(LoadError::at(path, at + QStringLiteral("/cubes"),
-                                           QStringLiteral("expected a whole number from 0 to "
-                                                          "1000"))
-                                 .toString());
-            return;
-        }
-        run.seed = std::uint64_t(seed);
-        run.sceneOptions.cubes = int(cubes);
         if (!m_engine.load(run, &error)) {
             problems->append(LoadError::at(path, at, error).toString());
             return;
@@ -299,12 +262,17 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
         else if (!m_engine.setRouter(graph, &error))
             problems->append(LoadError::at(path, QStringLiteral("/router"), error).toString());
     }
+}
 
+void Workspace::restoreBindings(QStringList *problems)
+{
+    const QString &path = m_restoredPath;
+    const qsizetype before = problems->size();
+    JsonReader reader(path);
     QJsonArray bindings;
-    if (!reader.array(json, QString(), QLatin1String("bindings"), &bindings, false)) {
+    if (!reader.array(m_restored, QString(), QLatin1String("bindings"), &bindings, false))
         problems->append(reader.error().toString());
-        return;
-    }
+    m_restored = QJsonObject(); // once
     const std::vector<BoundDevice> devices = m_engine.devices().status();
     for (int i = 0; i < bindings.size(); ++i) {
         const QString at = jsonPointerChild(QStringLiteral("/bindings"), i);
@@ -330,11 +298,18 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
         const bool fits = std::any_of(devices.begin(), devices.end(), [&](const BoundDevice &d) {
             return d.name == device && d.model == model;
         });
+        QString error;
         if (!fits)
-            continue;
-        if (!m_engine.bindDevice(device, uri, &error))
+            problems->append(
+                LoadError::at(path, at,
+                              tr("%1 stays unbound: the router that runs has no %2 device '%3'")
+                                  .arg(uri, model, device))
+                    .toString());
+        else if (!m_engine.bindDevice(device, uri, &error))
             problems->append(LoadError::at(path, at, error).toString());
     }
+    if (problems->size() > before)
+        keepCopy(path, problems);
 }
 
 void Workspace::restoreDocuments(const QJsonObject &json, const QString &path,

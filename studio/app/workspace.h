@@ -56,7 +56,10 @@ public:
     QString sessionNotes() const { return m_sessionNotes; }
     void setSessionNotes(const QString &notes) { m_sessionNotes = notes; }
 
-    /** Where the studio keeps its workspace: `workspace.json` beside its settings file. */
+    /**
+     * Where the studio keeps its workspace: beside its settings file and named after it
+     * (`semhap-studio.workspace.json`).
+     */
     static QString defaultFile();
 
     /**
@@ -70,14 +73,20 @@ public:
 
     /**
      * Opens the workspace saved in `path` (none there: false, nothing to say). The saved
-     * run is loaded (paused) unless `options` names a run of its own; an edited router is
-     * applied again; bindings come back where the router still has a device of that name
-     * and model, disarmed as every real band starts; the documents come back with their
-     * unsaved edits shown as not saved (their undo history does not survive). Whatever
-     * cannot come back is left out and said in `problems`, each as `FILE: /pointer:
-     * reason` (or `FILE:LINE:COL:` for broken JSON). True when a run was loaded.
+     * run is loaded (paused), with an edited router applied again, unless `options` names a
+     * run of its own; the documents come back with their unsaved edits shown as not saved
+     * (their undo history does not survive). Whatever cannot come back is left out and said
+     * in `problems`, each as `FILE: /pointer: reason` (or `FILE:LINE:COL:` for broken JSON),
+     * and the file as it was is kept as `PATH.bak`, since the next autosave writes only
+     * what came back. True when a run was loaded. Call restoreBindings() once a run is.
      */
     bool restore(const QString &path, const StudioOptions &options, QStringList *problems);
+    /**
+     * Binds the bands restore() read to the running router's devices of the same name and
+     * model, disarmed as every real band starts; a band with no such device stays unbound
+     * and is said in `problems`. Once after restore().
+     */
+    void restoreBindings(QStringList *problems);
 
     /**
      * From now on writes the workspace to `path` (through a temporary and a rename) every
@@ -96,12 +105,17 @@ private:
     void restoreRun(const QJsonObject &run, const QString &path, const StudioOptions &options,
                     QStringList *problems);
     void restoreDocuments(const QJsonObject &json, const QString &path, QStringList *problems);
+    /** Copies `path` to `PATH.bak` and says so (or why not) in `problems`. */
+    void keepCopy(const QString &path, QStringList *problems);
 
     Engine m_engine;
     RouterDocument *m_routerDocument;
     PatternDocument *m_patternDocument;
     QString m_sessionName;
     QString m_sessionNotes;
+    QJsonObject m_restored; ///< what restore() read, until restoreBindings()
+    QString m_restoredPath;
+    bool m_copyKept = false; ///< the file restore() read is copied to PATH.bak
     QString m_autosavePath;
     QByteArray m_saved; ///< what the autosave file holds
     QTimer m_autosaveTimer;

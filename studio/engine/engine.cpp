@@ -2,6 +2,7 @@
 #include "engine.h"
 
 #include "devicemanager.h"
+#include "deviceuri.h"
 #include "deviceoutputsink.h"
 #include "sessionwriter.h"
 
@@ -296,7 +297,7 @@ void Engine::bindRouterDevices(const Player &player, QString *error)
             return b.name == name && b.model == model.name();
         });
         if (!keep)
-            m_devices->bind(name, QStringLiteral("virtual:") + name,
+            m_devices->bind(name, DeviceUri::virtualFor(name),
                             std::make_shared<const DeviceModel>(model), error);
     }
 }

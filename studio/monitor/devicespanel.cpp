@@ -218,7 +218,7 @@ void DevicesPanel::rescan()
     for (auto &row : m_rows) {
         const QString typed = row->uri->currentText();
         QStringList choices = m_presentUris;
-        const QString fallback = QStringLiteral("virtual:") + row->name;
+        const QString fallback = DeviceUri::virtualFor(row->name);
         if (!choices.contains(fallback))
             choices.append(fallback);
         const QSignalBlocker blocker(row->uri);
@@ -312,7 +312,7 @@ void DevicesPanel::rebuildRows()
         connect(connectButton, &QPushButton::clicked, this,
                 [this, raw] { requestBind(*raw, raw->uri->currentText().trimmed()); });
         connect(row->disconnect, &QPushButton::clicked, this,
-                [this, raw] { requestBind(*raw, QStringLiteral("virtual:") + raw->name); });
+                [this, raw] { requestBind(*raw, DeviceUri::virtualFor(raw->name)); });
         m_rows.push_back(std::move(row));
     }
     rescan();
@@ -377,7 +377,7 @@ void DevicesPanel::refresh()
             row->boundUri = uri;
             row->uri->setEditText(uri);
         }
-        row->disconnect->setEnabled(uri != QStringLiteral("virtual:") + row->name);
+        row->disconnect->setEnabled(uri != DeviceUri::virtualFor(row->name));
     }
     m_armed->setText(tr("%1 of %2 armed").arg(armed).arg(bound.size()));
 }

@@ -398,10 +398,10 @@ void TestSimRun::commandLineErrors_data()
                               "--operator", "scripted", "--seeds",       "1"};
     QTest::newRow("compare: negative cubes")
         << compare + QStringList{"--duration", "1", "--cubes", "-2"} << 2
-        << "semhap compare: --cubes must be a whole number >= 0";
+        << "semhap compare: --cubes must be a whole number from 0 to 1000";
     QTest::newRow("compare: fractional cubes")
         << compare + QStringList{"--duration", "1", "--cubes", "2.5"} << 2
-        << "semhap compare: --cubes must be a whole number >= 0";
+        << "semhap compare: --cubes must be a whole number from 0 to 1000";
     QTest::newRow("compare: endless duration")
         << compare + QStringList{"--duration", "1e7"} << 2
         << "semhap compare: --duration must be between 0 and 1000000 s";

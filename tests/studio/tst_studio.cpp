@@ -927,6 +927,8 @@ void TestStudio::workComesBackAfterARestart()
     QCOMPARE(again.window()->routerPicker()->currentText(), QString("C3"));
     QCOMPARE(again.window()->routerEditor()->graph().toJson(), edited);
     QCOMPARE(again.window()->notesEdit()->text(), QString("participant 7"));
+    QCOMPARE(again.window()->engine().devices().transport("right.vibro")->uri(),
+             QString("udp:127.0.0.1:9"));
 }
 
 void TestStudio::workComesBackAfterACrash()
@@ -937,7 +939,7 @@ void TestStudio::workComesBackAfterACrash()
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert("QT_QPA_PLATFORM", "xcb");
     env.insert("XDG_CONFIG_HOME", dir.path());
-    const QString file = dir.filePath("semhap/workspace.json");
+    const QString file = dir.filePath("semhap/semhap-studio.workspace.json");
     QProcess studio;
     studio.setProcessEnvironment(env);
     studio.setProcessChannelMode(QProcess::ForwardedErrorChannel);
@@ -996,6 +998,12 @@ void TestStudio::brokenWorkspacesAreReported_data()
            "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25},
            "bindings": [{"device": "right.vibro", "uri": "serial:", "model": "lra4"}]})")
         << ": /bindings/0: ";
+    QTest::newRow("binding of no such device")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
+           "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25},
+           "bindings": [{"device": "right.vibro", "uri": "udp:127.0.0.1:9", "model": "lra8"}]})")
+        << ": /bindings/0: udp:127.0.0.1:9 stays unbound: the router that runs has no lra8 "
+           "device 'right.vibro'";
 }
 
 void TestStudio::brokenWorkspacesAreReported()
@@ -1017,6 +1025,11 @@ void TestStudio::brokenWorkspacesAreReported()
     QVERIFY(window->engine().isLoaded());
     const QString message = window->statusBar()->currentMessage();
     QVERIFY2(message.contains(file + problem), qPrintable(message));
+    // What did not come back is not lost to the next autosave: the file is kept as it was.
+    QVERIFY2(message.contains(file + ".bak"), qPrintable(message));
+    QFile copy(file + ".bak");
+    QVERIFY(copy.open(QIODevice::ReadOnly));
+    QCOMPARE(copy.readAll(), content);
     window->close();
 }
 
