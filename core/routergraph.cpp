@@ -209,6 +209,28 @@ PatternPtr RouterGraph::pattern(const QString &nameOrPath, QString *reason) cons
     return loaded;
 }
 
+QStringList RouterGraph::nodesPlayingFile(const QString &path) const
+{
+    const QString wanted = QDir::cleanPath(QFileInfo(path).absoluteFilePath());
+    QStringList ids;
+    for (const RouterNode &node : nodes) {
+        const QString named = node.params.value(QLatin1String("pattern")).toString();
+        if (node.type == QLatin1String("pattern") && !embedded(patterns, named) &&
+            InputFile::namesFile(named) &&
+            QDir::cleanPath(QDir(baseDir).absoluteFilePath(named)) == wanted)
+            ids.append(node.id);
+    }
+    return ids;
+}
+
+QStringList RouterGraph::followRenamedFile(const QString &from, const QString &to)
+{
+    const QStringList ids = nodesPlayingFile(from);
+    for (const QString &id : ids)
+        nodes[size_t(nodeIndex(id))].params.insert(QStringLiteral("pattern"), to);
+    return ids;
+}
+
 DeviceModelPtr RouterGraph::model(const QString &nameOrPath, QString *reason) const
 {
     if (DeviceModelPtr found = embedded(models, nameOrPath))

@@ -76,6 +76,14 @@ public:
     /** The pattern a pattern node plays, or null (another type, or not found). */
     PatternPtr playedPattern(const RouterNode &node) const;
     /**
+     * The ids of the pattern nodes that play the file `path`: those whose `pattern` names a
+     * file (not an embedded pattern or a built-in) that resolves to `path` as pattern() would
+     * resolve it. Paths are compared, not files: `path` may be gone (a renamed pattern).
+     */
+    QStringList nodesPlayingFile(const QString &path) const;
+    /** Points every node nodesPlayingFile(`from`) finds at `to`; the ids it changed. */
+    QStringList followRenamedFile(const QString &from, const QString &to);
+    /**
      * A node's input ports as the compiler makes them: its type's, and for a pattern node
      * one signal input per parameter of its pattern but intensity (which events set).
      * Empty for an unknown type; a pattern that cannot be found adds none.

@@ -521,6 +521,8 @@ void MainWindow::createDocks()
             [this](const QString &text) { statusBar()->showMessage(text, 8000); });
     connect(m_designer, &WaveformDesigner::patternRenamed, m_routerEditor,
             &RouterEditor::followRenamedPattern);
+    connect(m_designer, &WaveformDesigner::patternRenamed, &m_engine,
+            &Engine::followRenamedPattern);
 }
 
 void MainWindow::createMenus()

@@ -2,8 +2,8 @@
 #include "engine.h"
 
 #include "devicemanager.h"
-#include "deviceuri.h"
 #include "deviceoutputsink.h"
+#include "deviceuri.h"
 #include "sessionwriter.h"
 
 #include <QCoreApplication>
@@ -361,7 +361,18 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
 
 const RouterGraph &Engine::routerGraph() const
 {
+    // An applied graph is what runs, with renamed pattern files followed.
+    if (m_appliedGraph && !isReplaying())
+        return *m_appliedGraph;
     return m_source->pipeline()->router().graph();
+}
+
+void Engine::followRenamedPattern(const QString &from, const QString &to)
+{
+    // The running router holds the pattern already; what reset() and the workspace use must
+    // name the file where it is now.
+    if (m_appliedGraph)
+        m_appliedGraph->followRenamedFile(from, to);
 }
 
 bool Engine::isRouterEdited() const

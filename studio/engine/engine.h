@@ -91,6 +91,11 @@ public:
     /** The graph of the router that runs (valid while a simulation or a rig is loaded). */
     const RouterGraph &routerGraph() const;
     /**
+     * A user pattern file was renamed (the designer moved it): an applied router's nodes that
+     * play it name it where it is now, so reset() and the saved workspace still load.
+     */
+    void followRenamedPattern(const QString &from, const QString &to);
+    /**
      * Whether the router that runs routes differently from the preset or file
      * options().router names: an edit applied from the editor (`C3*` in the toolbar). Node
      * positions do not count.

@@ -603,6 +603,19 @@ bool WaveformDesigner::saveFile(const QString &path, QString *error)
             *error = m_document->error().toString();
             return false;
         }
+        // In the user folder a pattern's file is named after it (the library and the router
+        // editor list it so): saved there under another file name, the pattern takes it.
+        const QFileInfo file(path);
+        const QString name = m_document->json().value(QLatin1String("name")).toString();
+        if (file.absoluteDir() == QDir(m_userFolder) && file.completeBaseName() != name) {
+            const QString problem =
+                userPatternNameProblem(m_userFolder, file.completeBaseName(), path);
+            if (!problem.isEmpty()) {
+                *error = problem;
+                return false;
+            }
+            m_document->setValue(QStringLiteral("/name"), file.completeBaseName());
+        }
         if (!m_document->save(path, error))
             return false;
         refreshLibrary();

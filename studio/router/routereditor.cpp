@@ -3,7 +3,6 @@
 
 #include "colors.h"
 #include "filedialogs.h"
-#include "inputfile.h"
 #include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
@@ -410,15 +409,7 @@ void RouterEditor::setParam(const QString &id, const QString &key, const QJsonVa
 
 void RouterEditor::followRenamedPattern(const QString &from, const QString &to)
 {
-    QStringList ids;
-    for (const RouterNode &node : graph().nodes) {
-        const QString named = node.params.value(QLatin1String("pattern")).toString();
-        // `from` is gone: compare the paths, not the files.
-        if (node.type == QLatin1String("pattern") && InputFile::namesFile(named) &&
-            QDir::cleanPath(QDir(graph().baseDir).absoluteFilePath(named)) ==
-                QDir::cleanPath(QFileInfo(from).absoluteFilePath()))
-            ids.append(node.id);
-    }
+    const QStringList ids = graph().nodesPlayingFile(from);
     if (ids.isEmpty())
         return;
     m_undo->beginMacro(tr("Rename pattern"));

@@ -95,6 +95,8 @@ private slots:
     void presets();
     void unknownPreset();
     void graphRoundTrip();
+    void followsARenamedPatternFile_data();
+    void followsARenamedPatternFile();
     void oldNodeTypeIsReadWithAWarning();
     void invalid_data();
     void invalid();
@@ -158,6 +160,39 @@ void TestRouter::graphRoundTrip()
         QVERIFY(RouterGraph::fromJson(graph.toJson(), name, &again, &error));
         QCOMPARE(again.toJson(), graph.toJson());
     }
+}
+
+void TestRouter::followsARenamedPatternFile_data()
+{
+    QTest::addColumn<QString>("named"); // what the node's `pattern` says
+    QTest::addColumn<bool>("follows");
+    QTest::newRow("relative to the router") << "mine/buzz.json" << true;
+    QTest::newRow("absolute") << "/home/lab/patterns/mine/buzz.json" << true;
+    QTest::newRow("with dots") << "/home/lab/patterns/./mine/../mine/buzz.json" << true;
+    QTest::newRow("another file") << "mine/tick.json" << false;
+    QTest::newRow("a built-in") << "vib.geiger" << false;
+}
+
+void TestRouter::followsARenamedPatternFile()
+{
+    // A pattern file that moved (the designer renamed it): the nodes that play it, and only
+    // they, name it where it is now; the file itself is gone, so paths are compared.
+    QFETCH(QString, named);
+    QFETCH(bool, follows);
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(RouterPresets::preset("C3", &graph, &error));
+    graph.baseDir = "/home/lab/patterns";
+    const int geiger = graph.nodeIndex("right.geiger");
+    QVERIFY(geiger >= 0);
+    graph.nodes[size_t(geiger)].params.insert("pattern", named);
+    const QString from = "/home/lab/patterns/mine/buzz.json";
+    const QString to = "/home/lab/patterns/mine/my.buzz.json";
+    QCOMPARE(graph.nodesPlayingFile(from), follows ? QStringList{"right.geiger"} : QStringList());
+    QCOMPARE(graph.followRenamedFile(from, to),
+             follows ? QStringList{"right.geiger"} : QStringList());
+    QCOMPARE(graph.nodes[size_t(geiger)].params.value("pattern").toString(), follows ? to : named);
+    QCOMPARE(graph.nodesPlayingFile(from), QStringList());
 }
 
 void TestRouter::invalid_data()

@@ -1752,6 +1752,7 @@ void TestStudio::routerFollowsARenamedPattern()
     RouterEditor *editor = window.routerEditor();
     editor->setParam("right.geiger", "pattern", old);
     QCOMPARE(editor->validate(), QStringList());
+    QVERIFY(editor->apply()); // the run plays it too
 
     designer->document()->setValue("/name", "air.squeeze.copy");
     clickDesignerAction(window, "savePattern");
@@ -1789,6 +1790,14 @@ void TestStudio::routerFollowsARenamedPattern()
     // One step back in the editor names the old file again.
     editor->undoStack()->undo();
     QCOMPARE(pattern(), old);
+
+    // The run names the file where it is now: Reset loads it again.
+    const RouterGraph &running = window.engine().routerGraph();
+    QCOMPARE(running.nodes[size_t(running.nodeIndex("right.geiger"))].params.value("pattern"),
+             QJsonValue(renamed));
+    QString error;
+    QVERIFY2(window.engine().reset(&error), qPrintable(error));
+    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
 }
 
 QTEST_MAIN(TestStudio)

@@ -335,6 +335,18 @@ void TestWaveformDesigner::renamingMovesTheFile()
     f.trigger(QStringLiteral("savePattern"));
     QCOMPARE(renamed.count(), 1);
     QVERIFY(QFileInfo::exists(moved));
+
+    // Saved as another file of the folder, the pattern takes that file's name: the next Save
+    // moves nothing and the first file stays.
+    QString error;
+    const QString other = f.folder.filePath(QStringLiteral("my.tick.json"));
+    QVERIFY2(f.designer.saveFile(other, &error), qPrintable(error));
+    QCOMPARE(f.designer.document()->json().value(QLatin1String("name")).toString(),
+             QStringLiteral("my.tick"));
+    f.trigger(QStringLiteral("savePattern"));
+    QVERIFY(QFileInfo::exists(other));
+    QVERIFY(QFileInfo::exists(moved));
+    QCOMPARE(renamed.count(), 1);
 }
 
 void TestWaveformDesigner::takenNamesAreRefused_data()
