@@ -162,9 +162,11 @@ void LinkTransport::writeMessage(protocol::MessageType type)
 void LinkTransport::writeValues(double now)
 {
     DeviceFrame frame;
+    bool fresh = false;
     {
         std::lock_guard<std::mutex> lock(m_slotMutex);
         frame = m_slot;
+        fresh = m_slotFresh;
         m_slotFresh = false;
     }
     DeviceFrame safe = frame;
@@ -181,7 +183,14 @@ void LinkTransport::writeValues(double now)
         protocol::encodeSetValues(m_sequence++, wire.data(), safe.channelCount, bytes.data());
     writeFrame(bytes.data(), size);
     if (m_linkOpen) {
-        m_sent.append(safe);
+        // A heartbeat's re-send of what the band has already is no news to a readout (and
+        // would stamp a paused run's last time over and over).
+        const DeviceFrame last = m_sent.last();
+        const bool same = safe.t == last.t && safe.channelCount == last.channelCount &&
+                          std::equal(safe.values.begin(), safe.values.begin() + safe.channelCount,
+                                     last.values.begin());
+        if (fresh || !same)
+            m_sent.append(safe);
         std::lock_guard<std::mutex> lock(m_statusMutex);
         ++m_status.framesSent;
     }

@@ -54,12 +54,12 @@ void VirtualTransport::stopAll()
 void VirtualTransport::store(const DeviceFrame &frame)
 {
     m_sent.append(frame);
-    ++m_count;
+    const std::uint64_t count = m_sent.count();
     const double now = monotonicSeconds();
     if (now - m_windowStart >= 1.0) {
-        m_rate = m_windowCount > 0 ? (m_count - m_windowCount) / (now - m_windowStart) : 0.0;
+        m_rate = m_windowCount > 0 ? double(count - m_windowCount) / (now - m_windowStart) : 0.0;
         m_windowStart = now;
-        m_windowCount = m_count;
+        m_windowCount = count;
     }
 }
 
@@ -70,10 +70,11 @@ TransportStatus VirtualTransport::status() const
     s.connected = m_open;
     s.responding = m_open;
     s.armed = isArmed();
-    s.framesSent = std::uint32_t(m_count);
+    const std::uint64_t count = m_sent.count();
+    s.framesSent = std::uint32_t(count);
     // A window that ran past its second without closing means the frames slowed or stopped.
     const double open = monotonicSeconds() - m_windowStart;
-    s.framesPerSecond = open >= 1.0 ? (m_count - m_windowCount) / open : m_rate;
+    s.framesPerSecond = open >= 1.0 ? double(count - m_windowCount) / open : m_rate;
     s.identity = m_model->name();
     return s;
 }

@@ -3,6 +3,7 @@
 
 #include "transport.h"
 
+#include <cstdint>
 #include <mutex>
 
 namespace semhap {
@@ -34,12 +35,11 @@ private:
     QString m_name;
     SafetyFilter m_safety;
     mutable std::mutex m_mutex;
-    int m_count = 0; ///< frames sent
     int m_stops = 0;
     // The frame rate the status reports, as a real link counts it: frames over the last
     // whole second, and what the current window has seen once it runs past a second.
     double m_windowStart = 0.0;
-    int m_windowCount = 0;
+    std::uint64_t m_windowCount = 0;
     double m_rate = 0.0;
     bool m_open = false;
 };

@@ -31,13 +31,6 @@ public:
     /** The metrics so far, snake_case keys; averages over nothing are null. */
     QJsonObject metrics() const;
 
-    /**
-     * When the pile was first finished (simulated s): every cube of the box_and_block pile
-     * transferred or broken, none left to carry. Negative until then, and always for a task
-     * without a pile to finish (the bimanual one). docs/metrics.md, `completion_time`.
-     */
-    double completionTime() const { return m_completedAt; }
-
     static constexpr double RespawnPenalty = 2.0;
     /** How far from its home site (m) a container still stands on its base. */
     static constexpr double OffHome = 0.01;

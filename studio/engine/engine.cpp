@@ -69,7 +69,7 @@ void Engine::StepSink::onNodeActivity(const NodeActivity &activity)
 void Engine::rewire()
 {
     // The recording first: it keeps what the router asked for; then the bands, whose sent
-    // frames are the readouts' device frames (m_sent); then the feed, for the rest.
+    // frames are the readouts' device frames (m_sentFeed); then the feed, for the rest.
     m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
 }
 
@@ -240,7 +240,7 @@ void Engine::install()
     m_feed.discard(); // whatever the old run left in the feed is not the new run's
     m_history.start(liveDevicesOf(pipeline().router(), m_source->hands()), shownThresholds(),
                     pipeline().router().nodeIds());
-    m_sent.start(deviceNames(), *m_devices);
+    m_sentFeed.start(deviceNames(), *m_devices);
     // A live rig has no task to count.
     m_history.setMetrics(m_simulation ? m_simulation->run().metrics() : QJsonObject());
 }
@@ -328,7 +328,7 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
             m_rig->setRouter(std::move(router), m_sink);
         // What the old router's devices were sent is read with its numbering, before a
         // rebinding frees a transport.
-        m_sent.drainInto(m_history);
+        m_sentFeed.drainInto(m_history);
         // The old router's closing events went into the recording; the new router is
         // another session.
         recording = std::move(m_recorder);
@@ -338,7 +338,7 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
         bindRouterDevices(player, &bindError);
         m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
         rewire();
-        m_sent.rebind(deviceNames(), *m_devices);
+        m_sentFeed.rebind(deviceNames(), *m_devices);
         // What the old router sent is read with its numbering, before the history switches;
         // the feed is drained on this thread only, so nothing newer slips in before that.
         m_feed.drainInto(m_history);
@@ -482,13 +482,13 @@ bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
     }
     // At a tick boundary: the output sink and the sent feed hold the transports.
     std::lock_guard<std::mutex> lock(m_setupMutex);
-    m_sent.drainInto(m_history); // what the transport being replaced sent
+    m_sentFeed.drainInto(m_history); // what the transport being replaced sent
     if (!m_devices->bind(name, uri,
                          std::make_shared<const DeviceModel>(player.deviceModel(device)), error))
         return false;
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
-    m_sent.rebind(deviceNames(), *m_devices);
+    m_sentFeed.rebind(deviceNames(), *m_devices);
     return true;
 }
 
@@ -525,7 +525,7 @@ void Engine::drain()
     if (!m_source || !m_source->isStreaming())
         return; // a replay fills the history itself
     m_feed.drainInto(m_history);
-    m_sent.drainInto(m_history);
+    m_sentFeed.drainInto(m_history);
     m_history.commit();
 }
 

@@ -167,7 +167,7 @@ public:
     /** Simulated seconds per wall second over the last second of running. */
     double realtimeFactor() const { return m_realtimeFactor.load(); }
     /** Values the feeds dropped (or transports overwrote) because the GUI fell behind. */
-    quint64 dropped() const { return m_feed.dropped() + m_sent.lost(); }
+    quint64 dropped() const { return m_feed.dropped() + m_sentFeed.lost(); }
 
     /**
      * Records the running session from the next tick into a new session database at `path`
@@ -269,7 +269,7 @@ private:
     RunSource *m_source = nullptr;
     std::unique_ptr<DeviceOutputSink> m_output;
     RunFeed m_feed;
-    SentFeed m_sent; ///< GUI thread; rebound under m_setupMutex with every binding
+    SentFeed m_sentFeed; ///< GUI thread; rebound under m_setupMutex with every binding
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
     std::unique_ptr<SessionWriter> m_recorder;
     /** Where the pipeline's output goes: the recorder, the bands, the feed (rewire()). */

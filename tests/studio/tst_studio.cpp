@@ -553,7 +553,14 @@ void TestStudio::auditionShowsInTheReadouts()
         }
     }
     QTRY_VERIFY_WITH_TIMEOUT(drawnTo() > paused + 1.6, 3000);
-    QVERIFY(meter->values().at(0) > 0.3);
+    // The release is drawn from the peak (what the meter shows at this moment depends on how
+    // late this line runs on a loaded machine; the plot keeps it).
+    double released = 0.0;
+    for (auto it = m1->data()->findBegin(paused + 1.5); it != m1->data()->constEnd(); ++it) {
+        if (it->key >= paused + 1.5 && it->key <= paused + 1.7)
+            released = std::max(released, it->value);
+    }
+    QVERIFY2(released > 0.3, qPrintable(QString::number(released)));
     const QString dir = qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")
                             ? qEnvironmentVariable("SEMHAP_SCREENSHOTS")
                             : QCoreApplication::applicationDirPath();
