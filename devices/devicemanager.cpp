@@ -91,8 +91,13 @@ void DeviceManager::unbind(const QString &name)
 
 Transport *DeviceManager::transport(const QString &name) const
 {
+    return sharedTransport(name).get();
+}
+
+std::shared_ptr<Transport> DeviceManager::sharedTransport(const QString &name) const
+{
     const auto it = m_bound.find(name);
-    return it == m_bound.end() ? nullptr : it->second.get();
+    return it == m_bound.end() ? nullptr : it->second;
 }
 
 QStringList DeviceManager::boundNames() const

@@ -66,6 +66,11 @@ public:
     void unbind(const QString &name);
     /** The transport bound to `name`, or null. */
     Transport *transport(const QString &name) const;
+    /**
+     * The same, shared: for a user on another thread (an audition), whom a rebinding on
+     * this one must not leave with a freed transport. One unbound stays closed.
+     */
+    std::shared_ptr<Transport> sharedTransport(const QString &name) const;
     QStringList boundNames() const;
     std::vector<BoundDevice> status() const;
 
@@ -79,7 +84,7 @@ public:
 private:
     QStringList m_configured;
     QStringList m_lastListed;
-    std::map<QString, std::unique_ptr<Transport>> m_bound;
+    std::map<QString, std::shared_ptr<Transport>> m_bound;
 };
 
 } // namespace semhap

@@ -1008,9 +1008,9 @@ void WaveformDesigner::beginAudition()
     QString reason;
     const bool started = m_auditioner->begin(
         pattern,
-        [this, name]() -> Transport * {
-            return name.isEmpty() ? m_virtual.get()
-                                  : (m_devices ? m_devices->transport(name) : nullptr);
+        [this, name]() -> std::shared_ptr<Transport> {
+            return name.isEmpty() ? m_virtual
+                                  : (m_devices ? m_devices->sharedTransport(name) : nullptr);
         },
         m_intensity->value() / 100.0, m_hold->isChecked() ? -1.0 : m_endAt->value(), startTime,
         &reason);

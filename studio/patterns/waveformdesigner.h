@@ -138,7 +138,7 @@ private:
     PatternPreview *m_preview = nullptr;
     NodeInspector *m_inspector = nullptr;
     PatternAuditioner *m_auditioner = nullptr;
-    std::unique_ptr<Transport> m_virtual; ///< the audition's own virtual device
+    std::shared_ptr<Transport> m_virtual; ///< the audition's own virtual device
     QListWidget *m_library = nullptr;
     QTreeWidget *m_tree = nullptr;
     QTabWidget *m_tabs = nullptr;

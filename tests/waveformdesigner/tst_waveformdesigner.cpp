@@ -180,6 +180,7 @@ private slots:
     void jsonTabShowsErrors();
     void auditionReachesEmulator();
     void auditionEndsWhereThePreviewDoes();
+    void auditionKeepsTheDevicesRate();
     void auditionIsStampedFromTheRun();
     void importAhap();
     void screenshot();
@@ -517,6 +518,36 @@ void TestWaveformDesigner::auditionReachesEmulator()
     QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionEnd")), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(!f.designer.auditioner()->isPlaying(), 3000);
     QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+
+    // The band rebound while it plays: the audition stops (it never plays on a transport
+    // that is not the device's any more).
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    QVERIFY(f.designer.auditioner()->isPlaying());
+    QVERIFY(manager.bind(name, QStringLiteral("virtual:other"),
+                         DeviceModelLibrary::builtin(QStringLiteral("lra4")), &error));
+    QTRY_VERIFY_WITH_TIMEOUT(!f.designer.auditioner()->isPlaying(), 1000);
+}
+
+void TestWaveformDesigner::auditionKeepsTheDevicesRate()
+{
+    // The audition renders on a thread of its own: a window busy for 0.4 s (a replot, a
+    // large graph) does not thin out what the band is sent. lra4 takes 500 frames a second.
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("vib.geiger"));
+    f.child<QCheckBox>(QStringLiteral("hold"))->setChecked(true);
+    QTest::mouseClick(f.child<QPushButton>(QStringLiteral("auditionBegin")), Qt::LeftButton);
+    PatternAuditioner *auditioner = f.designer.auditioner();
+    QVERIFY(auditioner->isPlaying());
+    const int before = auditioner->framesSent();
+    QElapsedTimer busy;
+    busy.start();
+    while (busy.elapsed() < 400) {
+    } // the GUI thread does nothing else meanwhile
+    const int frames = auditioner->framesSent() - before;
+    qInfo("%d frames in 0.4 s of a busy window (500 Hz: 200)", frames);
+    QVERIFY2(frames >= 100, qPrintable(QString::number(frames)));
+    f.designer.stopAudition();
 }
 
 void TestWaveformDesigner::auditionEndsWhereThePreviewDoes()
