@@ -17,12 +17,11 @@ void SentFeed::rebind(const QStringList &devices, const DeviceManager &manager)
     std::vector<Reader> readers;
     for (const QString &name : devices) {
         Reader reader;
-        reader.transport = manager.transport(name);
+        reader.transport = manager.sharedTransport(name);
         if (reader.transport)
             reader.next = reader.transport->sent().count();
-        // A transport made anew where a freed one was is not the one read before.
         for (const Reader &old : m_readers) {
-            if (reader.transport && old.transport == reader.transport && old.next <= reader.next)
+            if (reader.transport && old.transport == reader.transport)
                 reader.next = old.next;
         }
         readers.push_back(reader);

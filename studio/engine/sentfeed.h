@@ -6,6 +6,7 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace semhap {
@@ -19,7 +20,9 @@ class Transport;
  * per router device, the transport bound to its name and how far its SentLog was read. So
  * the readouts show the frames as the transports sent them — clamped, scaled by the gain,
  * capped, zero while disarmed — whoever sent them: the pipeline, an audition, a stop-all.
- * GUI thread; rebind whenever a binding changes, before the replaced transport is freed.
+ * GUI thread; rebind whenever a binding changes. A transport read is held shared, so one a
+ * rebinding replaced stays readable until the next rebind, and a new one at the same address
+ * is never taken for it.
  */
 class SentFeed
 {
@@ -39,7 +42,7 @@ public:
 private:
     struct Reader
     {
-        const Transport *transport = nullptr;
+        std::shared_ptr<const Transport> transport;
         std::uint64_t next = 0; ///< running count of the next frame to read
     };
 
