@@ -35,6 +35,8 @@ public:
     virtual void clear() = 0;
     /** Whether `message` is active now, and its intensity. */
     virtual bool isActive(Message message, double *intensity = nullptr) const = 0;
+    /** Appends a begin at t for each message active now (MessageTracker::appendActive). */
+    virtual void appendActive(double t, EventBuffer &out) const = 0;
 
     int node() const { return m_node; }
     Gripper gripper() const { return m_gripper; }

@@ -116,4 +116,10 @@ bool ForceDetector::isActive(Message message, double *intensity) const
     return true;
 }
 
+void ForceDetector::appendActive(double t, EventBuffer &out) const
+{
+    m_grasp.appendActive(t, out);
+    m_break.appendActive(t, out);
+}
+
 } // namespace semhap

@@ -42,6 +42,7 @@ public:
     void endAll(double t, EventBuffer &out) override;
     void clear() override;
     bool isActive(Message message, double *intensity = nullptr) const override;
+    void appendActive(double t, EventBuffer &out) const override;
 
     const Params &params() const { return m_params; }
 

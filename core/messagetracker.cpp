@@ -62,6 +62,12 @@ void MessageTracker::clear()
     m_intensity = 1.0;
 }
 
+void MessageTracker::appendActive(double t, EventBuffer &out) const
+{
+    if (m_active)
+        append(t, EventPhase::Begin, out);
+}
+
 void MessageTracker::append(double t, EventPhase phase, EventBuffer &out) const
 {
     SemanticEvent event = m_template;

@@ -28,6 +28,11 @@ public:
     void forceEnd(double t, EventBuffer &out);
     /** Back to inactive without emitting anything. */
     void clear();
+    /**
+     * Appends a begin at `t` with the intensity now if the message is active: how a stream
+     * that starts now (a recording started mid-grasp) learns it is open.
+     */
+    void appendActive(double t, EventBuffer &out) const;
 
     bool isActive() const { return m_active; }
     /** Whether the condition holds but has not yet held for minDuration. */

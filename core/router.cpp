@@ -809,6 +809,14 @@ void Router::endAll(double t, EventBuffer &events)
         threshold->endAll(t, events);
 }
 
+void Router::appendActive(double t, EventBuffer &events) const
+{
+    for (const DetectorNode *detector : m_detectors)
+        detector->detector().appendActive(t, events);
+    for (const ThresholdNode *threshold : m_thresholds)
+        threshold->appendActive(t, events);
+}
+
 double Router::nextTimer() const
 {
     double next = std::numeric_limits<double>::infinity();

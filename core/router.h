@@ -47,6 +47,11 @@ public:
     void process(const ContactFrame &frame, EventBuffer &events);
     /** Ends every active message of every detector at t (end of a run, router swap). */
     void endAll(double t, EventBuffer &events);
+    /**
+     * Appends a begin at t for every message active now, in graph order, without routing
+     * them: what a stream that starts mid-run (a recording) needs to show them open.
+     */
+    void appendActive(double t, EventBuffer &events) const;
 
     /** When a logic node next needs fireTimers; infinity when none waits. */
     double nextTimer() const;

@@ -296,6 +296,8 @@ public:
     void onSignal(int port, double value, double t) override;
     /** Ends the message now if active (end of a run, router swap). */
     void endAll(double t, EventBuffer &events);
+    /** Appends a begin at t if the message is active (MessageTracker::appendActive). */
+    void appendActive(double t, EventBuffer &events) const { m_tracker.appendActive(t, events); }
 
 private:
     Params m_params;

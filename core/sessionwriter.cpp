@@ -9,6 +9,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -490,6 +491,17 @@ std::unique_ptr<SessionWriter> SessionWriter::create(const QString &path, Sessio
     }
     if (info.router.isEmpty())
         info.router = router.selfContained().toJson();
+    // A recording started mid-run (mid-grasp) begins what is active at its first frame.
+    EventBuffer open;
+    router.appendActive(0.0, open);
+    if (!open.isEmpty()) {
+        QJsonArray list;
+        for (const SemanticEvent &event : open)
+            list.append(QJsonObject{{QStringLiteral("node"), router.nodeIds().value(event.node)},
+                                    {QStringLiteral("message"), messageName(event.message)}});
+        info.extra.insert(QStringLiteral("open_at_start"),
+                          QString::fromUtf8(QJsonDocument(list).toJson(QJsonDocument::Compact)));
+    }
     if (info.semhapVersion.isEmpty())
         info.semhapVersion = QStringLiteral(SEMHAP_VERSION);
     if (!info.started.isValid())
@@ -506,6 +518,7 @@ std::unique_ptr<SessionWriter> SessionWriter::create(const QString &path, Sessio
         writer->m_finished = true;
         return nullptr;
     }
+    writer->m_open.assign(open.begin(), open.end());
     return writer;
 }
 
@@ -523,6 +536,14 @@ void SessionWriter::recordContactFrame(const ContactFrame &frame, double arrival
     pushActors(frame);
     if (!m_thread->push({frame, arrival}))
         m_dropped.fetch_add(1, std::memory_order_relaxed);
+    if (m_open.empty())
+        return;
+    // Before the first tick's own events, which may already end them.
+    for (SemanticEvent &event : m_open) {
+        event.t = frame.t;
+        onEvent(event);
+    }
+    m_open.clear();
 }
 
 void SessionWriter::recordHandCommand(const HandCommand &input)

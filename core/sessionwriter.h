@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <memory>
+#include <vector>
 
 namespace semhap {
 
@@ -28,7 +29,9 @@ class Router;
  *
  * Use it as the pipeline's sink (events, device frames) and call recordContactFrame() for
  * each frame before the pipeline processes it; recordHandCommand() may come from any
- * thread. One router per session: its names are read once, at create().
+ * thread. One router per session: its names are read once, at create(), and so are its
+ * active messages — a recording started mid-grasp writes a begin for each at its first
+ * frame and lists them in the metadata (`open_at_start`).
  */
 class SessionWriter : public PipelineSink
 {
@@ -86,6 +89,8 @@ private:
     QString m_path;
     std::unique_ptr<Thread> m_thread;
     const ActorTable *m_actors = nullptr;
+    /** Producer thread: begins of messages active at create(), due at the first frame. */
+    std::vector<SemanticEvent> m_open;
     int m_actorsSent = 0; ///< producer thread: actor ids already handed to the writer
     std::atomic<quint64> m_dropped{0};
     std::atomic<quint64> m_committed{0};

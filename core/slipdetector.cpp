@@ -133,4 +133,10 @@ void SlipDetector::reset(double t, EventBuffer &out)
     m_slip.forceEnd(t, out);
 }
 
+void SlipDetector::appendActive(double t, EventBuffer &out) const
+{
+    m_grasp.appendActive(t, out);
+    m_slip.appendActive(t, out);
+}
+
 } // namespace semhap

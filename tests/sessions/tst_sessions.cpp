@@ -2,6 +2,7 @@
 // Sessions: what is recorded reads back bit for bit, damaged files are refused with a clear
 // reason, and the UDP frame source survives garbage, oversize datagrams and floods.
 #include "actortable.h"
+#include "pipeline.h"
 #include "router.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"
@@ -158,6 +159,7 @@ private slots:
     void roundTripIsBitForBit();
     void negativeZeroReadsAsZero();
     void metadataAndRouter();
+    void recordingMidGraspBeginsWhatIsOpen();
     void timeWindow();
     void neverOverwrites();
     void finishedSessionIsOneFile();
@@ -288,6 +290,7 @@ void TestSessions::metadataAndRouter()
     QVERIFY(session->info().ended >= session->info().started);
     QCOMPARE(session->info().routerContext.reactionTime, 0.4);
     QVERIFY(!session->info().extra.contains("reaction_time"));
+    QVERIFY(!session->info().extra.contains("open_at_start")); // nothing was active
     QCOMPARE(session->deviceNames().size(), router->player().deviceCount());
     QCOMPARE(session->channelNames(int(session->deviceNames().indexOf("right.vibro"))),
              QStringList({"m1", "m2", "m3", "m4"}));
@@ -300,6 +303,64 @@ void TestSessions::metadataAndRouter()
     auto again = Router::compile(graph, &loadError);
     QVERIFY2(again, qPrintable(loadError.toString()));
     QCOMPARE(again->nodeIds(), router->nodeIds());
+}
+
+void TestSessions::recordingMidGraspBeginsWhatIsOpen()
+{
+    // A recording that starts while the right hand grasps holds the grasp's begin, at its
+    // first frame and before that tick's events, and says so in its metadata.
+    struct : PipelineSink
+    {
+        void onEvent(const SemanticEvent &event) override { events.push_back(event); }
+        std::vector<SemanticEvent> events;
+    } before;
+    Pipeline pipeline(c3());
+    const auto frame = [](int k, double force) {
+        ContactFrame f;
+        f.t = k * 0.001;
+        f.gripper = Gripper::Right;
+        f.left.f = f.right.f = force / 2.0;
+        f.left.n = f.right.n = 1;
+        return f;
+    };
+    int k = 0;
+    for (; k < 300; ++k)
+        pipeline.process(frame(k, 40.0), before);
+    QVERIFY(std::any_of(before.events.begin(), before.events.end(), [](const SemanticEvent &e) {
+        return e.message == Message::Grasp && e.phase == EventPhase::Begin;
+    }));
+
+    const QString path = m_dir.filePath("mid-grasp.db");
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), pipeline.router(), &error);
+    QVERIFY2(writer, qPrintable(error));
+    const double first = frame(k, 0.0).t;
+    for (const int end = k + 100; k < end; ++k) {
+        const ContactFrame f = frame(k, k < end - 50 ? 40.0 : 0.0);
+        writer->recordContactFrame(f, qQNaN());
+        pipeline.process(f, *writer);
+    }
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+
+    auto session = SessionReader::open(path, &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->startTime(), first);
+    QCOMPARE(session->info().extra.value("open_at_start"),
+             QString(R"([{"message":"grasp","node":"right.force"}])"));
+    std::vector<SemanticEvent> events;
+    QVERIFY(session->readEvents(
+        [&](const SemanticEvent &event) {
+            events.push_back(event);
+            return true;
+        },
+        &error));
+    QCOMPARE(events.size(), size_t(2));
+    QCOMPARE(events[0].phase, EventPhase::Begin);
+    QCOMPARE(events[0].message, Message::Grasp);
+    QCOMPARE(events[0].t, first);
+    QCOMPARE(session->nodeNames().at(events[0].node), QString("right.force"));
+    QCOMPARE(events[1].phase, EventPhase::End);
 }
 
 void TestSessions::timeWindow()

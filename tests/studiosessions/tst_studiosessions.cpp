@@ -25,6 +25,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
@@ -56,6 +57,7 @@ private slots:
     void reroutesThroughTheEditorsRouter();
     void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
+    void recordingMidGraspShowsTheGraspFromItsStart();
     void cleanupTestCase();
 
 private:
@@ -86,6 +88,30 @@ bool sameEvents(const std::vector<SemanticEvent> &a, const std::vector<SemanticE
                return x.t == y.t && x.node == y.node && x.message == y.message &&
                       x.phase == y.phase && x.intensity == y.intensity;
            });
+}
+
+/** Opens `path` as a person does: Ctrl+Alt+O, the file typed into the dialog, Return. */
+void openSessionWithKeys(MainWindow &window, const QString &path)
+{
+    QTimer::singleShot(0, [path] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        dialog->selectFile(path);
+        QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog, Qt::Key_Return);
+    });
+    QTest::keyClick(&window, Qt::Key_O, Qt::ControlModifier | Qt::AltModifier);
+}
+
+/** Records from now until the run's time passed `seconds` more, with Ctrl+Shift+R. */
+QString recordWithKeys(MainWindow &window, double seconds)
+{
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    const QString path = window.engine().recordingPath();
+    const double from = window.engine().simTime();
+    if (!QTest::qWaitFor([&] { return window.engine().simTime() > from + seconds; }, 30000))
+        return QString();
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    return window.engine().isRecording() ? QString() : path;
 }
 
 } // namespace
@@ -474,6 +500,44 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(asked);
     QVERIFY(!window.engine().isLive());
     QCOMPARE(scene->currentData().toString(), before);
+}
+
+void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
+{
+    // Recording starts while the right hand holds a cube: the replay shades the grasp from
+    // the session's start, and the log's first row is its begin.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    const RunHistory &history = window.engine().history();
+    const auto grasping = [&] {
+        return std::any_of(
+            history.spans().begin(), history.spans().end(), [](const MessageSpan &span) {
+                return span.active && span.message == Message::Grasp && span.node == "right.force";
+            });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(grasping(), 30000);
+    const QString path = recordWithKeys(window, 0.5);
+    QVERIFY(!path.isEmpty());
+
+    openSessionWithKeys(window, path);
+    SessionReplay *replay = window.replay();
+    QVERIFY(replay->isOpen());
+    const auto span =
+        std::find_if(history.spans().begin(), history.spans().end(), [](const MessageSpan &s) {
+            return s.message == Message::Grasp && s.node == "right.force";
+        });
+    QVERIFY(span != history.spans().end());
+    QCOMPARE(span->begin, replay->startTime());
+    QVERIFY(span->active);
+    const EventLogModel *log = window.eventLog()->model();
+    QTRY_VERIFY(log->rowCount() > 0);
+    QCOMPARE(log->index(0, EventLogModel::TimeColumn).data(EventLogModel::TimeRole).toDouble(),
+             replay->startTime());
+    QCOMPARE(log->index(0, EventLogModel::MessageColumn).data().toString(), QString("grasp"));
+    QCOMPARE(log->index(0, EventLogModel::PhaseColumn).data(EventLogModel::PhaseRole).toInt(),
+             int(EventPhase::Begin));
+    QVERIFY(replay->info().extra.value("open_at_start").contains("right.force"));
 }
 
 void TestStudioSessions::cleanupTestCase()
