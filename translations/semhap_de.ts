@@ -984,6 +984,10 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
 Der Stapel war nach %1 s abgearbeitet.
 Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2), um neu zu beginnen.</translation>
     </message>
+    <message>
+        <source>Replay: nobody drives</source>
+        <translation>Wiedergabe: niemand steuert</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

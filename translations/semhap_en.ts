@@ -981,6 +981,10 @@ The pile was finished after %1 s.
 Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Replay: nobody drives</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

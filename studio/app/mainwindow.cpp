@@ -765,9 +765,9 @@ void MainWindow::closeReplay()
 {
     if (!m_engine.isReplaying())
         return;
-    // The run the replay replaced starts again, with its scene and a fresh history.
+    // The run the replay replaced comes back where it was, paused, with its history.
     QString error;
-    if (!m_engine.reset(&error))
+    if (!m_engine.closeReplay(&error))
         showError(tr("Could not reset the run"), error);
 }
 
@@ -937,6 +937,7 @@ void MainWindow::updateStatus()
                                    .arg(m_engine.recordingDropped()));
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
     if (m_engine.isReplaying()) {
+        m_operatorLabel->setText(tr("Replay: nobody drives"));
         m_rateLabel->setText(tr("replay"));
         return;
     }

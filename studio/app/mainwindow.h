@@ -76,7 +76,7 @@ public:
      * plots and the event log follow its scrubber. Shows what went wrong, if anything.
      */
     bool openSession(const QString &path);
-    /** Back from a replay to the simulation (or live rig), loaded again. */
+    /** Back from a replay to the simulation (or live rig) it replaced, where it was. */
     void closeReplay();
     /**
      * Listens for a live rig's contact frames instead of running the scene, and runs them.

@@ -109,7 +109,9 @@ QJsonObject Workspace::toJson() const
 {
     const Engine &engine = m_engine;
     QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)}};
-    if (engine.isLive()) {
+    // A replay keeps the run it replaced behind it: that is the run to come back to.
+    const RunSource *run = engine.streamingSource();
+    if (run && run->kind() == RunSource::Kind::Rig) {
         const LiveRigOptions rig = engine.liveOptions();
         json.insert(
             QStringLiteral("live_rig"),
@@ -117,11 +119,10 @@ QJsonObject Workspace::toJson() const
                         {QStringLiteral("port"), rig.port},
                         {QStringLiteral("router"), rig.router},
                         {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}});
-    } else if (engine.isLoaded()) {
+    } else if (run) {
         json.insert(QStringLiteral("simulation"), engine.options().toJson());
     }
-    // A replay shows a recorded router; the run it replaced has its own.
-    if (engine.isLoaded() && !engine.isReplaying() && engine.isRouterEdited())
+    if (run && engine.isRouterEdited())
         json.insert(QStringLiteral("router"), graphEntry(engine.routerGraph()));
 
     QJsonArray bindings;

@@ -119,16 +119,57 @@ bool Engine::openReplay(const QString &path, QString *error)
     if (!m_replay.open(path, error))
         return false;
     emit sourceAboutToChange();
-    if (!isReplaying()) {
-        m_resumeKind = m_source ? m_source->kind() : RunSource::Kind::Simulation;
-        stopStreaming();
-    }
-    // Whatever the run sent last goes before the replay takes the history.
-    m_feed.discard();
+    if (!isReplaying() && m_source)
+        keepRun();
     m_source = &m_replay;
-    setDriving(false);
+    ++m_generation; // the run's late metrics are not the replay's
     m_replay.begin();
     emit sourceChanged();
+    return true;
+}
+
+void Engine::keepRun()
+{
+    pause();
+    stopRecording();
+    m_keptDriving = m_driving.load();
+    setDriving(false);
+    {
+        // The bands rest while the replay owns the readouts; the run sends again when it
+        // runs again.
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        silenceDevices(m_outputs);
+    }
+    drain(); // everything the run sent, rest values too, is in its history
+    m_keptHistory.setKeepSeconds(m_history.keepSeconds());
+    m_keptHistory.assign(m_history);
+}
+
+bool Engine::closeReplay(QString *error)
+{
+    if (!isReplaying())
+        return true;
+    RunSource *run = streamingSource();
+    if (!run)
+        return reset(error);
+    emit sourceAboutToChange();
+    m_replay.close();
+    m_source = run;
+    m_history.assign(m_keptHistory);
+    m_keptHistory.start({}, {}, {});
+    // What the bands were sent during the replay (an audition) is not the run's.
+    m_sentFeed.start(deviceNames(), *m_devices);
+    if (m_simulation) {
+        // The paused run's own, fresher than the last it sent the GUI (a late one was dropped).
+        QJsonObject metrics;
+        {
+            std::lock_guard<std::mutex> lock(m_setupMutex);
+            metrics = m_simulation->run().metrics();
+        }
+        m_history.setMetrics(metrics);
+    }
+    emit sourceChanged();
+    setDriving(m_keptDriving);
     return true;
 }
 
@@ -190,7 +231,6 @@ bool Engine::startLive(const LiveRigOptions &options, QString *error)
     stopSource();
     m_rig = std::move(rig);
     m_source = m_rig.get();
-    m_rigOptions = options;
     m_options.router = options.router;
     m_options.overrides = options.overrides;
     install();
@@ -213,12 +253,20 @@ void Engine::stopStreaming()
     m_rig.reset();
 }
 
+RunSource *Engine::streamingSource() const
+{
+    if (m_simulation)
+        return m_simulation.get();
+    return m_rig.get();
+}
+
 void Engine::stopSource()
 {
     stopStreaming();
     if (isReplaying()) {
         m_source = nullptr;
         m_replay.close();
+        m_keptHistory.start({}, {}, {}); // the run it kept is gone
     }
 }
 
@@ -361,10 +409,11 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
 
 const RouterGraph &Engine::routerGraph() const
 {
-    // An applied graph is what runs, with renamed pattern files followed.
-    if (m_appliedGraph && !isReplaying())
+    // An applied graph is what runs (or waits behind a replay), with renamed pattern files
+    // followed.
+    if (m_appliedGraph)
         return *m_appliedGraph;
-    return m_source->pipeline()->router().graph();
+    return streamingSource()->pipeline()->router().graph();
 }
 
 void Engine::followRenamedPattern(const QString &from, const QString &to)
@@ -377,7 +426,7 @@ void Engine::followRenamedPattern(const QString &from, const QString &to)
 
 bool Engine::isRouterEdited() const
 {
-    if (!m_appliedGraph || !m_source || !m_source->pipeline())
+    if (!m_appliedGraph)
         return false;
     RouterGraph named;
     LoadError error;
@@ -397,7 +446,7 @@ bool Engine::isRouterEdited() const
         json.remove(QLatin1String("description"));
         return json;
     };
-    return routing(named) != routing(routerGraph());
+    return routing(named) != routing(*m_appliedGraph);
 }
 
 std::array<GripperThresholds, 2> Engine::shownThresholds()
@@ -408,11 +457,9 @@ std::array<GripperThresholds, 2> Engine::shownThresholds()
 bool Engine::reset(QString *error)
 {
     const bool wasRunning = isRunning();
-    const RunSource::Kind kind = isReplaying() ? m_resumeKind : m_source->kind();
-    const LiveRigOptions rig = isLive() ? liveOptions() : m_rigOptions;
+    // The rig that listens, or that a replay keeps behind it, listens afresh on its port.
     std::unique_ptr<RouterGraph> applied = std::move(m_appliedGraph);
-    const bool started =
-        kind == RunSource::Kind::Rig ? startLive(rig, error) : start(m_options, error);
+    const bool started = m_rig ? startLive(liveOptions(), error) : start(m_options, error);
     if (!started)
         return false;
     if (applied && !setRouter(*applied, error))
@@ -445,7 +492,7 @@ void Engine::pause()
 
 void Engine::step()
 {
-    if (!m_simulation || isRunning())
+    if (!m_simulation || isReplaying() || isRunning())
         return;
     const int steps = int(std::lround(1.0 / StepRate / m_simulation->run().world().timestep()));
     m_pendingSteps.fetch_add(std::max(1, steps));
@@ -463,7 +510,7 @@ void Engine::setSpeed(double speed)
 
 void Engine::setDriving(bool driving)
 {
-    driving = driving && m_simulation;
+    driving = driving && m_simulation && !isReplaying();
     if (m_driving.exchange(driving) != driving)
         emit drivingChanged(driving);
 }

@@ -51,10 +51,18 @@ public:
     /**
      * Opens the recorded session at `path` as the source (File → Open session): the
      * history shows it from its start, the replay() is scrubbed from the GUI, setRouter()
-     * re-routes it. The run that was there stops; reset() goes back to it. False with a
-     * one-line `error`, keeping what runs.
+     * re-routes it. The run that was there is kept behind it, paused as it was — its
+     * simulation or rig, router, bindings, driving and history — with its recording ended
+     * and its devices sent to rest; closeReplay() brings it back, reset() starts it again.
+     * False with a one-line `error`, keeping what runs.
      */
     bool openReplay(const QString &path, QString *error);
+    /**
+     * Closes the replay and brings back the run it replaced where it was: the same time,
+     * world, driving and history (plots and log), paused. With no run behind it (a replay
+     * opened first), loads the options from the start. False with a one-line `error`.
+     */
+    bool closeReplay(QString *error);
     /**
      * Stops the current run and listens for a live rig's contact frames instead (File →
      * Listen for a live rig): they go through detectors, router and devices like the
@@ -65,6 +73,11 @@ public:
     bool listen(const LiveRigOptions &options, QString *error);
     /** What runs now; null before the first load. */
     RunSource *source() const { return m_source; }
+    /**
+     * The simulation or live rig: the source, or what a replay keeps behind it (the run to
+     * come back to). Null when there is none.
+     */
+    RunSource *streamingSource() const;
     /** The source is a live rig. */
     bool isLive() const { return m_source && m_source->kind() == RunSource::Kind::Rig; }
     /** The source is a recorded session. */
@@ -88,7 +101,7 @@ public:
      * keeping the router that runs.
      */
     bool setRouter(const RouterGraph &graph, QString *error);
-    /** The graph of the router that runs (valid while a simulation or a rig is loaded). */
+    /** The graph of the streamingSource()'s router (valid while there is one). */
     const RouterGraph &routerGraph() const;
     /**
      * A user pattern file was renamed (the designer moved it): an applied router's nodes that
@@ -96,7 +109,7 @@ public:
      */
     void followRenamedPattern(const QString &from, const QString &to);
     /**
-     * Whether the router that runs routes differently from the preset or file
+     * Whether the streamingSource()'s router routes differently from the preset or file
      * options().router names: an edit applied from the editor (`C3*` in the toolbar). Node
      * positions do not count.
      */
@@ -105,7 +118,7 @@ public:
     /**
      * Loads the current options again from the start, with the router last applied; a live
      * rig starts listening afresh (detectors and history cleared); a replay closes and the
-     * simulation or rig it replaced starts again.
+     * simulation or rig it replaced starts again from the start.
      */
     bool reset(QString *error);
     /** The simulation's options; while live, `router` and `overrides` are the rig's. */
@@ -232,6 +245,8 @@ private:
     void stopStreaming();
     /** Ends whatever runs before a new source is installed. */
     void stopSource();
+    /** Pauses the run a replay is about to replace and sets its history aside. */
+    void keepRun();
     /** Binds devices, history and metrics to the newly installed run or rig. */
     void install();
     void stopThread();
@@ -254,10 +269,6 @@ private:
     void recordInput(double t);
 
     RunOptions m_options;
-    /** The rig listened to last: where reset() goes back to after a replay of one. */
-    LiveRigOptions m_rigOptions;
-    /** The streaming source a replay replaced: what reset() starts again. */
-    RunSource::Kind m_resumeKind = RunSource::Kind::Simulation;
     /** The graph setRouter() applied since the last load: what reset() runs again. */
     std::unique_ptr<RouterGraph> m_appliedGraph;
     std::unique_ptr<DeviceManager> m_devices;
@@ -267,6 +278,9 @@ private:
     std::unique_ptr<LiveRig> m_rig;
     SessionReplay m_replay{m_history};
     RunSource *m_source = nullptr;
+    /** The history of the run kept behind a replay, and whether the user drove it. */
+    RunHistory m_keptHistory;
+    bool m_keptDriving = false;
     std::unique_ptr<DeviceOutputSink> m_output;
     RunFeed m_feed;
     SentFeed m_sentFeed; ///< GUI thread; rebound under m_setupMutex with every binding

@@ -74,6 +74,25 @@ void RunHistory::start(const std::vector<RunDevice> &devices,
     emit reset();
 }
 
+void RunHistory::assign(const RunHistory &other)
+{
+    start(other.m_devices, other.m_thresholds, QStringList());
+    m_nodeIds = other.m_nodeIds;
+    m_nodeMap = other.m_nodeMap;
+    for (size_t g = 0; g < m_frames.size(); ++g)
+        m_frames[g].appendAll(other.m_frames[g]);
+    m_events.appendAll(other.m_events);
+    m_activity.appendAll(other.m_activity);
+    for (size_t d = 0; d < m_deviceFrames.size(); ++d)
+        m_deviceFrames[d].appendAll(other.m_deviceFrames[d]);
+    m_spans = other.m_spans;
+    m_now = other.m_now;
+    m_runNow = other.m_runNow;
+    m_dirty = true;
+    setMetrics(other.m_metrics);
+    commit();
+}
+
 void RunHistory::setRouter(const std::vector<RunDevice> &devices,
                            const std::array<GripperThresholds, 2> &thresholds,
                            const QStringList &nodeIds)

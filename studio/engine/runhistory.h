@@ -83,6 +83,11 @@ public:
     bool isEmpty() const { return m_values.empty(); }
     const T &last() const { return m_values.back(); }
     void append(const T &value) { m_values.push_back(value); }
+    /** Appends `other`'s values, oldest first (they get this series' next indices). */
+    void appendAll(const RunSeries &other)
+    {
+        m_values.insert(m_values.end(), other.m_values.begin(), other.m_values.end());
+    }
     /** Drops the values older than `t` (by their `t`). */
     void trimBefore(double t)
     {
@@ -130,6 +135,12 @@ public:
     /** Forgets everything and describes the new run; emits `reset()`. */
     void start(const std::vector<RunDevice> &devices,
                const std::array<GripperThresholds, 2> &thresholds, const QStringList &nodeIds);
+    /**
+     * Holds what `other` holds instead, as a run shown anew: views drop what they show
+     * (`reset()`), then read it all (`updated()`); what is older than keepSeconds() goes.
+     * How a run set aside for a replay comes back with its plots and log.
+     */
+    void assign(const RunHistory &other);
 
     /**
      * Describes a router swapped into the running session (the router editor's Apply),

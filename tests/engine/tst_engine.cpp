@@ -11,11 +11,16 @@
 #include "sessionreader.h"
 #include "world.h"
 
+#include <QElapsedTimer>
+#include <QJsonDocument>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <chrono>
 #include <map>
+#include <thread>
+#include <tuple>
 
 using namespace semhap;
 
@@ -43,6 +48,9 @@ private slots:
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
+    void keepsTheRunBehindAReplay();
+    void keepsTheRigBehindAReplay();
+    void theRunsMetricsStayWithTheRun();
 };
 
 namespace {
@@ -68,6 +76,51 @@ bool runUntilGrasped(Engine &engine)
         });
     };
     return QTest::qWaitFor(grasped, 20000);
+}
+
+/** What the plots and the log read of one gripper's run: its frames, events and spans. */
+struct Seen
+{
+    qint64 frames = 0;
+    double firstFrame = 0.0;
+    double lastFrame = 0.0;
+    qint64 events = 0;
+    std::vector<std::tuple<QString, int, double, double, bool>> spans;
+
+    explicit Seen(const RunHistory &history)
+    {
+        const RunSeries<ContactFrame> &right = history.frames(Gripper::Right);
+        frames = right.end() - right.begin();
+        if (frames > 0) {
+            firstFrame = right.at(right.begin()).t;
+            lastFrame = right.last().t;
+        }
+        events = history.events().end() - history.events().begin();
+        for (const MessageSpan &span : history.spans())
+            spans.emplace_back(span.node, int(span.message), span.begin, span.end, span.active);
+    }
+    bool operator==(const Seen &o) const
+    {
+        return frames == o.frames && firstFrame == o.firstFrame && lastFrame == o.lastFrame &&
+               events == o.events && spans == o.spans;
+    }
+};
+
+/** Whether every band's last frame sent is its rest frame. */
+bool bandsRest(Engine &engine)
+{
+    for (const QString &name : engine.devices().boundNames()) {
+        const Transport *band = engine.devices().transport(name);
+        if (band->sent().count() == 0)
+            continue;
+        const DeviceFrame last = band->sent().last();
+        const DeviceFrame rest = band->model().restFrame(last.t);
+        for (int c = 0; c < last.channelCount; ++c) {
+            if (last.values[size_t(c)] != rest.values[size_t(c)])
+                return false;
+        }
+    }
+    return true;
 }
 
 } // namespace
@@ -594,6 +647,148 @@ void TestEngine::recordsAndReplays()
     QVERIFY(!replay.isOpen());
     QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
     QVERIFY(engine.simTime() < 0.1);
+}
+
+void TestEngine::keepsTheRunBehindAReplay()
+{
+    // Opening a session mid-grasp while the user drives, then closing it, brings the run
+    // back where it was: time, world, driving, what the plots and the log read.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("earlier.db");
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    QTRY_VERIFY(engine.simTime() > 3.0);
+    QVERIFY(!bandsRest(engine)); // the grasp is felt
+    engine.setDriving(true);
+    engine.pause();
+    QTest::qWait(50); // the last values drain into the history
+    const double t = engine.simTime();
+    const std::vector<double> world = engine.world()->sceneState();
+    const Seen seen(engine.history());
+    QVERIFY(seen.frames > 1000 && seen.lastFrame > 3.0);
+    QVERIFY(std::any_of(seen.spans.begin(), seen.spans.end(),
+                        [](const auto &span) { return std::get<4>(span); }));
+    const QJsonObject metrics = engine.history().metrics();
+
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    QVERIFY(!engine.isRecording());
+    QVERIFY(!engine.isDriving());
+    QVERIFY(bandsRest(engine)); // the replay owns the readouts: the bands do not play on
+    QVERIFY(!(Seen(engine.history()) == seen));
+    // Nothing reaches the run behind the replay: no step, no driving.
+    engine.step();
+    engine.setDriving(true);
+    QVERIFY(!engine.isDriving());
+    engine.replay().seek(engine.replay().endTime());
+    // An audition during the replay plays on a band, at the replay's time: not the run's.
+    Transport *band = engine.devices().transport("right.vibro");
+    DeviceFrame audition;
+    audition.t = engine.readoutTime();
+    audition.channelCount = band->model().channelCount();
+    audition.values.fill(0.7);
+    band->send(audition);
+    QCOMPARE(band->sent().last().values[0], 0.7);
+    QTest::qWait(100);
+
+    QSignalSpy changed(&engine, &Engine::sourceChanged);
+    QVERIFY2(engine.closeReplay(&error), qPrintable(error));
+    QCOMPARE(changed.count(), 1);
+    QVERIFY(!engine.isReplaying());
+    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(!engine.isRunning());
+    QCOMPARE(engine.simTime(), t);
+    QCOMPARE(engine.world()->sceneState(), world);
+    QVERIFY(engine.isDriving());
+    QVERIFY(Seen(engine.history()) == seen);
+    QCOMPARE(engine.history().metrics().value("grasps"), metrics.value("grasps"));
+    // The readouts' newest device frames are the rest values the bands were sent.
+    for (int d = 0; d < int(engine.history().devices().size()); ++d) {
+        const RunSeries<DeviceFrame> &frames = engine.history().deviceFrames(d);
+        QVERIFY(frames.end() > frames.begin());
+        for (int c = 0; c < frames.last().channelCount; ++c)
+            QVERIFY(frames.last().values[size_t(c)] <= 1e-9);
+    }
+
+    // It runs on from there, its history growing from what it had.
+    engine.setDriving(false);
+    engine.run();
+    QTRY_VERIFY(engine.simTime() > t + 0.2);
+    QTest::qWait(50);
+    QCOMPARE(engine.history()
+                 .frames(Gripper::Right)
+                 .at(engine.history().frames(Gripper::Right).begin())
+                 .t,
+             seen.firstFrame);
+}
+
+void TestEngine::keepsTheRigBehindAReplay()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("sim.db");
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY(engine.startRecording(path, QString(), &error));
+    engine.step();
+    QTRY_VERIFY(engine.simTime() > 0.0);
+    engine.stopRecording();
+    // A replay opened before anything ran closes into the run its options load.
+    Engine first;
+    QVERIFY2(first.openReplay(path, &error), qPrintable(error));
+    QVERIFY2(first.closeReplay(&error), qPrintable(error));
+    QCOMPARE(first.source()->kind(), RunSource::Kind::Simulation);
+    QCOMPARE(first.simTime(), 0.0);
+
+    LiveRigOptions rig;
+    rig.port = 0;
+    QVERIFY2(engine.listen(rig, &error), qPrintable(error));
+    const int port = engine.liveOptions().port;
+    QVERIFY(port > 0);
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    QVERIFY(!engine.isLive());
+    QVERIFY(engine.closeReplay(&error));
+    QVERIFY(engine.isLive());
+    QCOMPARE(engine.liveOptions().port, port);
+    // Reset from a replay starts the rig again on its port.
+    QVERIFY(engine.openReplay(path, &error));
+    QVERIFY2(engine.reset(&error), qPrintable(error));
+    QVERIFY(engine.isLive() && !engine.replay().isOpen());
+    QCOMPARE(engine.liveOptions().port, port);
+}
+
+void TestEngine::theRunsMetricsStayWithTheRun()
+{
+    // Steps whose task metrics are still on their way to the GUI when a replay opens: they
+    // do not show as the replay's, and closing the replay shows the run's metrics as of now.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("earlier.db");
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    QVERIFY(engine.startRecording(path, QString(), &error));
+    QVERIFY2(runUntilGrasped(engine), "no grasp in 20 s");
+    engine.pause();
+    QTest::qWait(50);
+    const QJsonObject sent = engine.history().metrics();
+    QVERIFY(!sent.isEmpty());
+    const double paused = engine.simTime();
+    for (int i = 0; i < 30; ++i)
+        engine.step(); // half a simulated second: metrics go out twice
+    QElapsedTimer clock;
+    clock.start();
+    while (engine.simTime() < paused + 0.45 && clock.elapsed() < 10000)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1)); // no events delivered
+    QVERIFY(engine.simTime() >= paused + 0.45);
+
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    QTest::qWait(50);
+    QCOMPARE(engine.history().metrics(), QJsonObject());
+    QVERIFY(engine.closeReplay(&error));
+    QVERIFY2(engine.history().metrics() != sent,
+             qPrintable(QJsonDocument(engine.history().metrics()).toJson()));
 }
 
 QTEST_MAIN(TestEngine)

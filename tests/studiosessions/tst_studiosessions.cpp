@@ -43,6 +43,7 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace semhap;
 
@@ -57,6 +58,7 @@ private slots:
     void reroutesThroughTheEditorsRouter();
     void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
+    void closingAReplayBringsTheRunBack();
     void recordingMidGraspShowsTheGraspFromItsStart();
     void cleanupTestCase();
 
@@ -112,6 +114,24 @@ QString recordWithKeys(MainWindow &window, double seconds)
         return QString();
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     return window.engine().isRecording() ? QString() : path;
+}
+
+/** The latest time any of the plot's graphs holds; -1 when none holds anything. */
+double lastPlotted(const QCustomPlot *plot, double *first = nullptr)
+{
+    double last = -1.0;
+    double earliest = std::numeric_limits<double>::infinity();
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        bool found = false;
+        const QCPRange keys = plot->graph(g)->getKeyRange(found);
+        if (found) {
+            last = std::max(last, keys.upper);
+            earliest = std::min(earliest, keys.lower);
+        }
+    }
+    if (first)
+        *first = earliest;
+    return last;
 }
 
 } // namespace
@@ -500,6 +520,65 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(asked);
     QVERIFY(!window.engine().isLive());
     QCOMPARE(scene->currentData().toString(), before);
+}
+
+void TestStudioSessions::closingAReplayBringsTheRunBack()
+{
+    // A person records, drives, pauses, looks at the session and closes it: the paused run
+    // is back where it was — time, bodies, driving, plots — not started again.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    const QString path = recordWithKeys(window, 1.0);
+    QVERIFY(!path.isEmpty());
+    const double recorded = window.engine().simTime();
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > std::max(3.0, recorded + 1.0), 30000);
+    QTest::keyClick(&window, Qt::Key_T, Qt::ControlModifier); // Drive
+    QVERIFY(window.engine().isDriving());
+    QTest::keyClick(&window, Qt::Key_F5); // Pause
+    QVERIFY(!window.engine().isRunning());
+    QTest::qWait(300); // the plots catch up
+    auto *operatorLabel = window.findChild<QLabel *>("operatorLabel");
+    QCOMPARE(operatorLabel->text(), QString("You are driving"));
+    const double t = window.engine().simTime();
+    const std::vector<double> bodies = window.engine().world()->sceneState();
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    double firstPlotted = 0.0;
+    QVERIFY(std::abs(lastPlotted(plot, &firstPlotted) - t) < 0.05);
+    const int logRows = window.eventLog()->model()->rowCount();
+    QVERIFY(logRows > 0);
+
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+    QTRY_COMPARE(operatorLabel->text(), QString("Replay: nobody drives"));
+    QVERIFY(!window.findChild<QAction *>("driveAction")->isChecked());
+    QTRY_VERIFY(lastPlotted(plot) <= window.replay()->startTime()); // the session's start
+
+    const quint64 drawn = window.viewport()->renderedFrames();
+    QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
+    QVERIFY(!window.engine().isReplaying());
+    QVERIFY(!window.replayBar()->isVisible());
+    QVERIFY(!window.engine().isRunning());
+    QCOMPARE(window.engine().simTime(), t);
+    QCOMPARE(window.engine().world()->sceneState(), bodies);
+    QVERIFY(window.engine().isDriving());
+    QVERIFY(window.findChild<QAction *>("driveAction")->isChecked());
+    QTRY_COMPARE(operatorLabel->text(), QString("You are driving"));
+    QCOMPARE(window.findChild<QLabel *>("timeLabel")->text(),
+             QStringLiteral("t = %1 s").arg(QLocale().toString(t, 'f', 2)));
+    // The plots and the log show the run's history again, and the paused world is drawn.
+    double firstAgain = 0.0;
+    QTRY_VERIFY(std::abs(lastPlotted(plot, &firstAgain) - t) < 0.05);
+    QCOMPARE(firstAgain, firstPlotted);
+    QTRY_COMPARE(window.eventLog()->model()->rowCount(), logRows);
+    QTRY_VERIFY(window.viewport()->renderedFrames() > drawn);
+    QCOMPARE(window.viewport()->caption(), QString());
+
+    // Run goes on from there; Reset still starts again.
+    QTest::keyClick(&window, Qt::Key_F5);
+    QTRY_VERIFY(window.engine().simTime() > t + 0.1);
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
+    QVERIFY(window.engine().simTime() < t);
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
