@@ -776,6 +776,30 @@ std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringLis
     return nullptr;
 }
 
+bool routesAs(const Router &router, const QString &nameOrPath)
+{
+    LoadError error;
+    const std::unique_ptr<Router> named = loadRouter(nameOrPath, {}, &error);
+    if (!named)
+        return false;
+    // Both self-contained, so a pattern compares by what it plays, whatever names it; and
+    // what routes, not where the editor drew it.
+    const auto routing = [](const Router &r) {
+        QJsonObject json = r.selfContained().toJson();
+        QJsonArray nodes = json.value(QLatin1String("nodes")).toArray();
+        for (QJsonValueRef node : nodes) {
+            QJsonObject object = node.toObject();
+            object.remove(QLatin1String("ui"));
+            node = object;
+        }
+        json.insert(QStringLiteral("nodes"), nodes);
+        json.remove(QLatin1String("name"));
+        json.remove(QLatin1String("description"));
+        return json;
+    };
+    return routing(*named) == routing(router);
+}
+
 void Router::start(double t0)
 {
     m_player.start(t0);

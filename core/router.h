@@ -120,5 +120,12 @@ std::unique_ptr<Router> loadRouter(const QString &nameOrPath, const QStringList 
 /** What loadRouter() does once the graph is loaded (a session's router, an editor's). */
 std::unique_ptr<Router> compileWithOverrides(RouterGraph graph, const QStringList &overrides,
                                              LoadError *error, const RouterContext &context = {});
+/**
+ * Whether `router` routes as the preset or file `nameOrPath` does: the same nodes, links
+ * and parameters, and patterns and device models of the same content. Where the editor drew
+ * the nodes, the name and the description do not count. False when nothing of that name
+ * loads: a router that differs is an edit of it (`C3*`).
+ */
+bool routesAs(const Router &router, const QString &nameOrPath);
 
 } // namespace semhap

@@ -1926,6 +1926,10 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>Ended: never closed (the recording was cut off)</source>
         <translation>Beendet: nie geschlossen (die Aufzeichnung brach ab)</translation>
     </message>
+    <message>
+        <source>Router: %1, edited (it routes differently from %1)</source>
+        <translation>Router: %1, bearbeitet (leitet anders als %1)</translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterEditor</name>

@@ -1923,6 +1923,10 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>Ended: never closed (the recording was cut off)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Router: %1, edited (it routes differently from %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterEditor</name>

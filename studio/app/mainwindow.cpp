@@ -453,6 +453,8 @@ void MainWindow::createReplayBar()
     m_replayToolBar->toggleViewAction()->setVisible(false); // shown by a replay only
     connect(m_replayBar, &ReplayBar::closeRequested, this, &MainWindow::closeReplay);
     connect(m_replayBar, &ReplayBar::rerouteRequested, this, &MainWindow::rerouteReplay);
+    // The router picker names the router whose events the replay shows.
+    connect(&m_engine.replay(), &SessionReplay::streamsChanged, this, &MainWindow::syncPickers);
 }
 
 void MainWindow::createDocks()
@@ -875,8 +877,8 @@ void MainWindow::syncPickers()
         picker->setCurrentIndex(index);
     };
     sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
-    sync(m_routerPicker, m_engine.options().router);
-    // An edit applied from the editor runs under the name it started from: say so (`C3*`).
+    sync(m_routerPicker, m_engine.routerSource());
+    // An edit runs (or a replay shows it) under the name it started from: say so (`C3*`).
     const bool edited = m_engine.isRouterEdited();
     const QStringList presets = RouterPresets::names();
     for (int i = 0; i < m_routerPicker->count(); ++i) {

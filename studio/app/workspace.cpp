@@ -122,7 +122,7 @@ QJsonObject Workspace::toJson() const
     } else if (run) {
         json.insert(QStringLiteral("simulation"), engine.options().toJson());
     }
-    if (run && engine.isRouterEdited())
+    if (run && engine.isRunRouterEdited())
         json.insert(QStringLiteral("router"), graphEntry(engine.routerGraph()));
 
     QJsonArray bindings;

@@ -10,7 +10,6 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
-#include <QJsonArray>
 #include <QRegularExpression>
 
 #include <chrono>
@@ -416,6 +415,18 @@ const RouterGraph &Engine::routerGraph() const
     return streamingSource()->pipeline()->router().graph();
 }
 
+QString Engine::routerSource() const
+{
+    return isReplaying() ? m_replay.routerSource() : m_options.router;
+}
+
+bool Engine::isRunRouterEdited() const
+{
+    // Only an applied graph can differ from what options().router loads.
+    return m_appliedGraph && streamingSource() &&
+           !routesAs(streamingSource()->pipeline()->router(), m_options.router);
+}
+
 void Engine::followRenamedPattern(const QString &from, const QString &to)
 {
     // The running router holds the pattern already; what reset() and the workspace use must
@@ -426,27 +437,7 @@ void Engine::followRenamedPattern(const QString &from, const QString &to)
 
 bool Engine::isRouterEdited() const
 {
-    if (!m_appliedGraph)
-        return false;
-    RouterGraph named;
-    LoadError error;
-    if (!RouterPresets::load(m_options.router, &named, &error))
-        return true; // nothing of that name to match any more
-    // What routes, not where the editor drew it.
-    const auto routing = [](const RouterGraph &graph) {
-        QJsonObject json = graph.toJson();
-        QJsonArray nodes = json.value(QLatin1String("nodes")).toArray();
-        for (QJsonValueRef node : nodes) {
-            QJsonObject object = node.toObject();
-            object.remove(QLatin1String("ui"));
-            node = object;
-        }
-        json.insert(QStringLiteral("nodes"), nodes);
-        json.remove(QLatin1String("name"));
-        json.remove(QLatin1String("description"));
-        return json;
-    };
-    return routing(named) != routing(*m_appliedGraph);
+    return isReplaying() ? m_replay.isRouterEdited() : isRunRouterEdited();
 }
 
 std::array<GripperThresholds, 2> Engine::shownThresholds()

@@ -109,9 +109,19 @@ public:
      */
     void followRenamedPattern(const QString &from, const QString &to);
     /**
+     * The preset or file the router shown is named after: options().router, or during a
+     * replay the one its events come from (SessionReplay::routerSource).
+     */
+    QString routerSource() const;
+    /**
      * Whether the streamingSource()'s router routes differently from the preset or file
-     * options().router names: an edit applied from the editor (`C3*` in the toolbar). Node
-     * positions do not count.
+     * options().router names (routesAs()): an edit applied from the editor.
+     */
+    bool isRunRouterEdited() const;
+    /**
+     * Whether the router shown routes differently from the one routerSource() names: the
+     * run's edit, or during a replay its recorded or re-routing router's (`C3*` in the
+     * toolbar).
      */
     bool isRouterEdited() const;
 

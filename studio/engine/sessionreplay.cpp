@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "sessionreplay.h"
 
+#include "inputfile.h"
 #include "pipeline.h"
 #include "router.h"
 #include "routergraph.h"
@@ -93,6 +94,9 @@ bool SessionReplay::open(const QString &path, QString *error)
     std::unique_ptr<Router> router;
     if (reader->routerGraph(&graph, &loadError))
         router = Router::compile(graph, &loadError, reader->info().routerContext);
+    const QString &source = reader->info().routerSource;
+    const bool edited =
+        router && RouterPresets::names().contains(source) && !routesAs(*router, source);
     // The hands that recorded frames; the router's detectors of another never fired.
     Hands hands{false, false};
     for (const ContactFrame &frame : frames)
@@ -120,6 +124,7 @@ bool SessionReplay::open(const QString &path, QString *error)
     m_end = reader->endTime();
     m_shown = m_recorded;
     m_rerouted = false;
+    m_recordedEdited = edited;
     m_reader = std::move(reader);
     return true;
 }
@@ -179,6 +184,8 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
         *error = loadError.toString();
         return false;
     }
+    // An untitled graph is named, not compared: there is nothing it could be an edit of.
+    const bool edited = !graph.file.isEmpty() && !routesAs(*router, graph.file);
     Streams streams;
     streams.devices = liveDevicesOf(*router, m_hands);
     streams.nodeIds = router->nodeIds();
@@ -189,20 +196,29 @@ bool SessionReplay::reroute(const RouterGraph &graph, QString *error)
     streams.activity = std::move(collector.activity);
     m_shown = std::move(streams);
     m_rerouted = true;
-    m_reroutedWith = graph.file.isEmpty() ? graph.name : QFileInfo(graph.file).completeBaseName();
+    m_reroutedWith = graph.file.isEmpty() ? graph.name : graph.file;
+    m_reroutedEdited = edited;
     refill(m_time);
     emit streamsChanged();
     return true;
 }
 
-QString SessionReplay::routerName() const
+QString SessionReplay::routerSource() const
 {
     if (m_rerouted)
         return m_reroutedWith;
     const SessionInfo &recorded = info();
     if (!recorded.routerSource.isEmpty())
-        return QFileInfo(recorded.routerSource).completeBaseName();
+        return recorded.routerSource;
     return recorded.router.value(QLatin1String("name")).toString();
+}
+
+QString SessionReplay::routerName() const
+{
+    const QString source = routerSource();
+    const QString name =
+        InputFile::namesFile(source) ? QFileInfo(source).completeBaseName() : source;
+    return isRouterEdited() ? name + QLatin1Char('*') : name;
 }
 
 const SessionInfo &SessionReplay::info() const

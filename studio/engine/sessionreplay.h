@@ -68,7 +68,20 @@ public:
     void showRecorded();
     /** Whether the events shown are a re-routing's rather than the recording's. */
     bool isRerouted() const { return m_rerouted; }
-    /** The name of the router shown: the re-routing's, else the recording's. */
+    /**
+     * The preset or file the router shown is named after: the re-routing graph's (its
+     * name when it has no file), else the recording's `router_source`.
+     */
+    QString routerSource() const;
+    /**
+     * Whether the router shown routes differently from the one routerSource() names
+     * (routesAs()): an edit applied in the studio, `--set` overrides. Only a preset is
+     * compared for the recording — a session makes the studio read no file it names.
+     */
+    bool isRouterEdited() const { return m_rerouted ? m_reroutedEdited : m_recordedEdited; }
+    /** Whether the recording's router differs from its preset, as isRouterEdited(). */
+    bool isRecordedRouterEdited() const { return m_recordedEdited; }
+    /** The router shown as the toolbar names it: `C3`, or `C3*` when edited. */
     QString routerName() const;
     /** What the session says of itself: scene, router, operator, dates, notes. */
     const SessionInfo &info() const;
@@ -114,7 +127,9 @@ private:
     Streams m_recorded;
     Streams m_shown;
     bool m_rerouted = false;
-    QString m_reroutedWith; ///< the re-routing graph's name
+    QString m_reroutedWith; ///< the re-routing graph's file, or its name without one
+    bool m_reroutedEdited = false;
+    bool m_recordedEdited = false;
     double m_start = 0.0;
     double m_end = 0.0;
     double m_time = 0.0;

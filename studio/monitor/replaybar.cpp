@@ -120,11 +120,11 @@ void ReplayBar::sessionOpened()
     // What the session was, in a word (the scrubber keeps the room); the rest on hover.
     const SessionInfo &info = m_replay.info();
     const QLocale locale;
-    const QString started =
-        info.started.isValid()
-            ? locale.toString(info.started.toLocalTime(), QLocale::ShortFormat)
-            : tr("unknown date");
-    const QString what = info.scene.isEmpty() ? tr("live rig") : QFileInfo(info.scene).completeBaseName();
+    const QString started = info.started.isValid()
+                                ? locale.toString(info.started.toLocalTime(), QLocale::ShortFormat)
+                                : tr("unknown date");
+    const QString what =
+        info.scene.isEmpty() ? tr("live rig") : QFileInfo(info.scene).completeBaseName();
     m_about->setText(what);
     QStringList details;
     if (!info.notes.isEmpty())
@@ -132,11 +132,14 @@ void ReplayBar::sessionOpened()
     details << tr("Recorded by: %1").arg(info.source);
     if (!info.operatorName.isEmpty())
         details << tr("Operator: %1, seed %2").arg(info.operatorName, info.seed);
-    details << tr("Router: %1").arg(info.routerSource);
+    details << (m_replay.isRecordedRouterEdited()
+                    ? tr("Router: %1, edited (it routes differently from %1)")
+                    : tr("Router: %1"))
+                   .arg(info.routerSource);
     details << tr("Started: %1").arg(started);
     details << (info.ended.isValid()
-                    ? tr("Ended: %1").arg(locale.toString(info.ended.toLocalTime(),
-                                                          QLocale::ShortFormat))
+                    ? tr("Ended: %1")
+                          .arg(locale.toString(info.ended.toLocalTime(), QLocale::ShortFormat))
                     : tr("Ended: never closed (the recording was cut off)"));
     m_about->setToolTip(details.join(QLatin1Char('\n')));
     const QSignalBlocker block(m_slider);

@@ -24,6 +24,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
 #include <QLabel>
@@ -59,6 +60,7 @@ private slots:
     void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
     void closingAReplayBringsTheRunBack();
+    void replayNamesAnEditedRouter();
     void recordingMidGraspShowsTheGraspFromItsStart();
     void cleanupTestCase();
 
@@ -579,6 +581,61 @@ void TestStudioSessions::closingAReplayBringsTheRunBack()
     QTRY_VERIFY(window.engine().simTime() > t + 0.1);
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
     QVERIFY(window.engine().simTime() < t);
+}
+
+void TestStudioSessions::replayNamesAnEditedRouter()
+{
+    // Recorded with C3 whose break was raised to 100 N: the replay bar and the router
+    // picker say C3*, and a re-routing says whether the editor's graph is its preset.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    RouterEditor *editor = window.routerEditor();
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    editor->setParam("right.force", "break", 100.0);
+    QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
+    QTRY_COMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    const QString path = recordWithKeys(window, 0.5);
+    QVERIFY(!path.isEmpty());
+
+    // The run goes on with an edit of C1; the picker shows what the replay shows.
+    RouterGraph c1;
+    LoadError loadError;
+    QVERIFY(RouterPresets::preset("C1", &c1, &loadError));
+    editor->setGraph(c1);
+    editor->setParam("right.force", "grasp", 25.0);
+    QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
+    QTRY_COMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    const QJsonObject running = window.engine().routerGraph().toJson();
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+    auto *source = window.replayBar()->findChild<QLabel *>("replaySource");
+    QCOMPARE(source->text(), QString("Showing: recorded with C3*"));
+    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    auto *about = window.replayBar()->findChild<QLabel *>("replayAbout");
+    QVERIFY2(about->toolTip().contains("Router: C3, edited"), qPrintable(about->toolTip()));
+    QCOMPARE(clippedTexts(window.replayBar()), QStringList()); // the star fits at 1280 px
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(shots + "/replay-edited-1280x800.png");
+    // What the studio keeps for its next start is the run behind the replay, edit and all.
+    QCOMPARE(workspace.toJson().value("router").toObject().value("graph").toObject(), running);
+
+    // Re-routed through the editor's C1 with its edit, then through C1 as it is.
+    QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+    QCOMPARE(source->text(), QString("Showing: re-routed through C1*"));
+    QCOMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    editor->setGraph(c1);
+    QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+    QCOMPARE(source->text(), QString("Showing: re-routed through C1"));
+    QCOMPARE(window.routerPicker()->currentText(), QString("C1"));
+    QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
+    QCOMPARE(source->text(), QString("Showing: recorded with C3*"));
+    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+
+    // Closed, the picker names the run's router again.
+    QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
+    QCOMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    QCOMPARE(window.engine().routerGraph().toJson(), running);
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
