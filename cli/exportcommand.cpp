@@ -5,9 +5,7 @@
 #include "sessionreader.h"
 
 #include <QDir>
-#include <QJsonArray>
 #include <QJsonDocument>
-#include <QJsonObject>
 
 #include <cmath>
 #include <map>
@@ -246,15 +244,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     QIODevice *metadata = create(dir, QStringLiteral("metadata.json"));
     if (!metadata)
         return false;
-    QJsonObject json;
-    const QMap<QString, QString> rows = session.info().toMetadata();
-    for (auto it = rows.begin(); it != rows.end(); ++it)
-        json.insert(it.key(), it.value());
-    // The structured values as JSON, not as strings holding JSON.
-    json.insert(QStringLiteral("router"), session.info().router);
-    json.insert(QStringLiteral("bindings"), session.info().bindings);
-    json.insert(QStringLiteral("overrides"), QJsonArray::fromStringList(session.info().overrides));
-    metadata->write(QJsonDocument(json).toJson(QJsonDocument::Indented));
+    metadata->write(QJsonDocument(session.info().toJson()).toJson(QJsonDocument::Indented));
     return true;
 }
 

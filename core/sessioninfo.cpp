@@ -65,6 +65,30 @@ QMap<QString, QString> SessionInfo::toMetadata() const
     return rows;
 }
 
+QJsonObject SessionInfo::toJson() const
+{
+    QJsonObject json;
+    const QMap<QString, QString> rows = toMetadata();
+    for (auto it = rows.begin(); it != rows.end(); ++it) {
+        // A JSON key's value is written as JSON, not as a string holding JSON.
+        const QJsonDocument document =
+            isJsonKey(it.key()) ? QJsonDocument::fromJson(it.value().toUtf8()) : QJsonDocument();
+        if (document.isObject())
+            json.insert(it.key(), document.object());
+        else if (document.isArray())
+            json.insert(it.key(), document.array());
+        else
+            json.insert(it.key(), it.value());
+    }
+    return json;
+}
+
+bool SessionInfo::isJsonKey(const QString &key)
+{
+    return key == RouterKey || key == OverridesKey || key == BindingsKey ||
+           key == QLatin1String(OpenAtStartKey);
+}
+
 bool SessionInfo::fromMetadata(const QMap<QString, QString> &rows, SessionInfo *result,
                                QString *error)
 {

@@ -46,11 +46,21 @@ struct SessionInfo
     /** The metadata table's rows. */
     QMap<QString, QString> toMetadata() const;
     /**
+     * The metadata as one JSON object (`semhap export`'s metadata.json): the keys whose
+     * value is JSON (isJsonKey) nested, every other value a string as stored.
+     */
+    QJsonObject toJson() const;
+    /** Whether metadata `key` holds JSON: `router`, `overrides`, `bindings`, `open_at_start`. */
+    static bool isJsonKey(const QString &key);
+    /**
      * Reads the rows back; unknown keys go to `extra`. False with `error` (`KEY: reason`)
      * when a value this semhap needs to replay the session is malformed.
      */
     static bool fromMetadata(const QMap<QString, QString> &rows, SessionInfo *info,
                              QString *error);
+
+    /** The metadata key listing the messages a recording begins with (a JSON array). */
+    static constexpr const char *OpenAtStartKey = "open_at_start";
 
     /** The longest reaction time a session or an option may state (s). */
     static constexpr double MaxReactionTime = 10.0;

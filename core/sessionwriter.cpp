@@ -499,7 +499,7 @@ std::unique_ptr<SessionWriter> SessionWriter::create(const QString &path, Sessio
         for (const SemanticEvent &event : open)
             list.append(QJsonObject{{QStringLiteral("node"), router.nodeIds().value(event.node)},
                                     {QStringLiteral("message"), messageName(event.message)}});
-        info.extra.insert(QStringLiteral("open_at_start"),
+        info.extra.insert(QLatin1String(SessionInfo::OpenAtStartKey),
                           QString::fromUtf8(QJsonDocument(list).toJson(QJsonDocument::Compact)));
     }
     if (info.semhapVersion.isEmpty())

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHostAddress>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -53,6 +54,27 @@ QByteArray contents(const QString &path)
 {
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("(missing)");
+}
+
+/**
+ * Copies `session` to `copy` and runs the SQL `statements` on the copy: a session as
+ * another program (or a damaged file) may have written it. False when one fails.
+ */
+bool alteredCopy(const QString &session, const QString &copy, const QStringList &statements)
+{
+    if (!QFile::copy(session, copy))
+        return false;
+    bool ok = true;
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", copy);
+        db.setDatabaseName(copy);
+        QSqlQuery query(db);
+        ok = db.open();
+        for (const QString &statement : statements)
+            ok = ok && query.exec(statement);
+    }
+    QSqlDatabase::removeDatabase(copy);
+    return ok;
 }
 
 /** Starts `semhap listen` on a free port; returns the port, 0 when it did not start. */
@@ -99,6 +121,7 @@ private slots:
     void replayKeepsTheReactionTime();
     void replayOfAFarFrameEnds();
     void exportCsv();
+    void exportNestsJsonMetadata();
     void errors_data();
     void errors();
     void listenRunsLikeRoute();
@@ -227,16 +250,9 @@ void TestSessionCli::replayOfAFarFrameEnds()
     // A session row a billion seconds on used to make replay render every device instant
     // in between: it never ended.
     const QString far = m_dir.filePath("far.db");
-    QVERIFY(QFile::copy(m_session, far));
-    {
-        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "far");
-        db.setDatabaseName(far);
-        QVERIFY(db.open());
-        QSqlQuery query(db);
-        QVERIFY(query.exec("UPDATE contact_frames SET t = 1e9 WHERE rowid = "
-                           "(SELECT max(rowid) FROM contact_frames)"));
-    }
-    QSqlDatabase::removeDatabase("far");
+    QVERIFY(alteredCopy(m_session, far,
+                        {"UPDATE contact_frames SET t = 1e9 WHERE rowid = "
+                         "(SELECT max(rowid) FROM contact_frames)"}));
     const Result replay = semhapRun({"replay", far, "--device-frames", "-"});
     QCOMPARE(replay.code, 0);
     QVERIFY(replay.out.count('\n') < contents(m_dir.filePath("with.devices")).count('\n') + 8000);
@@ -266,6 +282,31 @@ void TestSessionCli::exportCsv()
              QString("semhap.router/1"));
     QVERIFY(contents(csv + "/events.csv").startsWith("t,gripper,node,detector,message,"));
     QCOMPARE(contents(csv + "/operator_input.csv"), QByteArray("t,hand,x,y,z,qw,qx,qy,qz,grip\n"));
+}
+
+void TestSessionCli::exportNestsJsonMetadata()
+{
+    // A studio recording started mid-grasp lists what it began with; its metadata.json held
+    // that list as a string of JSON while router, bindings and overrides were nested.
+    const QString session = m_dir.filePath("open.db");
+    // Text that reads as JSON is still text under a key that is not JSON (notes).
+    QVERIFY(alteredCopy(m_session, session,
+                        {"INSERT INTO metadata (key, value) VALUES ('open_at_start', "
+                         "'[{\"message\":\"grasp\",\"node\":\"right.force\"}]')",
+                         "UPDATE metadata SET value = '[1]' WHERE key = 'notes'"}));
+    const QString csv = m_dir.filePath("open-csv");
+    QCOMPARE(semhapRun({"export", session, "--csv", csv}).code, 0);
+    const QJsonObject metadata =
+        QJsonDocument::fromJson(contents(csv + "/metadata.json")).object();
+    const QJsonArray open = metadata.value("open_at_start").toArray();
+    QCOMPARE(open.size(), 1);
+    QCOMPARE(open.at(0).toObject().value("node").toString(), QString("right.force"));
+    QCOMPARE(open.at(0).toObject().value("message").toString(), QString("grasp"));
+    QVERIFY(metadata.value("router").isObject());
+    QVERIFY(metadata.value("bindings").isObject());
+    QVERIFY(metadata.value("overrides").isArray());
+    QCOMPARE(metadata.value("notes").toString(), QString("[1]"));
+    QCOMPARE(metadata.value("schema_version").toString(), QString("3"));
 }
 
 void TestSessionCli::errors_data()
