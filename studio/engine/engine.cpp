@@ -138,6 +138,7 @@ void Engine::keepRun()
         // runs again.
         std::lock_guard<std::mutex> lock(m_setupMutex);
         silenceDevices(m_outputs);
+        m_runKept = true;
     }
     drain(); // everything the run sent, rest values too, is in its history
     m_keptHistory.setKeepSeconds(m_history.keepSeconds());
@@ -167,6 +168,7 @@ bool Engine::closeReplay(QString *error)
         }
         m_history.setMetrics(metrics);
     }
+    m_runKept = false; // a rig that fell silent meanwhile ends its messages now
     emit sourceChanged();
     setDriving(m_keptDriving);
     return true;
@@ -242,6 +244,7 @@ bool Engine::startLive(const LiveRigOptions &options, QString *error)
 void Engine::stopStreaming()
 {
     stopThread();
+    m_runKept = false;
     stopRecording();
     if (m_running.exchange(false))
         emit runningChanged(false);
@@ -657,7 +660,9 @@ void Engine::listenLoop()
         // One batch a turn (LiveRig::poll), so a flood cannot keep the set-up locked.
         std::lock_guard<std::mutex> lock(m_setupMutex);
         m_rig->poll(process, !m_running.load());
-        if (m_rig->endIfSilent(m_sink)) {
+        // The rig behind a replay keeps its silence for later: an audition or the replay
+        // owns the devices until the replay closes.
+        if (!m_runKept.load() && m_rig->endIfSilent(m_sink)) {
             silenceDevices(m_outputs);
             m_devices->stopAll();
         }

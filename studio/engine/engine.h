@@ -306,6 +306,8 @@ private:
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_running{false};
     std::atomic<bool> m_driving{false};
+    /** A run waits behind a replay: a rig's silence leaves the devices alone until it closes. */
+    std::atomic<bool> m_runKept{false};
     std::atomic<int> m_speedEpoch{0}; ///< bumped on each speed change: the pacing restarts
     int m_generation = 0;             ///< bumped on each load: late metrics are dropped
     double m_nextMetrics = 0.0;       ///< pipeline thread: when metrics go out next

@@ -8,6 +8,7 @@
 #include "engine.h"
 #include "routergraph.h"
 #include "sessionreader.h"
+#include "virtualtransport.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -34,6 +35,7 @@ private slots:
     void portInUseKeepsTheRun();
     void resetAndRouterSwapKeepListening();
     void silentSenderEndsMessagesAndStopsBands();
+    void silenceWaitsBehindAReplay();
 };
 
 namespace {
@@ -483,6 +485,43 @@ void TestLiveRig::silentSenderEndsMessagesAndStopsBands()
         for (int c = 0; c < last.channelCount; ++c)
             QCOMPARE(last.values[size_t(c)], 0.0);
     }
+}
+
+void TestLiveRig::silenceWaitsBehindAReplay()
+{
+    // The rig's own session, to replay in front of it.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("rig.db");
+    Engine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort("C3", UdpFrameSource::DefaultSilence), &error),
+             qPrintable(error));
+    engine.run();
+    QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+    Sender sender(engine);
+    QVERIFY(sender.sendBatches(traceLines(100), 4));
+    QVERIFY(waitForFrames(engine, 100));
+    engine.stopRecording();
+    const auto stops = [&engine] {
+        int stops = 0;
+        for (const QString &name : engine.devices().boundNames())
+            stops +=
+                dynamic_cast<VirtualTransport &>(*engine.devices().transport(name)).stopCount();
+        return stops;
+    };
+    QTRY_VERIFY(stops() > 0); // the sender's first silence stopped the bands
+
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    const int before = stops();
+    // The sender speaks to the paused rig and falls silent while the replay shows: the
+    // devices are the replay's (and an audition's), the rig's silence leaves them alone.
+    QVERIFY(sender.sendBatches(traceLines(100), 4));
+    QVERIFY(waitForFrames(engine, 200));
+    QTest::qWait(int(4000 * UdpFrameSource::DefaultSilence));
+    QCOMPARE(stops(), before);
+    // Closed, the rig acts on the silence it kept.
+    QVERIFY2(engine.closeReplay(&error), qPrintable(error));
+    QTRY_VERIFY(stops() > before);
 }
 
 QTEST_MAIN(TestLiveRig)
