@@ -43,6 +43,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QSettings>
+#include <QStandardItemModel>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -61,6 +62,9 @@ constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** The scene picker's entry for a live rig (not a scene file or name). */
 const QString LiveRigEntry = QStringLiteral("semhap:live-rig");
+
+/** Marks a router picker entry that names what a replay shows, not a router to load. */
+constexpr int ShownByReplayRole = Qt::UserRole + 1;
 
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
@@ -875,9 +879,24 @@ void MainWindow::syncPickers()
             index = picker->count() - 1;
         }
         picker->setCurrentIndex(index);
+        return index;
     };
     sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
-    sync(m_routerPicker, m_engine.routerSource());
+    // A router only a replay shows (an untitled re-routing graph, a recorded file) is named
+    // while it shows and cannot be picked: the picker offers only what it can load.
+    const QString router = m_engine.routerSource();
+    for (int i = m_routerPicker->count(); i-- > 0;) {
+        if (m_routerPicker->itemData(i, ShownByReplayRole).toBool() &&
+            (!m_engine.isReplaying() || m_routerPicker->itemData(i).toString() != router))
+            m_routerPicker->removeItem(i);
+    }
+    const int count = m_routerPicker->count();
+    const int current = sync(m_routerPicker, router);
+    if (m_engine.isReplaying() && m_routerPicker->count() > count) {
+        m_routerPicker->setItemData(current, true, ShownByReplayRole);
+        auto *entries = qobject_cast<QStandardItemModel *>(m_routerPicker->model());
+        entries->item(current)->setEnabled(false);
+    }
     // An edit runs (or a replay shows it) under the name it started from: say so (`C3*`).
     const bool edited = m_engine.isRouterEdited();
     const QStringList presets = RouterPresets::names();

@@ -21,6 +21,7 @@
 #include "workspace.h"
 #include "world.h"
 
+#include <QAbstractItemView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -34,6 +35,7 @@
 #include <QSpinBox>
 #include <QSqlDatabase>
 #include <QSqlQuery>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -62,6 +64,7 @@ private slots:
     void closingAReplayBringsTheRunBack();
     void replayNamesAnEditedRouter();
     void recordingMidGraspShowsTheGraspFromItsStart();
+    void untitledRerouteLeavesNoPickerEntry();
     void cleanupTestCase();
 
 private:
@@ -636,6 +639,57 @@ void TestStudioSessions::replayNamesAnEditedRouter()
     QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
     QCOMPARE(window.routerPicker()->currentText(), QString("C1*"));
     QCOMPARE(window.engine().routerGraph().toJson(), running);
+}
+
+void TestStudioSessions::untitledRerouteLeavesNoPickerEntry()
+{
+    // Re-routed through a graph built in the editor (no file): the picker names it while
+    // the replay shows it, offers it to no one, and forgets it when the replay stops
+    // showing it. Before, "untitled" stayed in the picker, and picking it failed to load.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    QComboBox *picker = window.routerPicker();
+    QStringList entries;
+    for (int i = 0; i < picker->count(); ++i)
+        entries << picker->itemText(i);
+    const QString path = recordWithKeys(window, 0.5);
+    QVERIFY(!path.isEmpty());
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+
+    RouterEditor *editor = window.routerEditor();
+    QString error;
+    QVERIFY(editor->newFromPreset(QString(), &error)); // Router → New: "untitled"
+    RouterGraph c1;
+    LoadError loadError;
+    QVERIFY(RouterPresets::preset("C1", &c1, &loadError));
+    c1.name = editor->graph().name;
+    c1.file.clear();
+    editor->setGraph(c1);
+    for (int round = 0; round < 2; ++round) {
+        QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+        QCOMPARE(picker->currentText(), QString("untitled"));
+        const auto *model = qobject_cast<QStandardItemModel *>(picker->model());
+        QVERIFY(!model->item(picker->currentIndex())->isEnabled());
+        const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+        if (round == 0 && !shots.isEmpty()) {
+            picker->showPopup();
+            window.grab().save(shots + "/replay-untitled-1280x800.png");
+            picker->view()->window()->grab().save(shots + "/replay-untitled-picker.png");
+            picker->hidePopup();
+        }
+        // Back to the recorded router, then (second round) out of the replay.
+        QTest::mouseClick(round == 0 ? window.replayBar()->recordedButton()
+                                     : window.replayBar()->closeButton(),
+                          Qt::LeftButton);
+        QCOMPARE(picker->findText("untitled"), -1);
+    }
+    QVERIFY(!window.engine().isReplaying());
+    QStringList after;
+    for (int i = 0; i < picker->count(); ++i)
+        after << picker->itemText(i);
+    QCOMPARE(after, entries);
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
