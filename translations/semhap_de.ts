@@ -2123,6 +2123,14 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>Rename pattern</source>
         <translation>Muster umbenennen</translation>
     </message>
+    <message>
+        <source>Applied: the replay was re-routed through this router.</source>
+        <translation>Angewendet: Die Wiedergabe wurde über diesen Router neu geroutet.</translation>
+    </message>
+    <message>
+        <source>Applied: the run waiting behind the replay uses this router.</source>
+        <translation>Angewendet: Der Lauf, der hinter der Wiedergabe wartet, verwendet diesen Router.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>

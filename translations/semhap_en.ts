@@ -2120,6 +2120,14 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>Rename pattern</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Applied: the replay was re-routed through this router.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied: the run waiting behind the replay uses this router.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>

@@ -789,6 +789,7 @@ void MainWindow::updateMode()
     const bool replaying = m_engine.isReplaying();
     const bool simulating = m_engine.source() && m_engine.source()->isDrivable();
     m_replayToolBar->setVisible(replaying);
+    m_routerEditor->setReplaying(replaying); // Apply re-routes a replay
     for (QAction *action : {m_runAction, m_recordAction})
         action->setEnabled(!replaying);
     // A live rig keeps its own pace and drives its own grippers.

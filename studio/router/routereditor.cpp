@@ -680,9 +680,34 @@ bool RouterEditor::apply()
         showStatus(tr("Not applied: %1").arg(error), true);
         return false;
     }
-    showStatus(tr("Applied: the running session uses this router now."), false);
+    showApplied(m_replaying ? Applied::Replay : Applied::Run);
     emit applied();
     return true;
+}
+
+void RouterEditor::setReplaying(bool replaying)
+{
+    if (replaying == m_replaying)
+        return;
+    m_replaying = replaying;
+    if (m_applied == Applied::Replay && !replaying) {
+        // The re-routing closed with the replay; the run kept its router.
+        m_status->clear();
+        m_applied = Applied::None;
+    } else if (m_applied == Applied::Run) {
+        showApplied(Applied::Run); // the run waits behind the replay, or runs again
+    }
+}
+
+void RouterEditor::showApplied(Applied to)
+{
+    if (to == Applied::Replay)
+        showStatus(tr("Applied: the replay was re-routed through this router."), false);
+    else if (m_replaying)
+        showStatus(tr("Applied: the run waiting behind the replay uses this router."), false);
+    else
+        showStatus(tr("Applied: the running session uses this router now."), false);
+    m_applied = to;
 }
 
 void RouterEditor::setAutoApply(bool on)
@@ -730,6 +755,7 @@ void RouterEditor::onHistoryUpdated()
 
 void RouterEditor::showStatus(const QString &text, bool warning)
 {
+    m_applied = Applied::None;
     m_status->setText(text);
     m_status->setStyleSheet(
         warning ? QStringLiteral("QLabel { color: %1; }").arg(colors::css(colors::ErrorDark))

@@ -99,6 +99,11 @@ public:
     bool apply();
     /** Applies every edit that compiles, shortly after it is made. */
     void setAutoApply(bool on);
+    /**
+     * Whether a session replay is shown: Apply re-routes it, and what the status line says
+     * Apply did names the replay or the run waiting behind it.
+     */
+    void setReplaying(bool replaying);
     /** Shows the live activity of the session in `history` (null: none). */
     void setHistory(RunHistory *history);
 
@@ -133,6 +138,14 @@ private:
     static QString absentText(const ParamSpec &spec);
     void commitText(const QString &id, const QString &key, const QString &text);
     void showStatus(const QString &text, bool warning);
+    /** Says what Apply did, the run's or the replay's router (`to`), as is true now. */
+    enum class Applied
+    {
+        None,
+        Run,
+        Replay
+    };
+    void showApplied(Applied to);
     void onGraphChanged();
     void onHistoryUpdated();
     void exportDialog(bool selfContained);
@@ -150,6 +163,9 @@ private:
     QTimer *m_validateTimer = nullptr;
 
     ApplyFunction m_apply;
+    /** What the status line says Apply went to; None once it says anything else. */
+    Applied m_applied = Applied::None;
+    bool m_replaying = false;
     RunHistory *m_history = nullptr;
     qint64 m_nextActivity = 0;
     QStringList m_errors;

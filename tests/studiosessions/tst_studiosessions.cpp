@@ -65,6 +65,7 @@ private slots:
     void replayNamesAnEditedRouter();
     void recordingMidGraspShowsTheGraspFromItsStart();
     void untitledRerouteLeavesNoPickerEntry();
+    void routerStatusTellsTheReplayFromTheRun();
     void cleanupTestCase();
 
 private:
@@ -690,6 +691,43 @@ void TestStudioSessions::untitledRerouteLeavesNoPickerEntry()
     for (int i = 0; i < picker->count(); ++i)
         after << picker->itemText(i);
     QCOMPARE(after, entries);
+}
+
+void TestStudioSessions::routerStatusTellsTheReplayFromTheRun()
+{
+    // The router editor's line after Apply said "the running session uses this router now"
+    // all through a replay, where nothing runs and Apply re-routes the replay instead.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    RouterEditor *editor = window.routerEditor();
+    QWidget *apply = editor->findChild<QWidget *>("applyButton");
+    const QLabel *status = editor->statusLabel();
+    editor->setParam("right.force", "break", 100.0);
+    QTest::mouseClick(apply, Qt::LeftButton);
+    QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
+    const QString path = recordWithKeys(window, 0.5);
+    QVERIFY(!path.isEmpty());
+
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+    QCOMPARE(status->text(), QString("Applied: the run waiting behind the replay uses this "
+                                     "router."));
+    QTest::mouseClick(apply, Qt::LeftButton);
+    QVERIFY(window.engine().replay().isRerouted());
+    QCOMPARE(status->text(), QString("Applied: the replay was re-routed through this router."));
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(shots + "/replay-router-applied-1280x800.png");
+    // Closed, the re-routing is gone with the replay: the line says nothing of it.
+    QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
+    QVERIFY(!window.engine().isReplaying());
+    QCOMPARE(status->text(), QString());
+    // Applied to the run before the replay, it is the run's again after.
+    QTest::mouseClick(apply, Qt::LeftButton);
+    openSessionWithKeys(window, path);
+    QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
+    QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
