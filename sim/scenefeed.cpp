@@ -14,6 +14,8 @@ namespace {
 constexpr float ConfirmColour[3] = {0.0f, 0.447f, 0.698f};
 constexpr float WarnColour[3] = {0.902f, 0.624f, 0.0f};
 constexpr int MaxGeoms = 4000;
+// How close to a point inSight() looks (m): what touches it there does not hide it.
+constexpr double Touching = 0.005;
 
 } // namespace
 
@@ -30,6 +32,14 @@ SceneFeed::SceneFeed(const World &world) : d(std::make_unique<Private>())
         for (int body = 0; body < m->nbody; ++body) {
             if (m->body_rootid[body] == root)
                 d->gripperBodies[size_t(g)].push_back(body);
+        }
+    }
+    d->geomHand.assign(size_t(m->ngeom), -1);
+    for (int geom = 0; geom < m->ngeom; ++geom) {
+        for (size_t g = 0; g < 2; ++g) {
+            const auto &bodies = d->gripperBodies[g];
+            if (std::find(bodies.begin(), bodies.end(), m->geom_bodyid[geom]) != bodies.end())
+                d->geomHand[size_t(geom)] = int(g);
         }
     }
 }
@@ -61,6 +71,10 @@ void SceneFeed::capture(const World &world, const SceneOverlay &overlay)
     scene.ngeom = 0;
     mjv_addGeoms(m, data, &d->option, nullptr, mjCAT_ALL, &scene);
     mjv_makeLights(m, data, &scene);
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        d->hands[size_t(m_back)][size_t(g)] =
+            world.hasGripper(g) ? std::optional<Pose>(world.gripperPose(g)) : std::nullopt;
+    }
 
     // The overlay: tint the gripper's geoms; a warning shows over a confirmation.
     const std::array<std::array<double, 2>, 2> levels{
@@ -92,6 +106,44 @@ bool SceneFeed::takeLatest()
         return false;
     m_front = m_middle.exchange(m_front, std::memory_order_acq_rel) & ~NewBit;
     m_hasPicture = true;
+    return true;
+}
+
+std::optional<Pose> SceneFeed::handPose(Gripper hand) const
+{
+    return m_hasPicture ? d->hands[size_t(m_front)][size_t(hand)] : std::nullopt;
+}
+
+bool SceneFeed::inSight(const std::array<double, 3> &eye, const std::array<double, 3> &point,
+                        Gripper hand) const
+{
+    if (!m_hasPicture)
+        return true;
+    const mjvScene &scene = d->scenes[size_t(m_front)];
+    const mjtNum from[3] = {eye[0], eye[1], eye[2]};
+    const mjtNum way[3] = {point[0] - eye[0], point[1] - eye[1], point[2] - eye[2]};
+    // What the point touches (a pad on the floor) does not hide it: only what stands
+    // further than Touching from it, on the way to the eye.
+    const mjtNum length = mju_norm3(way);
+    const mjtNum reach = length > Touching ? 1.0 - Touching / length : 0.0;
+    for (int i = 0; i < scene.ngeom; ++i) {
+        const mjvGeom &geom = scene.geoms[i];
+        // Markers, sites and see-through geoms hide nothing.
+        if (geom.objtype != mjOBJ_GEOM || geom.rgba[3] < 0.5f)
+            continue;
+        const int owner = d->geomHand[size_t(geom.objid)];
+        const bool otherHand = owner >= 0 && owner != int(hand);
+        if (geom.category != mjCAT_STATIC && !otherHand)
+            continue;
+        mjtNum pos[3], mat[9], size[3];
+        std::copy_n(geom.pos, 3, pos);
+        std::copy_n(geom.mat, 9, mat);
+        std::copy_n(geom.size, 3, size);
+        // The distance comes in lengths of `way`.
+        const mjtNum hit = mju_rayGeom(pos, mat, size, from, way, geom.type);
+        if (hit >= 0 && hit < reach)
+            return false;
+    }
     return true;
 }
 

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "contactframe.h"
+#include "pose.h"
+
+#include <array>
 #include <atomic>
 #include <memory>
+#include <optional>
 
 namespace semhap {
 
@@ -47,6 +52,18 @@ public:
     bool takeLatest();
     /** Whether anything was captured yet. Renderer. */
     bool hasPicture() const { return m_hasPicture; }
+    /**
+     * Where `hand`'s wrist is in the picture takeLatest() made the newest (none: the scene
+     * has no such hand, or nothing was captured yet). Renderer.
+     */
+    std::optional<Pose> handPose(Gripper hand) const;
+    /**
+     * Whether the straight line from `eye` to `point` is clear in that picture: no opaque
+     * fixed geom (a wall, a partition) and none of the other hand's stands on it; `hand`'s
+     * own and loose bodies (cubes) do not count, nor what touches the point. Renderer.
+     */
+    bool inSight(const std::array<double, 3> &eye, const std::array<double, 3> &point,
+                 Gripper hand) const;
 
 private:
     friend class SceneRenderer;

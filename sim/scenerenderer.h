@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "contactframe.h"
+
 #include <array>
 #include <memory>
 #include <optional>
@@ -21,12 +23,15 @@ struct OrbitCamera
 };
 
 /**
- * Where a driven wrist is asked to go, drawn over the scene: a translucent ghost at the
- * target, and a drop line to the surface straight below it.
+ * Where a driven wrist is asked to go, drawn over the scene: a translucent ghost of the palm
+ * at the target, a little larger than the palm so that it shows while the hand is there, and
+ * a drop line to the surface straight below it.
  */
 struct WristMarker
 {
+    Gripper hand = Gripper::Right;
     std::array<double, 3> target{};
+    std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0}; ///< the target's orientation (w, x, y, z)
     std::optional<double> surface; ///< the height the drop line reaches (none: no line)
     bool active = false;           ///< the hand the user drives now (the other is fainter)
     bool guarded = false;          ///< resting on something: the target stopped descending
@@ -69,6 +74,8 @@ private:
     struct Private;
     std::unique_ptr<Private> d;
     const World &m_world;
+    /** Per hand: the half sizes of its palm's box (the ghost's shape), if it has one. */
+    std::array<std::optional<std::array<double, 3>>, 2> m_palms;
     OrbitCamera m_camera;
     std::vector<WristMarker> m_markers;
 };

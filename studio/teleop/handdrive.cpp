@@ -326,7 +326,7 @@ void HandDrive::endDrive()
 
 void HandDrive::startDrive()
 {
-    if (m_driving)
+    if (m_driving || !m_world)
         return;
     m_driving = true;
     // Start driving where the hands are now, so nothing jumps.
@@ -427,6 +427,15 @@ bool HandDrive::move(const DriveRates &rates, double seconds)
     return true;
 }
 
+void HandDrive::setViewAzimuth(double degrees)
+{
+    m_nextViewAzimuth = degrees;
+    // Turning the keys under a held one reversed the hand: a Follow view that went round
+    // to see it sent it back, and round again.
+    if (heldRates().isIdle())
+        m_viewAzimuth = degrees;
+}
+
 std::array<double, 2> HandDrive::awayDirection() const
 {
     // Along the table axes nearest the view: a slanted camera still moves the hand straight.
@@ -468,7 +477,10 @@ void HandDrive::send(Gripper hand)
 
 void HandDrive::updateTimer()
 {
-    bool busy = !heldRates().isIdle();
+    const bool moving = !heldRates().isIdle();
+    if (!moving)
+        m_viewAzimuth = m_nextViewAzimuth;
+    bool busy = moving;
     for (size_t hand = 0; hand < 2; ++hand)
         busy = busy || (m_driving && m_hands[hand] && m_hands[hand]->grip != gripGoal(hand));
     if (busy && !m_timer.isActive()) {

@@ -162,6 +162,12 @@ public:
     void advance(double seconds);
 
     /**
+     * Takes the grippers where the hands are now (the start source says where), as the first
+     * input does, and sends each hand's command: the wrist targets are known, and shown, at
+     * once (Drive). Emits driveStarted(); nothing while already driving.
+     */
+    void startDrive();
+    /**
      * Hands control back to the scripted operator: the next input starts driving again from
      * wherever the world's targets are then, and emits driveStarted() again.
      */
@@ -181,9 +187,11 @@ public:
 
     /**
      * The camera's azimuth (degrees, MuJoCo's): W moves away from the viewer along the table
-     * axis nearest the view, D moves to the viewer's right.
+     * axis nearest the view, D moves to the viewer's right. While the hand moves, its
+     * directions stay as they were: a view that turns then (Follow going round to see the
+     * hand, an orbit) takes effect once every key and stick is let go.
      */
-    void setViewAzimuth(double degrees) { m_viewAzimuth = degrees; }
+    void setViewAzimuth(double degrees);
     /** The table axis W moves along, as a unit (x, y): the one nearest the view. */
     std::array<double, 2> awayDirection() const;
     /** Where the wrist may go: the task's regions with some room around them. */
@@ -196,7 +204,6 @@ signals:
     void changed();
 
 private:
-    void startDrive();
     void tick();
     /** The keys' rates and every device's, added up, each in [-1, 1]. */
     DriveRates heldRates() const;
@@ -224,6 +231,7 @@ private:
     Gripper m_active = Gripper::Right;
     Region m_workspace;
     double m_viewAzimuth = 90.0;
+    double m_nextViewAzimuth = 90.0; ///< the view's, taken over when the hand stops
     bool m_slow = false;
     bool m_driving = false;
     QTimer m_timer;

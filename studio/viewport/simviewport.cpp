@@ -38,6 +38,8 @@ constexpr double PanRange = 1.5;
 constexpr double FieldOfView = 45.0;
 // The wrist is this far above the pads' centre (m): Follow looks halfway.
 constexpr double FingerReach = 0.06;
+// How much higher (degrees) Follow looks from when neither side of the jaws sees the hand.
+constexpr double FollowRaises[] = {0.0, 20.0, 40.0};
 
 const QColor &Background = colors::SceneGround;
 
@@ -46,14 +48,28 @@ double clampAngle(double degrees)
     return std::remainder(degrees, 360.0);
 }
 
+/** Where `camera` looks from, as MuJoCo's free camera places it. */
+std::array<double, 3> eyeOf(const OrbitCamera &camera)
+{
+    const double az = camera.azimuth * Pi / 180;
+    const double el = camera.elevation * Pi / 180;
+    const std::array<double, 3> forward{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                                        std::sin(el)};
+    std::array<double, 3> eye{};
+    for (size_t axis = 0; axis < 3; ++axis)
+        eye[axis] = camera.lookAt[axis] - camera.distance * forward[axis];
+    return eye;
+}
+
 /**
  * A bold heading over lines of text in a rounded dark box, readable over the floor and over
- * the black sky alike, placed in `area` by `alignment` (left and top: its corner; centred
- * and bottom: along its bottom edge). Lines wider than the area wrap.
+ * the black sky alike, placed in `area` by `alignment` (left or right and top: its corner;
+ * centred and bottom: along its bottom edge). Lines wider than the area wrap. Draws only
+ * when `draw` is set; where the box is (or would be).
  */
-void drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
-                 const QString &title, const QStringList &lines, const QColor &rim,
-                 qreal rimWidth = 1.0)
+QRectF drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
+                   const QString &title, const QStringList &lines, const QColor &rim,
+                   qreal rimWidth = 1.0, bool draw = true)
 {
     const QFont font = painter.font();
     QFont bold = font;
@@ -62,7 +78,7 @@ void drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
     const QFontMetrics metrics(font);
     const int pad = metrics.height() / 2;
     const Qt::Alignment horizontal = alignment & Qt::AlignHorizontal_Mask;
-    const int flags = int(horizontal) | Qt::TextWordWrap;
+    const int flags = int(horizontal & ~Qt::AlignRight) | Qt::TextWordWrap;
     const int widest = std::max(1, int(area.width()) - 2 * pad);
     const QRect room(0, 0, widest, 1 << 20);
     QRect text = boldMetrics.boundingRect(room, flags, title);
@@ -77,8 +93,12 @@ void drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
     QRectF box(area.left(), area.top(), text.width() + 2 * pad, height + pad * 3 / 2);
     if (horizontal & Qt::AlignHCenter)
         box.moveLeft(area.center().x() - box.width() / 2);
+    if (horizontal & Qt::AlignRight)
+        box.moveRight(area.right());
     if (alignment & Qt::AlignBottom)
         box.moveBottom(area.bottom());
+    if (!draw)
+        return box;
 
     QPainterPath path;
     path.addRoundedRect(box, pad / 2.0, pad / 2.0);
@@ -86,16 +106,17 @@ void drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
     painter.setPen(QPen(rim, rimWidth));
     painter.drawPath(path);
     qreal y = box.top() + pad * 3 / 4;
-    const auto draw = [&](const QFont &f, const QColor &colour, qreal h, const QString &t) {
+    const auto line = [&](const QFont &f, const QColor &colour, qreal h, const QString &t) {
         painter.setFont(f);
         painter.setPen(colour);
         painter.drawText(QRectF(box.left() + pad, y, text.width(), h), flags, t);
         y += h;
     };
-    draw(bold, Qt::white, boldMetrics.boundingRect(room, flags, title).height(), title);
+    line(bold, Qt::white, boldMetrics.boundingRect(room, flags, title).height(), title);
     for (int i = 0; i < int(lines.size()); ++i)
-        draw(font, colors::OverlayText, lineRects[size_t(i)].height(), lines[i]);
+        line(font, colors::OverlayText, lineRects[size_t(i)].height(), lines[i]);
     painter.setFont(font);
+    return box;
 }
 
 } // namespace
@@ -208,8 +229,14 @@ void SimViewport::setDriving(bool driving)
     if (m_driving == driving)
         return;
     m_driving = driving;
-    if (!driving && m_handDrive)
-        m_handDrive->endDrive(); // driving again starts from where the script left off
+    if (m_handDrive) {
+        // Driving starts from where the script left the hands, and their ghosts show there
+        // at once, before any drive input.
+        if (driving)
+            m_handDrive->startDrive();
+        else
+            m_handDrive->endDrive();
+    }
     update();
 }
 
@@ -228,13 +255,16 @@ void SimViewport::setCameraPreset(CameraPreset preset)
     m_preset = preset;
     m_presetActions[size_t(preset)]->setChecked(true);
     OrbitCamera camera = m_world ? presetCamera(*m_world, preset) : OrbitCamera();
-    const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
-    if (preset == CameraPreset::Follow && m_handDrive && m_handDrive->command(hand)) {
-        // Across this hand's jaws: its fingers close along its own y axis.
-        const auto &q = m_handDrive->command(hand)->target.quat;
-        const double yaw =
-            std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
-        camera.azimuth = yaw * 180 / Pi;
+    if (preset == CameraPreset::Follow) {
+        if (const std::optional<Pose> hand = activeHandPose()) {
+            // Across this hand's jaws: its fingers close along its own y axis.
+            const auto &q = hand->quat;
+            const double yaw =
+                std::atan2(2 * (q[0] * q[3] + q[1] * q[2]), 1 - 2 * (q[2] * q[2] + q[3] * q[3]));
+            camera.azimuth = yaw * 180 / Pi;
+        }
+        m_followAim = camera;
+        m_followFlipped = false;
     }
     changeCamera(camera);
     if (preset == CameraPreset::Follow)
@@ -246,15 +276,60 @@ void SimViewport::nextCameraPreset()
     setCameraPreset(CameraPreset((int(m_preset) + 1) % CameraPresetCount));
 }
 
+std::optional<Pose> SimViewport::activeHandPose() const
+{
+    const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
+    if (m_feed && m_feed->handPose(hand))
+        return m_feed->handPose(hand);
+    if (m_handDrive && m_handDrive->command(hand))
+        return m_handDrive->command(hand)->target;
+    return std::nullopt;
+}
+
 void SimViewport::follow()
 {
-    if (!m_handDrive || !m_handDrive->command(m_handDrive->activeHand()))
+    const std::optional<Pose> hand = activeHandPose();
+    if (!hand)
         return;
-    const Pose &target = m_handDrive->command(m_handDrive->activeHand())->target;
+    // The pads: FingerReach along the hand's own -z, wherever it leans.
+    const auto &q = hand->quat;
+    const std::array<double, 3> down{-2 * (q[1] * q[3] + q[0] * q[2]),
+                                     -2 * (q[2] * q[3] - q[0] * q[1]),
+                                     -(1 - 2 * (q[1] * q[1] + q[2] * q[2]))};
+    std::array<double, 3> pads{};
     OrbitCamera camera = m_camera;
-    // Between the wrist and the pads, so the fingers and what they hold are in the middle.
-    camera.lookAt = {target.pos[0], target.pos[1], target.pos[2] - FingerReach / 2};
-    if (camera.lookAt != m_camera.lookAt)
+    for (size_t axis = 0; axis < 3; ++axis) {
+        pads[axis] = hand->pos[axis] + FingerReach * down[axis];
+        // Between the wrist and the pads, so the fingers and what they hold are in the middle.
+        camera.lookAt[axis] = (hand->pos[axis] + pads[axis]) / 2;
+    }
+    // The view asked for, else the other side of the jaws (a wall or the partition between),
+    // then each from higher up; the side that saw the hand last is tried first, so the view
+    // does not swap back and forth.
+    const Gripper active = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
+    bool found = false;
+    for (double raise : FollowRaises) {
+        for (bool flipped : {m_followFlipped, !m_followFlipped}) {
+            camera.azimuth = clampAngle(m_followAim.azimuth + (flipped ? 180.0 : 0.0));
+            camera.elevation = std::max(Lowest, m_followAim.elevation - raise);
+            const std::array<double, 3> eye = eyeOf(camera);
+            if (!m_feed ||
+                (m_feed->inSight(eye, hand->pos, active) && m_feed->inSight(eye, pads, active))) {
+                m_followFlipped = flipped;
+                found = true;
+                break;
+            }
+        }
+        if (found)
+            break;
+    }
+    if (!found) {
+        // Hidden from everywhere: the view asked for.
+        camera.azimuth = clampAngle(m_followAim.azimuth + (m_followFlipped ? 180.0 : 0.0));
+        camera.elevation = m_followAim.elevation;
+    }
+    if (camera.lookAt != m_camera.lookAt || camera.azimuth != m_camera.azimuth ||
+        camera.elevation != m_camera.elevation)
         changeCamera(camera);
 }
 
@@ -468,8 +543,64 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     }
 
     const int pad = QFontMetrics(font).height() / 2;
-    drawTextBox(painter, QRectF(rect()).adjusted(pad, pad, -pad, -pad),
-                Qt::AlignLeft | Qt::AlignTop, title, lines, colors::veil(90));
+    const QRectF area = QRectF(rect()).adjusted(pad, pad, -pad, -pad);
+    // In the first corner where it hides no driven hand's ghost (a high wrist in a small
+    // window was under the box), else the first.
+    const std::vector<QRectF> hands = ghostAreas();
+    const Qt::Alignment corners[] = {Qt::AlignLeft | Qt::AlignTop, Qt::AlignRight | Qt::AlignTop,
+                                     Qt::AlignLeft | Qt::AlignBottom,
+                                     Qt::AlignRight | Qt::AlignBottom};
+    Qt::Alignment corner = corners[0];
+    for (Qt::Alignment candidate : corners) {
+        const QRectF box =
+            drawTextBox(painter, area, candidate, title, lines, QColor(), 1.0, false);
+        if (std::none_of(hands.begin(), hands.end(),
+                         [&box](const QRectF &hand) { return hand.intersects(box); })) {
+            corner = candidate;
+            break;
+        }
+    }
+    drawTextBox(painter, area, corner, title, lines, colors::veil(90));
+}
+
+std::optional<QPointF> SimViewport::project(const std::array<double, 3> &point) const
+{
+    const double az = m_camera.azimuth * Pi / 180;
+    const double el = m_camera.elevation * Pi / 180;
+    const std::array<double, 3> eye = eyeOf(m_camera);
+    const std::array<double, 3> forward{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                                        std::sin(el)};
+    const std::array<double, 3> right{std::sin(az), -std::cos(az), 0.0};
+    const std::array<double, 3> up{-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
+                                   std::cos(el)};
+    double depth = 0, across = 0, high = 0;
+    for (size_t axis = 0; axis < 3; ++axis) {
+        const double d = point[axis] - eye[axis];
+        depth += d * forward[axis];
+        across += d * right[axis];
+        high += d * up[axis];
+    }
+    if (depth <= 0)
+        return std::nullopt;
+    const double half = std::tan(FieldOfView / 2 * Pi / 180) * depth;
+    const double aspect = double(width()) / std::max(1, height());
+    return QPointF((1 + across / (half * aspect)) / 2 * width(), (1 - high / half) / 2 * height());
+}
+
+std::vector<QRectF> SimViewport::ghostAreas() const
+{
+    std::vector<QRectF> areas;
+    const int margin = fontMetrics().height();
+    for (const WristMarker &marker : markers()) {
+        const std::array<double, 3> pads{marker.target[0], marker.target[1],
+                                         marker.target[2] - FingerReach};
+        const std::optional<QPointF> wrist = project(marker.target);
+        const std::optional<QPointF> tips = project(pads);
+        if (wrist && tips)
+            areas.push_back(
+                QRectF(*wrist, *tips).normalized().adjusted(-margin, -margin, margin, margin));
+    }
+    return areas;
 }
 
 std::vector<WristMarker> SimViewport::markers() const
@@ -482,7 +613,10 @@ std::vector<WristMarker> SimViewport::markers() const
             continue;
         const DriveStatus status = m_handDrive->status(hand);
         WristMarker marker;
-        marker.target = status.driven ? status.target.pos : m_handDrive->command(hand)->target.pos;
+        marker.hand = hand;
+        const Pose &target = status.driven ? status.target : m_handDrive->command(hand)->target;
+        marker.target = target.pos;
+        marker.quat = target.quat;
         marker.surface = status.surface;
         marker.guarded = status.floor.has_value();
         marker.active = hand == m_handDrive->activeHand();
@@ -495,11 +629,12 @@ void SimViewport::frame()
 {
     if (!m_feed)
         return;
-    if (m_preset == CameraPreset::Follow)
-        follow();
     m_feed->request();
     // Redraw only when the simulation sent something new (a paused run costs nothing).
-    if (m_feed->takeLatest())
+    const bool fresh = m_feed->takeLatest();
+    if (m_preset == CameraPreset::Follow)
+        follow(); // where the hand is in the newest picture
+    if (fresh)
         update();
 }
 
@@ -543,6 +678,13 @@ void SimViewport::mouseMoveEvent(QMouseEvent *event)
                                        std::cos(el)};
         for (size_t axis = 0; axis < 3; ++axis)
             camera.lookAt[axis] += scale * (-dx * right[axis] + dy * up[axis]);
+    } else if (m_preset == CameraPreset::Follow) {
+        // Orbiting turns the view Follow keeps; it still picks the side that sees the hand.
+        m_followAim.azimuth -= OrbitPerPixel * dx;
+        m_followAim.elevation =
+            std::clamp(m_followAim.elevation - OrbitPerPixel * dy, Lowest, Highest);
+        follow();
+        return;
     } else {
         camera.azimuth -= OrbitPerPixel * dx;
         camera.elevation -= OrbitPerPixel * dy;

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "pose.h"
 #include "scenerenderer.h"
 
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QRectF>
 #include <QTimer>
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -80,8 +83,9 @@ public:
     /** Back to the scene's default view (also a double-click): across the jaws. */
     void resetCamera();
     /**
-     * One of the preset views (keys 1–4); Follow keeps the active hand's wrist target in
-     * the middle, looking across its jaws, until another view or a pan.
+     * One of the preset views (keys 1–4); Follow keeps the active hand in the middle, looking
+     * across its jaws, from whichever side and height sees it past the scene's walls and the
+     * other hand, until another view.
      */
     void setCameraPreset(CameraPreset preset);
     /** The next preset after the last one picked (a gamepad button). */
@@ -135,8 +139,14 @@ private:
     void drawNotice(QPainter &painter);
     /** The driven hands' ghosts and drop lines, from the drive and its status. */
     std::vector<WristMarker> markers() const;
-    /** Follow: the active hand's target in the middle, across its jaws. */
+    /** Where a world point shows in the widget (none: behind the camera). */
+    std::optional<QPointF> project(const std::array<double, 3> &point) const;
+    /** Where the driven hands' ghosts show, from the wrist down to the pads, with a margin. */
+    std::vector<QRectF> ghostAreas() const;
+    /** Follow: the active hand in the middle, across its jaws, in plain sight. */
     void follow();
+    /** Where the active hand is in the newest picture, else where it is commanded to be. */
+    std::optional<Pose> activeHandPose() const;
 
     const World *m_world = nullptr;
     QString m_placeholder;
@@ -152,6 +162,10 @@ private:
     QAction *m_showForcesAction;
     std::array<QAction *, CameraPresetCount> m_presetActions{};
     CameraPreset m_preset = CameraPreset::AcrossJaws;
+    /** Follow's view as picked (the preset, then orbiting): its azimuth and elevation. */
+    OrbitCamera m_followAim;
+    /** Follow looks from the other side of the jaws than m_followAim: that side saw the hand. */
+    bool m_followFlipped = false;
     QPoint m_lastMouse;
     bool m_panning = false;
     bool m_showForces = false;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QColor>
 #include <QImage>
 #include <QSet>
 #include <QString>
@@ -51,4 +52,17 @@ inline bool looksExposed(const QImage &image, QString *why)
     const double share = all > 0 ? double(burnt) / double(all) : 0.0;
     *why = QStringLiteral("%1 % of the pixels are burnt to white").arg(100.0 * share, 0, 'f', 2);
     return share <= 0.005;
+}
+
+/** How many pixels of `image` show a free wrist target's ghost (SceneRenderer's cyan). */
+inline int ghostPixels(const QImage &image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            count += c.blue() > 150 && c.green() > 120 && c.red() < c.green() - 40 ? 1 : 0;
+        }
+    }
+    return count;
 }

@@ -22,6 +22,7 @@ private slots:
     void init();
     void directionsFollowTheView_data();
     void directionsFollowTheView();
+    void directionsHoldWhileTheHandMoves();
     void workspaceHoldsTheWrist_data();
     void workspaceHoldsTheWrist();
     void shiftSlowsDown();
@@ -95,6 +96,27 @@ void TestHandDrive::directionsFollowTheView()
     const Pose right = heldFor(Qt::Key_D, 0.2);
     QVERIFY(std::abs((right.pos[0] - away.pos[0]) - y * 0.2 * 0.15) < 0.004);
     QVERIFY(std::abs((right.pos[1] - away.pos[1]) + x * 0.2 * 0.15) < 0.004);
+}
+
+void TestHandDrive::directionsHoldWhileTheHandMoves()
+{
+    // The view turns round while W is held (Follow went to the other side of the partition):
+    // the hand goes on the way it went until the key comes up, then W follows the new view.
+    m_handDrive->setViewAzimuth(0.0);
+    const Pose before = m_world->target(Gripper::Right);
+    m_handDrive->press(Qt::Key_W);
+    m_handDrive->advance(0.1);
+    m_handDrive->setViewAzimuth(180.0);
+    QCOMPARE(m_handDrive->awayDirection(), (std::array<double, 2>{1.0, 0.0}));
+    m_handDrive->advance(0.1);
+    m_handDrive->release(Qt::Key_W);
+    m_operator.act(*m_world);
+    const Pose held = m_world->target(Gripper::Right);
+    QVERIFY2(std::abs((held.pos[0] - before.pos[0]) - 0.2 * 0.15) < 0.004,
+             qPrintable(QString::number(held.pos[0] - before.pos[0])));
+    QCOMPARE(m_handDrive->awayDirection(), (std::array<double, 2>{-1.0, 0.0}));
+    const Pose back = heldFor(Qt::Key_W, 0.2);
+    QVERIFY(std::abs((back.pos[0] - held.pos[0]) + 0.2 * 0.15) < 0.004);
 }
 
 void TestHandDrive::workspaceHoldsTheWrist_data()

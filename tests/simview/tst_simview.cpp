@@ -40,6 +40,8 @@ class TestSimView : public QObject
 private slots:
     void initTestCase();
     void feedHandsOverTheNewestPicture();
+    void feedKnowsWhatHidesAHand_data();
+    void feedKnowsWhatHidesAHand();
     void rendersTheScene();
     void overlayTintsTheGripper_data();
     void overlayTintsTheGripper();
@@ -105,6 +107,51 @@ void TestSimView::feedHandsOverTheNewestPicture()
     QVERIFY(feed.hasPicture());
     feed.request();
     QVERIFY(feed.wantsCapture());
+}
+
+void TestSimView::feedKnowsWhatHidesAHand_data()
+{
+    // box_and_block: the partition stands at x = 0, 15 cm high; the right hand's wrist is
+    // at (-0.15, 0, 0.3) after the first steps, its palm around it.
+    QTest::addColumn<QVector<double>>("eye");
+    QTest::addColumn<QVector<double>>("point");
+    QTest::addColumn<bool>("clear");
+    QTest::newRow("through the partition")
+        << QVector<double>{-0.4, 0.0, 0.1} << QVector<double>{0.15, 0.0, 0.05} << false;
+    QTest::newRow("grazing the partition's top")
+        << QVector<double>{-0.4, 0.0, 0.4} << QVector<double>{0.15, 0.0, 0.05} << false;
+    QTest::newRow("from box B's side")
+        << QVector<double>{0.55, 0.0, 0.2} << QVector<double>{0.15, 0.0, 0.05} << true;
+    QTest::newRow("high over the partition")
+        << QVector<double>{-0.4, 0.0, 0.6} << QVector<double>{0.15, 0.0, 0.1} << true;
+    QTest::newRow("a cube on the way does not count")
+        << QVector<double>{-0.27, -0.06, 0.03} << QVector<double>{-0.1, -0.06, 0.03} << true;
+    QTest::newRow("what the point touches does not count")
+        << QVector<double>{0.15, 0.0, 0.4} << QVector<double>{0.15, 0.0, 0.002} << true;
+}
+
+void TestSimView::feedKnowsWhatHidesAHand()
+{
+    QFETCH(QVector<double>, eye);
+    QFETCH(QVector<double>, point);
+    QFETCH(bool, clear);
+    SceneFeed feed(*m_world);
+    QVERIFY(!feed.handPose(Gripper::Right)); // no picture yet
+    feed.capture(*m_world, {});
+    QVERIFY(feed.takeLatest());
+    const std::optional<Pose> wrist = feed.handPose(Gripper::Right);
+    QVERIFY(wrist);
+    QCOMPARE(wrist->pos, m_world->gripperPose(Gripper::Right).pos);
+    QVERIFY(!feed.handPose(Gripper::Left)); // the scene has one hand
+
+    const std::array<double, 3> from{eye[0], eye[1], eye[2]};
+    const std::array<double, 3> to{point[0], point[1], point[2]};
+    QCOMPARE(feed.inSight(from, to, Gripper::Right), clear);
+    // A hand hides nothing from itself, but from the other hand's view it is in the way.
+    const std::array<double, 3> above{wrist->pos[0], wrist->pos[1], wrist->pos[2] + 0.2};
+    const std::array<double, 3> below{wrist->pos[0], wrist->pos[1], wrist->pos[2] - 0.1};
+    QVERIFY(feed.inSight(above, below, Gripper::Right));
+    QVERIFY(!feed.inSight(above, below, Gripper::Left));
 }
 
 void TestSimView::rendersTheScene()

@@ -40,6 +40,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileDialog>
 #include <QGraphicsView>
@@ -48,6 +49,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMatrix4x4>
 #include <QMenu>
 #include <QProcess>
 #include <QScrollArea>
@@ -61,14 +63,18 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QtMath>
 #include <QToolBar>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
 #include <QUndoStack>
+#include <QVector3D>
+#include <QVector4D>
 
 #include <qcustomplot.h>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -205,6 +211,75 @@ void savePicture(QWidget *widget, const QString &name)
         qWarning("%s", qPrintable(error));
 }
 
+QVector3D vector(const std::array<double, 3> &point)
+{
+    return QVector3D(float(point[0]), float(point[1]), float(point[2]));
+}
+
+/** Where `camera` (MuJoCo's free camera: an orbit around its look-at point) looks from. */
+QVector3D eyeOf(const OrbitCamera &camera)
+{
+    const float az = float(qDegreesToRadians(camera.azimuth));
+    const float el = float(qDegreesToRadians(camera.elevation));
+    const QVector3D towards(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                            std::sin(el));
+    return vector(camera.lookAt) - float(camera.distance) * towards;
+}
+
+/**
+ * Where `point` shows in a picture of `size` taken through `camera` (the scenes' 45°
+ * vertical field of view, z up); none when it is behind the camera.
+ */
+std::optional<QPointF> projected(const OrbitCamera &camera, const std::array<double, 3> &point,
+                                 QSize size)
+{
+    QMatrix4x4 view;
+    view.perspective(45.0f, float(size.width()) / float(size.height()), 0.01f, 10.0f);
+    view.lookAt(eyeOf(camera), vector(camera.lookAt), QVector3D(0, 0, 1));
+    const QVector4D clip = view * QVector4D(vector(point), 1.0f);
+    if (clip.w() <= 0)
+        return std::nullopt;
+    return QPointF((1.0 + clip.x() / clip.w()) / 2 * size.width(),
+                   (1.0 - clip.y() / clip.w()) / 2 * size.height());
+}
+
+/**
+ * Holds the drive key that moves the active hand's wrist target along world `axis` towards
+ * `goal`, as a person would (which key depends on the view), until the target is there or
+ * stops (the guard, the workspace's edge); empty when it got there, else what happened.
+ */
+QString driveTo(SimViewport *viewport, HandDrive *drive, size_t axis, double goal)
+{
+    auto at = [drive, axis] { return drive->command(drive->activeHand())->target.pos[axis]; };
+    const double sign = goal > at() ? 1.0 : -1.0;
+    Qt::Key key = sign > 0 ? Qt::Key_R : Qt::Key_F;
+    if (axis < 2) {
+        const auto [x, y] = drive->awayDirection();
+        const double away = axis == 0 ? x : y;
+        const double right = axis == 0 ? y : -x;
+        key = away != 0 ? (away * sign > 0 ? Qt::Key_W : Qt::Key_S)
+                        : (right * sign > 0 ? Qt::Key_D : Qt::Key_A);
+    }
+    QTest::keyPress(viewport, key);
+    QElapsedTimer clock;
+    clock.start();
+    // Until there, or the guard holds the target on what is below.
+    while ((goal - at()) * sign > 0 && clock.elapsed() < 10000 &&
+           !(axis == 2 && drive->status(drive->activeHand()).floor))
+        QTest::qWait(10);
+    QTest::keyRelease(viewport, key);
+    if ((goal - at()) * sign <= 0)
+        return QString();
+    return QString("key %1 held %2 ms: the target is at %3 of %4, the view's azimuth %5, "
+                   "focus %6")
+        .arg(QKeySequence(key).toString())
+        .arg(clock.elapsed())
+        .arg(at())
+        .arg(goal)
+        .arg(viewport->camera().azimuth)
+        .arg(viewport->hasFocus());
+}
+
 } // namespace
 
 class TestStudio : public QObject
@@ -224,6 +299,10 @@ private slots:
     void auditionShowsInTheReadouts();
     void disarmedBandsReadZero();
     void aKeyInTheViewportTakesOver();
+    void driveShowsTheGhostAtOnce_data();
+    void driveShowsTheGhostAtOnce();
+    void followKeepsTheHandInView_data();
+    void followKeepsTheHandInView();
     void drivingPreferencesApply();
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
@@ -636,6 +715,193 @@ void TestStudio::disarmedBandsReadZero()
     QTest::mouseClick(window.findChild<QPushButton *>("armAll"), Qt::LeftButton);
     const double armed = window.engine().simTime();
     QTRY_VERIFY_WITH_TIMEOUT(shown(armed) > 0.1, 30000);
+}
+
+void TestStudio::driveShowsTheGhostAtOnce_data()
+{
+    addWindowRows();
+}
+
+void TestStudio::driveShowsTheGhostAtOnce()
+{
+    // Ctrl+T takes the grippers from the scripted operator: the wrist target's ghost shows at
+    // once, where the hand is, before any drive key and before any step; the run's next step
+    // finds the surface its drop line reaches. (Before, nothing showed until the first key:
+    // the drive had not started, and a ghost at the wrist hid inside the palm.)
+    StudioOptions o = options();
+    o.autoRun = false; // the hand where the scene starts it, in the view's near half
+    const std::unique_ptr<Studio> studio = startStudio(o);
+    MainWindow &window = *studio->window();
+    SimViewport *viewport = window.viewport();
+    auto *drive = window.findChild<HandDrive *>();
+    QTRY_VERIFY(viewport->renderedFrames() > 0);
+    const int scripted = ghostPixels(viewport->grabFramebuffer());
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_T, Qt::ControlModifier);
+    QVERIFY(window.engine().isDriving());
+    QTRY_VERIFY_WITH_TIMEOUT(ghostPixels(viewport->grabFramebuffer()) > scripted + 300, 1000);
+    qInfo("ghost pixels: %d scripted, %d right after Ctrl+T", scripted,
+          ghostPixels(viewport->grabFramebuffer()));
+    // The target is where the hand is: taking the grippers moved nothing.
+    const Pose wrist = window.engine().world()->gripperPose(Gripper::Right);
+    const Pose target = drive->command(Gripper::Right)->target;
+    for (size_t axis = 0; axis < 3; ++axis)
+        QVERIFY2(std::abs(wrist.pos[axis] - target.pos[axis]) < 0.01,
+                 qPrintable(QString("axis %1: wrist %2, target %3")
+                                .arg(axis)
+                                .arg(wrist.pos[axis])
+                                .arg(target.pos[axis])));
+
+    // Running, the operator has the target: its first step finds the surface below.
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(window.engine().isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(drive->status(Gripper::Right).surface.has_value(), 1000);
+    QTest::qWait(100);
+    savePicture(&window, "drive-ghost");
+}
+
+void TestStudio::followKeepsTheHandInView_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<int>("hand");
+    QTest::addColumn<bool>("drive");
+    QTest::addColumn<double>("x"); // where the target goes (driving) or must pass (scripted)
+    QTest::addColumn<double>("z");
+    const int left = int(Gripper::Left);
+    const int right = int(Gripper::Right);
+    // Box B is on the far side of the partition (x > 0) from the first view.
+    QTest::newRow("box_and_block, driven down into box B")
+        << "box_and_block" << right << true << 0.16 << 0.07;
+    QTest::newRow("box_and_block, scripted over box B")
+        << "box_and_block" << right << false << 0.08 << 0.2;
+    QTest::newRow("bimanual_sorting, right hand down to the cubes")
+        << "bimanual_sorting" << right << true << 0.2 << 0.1;
+    QTest::newRow("bimanual_sorting, left hand across to the right")
+        << "bimanual_sorting" << left << true << 0.05 << 0.12;
+}
+
+void TestStudio::followKeepsTheHandInView()
+{
+    // Key 4 follows the active hand wherever it goes: it stays in the picture, and not
+    // behind the partition (before, the view stayed where the hand had started while the
+    // scripted operator drove, and looked at box B through the partition from box A).
+    QFETCH(QString, scene);
+    QFETCH(int, hand);
+    QFETCH(bool, drive);
+    QFETCH(double, x);
+    QFETCH(double, z);
+    StudioOptions o = options();
+    o.run.scene = scene;
+    Workspace workspace;
+    MainWindow window(workspace, o);
+    QVERIFY(openWindow(window));
+    SimViewport *viewport = window.viewport();
+    auto *handDrive = window.findChild<HandDrive *>();
+    QTRY_VERIFY(viewport->renderedFrames() > 0);
+    viewport->setFocus();
+    if (drive) {
+        QTest::keyClick(viewport, Qt::Key_T, Qt::ControlModifier);
+        QVERIFY(window.engine().isDriving());
+        if (Gripper(hand) != handDrive->activeHand())
+            QTest::keyClick(viewport, Qt::Key_Tab);
+        QCOMPARE(int(handDrive->activeHand()), hand);
+    }
+    QTest::keyClick(viewport, Qt::Key_4);
+    QCOMPARE(viewport->cameraPreset(), CameraPreset::Follow);
+    if (drive) {
+        const QString across = driveTo(viewport, handDrive, 0, x);
+        QVERIFY2(across.isEmpty(), qPrintable(across));
+        const QString down = driveTo(viewport, handDrive, 2, z);
+        // What is below (a stack, the other hand's container) may stop it first.
+        QVERIFY2(down.isEmpty() || handDrive->status(Gripper(hand)).floor, qPrintable(down));
+        QTest::qWait(600); // the hand follows its target
+    } else {
+        auto there = [&window, hand, x, z] {
+            const auto commands = window.engine().handCommands();
+            const Pose &target = commands[size_t(hand)]->target;
+            return target.pos[0] > x && target.pos[2] < z;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(there(), 30000);
+    }
+    window.engine().pause();
+    QTest::qWait(100); // the last picture and the view that follows it
+    if (const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !folder.isEmpty())
+        viewport->grabFramebuffer().save(
+            QString("%1/follow-%2.png")
+                .arg(folder, QString(QTest::currentDataTag()).replace(", ", "-"))
+                .replace(' ', '_'));
+
+    const Pose wrist = window.engine().world()->gripperPose(Gripper(hand));
+    const std::array<double, 3> pads{wrist.pos[0], wrist.pos[1], wrist.pos[2] - 0.06};
+    // In the middle of the picture.
+    const QRectF inner = QRectF(QPointF(), QSizeF(viewport->size()))
+                             .adjusted(0.25 * viewport->width(), 0.25 * viewport->height(),
+                                       -0.25 * viewport->width(), -0.25 * viewport->height());
+    for (const auto &point : {wrist.pos, pads}) {
+        const std::optional<QPointF> at = projected(viewport->camera(), point, viewport->size());
+        QVERIFY2(at && inner.contains(*at),
+                 qPrintable(QString("(%1, %2, %3) shows at (%4, %5) of %6x%7")
+                                .arg(point[0])
+                                .arg(point[1])
+                                .arg(point[2])
+                                .arg(at ? at->x() : qQNaN())
+                                .arg(at ? at->y() : qQNaN())
+                                .arg(viewport->width())
+                                .arg(viewport->height())));
+    }
+    // Nothing stands between the eye and the hand: not the partition (box_and_block's, as
+    // resources/scenes/box_and_block.xml places it), not the other hand's palm (its box in
+    // the scenes, turned as the hand is). Boxes in their own frames: centre, half sizes, and
+    // the rotation (w, x, y, z) of their axes.
+    struct Obstacle
+    {
+        std::array<double, 3> centre;
+        std::array<double, 3> half;
+        std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};
+    };
+    std::vector<Obstacle> obstacles;
+    if (scene == "box_and_block")
+        obstacles.push_back({{0.0, 0.0, 0.075}, {0.005, 0.14, 0.075}});
+    const Gripper other = Gripper(hand) == Gripper::Left ? Gripper::Right : Gripper::Left;
+    if (window.engine().world()->hasGripper(other)) {
+        const Pose there = window.engine().world()->gripperPose(other);
+        // The scenes' <hand>.palm: bimanual_sorting's left palm is the wider one.
+        const double halfWidth = other == Gripper::Left ? 0.092 : 0.057;
+        obstacles.push_back({there.pos, {0.03, halfWidth, 0.012}, there.quat});
+    }
+    const QVector3D eye = eyeOf(viewport->camera());
+    for (const auto &point : {wrist.pos, pads}) {
+        for (const Obstacle &box : obstacles) {
+            const auto &[w, qx, qy, qz] = box.quat;
+            // The rows of the box's rotation: a world offset turns into its own frame.
+            const std::array<std::array<double, 3>, 3> rows{
+                {{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + w * qz), 2 * (qx * qz - w * qy)},
+                 {2 * (qx * qy - w * qz), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz + w * qx)},
+                 {2 * (qx * qz + w * qy), 2 * (qy * qz - w * qx), 1 - 2 * (qx * qx + qy * qy)}}};
+            bool hidden = false;
+            for (int k = 0; k < 500 && !hidden; ++k) {
+                const double f = k / 500.0;
+                std::array<double, 3> offset{};
+                for (size_t axis = 0; axis < 3; ++axis)
+                    offset[axis] =
+                        eye[int(axis)] + f * (point[axis] - eye[int(axis)]) - box.centre[axis];
+                bool inside = true;
+                for (size_t axis = 0; axis < 3; ++axis) {
+                    const auto &r = rows[axis];
+                    const double local = r[0] * offset[0] + r[1] * offset[1] + r[2] * offset[2];
+                    inside = inside && std::abs(local) < box.half[axis];
+                }
+                hidden = inside;
+            }
+            QVERIFY2(!hidden, qPrintable(QString("(%1, %2, %3) is hidden behind (%4, %5, %6)")
+                                             .arg(point[0])
+                                             .arg(point[1])
+                                             .arg(point[2])
+                                             .arg(box.centre[0])
+                                             .arg(box.centre[1])
+                                             .arg(box.centre[2])));
+        }
+    }
 }
 
 void TestStudio::drivingPreferencesApply()
