@@ -424,7 +424,9 @@ void TestViewport::tabSwitchesHands()
 
 void TestViewport::cameraPresetsOnKeys()
 {
-    // 1–4 in the viewport: across the jaws (the default), top, side, follow the hand.
+    // 1–4 in the viewport: across the jaws (the default), top, side, follow the hand. The
+    // presets frame the scene's regions, so the scene is shown here (this runs alone too).
+    m_viewport.setScene(m_scene->world.get(), m_scene->feed.get());
     QTest::keyClick(&m_viewport, Qt::Key_2);
     QCOMPARE(m_viewport.cameraPreset(), CameraPreset::Top);
     QCOMPARE(m_viewport.camera().elevation, -89.0);
