@@ -14,6 +14,15 @@
 
 namespace semhap {
 
+/** Where a router device's link stands: what every readout of a device calls it. */
+enum class LinkState
+{
+    NotBound,     ///< no transport is bound to the name
+    Disconnected, ///< the link is down (retried)
+    Connecting,   ///< the link is open, the device has not answered lately
+    Connected,    ///< the link is open and the device answers
+};
+
 /** A transport's health, as the device manager and `semhap devices` show it. */
 struct TransportStatus
 {
@@ -29,6 +38,14 @@ struct TransportStatus
     protocol::DeviceStatus device;   ///< the device's own counters (latest status)
     QString identity;                ///< model name from the identify reply, if any
     QString lastError;
+
+    /** The link's state from `connected` and `responding` (never NotBound). */
+    LinkState state() const
+    {
+        if (!connected)
+            return LinkState::Disconnected;
+        return responding ? LinkState::Connected : LinkState::Connecting;
+    }
 };
 
 /**

@@ -750,10 +750,6 @@
         <translation>Geräte: %1 virtuell, %2 verbunden</translation>
     </message>
     <message>
-        <source>, %1 not connected</source>
-        <translation>, %1 nicht verbunden</translation>
-    </message>
-    <message>
         <source>semhap studio</source>
         <translation>semhap studio</translation>
     </message>
@@ -987,6 +983,14 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Replay: nobody drives</source>
         <translation>Wiedergabe: niemand steuert</translation>
+    </message>
+    <message>
+        <source>, %1 connecting</source>
+        <translation>, %1 verbindet</translation>
+    </message>
+    <message>
+        <source>, %1 disconnected</source>
+        <translation>, %1 getrennt</translation>
     </message>
 </context>
 <context>

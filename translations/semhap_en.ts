@@ -750,10 +750,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>, %1 not connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>semhap studio</source>
         <translation type="unfinished"></translation>
     </message>
@@ -983,6 +979,14 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Replay: nobody drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 disconnected</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

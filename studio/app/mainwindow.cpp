@@ -50,6 +50,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <map>
 
 namespace semhap {
 
@@ -1002,20 +1003,21 @@ void MainWindow::updateLiveStatus()
 
 void MainWindow::updateDevicesStatus()
 {
-    int connected = 0;
+    // Counted by the state the Devices panel shows each band in (TransportStatus::state).
     int virtualCount = 0;
-    int down = 0;
+    std::map<LinkState, int> count;
     for (const BoundDevice &device : m_engine.devices().status()) {
         if (device.uri.startsWith(QLatin1String("virtual:")))
             ++virtualCount;
-        else if (device.status.connected)
-            ++connected;
         else
-            ++down;
+            ++count[device.status.state()];
     }
-    QString devices = tr("Devices: %1 virtual, %2 connected").arg(virtualCount).arg(connected);
-    if (down > 0)
-        devices += tr(", %1 not connected").arg(down);
+    QString devices =
+        tr("Devices: %1 virtual, %2 connected").arg(virtualCount).arg(count[LinkState::Connected]);
+    if (count[LinkState::Connecting] > 0)
+        devices += tr(", %1 connecting").arg(count[LinkState::Connecting]);
+    if (count[LinkState::Disconnected] > 0)
+        devices += tr(", %1 disconnected").arg(count[LinkState::Disconnected]);
     m_devicesLabel->setText(devices);
 }
 

@@ -39,13 +39,17 @@ struct StateLook
 
 StateLook stateLook(const BoundDevice *bound)
 {
-    if (!bound)
-        return {DevicesPanel::tr("not bound"), colors::Inactive};
-    if (bound->status.connected && bound->status.responding)
-        return {DevicesPanel::tr("connected"), colors::Ok};
-    if (bound->status.connected)
+    switch (bound ? bound->status.state() : LinkState::NotBound) {
+    case LinkState::NotBound:
+        break;
+    case LinkState::Disconnected:
+        return {DevicesPanel::tr("disconnected"), colors::Error};
+    case LinkState::Connecting:
         return {DevicesPanel::tr("connecting"), colors::Activity};
-    return {DevicesPanel::tr("disconnected"), colors::Error};
+    case LinkState::Connected:
+        return {DevicesPanel::tr("connected"), colors::Ok};
+    }
+    return {DevicesPanel::tr("not bound"), colors::Inactive};
 }
 
 QString statusDetails(const BoundDevice &bound)

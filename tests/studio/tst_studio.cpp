@@ -6,6 +6,7 @@
 #include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
+#include "emulatedband.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "gamepadinput.h"
@@ -68,6 +69,7 @@
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
+#include <QUdpSocket>
 #include <QUndoStack>
 #include <QVector3D>
 #include <QVector4D>
@@ -298,6 +300,8 @@ private slots:
     void auditionShowsInTheReadouts_data();
     void auditionShowsInTheReadouts();
     void disarmedBandsReadZero();
+    void statusBarCountsDevicesAsThePanelShowsThem_data();
+    void statusBarCountsDevicesAsThePanelShowsThem();
     void aKeyInTheViewportTakesOver();
     void driveShowsTheGhostAtOnce_data();
     void driveShowsTheGhostAtOnce();
@@ -902,6 +906,59 @@ void TestStudio::followKeepsTheHandInView()
                                              .arg(box.centre[2])));
         }
     }
+}
+
+void TestStudio::statusBarCountsDevicesAsThePanelShowsThem_data()
+{
+    QTest::addColumn<QString>("band"); ///< what answers at the address
+    QTest::addColumn<QString>("state");
+    QTest::addColumn<QString>("status");
+    QTest::newRow("nothing answers") << "silent"
+                                     << "connecting"
+                                     << "Devices: 6 virtual, 0 connected, 1 connecting";
+    QTest::newRow("an emulated band") << "emulated"
+                                      << "connected"
+                                      << "Devices: 6 virtual, 1 connected";
+    QTest::newRow("no such port") << "none"
+                                  << "disconnected"
+                                  << "Devices: 6 virtual, 0 connected, 1 disconnected";
+}
+
+// right.air bound in the Devices panel to a UDP address where nothing answers, to an emulated
+// band, or to a serial port that is not there: the status bar counts it in the state the
+// panel shows it in (a band that never answered is not connected).
+void TestStudio::statusBarCountsDevicesAsThePanelShowsThem()
+{
+    QFETCH(QString, band);
+    QFETCH(QString, state);
+    QFETCH(QString, status);
+    QUdpSocket silent; // listens and never answers
+    EmulatedBand emulated("pneumatic6");
+    QString uri = "serial:/dev/semhap-no-such-port";
+    if (band == "silent") {
+        QVERIFY(silent.bind(QHostAddress::LocalHost, 0));
+        uri = QString("udp:127.0.0.1:%1").arg(silent.localPort());
+    } else if (band == "emulated") {
+        QString error;
+        QVERIFY2(emulated.start(&error), qPrintable(error));
+        uri = emulated.uri();
+    }
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    DevicesPanel *devices = window.devicesPanel();
+    auto *choice = devices->findChild<QComboBox *>("uri:right.air");
+    choice->setFocus();
+    choice->lineEdit()->selectAll();
+    QTest::keyClicks(choice, uri);
+    QTest::mouseClick(devices->findChild<QWidget *>("connect:right.air"), Qt::LeftButton);
+    QTRY_COMPARE(window.engine().devices().transport("right.air")->uri(), uri);
+    auto *shown = devices->findChild<QLabel *>("state:right.air");
+    QTRY_COMPARE_WITH_TIMEOUT(shown->text(), state, 5000);
+    QTest::qWait(1000); // a band that answers would have answered by now
+    QCOMPARE(shown->text(), state);
+    QTRY_COMPARE(window.findChild<QLabel *>("devicesLabel")->text(), status);
 }
 
 void TestStudio::drivingPreferencesApply()
