@@ -261,6 +261,9 @@ void MainWindow::createActions()
             [this] { setSpeedIndex(m_speedPicker->currentIndex() - 1); });
     m_fasterAction = action(tr("Faster"), QStringLiteral("fasterAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_Plus));
+    // Ctrl+= too: the + key's own face on most keyboards, pressed without Shift.
+    m_fasterAction->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::Key_Plus), QKeySequence(Qt::CTRL | Qt::Key_Equal)});
     connect(m_fasterAction, &QAction::triggered, this,
             [this] { setSpeedIndex(m_speedPicker->currentIndex() + 1); });
     m_realTimeAction = action(tr("Real time"), QStringLiteral("realTimeAction"),

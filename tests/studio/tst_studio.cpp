@@ -459,6 +459,15 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
     QTest::keyClick(&window, Qt::Key_0, Qt::ControlModifier);
     QCOMPARE(window.engine().speed(), 1.0);
     QCOMPARE(window.speedPicker()->currentData().toDouble(), 1.0);
+    // Faster on either face of the key: Ctrl++, and Ctrl+= without Shift (in the viewport too,
+    // where it leaves the grippers to the operator).
+    QTest::keyClick(&window, Qt::Key_Plus, Qt::ControlModifier);
+    QCOMPARE(window.engine().speed(), 2.0);
+    window.viewport()->setFocus();
+    QTest::keyClick(window.viewport(), Qt::Key_Equal, Qt::ControlModifier);
+    QCOMPARE(window.engine().speed(), 4.0);
+    QCOMPARE(window.speedPicker()->currentData().toDouble(), 4.0);
+    QVERIFY(!window.engine().isDriving());
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(window.engine().isRunning());
 
