@@ -1632,10 +1632,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Sitzungsordner:</translation>
     </message>
     <message>
-        <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
-        <translation>Eine neue Sprache baut das Fenster neu auf, und der Lauf beginnt von vorn. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner.</translation>
-    </message>
-    <message>
         <source>General</source>
         <translation>Allgemein</translation>
     </message>
@@ -1834,6 +1830,10 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Wrist speed:</source>
         <translation>Handgelenk-Geschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on.</source>
+        <translation>Eine neue Sprache baut das Fenster dort neu auf, wo es ist, mit seiner Anordnung; der Lauf, eine Aufzeichnung, die Geräte und Ihre Änderungen gehen weiter. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner.</translation>
     </message>
 </context>
 <context>

@@ -1629,10 +1629,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>A new language rebuilds the window, and the run starts again from the beginning. Recordings go to the sessions folder from the next one on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>General</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1830,6 +1826,10 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Wrist speed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

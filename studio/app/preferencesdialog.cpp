@@ -77,9 +77,9 @@ QWidget *PreferencesDialog::createGeneralPage()
     auto *form = new QFormLayout;
     form->addRow(tr("Interface language:"), m_language);
     form->addRow(tr("Sessions folder:"), folderRow);
-    auto *note = new QLabel(tr("A new language rebuilds the window, and the run starts again "
-                               "from the beginning. Recordings go to the sessions folder from "
-                               "the next one on."),
+    auto *note = new QLabel(tr("A new language rebuilds the window where it is, with its "
+                               "layout; the run, a recording, the devices and your edits go "
+                               "on. Recordings go to the sessions folder from the next one on."),
                             page);
     note->setWordWrap(true);
     auto *layout = new QVBoxLayout(page);

@@ -982,8 +982,11 @@ void TestStudio::drivingPreferencesApply()
         auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
         QVERIFY(dialog);
         auto *tabs = dialog->findChild<QTabWidget *>("preferencesTabs");
+        const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+        if (!folder.isEmpty())
+            dialog->grab().save(folder + "/preferences-general.png");
         tabs->setCurrentIndex(1);
-        if (const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !folder.isEmpty())
+        if (!folder.isEmpty())
             dialog->grab().save(folder + "/preferences-driving.png");
         auto *speed = dialog->findChild<QDoubleSpinBox *>("driveSpeed");
         speed->selectAll();
