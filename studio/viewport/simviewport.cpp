@@ -9,6 +9,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace semhap {
 
@@ -63,60 +65,88 @@ std::array<double, 3> eyeOf(const OrbitCamera &camera)
 
 /**
  * A bold heading over lines of text in a rounded dark box, readable over the floor and over
- * the black sky alike, placed in `area` by `alignment` (left or right and top: its corner;
- * centred and bottom: along its bottom edge). Lines wider than the area wrap. Draws only
- * when `draw` is set; where the box is (or would be).
+ * the black sky alike; lines wider than the width it is given wrap. Laid out first (its
+ * size), so the caller can place it, then drawn.
  */
-QRectF drawTextBox(QPainter &painter, const QRectF &area, Qt::Alignment alignment,
-                   const QString &title, const QStringList &lines, const QColor &rim,
-                   qreal rimWidth = 1.0, bool draw = true)
+class TextBox
 {
-    const QFont font = painter.font();
-    QFont bold = font;
-    bold.setBold(true);
-    const QFontMetrics boldMetrics(bold);
-    const QFontMetrics metrics(font);
-    const int pad = metrics.height() / 2;
-    const Qt::Alignment horizontal = alignment & Qt::AlignHorizontal_Mask;
-    const int flags = int(horizontal & ~Qt::AlignRight) | Qt::TextWordWrap;
-    const int widest = std::max(1, int(area.width()) - 2 * pad);
-    const QRect room(0, 0, widest, 1 << 20);
-    QRect text = boldMetrics.boundingRect(room, flags, title);
-    std::vector<QRect> lineRects;
-    for (const QString &line : lines) {
-        lineRects.push_back(metrics.boundingRect(room, flags, line));
-        text.setWidth(std::max(text.width(), lineRects.back().width()));
+public:
+    TextBox(const QFont &font, const QString &title, const QStringList &lines, qreal widest,
+            Qt::Alignment horizontal)
+        : m_font(font), m_bold(font), m_title(title), m_lines(lines),
+          m_flags(int(horizontal & Qt::AlignHorizontal_Mask) | Qt::TextWordWrap)
+    {
+        m_bold.setBold(true);
+        const QFontMetrics metrics(m_font);
+        m_pad = metrics.height() / 2;
+        const QRect room(0, 0, std::max(1, int(widest) - 2 * m_pad), 1 << 20);
+        m_titleRect = QFontMetrics(m_bold).boundingRect(room, m_flags, title);
+        m_textWidth = m_titleRect.width();
+        m_textHeight = m_titleRect.height();
+        for (const QString &line : lines) {
+            m_lineRects.push_back(metrics.boundingRect(room, m_flags, line));
+            m_textWidth = std::max(m_textWidth, m_lineRects.back().width());
+            m_textHeight += m_lineRects.back().height();
+        }
     }
-    qreal height = text.height();
-    for (const QRect &line : lineRects)
-        height += line.height();
-    QRectF box(area.left(), area.top(), text.width() + 2 * pad, height + pad * 3 / 2);
-    if (horizontal & Qt::AlignHCenter)
-        box.moveLeft(area.center().x() - box.width() / 2);
-    if (horizontal & Qt::AlignRight)
-        box.moveRight(area.right());
-    if (alignment & Qt::AlignBottom)
-        box.moveBottom(area.bottom());
-    if (!draw)
-        return box;
 
-    QPainterPath path;
-    path.addRoundedRect(box, pad / 2.0, pad / 2.0);
-    painter.fillPath(path, colors::OverlayGround);
-    painter.setPen(QPen(rim, rimWidth));
-    painter.drawPath(path);
-    qreal y = box.top() + pad * 3 / 4;
-    const auto line = [&](const QFont &f, const QColor &colour, qreal h, const QString &t) {
-        painter.setFont(f);
-        painter.setPen(colour);
-        painter.drawText(QRectF(box.left() + pad, y, text.width(), h), flags, t);
-        y += h;
-    };
-    line(bold, Qt::white, boldMetrics.boundingRect(room, flags, title).height(), title);
-    for (int i = 0; i < int(lines.size()); ++i)
-        line(font, colors::OverlayText, lineRects[size_t(i)].height(), lines[i]);
-    painter.setFont(font);
-    return box;
+    QSizeF size() const { return {qreal(m_textWidth + 2 * m_pad), m_textHeight + m_pad * 1.5}; }
+
+    void draw(QPainter &painter, const QRectF &box, const QColor &rim, qreal rimWidth) const
+    {
+        QPainterPath path;
+        path.addRoundedRect(box, m_pad / 2.0, m_pad / 2.0);
+        painter.fillPath(path, colors::OverlayGround);
+        painter.setPen(QPen(rim, rimWidth));
+        painter.drawPath(path);
+        qreal y = box.top() + m_pad * 3 / 4;
+        const auto line = [&](const QFont &f, const QColor &colour, qreal h, const QString &t) {
+            painter.setFont(f);
+            painter.setPen(colour);
+            painter.drawText(QRectF(box.left() + m_pad, y, m_textWidth, h), m_flags, t);
+            y += h;
+        };
+        line(m_bold, Qt::white, m_titleRect.height(), m_title);
+        for (int i = 0; i < int(m_lines.size()); ++i)
+            line(m_font, colors::OverlayText, m_lineRects[size_t(i)].height(), m_lines[i]);
+        painter.setFont(m_font);
+    }
+
+private:
+    QFont m_font;
+    QFont m_bold;
+    QString m_title;
+    QStringList m_lines;
+    int m_flags;
+    int m_pad = 0;
+    QRect m_titleRect;
+    std::vector<QRect> m_lineRects;
+    int m_textWidth = 0;
+    int m_textHeight = 0;
+};
+
+/**
+ * The lines with those of hints ("Q E turn · Space grip") broken between their hints to fit
+ * `room` pixels: a break inside a hint ("+/-" and "force" apart) reads as two hints.
+ */
+QStringList packHints(const QStringList &lines, const QFontMetrics &metrics, int room)
+{
+    const QString between = QStringLiteral(" · ");
+    QStringList packed;
+    for (const QString &line : lines) {
+        QString current;
+        for (const QString &hint : line.split(between)) {
+            const QString longer = current.isEmpty() ? hint : current + between + hint;
+            if (!current.isEmpty() && metrics.horizontalAdvance(longer) > room) {
+                packed.append(current);
+                current = hint;
+            } else {
+                current = longer;
+            }
+        }
+        packed.append(current);
+    }
+    return packed;
 }
 
 } // namespace
@@ -469,23 +499,29 @@ void SimViewport::paintGL()
     gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     painter.endNativePainting();
-    drawOverlay(painter, drawn);
-    if (!m_notice.isEmpty())
-        drawNotice(painter);
+    const QRectF notice = m_notice.isEmpty() ? QRectF() : drawNotice(painter);
+    drawOverlay(painter, drawn, notice);
 }
 
-void SimViewport::drawNotice(QPainter &painter)
+QRectF SimViewport::drawNotice(QPainter &painter)
 {
-    // Centred at the bottom, clear of the driver's box in the top corner.
+    // Centred at the bottom; the driver's box keeps clear of it.
     QStringList lines = m_notice.split(QLatin1Char('\n'));
     const QString title = lines.takeFirst();
     const int pad = painter.fontMetrics().height() / 2;
-    drawTextBox(painter, QRectF(rect()).adjusted(pad, pad, -pad, -pad),
-                Qt::AlignHCenter | Qt::AlignBottom, title, lines, colors::Ok, 3.0);
+    const QRectF area = QRectF(rect()).adjusted(pad, pad, -pad, -pad);
+    const TextBox box(painter.font(), title, lines, area.width(), Qt::AlignHCenter);
+    QRectF placed(QPointF(), box.size());
+    placed.moveCenter(area.center());
+    placed.moveBottom(area.bottom());
+    box.draw(painter, placed, colors::Ok, 3.0);
+    return placed;
 }
 
-void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
+void SimViewport::drawOverlay(QPainter &painter, bool hasPicture, const QRectF &notice)
 {
+    m_overlayBox = QRectF();
+    m_overlayText.clear();
     painter.setRenderHint(QPainter::Antialiasing);
     QFont font = painter.font();
     if (!hasPicture) {
@@ -504,15 +540,16 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
     if (!m_caption.isEmpty()) {
         title = m_caption;
     } else if (m_driving) {
+        const QLocale locale; // the interface language's numbers
         const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
         title = hand == Gripper::Right ? tr("You are driving (right hand)")
                                        : tr("You are driving (left hand)");
         if (m_handDrive && m_handDrive->command(hand)) {
             const double grip = m_handDrive->command(hand)->grip;
             lines << (m_handDrive->isClosed(hand)
-                          ? tr("Grip: closed, %1 N").arg(grip, 0, 'f', 0)
+                          ? tr("Grip: closed, %1 N").arg(locale.toString(grip, 'f', 0))
                           : tr("Grip: open (closes to %1 N)")
-                                .arg(m_handDrive->gripSetpoint(hand), 0, 'f', 0));
+                                .arg(locale.toString(m_handDrive->gripSetpoint(hand), 'f', 0)));
         }
         if (m_handDrive) {
             const DriveStatus status = m_handDrive->status(hand);
@@ -520,7 +557,8 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
                 lines << tr("Resting on what is below: the wrist stops here");
             else if (status.driven && status.surface)
                 lines << tr("Wrist %1 cm above the surface below")
-                             .arg((status.target.pos[2] - *status.surface) * 100, 0, 'f', 1);
+                             .arg(locale.toString((status.target.pos[2] - *status.surface) * 100,
+                                                  'f', 1));
         }
         lines << tr("W A S D move · R F up/down · Q E turn · Space grip · +/- force");
         if (m_handDrive) {
@@ -542,63 +580,99 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture)
             lines << tr("Click here and press W A S D to drive");
     }
 
-    const int pad = QFontMetrics(font).height() / 2;
+    // Narrow enough that a hand in the middle is clear of it; a line of key hints wraps
+    // between its hints ("Q E turn · Space grip"), never inside one.
+    const QFontMetrics metrics(font);
+    const int pad = metrics.height() / 2;
     const QRectF area = QRectF(rect()).adjusted(pad, pad, -pad, -pad);
-    // In the first corner where it hides no driven hand's ghost (a high wrist in a small
-    // window was under the box), else the first.
-    const std::vector<QRectF> hands = ghostAreas();
-    const Qt::Alignment corners[] = {Qt::AlignLeft | Qt::AlignTop, Qt::AlignRight | Qt::AlignTop,
-                                     Qt::AlignLeft | Qt::AlignBottom,
-                                     Qt::AlignRight | Qt::AlignBottom};
-    Qt::Alignment corner = corners[0];
-    for (Qt::Alignment candidate : corners) {
-        const QRectF box =
-            drawTextBox(painter, area, candidate, title, lines, QColor(), 1.0, false);
-        if (std::none_of(hands.begin(), hands.end(),
-                         [&box](const QRectF &hand) { return hand.intersects(box); })) {
-            corner = candidate;
-            break;
+    const qreal widest =
+        std::min(area.width(), std::max(0.4 * area.width(), 24.0 * metrics.averageCharWidth()));
+    const TextBox box(font, title, packHints(lines, metrics, int(widest) - 2 * pad), widest,
+                      Qt::AlignLeft);
+    m_overlayBox = placeOverlay(box.size(), area, notice);
+    box.draw(painter, m_overlayBox, colors::veil(90), 1.0);
+    m_overlayText = (QStringList{title} + lines).join(QLatin1Char('\n'));
+}
+
+QRectF SimViewport::placeOverlay(const QSizeF &size, const QRectF &area,
+                                 const QRectF &notice) const
+{
+    // The first corner clear of the driven hands (their ghosts, grippers and drop lines) and
+    // of the notice, from the top left; else the least covering.
+    std::vector<QRectF> keepClear = handAreas();
+    if (!notice.isEmpty())
+        keepClear.push_back(notice);
+    const auto covered = [&keepClear](const QRectF &placed) {
+        qreal overlap = 0.0;
+        for (const QRectF &clear : keepClear) {
+            const QRectF both = placed & clear;
+            overlap += both.width() * both.height();
         }
+        return overlap;
+    };
+    QRectF best;
+    for (const Qt::Corner corner :
+         {Qt::TopLeftCorner, Qt::TopRightCorner, Qt::BottomLeftCorner, Qt::BottomRightCorner}) {
+        QRectF placed(area.topLeft(), size);
+        if (corner == Qt::TopRightCorner || corner == Qt::BottomRightCorner)
+            placed.moveRight(area.right());
+        if (corner == Qt::BottomLeftCorner || corner == Qt::BottomRightCorner)
+            placed.moveBottom(area.bottom());
+        if (best.isNull() || covered(placed) < covered(best))
+            best = placed;
     }
-    drawTextBox(painter, area, corner, title, lines, colors::veil(90));
+    return best;
 }
 
 std::optional<QPointF> SimViewport::project(const std::array<double, 3> &point) const
 {
+    // MuJoCo's free camera: it looks at lookAt from `distance` away, along the azimuth and
+    // elevation, with a vertical field of view of FieldOfView.
     const double az = m_camera.azimuth * Pi / 180;
     const double el = m_camera.elevation * Pi / 180;
-    const std::array<double, 3> eye = eyeOf(m_camera);
     const std::array<double, 3> forward{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
                                         std::sin(el)};
     const std::array<double, 3> right{std::sin(az), -std::cos(az), 0.0};
     const std::array<double, 3> up{-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az),
                                    std::cos(el)};
-    double depth = 0, across = 0, high = 0;
-    for (size_t axis = 0; axis < 3; ++axis) {
-        const double d = point[axis] - eye[axis];
-        depth += d * forward[axis];
-        across += d * right[axis];
-        high += d * up[axis];
-    }
-    if (depth <= 0)
+    const std::array<double, 3> eye = eyeOf(m_camera);
+    std::array<double, 3> v{};
+    for (size_t axis = 0; axis < 3; ++axis)
+        v[axis] = point[axis] - eye[axis];
+    const auto dot = [&v](const std::array<double, 3> &w) {
+        return v[0] * w[0] + v[1] * w[1] + v[2] * w[2];
+    };
+    const double depth = dot(forward);
+    if (depth <= 1e-3)
         return std::nullopt;
-    const double half = std::tan(FieldOfView / 2 * Pi / 180) * depth;
-    const double aspect = double(width()) / std::max(1, height());
-    return QPointF((1 + across / (half * aspect)) / 2 * width(), (1 - high / half) / 2 * height());
+    const double scale = height() / 2.0 / std::tan(FieldOfView / 2 * Pi / 180) / depth;
+    return QPointF(width() / 2.0 + dot(right) * scale, height() / 2.0 - dot(up) * scale);
 }
 
-std::vector<QRectF> SimViewport::ghostAreas() const
+std::vector<QRectF> SimViewport::handAreas() const
 {
+    // Around each driven hand's target: the ghost, the fingers below it (the gripper follows
+    // the target) and the drop line down to the surface.
+    constexpr double Reach = 0.05; // the open fingers' half span, and the ghost's
     std::vector<QRectF> areas;
-    const int margin = fontMetrics().height();
     for (const WristMarker &marker : markers()) {
-        const std::array<double, 3> pads{marker.target[0], marker.target[1],
-                                         marker.target[2] - FingerReach};
-        const std::optional<QPointF> wrist = project(marker.target);
-        const std::optional<QPointF> tips = project(pads);
-        if (wrist && tips)
-            areas.push_back(
-                QRectF(*wrist, *tips).normalized().adjusted(-margin, -margin, margin, margin));
+        const auto &t = marker.target;
+        std::vector<std::array<double, 3>> corners;
+        for (const double dx : {-Reach, Reach}) {
+            for (const double dy : {-Reach, Reach}) {
+                for (const double z : {t[2] + Reach / 2, t[2] - 2 * FingerReach})
+                    corners.push_back({t[0] + dx, t[1] + dy, z});
+            }
+        }
+        if (marker.surface)
+            corners.push_back({t[0], t[1], *marker.surface});
+        QRectF area;
+        for (const auto &corner : corners) {
+            if (const std::optional<QPointF> point = project(corner))
+                area |= QRectF(*point, QSizeF(1, 1));
+        }
+        if (!area.isEmpty())
+            areas.push_back(area);
     }
     return areas;
 }

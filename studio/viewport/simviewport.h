@@ -107,6 +107,14 @@ public:
     }
     QAction *showForcesAction() const { return m_showForcesAction; }
 
+    /**
+     * Where the corner box saying who drives was last drawn (widget coordinates; empty:
+     * none): in a corner clear of the driven hands and the notice.
+     */
+    QRectF overlayBox() const { return m_overlayBox; }
+    /** What that box said, its heading and lines, one a line (empty: none drawn). */
+    QString overlayText() const { return m_overlayText; }
+
     /** Frames drawn from a picture so far (tests, a frame-rate readout). */
     quint64 renderedFrames() const { return m_renderedFrames; }
 
@@ -135,14 +143,18 @@ private:
     void releaseRenderer();
     void frame();
     void changeCamera(const OrbitCamera &camera);
-    void drawOverlay(QPainter &painter, bool hasPicture);
-    void drawNotice(QPainter &painter);
+    /** The corner box (who drives, the keys), placed clear of handAreas() and `notice`. */
+    void drawOverlay(QPainter &painter, bool hasPicture, const QRectF &notice);
+    /** Where a box of `size` goes in `area`: a corner clear of handAreas() and `notice`. */
+    QRectF placeOverlay(const QSizeF &size, const QRectF &area, const QRectF &notice) const;
+    /** Draws the notice at the bottom; where it went. */
+    QRectF drawNotice(QPainter &painter);
+    /** Where `point` (world coordinates) shows in the widget; none behind the camera. */
+    std::optional<QPointF> project(const std::array<double, 3> &point) const;
+    /** Where each driven hand shows: its ghost, its fingers and its drop line. */
+    std::vector<QRectF> handAreas() const;
     /** The driven hands' ghosts and drop lines, from the drive and its status. */
     std::vector<WristMarker> markers() const;
-    /** Where a world point shows in the widget (none: behind the camera). */
-    std::optional<QPointF> project(const std::array<double, 3> &point) const;
-    /** Where the driven hands' ghosts show, from the wrist down to the pads, with a margin. */
-    std::vector<QRectF> ghostAreas() const;
     /** Follow: the active hand in the middle, across its jaws, in plain sight. */
     void follow();
     /** Where the active hand is in the newest picture, else where it is commanded to be. */
@@ -171,6 +183,8 @@ private:
     bool m_showForces = false;
     bool m_driving = false;
     quint64 m_renderedFrames = 0;
+    QRectF m_overlayBox;
+    QString m_overlayText;
 };
 
 } // namespace semhap

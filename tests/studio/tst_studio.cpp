@@ -307,6 +307,8 @@ private slots:
     void driveShowsTheGhostAtOnce();
     void followKeepsTheHandInView_data();
     void followKeepsTheHandInView();
+    void drivingOverlayLeavesTheHandInSight_data();
+    void drivingOverlayLeavesTheHandInSight();
     void drivingPreferencesApply();
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
@@ -1026,6 +1028,134 @@ void TestStudio::aKeyInTheViewportTakesOver()
     // The toolbar toggle hands the grippers back.
     teleop->trigger();
     QVERIFY(!window.engine().isDriving());
+}
+
+void TestStudio::drivingOverlayLeavesTheHandInSight_data()
+{
+    addWindowRows();
+}
+
+namespace {
+
+/**
+ * Where a point of the world shows in `viewport`, as MuJoCo's free camera sees it (the test's
+ * own reckoning, checked against the ghost's pixels); false behind the camera.
+ */
+bool shownAt(const SimViewport &viewport, const std::array<double, 3> &point, QPointF *shown)
+{
+    using Vec = std::array<double, 3>;
+    const auto dot = [](const Vec &a, const Vec &b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
+    const auto cross = [](const Vec &a, const Vec &b) {
+        return Vec{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                   a[0] * b[1] - a[1] * b[0]};
+    };
+    const OrbitCamera &camera = viewport.camera();
+    const double az = qDegreesToRadians(camera.azimuth);
+    const double el = qDegreesToRadians(camera.elevation);
+    // The camera sits `distance` back from lookAt along its view direction, level.
+    const Vec view{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+    Vec side = cross(view, {0, 0, 1});
+    const double length = std::sqrt(dot(side, side));
+    for (double &c : side)
+        c /= length;
+    const Vec up = cross(side, view);
+    Vec v{};
+    for (size_t i = 0; i < 3; ++i)
+        v[i] = point[i] - (camera.lookAt[i] - camera.distance * view[i]);
+    const double depth = dot(v, view);
+    if (depth <= 0)
+        return false;
+    const double focal = viewport.height() / 2.0 / std::tan(qDegreesToRadians(45.0 / 2));
+    *shown = QPointF(viewport.width() / 2.0 + dot(v, side) * focal / depth,
+                     viewport.height() / 2.0 - dot(v, up) * focal / depth);
+    return true;
+}
+
+} // namespace
+
+// Driving in each camera view (keys 1–4), the box saying who drives leaves the hand in sight:
+// the wrist target's ghost, the fingers under it and the drop line to the surface are not
+// under it (it covered the gripper in the default view at 1280×800). Its numbers are the
+// interface language's (German had "25.9 cm" among commas).
+void TestStudio::drivingOverlayLeavesTheHandInSight()
+{
+    // The grippers taken at the start, where they wait above the pile, and raised a little:
+    // a long drop line, with nothing in front of it.
+    StudioOptions o = options();
+    o.autoRun = false;
+    const std::unique_ptr<Studio> studio = startStudio(o);
+    MainWindow &window = *studio->window();
+    QVERIFY(window.isActiveWindow());
+    SimViewport *viewport = window.viewport();
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_R);
+    QTRY_VERIFY(window.engine().isDriving());
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(window.engine().isRunning());
+    QTest::keyPress(viewport, Qt::Key_R);
+    QTest::qWait(500);
+    QTest::keyRelease(viewport, Qt::Key_R);
+    HandDrive *drive = viewport->handDrive();
+    const char *names[] = {"jaws", "top", "side", "follow"};
+    for (int preset = 0; preset < CameraPresetCount; ++preset) {
+        QTest::keyClick(viewport, Qt::Key(Qt::Key_1 + preset));
+        QTest::qWait(400);
+        const QImage picture = viewport->grabFramebuffer();
+        savePicture(&window, QString("driving-%1").arg(names[preset]));
+        const DriveStatus status = drive->status(drive->activeHand());
+        QVERIFY(status.driven && status.surface);
+        const auto &t = status.target.pos;
+        // The wrist target, the fingertips 12 cm under it, the drop line's foot.
+        const std::array<double, 3> points[] = {
+            t, {t[0], t[1], t[2] - 0.12}, {t[0], t[1], *status.surface}};
+        // The reckoning is the picture's: the ghost and its drop line are cyan, along the
+        // line from the target down to the surface (whose foot a box wall may hide).
+        QRect ghost;
+        for (int y = 0; y < picture.height(); ++y) {
+            for (int x = 0; x < picture.width(); ++x) {
+                const QColor c = picture.pixelColor(x, y);
+                if (c.blue() > 150 && c.green() > 120 && c.red() < c.green() - 40)
+                    ghost |= QRect(x, y, 1, 1);
+            }
+        }
+        const qreal ratio = picture.width() / qreal(viewport->width());
+        int onTheLine = 0;
+        for (int step = 0; step <= 50; ++step) {
+            const double z = t[2] + (*status.surface - t[2]) * step / 50;
+            QPointF shown;
+            if (shownAt(*viewport, {t[0], t[1], z}, &shown))
+                onTheLine += ghost.adjusted(-2, -2, 2, 2).contains((shown * ratio).toPoint());
+        }
+        QVERIFY2(onTheLine > 0,
+                 qPrintable(QString("%1: the line from the target to the surface misses the "
+                                    "cyan in %2,%3 %4x%5")
+                                .arg(names[preset])
+                                .arg(ghost.x())
+                                .arg(ghost.y())
+                                .arg(ghost.width())
+                                .arg(ghost.height())));
+        // It gives the height in the interface language's numbers (25,9 in German).
+        const QString height = QLocale().toString((t[2] - *status.surface) * 100, 'f', 1);
+        QVERIFY2(viewport->overlayText().contains(height + " cm"),
+                 qPrintable(viewport->overlayText() + "\nhas no " + height));
+        const QRectF box = viewport->overlayBox();
+        QVERIFY(!box.isEmpty());
+        for (const auto &point : points) {
+            QPointF shown;
+            QVERIFY(shownAt(*viewport, point, &shown));
+            QVERIFY2(!box.contains(shown),
+                     qPrintable(QString("%1: the box %2,%3 %4x%5 covers %6,%7")
+                                    .arg(names[preset])
+                                    .arg(box.x())
+                                    .arg(box.y())
+                                    .arg(box.width())
+                                    .arg(box.height())
+                                    .arg(shown.x())
+                                    .arg(shown.y())));
+        }
+    }
 }
 
 void TestStudio::eventLogMovesThePlotCursor()
