@@ -1077,6 +1077,15 @@ void MainWindow::restoreLayout()
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), LayoutVersion);
+    bool ok = false;
+    const double seconds = settings.value(QStringLiteral("view/plotWindow")).toDouble(&ok);
+    if (ok)
+        m_plots->setWindowSeconds(seconds);
+    const int preset = settings.value(QStringLiteral("view/cameraPreset")).toInt(&ok);
+    if (ok && preset >= 0 && preset < CameraPresetCount)
+        m_viewport->setCameraPreset(CameraPreset(preset));
+    m_designer->setAuditionDevice(
+        settings.value(QStringLiteral("view/auditionDevice")).toString());
 }
 
 void MainWindow::resetLayout()
@@ -1092,6 +1101,9 @@ void MainWindow::saveLayout()
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState(LayoutVersion));
+    settings.setValue(QStringLiteral("view/plotWindow"), m_plots->windowSeconds());
+    settings.setValue(QStringLiteral("view/cameraPreset"), int(m_viewport->cameraPreset()));
+    settings.setValue(QStringLiteral("view/auditionDevice"), m_designer->auditionDevice());
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -84,7 +84,10 @@ public:
      */
     bool openLiveRig(const LiveRigOptions &options);
 
-    /** Saves the window's geometry and dock layout for the next window. */
+    /**
+     * Saves the window's geometry and dock layout, with the views' settings (the plots' time
+     * window, the camera preset, the audition device), for the next window.
+     */
     void saveLayout();
     /** Says what went wrong, in the status bar and a message box that does not block. */
     void showError(const QString &what, const QString &error);

@@ -439,6 +439,8 @@ QWidget *WaveformDesigner::createControls()
                                   "pauses), or a virtual one"));
     m_devicePicker->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_devicePicker->setMinimumContentsLength(12);
+    connect(m_devicePicker, &QComboBox::activated, this,
+            [this] { m_auditionDevice = m_devicePicker->currentData().toString(); });
     m_beginButton = new QPushButton(tr("Audition"), box);
     m_beginButton->setObjectName(QStringLiteral("auditionBegin"));
     m_beginButton->setToolTip(tr("Begin the pattern on the device now (again: restart it)"));
@@ -519,7 +521,6 @@ void WaveformDesigner::refreshLibrary()
 
 void WaveformDesigner::refreshDevices()
 {
-    const QString current = m_devicePicker->currentData().toString();
     m_devicePicker->clear();
     m_devicePicker->addItem(tr("virtual (audition only)"), QString());
     if (m_devices) {
@@ -527,7 +528,13 @@ void WaveformDesigner::refreshDevices()
             m_devicePicker->addItem(QStringLiteral("%1 — %2").arg(device.name, device.model),
                                     device.name);
     }
-    m_devicePicker->setCurrentIndex(std::max(0, m_devicePicker->findData(current)));
+    m_devicePicker->setCurrentIndex(std::max(0, m_devicePicker->findData(m_auditionDevice)));
+}
+
+void WaveformDesigner::setAuditionDevice(const QString &name)
+{
+    m_auditionDevice = name;
+    m_devicePicker->setCurrentIndex(std::max(0, m_devicePicker->findData(name)));
 }
 
 void WaveformDesigner::openLibraryItem()

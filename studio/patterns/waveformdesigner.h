@@ -76,6 +76,12 @@ public:
     /** Lists the devices to audition on again (call after bindings changed). */
     void refreshDevices();
     /**
+     * The bound device auditions play on, as last picked (empty: the virtual one); it is
+     * selected whenever it is bound, so it survives a rebinding and a new window.
+     */
+    QString auditionDevice() const { return m_auditionDevice; }
+    void setAuditionDevice(const QString &name);
+    /**
      * The time the run's readouts are at, read as an audition on a bound device begins: its
      * frames are stamped from there, so the plots draw it on after the run (none: from 0).
      */
@@ -151,6 +157,7 @@ private:
     QDoubleSpinBox *m_endAt = nullptr;
     QCheckBox *m_hold = nullptr;
     QComboBox *m_devicePicker = nullptr;
+    QString m_auditionDevice;
     QPushButton *m_beginButton = nullptr;
     QPushButton *m_endButton = nullptr;
     QPushButton *m_stopButton = nullptr;

@@ -1184,12 +1184,19 @@ void TestStudio::layoutIsSavedAndRestored()
         MainWindow window(workspace, o);
         QVERIFY(openWindow(window));
         window.findChild<QDockWidget *>("metricsDock")->close();
+        // The views' settings come back with the layout.
+        window.viewport()->setFocus();
+        QTest::keyClick(window.viewport(), Qt::Key_3);
+        QCOMPARE(window.viewport()->cameraPreset(), CameraPreset::Side);
+        window.plots()->setWindowSeconds(45);
         window.close();
     }
     Workspace workspace;
     MainWindow window(workspace, o);
     QVERIFY(openWindow(window));
     QVERIFY(window.findChild<QDockWidget *>("metricsDock")->isHidden());
+    QCOMPARE(window.viewport()->cameraPreset(), CameraPreset::Side);
+    QCOMPARE(window.plots()->findChild<QSpinBox *>()->value(), 45);
     QVERIFY(!window.findChild<QDockWidget *>("plotsDock")->isHidden());
     window.findChild<QAction *>("resetLayoutAction")->trigger();
     QVERIFY(!window.findChild<QDockWidget *>("metricsDock")->isHidden());
@@ -1305,6 +1312,21 @@ void TestStudio::languageSwitchKeepsTheWork()
     QVERIFY(engine.isDriving());
     const double before = engine.simTime();
 
+    // How the user looks at it: a longer plot window, the top view, the band to audition on.
+    auto *spin = window->plots()->findChild<QAbstractSpinBox *>();
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, "30");
+    QTest::keyClick(spin, Qt::Key_Enter);
+    QTRY_COMPARE(window->plots()->windowSeconds(), 30.0);
+    QVERIFY(openWindow(*window)); // the presets' keys work in the active window
+    window->viewport()->setFocus();
+    QTest::keyClick(window->viewport(), Qt::Key_2);
+    QCOMPARE(window->viewport()->cameraPreset(), CameraPreset::Top);
+    const OrbitCamera top = window->viewport()->camera();
+    window->findChild<QDockWidget *>("patternsDock")->raise();
+    QVERIFY(choose(designer->findChild<QComboBox *>("auditionDevice"), "right.vibro — lra4"));
+
     pickLanguage(studio, "de");
     window = studio.window();
     QVERIFY(QTest::qWaitForWindowExposed(window));
@@ -1329,6 +1351,13 @@ void TestStudio::languageSwitchKeepsTheWork()
     QVERIFY(engine.isDriving());
     QVERIFY(window->findChild<QAction *>("driveAction")->isChecked());
     QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
+    QCOMPARE(window->plots()->windowSeconds(), 30.0);
+    QCOMPARE(window->plots()->findChild<QSpinBox *>()->value(), 30);
+    QCOMPARE(window->viewport()->cameraPreset(), CameraPreset::Top);
+    QVERIFY(window->viewport()->cameraPresetAction(CameraPreset::Top)->isChecked());
+    QCOMPARE(window->viewport()->camera().elevation, top.elevation);
+    QCOMPARE(window->findChild<QComboBox *>("auditionDevice")->currentData().toString(),
+             QString("right.vibro"));
 
     // The address the user added is there at the next start, in the listing.
     Workspace next;
