@@ -99,6 +99,14 @@ QCPItemText *addText(QCustomPlot *plot, QCPAxisRect *rect, const QString &text,
     return item;
 }
 
+/** The legend in the rect's top right corner, if it has one yet. */
+QCPLegend *legendOf(QCPAxisRect *rect)
+{
+    if (rect->insetLayout()->elementCount() == 0)
+        return nullptr;
+    return qobject_cast<QCPLegend *>(rect->insetLayout()->elementAt(0));
+}
+
 QString number(double value)
 {
     return QLocale::c().toString(value, 'g', 10);
@@ -236,6 +244,9 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     connect(m_plot, &QCustomPlot::mouseMove, this, &PlotPanel::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
     // Pixels are known only once the plot is laid out (after a resize, say).
+    // The value ranges keep the data under each rect's title and legend, whose pixels a
+    // layout sets; the drawing that follows it shows the new ranges.
+    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::fitToLayout);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::layoutSpanLabels);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::keepReadableHeight);
@@ -350,6 +361,10 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     rect->setRangeZoom(Qt::Horizontal);
     // Each rect keeps room to read its curves and labels; past that the panel scrolls.
     rect->setMinimumSize(0, stretch >= 5 ? 90 : stretch >= 3 ? 56 : 40);
+    // Value ticks a step apart that spaceValueTicks() sets from the rect's pixels.
+    auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
+    ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+    rect->axis(QCPAxis::atLeft)->setTicker(ticker);
     QCPAxis *time = rect->axis(QCPAxis::atBottom);
     time->setTickLabels(false);
     time->setPadding(0);
@@ -368,6 +383,8 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     QFont bold = titleItem->font();
     bold.setBold(true);
     titleItem->setFont(bold);
+    m_titleHeight =
+        QFontMetrics(bold).height() + titleItem->padding().top() + titleItem->padding().bottom();
     titleItem->setBrush(colors::veil(200));
     titleItem->setLayer(QStringLiteral("legend"));
     return rect;
@@ -384,9 +401,7 @@ QCPGraph *PlotPanel::addGraph(QCPAxisRect *rect, const QString &id, const QStrin
     graph->setPen(pen);
     graph->setAntialiased(false);
     graph->setAdaptiveSampling(true);
-    QCPLegend *legend = nullptr;
-    if (rect->insetLayout()->elementCount() > 0)
-        legend = qobject_cast<QCPLegend *>(rect->insetLayout()->elementAt(0));
+    QCPLegend *legend = legendOf(rect);
     if (!legend) {
         legend = new QCPLegend;
         rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
@@ -488,7 +503,6 @@ void PlotPanel::addDevice(int device)
         info.model.isEmpty() ? info.name : tr("%1 (%2)").arg(info.name, info.model);
     plot->rect = addRect(title, 2);
     plot->rect->axis(QCPAxis::atLeft)->setLabel(tr("output"));
-    plot->rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(1);
     for (int channel = 0; channel < int(info.channels.size()); ++channel) {
         const QString &name = info.channels[channel];
         const QColor color = colors::series(channel);
@@ -711,16 +725,71 @@ void PlotPanel::syncSpans()
 }
 
 /** Sets the rect's value range on both sides, so the threshold names stay at their lines. */
-static void setValueRange(QCPAxisRect *rect, double lower, double upper)
+static bool setValueRange(QCPAxisRect *rect, double lower, double upper)
 {
+    if (rect->axis(QCPAxis::atLeft)->range() == QCPRange(lower, upper))
+        return false;
     rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
     rect->axis(QCPAxis::atRight)->setRange(lower, upper);
+    return true;
 }
 
-void PlotPanel::fitValueAxes()
+double PlotPanel::upperUnderHeader(QCPAxisRect *rect, double lower, double top,
+                                   double headroom) const
+{
+    // The title and the legend sit over the top of the rect: the range reaches so far above
+    // the data that its top runs under them, never behind (a band's 1.0 went behind both).
+    const QCPLegend *legend = legendOf(rect);
+    const int header = std::max(m_titleHeight, legend ? legend->outerRect().height() : 0) + 2;
+    const int height = rect->rect().height();
+    const double span = top - lower;
+    double upper = top + span * headroom;
+    if (height > header) // laid out
+        upper = std::max(upper, lower + span * height / (height - header));
+    return upper;
+}
+
+bool PlotPanel::spaceValueTicks(QCPAxisRect *rect)
+{
+    // Labels a fifth of their height apart at least, on a step of 1, 2 or 5 times a
+    // power of ten: the ticker's default of about five overlapped in the rects of both
+    // hands' seven devices at 1920×1080.
+    QCPAxis *axis = rect->axis(QCPAxis::atLeft);
+    const double pixels = rect->rect().height();
+    if (pixels <= 0)
+        return false;
+    const double least =
+        axis->range().size() * 1.2 * QFontMetrics(axis->tickLabelFont()).height() / pixels;
+    const double power = std::pow(10.0, std::floor(std::log10(least)));
+    double step = 10 * power;
+    for (double mantissa : {1.0, 2.0, 5.0}) {
+        if (mantissa * power >= least) {
+            step = mantissa * power;
+            break;
+        }
+    }
+    auto ticker = axis->ticker().staticCast<QCPAxisTickerFixed>();
+    if (ticker->tickStep() == step)
+        return false;
+    ticker->setTickStep(step);
+    return true;
+}
+
+void PlotPanel::fitToLayout()
+{
+    // The layout has set up the axes' ticks for the old ranges: they are set up again for
+    // the drawing that follows (the margins follow at the next replot).
+    if (!fitValueAxes())
+        return;
+    for (QCPAxisRect *rect : m_rects)
+        rect->update(QCPLayoutElement::upPreparation);
+}
+
+bool PlotPanel::fitValueAxes()
 {
     if (m_rects.empty())
-        return;
+        return false;
+    bool changed = false;
     const QCPRange visible = m_rects.front()->axis(QCPAxis::atBottom)->range();
     const auto visibleTop = [&visible](QCPGraph *graph, double floor) {
         bool found = false;
@@ -729,18 +798,24 @@ void PlotPanel::fitValueAxes()
     };
     for (auto &plot : m_grippers) {
         const double force = visibleTop(plot->sum, std::max(1.0, plot->thresholdTop));
-        // Headroom above the data for the title, the legend and the span labels.
-        setValueRange(plot->forceRect, 0.0, force * 1.3);
+        // Headroom above the data for the span labels too.
+        changed |= setValueRange(plot->forceRect, 0.0,
+                                 upperUnderHeader(plot->forceRect, 0.0, force, 0.3));
         const double count = visibleTop(plot->count, std::max(4.0, plot->countTop));
-        setValueRange(plot->countRect, 0.0, std::ceil(count * 1.3));
+        changed |= setValueRange(plot->countRect, 0.0,
+                                 std::ceil(upperUnderHeader(plot->countRect, 0.0, count, 0.1)));
     }
     for (auto &plot : m_devices) {
         // Normalised outputs keep a fixed 0..1 scale so devices compare at a glance; a
         // model with a wider range widens it (tracked as data come, not searched per frame:
         // sixteen channels at 1 kHz would cost more than drawing them).
-        const double span = plot->high - plot->low;
-        setValueRange(plot->rect, plot->low - 0.06 * span, plot->high + 0.4 * span);
+        const double lower = plot->low - 0.06 * (plot->high - plot->low);
+        changed |= setValueRange(plot->rect, lower,
+                                 upperUnderHeader(plot->rect, lower, plot->high, 0.06));
     }
+    for (QCPAxisRect *rect : m_rects)
+        changed |= spaceValueTicks(rect);
+    return changed;
 }
 
 void PlotPanel::setTimeRange(double lower, double upper)

@@ -93,7 +93,17 @@ private:
     void layoutSpanLabels();
     /** Holds the plot as high as its rects need, so the panel scrolls instead (afterLayout). */
     void keepReadableHeight();
-    void fitValueAxes();
+    /** Fits the value axes to the data in view; true when a range or tick count changed. */
+    bool fitValueAxes();
+    /** Fits them again once a layout has set the rects' pixels. */
+    void fitToLayout();
+    /**
+     * The upper end of a value range from `lower` that shows `top` below the rect's title and
+     * legend, with at least `headroom` (a part of the data's span) above it.
+     */
+    double upperUnderHeader(QCPAxisRect *rect, double lower, double top, double headroom) const;
+    /** As many value ticks on the rect as its height lets stand apart (true: changed). */
+    static bool spaceValueTicks(QCPAxisRect *rect);
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);
     void updateCursor();
@@ -124,6 +134,7 @@ private:
     QElapsedTimer m_sinceReplot;
 
     double m_windowSeconds = 10.0;
+    int m_titleHeight = 0; ///< a rect's title's pixels, over the top of the rect
     bool m_paused = false;
     double m_cursorTime;
     bool m_draggingCursor = false;

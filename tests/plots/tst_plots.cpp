@@ -16,6 +16,7 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <map>
 
 using namespace semhap;
 
@@ -164,6 +165,8 @@ private slots:
     void exportPng();
     void resetClears();
     void manyDevicesScroll();
+    void dataAndLabelsStayClear_data();
+    void dataAndLabelsStayClear();
 
 private:
     QCPAxis *timeAxis() const { return m_plot->axisRect(0)->axis(QCPAxis::atBottom); }
@@ -574,6 +577,76 @@ void TestPlots::manyDevicesScroll()
     m_panel->resize(640, 1400);
     QTest::qWait(50);
     QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);
+}
+
+void TestPlots::dataAndLabelsStayClear_data()
+{
+    QTest::addColumn<int>("height");
+    QTest::newRow("short dock: every rect at its least") << 600;
+    QTest::newRow("tall dock") << 1400;
+}
+
+void TestPlots::dataAndLabelsStayClear()
+{
+    // Both hands and seven bands, each sending 1.0 (full scale) on a channel: the curve at
+    // 1.0 runs below its rect's title and legend (it ran behind them), and no two value
+    // labels of a rect overlap (the force's seven did in a short rect, as at 1920×1080).
+    QFETCH(int, height);
+    std::array<GripperThresholds, 2> thresholds{};
+    thresholds[size_t(Gripper::Right)] = rightThresholds();
+    thresholds[size_t(Gripper::Left)] = rightThresholds();
+    std::vector<RunDevice> devices;
+    for (int d = 0; d < 7; ++d)
+        devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
+    m_history->start(devices, thresholds, {"right.force", "right.slip"});
+    for (int k = 0; k <= Ticks; ++k) {
+        for (Gripper gripper : {Gripper::Right, Gripper::Left})
+            m_history->append(frameAt(k / 10.0, gripper));
+        for (int d = 0; d < 7; ++d) {
+            DeviceFrame device;
+            device.t = k / 10.0;
+            device.device = d;
+            device.channelCount = 2;
+            device.values[0] = 1.0;
+            m_history->append(device);
+        }
+    }
+    m_history->commit();
+    m_panel->resize(640, height);
+    QTest::qWait(50);
+    m_plot->replot();
+    QCOMPARE(m_plot->axisRectCount(), 4 + 7);
+    // The rects' titles: the texts at each rect's top left corner.
+    std::map<QCPAxisRect *, double> titleBottoms;
+    for (int i = 0; i < m_plot->itemCount(); ++i) {
+        auto *text = qobject_cast<QCPItemText *>(m_plot->item(i));
+        if (text && text->position->typeY() == QCPItemPosition::ptAxisRectRatio &&
+            text->position->coords() == QPointF(0.0, 0.0))
+            titleBottoms[text->clipAxisRect()] = text->bottom->pixelPosition().y();
+    }
+    QCOMPARE(int(titleBottoms.size()), m_plot->axisRectCount());
+    for (int i = 0; i < m_plot->axisRectCount(); ++i) {
+        QCPAxisRect *rect = m_plot->axisRect(i);
+        const QString where = QString::number(i);
+        QCPAxis *values = rect->axis(QCPAxis::atLeft);
+        const auto *legend = qobject_cast<QCPLegend *>(rect->insetLayout()->elementAt(0));
+        QVERIFY(legend);
+        if (i >= 4) { // a band's rect: its 1.0
+            const double one = values->coordToPixel(1.0);
+            QVERIFY2(one > legend->outerRect().bottom(), qPrintable(where));
+            QVERIFY2(one > titleBottoms[rect], qPrintable(where));
+        }
+        // At least two value labels (a band's 0 and 1), none over the next.
+        const QFontMetrics metrics(values->tickLabelFont());
+        std::vector<double> shown;
+        for (double tick : values->tickVector()) {
+            if (values->range().contains(tick))
+                shown.push_back(values->coordToPixel(tick));
+        }
+        QVERIFY2(shown.size() >= 2, qPrintable(where));
+        for (size_t t = 1; t < shown.size(); ++t)
+            QVERIFY2(std::abs(shown[t] - shown[t - 1]) >= metrics.height(), qPrintable(where));
+    }
 }
 
 QTEST_MAIN(TestPlots)
