@@ -2,13 +2,14 @@
 #include "keymapdialog.h"
 
 #include "handdrive.h"
+#include "windowplacement.h"
 
 #include <QAction>
 #include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QMainWindow>
-#include <QScreen>
+#include <QMetaEnum>
 #include <QScrollBar>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -27,6 +28,25 @@ struct Group
     QString title;
     std::vector<std::pair<QString, QString>> rows;
 };
+
+/**
+ * The keys shown for an action: a standard key's first binding stands for it, its other
+ * bindings on this platform (Undo's F14, Copy's Ctrl+Ins) are left out.
+ */
+QList<QKeySequence> shownKeys(const QAction *action)
+{
+    QList<QKeySequence> keys = action->shortcuts();
+    const QMetaEnum standard = QMetaEnum::fromType<QKeySequence::StandardKey>();
+    for (int i = 0; i < standard.keyCount(); ++i) {
+        const QList<QKeySequence> bindings =
+            QKeySequence::keyBindings(QKeySequence::StandardKey(standard.value(i)));
+        if (bindings.isEmpty() || !keys.contains(bindings.first()))
+            continue;
+        for (qsizetype b = 1; b < bindings.size(); ++b)
+            keys.removeAll(bindings[b]);
+    }
+    return keys;
+}
 
 QString keysText(const QList<QKeySequence> &keys)
 {
@@ -65,7 +85,7 @@ KeyMapDialog::KeyMapDialog(QMainWindow *window) : QDialog(window)
         QString text = action->iconText();
         if (text.endsWith(QChar(0x2026)))
             text.chop(1);
-        const std::pair<QString, QString> row{keysText(action->shortcuts()), text};
+        const std::pair<QString, QString> row{keysText(shownKeys(action)), text};
         QWidget *owner = ownerOf(action);
         QDockWidget *dock = nullptr;
         for (QWidget *w = owner; w && !dock; w = w->parentWidget())
@@ -124,8 +144,10 @@ KeyMapDialog::KeyMapDialog(QMainWindow *window) : QDialog(window)
     const int wide = m_tree->columnWidth(0) + m_tree->columnWidth(1) +
                      m_tree->verticalScrollBar()->sizeHint().width() + 4 * m_tree->frameWidth() +
                      layout->contentsMargins().left() + layout->contentsMargins().right() + 16;
-    const QRect screen = window->screen()->availableGeometry();
-    resize(std::min(std::max(560, wide), screen.width()), std::min(720, screen.height()));
+    // Over the window it maps, on its screen (a dialog left to the window manager opened
+    // in a corner of another screen); kept there once framed.
+    setGeometry(WindowPlacement::centredOver(window, QSize(std::max(560, wide), 720)));
+    new WindowPlacement(this);
 }
 
 } // namespace semhap

@@ -12,7 +12,13 @@ namespace {
 QAction *makeAction(QUndoStack *stack, QWidget *owner, bool redo)
 {
     auto *action = new QAction(redo ? UndoActions::tr("Redo") : UndoActions::tr("Undo"), owner);
-    action->setShortcuts(redo ? QKeySequence::Redo : QKeySequence::Undo);
+    QList<QKeySequence> keys =
+        QKeySequence::keyBindings(redo ? QKeySequence::Redo : QKeySequence::Undo);
+    // Ctrl+Y redoes on every platform, as it does on some (the manual promises it).
+    const QKeySequence redoY(Qt::CTRL | Qt::Key_Y);
+    if (redo && !keys.contains(redoY))
+        keys.append(redoY);
+    action->setShortcuts(keys);
     action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     const QString key = action->shortcut().toString(QKeySequence::NativeText);
     const auto describe = [action, key, redo](const QString &command) {

@@ -21,7 +21,10 @@ class UndoActions
 public:
     /** Undoes `stack`'s last command; Ctrl+Z while the focus is in `owner`, which holds it. */
     static QAction *undo(QUndoStack *stack, QWidget *owner);
-    /** Redoes `stack`'s next command; the platform's redo key while the focus is in `owner`. */
+    /**
+     * Redoes `stack`'s next command; the platform's redo keys and Ctrl+Y while the focus is
+     * in `owner`.
+     */
     static QAction *redo(QUndoStack *stack, QWidget *owner);
 };
 

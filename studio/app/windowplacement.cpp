@@ -7,6 +7,8 @@
 #include <QWidget>
 #include <QWindow>
 
+#include <algorithm>
+
 namespace semhap {
 
 namespace {
@@ -54,6 +56,18 @@ QMargins WindowPlacement::expectedFrame()
 QRect WindowPlacement::defaultGeometry(const QWidget *window)
 {
     return defaultGeometry(window->screen()->availableGeometry(), expectedFrame());
+}
+
+QRect WindowPlacement::centredOver(const QWidget *parent, const QSize &size)
+{
+    const QRect room = parent->screen()->availableGeometry().marginsRemoved(expectedFrame());
+    QRect geometry(QPoint(), size.boundedTo(room.size()));
+    geometry.moveCenter(parent->geometry().center());
+    geometry.moveRight(std::min(geometry.right(), room.right()));
+    geometry.moveBottom(std::min(geometry.bottom(), room.bottom()));
+    geometry.moveLeft(std::max(geometry.left(), room.left()));
+    geometry.moveTop(std::max(geometry.top(), room.top()));
+    return geometry;
 }
 
 bool WindowPlacement::keepOnScreen(QWidget *window)

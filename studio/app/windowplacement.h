@@ -32,6 +32,12 @@ public:
     static QRect defaultGeometry(const QRect &available, const QMargins &frame);
     /** The frame a window manager will likely put around a window not yet shown. */
     static QMargins expectedFrame();
+    /**
+     * The geometry (without frame) of a window of `size` opened over `parent`: centred on
+     * it, shrunk and moved so that it lies inside the parent's screen's available area with
+     * the expected frame.
+     */
+    static QRect centredOver(const QWidget *parent, const QSize &size);
     /** The default geometry on `window`'s screen, for a window not yet shown. */
     static QRect defaultGeometry(const QWidget *window);
     /**

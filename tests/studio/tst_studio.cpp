@@ -2075,14 +2075,44 @@ void TestStudio::keyMapAndManual()
     KeyMapDialog *map = nullptr;
     QTRY_VERIFY((map = window.findChild<KeyMapDialog *>()) && map->isVisible());
 
-    QMultiHash<QString, QString> rows; // keys -> what they do
+    // Over the window and on its screen (it opened wherever the window manager chose).
+    QVERIFY(QTest::qWaitForWindowExposed(map));
+    QTRY_VERIFY(window.screen()->availableGeometry().contains(map->frameGeometry()));
+    QVERIFY(window.geometry().contains(map->geometry().center()));
+
+    QMultiHash<QString, QString> rows;                      // keys -> what they do
+    std::map<QString, QMultiHash<QString, QString>> groups; // heading -> its rows
     for (int g = 0; g < map->tree()->topLevelItemCount(); ++g) {
         const QTreeWidgetItem *group = map->tree()->topLevelItem(g);
-        for (int r = 0; r < group->childCount(); ++r)
+        for (int r = 0; r < group->childCount(); ++r) {
             rows.insert(group->child(r)->text(0), group->child(r)->text(1));
+            groups[group->text(0)].insert(group->child(r)->text(0), group->child(r)->text(1));
+        }
     }
     const auto keys = [](const QKeySequence &key) {
         return key.toString(QKeySequence::NativeText);
+    };
+    // Undo as its portable key only (it showed "Ctrl+Z, F14"); the Router's redo has Ctrl+Y
+    // as the manual says, and the map says so for each editor.
+    const QString undo = window.findChild<QAction *>("routerUndo")->iconText();
+    const QString redo = window.findChild<QAction *>("routerRedo")->iconText();
+    for (const QString &dock : {QString("routerDock"), QString("patternsDock")}) {
+        const QString heading = de ? QString("Im Bereich %1") : QString("In the %1 panel");
+        const auto &group =
+            groups[heading.arg(window.findChild<QDockWidget *>(dock)->windowTitle())];
+        QCOMPARE(group.value(keys(QKeySequence(Qt::CTRL | Qt::Key_Z))), undo);
+        QCOMPARE(group.key(redo), keys(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)) + ", " +
+                                      keys(QKeySequence(Qt::CTRL | Qt::Key_Y)));
+    }
+    // A standard key's other bindings on this platform (F14 for Undo) are left out.
+    const auto platformExtra = [](const QKeySequence &key) {
+        const QMetaEnum standard = QMetaEnum::fromType<QKeySequence::StandardKey>();
+        for (int i = 0; i < standard.keyCount(); ++i) {
+            if (QKeySequence::keyBindings(QKeySequence::StandardKey(standard.value(i)))
+                    .indexOf(key) > 0)
+                return true;
+        }
+        return false;
     };
     QCOMPARE(rows.value(keys(Qt::Key_Escape)), stopAll);
     QVERIFY2(rows.value(keys(QKeySequence(Qt::CTRL | Qt::Key_Comma))).startsWith(preferences),
@@ -2097,7 +2127,8 @@ void TestStudio::keyMapAndManual()
             for (auto it = rows.begin(); it != rows.end() && !listed; ++it)
                 listed = it.key().split(", ").contains(keys(shortcut)) &&
                          action->iconText().startsWith(it.value());
-            QVERIFY2(listed, qPrintable(keys(shortcut) + " " + action->iconText()));
+            QVERIFY2(listed != platformExtra(shortcut),
+                     qPrintable(keys(shortcut) + " " + action->iconText()));
         }
     }
     savePicture(map, "keymap");
