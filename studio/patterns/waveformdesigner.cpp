@@ -302,7 +302,10 @@ QWidget *WaveformDesigner::createEditor()
     m_tree->setObjectName(QStringLiteral("signalTree"));
     m_tree->setHeaderHidden(true);
     m_tree->setColumnCount(1);
-    m_tree->header()->setStretchLastSection(true);
+    // Rows read whole (a stage's times and levels were elided at 1280 px): the column is
+    // as wide as its longest row and the tree scrolls sideways when the pane is narrower.
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem *item) {
         if (!item)
             return;

@@ -18,6 +18,7 @@
 #include <QStyleOptionFrame>
 #include <QTabBar>
 #include <QTest>
+#include <QTreeView>
 #include <QWidget>
 
 #include <algorithm>
@@ -63,8 +64,9 @@ inline QRect shownPart(const QWidget *widget, const QWidget *root)
  * The texts and fields a user cannot read whole, as `class path 'text' (needs W px, has H
  * px)`: visible labels (not word-wrapped, not eliding rich text) and buttons whose text is
  * wider than the room they have; line edits whose text or placeholder, combo boxes and spin
- * boxes whose current text does not fit; and any of them what holds it cuts (a scroll
- * area only sideways). Screenshot tests fail on them, in every language.
+ * boxes whose current text does not fit; the cells of tree views' rows in view that are
+ * elided; and any of them what holds it cuts (a scroll area only sideways). Screenshot
+ * tests fail on them, in every language.
  */
 /**
  * Whether `widget` shows when `root` does: visible to it, and not in a dock behind another
@@ -166,6 +168,31 @@ inline QStringList clippedTexts(const QWidget *root)
         // Its text is drawn by a line edit inside it, with QLineEdit's 2 px a side.
         if (const QLineEdit *edit = spin->findChild<QLineEdit *>())
             check(spin, spin->text(), edit->width() - 4);
+    }
+    for (const QTreeView *tree : root->findChildren<QTreeView *>()) {
+        if (!showsIn(tree, root))
+            continue;
+        // Each row shown, each column: the delegate elides what its cell lacks room for
+        // (the cell less the style's text margins, a focus frame's and a pixel a side).
+        const int margins =
+            2 * (tree->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, tree) + 1);
+        const QAbstractItemModel *model = tree->model();
+        for (QModelIndex row = tree->indexAt(QPoint(1, 1)); row.isValid();
+             row = tree->indexBelow(row)) {
+            for (int column = 0; column < model->columnCount(row.parent()); ++column) {
+                const QModelIndex cell = row.siblingAtColumn(column);
+                const QString text = cell.data(Qt::DisplayRole).toString();
+                if (tree->isColumnHidden(column) || text.isEmpty() ||
+                    tree->isFirstColumnSpanned(row.row(), row.parent()))
+                    continue;
+                const QVariant font = cell.data(Qt::FontRole);
+                const QFontMetrics metrics(font.isValid() ? font.value<QFont>() : tree->font());
+                const int needed = metrics.horizontalAdvance(text);
+                const int room = tree->visualRect(cell).width() - margins;
+                if (needed > room)
+                    report(tree, text, needed, room);
+            }
+        }
     }
     return clipped;
 }
