@@ -7,6 +7,7 @@
 #include "levelmeter.h"
 #include "runhistory.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -16,6 +17,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTimer>
 #include <QTreeWidget>
@@ -136,9 +138,14 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     m_rowsLayout->setContentsMargins(0, 0, 0, 0);
     m_rowsLayout->addStretch();
     auto *scroll = new QScrollArea;
+    scroll->setObjectName(QStringLiteral("rowsScroll"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(rowsWidget);
+    // A wheel notch moves one device's row (eventFilter): QScrollArea steps a twentieth of
+    // the widget's height when it was set, before any row was there.
+    rowsWidget->installEventFilter(this);
+    m_rowsScroll = scroll;
     auto *arm = new QPushButton(tr("Arm all"), this);
     arm->setObjectName(QStringLiteral("armAll"));
     auto *disarm = new QPushButton(tr("Disarm all"), this);
@@ -206,6 +213,23 @@ void DevicesPanel::showEvent(QShowEvent *event)
     QWidget::showEvent(event);
 }
 
+bool DevicesPanel::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_rowsScroll->widget() && event->type() == QEvent::Resize &&
+        m_rowsLayout->count() > 1) {
+        // Laid out already (the layout hears of a resize first).
+        const int row = m_rowsLayout->itemAt(0)->geometry().height() + m_rowsLayout->spacing();
+        m_rowsScroll->verticalScrollBar()->setSingleStep(
+            std::max(1, row / QApplication::wheelScrollLines()));
+    }
+    auto *box = qobject_cast<QComboBox *>(watched);
+    if (event->type() == QEvent::Wheel && box && !box->hasFocus()) {
+        QApplication::sendEvent(m_rowsScroll->verticalScrollBar(), event);
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 void DevicesPanel::rescan()
 {
     const std::vector<PortInfo> ports = m_manager.present();
@@ -265,6 +289,9 @@ void DevicesPanel::rebuildRows()
         row->uri->setInsertPolicy(QComboBox::NoInsert);
         row->uri->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
         row->uri->setMinimumContentsLength(12);
+        // Scrolling the rows over it must not change a binding's address (eventFilter).
+        row->uri->setFocusPolicy(Qt::StrongFocus);
+        row->uri->installEventFilter(this);
         row->uri->setToolTip(
             tr("The URI to drive %1: pick a present device or type one").arg(device.name));
         auto *connectButton = new QPushButton(tr("Connect"), box);

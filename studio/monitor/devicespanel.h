@@ -11,6 +11,7 @@ class QLabel;
 class QLineEdit;
 class QSplitter;
 class QTimer;
+class QScrollArea;
 class QTreeWidget;
 class QVBoxLayout;
 
@@ -51,6 +52,11 @@ signals:
 protected:
     void showEvent(QShowEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    /**
+     * The wheel over a row's address box that has no focus scrolls the rows instead; a
+     * notch scrolls them by a row.
+     */
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     struct Row;
@@ -67,6 +73,7 @@ private:
     QLineEdit *m_address = nullptr;
     QLabel *m_message = nullptr;
     QVBoxLayout *m_rowsLayout = nullptr;
+    QScrollArea *m_rowsScroll = nullptr;
     QLabel *m_armed = nullptr;
     QTimer *m_pollTimer = nullptr;
     QTimer *m_statusTimer = nullptr;

@@ -11,14 +11,18 @@
 #include "runhistory.h"
 #include "widgetchecks.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QWheelEvent>
 
 #include <atomic>
 #include <cmath>
@@ -86,6 +90,8 @@ private slots:
     void addAddress();
     void connectToEmulator();
     void metersShowTheirOwnDevice();
+    void wheelScrollsTheRows_data();
+    void wheelScrollsTheRows();
     void screenshot();
 };
 
@@ -217,6 +223,56 @@ void TestDevicesPanel::metersShowTheirOwnDevice()
     QCOMPARE(panel.findChild<LevelMeter *>(QStringLiteral("levels:") + Band)->values(), levels[1]);
     QCOMPARE(panel.findChild<LevelMeter *>(QStringLiteral("levels:left.vibro"))->values(),
              levels[0]);
+}
+
+void TestDevicesPanel::wheelScrollsTheRows_data()
+{
+    // Where the wheel event lands once Qt has passed it up from under the pointer: the
+    // rows' viewport (over a label, a meter, a gap), or an address box (over its field).
+    QTest::addColumn<QString>("over");
+    QTest::newRow("the rows") << "qt_scrollarea_viewport";
+    QTest::newRow("an address box without the focus") << "uri:band0";
+}
+
+void TestDevicesPanel::wheelScrollsTheRows()
+{
+    // Seven bands, more than the panel shows: a wheel notch scrolls the rows by one (it
+    // moved them by a fixed bit of a row), also over an address box, whose address stays
+    // (the wheel picked another one while the user only meant to scroll).
+    QFETCH(QString, over);
+    RunHistory history;
+    DeviceManager manager;
+    const DeviceModelPtr lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+    std::vector<RunDevice> devices;
+    for (int d = 0; d < 7; ++d)
+        devices.push_back({QStringLiteral("band%1").arg(d), lra4->name(), lra4->channelNames()});
+    history.start(devices, {}, {});
+    DevicesPanel panel(manager, history);
+    panel.resize(420, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto *rows = panel.findChild<QScrollArea *>(QStringLiteral("rowsScroll"));
+    QVERIFY(rows);
+    QScrollBar *bar = rows->verticalScrollBar();
+    QVERIFY(bar->maximum() > 0);
+    QCOMPARE(bar->value(), 0);
+    auto *address = panel.findChild<QComboBox *>(QStringLiteral("uri:band0"));
+    QVERIFY(address->count() > 1);
+    const QString before = address->currentText();
+    QWidget *target = rows->findChild<QWidget *>(over);
+    QVERIFY(target);
+    QVERIFY(!target->hasFocus());
+    const QPointF at = QRectF(target->rect()).center();
+    QWheelEvent wheel(at, target->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(target, &wheel);
+    // The next row at the top, but for the step's rounding.
+    const auto *next = address->parentWidget()->parentWidget()->findChild<QComboBox *>(
+        QStringLiteral("uri:band1"));
+    const int row = next->parentWidget()->y();
+    QVERIFY2(std::abs(bar->value() - row) < QApplication::wheelScrollLines(),
+             qPrintable(QStringLiteral("%1 for %2").arg(bar->value()).arg(row)));
+    QCOMPARE(address->currentText(), before);
 }
 
 /** With SEMHAP_SCREENSHOTS=DIR: the panel of a bimanual run, for docs/screenshots. */
