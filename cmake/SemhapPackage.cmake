@@ -52,10 +52,18 @@ install(FILES ${semhap_desktop}/semhap.bash-completion
     DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME semhap-studio)
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/../resources/traces/demo.jsonl
     DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
-# The manual and the reference pages with their pictures: the studio's Help → Documentation
-# opens the installed studio.md.
-install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}
+# The manual and the reference pages with their pictures, and the READMEs they link to, laid
+# out as in the sources, so that every link between them works where they are installed
+# (tests/package checks): the studio's Help → Documentation opens docs/studio.md.
+install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
     FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
+foreach(readme README.md cli/README.md core/README.md devices/PROTOCOL.md devices/README.md
+        patterns/README.md resources/README.md sim/README.md studio/README.md
+        tests/bench/README.md)
+    get_filename_component(folder ${readme} DIRECTORY)
+    install(FILES ${CMAKE_CURRENT_LIST_DIR}/../${readme}
+        DESTINATION ${CMAKE_INSTALL_DOCDIR}/${folder})
+endforeach()
 
 # Man pages from the programs' own --help (help2man), so they list every option there is.
 find_program(HELP2MAN help2man)

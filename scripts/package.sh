@@ -28,7 +28,7 @@ smoke() { # PREFIX: the installed programs work
     "$bin/semhap" route --router C3 --frames "$share/doc/semhap/examples/demo.jsonl" \
         --events "$tree/events.jsonl"
     [ -s "$tree/events.jsonl" ]
-    [ -s "$share/doc/semhap/studio.md" ] # the studio's Help → Documentation
+    [ -s "$share/doc/semhap/docs/studio.md" ] # the studio's Help → Documentation
     xvfb-run -a -s '-screen 0 1600x1200x24' "$bin/semhap-studio" --screenshot "$tree/studio.png" \
         --quit-after 3 --size 1280x800
     [ -s "$tree/studio.png" ]

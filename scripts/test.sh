@@ -8,7 +8,8 @@
 #     within 10 s;
 #  3. the Debian package (scripts/package.sh): built, validated, run from its extracted tree
 #     and installed with apt;
-#  4. the exported CMake package: an outside project's Qt Test against the installed core;
+#  4. the exported CMake package: an outside project's Qt Test against the installed core,
+#     and every link of the installed documentation leading to an installed file;
 #  5. the docs: every relative link in a Markdown file resolves inside the repository.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -44,8 +44,8 @@ public:
     void setLanguage(const QString &language);
 
     /**
-     * The manual (docs/studio.md): installed with the programs (`share/doc/semhap`), else in
-     * the sources the build came from; empty when neither is there.
+     * The manual (docs/studio.md): installed with the programs (`share/doc/semhap/docs`),
+     * else in the sources the build came from; empty when neither is there.
      */
     static QUrl manualUrl();
 

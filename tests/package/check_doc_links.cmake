@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: MIT
+# Every relative link of the installed documentation leads to an installed file:
+# cmake -DDOCS=PREFIX/share/doc/semhap -P check_doc_links.cmake
+cmake_minimum_required(VERSION 3.25)
+if(NOT IS_DIRECTORY "${DOCS}")
+    message(FATAL_ERROR "${DOCS}: no installed documentation")
+endif()
+file(GLOB_RECURSE pages "${DOCS}/*.md")
+if(NOT pages)
+    message(FATAL_ERROR "${DOCS}: no pages")
+endif()
+set(dead "")
+foreach(page IN LISTS pages)
+    file(READ "${page}" text)
+    get_filename_component(folder "${page}" DIRECTORY)
+    # Markdown links and pictures: ](target) or ](target#anchor), without spaces or
+    # parentheses (code has those). Brackets group list items in CMake: they go first.
+    string(REPLACE "](" "=>link(" text "${text}")
+    string(REPLACE "[" " " text "${text}")
+    string(REPLACE "]" " " text "${text}")
+    string(REGEX MATCHALL "=>link\\([^)( \t\n]+\\)" links "${text}")
+    foreach(link IN LISTS links)
+        string(REGEX REPLACE "^=>link\\(([^)#]*).*\\)$" "\\1" target "${link}")
+        if(target STREQUAL "" OR target MATCHES "^[a-z]+:")
+            continue() # an anchor in the page, or a web address
+        endif()
+        if(NOT EXISTS "${folder}/${target}")
+            file(RELATIVE_PATH where "${DOCS}" "${page}")
+            list(APPEND dead "${where}: ${target}")
+        endif()
+    endforeach()
+endforeach()
+if(dead)
+    list(JOIN dead "\n  " listing)
+    message(FATAL_ERROR "dead links in the installed documentation:\n  ${listing}")
+endif()
+list(LENGTH pages count)
+message(STATUS "${count} installed pages, every link leads somewhere")
