@@ -117,6 +117,18 @@ void fill(RunHistory &history)
     history.commit();
 }
 
+/** Both hands, with detectors, and seven two-channel bands (a bimanual router, a live rig). */
+void startBimanual(RunHistory &history)
+{
+    std::array<GripperThresholds, 2> thresholds{};
+    thresholds[size_t(Gripper::Right)] = rightThresholds();
+    thresholds[size_t(Gripper::Left)] = rightThresholds();
+    std::vector<RunDevice> devices;
+    for (int d = 0; d < 7; ++d)
+        devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
+    history.start(devices, thresholds, {"right.force", "right.slip"});
+}
+
 template<typename T> T *itemNamed(QCustomPlot *plot, const QString &name)
 {
     for (int i = 0; i < plot->itemCount(); ++i) {
@@ -557,13 +569,7 @@ void TestPlots::manyDevicesScroll()
 {
     // Both hands and seven devices (the bimanual task, a live rig) in a short dock: every
     // rect keeps room to be read and the panel scrolls, rather than squash them to strips.
-    std::array<GripperThresholds, 2> thresholds{};
-    thresholds[size_t(Gripper::Right)] = rightThresholds();
-    thresholds[size_t(Gripper::Left)] = rightThresholds();
-    std::vector<RunDevice> devices;
-    for (int d = 0; d < 7; ++d)
-        devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
-    m_history->start(devices, thresholds, {"right.force", "right.slip"});
+    startBimanual(*m_history);
     m_panel->resize(640, 600);
     QTest::qWait(50);
     m_plot->replot();
@@ -592,13 +598,7 @@ void TestPlots::dataAndLabelsStayClear()
     // 1.0 runs below its rect's title and legend (it ran behind them), and no two value
     // labels of a rect overlap (the force's seven did in a short rect, as at 1920×1080).
     QFETCH(int, height);
-    std::array<GripperThresholds, 2> thresholds{};
-    thresholds[size_t(Gripper::Right)] = rightThresholds();
-    thresholds[size_t(Gripper::Left)] = rightThresholds();
-    std::vector<RunDevice> devices;
-    for (int d = 0; d < 7; ++d)
-        devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
-    m_history->start(devices, thresholds, {"right.force", "right.slip"});
+    startBimanual(*m_history);
     for (int k = 0; k <= Ticks; ++k) {
         for (Gripper gripper : {Gripper::Right, Gripper::Left})
             m_history->append(frameAt(k / 10.0, gripper));
