@@ -1855,10 +1855,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>%1×</translation>
     </message>
     <message>
-        <source>Re-route with the editor&apos;s router</source>
-        <translation>Mit dem Router des Editors neu leiten</translation>
-    </message>
-    <message>
         <source>Run the recorded contact frames through the router in the router editor</source>
         <translation>Die aufgezeichneten Kontakt-Frames durch den Router im Router-Editor leiten</translation>
     </message>
@@ -1933,6 +1929,10 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Router: %1, edited (it routes differently from %1)</source>
         <translation>Router: %1, bearbeitet (leitet anders als %1)</translation>
+    </message>
+    <message>
+        <source>Re-route</source>
+        <translation>Neu leiten</translation>
     </message>
 </context>
 <context>

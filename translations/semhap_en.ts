@@ -1852,10 +1852,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Re-route with the editor&apos;s router</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Run the recorded contact frames through the router in the router editor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1929,6 +1925,10 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Router: %1, edited (it routes differently from %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-route</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

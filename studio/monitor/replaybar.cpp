@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "replaybar.h"
 
+#include "elidinglabel.h"
 #include "sessionreplay.h"
 
 #include <QComboBox>
@@ -63,12 +64,13 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
     m_about = new QLabel(this);
     m_about->setObjectName(QStringLiteral("replayAbout"));
     layout->addWidget(m_about);
-    m_source = new QLabel(this);
+    // Short of room, the words before the router's name go first; the tooltip keeps them.
+    m_source = new ElidingLabel(this);
     m_source->setObjectName(QStringLiteral("replaySource"));
     layout->addWidget(m_source);
     m_reroute = new QToolButton(this);
     m_reroute->setObjectName(QStringLiteral("replayReroute"));
-    m_reroute->setText(tr("Re-route with the editor's router"));
+    m_reroute->setText(tr("Re-route")); // the tooltip says through what: the bar is short
     m_reroute->setToolTip(tr("Run the recorded contact frames through the router in the "
                              "router editor"));
     connect(m_reroute, &QToolButton::clicked, this, &ReplayBar::rerouteRequested);
@@ -90,9 +92,9 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
     connect(&m_replay, &SessionReplay::opened, this, &ReplayBar::sessionOpened);
     connect(&m_replay, &SessionReplay::timeChanged, this, &ReplayBar::showTime);
     const auto showSource = [this] {
-        m_source->setText(m_replay.isRerouted()
-                              ? tr("Showing: re-routed through %1").arg(m_replay.routerName())
-                              : tr("Showing: recorded with %1").arg(m_replay.routerName()));
+        m_source->setFullText(m_replay.isRerouted()
+                                  ? tr("Showing: re-routed through %1").arg(m_replay.routerName())
+                                  : tr("Showing: recorded with %1").arg(m_replay.routerName()));
         m_recorded->setEnabled(m_replay.isRerouted());
     };
     connect(&m_replay, &SessionReplay::streamsChanged, this, showSource);

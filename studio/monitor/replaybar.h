@@ -12,6 +12,7 @@ class QToolButton;
 
 namespace semhap {
 
+class ElidingLabel;
 class SessionReplay;
 
 /**
@@ -54,7 +55,7 @@ private:
     QToolButton *m_reroute = nullptr;
     QToolButton *m_recorded = nullptr;
     QLabel *m_about = nullptr; ///< the scene and the date; its tooltip, the rest
-    QLabel *m_source = nullptr;
+    ElidingLabel *m_source = nullptr;
     QToolButton *m_close = nullptr;
     QTimer m_timer;
     QElapsedTimer m_clock;

@@ -30,6 +30,7 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -41,6 +42,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QTranslator>
 #include <QUdpSocket>
 
 #include <qcustomplot.h>
@@ -66,6 +68,8 @@ private slots:
     void recordingMidGraspShowsTheGraspFromItsStart();
     void untitledRerouteLeavesNoPickerEntry();
     void routerStatusTellsTheReplayFromTheRun();
+    void replayWordsFitTheWindow_data();
+    void replayWordsFitTheWindow();
     void cleanupTestCase();
 
 private:
@@ -120,6 +124,20 @@ QString recordWithKeys(MainWindow &window, double seconds)
         return QString();
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     return window.engine().isRecording() ? QString() : path;
+}
+
+/** Router → New ("untitled", no file) in `editor`, filled with C1's graph. */
+bool buildUntitledRouter(RouterEditor *editor)
+{
+    QString error;
+    RouterGraph c1;
+    LoadError loadError;
+    if (!editor->newFromPreset(QString(), &error) || !RouterPresets::preset("C1", &c1, &loadError))
+        return false;
+    c1.name = editor->graph().name;
+    c1.file.clear();
+    editor->setGraph(c1);
+    return true;
 }
 
 /** The latest time any of the plot's graphs holds; -1 when none holds anything. */
@@ -659,15 +677,7 @@ void TestStudioSessions::untitledRerouteLeavesNoPickerEntry()
     openSessionWithKeys(window, path);
     QVERIFY(window.engine().isReplaying());
 
-    RouterEditor *editor = window.routerEditor();
-    QString error;
-    QVERIFY(editor->newFromPreset(QString(), &error)); // Router → New: "untitled"
-    RouterGraph c1;
-    LoadError loadError;
-    QVERIFY(RouterPresets::preset("C1", &c1, &loadError));
-    c1.name = editor->graph().name;
-    c1.file.clear();
-    editor->setGraph(c1);
+    QVERIFY(buildUntitledRouter(window.routerEditor()));
     for (int round = 0; round < 2; ++round) {
         QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
         QCOMPARE(picker->currentText(), QString("untitled"));
@@ -728,6 +738,79 @@ void TestStudioSessions::routerStatusTellsTheReplayFromTheRun()
     openSessionWithKeys(window, path);
     QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
     QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
+}
+
+void TestStudioSessions::replayWordsFitTheWindow_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("source"); // what the bar says the replay shows
+    QTest::addColumn<QString>("nobody"); // what the status bar says of the operator
+    QTest::addColumn<bool>("whole");     // whether the window has room for all of it
+    const QString en = "Showing: re-routed through untitled";
+    const QString de = "Angezeigt: neu geroutet über unbenannt";
+    QTest::newRow("en-1280x800") << "en" << QSize(1280, 800) << en << "Replay: nobody drives"
+                                 << true;
+    QTest::newRow("de-1280x800") << "de" << QSize(1280, 800) << de << "Wiedergabe: niemand steuert"
+                                 << true;
+    QTest::newRow("en-1920x1080") << "en" << QSize(1920, 1080) << en << "Replay: nobody drives"
+                                  << true;
+    // Narrower than the words: the bar gives up "Angezeigt: …", never the router's name.
+    QTest::newRow("de-1100x800") << "de" << QSize(1100, 800) << de << "Wiedergabe: niemand steuert"
+                                 << false;
+}
+
+void TestStudioSessions::replayWordsFitTheWindow()
+{
+    // Re-routed through an untitled editor graph at 1280x800, the replay bar asked for more
+    // than 1280 px in German: the window grew past the screen, cutting the bar and the
+    // status bar's "Wiedergabe: niemand steuert".
+    QFETCH(QString, language);
+    QFETCH(QSize, size);
+    QFETCH(QString, source);
+    QFETCH(QString, nobody);
+    QFETCH(bool, whole);
+    QTranslator german;
+    if (language == "de") {
+        QVERIFY(german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n"));
+        QCoreApplication::installTranslator(&german);
+    }
+    const auto removeGerman = qScopeGuard([&] { QCoreApplication::removeTranslator(&german); });
+    Workspace workspace;
+    StudioOptions options = studioOptions();
+    options.size = size;
+    MainWindow window(workspace, options);
+    QVERIFY(openWindow(window));
+    const QString path = recordWithKeys(window, 0.5);
+    QVERIFY(!path.isEmpty());
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+    QVERIFY(buildUntitledRouter(window.routerEditor()));
+    QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+    QVERIFY(window.engine().replay().isRerouted());
+    auto *operatorLabel = window.findChild<QLabel *>("operatorLabel");
+    QTRY_COMPARE(operatorLabel->text(), nobody); // the status bar's timer writes it
+    QTest::qWait(100);                           // laid out and painted, for the picture
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(
+            QString("%1/replay-rerouted-%2.png").arg(shots, QTest::currentDataTag()));
+
+    // The window keeps the screen's size: nothing of either bar is beyond its edge.
+    QCOMPARE(window.size(), size);
+    QCOMPARE(clippedTexts(window.replayBar()), QStringList());
+    QCOMPARE(clippedTexts(window.statusBar()), QStringList());
+    QVERIFY(window.rect().contains(
+        QRect(operatorLabel->mapTo(&window, QPoint(0, 0)), operatorLabel->size())));
+    auto *shown = window.replayBar()->findChild<QLabel *>("replaySource");
+    QVERIFY(window.rect().contains(QRect(shown->mapTo(&window, QPoint(0, 0)), shown->size())));
+    if (whole) {
+        QCOMPARE(shown->text(), source);
+        QCOMPARE(shown->toolTip(), QString());
+    } else {
+        QVERIFY2(shown->text().startsWith(QString("…")) && shown->text().endsWith("unbenannt"),
+                 qPrintable(shown->text()));
+        QCOMPARE(shown->toolTip(), source);
+    }
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
