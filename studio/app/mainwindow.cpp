@@ -207,6 +207,7 @@ bool MainWindow::openRun(const RunOptions &options)
         syncPickers();
         return false;
     }
+    m_routerEditor->forgetApplied(); // the run loaded its router from the file or preset
     return true;
 }
 
@@ -218,6 +219,7 @@ bool MainWindow::openLiveRig(const LiveRigOptions &options)
                   error);
         return false;
     }
+    m_routerEditor->forgetApplied(); // the rig loaded its router from the file or preset
     // Frames come when the rig sends them: holding them back is for Pause.
     m_engine.run();
     statusBar()->showMessage(tr("Listening for a live rig on %1").arg(m_engine.liveUri()), 10000);

@@ -691,12 +691,18 @@ void RouterEditor::setReplaying(bool replaying)
         return;
     m_replaying = replaying;
     if (m_applied == Applied::Replay && !replaying) {
-        // The re-routing closed with the replay; the run kept its router.
-        m_status->clear();
-        m_applied = Applied::None;
+        forgetApplied(); // the re-routing closed with the replay; the run kept its router
     } else if (m_applied == Applied::Run) {
         showApplied(Applied::Run); // the run waits behind the replay, or runs again
     }
+}
+
+void RouterEditor::forgetApplied()
+{
+    if (m_applied == Applied::None)
+        return; // the line says something else (a refused link, a problem): it stays
+    m_status->clear();
+    m_applied = Applied::None;
 }
 
 void RouterEditor::showApplied(Applied to)

@@ -104,6 +104,11 @@ public:
      * Apply did names the replay or the run waiting behind it.
      */
     void setReplaying(bool replaying);
+    /**
+     * The session loaded its router afresh (another router, scene or rig), dropping what
+     * was applied: the status line stops saying what Apply did.
+     */
+    void forgetApplied();
     /** Shows the live activity of the session in `history` (null: none). */
     void setHistory(RunHistory *history);
 

@@ -70,6 +70,8 @@ private slots:
     void routerStatusTellsTheReplayFromTheRun();
     void replayWordsFitTheWindow_data();
     void replayWordsFitTheWindow();
+    void routerStatusGoesWithAnotherRouter_data();
+    void routerStatusGoesWithAnotherRouter();
     void cleanupTestCase();
 
 private:
@@ -102,8 +104,11 @@ bool sameEvents(const std::vector<SemanticEvent> &a, const std::vector<SemanticE
            });
 }
 
-/** Opens `path` as a person does: Ctrl+Alt+O, the file typed into the dialog, Return. */
-void openSessionWithKeys(MainWindow &window, const QString &path)
+/**
+ * Opens `path` as a person does: the shortcut (Ctrl+Alt+O a session, Ctrl+Shift+O a router
+ * with `modifiers`), the file typed into the dialog, Return.
+ */
+void openWithKeys(MainWindow &window, const QString &path, Qt::KeyboardModifiers modifiers)
 {
     QTimer::singleShot(0, [path] {
         QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
@@ -111,7 +116,13 @@ void openSessionWithKeys(MainWindow &window, const QString &path)
         dialog->selectFile(path);
         QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog, Qt::Key_Return);
     });
-    QTest::keyClick(&window, Qt::Key_O, Qt::ControlModifier | Qt::AltModifier);
+    QTest::keyClick(&window, Qt::Key_O, modifiers);
+}
+
+/** Opens the session at `path` with Ctrl+Alt+O. */
+void openSessionWithKeys(MainWindow &window, const QString &path)
+{
+    openWithKeys(window, path, Qt::ControlModifier | Qt::AltModifier);
 }
 
 /** Records from now until the run's time passed `seconds` more, with Ctrl+Shift+R. */
@@ -811,6 +822,44 @@ void TestStudioSessions::replayWordsFitTheWindow()
                  qPrintable(shown->text()));
         QCOMPARE(shown->toolTip(), source);
     }
+}
+
+void TestStudioSessions::routerStatusGoesWithAnotherRouter_data()
+{
+    QTest::addColumn<bool>("picker"); // the toolbar's router picker, or File → Open router
+    QTest::newRow("picker") << true;
+    QTest::newRow("open") << false;
+}
+
+void TestStudioSessions::routerStatusGoesWithAnotherRouter()
+{
+    // After Apply, another router loaded from the toolbar's picker or File → Open runs
+    // instead of the applied graph; the router editor's line still said "Applied: the
+    // running session uses this router now."
+    QFETCH(bool, picker);
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    window.findChild<QDockWidget *>("routerDock")->raise();
+    RouterEditor *editor = window.routerEditor();
+    const QLabel *status = editor->statusLabel();
+    editor->setParam("right.force", "break", 100.0);
+    QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
+    QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
+    if (picker) {
+        QVERIFY(choose(window.routerPicker(), "C1"));
+        QTRY_COMPARE(window.engine().options().router, QString("C1"));
+    } else {
+        const QString file = m_dir.filePath("mine.json");
+        QFile::remove(file);
+        QVERIFY(QFile::copy(":/semhap/routers/C1.json", file));
+        openWithKeys(window, file, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_COMPARE(window.engine().options().router, file);
+    }
+    QVERIFY(!window.engine().isRouterEdited());
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(QString("%1/router-loaded-%2.png").arg(shots, QTest::currentDataTag()));
+    QCOMPARE(status->text(), QString());
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
