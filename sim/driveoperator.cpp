@@ -63,6 +63,13 @@ void DriveOperator::act(World &world)
             DriveStatus &out = status[size_t(hand)];
             out.driven = true;
             out.target = m_glide[size_t(hand)].at(now + dt);
+            // The soft landing: coming down, the target slows as the gap below closes.
+            const double was = world.target(hand).pos[2];
+            const std::optional<double> gap = world.clearanceBelow(hand);
+            if (gap && out.target.pos[2] < was) {
+                const double speed = LandingSpeed + *gap / LandingTime;
+                out.target.pos[2] = std::max(out.target.pos[2], was - speed * dt);
+            }
             out.floor = guard(world, hand, out.target.pos[2]);
             if (out.floor)
                 out.target.pos[2] = std::max(out.target.pos[2], *out.floor);
@@ -70,7 +77,7 @@ void DriveOperator::act(World &world)
             world.setTarget(hand, out.target);
         }
         if (update.grip)
-            world.setGrip(hand, *update.grip);
+            world.setGrip(hand, guardedGrip(world, hand, *update.grip));
     }
     // The readers (the viewport, at display rate) take this lock briefly; a step that finds
     // it taken keeps the previous status rather than wait.
@@ -111,9 +118,10 @@ std::optional<double> DriveOperator::guard(const World &world, Gripper hand, dou
     const double wrist = world.gripperPose(hand).pos[2];
     const double dt = world.timestep();
     if (floor) {
-        // The user lifts: a target above the wrist is free again. (Not "above the floor": a
-        // drive holding its target on an older floor is not lifting.)
-        if (targetZ > wrist + GuardRelease)
+        // The user lifts: a target above the wrist and the floor is free again. (Not only
+        // "above the floor": a drive holding its target on an older floor is not lifting;
+        // nor is one holding it on a floor lifted off for a close.)
+        if (targetZ > std::max(wrist, *floor) + GuardRelease)
             floor.reset();
         else
             m_quiet[index] = support < GuardForce ? m_quiet[index] + dt : 0.0;
@@ -122,15 +130,37 @@ std::optional<double> DriveOperator::guard(const World &world, Gripper hand, dou
         floor = wrist;
         m_quiet[index] = 0.0;
     }
+    // A closed or closing hand hovers over what it rested on: pressed on it, the pads
+    // dragged over it and met the cube pinned between them and the table, 100-220 N in a
+    // step. It lifts off once as the close begins, then settles where nothing pushes.
+    const Update &update = m_current[index];
+    const bool gripping = update.grip && *update.grip > 0;
+    if (floor && gripping && !m_liftedOff[index])
+        *floor += LiftOff;
+    m_liftedOff[index] = gripping && floor;
     if (floor) {
         // Hold the push near GuardPush; when nothing has pushed back for a while (the cube
         // below broke or was taken), go on down, but only at the approach speed.
-        if (m_quiet[index] > GuardQuiet)
+        if (!gripping && m_quiet[index] > GuardQuiet)
             *floor -= GuardApproach * dt;
         else
-            *floor += (support - GuardPush) * GuardRate * dt;
+            *floor += (support - (gripping ? 0.0 : GuardPush)) * GuardRate * dt;
     }
     return floor;
+}
+
+double DriveOperator::guardedGrip(const World &world, Gripper hand, double command)
+{
+    bool &squeezing = m_squeezing[size_t(hand)];
+    if (command <= 0) {
+        squeezing = false;
+        return command;
+    }
+    squeezing = squeezing || world.objectBetween(hand) >= 0;
+    if (squeezing)
+        return std::min(command, world.grip(hand) + SqueezeRate * world.timestep());
+    const double approach = world.closingForce(hand, ClosingSpeed);
+    return approach > 0 ? std::min(command, approach) : command;
 }
 
 DriveStatus DriveOperator::status(Gripper hand) const

@@ -115,6 +115,8 @@ struct World::Private
     std::vector<int> objectOfBody;    ///< per body: its object index, or -1
     std::vector<double> gripOnObject; ///< per object: tip force this step
     std::vector<int> overForceSteps;  ///< per object: steps in a row above its limit
+    /** Per geom: whether it collides as loaded (sleeping clears the model's bits). */
+    std::vector<char> collides;
     long stepCount = 0;
     std::chrono::steady_clock::duration physics{};
 
@@ -145,8 +147,15 @@ struct World::Private
 
     void extract(World &world, double t);
     void checkFractures(World &world, double t);
+    /** Whether a fingertip of `gripper` touched `object` at the last step. */
+    bool touches(const World &world, Gripper gripper, int object) const;
     /** The box around a geom and its margin, as placed at the last step's start. */
     Aabb geomBox(int geom) const;
+    /**
+     * The box around the moving body whose geoms start at moverGeoms[*k] (a finger's pad of
+     * taxels is one box: fewer tests, a little more caution); *k moves past them.
+     */
+    Aabb moverBox(size_t *k) const;
     /** An upper bound on the speed of `point`, fixed to `body`. */
     double speedAt(int body, const double *point) const;
     /** The box around an object; if `moving`, grown by the wake margin and 2 steps' travel. */
@@ -285,6 +294,9 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         }
         rest.canSleep = single && !rest.colliders.empty();
     }
+    p.collides.resize(size_t(m->ngeom));
+    for (int geom = 0; geom < m->ngeom; ++geom)
+        p.collides[size_t(geom)] = m->geom_contype[geom] != 0 || m->geom_conaffinity[geom] != 0;
     // Whatever else can move and touch them wakes them: the grippers, and any other body
     // with a joint or a mocap root (a user's scene may have more).
     for (int geom = 0; geom < m->ngeom; ++geom) {
@@ -499,6 +511,15 @@ void World::Private::checkFractures(World &world, double t)
     }
 }
 
+Aabb World::Private::moverBox(size_t *k) const
+{
+    const int body = model->geom_bodyid[moverGeoms[*k]];
+    Aabb box = geomBox(moverGeoms[*k]);
+    for (; *k < moverGeoms.size() && model->geom_bodyid[moverGeoms[*k]] == body; ++*k)
+        box.unite(geomBox(moverGeoms[*k]));
+    return box;
+}
+
 Aabb World::Private::geomBox(int geom) const
 {
     const mjModel *m = model.get();
@@ -557,16 +578,14 @@ void World::Private::collectAwake(const World &world, const std::vector<char> *m
 {
     const double dt = model->opt.timestep;
     awake.clear();
-    // One box per moving body (a finger's pad of taxels is one box): fewer tests, a little
-    // more caution.
+    // One box per moving body.
     for (size_t k = 0; k < moverGeoms.size();) {
         const int body = model->geom_bodyid[moverGeoms[k]];
-        Aabb box = geomBox(moverGeoms[k]);
+        const size_t first = k;
+        Aabb box = moverBox(&k);
         double speed = 0.0;
-        for (; k < moverGeoms.size() && model->geom_bodyid[moverGeoms[k]] == body; ++k) {
-            box.unite(geomBox(moverGeoms[k]));
-            speed = std::max(speed, speedAt(body, data->geom_xpos + 3 * moverGeoms[k]));
-        }
+        for (size_t g = first; g < k; ++g)
+            speed = std::max(speed, speedAt(body, data->geom_xpos + 3 * moverGeoms[g]));
         box.grow(WakeMargin + 2 * dt * speed);
         awake.push_back(box);
     }
@@ -755,6 +774,18 @@ double World::maxGrip(Gripper gripper) const
     return 2 * d->model->actuator_ctrlrange[2 * h.actuators[0] + 1];
 }
 
+double World::closingForce(Gripper gripper, double speed) const
+{
+    // Each finger's actuator pushes with half the total; a free finger moves at the speed
+    // its damping takes all of that.
+    const Private::Hand &h = d->hands[size_t(gripper)];
+    const mjModel *m = d->model.get();
+    double damping = 0.0;
+    for (int slide : h.slides)
+        damping += m->dof_damping[m->jnt_dofadr[slide]];
+    return damping * speed;
+}
+
 double World::fingerTravel(Gripper gripper) const
 {
     const Private::Hand &h = d->hands[size_t(gripper)];
@@ -780,17 +811,7 @@ std::optional<double> World::surfaceBelow(Gripper gripper,
     const int handRoot = m->body_rootid[h.body];
     auto held = [&](int root) {
         const int object = d->objectOfBody[size_t(root)];
-        if (object < 0)
-            return false;
-        const int actor = m_objects[size_t(object)].actor;
-        for (int finger = 0; finger < 2; ++finger) {
-            const Private::Tip &tip = d->tips[size_t(int(gripper) * 2 + finger)];
-            for (int i = 0; i < tip.touchedCount; ++i) {
-                if (tip.touched[size_t(i)].actor == actor)
-                    return true;
-            }
-        }
-        return false;
+        return object >= 0 && d->touches(*this, gripper, object);
     };
     // mj_ray stops at the first geom; the gripper and what it holds are looked through by
     // casting again just below them. A gripper has a few dozen geoms at most in a column.
@@ -809,6 +830,84 @@ std::optional<double> World::surfaceBelow(Gripper gripper,
         from[2] = z - 1e-4;
     }
     return std::nullopt;
+}
+
+std::optional<double> World::clearanceBelow(Gripper gripper) const
+{
+    const mjModel *m = d->model.get();
+    const mjData *dd = d->data.get();
+    const int handRoot = m->body_rootid[d->hands[size_t(gripper)].body];
+    // What goes down with the hand: a box per finger (its pad of taxels), and the objects its
+    // fingertips touch (a held cube lands before the pads do).
+    std::vector<Aabb> moving;
+    for (size_t k = 0; k < d->moverGeoms.size();) {
+        const int body = m->geom_bodyid[d->moverGeoms[k]];
+        const Aabb box = d->moverBox(&k);
+        if (m->body_rootid[body] == handRoot)
+            moving.push_back(box);
+    }
+    for (size_t i = 0; i < m_objects.size(); ++i) {
+        if (!m_objects[i].broken && d->touches(*this, gripper, int(i)))
+            moving.push_back(d->objectBox(*this, i, false));
+    }
+    std::optional<double> clearance;
+    for (int geom = 0; geom < m->ngeom; ++geom) {
+        const int root = m->body_rootid[m->geom_bodyid[geom]];
+        const int object = d->objectOfBody[size_t(root)];
+        if (root == handRoot || !d->collides[size_t(geom)] ||
+            (object >= 0 &&
+             (m_objects[size_t(object)].broken || d->touches(*this, gripper, object))))
+            continue;
+        // A plane (the floor) is taken as level and endless; anything else by its box.
+        const bool plane = m->geom_type[geom] == mjGEOM_PLANE;
+        const Aabb box = d->geomBox(geom);
+        const double top = plane ? dd->geom_xpos[3 * geom + 2] : box.high[2];
+        for (const Aabb &mover : moving) {
+            const bool under =
+                plane || (box.low[2] < mover.low[2] && box.low[0] <= mover.high[0] &&
+                          mover.low[0] <= box.high[0] && box.low[1] <= mover.high[1] &&
+                          mover.low[1] <= box.high[1]);
+            if (under)
+                clearance = std::min(clearance.value_or(1e9), std::max(0.0, mover.low[2] - top));
+        }
+    }
+    return clearance;
+}
+
+int World::objectBetween(Gripper gripper) const
+{
+    const Private::Tip &left = d->tips[size_t(int(gripper) * 2)];
+    const Private::Tip &right = d->tips[size_t(int(gripper) * 2 + 1)];
+    int actor = -1;
+    double hardest = -1.0;
+    for (int i = 0; i < left.touchedCount; ++i) {
+        for (int j = 0; j < right.touchedCount; ++j) {
+            const Private::Touch &a = left.touched[size_t(i)];
+            const Private::Touch &b = right.touched[size_t(j)];
+            if (a.actor >= 0 && a.actor == b.actor && a.force + b.force > hardest) {
+                hardest = a.force + b.force;
+                actor = a.actor;
+            }
+        }
+    }
+    for (size_t i = 0; i < m_objects.size() && actor >= 0; ++i) {
+        if (m_objects[i].actor == actor)
+            return int(i);
+    }
+    return -1;
+}
+
+bool World::Private::touches(const World &world, Gripper gripper, int object) const
+{
+    const int actor = world.m_objects[size_t(object)].actor;
+    for (int finger = 0; finger < 2; ++finger) {
+        const Tip &tip = tips[size_t(int(gripper) * 2 + finger)];
+        for (int i = 0; i < tip.touchedCount; ++i) {
+            if (tip.touched[size_t(i)].actor == actor)
+                return true;
+        }
+    }
+    return false;
 }
 
 Pose World::gripperPose(Gripper gripper) const

@@ -86,6 +86,11 @@ public:
     Pose gripperPose(Gripper gripper) const;
     /** How far the fingers have closed from fully open (m, the mean of both fingers). */
     double fingerTravel(Gripper gripper) const;
+    /**
+     * The total grip force (N) that closes the free fingers at `speed` (m/s) against their
+     * joints' damping; 0 when the joints have none (the speed is then not the force's).
+     */
+    double closingForce(Gripper gripper, double speed) const;
     /** The highest total grip force the actuators can give (N). */
     double maxGrip(Gripper gripper) const;
     /**
@@ -100,6 +105,19 @@ public:
      * when nothing is below.
      */
     std::optional<double> surfaceBelow(Gripper gripper, const std::array<double, 3> &point) const;
+    /**
+     * How far (m) the gripper can go straight down before what touches first (a fingertip,
+     * or an object its fingertips touch) meets something: the smallest vertical gap between
+     * the boxes around them and the boxes around what lies below them; 0 once they touch.
+     * Conservative for tilted shapes (their boxes are larger); none when nothing is below.
+     */
+    std::optional<double> clearanceBelow(Gripper gripper) const;
+
+    /**
+     * The object both fingertips of `gripper` touched at the last step (the one they pressed
+     * hardest, if several), or -1: what the fingers hold or are closing on.
+     */
+    int objectBetween(Gripper gripper) const;
 
     /** The contact frame of the last step (t = the time its contacts were computed). */
     const ContactFrame &frame(Gripper gripper) const;

@@ -396,14 +396,18 @@ bool HandDrive::move(const DriveRates &rates, double seconds)
                                       step * (rates.forward * awayY - rates.right * awayX),
                                       step * rates.up};
     // The guard: while the fingers rest on something, the target stays above the floor the
-    // simulation reports, so releasing "down" and pressing "up" lifts at once.
-    const std::optional<double> floor = status(m_active).floor;
+    // simulation reports, so releasing "down" and pressing "up" lifts at once. Landing, the
+    // simulation lowers the target slower than the keys did: "up" starts from its target.
+    const DriveStatus now = status(m_active);
     for (size_t axis = 0; axis < 3; ++axis) {
         const double lo = m_workspace.center[axis] - m_workspace.half[axis];
         const double hi = m_workspace.center[axis] + m_workspace.half[axis];
-        double next = hand.target.pos[axis] + delta[axis];
-        if (axis == 2 && floor && delta[2] < 0)
-            next = std::max(next, *floor);
+        double from = hand.target.pos[axis];
+        if (axis == 2 && now.driven && delta[2] > 0)
+            from = std::max(from, now.target.pos[2]);
+        double next = from + delta[axis];
+        if (axis == 2 && now.floor && delta[2] < 0)
+            next = std::max(next, *now.floor);
         hand.target.pos[axis] = std::clamp(next, lo, hi);
     }
     const double turnStep = TurnRate * seconds * scale;

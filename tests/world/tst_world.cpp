@@ -93,6 +93,8 @@ private slots:
     void sceneStateRoundTrip_data();
     void sceneStateRoundTrip();
     void restingCubesSleepUntilTouched();
+    void clearanceBelowThePads_data();
+    void clearanceBelowThePads();
 };
 
 void TestWorld::scenesLoad_data()
@@ -434,6 +436,38 @@ void TestWorld::restingCubesSleepUntilTouched()
     hold(*world, 0.5);
     QVERIFY(world->objectPosition(top)[2] - before[2] > 0.09);
     QCOMPARE(world->sleepingObjects(), 11); // cube_0, left behind, sleeps again
+}
+
+void TestWorld::clearanceBelowThePads_data()
+{
+    QTest::addColumn<double>("dy");      // the wrist beside the cube (m)
+    QTest::addColumn<double>("surface"); // the top of what the right pad is over (m)
+    // The right pad, 4.5 cm to the wrist's -y and 1 cm thick, over the cube (5 cm tall) or
+    // over the table beside it.
+    QTest::newRow("over the cube") << 0.04 << 0.05;
+    QTest::newRow("over the table") << 0.12 << 0.0;
+}
+
+void TestWorld::clearanceBelowThePads()
+{
+    QFETCH(double, dy);
+    QFETCH(double, surface);
+    QString error;
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
+    QVERIFY2(world, qPrintable(error));
+    const auto cube = world->objectPosition(0);
+    Pose target = world->target(Gripper::Right);
+    target.pos = {cube[0], cube[1] + dy, 0.16};
+    world->setTarget(Gripper::Right, target);
+    world->setGrip(Gripper::Right, -20.0);
+    for (int k = 0; k < 1000; ++k)
+        world->step();
+    // The pads' lowest taxels: 7.5 cm below the wrist, 4 mm round, 0.5 mm margin.
+    const double pads = world->gripperPose(Gripper::Right).pos[2] - 0.075 - 0.004 - 0.0005;
+    const std::optional<double> clearance = world->clearanceBelow(Gripper::Right);
+    QVERIFY(clearance);
+    QVERIFY2(std::abs(*clearance - (pads - surface)) < 0.001,
+             qPrintable(QString("%1 vs %2").arg(*clearance).arg(pads - surface)));
 }
 
 QTEST_GUILESS_MAIN(TestWorld)
