@@ -12,6 +12,8 @@ namespace {
 
 // Steps a grasped object must be out of the fingertips before the grasp counts as over.
 constexpr int GraspLostSteps = 25;
+// How high (m) the hand must have lifted a grasp for its loss to be a drop.
+constexpr double LiftedBy = 0.01;
 // An object counts as come to rest below this speed (m/s).
 constexpr double AtRest = 0.05;
 // The container is lost once its fingertips have not held it for this long (s) and it
@@ -123,13 +125,13 @@ void TaskMonitor::observeGrasp(World &world)
     if (!world.hasGripper(Gripper::Right))
         return;
     const ContactFrame &frame = world.frame(Gripper::Right);
-    int held = -1;
-    if (frame.left.actor >= 0 && frame.left.actor == frame.right.actor) {
-        for (size_t i = 0; i < world.objects().size(); ++i) {
-            if (world.objects()[i].actor == frame.left.actor && int(i) != m_container)
-                held = int(i);
-        }
-    }
+    // Held: an object both fingertips touch, whatever else they touch harder (the table, the
+    // cube beside it: which one a fingertip presses most flickers), the one already held first.
+    int held = m_grasped >= 0 && world.isBetween(Gripper::Right, m_grasped)
+                   ? m_grasped
+                   : world.objectBetween(Gripper::Right);
+    if (held == m_container)
+        held = -1;
     // A grasp ends only once the object has been out of both fingertips for a moment: an
     // object shifting in the grip loses a fingertip for a step or two.
     if (held >= 0)
@@ -137,19 +139,30 @@ void TaskMonitor::observeGrasp(World &world)
     else if (m_grasped >= 0 && ++m_lostSteps < GraspLostSteps)
         held = m_grasped;
     if (held != m_grasped && m_grasped >= 0) {
-        // A grasp ended. Unless the hand was letting go or the object broke, it slipped.
+        // A grasp ended. It was dropped if the hand had lifted and still gripped as hard as
+        // it had: not letting go (opening ramps the grip down), not broken, not a cube the
+        // fingers slid off on the pile.
         m_peakSum += m_peak;
-        if (world.grip(Gripper::Right) > 0 && !world.objects()[size_t(m_grasped)].broken)
+        const double grip = world.grip(Gripper::Right);
+        const bool lifted = m_liftedBy >= LiftedBy;
+        if (grip > 0 && grip >= m_graspGrip && lifted &&
+            !world.objects()[size_t(m_grasped)].broken)
             ++m_dropped;
     }
     if (held >= 0 && held != m_grasped) {
         ++m_grasps;
         m_peak = 0.0;
+        m_graspGrip = 0.0;
+        m_graspHeight = world.gripperPose(Gripper::Right).pos[2];
+        m_liftedBy = 0.0;
     }
     if (held >= 0) {
         m_graspForceSum += frame.totalForce();
         ++m_graspSteps;
         m_peak = std::max(m_peak, frame.totalForce());
+        m_graspGrip = std::max(m_graspGrip, world.grip(Gripper::Right));
+        m_liftedBy =
+            std::max(m_liftedBy, world.gripperPose(Gripper::Right).pos[2] - m_graspHeight);
     }
     m_grasped = held;
 }

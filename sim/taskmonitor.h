@@ -95,6 +95,9 @@ private:
     long m_graspSteps = 0;
     double m_peak = 0.0;
     double m_peakSum = 0.0;
+    double m_graspGrip = 0.0;   ///< the highest grip during the grasp (N)
+    double m_graspHeight = 0.0; ///< the wrist's height as the grasp began (m)
+    double m_liftedBy = 0.0;    ///< how high above that the wrist has been since (m)
     int m_dropped = 0;
     std::vector<bool> m_transferred;
     int m_transfers = 0;

@@ -897,6 +897,20 @@ int World::objectBetween(Gripper gripper) const
     return -1;
 }
 
+bool World::isBetween(Gripper gripper, int object) const
+{
+    const int actor = m_objects[size_t(object)].actor;
+    for (int finger = 0; finger < 2; ++finger) {
+        const Private::Tip &tip = d->tips[size_t(int(gripper) * 2 + finger)];
+        bool touched = false;
+        for (int i = 0; i < tip.touchedCount; ++i)
+            touched = touched || tip.touched[size_t(i)].actor == actor;
+        if (!touched)
+            return false;
+    }
+    return true;
+}
+
 bool World::Private::touches(const World &world, Gripper gripper, int object) const
 {
     const int actor = world.m_objects[size_t(object)].actor;

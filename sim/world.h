@@ -118,6 +118,8 @@ public:
      * hardest, if several), or -1: what the fingers hold or are closing on.
      */
     int objectBetween(Gripper gripper) const;
+    /** Whether both fingertips of `gripper` touched `object` at the last step. */
+    bool isBetween(Gripper gripper, int object) const;
 
     /** The contact frame of the last step (t = the time its contacts were computed). */
     const ContactFrame &frame(Gripper gripper) const;
