@@ -684,8 +684,8 @@ void MainWindow::toggleRecording()
         return;
     }
     QString error;
-    const QString path = PreferencesDialog::sessionsFolder() + QLatin1Char('/') +
-                         m_engine.recordingFileName(m_sessionNameEdit->text());
+    const QString path =
+        m_engine.newRecordingPath(PreferencesDialog::sessionsFolder(), m_sessionNameEdit->text());
     if (!m_engine.startRecording(path, m_notesEdit->text(), &error)) {
         m_recordAction->setChecked(false);
         showError(tr("Could not start recording"), error);

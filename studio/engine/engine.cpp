@@ -790,7 +790,7 @@ quint64 Engine::recordingDropped() const
     return m_recorder ? m_recorder->dropped() : 0;
 }
 
-QString Engine::recordingFileName(const QString &name) const
+QString Engine::newRecordingPath(const QString &folder, const QString &name) const
 {
     const QString time = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
     QString stem = name.simplified().left(80);
@@ -803,7 +803,13 @@ QString Engine::recordingFileName(const QString &name) const
         stem = (isLive() ? QStringLiteral("live") : base(m_options.scene)) + QLatin1Char('-') +
                base(m_options.router);
     }
-    return QStringLiteral("%1-%2.db").arg(stem, time);
+    // A recording stopped and started again within a second would name the same file, and
+    // a session is never overwritten: starting failed with "already exists".
+    const QString first = QStringLiteral("%1/%2-%3").arg(folder, stem, time);
+    QString path = first + QStringLiteral(".db");
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = QStringLiteral("%1-%2.db").arg(first).arg(n);
+    return path;
 }
 
 void Engine::recordInput(double t)

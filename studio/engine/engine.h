@@ -207,11 +207,12 @@ public:
     /** Values the recording dropped because the disk fell behind. */
     quint64 recordingDropped() const;
     /**
-     * A file name for a new recording: `NAME-yyyyMMdd-HHmmss.db` for the user's session
-     * name (characters a file name cannot hold become `_`), else named after the scene (or
-     * `live`) and the router.
+     * A path in `folder` for a new recording that no file has: `NAME-yyyyMMdd-HHmmss.db` for
+     * the user's session name (characters a file name cannot hold become `_`), else named
+     * after the scene (or `live`) and the router; `-2`, `-3`, … before `.db` when a recording
+     * of that second is there already.
      */
-    QString recordingFileName(const QString &name = QString()) const;
+    QString newRecordingPath(const QString &folder, const QString &name = QString()) const;
 
 signals:
     /** The source is about to be replaced or freed: let go of its world and scene feed. */

@@ -48,6 +48,7 @@ private slots:
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
+    void recordingsOfOneSecondGetTheirOwnFiles();
     void keepsTheRunBehindAReplay();
     void keepsTheRigBehindAReplay();
     void theRunsMetricsStayWithTheRun();
@@ -591,6 +592,29 @@ void TestEngine::swapsTheRouterMidGrasp()
     QVERIFY(!engine.setRouter(broken, &error));
     QVERIFY(error.contains("no_such_type"));
     QCOMPARE(engine.routerGraph().toJson(), c1.toJson());
+}
+
+void TestEngine::recordingsOfOneSecondGetTheirOwnFiles()
+{
+    // Stopped and started again within a second, a recording named the file of the one
+    // before, and starting failed ("already exists": a session is never overwritten).
+    QTemporaryDir dir;
+    Engine engine;
+    QString error;
+    QVERIFY(engine.load(options(), &error));
+    engine.run();
+    QStringList paths;
+    for (int i = 0; i < 3; ++i) {
+        const QString path = engine.newRecordingPath(dir.path(), "trial");
+        QVERIFY2(!QFileInfo::exists(path), qPrintable(path));
+        QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+        engine.stopRecording();
+        paths << QFileInfo(path).fileName();
+    }
+    engine.pause();
+    QCOMPARE(QDir(dir.path()).entryList({"*.db"}).size(), 3);
+    QVERIFY(paths[0].startsWith("trial-") && paths[0].endsWith(".db"));
+    QVERIFY(paths[1] != paths[0] && paths[2] != paths[1]);
 }
 
 void TestEngine::recordsAndReplays()
