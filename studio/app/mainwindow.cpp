@@ -67,6 +67,12 @@ const QString LiveRigEntry = QStringLiteral("semhap:live-rig");
 /** Marks a router picker entry that names what a replay shows, not a router to load. */
 constexpr int ShownByReplayRole = Qt::UserRole + 1;
 
+/**
+ * The router picker's widest name, in average characters ("mine-v2.json" fits): what the
+ * top toolbar has room for at 1280 px in German with every button and field whole.
+ */
+constexpr int RouterNameChars = 14;
+
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
 
@@ -408,7 +414,10 @@ void MainWindow::createToolBar()
     bar->addWidget(new QLabel(tr("Router:"), bar));
     m_routerPicker = new QComboBox(bar);
     m_routerPicker->setObjectName(QStringLiteral("routerPicker"));
-    m_routerPicker->setToolTip(tr("Which feedback design turns events into patterns"));
+    // It grows with a name added later (a file opened, what a replay shows) up to a limit,
+    // beyond which the name gives up its middle (syncPickers).
+    m_routerPicker->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_routerPicker->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     for (const QString &name : RouterPresets::names())
         m_routerPicker->addItem(name, name);
     connect(m_routerPicker, &QComboBox::activated, this, &MainWindow::pickRouter);
@@ -905,14 +914,27 @@ void MainWindow::syncPickers()
         entries->item(current)->setEnabled(false);
     }
     // An edit runs (or a replay shows it) under the name it started from: say so (`C3*`).
+    // A name longer than the picker's room gives up its middle, and its tooltip has it whole.
     const bool edited = m_engine.isRouterEdited();
     const QStringList presets = RouterPresets::names();
+    const QFontMetrics metrics = m_routerPicker->fontMetrics();
+    const int room = RouterNameChars * metrics.averageCharWidth();
+    QString whole;
     for (int i = 0; i < m_routerPicker->count(); ++i) {
         const QString value = m_routerPicker->itemData(i).toString();
-        const QString name = presets.contains(value) ? value : QFileInfo(value).fileName();
-        m_routerPicker->setItemText(
-            i, edited && i == m_routerPicker->currentIndex() ? name + QLatin1Char('*') : name);
+        QString name = presets.contains(value) ? value : QFileInfo(value).fileName();
+        if (edited && i == m_routerPicker->currentIndex())
+            name += QLatin1Char('*');
+        const QString shown = metrics.elidedText(name, Qt::ElideMiddle, room);
+        m_routerPicker->setItemText(i, shown);
+        m_routerPicker->setItemData(i, shown == name ? QVariant() : QVariant(name),
+                                    Qt::ToolTipRole);
+        if (shown != name && i == m_routerPicker->currentIndex())
+            whole = name;
     }
+    const QString purpose = tr("Which feedback design turns events into patterns");
+    m_routerPicker->setToolTip(whole.isEmpty() ? purpose
+                                               : QStringLiteral("%1\n%2").arg(whole, purpose));
     int speed = RealTimeIndex;
     for (int i = 0; i < SpeedCount; ++i) {
         if (std::abs(Speeds[i] - m_engine.speed()) < 1e-9)

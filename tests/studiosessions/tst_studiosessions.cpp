@@ -41,6 +41,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolBar>
 #include <QToolButton>
 #include <QTranslator>
 #include <QUdpSocket>
@@ -72,6 +73,8 @@ private slots:
     void replayWordsFitTheWindow();
     void routerStatusGoesWithAnotherRouter_data();
     void routerStatusGoesWithAnotherRouter();
+    void routerPickerShowsTheWholeName_data();
+    void routerPickerShowsTheWholeName();
     void cleanupTestCase();
 
 private:
@@ -860,6 +863,77 @@ void TestStudioSessions::routerStatusGoesWithAnotherRouter()
     if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
         window.grab().save(QString("%1/router-loaded-%2.png").arg(shots, QTest::currentDataTag()));
     QCOMPARE(status->text(), QString());
+}
+
+void TestStudioSessions::routerPickerShowsTheWholeName_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("file"); // the router file opened; empty: an untitled graph
+    QTest::addColumn<QString>("shown");
+    const QString longer = "mine-v2.json";
+    QTest::newRow("en-file") << "en" << longer << longer;
+    QTest::newRow("de-file") << "de" << longer << longer;
+    QTest::newRow("de-untitled") << "de" << QString() << "unbenannt";
+    // Longer than the toolbar has room for: the picker gives up the middle of the name.
+    const QString tooLong = "grasp-confirmations-for-participant-7.json";
+    QTest::newRow("en-too-long") << "en" << tooLong << QString();
+    QTest::newRow("de-too-long") << "de" << tooLong << QString();
+}
+
+void TestStudioSessions::routerPickerShowsTheWholeName()
+{
+    // The picker kept the width it had when the window first showed: a router opened from a
+    // file read "mine.jso", an untitled graph a German replay re-routed through "unbenar".
+    QFETCH(QString, language);
+    QFETCH(QString, file);
+    QFETCH(QString, shown);
+    QTranslator german;
+    if (language == "de") {
+        QVERIFY(german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n"));
+        QCoreApplication::installTranslator(&german);
+    }
+    const auto removeGerman = qScopeGuard([&] { QCoreApplication::removeTranslator(&german); });
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    QComboBox *picker = window.routerPicker();
+    if (file.isEmpty()) {
+        const QString path = recordWithKeys(window, 0.5);
+        QVERIFY(!path.isEmpty());
+        openSessionWithKeys(window, path);
+        QVERIFY(buildUntitledRouter(window.routerEditor()));
+        QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
+        QVERIFY(window.engine().replay().isRerouted());
+    } else {
+        const QString path = m_dir.filePath(file);
+        QFile::remove(path);
+        QVERIFY(QFile::copy(":/semhap/routers/C1.json", path));
+        openWithKeys(window, path, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_COMPARE(window.engine().options().router, path);
+    }
+    if (shown.isEmpty()) {
+        QVERIFY2(picker->currentText().contains(QString("…")) &&
+                     picker->currentText().endsWith(".json"),
+                 qPrintable(picker->currentText()));
+        QVERIFY2(picker->toolTip().contains(file), qPrintable(picker->toolTip()));
+    } else {
+        QCOMPARE(picker->currentText(), shown);
+    }
+    // The toolbar gives the picker room for its text (laid out on the next passes): the
+    // text is no wider than the picker's field (clippedTexts measures it so).
+    auto *bar = window.findChild<QToolBar *>("runToolBar");
+    QTRY_VERIFY2(clippedTexts(bar).isEmpty(), qPrintable(clippedTexts(bar).join("; ")));
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty())
+        window.grab().save(QString("%1/router-picker-%2.png").arg(shots, QTest::currentDataTag()));
+    // The window keeps the screen's width, and no top toolbar gives up a button.
+    QCOMPARE(window.width(), 1280);
+    for (QToolBar *top : window.findChildren<QToolBar *>()) {
+        if (!top->isVisible() || window.toolBarArea(top) != Qt::TopToolBarArea)
+            continue;
+        QVERIFY2(!top->findChild<QToolButton *>("qt_toolbar_ext_button")->isVisible(),
+                 qPrintable(top->objectName() + " overflows"));
+        QCOMPARE(clippedTexts(top), QStringList());
+    }
 }
 
 void TestStudioSessions::recordingMidGraspShowsTheGraspFromItsStart()
