@@ -30,7 +30,6 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
-#include <QScopeGuard>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -171,6 +170,21 @@ double lastPlotted(const QCustomPlot *plot, double *first = nullptr)
         *first = earliest;
     return last;
 }
+
+/** The studio's strings in `language` ("en" or "de") while it lives. */
+struct Speaking
+{
+    explicit Speaking(const QString &language)
+    {
+        if (language != "de")
+            return;
+        loaded = german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n");
+        QCoreApplication::installTranslator(&german);
+    }
+    ~Speaking() { QCoreApplication::removeTranslator(&german); }
+    QTranslator german;
+    bool loaded = true;
+};
 
 } // namespace
 
@@ -784,12 +798,8 @@ void TestStudioSessions::replayWordsFitTheWindow()
     QFETCH(QString, source);
     QFETCH(QString, nobody);
     QFETCH(bool, whole);
-    QTranslator german;
-    if (language == "de") {
-        QVERIFY(german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n"));
-        QCoreApplication::installTranslator(&german);
-    }
-    const auto removeGerman = qScopeGuard([&] { QCoreApplication::removeTranslator(&german); });
+    const Speaking speaking(language);
+    QVERIFY(speaking.loaded);
     Workspace workspace;
     StudioOptions options = studioOptions();
     options.size = size;
@@ -887,12 +897,8 @@ void TestStudioSessions::routerPickerShowsTheWholeName()
     QFETCH(QString, language);
     QFETCH(QString, file);
     QFETCH(QString, shown);
-    QTranslator german;
-    if (language == "de") {
-        QVERIFY(german.load(QLocale(QLocale::German), "semhap", "_", ":/i18n"));
-        QCoreApplication::installTranslator(&german);
-    }
-    const auto removeGerman = qScopeGuard([&] { QCoreApplication::removeTranslator(&german); });
+    const Speaking speaking(language);
+    QVERIFY(speaking.loaded);
     Workspace workspace;
     MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
