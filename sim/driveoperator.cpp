@@ -76,8 +76,13 @@ void DriveOperator::act(World &world)
             out.surface = world.surfaceBelow(hand, out.target.pos);
             world.setTarget(hand, out.target);
         }
-        if (update.grip)
-            world.setGrip(hand, guardedGrip(world, hand, *update.grip));
+        if (update.grip) {
+            DriveStatus &out = status[size_t(hand)];
+            out.gripCommand = *update.grip;
+            out.grip = guardedGrip(world, hand, *update.grip);
+            out.squeezing = m_squeezing[size_t(hand)];
+            world.setGrip(hand, *out.grip);
+        }
     }
     // The readers (the viewport, at display rate) take this lock briefly; a step that finds
     // it taken keeps the previous status rather than wait.

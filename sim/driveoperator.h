@@ -23,6 +23,15 @@ struct DriveStatus
      * a target may ask for. A target below it is raised to it (the guarded move).
      */
     std::optional<double> floor;
+    /**
+     * The grip force (N; negative opens) the gripper was given: the command, or less while
+     * the close is guarded. None until the hand has been given a grip.
+     */
+    std::optional<double> grip;
+    /** The grip the hand was commanded (N): what `grip` rises to. */
+    double gripCommand = 0.0;
+    /** Both pads touch one object (since the close began): the grip rises to the command. */
+    bool squeezing = false;
 };
 
 /**

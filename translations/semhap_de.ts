@@ -2252,6 +2252,22 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>W goes %1, D goes %2 · 1–4 camera</source>
         <translation>W geht %1, D geht %2 · 1–4 Kamera</translation>
     </message>
+    <message>
+        <source>Grip: %1 N asked, applied at the run&apos;s next step</source>
+        <translation>Griff: %1 N verlangt, der nächste Schritt des Laufs setzt sie um</translation>
+    </message>
+    <message>
+        <source>Grip: opening, %1 N</source>
+        <translation>Griff: öffnet, %1 N</translation>
+    </message>
+    <message>
+        <source>Grip: %1 N of %2 N, tightening on what the pads touch</source>
+        <translation>Griff: %1 N von %2 N, fasst fester, was die Backen berühren</translation>
+    </message>
+    <message>
+        <source>Grip: %1 N of %2 N, closing slowly until both pads touch</source>
+        <translation>Griff: %1 N von %2 N, schließt langsam, bis beide Backen berühren</translation>
+    </message>
 </context>
 <context>
     <name>semhap::SpaceMouseInput</name>

@@ -2249,6 +2249,22 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>W goes %1, D goes %2 · 1–4 camera</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Grip: %1 N asked, applied at the run&apos;s next step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip: opening, %1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip: %1 N of %2 N, tightening on what the pads touch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grip: %1 N of %2 N, closing slowly until both pads touch</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::SpaceMouseInput</name>

@@ -544,15 +544,10 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture, const QRectF &
         const Gripper hand = m_handDrive ? m_handDrive->activeHand() : Gripper::Right;
         title = hand == Gripper::Right ? tr("You are driving (right hand)")
                                        : tr("You are driving (left hand)");
-        if (m_handDrive && m_handDrive->command(hand)) {
-            const double grip = m_handDrive->command(hand)->grip;
-            lines << (m_handDrive->isClosed(hand)
-                          ? tr("Grip: closed, %1 N").arg(locale.toString(grip, 'f', 0))
-                          : tr("Grip: open (closes to %1 N)")
-                                .arg(locale.toString(m_handDrive->gripSetpoint(hand), 'f', 0)));
-        }
+        const DriveStatus status = m_handDrive ? m_handDrive->status(hand) : DriveStatus();
+        if (m_handDrive && m_handDrive->command(hand))
+            lines << gripLine(hand, status, locale);
         if (m_handDrive) {
-            const DriveStatus status = m_handDrive->status(hand);
             if (status.floor)
                 lines << tr("Resting on what is below: the wrist stops here");
             else if (status.driven && status.surface)
@@ -592,6 +587,28 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture, const QRectF &
     m_overlayBox = placeOverlay(box.size(), area, notice);
     box.draw(painter, m_overlayBox, colors::veil(90), 1.0);
     m_overlayText = (QStringList{title} + lines).join(QLatin1Char('\n'));
+}
+
+QString SimViewport::gripLine(Gripper hand, const DriveStatus &status, const QLocale &locale) const
+{
+    auto newtons = [&locale](double force) { return locale.toString(force, 'f', 0); };
+    const QString setpoint = newtons(m_handDrive->gripSetpoint(hand));
+    // The force the simulation applies, which the guarded close holds below the command
+    // until both pads touch the cube; none before the run's first step since driving began.
+    if (!status.grip)
+        return m_handDrive->isClosed(hand)
+                   ? tr("Grip: %1 N asked, applied at the run's next step").arg(setpoint)
+                   : tr("Grip: open (closes to %1 N)").arg(setpoint);
+    const QString applied = newtons(*status.grip);
+    if (!m_handDrive->isClosed(hand))
+        return *status.grip > 0 ? tr("Grip: opening, %1 N").arg(applied)
+                                : tr("Grip: open (closes to %1 N)").arg(setpoint);
+    if (applied == setpoint)
+        return tr("Grip: closed, %1 N").arg(applied);
+    return status.squeezing
+               ? tr("Grip: %1 N of %2 N, tightening on what the pads touch").arg(applied, setpoint)
+               : tr("Grip: %1 N of %2 N, closing slowly until both pads touch")
+                     .arg(applied, setpoint);
 }
 
 QRectF SimViewport::placeOverlay(const QSizeF &size, const QRectF &area,

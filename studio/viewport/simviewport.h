@@ -15,11 +15,13 @@
 #include <vector>
 
 class QAction;
+class QLocale;
 class QPainter;
 
 namespace semhap {
 
 class HandDrive;
+struct DriveStatus;
 
 /** The camera views a key or the View menu picks. */
 enum class CameraPreset
@@ -145,6 +147,11 @@ private:
     void changeCamera(const OrbitCamera &camera);
     /** The corner box (who drives, the keys), placed clear of handAreas() and `notice`. */
     void drawOverlay(QPainter &painter, bool hasPicture, const QRectF &notice);
+    /**
+     * The overlay's grip line for driven `hand`: the force the simulation applies (`status`)
+     * and, while the guarded close holds it lower, the force asked for.
+     */
+    QString gripLine(Gripper hand, const DriveStatus &status, const QLocale &locale) const;
     /** Where a box of `size` goes in `area`: a corner clear of handAreas() and `notice`. */
     QRectF placeOverlay(const QSizeF &size, const QRectF &area, const QRectF &notice) const;
     /** Draws the notice at the bottom; where it went. */

@@ -309,6 +309,8 @@ private slots:
     void followKeepsTheHandInView();
     void drivingOverlayLeavesTheHandInSight_data();
     void drivingOverlayLeavesTheHandInSight();
+    void drivingOverlayShowsTheAppliedGrip_data();
+    void drivingOverlayShowsTheAppliedGrip();
     void drivingPreferencesApply();
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
@@ -970,6 +972,81 @@ void TestStudio::statusBarCountsDevicesAsThePanelShowsThem()
     QTest::qWait(1000); // a band that answers would have answered by now
     QCOMPARE(shown->text(), state);
     QTRY_COMPARE(window.findChild<QLabel *>("devicesLabel")->text(), status);
+}
+
+void TestStudio::drivingOverlayShowsTheAppliedGrip_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "en";
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "de";
+}
+
+// The overlay's grip line says what the simulation applies: closing on nothing, the guarded
+// close holds the fingers to their approach force, and the line gives it with the force asked
+// for ("Grip: 6 N of 30 N"); closed on a cube, the grip reaches the command and the line says
+// so. Before, it said "closed, 30 N" from the moment Space was pressed.
+void TestStudio::drivingOverlayShowsTheAppliedGrip()
+{
+    StudioOptions o = options();
+    o.autoRun = false; // the hand where the scene starts it, above the pile
+    const std::unique_ptr<Studio> studio = startStudio(o);
+    MainWindow &window = *studio->window();
+    SimViewport *viewport = window.viewport();
+    auto *drive = window.findChild<HandDrive *>();
+    Engine &engine = window.engine();
+    const World &world = *engine.world();
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_T, Qt::ControlModifier);
+    QVERIFY(engine.isDriving());
+    const Gripper hand = drive->activeHand();
+    const double start = drive->command(hand)->target.pos[1];
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(engine.isRunning());
+    const QLocale locale;
+    auto newtons = [&locale](double force) -> QString {
+        return locale.toString(force, 'f', 0) + " N";
+    };
+    const QString asked = newtons(drive->gripSetpoint(hand));
+    // The line under the title; the numbers of it are checked once the run is paused, when the
+    // world's grip is the one the overlay was drawn from.
+    auto gripLine = [viewport] {
+        viewport->update();
+        QTest::qWait(50);
+        return viewport->overlayText().section(QLatin1Char('\n'), 1, 1);
+    };
+
+    // Closed in the air: the fingers meet with nothing between them.
+    QTest::keyClick(viewport, Qt::Key_Space);
+    QTRY_COMPARE(drive->command(hand)->grip, drive->gripSetpoint(hand));
+    QTest::qWait(300);
+    engine.pause();
+    const double approach = world.closingForce(hand, DriveOperator::ClosingSpeed);
+    QCOMPARE(world.grip(hand), approach);
+    QVERIFY(approach < drive->gripSetpoint(hand) - 1);
+    savePicture(&window, "driving-closing");
+    const QString closing = gripLine();
+    const qsizetype applied = closing.indexOf(newtons(approach));
+    QVERIFY2(applied >= 0 && closing.indexOf(asked, applied + 1) > applied,
+             qPrintable(QString("%1\nhas not %2 of %3").arg(closing, newtons(approach), asked)));
+
+    // Open, beside the pile's middle cube, down onto the pile and closed: a cube is held.
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(engine.isRunning());
+    QTest::keyClick(viewport, Qt::Key_Space);
+    QTRY_COMPARE(drive->command(hand)->grip, HandDrive::OpenGrip);
+    const QString across = driveTo(viewport, drive, 1, start - 0.06);
+    QVERIFY2(across.isEmpty(), qPrintable(across));
+    driveTo(viewport, drive, 2, 0.0);
+    QVERIFY(drive->status(hand).floor);
+    QTest::keyClick(viewport, Qt::Key_Space);
+    QTRY_VERIFY_WITH_TIMEOUT(drive->status(hand).grip == drive->gripSetpoint(hand), 10000);
+    engine.pause();
+    QVERIFY(world.objectBetween(hand) >= 0);
+    QCOMPARE(world.grip(hand), drive->gripSetpoint(hand));
+    const QString held = gripLine();
+    QVERIFY2(held.count(asked) == 1 && !held.contains(newtons(approach)), qPrintable(held));
+    savePicture(&window, "driving-holding");
 }
 
 void TestStudio::drivingPreferencesApply()
