@@ -88,7 +88,8 @@ void TaskMonitor::Failures::add(double t, const Cue &warning, double reactionTim
 }
 
 TaskMonitor::TaskMonitor(const World &world, double reactionTime)
-    : m_reactionTime(reactionTime), m_transferred(world.objects().size(), false)
+    : m_reactionTime(reactionTime), m_inGrasp(world.objects().size(), false),
+      m_transferred(world.objects().size(), false)
 {
     m_hasPlace = world.region(QStringLiteral("place"), &m_place);
     m_hasPick = world.region(QStringLiteral("pick"), &m_pick);
@@ -127,29 +128,43 @@ void TaskMonitor::observeGrasp(World &world)
     const ContactFrame &frame = world.frame(Gripper::Right);
     // Held: an object both fingertips touch, whatever else they touch harder (the table, the
     // cube beside it: which one a fingertip presses most flickers), the one already held first.
-    int held = m_grasped >= 0 && world.isBetween(Gripper::Right, m_grasped)
-                   ? m_grasped
-                   : world.objectBetween(Gripper::Right);
+    // A grasp ends only once the object has been out of both fingertips for a moment: an
+    // object shifting in the grip loses a fingertip for a step or two (also while another
+    // object is between them).
+    int held = -1;
+    if (m_grasped >= 0 && world.isBetween(Gripper::Right, m_grasped)) {
+        held = m_grasped;
+        m_lostSteps = 0;
+    } else if (m_grasped >= 0 && ++m_lostSteps < GraspLostSteps) {
+        held = m_grasped;
+    } else {
+        held = world.objectBetween(Gripper::Right);
+        m_lostSteps = 0;
+    }
     if (held == m_container)
         held = -1;
-    // A grasp ends only once the object has been out of both fingertips for a moment: an
-    // object shifting in the grip loses a fingertip for a step or two.
-    if (held >= 0)
-        m_lostSteps = 0;
-    else if (m_grasped >= 0 && ++m_lostSteps < GraspLostSteps)
-        held = m_grasped;
+    // Pads closed on two cubes side by side hold both in one grasp: when one slips out, the
+    // grasp goes on with the other, not a new one.
+    const bool goesOn = m_grasped >= 0 && held >= 0 && m_inGrasp[size_t(held)];
     if (held != m_grasped && m_grasped >= 0) {
-        // A grasp ended. It was dropped if the hand had lifted and still gripped as hard as
-        // it had: not letting go (opening ramps the grip down), not broken, not a cube the
-        // fingers slid off on the pile.
-        m_peakSum += m_peak;
+        // The object left the fingertips. It was dropped if the hand had lifted and still
+        // gripped as hard as it had: not letting go (opening ramps the grip down), not
+        // broken, not a cube the fingers slid off on the pile.
         const double grip = world.grip(Gripper::Right);
         const bool lifted = m_liftedBy >= LiftedBy;
         if (grip > 0 && grip >= m_graspGrip && lifted &&
             !world.objects()[size_t(m_grasped)].broken)
             ++m_dropped;
+        if (!goesOn) {
+            m_peakSum += m_peak;
+            std::fill(m_inGrasp.begin(), m_inGrasp.end(), false);
+        }
     }
-    if (held >= 0 && held != m_grasped) {
+    if (held >= 0) {
+        for (size_t i = 0; i < m_inGrasp.size(); ++i)
+            m_inGrasp[i] = m_inGrasp[i] || world.isBetween(Gripper::Right, int(i));
+    }
+    if (held >= 0 && held != m_grasped && !goesOn) {
         ++m_grasps;
         m_peak = 0.0;
         m_graspGrip = 0.0;

@@ -90,6 +90,8 @@ private:
     // The right hand's grasps.
     int m_grasped = -1;  ///< object held now
     int m_lostSteps = 0; ///< steps the held object has been out of the fingertips
+    /** Per object: both fingertips touched it during the grasp going on. */
+    std::vector<bool> m_inGrasp;
     int m_grasps = 0;
     double m_graspForceSum = 0.0;
     long m_graspSteps = 0;

@@ -44,6 +44,7 @@ private slots:
     void descentStopsOnTheCube();
     void drivenGraspStaysNearTheCommand_data();
     void drivenGraspStaysNearTheCommand();
+    void drivenTransferCountsOneGrasp_data();
     void drivenTransferCountsOneGrasp();
 
 private:
@@ -536,11 +537,24 @@ void TestHandDrive::drivenGraspStaysNearTheCommand()
     }
 }
 
+void TestHandDrive::drivenTransferCountsOneGrasp_data()
+{
+    QTest::addColumn<double>("dy"); // from the start over the pile (m)
+    QTest::addColumn<int>("dropped");
+    QTest::newRow("one cube") << -0.06 << 0;
+    // The pads close on two cubes side by side (the stack of cube_3 and cube_11, and
+    // cube_5); lifted, cube_3 slips out and falls on the pile (a drop) while cube_5 is carried
+    // over. Before, the grasp going on with cube_5 counted as a second grasp.
+    QTest::newRow("two cubes, one slips out") << 0.06 << 1;
+}
+
 void TestHandDrive::drivenTransferCountsOneGrasp()
 {
     // A person's pick and place at the pile's edge: down, close, up, over the partition,
-    // down, open, up. One grasp, no drop; before, the fingertips' flickering strongest
+    // down, open, up. One grasp; before, the fingertips' flickering strongest
     // contact (the cube, the table, the cube beside it) made 194 grasps and 193 drops of it.
+    QFETCH(double, dy);
+    QFETCH(int, dropped);
     QString error;
     std::unique_ptr<World> world = World::load("box_and_block", SceneOptions(), &error);
     QVERIFY2(world, qPrintable(error));
@@ -550,7 +564,7 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     drive.setOperator(&op);
     drive.setWorld(world.get());
     Pose above = world->target(Gripper::Right);
-    above.pos[1] -= 0.06;
+    above.pos[1] += dy;
     op.setTarget(Gripper::Right, above);
     op.setGrip(Gripper::Right, HandDrive::OpenGrip);
     auto run = [&](double seconds) {
@@ -574,7 +588,7 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     run(0.5);
     const QJsonObject metrics = monitor.metrics();
     QCOMPARE(metrics.value("grasps").toInt(), 1);
-    QCOMPARE(metrics.value("cubes_dropped").toInt(), 0);
+    QCOMPARE(metrics.value("cubes_dropped").toInt(), dropped);
     QVERIFY(metrics.value("cubes_transferred").toInt() >= 1);
     QCOMPARE(metrics.value("cubes_broken").toInt(), 0);
 }
