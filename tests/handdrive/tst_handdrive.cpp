@@ -17,6 +17,35 @@
 
 using namespace semhap;
 
+namespace {
+
+/** box_and_block, its right hand driven by keys, its target moved by (dx, dy) over the pile. */
+struct DrivenPile
+{
+    std::unique_ptr<World> world;
+    DriveOperator op;
+    HandDrive drive;
+
+    bool load(double dx, double dy)
+    {
+        QString error;
+        world = World::load("box_and_block", SceneOptions(), &error);
+        if (!world) {
+            qWarning("%s", qPrintable(error));
+            return false;
+        }
+        drive.setOperator(&op);
+        drive.setWorld(world.get());
+        Pose above = world->target(Gripper::Right);
+        above.pos[0] += dx;
+        above.pos[1] += dy;
+        op.setTarget(Gripper::Right, above);
+        return true;
+    }
+};
+
+} // namespace
+
 class TestHandDrive : public QObject
 {
     Q_OBJECT
@@ -493,17 +522,11 @@ void TestHandDrive::drivenGraspStaysNearTheCommand()
     QFETCH(double, dy);
     QFETCH(bool, holdDown);
     QFETCH(bool, grasps);
-    QString error;
-    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions(), &error);
-    QVERIFY2(world, qPrintable(error));
-    DriveOperator op;
-    HandDrive drive;
-    drive.setOperator(&op);
-    drive.setWorld(world.get());
-    Pose above = world->target(Gripper::Right);
-    above.pos[0] += dx;
-    above.pos[1] += dy;
-    op.setTarget(Gripper::Right, above);
+    DrivenPile pile;
+    QVERIFY(pile.load(dx, dy));
+    World *world = pile.world.get();
+    DriveOperator &op = pile.op;
+    HandDrive &drive = pile.drive;
     op.setGrip(Gripper::Right, HandDrive::OpenGrip);
     const double tick = 1.0 / 60;
     double peak = 0.0;
@@ -555,17 +578,12 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     // contact (the cube, the table, the cube beside it) made 194 grasps and 193 drops of it.
     QFETCH(double, dy);
     QFETCH(int, dropped);
-    QString error;
-    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions(), &error);
-    QVERIFY2(world, qPrintable(error));
+    DrivenPile pile;
+    QVERIFY(pile.load(0.0, dy));
+    World *world = pile.world.get();
+    DriveOperator &op = pile.op;
+    HandDrive &drive = pile.drive;
     TaskMonitor monitor(*world);
-    DriveOperator op;
-    HandDrive drive;
-    drive.setOperator(&op);
-    drive.setWorld(world.get());
-    Pose above = world->target(Gripper::Right);
-    above.pos[1] += dy;
-    op.setTarget(Gripper::Right, above);
     op.setGrip(Gripper::Right, HandDrive::OpenGrip);
     auto run = [&](double seconds) {
         runDrive(*world, op, drive, seconds, 1.0 / 60, [&] { monitor.observe(*world); });
