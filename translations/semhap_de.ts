@@ -992,6 +992,10 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>, %1 disconnected</source>
         <translation>, %1 getrennt</translation>
     </message>
+    <message>
+        <source>Latest malformed datagram: %1</source>
+        <translation>Letztes fehlerhaftes Datagramm: %1</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

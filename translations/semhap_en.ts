@@ -989,6 +989,10 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>, %1 disconnected</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Latest malformed datagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

@@ -986,6 +986,7 @@ void MainWindow::updateStatus()
                                    .arg(QFileInfo(m_engine.recordingPath()).fileName())
                                    .arg(m_engine.recordingDropped()));
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
+    m_rateLabel->setToolTip(QString()); // a live rig's says why its datagrams were refused
     if (m_engine.isReplaying()) {
         m_operatorLabel->setText(tr("Replay: nobody drives"));
         m_rateLabel->setText(tr("replay"));
@@ -1026,6 +1027,10 @@ void MainWindow::updateLiveStatus()
         m_shownRejections = rejections;
         statusBar()->showMessage(tr("Malformed datagram: %1").arg(rejection), 5000);
     }
+    // The message goes after 5 s and a narrow window cuts it: the count's tooltip keeps the
+    // reason.
+    m_rateLabel->setToolTip(rejections > 0 ? tr("Latest malformed datagram: %1").arg(rejection)
+                                           : QString());
 }
 
 void MainWindow::updateDevicesStatus()

@@ -519,6 +519,8 @@ void TestStudioSessions::windowListensToALiveRig()
     auto *rate = window.findChild<QLabel *>("rateLabel");
     QTRY_VERIFY2(rate->text().contains("1 malformed"), qPrintable(rate->text()));
     QTRY_VERIFY(window.statusBar()->currentMessage().contains("invalid JSON"));
+    // Once the message has gone (or a narrow window cut it), the count still says why.
+    QVERIFY2(rate->toolTip().contains("invalid JSON"), qPrintable(rate->toolTip()));
     QVERIFY(window.findChild<QLabel *>("operatorLabel")->text().contains("Live rig"));
     // The rig's second hand came after the plots were built for the scene's one: its rects
     // are added and every rect keeps its readable height, the panel scrolling instead.
