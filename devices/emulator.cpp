@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "emulator.h"
 
+#include "band.h"
 #include "jsonlineswriter.h"
 #include "monotonic.h"
 
@@ -44,12 +45,29 @@ void appendArray(QByteArray &line, const std::vector<double> &values)
 
 } // namespace
 
-Emulator::Emulator(const EmulatorOptions &options) : m_options(options)
+Emulator::Emulator(const EmulatorOptions &options)
+    : m_options(options), m_bandModel(std::make_unique<semhap_band_model>()),
+      m_hw(std::make_unique<semhap_band_hw>()), m_band(std::make_unique<semhap_band>())
 {
-    const int channels = options.model->channelCount();
-    m_filters.assign(size_t(channels), ResponseFilter(*options.model, options.model->rate()));
+    const DeviceModel &model = *options.model;
+    const int channels = model.channelCount();
+    m_filters.assign(size_t(channels), ResponseFilter(model, model.rate()));
     m_state.setpoints.assign(size_t(channels), 0.0);
     m_state.values.assign(size_t(channels), 0.0);
+    // The firmware keeps pointers to the names: they live as long as the emulator.
+    m_names.push_back(model.name().toStdString());
+    for (const ChannelSpec &c : model.channels())
+        m_names.push_back(c.name.toStdString());
+    m_channels = std::make_unique<semhap_band_channel[]>(size_t(std::max(channels, 1)));
+    for (int c = 0; c < channels; ++c) {
+        const ChannelSpec &spec = model.channels()[size_t(c)];
+        m_channels[size_t(c)] = {m_names[size_t(c + 1)].c_str(), float(spec.min),
+                                 float(spec.max), 0xFFFF};
+    }
+    *m_bandModel = {m_names.front().c_str(), {1, 0, 0}, std::uint8_t(std::min(channels, 255)),
+                    m_channels.get(), std::uint16_t(std::lround(options.watchdog * 1000.0)),
+                    -1, 0};
+    *m_hw = {this, &Emulator::write, &Emulator::millis, &Emulator::setOutput, nullptr};
 }
 
 Emulator::~Emulator()
@@ -65,6 +83,15 @@ Emulator::~Emulator()
 
 bool Emulator::open(QString *error)
 {
+    m_start = monotonicSeconds();
+    if (semhap_band_init(m_band.get(), m_bandModel.get(), m_hw.get()) != 0) {
+        *error = QStringLiteral("%1: the model cannot be described on the wire (at most %2 "
+                                "channels, names of at most %3 bytes)")
+                     .arg(m_options.model->name())
+                     .arg(SEMHAP_MAX_CHANNELS)
+                     .arg(SEMHAP_MAX_NAME);
+        return false;
+    }
     if (!(m_options.udp ? openUdp(error) : openPty(error)))
         return false;
     if (!m_options.logPath.isEmpty()) {
@@ -75,7 +102,6 @@ bool Emulator::open(QString *error)
             return false;
         }
     }
-    m_start = monotonicSeconds();
     return true;
 }
 
@@ -194,12 +220,12 @@ bool Emulator::run(const std::function<bool()> &quit)
         pollfd fd{m_fd, POLLIN, 0};
         const int ms = int(std::ceil(std::max(0.0, nextTick - monotonicSeconds()) * 1000.0));
         if (::poll(&fd, 1, ms) > 0 && (fd.revents & POLLIN))
-            receive(monotonicSeconds());
+            receive();
     }
     return true;
 }
 
-void Emulator::receive(double now)
+void Emulator::receive()
 {
     std::array<std::uint8_t, 2048> buffer{};
     for (int round = 0; round < 16; ++round) {
@@ -218,93 +244,57 @@ void Emulator::receive(double now)
         }
         if (n <= 0)
             return;
-        m_decoder.feed(buffer.data(), size_t(n),
-                       [this, now](const protocol::Message &m) { handle(m, now); });
         std::lock_guard<std::mutex> lock(m_mutex);
-        m_state.status.framesGarbled = m_decoder.counters().errors();
+        semhap_band_receive(m_band.get(), buffer.data(), size_t(n));
+        readStatus();
     }
 }
 
-void Emulator::handle(const protocol::Message &message, double now)
+void Emulator::readStatus()
 {
-    m_lastFrame = now;
-    protocol::Message answer;
-    answer.sequence = message.sequence;
-    {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        protocol::DeviceStatus &status = m_state.status;
-        ++status.framesReceived;
-        if (m_lastSequence >= 0 && message.sequence != std::uint16_t(m_lastSequence + 1))
-            status.framesDropped += std::uint16_t(message.sequence - m_lastSequence - 1);
-        m_lastSequence = message.sequence;
-        switch (message.type) {
-        case protocol::MessageType::SetValues: {
-            const auto &channels = m_options.model->channels();
-            if (message.channelCount != int(channels.size()))
-                status.flags |= protocol::ChannelCountMismatch;
-            const int n = std::min(message.channelCount, int(channels.size()));
-            for (int c = 0; c < n; ++c)
-                m_state.setpoints[size_t(c)] = m_options.model->clamp(
-                    c, protocol::fromWire(message.values[size_t(c)], channels[size_t(c)].min,
-                                          channels[size_t(c)].max));
-            return;
-        }
-        case protocol::MessageType::StopAll:
-            std::fill(m_state.setpoints.begin(), m_state.setpoints.end(), 0.0);
-            answer.type = protocol::MessageType::Status;
-            break;
-        case protocol::MessageType::Heartbeat:
-            answer.type = protocol::MessageType::HeartbeatReply;
-            answer.timestamp = message.timestamp;
-            break;
-        case protocol::MessageType::StatusRequest:
-            answer.type = protocol::MessageType::Status;
-            break;
-        case protocol::MessageType::IdentifyRequest: {
-            answer.type = protocol::MessageType::IdentifyReply;
-            answer.identity.model = m_options.model->name();
-            answer.identity.firmwareMajor = 1;
-            for (const ChannelSpec &c : m_options.model->channels())
-                answer.identity.channels.push_back({c.name, float(c.min), float(c.max)});
-            break;
-        }
-        default:
-            return; // replies from another host: nothing to answer
-        }
-        if (answer.type == protocol::MessageType::Status) {
-            answer.status = status;
-            answer.status.acknowledged = message.sequence;
-            status.flags = 0;
-        }
-    }
-    reply(answer);
+    protocol::DeviceStatus &status = m_state.status;
+    status.flags = m_band->flags;
+    status.framesReceived = m_band->received;
+    status.framesDropped = m_band->dropped;
+    status.framesGarbled = semhap_band_garbled(m_band.get());
+    status.acknowledged = m_band->last_sequence;
+    m_state.watchdogTrips = int(m_band->watchdog_trips);
 }
 
-void Emulator::reply(const protocol::Message &message)
+void Emulator::write(void *context, const std::uint8_t *bytes, size_t size)
 {
-    QByteArray bytes;
-    protocol::encode(message, &bytes);
-    if (m_options.udp) {
-        if (!m_peer.empty())
-            ::sendto(m_fd, bytes.constData(), size_t(bytes.size()), 0,
-                     reinterpret_cast<const sockaddr *>(m_peer.data()), socklen_t(m_peer.size()));
+    auto *self = static_cast<Emulator *>(context);
+    if (self->m_options.udp) {
+        if (!self->m_peer.empty())
+            ::sendto(self->m_fd, bytes, size, 0,
+                     reinterpret_cast<const sockaddr *>(self->m_peer.data()),
+                     socklen_t(self->m_peer.size()));
         return;
     }
     // A full pty (no host reading) drops the reply, as a UART would.
-    [[maybe_unused]] const ssize_t n = ::write(m_fd, bytes.constData(), size_t(bytes.size()));
+    [[maybe_unused]] const ssize_t n = ::write(self->m_fd, bytes, size);
+}
+
+std::uint32_t Emulator::millis(void *context)
+{
+    const auto *self = static_cast<const Emulator *>(context);
+    return std::uint32_t(std::llround((monotonicSeconds() - self->m_start) * 1000.0));
+}
+
+void Emulator::setOutput(void *context, std::uint8_t channel, std::uint16_t value)
+{
+    // Called from inside the band, with m_mutex held by the caller.
+    auto *self = static_cast<Emulator *>(context);
+    const ChannelSpec &spec = self->m_options.model->channels()[channel];
+    self->m_state.setpoints[channel] = protocol::fromWire(value, spec.min, spec.max);
 }
 
 void Emulator::tick(double now)
 {
     {
         std::lock_guard<std::mutex> lock(m_mutex);
-        const bool quiet = m_lastFrame < 0.0 || now - m_lastFrame > m_options.watchdog;
-        if (quiet && std::any_of(m_state.setpoints.begin(), m_state.setpoints.end(),
-                                 [](double v) { return v != 0.0; })) {
-            std::fill(m_state.setpoints.begin(), m_state.setpoints.end(), 0.0);
-            m_state.status.flags |= protocol::WatchdogTripped;
-            ++m_state.watchdogTrips;
-        }
+        semhap_band_poll(m_band.get());
+        readStatus();
         for (size_t c = 0; c < m_filters.size(); ++c)
             m_state.values[c] = m_filters[c].step(m_state.setpoints[c]);
     }

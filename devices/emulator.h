@@ -2,14 +2,21 @@
 #pragma once
 
 #include "devicemodel.h"
-#include "framedecoder.h"
+#include "protocol.h"
 
 #include <QFile>
 #include <QString>
 
 #include <functional>
+#include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
+
+struct semhap_band;
+struct semhap_band_channel;
+struct semhap_band_hw;
+struct semhap_band_model;
 
 namespace semhap {
 
@@ -26,10 +33,11 @@ struct EmulatorOptions
 };
 
 /**
- * A wristband in software, for tests and for working without hardware: it listens on a
- * pseudo-terminal or a UDP port, speaks the wire protocol as firmware must, applies the
- * device model's response at the model's rate, runs the firmware watchdog and logs its
- * state as JSON Lines (`{"t", "setpoint", "values"}`) at every change.
+ * A wristband in software, for tests and for working without hardware: the band firmware's
+ * core (firmware/core, the same C library the reference boards run) compiled for the host,
+ * listening on a pseudo-terminal or a UDP port, plus the device model's response applied at
+ * the model's rate. It logs its state as JSON Lines (`{"t", "setpoint", "values"}`) at
+ * every change.
  */
 class Emulator
 {
@@ -66,11 +74,16 @@ public:
 private:
     bool openPty(QString *error);
     bool openUdp(QString *error);
-    void receive(double now);
-    void handle(const protocol::Message &message, double now);
-    void reply(const protocol::Message &message);
+    void receive();
+    /** The band's counters into m_state; with m_mutex held. */
+    void readStatus();
     void tick(double now);
     void log(double now);
+
+    // The firmware's hardware interface.
+    static void write(void *context, const std::uint8_t *bytes, size_t size);
+    static std::uint32_t millis(void *context);
+    static void setOutput(void *context, std::uint8_t channel, std::uint16_t value);
 
     EmulatorOptions m_options;
     int m_fd = -1;
@@ -78,14 +91,16 @@ private:
     QString m_ptyPath;
     int m_boundPort = 0;
     std::vector<unsigned char> m_peer; ///< UDP: the last sender's address
-    FrameDecoder m_decoder;
+    std::vector<std::string> m_names;  ///< the model's and its channels' names, for the band
+    std::unique_ptr<semhap_band_channel[]> m_channels;
+    std::unique_ptr<semhap_band_model> m_bandModel;
+    std::unique_ptr<semhap_band_hw> m_hw;
+    std::unique_ptr<semhap_band> m_band; ///< driven by run()'s thread only
     std::vector<ResponseFilter> m_filters;
     QFile m_log;
     QString m_logError;
     QByteArray m_lastLogged;
     double m_start = 0.0;
-    double m_lastFrame = -1.0;
-    int m_lastSequence = -1;
 
     mutable std::mutex m_mutex; ///< guards m_state against state() from other threads
     State m_state;

@@ -25,10 +25,6 @@ bool FrameDecoder::finishFrame()
         ++m_counters.cobs;
         return false;
     }
-    if (size > protocol::MaxFrame) {
-        ++m_counters.oversize;
-        return false;
-    }
     protocol::FrameError error = protocol::FrameError::None;
     if (protocol::decodeFrame(m_decoded.data(), size, &m_message, &error)) {
         ++m_counters.frames;
@@ -49,6 +45,9 @@ bool FrameDecoder::finishFrame()
         break;
     case protocol::FrameError::Malformed:
         ++m_counters.malformed;
+        break;
+    case protocol::FrameError::Oversize:
+        ++m_counters.oversize;
         break;
     case protocol::FrameError::Cobs:
     case protocol::FrameError::None:

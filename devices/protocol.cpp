@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "protocol.h"
 
+#include "wire.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -199,38 +201,20 @@ bool readPayload(Reader &r, Message *m)
     return r.ok() && r.atEnd();
 }
 
-bool knownType(std::uint8_t type)
-{
-    return type >= std::uint8_t(MessageType::IdentifyRequest) &&
-           type <= std::uint8_t(MessageType::Status);
-}
-
 /** Header, payload and CRC into `frame`; returns the unencoded length. */
 int assemble(MessageType type, std::uint16_t sequence, const std::uint8_t *payload, int size,
              std::uint8_t *frame)
 {
-    frame[0] = ProtocolVersion;
-    frame[1] = std::uint8_t(type);
-    frame[2] = std::uint8_t(sequence & 0xFF);
-    frame[3] = std::uint8_t(sequence >> 8);
     if (size > 0)
         std::memcpy(frame + HeaderSize, payload, size_t(size));
-    const std::uint16_t crc = crc16(frame, size_t(HeaderSize + size));
-    frame[HeaderSize + size] = std::uint8_t(crc & 0xFF);
-    frame[HeaderSize + size + 1] = std::uint8_t(crc >> 8);
-    return HeaderSize + size + CrcSize;
+    return int(semhap_seal_frame(frame, std::uint8_t(type), sequence, size_t(size)));
 }
 
 } // namespace
 
 std::uint16_t crc16(const std::uint8_t *data, size_t size, std::uint16_t crc)
 {
-    for (size_t i = 0; i < size; ++i) {
-        crc = std::uint16_t(crc ^ (data[i] << 8));
-        for (int bit = 0; bit < 8; ++bit)
-            crc = (crc & 0x8000) ? std::uint16_t((crc << 1) ^ 0x1021) : std::uint16_t(crc << 1);
-    }
-    return crc;
+    return semhap_crc16(data, size, crc);
 }
 
 std::uint16_t toWire(double value, double min, double max)
@@ -249,41 +233,12 @@ double fromWire(std::uint16_t value, double min, double max)
 
 int cobsEncode(const std::uint8_t *in, int size, std::uint8_t *out)
 {
-    int codeAt = 0;
-    int o = 1;
-    std::uint8_t code = 1;
-    for (int i = 0; i < size; ++i) {
-        if (in[i] != 0) {
-            out[o++] = in[i];
-            ++code;
-        }
-        if (in[i] == 0 || code == 0xFF) {
-            out[codeAt] = code;
-            code = 1;
-            codeAt = o++;
-        }
-    }
-    out[codeAt] = code;
-    return o;
+    return int(semhap_cobs_encode(in, size_t(size), out));
 }
 
 int cobsDecode(const std::uint8_t *in, int size, std::uint8_t *out)
 {
-    int i = 0;
-    int o = 0;
-    while (i < size) {
-        const int code = in[i++];
-        if (code == 0 || i + code - 1 > size)
-            return -1;
-        for (int k = 1; k < code; ++k) {
-            if (in[i] == 0)
-                return -1;
-            out[o++] = in[i++];
-        }
-        if (code != 0xFF && i < size)
-            out[o++] = 0;
-    }
-    return o;
+    return int(semhap_cobs_decode(in, size_t(size), out));
 }
 
 void encode(const Message &message, QByteArray *out)
@@ -321,18 +276,33 @@ int encodeSetValues(std::uint16_t sequence, const std::uint16_t *values, int cou
 
 bool decodeFrame(const std::uint8_t *frame, int size, Message *message, FrameError *error)
 {
-    *error = FrameError::None;
-    if (size < HeaderSize + CrcSize)
-        *error = FrameError::Truncated;
-    else if (crc16(frame, size_t(size - CrcSize)) !=
-             std::uint16_t(frame[size - 2] | (frame[size - 1] << 8)))
-        *error = FrameError::Crc;
-    else if (frame[0] != ProtocolVersion)
-        *error = FrameError::Version;
-    else if (!knownType(frame[1]))
-        *error = FrameError::UnknownType;
-    if (*error != FrameError::None)
+    // The band's own check (firmware/core/wire.c), so that host and band agree on every frame.
+    switch (semhap_check_frame(frame, size_t(size))) {
+    case SEMHAP_FRAME_OK:
+        *error = FrameError::None;
+        break;
+    case SEMHAP_FRAME_COBS:
+        *error = FrameError::Cobs;
         return false;
+    case SEMHAP_FRAME_TRUNCATED:
+        *error = FrameError::Truncated;
+        return false;
+    case SEMHAP_FRAME_CRC:
+        *error = FrameError::Crc;
+        return false;
+    case SEMHAP_FRAME_VERSION:
+        *error = FrameError::Version;
+        return false;
+    case SEMHAP_FRAME_UNKNOWN_TYPE:
+        *error = FrameError::UnknownType;
+        return false;
+    case SEMHAP_FRAME_MALFORMED:
+        *error = FrameError::Malformed;
+        return false;
+    case SEMHAP_FRAME_OVERSIZE:
+        *error = FrameError::Oversize;
+        return false;
+    }
     // The decoder reuses one message: fields of another type must not survive.
     message->channelCount = 0;
     message->timestamp = 0;

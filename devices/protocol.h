@@ -118,7 +118,8 @@ enum class FrameError
     Crc,
     Version,
     UnknownType,
-    Malformed ///< the payload's length or content does not fit its type
+    Malformed, ///< the payload's length or content does not fit its type
+    Oversize   ///< longer than the largest frame
 };
 
 /**
