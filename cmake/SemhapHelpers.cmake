@@ -47,7 +47,8 @@ function(semhap_add_test name)
     target_link_libraries(${target} PRIVATE Qt6::Test ${arg_LIBS})
     target_compile_definitions(${target} PRIVATE
         SEMHAP_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/${name}"
-        SEMHAP_RESOURCES="${SEMHAP_SOURCE_DIR}/resources")
+        SEMHAP_RESOURCES="${SEMHAP_SOURCE_DIR}/resources"
+        SEMHAP_VECTORS="${SEMHAP_SOURCE_DIR}/tests/vectors")
     if(arg_ALLOW_FOREACH)
         semhap_strict_target(${target} ALLOW_ASCII ALLOW_FOREACH)
     else()

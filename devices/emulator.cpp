@@ -61,12 +61,16 @@ Emulator::Emulator(const EmulatorOptions &options)
     m_channels = std::make_unique<semhap_band_channel[]>(size_t(std::max(channels, 1)));
     for (int c = 0; c < channels; ++c) {
         const ChannelSpec &spec = model.channels()[size_t(c)];
-        m_channels[size_t(c)] = {m_names[size_t(c + 1)].c_str(), float(spec.min),
-                                 float(spec.max), 0xFFFF};
+        m_channels[size_t(c)] = {m_names[size_t(c + 1)].c_str(), float(spec.min), float(spec.max),
+                                 0xFFFF};
     }
-    *m_bandModel = {m_names.front().c_str(), {1, 0, 0}, std::uint8_t(std::min(channels, 255)),
-                    m_channels.get(), std::uint16_t(std::lround(options.watchdog * 1000.0)),
-                    -1, 0};
+    *m_bandModel = {m_names.front().c_str(),
+                    {1, 0, 0},
+                    std::uint8_t(std::min(channels, 255)),
+                    m_channels.get(),
+                    std::uint16_t(std::lround(options.watchdog * 1000.0)),
+                    -1,
+                    0};
     *m_hw = {this, &Emulator::write, &Emulator::millis, &Emulator::setOutput, nullptr};
 }
 

@@ -151,7 +151,7 @@ static void set_values(semhap_band *band, const uint8_t *payload)
     if (band->overpressure)
         return; /* the valves stay shut until the pressure has fallen */
     for (c = 0; c < count && c < model->channel_count; ++c) {
-        uint16_t value = (uint16_t)(payload[1 + 2 * c] | (payload[2 + 2 * c] << 8));
+        uint16_t value = SEMHAP_U16(payload[1 + 2 * c], payload[2 + 2 * c]);
         if (value > model->channels[c].limit)
             value = model->channels[c].limit;
         drive(band, c, value);
@@ -162,7 +162,7 @@ static void set_values(semhap_band *band, const uint8_t *payload)
 static void handle(semhap_band *band, size_t size)
 {
     const uint8_t type = band->rx[1];
-    const uint16_t sequence = (uint16_t)(band->rx[2] | (band->rx[3] << 8));
+    const uint16_t sequence = SEMHAP_U16(band->rx[2], band->rx[3]);
     uint8_t *payload = band->rx + SEMHAP_HEADER_SIZE;
     (void)size;
     band->last_frame_ms = band->hw->millis(band->hw->context);
@@ -280,8 +280,10 @@ void semhap_band_poll(semhap_band *band)
             rest(band);
         }
     }
-    for (c = 0; c < model->channel_count; ++c)
-        active |= band->values[c] != 0;
+    for (c = 0; c < model->channel_count; ++c) {
+        if (band->values[c] != 0)
+            active = 1;
+    }
     if (active && (uint32_t)(now - band->last_frame_ms) > watchdog_ms(band)) {
         rest(band);
         band->flags |= SEMHAP_WATCHDOG_TRIPPED;

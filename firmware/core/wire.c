@@ -6,7 +6,7 @@ uint16_t semhap_crc16(const uint8_t *data, size_t size, uint16_t crc)
     size_t i;
     int bit;
     for (i = 0; i < size; ++i) {
-        crc = (uint16_t)(crc ^ (uint16_t)(data[i] << 8));
+        crc = (uint16_t)(crc ^ ((unsigned)data[i] << 8));
         for (bit = 0; bit < 8; ++bit)
             crc = (crc & 0x8000u) ? (uint16_t)((crc << 1) ^ 0x1021u) : (uint16_t)(crc << 1);
     }
@@ -113,7 +113,7 @@ enum semhap_frame_error semhap_check_frame(const uint8_t *frame, size_t size)
     if (size < SEMHAP_HEADER_SIZE + SEMHAP_CRC_SIZE)
         return SEMHAP_FRAME_TRUNCATED;
     if (semhap_crc16(frame, size - SEMHAP_CRC_SIZE, 0xFFFF) !=
-        (uint16_t)(frame[size - 2] | (frame[size - 1] << 8)))
+        SEMHAP_U16(frame[size - 2], frame[size - 1]))
         return SEMHAP_FRAME_CRC;
     if (frame[0] != SEMHAP_PROTOCOL_VERSION)
         return SEMHAP_FRAME_VERSION;

@@ -11,6 +11,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* A little-endian u16 from two bytes. Unsigned before the shift: on an AVR an int has 16
+ * bits, and 0xFF << 8 in a signed int would overflow. */
+#define SEMHAP_U16(lo, hi) ((uint16_t)((unsigned)(lo) | ((unsigned)(hi) << 8)))
+
 #ifdef __cplusplus
 extern "C" {
 #endif
