@@ -20,7 +20,7 @@ int DevicesCommand::execute(const QCommandLineParser &parser)
     m_out << tr("Transports (URIs for --device and --bind):\n")
           << tr("  virtual:NAME             no hardware; keeps frames for previews\n")
           << tr("  serial:PATH[?baud=N]     a serial port or pseudo-terminal (default "
-                "115200 baud)\n")
+                "250000 baud)\n")
           << tr("  hid:VID:PID              a USB HID band (hex IDs, usage page 0xFF00)\n")
           << tr("  udp:HOST:PORT            a band on the network\n\n");
     DeviceManager manager;

@@ -20,7 +20,8 @@ struct DeviceUri
         Udp
     };
 
-    static constexpr int DefaultBaud = 115200;
+    /** The reference bands' rate (firmware/README.md): 250000 is exact on a 16 MHz AVR. */
+    static constexpr int DefaultBaud = 250000;
 
     Scheme scheme = Scheme::Virtual;
     QString name; ///< virtual: the name; serial: the path; udp: the host

@@ -65,7 +65,10 @@ void TestTransports::parseUri_data()
     QTest::newRow("serial baud") << "serial:/dev/ttyUSB1?baud=921600"
                                  << "serial:/dev/ttyUSB1?baud=921600"
                                  << "";
-    QTest::newRow("serial default baud") << "serial:/tmp/band?baud=115200"
+    QTest::newRow("serial older default") << "serial:/dev/ttyUSB1?baud=115200"
+                                          << "serial:/dev/ttyUSB1?baud=115200"
+                                          << "";
+    QTest::newRow("serial default baud") << "serial:/tmp/band?baud=250000"
                                          << "serial:/tmp/band"
                                          << "";
     QTest::newRow("serial bad baud") << "serial:/dev/ttyACM0?baud=fast"
