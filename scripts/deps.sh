@@ -16,6 +16,8 @@ packages=(
     libsdl2-dev libspnav-dev
     # statistics (semhap compare's paired tests)
     libgsl-dev
+    # the reference bands' firmware images (firmware/boards): the AVR compiler and C library
+    gcc-avr avr-libc
     # GUI tests and screenshots without a display; a real window manager (openbox) and the
     # X tools that read windows' frames, for the studio's placement on small screens
     xvfb xauth libgl1-mesa-dri openbox x11-utils
