@@ -102,6 +102,7 @@ bool LinkTransport::connect(QString *error)
         return false;
     }
     m_linkOpen = true;
+    m_identified = false;
     m_decoder.reset();
     m_safety.reset();
     EmergencyStop::add(m_link->emergencyFd());
@@ -236,6 +237,7 @@ void LinkTransport::onMessage(const protocol::Message &message, double now)
         m_status.device = message.status;
         break;
     case protocol::MessageType::IdentifyReply:
+        m_identified = true;
         m_status.identity = message.identity.model;
         if (message.identity.model != m_model->name())
             m_status.lastError = QStringLiteral("the device says it is %1, not %2")
@@ -280,6 +282,10 @@ void LinkTransport::run()
         if (fresh || heartbeatDue)
             writeValues(now);
         if (heartbeatDue) {
+            // Asked again until answered: opening the port of an Arduino resets it, and
+            // the first request goes to its boot loader.
+            if (!m_identified)
+                writeMessage(protocol::MessageType::IdentifyRequest);
             writeMessage(protocol::MessageType::Heartbeat);
             if (++heartbeats % StatusEveryHeartbeats == 0)
                 writeMessage(protocol::MessageType::StatusRequest);

@@ -60,7 +60,8 @@ private:
     int m_wakeFd = -1;
     std::atomic<bool> m_quit{false};
     std::atomic<int> m_stopRequests{0};
-    bool m_linkOpen = false; ///< I/O thread only
+    bool m_linkOpen = false;   ///< I/O thread only
+    bool m_identified = false; ///< I/O thread only: an identify reply came on this connection
     std::uint16_t m_sequence = 0;
     std::uint32_t m_linkErrors = 0; ///< I/O thread only
 

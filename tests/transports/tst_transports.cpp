@@ -4,6 +4,7 @@
 // setpoints), HID enumeration.
 #include "deviceuri.h"
 #include "emulatedband.h"
+#include "framedecoder.h"
 #include "hidlink.h"
 #include "safetyfilter.h"
 #include "transportfactory.h"
@@ -12,6 +13,10 @@
 #include <QElapsedTimer>
 #include <QTest>
 #include <QThread>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
 
 using namespace semhap;
 
@@ -45,6 +50,7 @@ private slots:
     void sentIsWhatTheBandGot_data();
     void sentIsWhatTheBandGot();
     void factoryMakesEachKind();
+    void identifyIsAskedUntilAnswered();
     void hidEnumerationWithoutDevices();
 };
 
@@ -402,6 +408,56 @@ void TestTransports::factoryMakesEachKind()
     // Real bands start disarmed.
     QVERIFY(
         !TransportFactory::create(QStringLiteral("udp:127.0.0.1:9"), model, &error)->isArmed());
+}
+
+void TestTransports::identifyIsAskedUntilAnswered()
+{
+    // A band that misses the first identify request (an Arduino resets when its port
+    // opens, and its boot loader takes the bytes) is asked again with the heartbeats, and
+    // no more once it has answered.
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+    QVERIFY(master >= 0 && ::grantpt(master) == 0 && ::unlockpt(master) == 0);
+    const QString pty = QString::fromLocal8Bit(::ptsname(master));
+    const int held = ::open(::ptsname(master), O_RDWR | O_NOCTTY | O_CLOEXEC);
+    QString error;
+    std::unique_ptr<Transport> transport =
+        TransportFactory::create(QStringLiteral("serial:") + pty,
+                                 DeviceModelLibrary::builtin(QStringLiteral("lra4")), &error);
+    QVERIFY2(transport && transport->open(&error), qPrintable(error));
+    FrameDecoder decoder;
+    std::vector<protocol::Message> requests;
+    const auto readFor = [&](int ms) {
+        requests.clear();
+        QElapsedTimer timer;
+        timer.start();
+        while (timer.elapsed() < ms) {
+            pollfd fd{master, POLLIN, 0};
+            if (::poll(&fd, 1, 20) <= 0)
+                continue;
+            std::array<std::uint8_t, 512> buffer{};
+            const ssize_t n = ::read(master, buffer.data(), buffer.size());
+            decoder.feed(buffer.data(), size_t(std::max<ssize_t>(n, 0)),
+                         [&](const protocol::Message &m) {
+                             if (m.type == protocol::MessageType::IdentifyRequest)
+                                 requests.push_back(m);
+                         });
+        }
+    };
+    readFor(450);
+    QVERIFY2(requests.size() >= 3, qPrintable(QString::number(requests.size())));
+    protocol::Message reply;
+    reply.type = protocol::MessageType::IdentifyReply;
+    reply.sequence = requests.back().sequence;
+    reply.identity.model = QStringLiteral("lra4");
+    QByteArray bytes;
+    protocol::encode(reply, &bytes);
+    QCOMPARE(::write(master, bytes.constData(), size_t(bytes.size())), ssize_t(bytes.size()));
+    QTRY_COMPARE(transport->status().identity, QStringLiteral("lra4"));
+    readFor(350);
+    QCOMPARE(requests.size(), size_t(0));
+    transport->close();
+    ::close(held);
+    ::close(master);
 }
 
 void TestTransports::hidEnumerationWithoutDevices()
