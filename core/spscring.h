@@ -9,8 +9,9 @@ namespace semhap {
 
 /**
  * A bounded single-producer, single-consumer queue without locks: the pipeline thread
- * pushes, the GUI thread pops at display rate. A full queue refuses the value (the caller
- * counts it) rather than making the producer wait.
+ * pushes, the GUI thread pops at display rate (the studio's feed); a sender hands
+ * envelopes to an audio callback, which may neither lock nor wait (`devices/`). A full
+ * queue refuses the value (the caller counts it) rather than making the producer wait.
  */
 template<typename T> class SpscRing
 {
@@ -46,6 +47,13 @@ public:
         *value = m_slots[tail];
         m_tail.store((tail + 1) & m_mask, std::memory_order_release);
         return true;
+    }
+
+    /** Values queued now; exact on the consumer thread, a snapshot on any other. */
+    std::size_t size() const
+    {
+        return (m_head.load(std::memory_order_acquire) - m_tail.load(std::memory_order_acquire)) &
+               m_mask;
     }
 
 private:
