@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "devicemanager.h"
 
+#include "audiosystem.h"
 #include "deviceuri.h"
 #include "hidlink.h"
 #include "hidreport.h"
@@ -10,6 +11,13 @@
 #include <algorithm>
 
 namespace semhap {
+
+namespace {
+
+/** How old the listing of sound cards may be (s): a panel polls every second. */
+constexpr double AudioListAge = 5.0;
+
+} // namespace
 
 DeviceManager::DeviceManager() = default;
 
@@ -40,6 +48,13 @@ std::vector<PortInfo> DeviceManager::present() const
         out.push_back({uri.toString(), QStringLiteral("hid"),
                        QString(hid.manufacturer + QLatin1Char(' ') + hid.product).trimmed(),
                        hid.vendorId, hid.productId});
+    }
+    for (const AudioOutputInfo &output : AudioSystem::list(AudioListAge)) {
+        DeviceUri uri;
+        uri.scheme = DeviceUri::Scheme::Audio;
+        uri.name = output.name;
+        out.push_back({uri.toString(), QStringLiteral("audio"), output.hostApi, -1, -1,
+                       output.channels, output.sampleRate});
     }
     for (const QString &uri : m_configured)
         out.push_back(

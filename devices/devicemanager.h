@@ -15,10 +15,12 @@ namespace semhap {
 struct PortInfo
 {
     QString uri;         ///< ready for --device / --bind
-    QString kind;        ///< "serial", "hid", "virtual", "udp"
-    QString description; ///< what the system says it is
+    QString kind;        ///< "serial", "hid", "audio", "virtual", "udp"
+    QString description; ///< what the system says it is (audio: the host API)
     int vendorId = -1;   ///< USB only
     int productId = -1;
+    int outputChannels = -1; ///< sound cards only
+    double sampleRate = 0.0; ///< sound cards only: Hz
 };
 
 /** A bound device and how its transport is doing. */
@@ -31,9 +33,9 @@ struct BoundDevice
 };
 
 /**
- * The devices of a session: what is present (serial ports, HID bands, configured virtual
- * and UDP addresses), hot-plug by polling that list, and the bindings of the router's
- * device names to transports, which reconnect by themselves. Closing (or destroying) the
+ * The devices of a session: what is present (serial ports, HID bands, sound card outputs,
+ * configured virtual and UDP addresses), hot-plug by polling that list, and the bindings of the
+ * router's device names to transports, which reconnect by themselves. Closing (or destroying) the
  * manager stops every device.
  */
 class DeviceManager
@@ -48,7 +50,10 @@ public:
     void addConfigured(const QString &uri);
     /** The addresses added with addConfigured(), in the order they came. */
     QStringList configured() const { return m_configured; }
-    /** Everything present now: serial ports, HID devices, then the configured addresses. */
+    /**
+     * Everything present now: serial ports, HID devices, sound card outputs (scanned at
+     * most every 5 s: probing cards is slow), then the configured addresses.
+     */
     std::vector<PortInfo> present() const;
     /**
      * Hot-plug: lists again and reports the URIs that appeared and went since the last

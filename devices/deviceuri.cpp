@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "deviceuri.h"
 
+#include "deviceframe.h"
+
 #include <QStringList>
+
+#include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -14,6 +19,69 @@ bool parseHexId(const QString &text, int *value)
     if (!ok || text.isEmpty() || text.size() > 4 || text.startsWith(QLatin1Char('+')))
         return false;
     *value = int(parsed);
+    return true;
+}
+
+/** `audio:` options (`channels=1,2&carrier=170`) into `uri`; false with a reason. */
+bool parseAudioOptions(const QString &text, const QString &options, DeviceUri *uri, QString *error)
+{
+    for (const QString &option : options.split(QLatin1Char('&'))) {
+        const QString key = option.section(QLatin1Char('='), 0, 0);
+        const QStringList values = option.section(QLatin1Char('='), 1).split(QLatin1Char(','));
+        if (key == QLatin1String("channels")) {
+            uri->outputChannels.clear();
+            for (const QString &value : values) {
+                bool ok = false;
+                const int channel = value.toInt(&ok);
+                if (!ok || channel < 1) {
+                    *error = QStringLiteral("%1: channels= takes the card's output channels, "
+                                            "from 1, comma-separated (channels=1,2,3,4)")
+                                 .arg(text);
+                    return false;
+                }
+                if (std::find(uri->outputChannels.begin(), uri->outputChannels.end(), channel) !=
+                    uri->outputChannels.end()) {
+                    *error = QStringLiteral("%1: output channel %2 is given twice")
+                                 .arg(text)
+                                 .arg(channel);
+                    return false;
+                }
+                uri->outputChannels.push_back(channel);
+            }
+            if (int(uri->outputChannels.size()) > MaxChannels) {
+                *error = QStringLiteral("%1: at most %2 channels").arg(text).arg(MaxChannels);
+                return false;
+            }
+        } else if (key == QLatin1String("carrier")) {
+            uri->carriers.clear();
+            for (const QString &value : values) {
+                bool ok = false;
+                const double carrier = value.toDouble(&ok);
+                if (!ok || !std::isfinite(carrier) || carrier <= 0.0) {
+                    *error = QStringLiteral("%1: carrier= takes frequencies above 0 Hz, one "
+                                            "for all channels or one per channel "
+                                            "(carrier=170 or carrier=170,170,200,200)")
+                                 .arg(text);
+                    return false;
+                }
+                uri->carriers.push_back(carrier);
+            }
+        } else {
+            *error = QStringLiteral("%1: unknown option '%2' (audio takes "
+                                    "?channels=1,2,…&carrier=HZ,…)")
+                         .arg(text, option);
+            return false;
+        }
+    }
+    if (uri->carriers.size() > 1 && !uri->outputChannels.empty() &&
+        uri->carriers.size() != uri->outputChannels.size()) {
+        *error = QStringLiteral("%1: %2 carriers for %3 channels: give one for all, or one "
+                                "per channel")
+                     .arg(text)
+                     .arg(uri->carriers.size())
+                     .arg(uri->outputChannels.size());
+        return false;
+    }
     return true;
 }
 
@@ -77,8 +145,21 @@ bool DeviceUri::parse(const QString &text, DeviceUri *uri, QString *error)
                          .arg(text);
             return false;
         }
+    } else if (scheme == QLatin1String("audio")) {
+        out.scheme = Scheme::Audio;
+        const qsizetype query = rest.indexOf(QLatin1Char('?'));
+        out.name = rest.left(query);
+        if (out.name.isEmpty()) {
+            *error = QStringLiteral("%1: an audio device needs an output (audio:default, or a "
+                                    "name `semhap devices` lists)")
+                         .arg(text);
+            return false;
+        }
+        if (query >= 0 && !parseAudioOptions(text, rest.mid(query + 1), &out, error))
+            return false;
     } else {
-        *error = QStringLiteral("%1: unknown device scheme '%2' (virtual, serial, hid, udp)")
+        *error = QStringLiteral("%1: unknown device scheme '%2' (virtual, serial, hid, udp, "
+                                "audio)")
                      .arg(text, colon < 0 ? text : scheme);
         return false;
     }
@@ -106,6 +187,21 @@ QString DeviceUri::toString() const
     case Scheme::Udp:
         return name.contains(QLatin1Char(':')) ? QStringLiteral("udp:[%1]:%2").arg(name).arg(port)
                                                : QStringLiteral("udp:%1:%2").arg(name).arg(port);
+    case Scheme::Audio: {
+        QStringList options;
+        QStringList list;
+        for (const int channel : outputChannels)
+            list.append(QString::number(channel));
+        if (!list.isEmpty())
+            options.append(QStringLiteral("channels=") + list.join(QLatin1Char(',')));
+        list.clear();
+        for (const double carrier : carriers)
+            list.append(QString::number(carrier));
+        if (!list.isEmpty() && !(carriers.size() == 1 && carriers[0] == DefaultCarrier))
+            options.append(QStringLiteral("carrier=") + list.join(QLatin1Char(',')));
+        return QStringLiteral("audio:") + name +
+               (options.isEmpty() ? QString() : QLatin1Char('?') + options.join(QLatin1Char('&')));
+    }
     }
     return {};
 }

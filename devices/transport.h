@@ -34,9 +34,11 @@ struct TransportStatus
     std::uint32_t framesSkipped = 0; ///< stale frames replaced before they were written
     std::uint32_t errors = 0;        ///< write errors and garbled frames from the device
     double roundTripMs = -1.0;       ///< from the latest heartbeat reply; < 0 before one
-    std::uint32_t reconnects = 0;    ///< times the link was opened again after a loss
-    protocol::DeviceStatus device;   ///< the device's own counters (latest status)
-    QString identity;                ///< model name from the identify reply, if any
+    /** Sound cards: from send() to the sample that carries the latest frame; < 0 before one */
+    double latencyMs = -1.0;
+    std::uint32_t reconnects = 0;  ///< times the link was opened again after a loss
+    protocol::DeviceStatus device; ///< the device's own counters (latest status)
+    QString identity;              ///< model name from the identify reply, if any
     QString lastError;
 
     /** The link's state from `connected` and `responding` (never NotBound). */
@@ -49,10 +51,11 @@ struct TransportStatus
 };
 
 /**
- * Where a device's frames go: one interface for the virtual, serial, UDP and HID links, so
- * the pipeline, the device manager and tests drive them alike. send() never blocks (latest
- * value wins); stopAll() always gets through; safety (clamp, gain, inflation limit, armed)
- * is applied inside, whatever the caller did, and what goes out is kept in sent().
+ * Where a device's frames go: one interface for the virtual, serial, UDP and HID links and
+ * sound cards, so the pipeline, the device manager and tests drive them alike. send() never
+ * blocks (latest value wins); stopAll() always gets through; safety (clamp, gain, inflation
+ * limit, armed) is applied inside, whatever the caller did, and what goes out is kept in
+ * sent().
  */
 class Transport
 {

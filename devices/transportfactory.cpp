@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "transportfactory.h"
 
+#include "audiotransport.h"
 #include "hidlink.h"
 #include "linktransport.h"
 #include "seriallink.h"
@@ -14,6 +15,8 @@ std::unique_ptr<Transport> TransportFactory::create(const QString &uri, DeviceMo
 {
     DeviceUri parsed;
     if (!DeviceUri::parse(uri, &parsed, error))
+        return nullptr;
+    if (parsed.scheme == DeviceUri::Scheme::Audio && !AudioTransport::check(parsed, *model, error))
         return nullptr;
     return create(parsed, std::move(model));
 }
@@ -33,6 +36,8 @@ std::unique_ptr<Transport> TransportFactory::create(const DeviceUri &uri, Device
     case DeviceUri::Scheme::Udp:
         link = std::make_unique<UdpLink>(uri.name, uri.port);
         break;
+    case DeviceUri::Scheme::Audio:
+        return std::make_unique<AudioTransport>(uri, std::move(model));
     }
     return std::make_unique<LinkTransport>(std::move(link), std::move(model));
 }

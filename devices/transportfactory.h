@@ -15,6 +15,7 @@ public:
     /** A transport for `uri` driving `model` (not opened yet); null with `error`. */
     static std::unique_ptr<Transport> create(const QString &uri, DeviceModelPtr model,
                                              QString *error);
+    /** The same for a parsed URI the caller knows fits `model` (the form above checks). */
     static std::unique_ptr<Transport> create(const DeviceUri &uri, DeviceModelPtr model);
 };
 

@@ -12,6 +12,8 @@ packages=(
     # Qt's own words (dialog buttons, file dialogs) in the studio's languages
     qt6-translations-l10n
     libmujoco-dev libqhull-dev libhidapi-dev libserialport-dev
+    # sound cards (the audio: transport): PortAudio, and ALSA and JACK to quiet their messages
+    portaudio19-dev libasound2-dev libjack-jackd2-dev
     # the analogue drive devices: gamepads (SDL2) and 3D mice (spacenavd's client library)
     libsdl2-dev libspnav-dev
     # statistics (semhap compare's paired tests)

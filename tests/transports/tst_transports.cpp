@@ -119,6 +119,54 @@ void TestTransports::parseUri_data()
     QTest::newRow("udp port too big") << "udp:127.0.0.1:70000"
                                       << ""
                                       << "1-65535";
+    QTest::newRow("audio") << "audio:default"
+                           << "audio:default"
+                           << "";
+    QTest::newRow("audio name with colons") << "audio:hw:2,0"
+                                            << "audio:hw:2,0"
+                                            << "";
+    QTest::newRow("audio channels") << "audio:default?channels=3,4,1,2"
+                                    << "audio:default?channels=3,4,1,2"
+                                    << "";
+    QTest::newRow("audio default carrier") << "audio:default?carrier=170"
+                                           << "audio:default"
+                                           << "";
+    QTest::newRow("audio carriers") << "audio:x?channels=1,2&carrier=150,200.5"
+                                    << "audio:x?channels=1,2&carrier=150,200.5"
+                                    << "";
+    QTest::newRow("audio carrier first") << "audio:x?carrier=200&channels=2"
+                                         << "audio:x?channels=2&carrier=200"
+                                         << "";
+    QTest::newRow("audio no output") << "audio:?channels=1"
+                                     << ""
+                                     << "needs an output";
+    QTest::newRow("audio channel not a number") << "audio:x?channels=1,a"
+                                                << ""
+                                                << "channels= takes";
+    QTest::newRow("audio channel zero") << "audio:x?channels=0,1"
+                                        << ""
+                                        << "from 1";
+    QTest::newRow("audio channel twice") << "audio:x?channels=1,2,1"
+                                         << ""
+                                         << "output channel 1 is given twice";
+    QTest::newRow("audio no channels") << "audio:x?channels="
+                                       << ""
+                                       << "channels= takes";
+    QTest::newRow("audio carrier zero") << "audio:x?carrier=0"
+                                        << ""
+                                        << "above 0 Hz";
+    QTest::newRow("audio carrier negative") << "audio:x?carrier=-170"
+                                            << ""
+                                            << "above 0 Hz";
+    QTest::newRow("audio carrier nan") << "audio:x?carrier=nan"
+                                       << ""
+                                       << "above 0 Hz";
+    QTest::newRow("audio carriers per channel") << "audio:x?channels=1,2&carrier=1,2,3"
+                                                << ""
+                                                << "3 carriers for 2 channels";
+    QTest::newRow("audio other option") << "audio:x?rate=48000"
+                                        << ""
+                                        << "unknown option 'rate=48000'";
     QTest::newRow("unknown scheme") << "usb:1"
                                     << ""
                                     << "unknown device scheme 'usb'";
@@ -395,9 +443,9 @@ void TestTransports::factoryMakesEachKind()
 {
     DeviceModelPtr model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
     QString error;
-    for (const QString &uri :
-         {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
-          QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9")}) {
+    for (const QString &uri : {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
+                               QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9"),
+                               QStringLiteral("audio:default?channels=1,2,3,4")}) {
         std::unique_ptr<Transport> t = TransportFactory::create(uri, model, &error);
         QVERIFY2(t, qPrintable(error));
         QCOMPARE(t->uri(), uri);

@@ -1,0 +1,531 @@
+// SPDX-License-Identifier: MIT
+// The sound card transport without a sound card: PortAudio's ALSA host API plays into
+// PCMs of a test-local ALSA configuration (asound.conf beside this file), whose `file`
+// plugin writes the raw samples into a FIFO that a reader here drains at the card's rate
+// (the chain behind it, a `null` PCM, is not paced). What the card got is checked: the
+// carrier's frequency, the envelope's level, which output each channel is on, no steps at
+// envelope changes, silence after stop-all, disarming and close, what sent() says, and a
+// card that goes away mid-stream and comes back.
+#include "audiosystem.h"
+#include "audiotransport.h"
+#include "devicemanager.h"
+#include "transportfactory.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <fcntl.h>
+#include <mutex>
+#include <poll.h>
+#include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace semhap;
+
+namespace {
+
+constexpr double Rate = 44100.0; // the null PCM's default rate, which the stream takes
+
+DeviceFrame frameOf(double t, std::initializer_list<double> values)
+{
+    DeviceFrame f;
+    f.t = t;
+    f.channelCount = int(values.size());
+    std::copy(values.begin(), values.end(), f.values.begin());
+    return f;
+}
+
+void sleepMs(int ms)
+{
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+}
+
+/**
+ * The sound card: reads the interleaved float samples the `file` plugin writes into a
+ * FIFO, no faster than `Rate` frames a second, until the writer closes it or stop().
+ */
+class FifoCard
+{
+public:
+    FifoCard(const QString &path, int channels) : m_channels(channels)
+    {
+        // Opening for reading first lets the plugin's open for writing go through.
+        m_fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+        // A small pipe: the stream runs close to what has been read.
+        ::fcntl(m_fd, F_SETPIPE_SZ, 4096);
+        m_thread = std::thread([this] { run(); });
+    }
+    ~FifoCard() { stop(); }
+
+    /** Stops reading and closes the FIFO: to the writer, the card is gone. */
+    void stop()
+    {
+        m_quit = true;
+        if (m_thread.joinable())
+            m_thread.join();
+        if (m_fd >= 0)
+            ::close(m_fd);
+        m_fd = -1;
+    }
+    bool ended() const { return m_ended; }
+    size_t frames() const
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        return m_samples.size() / size_t(m_channels);
+    }
+    /** Output `channel` (from 0) from frame `from` on. */
+    std::vector<float> channel(int channel, size_t from = 0) const
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        std::vector<float> out;
+        for (size_t i = from * size_t(m_channels) + size_t(channel); i < m_samples.size();
+             i += size_t(m_channels))
+            out.push_back(m_samples[i]);
+        return out;
+    }
+
+private:
+    void run()
+    {
+        QElapsedTimer clock;
+        clock.start();
+        std::vector<char> buffer(8192);
+        size_t bytes = 0;
+        while (!m_quit) {
+            const double allowed = double(clock.nsecsElapsed()) * 1e-9 * Rate;
+            if (double(bytes) / (4.0 * m_channels) >= allowed) {
+                sleepMs(1);
+                continue;
+            }
+            pollfd fd{m_fd, POLLIN, 0};
+            if (::poll(&fd, 1, 10) <= 0)
+                continue;
+            const ssize_t n = ::read(m_fd, buffer.data(), buffer.size());
+            if (n == 0 && m_writerSeen) {
+                m_ended = true;
+                return;
+            }
+            if (n <= 0) {
+                sleepMs(1); // no writer yet
+                continue;
+            }
+            m_writerSeen = true;
+            bytes += size_t(n);
+            m_pending.insert(m_pending.end(), buffer.begin(), buffer.begin() + n);
+            const size_t whole = m_pending.size() / 4 * 4;
+            std::lock_guard<std::mutex> lock(m_mutex);
+            const size_t first = m_samples.size();
+            m_samples.resize(first + whole / 4);
+            std::memcpy(m_samples.data() + first, m_pending.data(), whole);
+            m_pending.erase(m_pending.begin(), m_pending.begin() + long(whole));
+        }
+    }
+
+    int m_channels;
+    int m_fd = -1;
+    std::thread m_thread;
+    std::atomic<bool> m_quit{false};
+    std::atomic<bool> m_ended{false};
+    bool m_writerSeen = false;
+    std::vector<char> m_pending;
+    mutable std::mutex m_mutex;
+    std::vector<float> m_samples;
+};
+
+/** The steady middle of a burst: from 20 ms after the first sample above half of `level`
+ * to 20 ms before the last. */
+std::vector<float> steadyPart(const std::vector<float> &samples, double level)
+{
+    const auto loud = [level](float x) { return std::abs(x) > 0.5 * level; };
+    const auto first = std::find_if(samples.begin(), samples.end(), loud);
+    const auto last = std::find_if(samples.rbegin(), samples.rend(), loud).base();
+    const long margin = long(0.02 * Rate);
+    if (last - first < 3 * margin)
+        return {};
+    return std::vector<float>(first + margin, last - margin);
+}
+
+/** Frequency by the rising zero crossings, interpolated between samples. */
+double frequency(const std::vector<float> &samples)
+{
+    double firstCrossing = -1.0;
+    double lastCrossing = -1.0;
+    int crossings = 0;
+    for (size_t i = 1; i < samples.size(); ++i) {
+        if (samples[i - 1] < 0.0f && samples[i] >= 0.0f) {
+            const double at =
+                double(i - 1) + double(samples[i - 1]) / double(samples[i - 1] - samples[i]);
+            if (firstCrossing < 0.0)
+                firstCrossing = at;
+            lastCrossing = at;
+            ++crossings;
+        }
+    }
+    return crossings > 1 ? (crossings - 1) * Rate / (lastCrossing - firstCrossing) : 0.0;
+}
+
+/**
+ * The most one sample of a 170 Hz carrier may move with the envelope at most `level` and
+ * changing by at most `envelopeStep` a sample: more is a step, heard as a click.
+ */
+double smoothStep(double level, double envelopeStep)
+{
+    return 2.0 * M_PI * 170.0 / Rate * level + envelopeStep + 1e-6;
+}
+
+/** The largest change between neighbouring samples from `from` on. */
+double largestStep(const std::vector<float> &samples, size_t from)
+{
+    double out = 0.0;
+    for (size_t i = std::max<size_t>(from, 1); i < samples.size(); ++i)
+        out = std::max(out, double(std::abs(samples[i] - samples[i - 1])));
+    return out;
+}
+
+float peak(const std::vector<float> &samples)
+{
+    float out = 0.0f;
+    for (const float x : samples)
+        out = std::max(out, std::abs(x));
+    return out;
+}
+
+} // namespace
+
+class TestAudio : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void outputsAreListed();
+    void badAddressesAreRejected_data();
+    void badAddressesAreRejected();
+    void carrierAndEnvelope_data();
+    void carrierAndEnvelope();
+    void channelsGoWhereMapped();
+    void envelopeStepsAreRamped();
+    void stopAllSilencesAtOnce();
+    void disarmingSilencesHeldValues();
+    void closeLeavesSilence();
+    void vanishedCardIsRetried();
+
+private:
+    std::unique_ptr<AudioTransport> open(const QString &uri, const QString &model = "lra4");
+    QString m_fifo;
+    QTemporaryDir m_dir;
+    DeviceModelPtr m_lra4;
+};
+
+void TestAudio::initTestCase()
+{
+    // The file plugin writes into a FIFO; a reader that went away must not end the test.
+    std::signal(SIGPIPE, SIG_IGN);
+    QVERIFY(m_dir.isValid());
+    m_fifo = m_dir.filePath(QStringLiteral("card.fifo"));
+    QCOMPARE(::mkfifo(QFile::encodeName(m_fifo).constData(), 0600), 0);
+    QFile templateFile(QStringLiteral(SEMHAP_TEST_DATA "/asound.conf"));
+    QVERIFY(templateFile.open(QIODevice::ReadOnly));
+    QByteArray config = templateFile.readAll();
+    config.replace("@FIFO@", QFile::encodeName(m_fifo));
+    const QString configPath = m_dir.filePath(QStringLiteral("asound.conf"));
+    QFile out(configPath);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(config);
+    out.close();
+    // Only this configuration: no system PCM (there is no card here anyway).
+    qputenv("ALSA_CONFIG_PATH", QFile::encodeName(configPath));
+    m_lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+}
+
+std::unique_ptr<AudioTransport> TestAudio::open(const QString &uri, const QString &model)
+{
+    QString error;
+    std::unique_ptr<Transport> made =
+        TransportFactory::create(uri, DeviceModelLibrary::builtin(model), &error);
+    if (!made)
+        qWarning("%s", qPrintable(error));
+    auto transport = std::unique_ptr<AudioTransport>(dynamic_cast<AudioTransport *>(made.get()));
+    if (transport)
+        made.release();
+    if (transport && !transport->open(&error))
+        qWarning("%s", qPrintable(error));
+    return transport;
+}
+
+void TestAudio::outputsAreListed()
+{
+    const std::vector<AudioOutputInfo> outputs = AudioSystem::list(0.0);
+    const auto card = std::find_if(outputs.begin(), outputs.end(), [](const AudioOutputInfo &o) {
+        return o.name == QLatin1String("semhaptest");
+    });
+    QVERIFY(card != outputs.end());
+    QCOMPARE(card->channels, 128); // what PortAudio allows a plugin PCM
+    QCOMPARE(card->sampleRate, Rate);
+    QCOMPARE(card->hostApi, QStringLiteral("ALSA"));
+    // The device manager offers each as a URI to bind.
+    DeviceManager manager;
+    const std::vector<PortInfo> present = manager.present();
+    const auto port = std::find_if(present.begin(), present.end(), [](const PortInfo &p) {
+        return p.uri == QLatin1String("audio:semhaptest");
+    });
+    QVERIFY(port != present.end());
+    QCOMPARE(port->kind, QStringLiteral("audio"));
+    QCOMPARE(port->outputChannels, 128);
+    QCOMPARE(port->sampleRate, Rate);
+}
+
+void TestAudio::badAddressesAreRejected_data()
+{
+    QTest::addColumn<QString>("uri");
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QString>("errorPart");
+    // Found out when the transport is made (the model).
+    QTest::newRow("more channels than the model") << "audio:semhaptest?channels=1,2,3,4,5"
+                                                  << "lra4"
+                                                  << "5 output channels for the 4 channels";
+    QTest::newRow("carriers not one per channel") << "audio:semhaptest?carrier=100,200"
+                                                  << "lra4"
+                                                  << "2 carriers for 4 channels";
+    // Found out when it is opened (the card).
+    QTest::newRow("channel beyond the card") << "audio:semhaptest?channels=1,129"
+                                             << "fingertips2"
+                                             << "has 128 output channels: there is no "
+                                                "channel 129 for index";
+    QTest::newRow("carrier above Nyquist") << "audio:semhaptest?carrier=22050"
+                                           << "lra4"
+                                           << "must be below 22050 Hz";
+    QTest::newRow("no such output") << "audio:nosuchcard"
+                                    << "lra4"
+                                    << "no sound output 'nosuchcard'";
+    QTest::newRow("two outputs match") << "audio:semhap"
+                                       << "lra4"
+                                       << "'semhap' names 2 sound outputs: semhaptest, "
+                                          "semhapother";
+}
+
+void TestAudio::badAddressesAreRejected()
+{
+    QFETCH(QString, uri);
+    QFETCH(QString, model);
+    QFETCH(QString, errorPart);
+    QString error;
+    std::unique_ptr<Transport> transport =
+        TransportFactory::create(uri, DeviceModelLibrary::builtin(model), &error);
+    if (transport) {
+        QVERIFY(!transport->open(&error));
+        // The status says it too, for the Devices panel.
+        QCOMPARE(transport->status().lastError, error);
+        QCOMPARE(transport->status().state(), LinkState::Disconnected);
+    }
+    QVERIFY2(error.contains(errorPart), qPrintable(error));
+}
+
+void TestAudio::carrierAndEnvelope_data()
+{
+    QTest::addColumn<QString>("uri");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<double>("carrier");
+    QTest::addColumn<double>("level");
+    QTest::newRow("170 Hz by default") << "audio:semhaptest" << 0.5 << 1.0 << 170.0 << 0.5;
+    QTest::newRow("full scale") << "audio:semhaptest" << 1.0 << 1.0 << 170.0 << 1.0;
+    QTest::newRow("250 Hz") << "audio:semhaptest?carrier=250" << 0.8 << 1.0 << 250.0 << 0.8;
+    QTest::newRow("per channel") << "audio:semhaptest?carrier=90,170,200,300" << 0.3 << 1.0 << 90.0
+                                 << 0.3;
+    QTest::newRow("gain") << "audio:semhaptest" << 0.8 << 0.5 << 170.0 << 0.4;
+    QTest::newRow("clamped") << "audio:semhaptest" << 1.7 << 1.0 << 170.0 << 1.0;
+    QTest::newRow("part of the name") << "audio:HAPTEST" << 0.6 << 1.0 << 170.0 << 0.6;
+}
+
+void TestAudio::carrierAndEnvelope()
+{
+    QFETCH(QString, uri);
+    QFETCH(double, value);
+    QFETCH(double, gain);
+    QFETCH(double, carrier);
+    QFETCH(double, level);
+    FifoCard card(m_fifo, 4);
+    auto transport = open(uri);
+    QVERIFY(transport);
+    transport->setArmed(true);
+    transport->setGain(gain);
+    QTRY_VERIFY(card.frames() > 2000);
+    transport->send(frameOf(1.0, {value, 0.0, 0.0, 0.0}));
+    QTRY_VERIFY(card.frames() > 2000 + size_t(0.3 * Rate));
+    transport->close();
+    QTRY_VERIFY(card.ended());
+
+    const std::vector<float> steady = steadyPart(card.channel(0), level);
+    QVERIFY(steady.size() > size_t(0.2 * Rate));
+    QVERIFY2(std::abs(frequency(steady) - carrier) < 0.01 * carrier,
+             qPrintable(QString::number(frequency(steady))));
+    QVERIFY2(std::abs(peak(steady) - level) < 0.005, qPrintable(QString::number(peak(steady))));
+    // What sent() says is what was played.
+    const DeviceFrame played = [&] {
+        std::vector<DeviceFrame> frames;
+        std::uint64_t next = 0;
+        transport->sent().readSince(&next, &frames);
+        return frames.at(frames.size() - 2); // before the stop's rest frame
+    }();
+    QCOMPARE(played.t, 1.0);
+    QCOMPARE(played.values[0], level);
+    QCOMPARE(transport->sent().last().values[0], 0.0);
+    const TransportStatus status = transport->status();
+    QCOMPARE(status.framesSent, 2u);
+    QVERIFY(status.latencyMs >= 0.0);
+    QVERIFY(transport->latencyOf(0) >= 0.0);
+}
+
+void TestAudio::channelsGoWhereMapped()
+{
+    FifoCard card(m_fifo, 7);
+    auto transport = open(QStringLiteral("audio:semhaptest?channels=4,2,7,1"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    QTRY_VERIFY(card.frames() > 2000);
+    transport->send(frameOf(1.0, {0.2, 0.4, 0.6, 0.8}));
+    QTRY_VERIFY(card.frames() > 2000 + size_t(0.3 * Rate));
+    transport->close();
+    QTRY_VERIFY(card.ended());
+    const int output[] = {4, 2, 7, 1};
+    const double level[] = {0.2, 0.4, 0.6, 0.8};
+    for (int c = 0; c < 4; ++c) {
+        const std::vector<float> steady = steadyPart(card.channel(output[c] - 1), level[c]);
+        QVERIFY2(std::abs(peak(steady) - level[c]) < 0.005, qPrintable(QString::number(c)));
+    }
+    for (const int silent : {3, 5, 6})
+        QCOMPARE(peak(card.channel(silent - 1)), 0.0f);
+}
+
+void TestAudio::envelopeStepsAreRamped()
+{
+    FifoCard card(m_fifo, 2);
+    auto transport = open(QStringLiteral("audio:semhaptest"), QStringLiteral("fingertips2"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    QTRY_VERIFY(card.frames() > 2000);
+    // Steps between 0.2 and 0.9 at the model's rate (100 Hz): as a staircase, each would
+    // jump the wave by up to 0.7.
+    for (int k = 0; k < 40; ++k) {
+        transport->send(frameOf(0.01 * k, {k % 2 ? 0.9 : 0.2, 0.0}));
+        sleepMs(10);
+    }
+    QTRY_COMPARE(transport->status().framesSent, 40u); // each step
+    transport->close();
+    QTRY_VERIFY(card.ended());
+    const std::vector<float> wave = card.channel(0);
+    // A ramp spreads 0.7 over one update period (441 samples).
+    const double largest = largestStep(wave, 0);
+    QVERIFY2(largest <= smoothStep(0.9, 0.7 / 441.0), qPrintable(QString::number(largest)));
+    QVERIFY(peak(wave) > 0.85f);                   // it did play the steps
+    QCOMPARE(transport->status().framesSent, 41u); // and the stop's rest
+}
+
+void TestAudio::stopAllSilencesAtOnce()
+{
+    FifoCard card(m_fifo, 4);
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    QTRY_VERIFY(card.frames() > 2000);
+    transport->send(frameOf(2.0, {0.8, 0.8, 0.8, 0.8}));
+    QTRY_VERIFY(card.frames() > 2000 + size_t(0.2 * Rate));
+    transport->stopAll();
+    const size_t stoppedAt = card.frames();
+    QTRY_VERIFY(card.frames() > stoppedAt + size_t(0.3 * Rate));
+    const std::vector<float> wave = card.channel(0);
+    // Loud until the stop, and silent within a millisecond of a buffer after it.
+    const auto lastLoud =
+        std::find_if(wave.rbegin(), wave.rend(), [](float x) { return std::abs(x) > 0.0f; });
+    const size_t end = size_t(wave.rend() - lastLoud);
+    QVERIFY(end > 2000);
+    QVERIFY2(end < stoppedAt + size_t(0.1 * Rate), qPrintable(QString::number(end - stoppedAt)));
+    QVERIFY(wave.size() - end > size_t(0.15 * Rate));
+    // Faded over 1 ms (44 samples), not cut.
+    QVERIFY(largestStep(wave, end - size_t(0.01 * Rate)) <= smoothStep(0.8, 0.8 / 44.0));
+    const DeviceFrame rest = transport->sent().last();
+    QCOMPARE(rest.t, 2.0);
+    QCOMPARE(rest.values[0], 0.0);
+    transport->close();
+}
+
+void TestAudio::disarmingSilencesHeldValues()
+{
+    FifoCard card(m_fifo, 4);
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    QVERIFY(transport);
+    QTRY_VERIFY(card.frames() > 2000);
+    // Disarmed, as real bands start: what is sent is not played.
+    transport->send(frameOf(1.0, {0.7, 0.0, 0.0, 0.0}));
+    QTRY_VERIFY(card.frames() > 2000 + size_t(0.2 * Rate));
+    QCOMPARE(peak(card.channel(0)), 0.0f);
+    QCOMPARE(transport->sent().last().values[0], 0.0);
+    // Armed, the values held since are played within a heartbeat, without a new send.
+    transport->setArmed(true);
+    QTRY_COMPARE(transport->sent().last().values[0], 0.7);
+    const size_t armedAt = card.frames();
+    QTRY_VERIFY(card.frames() > armedAt + size_t(0.2 * Rate));
+    QVERIFY(peak(card.channel(0)) > 0.69f);
+    transport->setArmed(false);
+    QTRY_COMPARE(transport->sent().last().values[0], 0.0);
+    const size_t disarmedAt = card.frames();
+    QTRY_VERIFY(card.frames() > disarmedAt + size_t(0.3 * Rate));
+    QCOMPARE(peak(card.channel(0, disarmedAt + size_t(0.2 * Rate))), 0.0f);
+    transport->close();
+}
+
+void TestAudio::closeLeavesSilence()
+{
+    FifoCard card(m_fifo, 4);
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    QTRY_VERIFY(card.frames() > 2000);
+    transport->send(frameOf(1.0, {0.9, 0.9, 0.9, 0.9}));
+    QTRY_VERIFY(card.frames() > 2000 + size_t(0.2 * Rate));
+    transport.reset(); // as on exit: the destructor closes
+    QTRY_VERIFY(card.ended());
+    // It played, and what the card got last is a fade to silence, not a cut.
+    const std::vector<float> wave = card.channel(0);
+    QVERIFY(peak(wave) > 0.85f);
+    QCOMPARE(wave.back(), 0.0f);
+    QVERIFY(largestStep(wave, wave.size() - size_t(0.02 * Rate)) <= smoothStep(0.9, 0.9 / 44.0));
+}
+
+void TestAudio::vanishedCardIsRetried()
+{
+    auto card = std::make_unique<FifoCard>(m_fifo, 4);
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    transport->send(frameOf(1.0, {0.5, 0.0, 0.0, 0.0}));
+    QTRY_VERIFY(card->frames() > 4000);
+    card->stop(); // unplugged
+    QTRY_COMPARE_WITH_TIMEOUT(transport->status().state(), LinkState::Disconnected, 3000);
+    QVERIFY2(transport->status().lastError.contains(QStringLiteral("stopped playing")),
+             qPrintable(transport->status().lastError));
+    // The pipeline goes on: send() returns at once while the card is away.
+    QElapsedTimer timer;
+    timer.start();
+    for (int k = 0; k < 100; ++k)
+        transport->send(frameOf(2.0 + 0.002 * k, {0.5, 0.0, 0.0, 0.0}));
+    QVERIFY(timer.elapsed() < 50);
+    // Plugged in again: the transport reopens it and plays what it holds.
+    card = std::make_unique<FifoCard>(m_fifo, 4);
+    QTRY_COMPARE_WITH_TIMEOUT(transport->status().state(), LinkState::Connected, 5000);
+    QCOMPARE(transport->status().reconnects, 1u);
+    QTRY_VERIFY(card->frames() > size_t(0.2 * Rate));
+    QVERIFY(std::abs(peak(card->channel(0)) - 0.5f) < 0.005f);
+    transport->close();
+}
+
+QTEST_GUILESS_MAIN(TestAudio)
+#include "tst_audio.moc"
