@@ -29,7 +29,7 @@ void PlayCommand::configure(QCommandLineParser &parser)
     addPatternArguments(parser);
     parser.addOption({QStringLiteral("device"),
                       tr("Where to play: virtual:NAME, serial:PATH[?baud=N], hid:VID:PID, "
-                         "udp:HOST:PORT."),
+                         "udp:HOST:PORT, audio:DEVICE[?channels=1,2,…&carrier=HZ]."),
                       tr("URI")});
     parser.addOption({QStringLiteral("duration"),
                       tr("How long to play, in seconds (default: release-at + 1, or 2)."),
@@ -92,13 +92,18 @@ int PlayCommand::execute(const QCommandLineParser &parser)
     transport->stopAll();
     const TransportStatus status = transport->status();
     transport->close();
-    m_out << tr("%1 on %2: %3 frames, round trip %4 ms%5\n")
+    // A band answers heartbeats (a round trip); a sound card reports its output time.
+    QString timing;
+    if (status.roundTripMs >= 0.0)
+        timing += tr(", round trip %1 ms").arg(status.roundTripMs, 0, 'f', 2);
+    if (status.latencyMs >= 0.0)
+        timing += tr(", latency %1 ms").arg(status.latencyMs, 0, 'f', 2);
+    m_out << tr("%1 on %2: %3 frames%4%5\n")
                  .arg(pattern, transport->uri())
                  .arg(status.framesSent)
-                 .arg(status.roundTripMs, 0, 'f', 2)
-                 .arg(status.lastError.isEmpty()
-                          ? QString()
-                          : QStringLiteral(" (") + status.lastError + QLatin1Char(')'));
+                 .arg(timing, status.lastError.isEmpty()
+                                  ? QString()
+                                  : QStringLiteral(" (") + status.lastError + QLatin1Char(')'));
     return ExitOk;
 }
 

@@ -5,7 +5,7 @@
 // (the chain behind it, a `null` PCM, is not paced). What the card got is checked: the
 // carrier's frequency, the envelope's level, which output each channel is on, no steps at
 // envelope changes, silence after stop-all, disarming and close, what sent() says, and a
-// card that goes away mid-stream and comes back.
+// card that goes away mid-stream and comes back; and `semhap devices` and `semhap play` on it.
 #include "audiosystem.h"
 #include "audiotransport.h"
 #include "devicemanager.h"
@@ -13,6 +13,7 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -216,6 +217,8 @@ private slots:
     void disarmingSilencesHeldValues();
     void closeLeavesSilence();
     void vanishedCardIsRetried();
+    void devicesCommandListsOutputs();
+    void playCommandPlaysOnTheCard();
 
 private:
     std::unique_ptr<AudioTransport> open(const QString &uri, const QString &model = "lra4");
@@ -525,6 +528,53 @@ void TestAudio::vanishedCardIsRetried()
     QTRY_VERIFY(card->frames() > size_t(0.2 * Rate));
     QVERIFY(std::abs(peak(card->channel(0)) - 0.5f) < 0.005f);
     transport->close();
+}
+
+void TestAudio::devicesCommandListsOutputs()
+{
+    QProcess semhap;
+    semhap.start(QStringLiteral(SEMHAP_CLI_BINARY), {QStringLiteral("devices")});
+    QVERIFY(semhap.waitForFinished(30000));
+    QCOMPARE(semhap.exitCode(), 0);
+    const QString out = QString::fromUtf8(semhap.readAllStandardOutput());
+    QVERIFY2(out.contains(QStringLiteral("audio:DEVICE[?channels=")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("  audio:semhaptest          128 ch, 44100 Hz (ALSA)\n")),
+             qPrintable(out));
+    QVERIFY(out.contains(QStringLiteral("  audio:semhapother ")));
+    // Probing found no JACK server and said so to stderr, where the user would read it.
+    QCOMPARE(QString::fromUtf8(semhap.readAllStandardError()), QString());
+}
+
+void TestAudio::playCommandPlaysOnTheCard()
+{
+    FifoCard card(m_fifo, 4);
+    QProcess semhap;
+    semhap.start(QStringLiteral(SEMHAP_CLI_BINARY),
+                 {QStringLiteral("play"), QStringLiteral("vib.geiger"), QStringLiteral("--device"),
+                  QStringLiteral("audio:semhaptest"), QStringLiteral("--intensity"),
+                  QStringLiteral("0.5"), QStringLiteral("--duration"), QStringLiteral("1")});
+    QVERIFY(semhap.waitForFinished(30000));
+    QCOMPARE(semhap.exitCode(), 0);
+    const QString out = QString::fromUtf8(semhap.readAllStandardOutput());
+    QVERIFY2(out.startsWith(QStringLiteral("vib.geiger on audio:semhaptest: ")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral(" ms\n")) && out.contains(QStringLiteral("latency")),
+             qPrintable(out));
+    QTRY_VERIFY(card.ended());
+    // 25 ms pulses at 2 + 18 × 0.5 = 11 Hz for a second, the first at 0, on every output.
+    for (int output = 0; output < 4; ++output) {
+        const std::vector<float> wave = card.channel(output);
+        int pulses = 0;
+        size_t lastLoud = 0;
+        for (size_t i = 0; i < wave.size(); ++i) {
+            if (std::abs(wave[i]) < 0.5f)
+                continue;
+            if (pulses == 0 || i - lastLoud > size_t(0.02 * Rate))
+                ++pulses;
+            lastLoud = i;
+        }
+        QCOMPARE(pulses, 11);
+        QVERIFY(peak(wave) > 0.95f);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestAudio)
