@@ -1,38 +1,29 @@
 // SPDX-License-Identifier: MIT
 // The sound card transport without a sound card: PortAudio's ALSA host API plays into
-// PCMs of a test-local ALSA configuration (asound.conf beside this file), whose `file`
-// plugin writes the raw samples into a FIFO that a reader here drains at the card's rate
-// (the chain behind it, a `null` PCM, is not paced). What the card got is checked: the
+// PCMs of a test-local ALSA configuration, whose `file` plugin writes the raw samples into
+// a FIFO that a reader drains at the card's rate (FifoCard). What the card got is checked: the
 // carrier's frequency, the envelope's level, which output each channel is on, no steps at
 // envelope changes, silence after stop-all, disarming and close, what sent() says, and a
 // card that goes away mid-stream and comes back; and `semhap devices` and `semhap play` on it.
 #include "audiosystem.h"
 #include "audiotransport.h"
 #include "devicemanager.h"
+#include "fifocard.h"
 #include "transportfactory.h"
 
 #include <QElapsedTimer>
-#include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
-#include <fcntl.h>
-#include <mutex>
-#include <poll.h>
-#include <sys/stat.h>
-#include <thread>
-#include <unistd.h>
 
 using namespace semhap;
 
 namespace {
 
-constexpr double Rate = 44100.0; // the null PCM's default rate, which the stream takes
+constexpr double Rate = FifoCard::Rate;
 
 DeviceFrame frameOf(double t, std::initializer_list<double> values)
 {
@@ -42,103 +33,6 @@ DeviceFrame frameOf(double t, std::initializer_list<double> values)
     std::copy(values.begin(), values.end(), f.values.begin());
     return f;
 }
-
-void sleepMs(int ms)
-{
-    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
-}
-
-/**
- * The sound card: reads the interleaved float samples the `file` plugin writes into a
- * FIFO, no faster than `Rate` frames a second, until the writer closes it or stop().
- */
-class FifoCard
-{
-public:
-    FifoCard(const QString &path, int channels) : m_channels(channels)
-    {
-        // Opening for reading first lets the plugin's open for writing go through.
-        m_fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-        // A small pipe: the stream runs close to what has been read.
-        ::fcntl(m_fd, F_SETPIPE_SZ, 4096);
-        m_thread = std::thread([this] { run(); });
-    }
-    ~FifoCard() { stop(); }
-
-    /** Stops reading and closes the FIFO: to the writer, the card is gone. */
-    void stop()
-    {
-        m_quit = true;
-        if (m_thread.joinable())
-            m_thread.join();
-        if (m_fd >= 0)
-            ::close(m_fd);
-        m_fd = -1;
-    }
-    bool ended() const { return m_ended; }
-    size_t frames() const
-    {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        return m_samples.size() / size_t(m_channels);
-    }
-    /** Output `channel` (from 0) from frame `from` on. */
-    std::vector<float> channel(int channel, size_t from = 0) const
-    {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        std::vector<float> out;
-        for (size_t i = from * size_t(m_channels) + size_t(channel); i < m_samples.size();
-             i += size_t(m_channels))
-            out.push_back(m_samples[i]);
-        return out;
-    }
-
-private:
-    void run()
-    {
-        QElapsedTimer clock;
-        clock.start();
-        std::vector<char> buffer(8192);
-        size_t bytes = 0;
-        while (!m_quit) {
-            const double allowed = double(clock.nsecsElapsed()) * 1e-9 * Rate;
-            if (double(bytes) / (4.0 * m_channels) >= allowed) {
-                sleepMs(1);
-                continue;
-            }
-            pollfd fd{m_fd, POLLIN, 0};
-            if (::poll(&fd, 1, 10) <= 0)
-                continue;
-            const ssize_t n = ::read(m_fd, buffer.data(), buffer.size());
-            if (n == 0 && m_writerSeen) {
-                m_ended = true;
-                return;
-            }
-            if (n <= 0) {
-                sleepMs(1); // no writer yet
-                continue;
-            }
-            m_writerSeen = true;
-            bytes += size_t(n);
-            m_pending.insert(m_pending.end(), buffer.begin(), buffer.begin() + n);
-            const size_t whole = m_pending.size() / 4 * 4;
-            std::lock_guard<std::mutex> lock(m_mutex);
-            const size_t first = m_samples.size();
-            m_samples.resize(first + whole / 4);
-            std::memcpy(m_samples.data() + first, m_pending.data(), whole);
-            m_pending.erase(m_pending.begin(), m_pending.begin() + long(whole));
-        }
-    }
-
-    int m_channels;
-    int m_fd = -1;
-    std::thread m_thread;
-    std::atomic<bool> m_quit{false};
-    std::atomic<bool> m_ended{false};
-    bool m_writerSeen = false;
-    std::vector<char> m_pending;
-    mutable std::mutex m_mutex;
-    std::vector<float> m_samples;
-};
 
 /** The steady middle of a burst: from 20 ms after the first sample above half of `level`
  * to 20 ms before the last. */
@@ -229,22 +123,9 @@ private:
 
 void TestAudio::initTestCase()
 {
-    // The file plugin writes into a FIFO; a reader that went away must not end the test.
-    std::signal(SIGPIPE, SIG_IGN);
     QVERIFY(m_dir.isValid());
-    m_fifo = m_dir.filePath(QStringLiteral("card.fifo"));
-    QCOMPARE(::mkfifo(QFile::encodeName(m_fifo).constData(), 0600), 0);
-    QFile templateFile(QStringLiteral(SEMHAP_TEST_DATA "/asound.conf"));
-    QVERIFY(templateFile.open(QIODevice::ReadOnly));
-    QByteArray config = templateFile.readAll();
-    config.replace("@FIFO@", QFile::encodeName(m_fifo));
-    const QString configPath = m_dir.filePath(QStringLiteral("asound.conf"));
-    QFile out(configPath);
-    QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write(config);
-    out.close();
-    // Only this configuration: no system PCM (there is no card here anyway).
-    qputenv("ALSA_CONFIG_PATH", QFile::encodeName(configPath));
+    m_fifo = FifoCard::install(m_dir.path());
+    QVERIFY(!m_fifo.isEmpty());
     m_lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
 }
 
@@ -419,7 +300,7 @@ void TestAudio::envelopeStepsAreRamped()
     // jump the wave by up to 0.7.
     for (int k = 0; k < 40; ++k) {
         transport->send(frameOf(0.01 * k, {k % 2 ? 0.9 : 0.2, 0.0}));
-        sleepMs(10);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     QTRY_COMPARE(transport->status().framesSent, 40u); // each step
     transport->close();
