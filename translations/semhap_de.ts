@@ -316,6 +316,14 @@
         <source>Its hand is not in this scene.</source>
         <translation>Seine Hand ist nicht in dieser Szene.</translation>
     </message>
+    <message>
+        <source>latency %1 ms</source>
+        <translation>Latenz %1 ms</translation>
+    </message>
+    <message>
+        <source>%1 ch, %2 Hz (%3)</source>
+        <translation>%1 Kan., %2 Hz (%3)</translation>
+    </message>
 </context>
 <context>
     <name>semhap::Engine</name>

@@ -316,6 +316,14 @@
         <source>Its hand is not in this scene.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>latency %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ch, %2 Hz (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::Engine</name>

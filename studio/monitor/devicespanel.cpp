@@ -62,6 +62,9 @@ QString statusDetails(const BoundDevice &bound)
         DevicesPanel::tr("%1 frames/s").arg(QLocale().toString(s.framesPerSecond, 'f', 0)));
     if (s.roundTripMs >= 0.0)
         parts.append(DevicesPanel::tr("RTT %1 ms").arg(QLocale().toString(s.roundTripMs, 'f', 1)));
+    if (s.latencyMs >= 0.0)
+        parts.append(
+            DevicesPanel::tr("latency %1 ms").arg(QLocale().toString(s.latencyMs, 'f', 1)));
     parts.append(DevicesPanel::tr("errors: %1").arg(s.errors));
     if (s.reconnects > 0)
         parts.append(DevicesPanel::tr("reconnects: %1").arg(s.reconnects));
@@ -239,8 +242,16 @@ void DevicesPanel::rescan()
         const QString ids = port.vendorId >= 0
                                 ? hexId(port.vendorId) + QLatin1Char(':') + hexId(port.productId)
                                 : QString();
-        auto *item = new QTreeWidgetItem(m_present, {port.kind, port.uri, port.description, ids});
+        // A sound output: its channels and the rate the transport plays at.
+        const QString description =
+            port.outputChannels >= 0
+                ? tr("%1 ch, %2 Hz (%3)")
+                      .arg(port.outputChannels)
+                      .arg(QLocale().toString(port.sampleRate, 'f', 0), port.description)
+                : port.description;
+        auto *item = new QTreeWidgetItem(m_present, {port.kind, port.uri, description, ids});
         item->setToolTip(1, port.uri);
+        item->setToolTip(2, description);
         m_presentUris.append(port.uri);
     }
     for (auto &row : m_rows) {

@@ -2,11 +2,13 @@
 // The devices panel end to end without hardware: an emulated band on UDP loopback is added
 // through the panel's address field, chosen in the router device's row and connected with
 // the row's button; its state, the frames reaching the band, the level meters, arming and
-// the fall back to the virtual device on disconnect are checked in the panel.
+// the fall back to the virtual device on disconnect are checked in the panel. A sound card
+// (FifoCard: ALSA into a FIFO) is listed, bound, unplugged and plugged in again.
 #include "devicemanager.h"
 #include "devicespanel.h"
 #include "emulatedband.h"
 #include "emulator.h"
+#include "fifocard.h"
 #include "levelmeter.h"
 #include "runhistory.h"
 #include "widgetchecks.h"
@@ -19,6 +21,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
@@ -86,14 +89,27 @@ class TestDevicesPanel : public QObject
     Q_OBJECT
 
 private slots:
+    void initTestCase();
     void addAddress_data();
     void addAddress();
     void connectToEmulator();
+    void connectToSoundCard();
     void metersShowTheirOwnDevice();
     void wheelScrollsTheRows_data();
     void wheelScrollsTheRows();
     void screenshot();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_fifo;
 };
+
+void TestDevicesPanel::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_fifo = FifoCard::install(m_dir.path());
+    QVERIFY(!m_fifo.isEmpty());
+}
 
 void TestDevicesPanel::addAddress_data()
 {
@@ -194,6 +210,51 @@ void TestDevicesPanel::connectToEmulator()
     QVERIFY(!f.child<QPushButton>(QStringLiteral("disconnect:") + Band)->isEnabled());
     // The band's watchdog takes it to rest once the host has gone.
     QTRY_VERIFY_WITH_TIMEOUT(band.state().setpoints[0] == 0.0, 3000);
+}
+
+void TestDevicesPanel::connectToSoundCard()
+{
+    auto card = std::make_unique<FifoCard>(m_fifo, 4);
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.panel));
+    const QString uri = QStringLiteral("audio:semhaptest");
+    const auto *list = f.child<QTreeWidget>(QStringLiteral("presentList"));
+    const QList<QTreeWidgetItem *> rows = list->findItems(uri, Qt::MatchExactly, 1);
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(rows[0]->text(0), QStringLiteral("audio"));
+    QCOMPARE(rows[0]->text(2),
+             QStringLiteral("128 ch, %1 Hz (ALSA)").arg(QLocale().toString(44100.0, 'f', 0)));
+
+    QVERIFY(choose(f.child<QComboBox>(QStringLiteral("uri:") + Band), uri));
+    f.click(QStringLiteral("connect:") + Band);
+    QCOMPARE(f.manager.transport(Band)->uri(), uri);
+    QTRY_COMPARE_WITH_TIMEOUT(f.state(), QStringLiteral("connected"), 5000);
+    f.click(QStringLiteral("armAll"));
+    DeviceFrame frame;
+    frame.t = 0.5;
+    frame.channelCount = 4;
+    frame.values = {0.5, 0.0, 0.0, 0.0};
+    f.manager.transport(Band)->send(frame);
+    auto *details = f.child<QLabel>(QStringLiteral("details:") + Band);
+    QTRY_VERIFY(details->text().contains(QStringLiteral("latency")));
+    QTRY_VERIFY(card->frames() > 8000);
+    const std::vector<float> wave = card->channel(0);
+    QVERIFY(std::abs(*std::max_element(wave.begin(), wave.end()) - 0.5f) < 0.01f);
+
+    // Unplugged: the panel says so and why; plugged in again, the band plays on.
+    card->stop();
+    QTRY_COMPARE_WITH_TIMEOUT(f.state(), QStringLiteral("disconnected"), 5000);
+    QTRY_VERIFY(details->text().contains(
+        QStringLiteral("retrying: 'semhaptest' stopped playing (unplugged?)")));
+    card = std::make_unique<FifoCard>(m_fifo, 4);
+    QTRY_COMPARE_WITH_TIMEOUT(f.state(), QStringLiteral("connected"), 5000);
+    QTRY_VERIFY(details->text().contains(QStringLiteral("reconnects: 1")));
+    QTRY_VERIFY(card->frames() > 8000);
+
+    // Disconnecting closes the stream: the card's last samples are silence.
+    f.click(QStringLiteral("disconnect:") + Band);
+    QTRY_VERIFY(card->ended());
+    QCOMPARE(card->channel(0).back(), 0.0f);
 }
 
 void TestDevicesPanel::metersShowTheirOwnDevice()

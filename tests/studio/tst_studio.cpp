@@ -9,6 +9,7 @@
 #include "emulatedband.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
+#include "fifocard.h"
 #include "gamepadinput.h"
 #include "handdrive.h"
 #include "imagechecks.h"
@@ -299,6 +300,8 @@ private slots:
     void stopAllWorksFromAnywhere();
     void auditionShowsInTheReadouts_data();
     void auditionShowsInTheReadouts();
+    void auditionPlaysOnASoundCard_data();
+    void auditionPlaysOnASoundCard();
     void disarmedBandsReadZero();
     void statusBarCountsDevicesAsThePanelShowsThem_data();
     void statusBarCountsDevicesAsThePanelShowsThem();
@@ -346,6 +349,7 @@ private:
     /** Picks `language` in File → Preferences, as a person would, and waits for the window. */
     static void pickLanguage(Studio &studio, const QString &language);
     QTemporaryDir m_config;
+    QString m_fifo; ///< the sound card's (FifoCard)
 };
 
 void TestStudio::initTestCase()
@@ -354,6 +358,8 @@ void TestStudio::initTestCase()
     QCoreApplication::setOrganizationName("semhap");
     QCoreApplication::setApplicationName("semhap-studio-test");
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_config.path());
+    m_fifo = FifoCard::install(m_config.path());
+    QVERIFY(!m_fifo.isEmpty());
 }
 
 void TestStudio::init()
@@ -687,6 +693,69 @@ void TestStudio::auditionShowsInTheReadouts()
     QTRY_VERIFY(window.engine().simTime() > paused);
     QTRY_VERIFY(drawnTo() > paused && drawnTo() <= window.engine().simTime());
     QVERIFY(m1->keyAxis()->range().upper <= window.engine().simTime());
+}
+
+void TestStudio::auditionPlaysOnASoundCard_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "en";
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << "en";
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "de";
+}
+
+// A sound card in the Devices panel: listed with its channels and rate, typed into
+// right.vibro's address box and connected, armed; an audition of vib.rampup plays on it
+// through its transport (the card gets the 170 Hz carrier rising to full scale, the meter
+// shows it), and Stop all (Esc) silences the card.
+void TestStudio::auditionPlaysOnASoundCard()
+{
+    FifoCard card(m_fifo, 4);
+    const std::unique_ptr<Studio> studio = startStudio(options());
+    MainWindow &window = *studio->window();
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    DevicesPanel *devices = window.devicesPanel();
+    const auto *present = devices->findChild<QTreeWidget *>("presentList");
+    QTRY_VERIFY(!present->findItems("audio:semhaptest", Qt::MatchExactly, 1).isEmpty());
+    auto *address = devices->findChild<QComboBox *>("uri:right.vibro");
+    address->setFocus();
+    address->lineEdit()->selectAll();
+    QTest::keyClicks(address, "audio:semhaptest");
+    QTest::mouseClick(devices->findChild<QWidget *>("connect:right.vibro"), Qt::LeftButton);
+    QTRY_COMPARE(window.engine().devices().transport("right.vibro")->uri(), "audio:semhaptest");
+    auto *state = devices->findChild<QLabel *>("state:right.vibro");
+    QTRY_COMPARE_WITH_TIMEOUT(state->styleSheet().contains(colors::Ok.name()), true, 5000);
+    QTest::mouseClick(devices->findChild<QPushButton *>("armAll"), Qt::LeftButton);
+
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    WaveformDesigner *designer = window.waveformDesigner();
+    designer->openBuiltin("vib.rampup"); // up to 1 in 0.5 s, then 0; released at 1.5 s
+    QVERIFY(choose(designer->findChild<QComboBox *>("auditionDevice"), "right.vibro — lra4"));
+    const size_t before = card.frames();
+    QTest::mouseClick(designer->findChild<QPushButton *>("auditionBegin"), Qt::LeftButton);
+    QVERIFY(designer->auditioner()->isPlaying());
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    auto *meter = window.findChild<LevelMeter *>("levels:right.vibro");
+    QTRY_VERIFY_WITH_TIMEOUT(meter->values().at(0) > 0.9, 3000);
+    for (QWidget *w = meter; w; w = w->parentWidget()) {
+        if (auto *area = qobject_cast<QScrollArea *>(w))
+            area->ensureWidgetVisible(meter);
+    }
+    QFETCH(QString, language);
+    QTRY_VERIFY(devices->findChild<QLabel *>("details:right.vibro")
+                    ->text()
+                    .contains(language == "de" ? "Latenz" : "latency"));
+    savePicture(&window, "devices-audio");
+    const std::vector<float> wave = card.channel(0, before);
+    QVERIFY(*std::max_element(wave.begin(), wave.end()) > 0.9f);
+
+    // Stop all: the card falls silent at once, the meter reads zero.
+    QTest::keyClick(&window, Qt::Key_Escape);
+    QTRY_COMPARE(meter->values(), std::vector<double>(4, 0.0));
+    const size_t stopped = card.frames();
+    QTRY_VERIFY(card.frames() > stopped + 20000);
+    const std::vector<float> after = card.channel(0, stopped + 10000);
+    QCOMPARE(*std::max_element(after.begin(), after.end()), 0.0f);
 }
 
 // The readouts show what the bands were sent: disarmed (Devices → Disarm all), the router's
