@@ -9,6 +9,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <mutex>
 #include <poll.h>
@@ -90,6 +91,8 @@ pcm.default {
         m_fd = -1;
     }
     bool ended() const { return m_ended; }
+    /** CPU time the reading thread has used (s). */
+    double cpuSeconds() const { return m_cpu; }
     size_t frames() const
     {
         std::lock_guard<std::mutex> lock(m_mutex);
@@ -114,6 +117,9 @@ private:
         std::vector<char> buffer(8192);
         size_t bytes = 0;
         while (!m_quit) {
+            timespec cpu{};
+            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpu);
+            m_cpu = double(cpu.tv_sec) + double(cpu.tv_nsec) * 1e-9;
             const double allowed = double(clock.nsecsElapsed()) * 1e-9 * Rate;
             if (double(bytes) / (4.0 * m_channels) >= allowed) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -148,6 +154,7 @@ private:
     std::thread m_thread;
     std::atomic<bool> m_quit{false};
     std::atomic<bool> m_ended{false};
+    std::atomic<double> m_cpu{0.0};
     bool m_writerSeen = false;
     std::vector<char> m_pending;
     mutable std::mutex m_mutex;
