@@ -114,15 +114,21 @@ int AudioSystem::find(const QString &name, QString *error) const
 
 std::vector<AudioOutputInfo> AudioSystem::list(double maxAge)
 {
-    std::lock_guard<std::recursive_mutex> guard(lock());
+    static std::mutex cacheMutex;
     static std::vector<AudioOutputInfo> cached;
     static double scanned = -1.0;
+    std::lock_guard<std::mutex> cacheLock(cacheMutex);
     const double now = monotonicSeconds();
-    if (scanned < 0.0 || now - scanned >= maxAge) {
-        const AudioSystem system;
-        cached = system.outputs();
-        scanned = now;
-    }
+    if (scanned >= 0.0 && now - scanned < maxAge)
+        return cached;
+    // A stream being opened (a card that takes its time) holds PortAudio: the last
+    // listing will do (none before the first), rather than a panel that waits.
+    const std::unique_lock<std::recursive_mutex> guard(lock(), std::try_to_lock);
+    if (!guard.owns_lock())
+        return cached;
+    const AudioSystem system;
+    cached = system.outputs();
+    scanned = now;
     return cached;
 }
 

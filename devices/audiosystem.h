@@ -49,7 +49,9 @@ public:
     static std::recursive_mutex &lock();
     /**
      * The outputs present, scanned at most every `maxAge` seconds: listing is probing every
-     * card, too slow for a panel that polls each second.
+     * card, too slow for a panel that polls each second. While another thread holds
+     * PortAudio, the previous listing (empty before the first), so a caller on the GUI
+     * thread never waits for a card.
      */
     static std::vector<AudioOutputInfo> list(double maxAge);
 
