@@ -503,11 +503,11 @@ void TestLiveRig::silenceWaitsBehindAReplay()
     QVERIFY(waitForFrames(engine, 100));
     engine.stopRecording();
     const auto stops = [&engine] {
-        int stops = 0;
+        int count = 0;
         for (const QString &name : engine.devices().boundNames())
-            stops +=
+            count +=
                 dynamic_cast<VirtualTransport &>(*engine.devices().transport(name)).stopCount();
-        return stops;
+        return count;
     };
     QTRY_VERIFY(stops() > 0); // the sender's first silence stopped the bands
 
