@@ -2,19 +2,14 @@
 #include "emulator.h"
 
 #include "band.h"
-#include "jsonlineswriter.h"
 #include "monotonic.h"
-
-#include <QFileInfo>
 
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fcntl.h>
 #include <netdb.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <termios.h>
 #include <unistd.h>
 
 namespace semhap {
@@ -24,23 +19,6 @@ namespace {
 QString errnoText()
 {
     return QString::fromLocal8Bit(std::strerror(errno));
-}
-
-/** Values are logged to 1e-4 so that a settling lag stops producing lines. */
-double rounded(double v)
-{
-    return std::round(v * 1e4) / 1e4;
-}
-
-void appendArray(QByteArray &line, const std::vector<double> &values)
-{
-    line += '[';
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (i > 0)
-            line += ',';
-        JsonLinesWriter::appendNumber(line, rounded(values[i]));
-    }
-    line += ']';
 }
 
 } // namespace
@@ -76,12 +54,7 @@ Emulator::Emulator(const EmulatorOptions &options)
 
 Emulator::~Emulator()
 {
-    if (!m_options.link.isEmpty() && !m_ptyPath.isEmpty() &&
-        QFileInfo(m_options.link).symLinkTarget() == m_ptyPath)
-        QFile::remove(m_options.link);
-    if (m_slaveFd >= 0)
-        ::close(m_slaveFd);
-    if (m_fd >= 0)
+    if (m_options.udp && m_fd >= 0)
         ::close(m_fd);
 }
 
@@ -96,55 +69,15 @@ bool Emulator::open(QString *error)
                      .arg(SEMHAP_MAX_NAME);
         return false;
     }
-    if (!(m_options.udp ? openUdp(error) : openPty(error)))
-        return false;
-    if (!m_options.logPath.isEmpty()) {
-        m_log.setFileName(m_options.logPath);
-        if (!m_log.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-            *error =
-                QStringLiteral("%1: cannot write: %2").arg(m_options.logPath, m_log.errorString());
+    if (m_options.udp) {
+        if (!openUdp(error))
             return false;
-        }
+    } else {
+        if (!m_pty.open(m_options.link, error))
+            return false;
+        m_fd = m_pty.fd();
     }
-    return true;
-}
-
-bool Emulator::openPty(QString *error)
-{
-    m_fd = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (m_fd < 0 || ::grantpt(m_fd) != 0 || ::unlockpt(m_fd) != 0) {
-        *error = QStringLiteral("cannot create a pseudo-terminal: %1").arg(errnoText());
-        return false;
-    }
-    m_ptyPath = QString::fromLocal8Bit(::ptsname(m_fd));
-    m_slaveFd = ::open(m_ptyPath.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (m_slaveFd < 0) {
-        *error = QStringLiteral("%1: %2").arg(m_ptyPath, errnoText());
-        return false;
-    }
-    // Raw from the start: an echoing line discipline would send the host's bytes back.
-    termios tio{};
-    ::tcgetattr(m_slaveFd, &tio);
-    ::cfmakeraw(&tio);
-    ::tcsetattr(m_slaveFd, TCSANOW, &tio);
-    ::fcntl(m_fd, F_SETFL, ::fcntl(m_fd, F_GETFL) | O_NONBLOCK);
-    if (m_options.link.isEmpty())
-        return true;
-    const QFileInfo existing(m_options.link);
-    if (existing.exists() && !existing.isSymLink()) {
-        *error = QStringLiteral("%1: exists and is not a symlink; not replacing it")
-                     .arg(m_options.link);
-        return false;
-    }
-    // A new link renamed over the old one, so a host never sees the path missing.
-    const QByteArray temporary = (m_options.link + QStringLiteral(".new")).toLocal8Bit();
-    ::unlink(temporary.constData());
-    if (::symlink(m_ptyPath.toLocal8Bit().constData(), temporary.constData()) != 0 ||
-        ::rename(temporary.constData(), m_options.link.toLocal8Bit().constData()) != 0) {
-        *error = QStringLiteral("%1: cannot link: %2").arg(m_options.link, errnoText());
-        return false;
-    }
-    return true;
+    return m_options.logPath.isEmpty() || m_log.open(m_options.logPath, error);
 }
 
 bool Emulator::openUdp(QString *error)
@@ -191,14 +124,14 @@ bool Emulator::openUdp(QString *error)
 QString Emulator::address() const
 {
     return m_options.udp ? QStringLiteral("%1:%2").arg(m_options.host).arg(m_boundPort)
-                         : m_ptyPath;
+                         : m_pty.path();
 }
 
 QString Emulator::uri() const
 {
     if (m_options.udp)
         return QStringLiteral("udp:") + address();
-    return QStringLiteral("serial:") + (m_options.link.isEmpty() ? m_ptyPath : m_options.link);
+    return QStringLiteral("serial:") + (m_options.link.isEmpty() ? m_pty.path() : m_options.link);
 }
 
 Emulator::State Emulator::state() const
@@ -309,25 +242,13 @@ void Emulator::log(double now)
 {
     if (!m_log.isOpen())
         return;
-    QByteArray state;
     {
         std::lock_guard<std::mutex> lock(m_mutex);
-        appendArray(state, m_state.setpoints);
-        state += ", \"values\": ";
-        appendArray(state, m_state.values);
+        m_logged.setpoints = m_state.setpoints; // assigned into, so no allocation per tick
+        m_logged.values = m_state.values;
     }
-    if (state == m_lastLogged)
-        return;
-    m_lastLogged = state;
-    QByteArray line = "{\"t\": ";
-    JsonLinesWriter::appendNumber(line, now - m_start);
-    line += ", \"setpoint\": " + state + "}\n";
-    // Written line by line, for whoever follows the band live; a full disk ends the run.
-    if (m_log.write(line) != line.size() || !m_log.flush()) {
-        m_logError =
-            QStringLiteral("%1: cannot write: %2").arg(m_options.logPath, m_log.errorString());
-        m_log.close();
-    }
+    if (!m_log.write(now - m_start, m_logged.setpoints, m_logged.values))
+        m_logError = m_log.error();
 }
 
 } // namespace semhap

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "bandstatelog.h"
 #include "devicemodel.h"
 #include "protocol.h"
+#include "pseudoterminal.h"
 
-#include <QFile>
 #include <QString>
 
 #include <functional>
@@ -72,7 +73,6 @@ public:
     State state() const;
 
 private:
-    bool openPty(QString *error);
     bool openUdp(QString *error);
     void receive();
     /** The band's counters into m_state; with m_mutex held. */
@@ -86,9 +86,8 @@ private:
     static void setOutput(void *context, std::uint8_t channel, std::uint16_t value);
 
     EmulatorOptions m_options;
-    int m_fd = -1;
-    int m_slaveFd = -1; ///< held open so the pty survives hosts coming and going
-    QString m_ptyPath;
+    PseudoTerminal m_pty;
+    int m_fd = -1; ///< the pty's band side, or the UDP socket
     int m_boundPort = 0;
     std::vector<unsigned char> m_peer; ///< UDP: the last sender's address
     std::vector<std::string> m_names;  ///< the model's and its channels' names, for the band
@@ -97,9 +96,9 @@ private:
     std::unique_ptr<semhap_band_hw> m_hw;
     std::unique_ptr<semhap_band> m_band; ///< driven by run()'s thread only
     std::vector<ResponseFilter> m_filters;
-    QFile m_log;
+    BandStateLog m_log;
+    State m_logged; ///< the state the log last saw, copied out of m_state under m_mutex
     QString m_logError;
-    QByteArray m_lastLogged;
     double m_start = 0.0;
 
     mutable std::mutex m_mutex; ///< guards m_state against state() from other threads
