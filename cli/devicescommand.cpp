@@ -1,23 +1,40 @@
 // SPDX-License-Identifier: MIT
 #include "devicescommand.h"
 
+#include "bandprobe.h"
 #include "devicemanager.h"
+#include "deviceuri.h"
 
 namespace semhap {
+
+namespace {
+
+/** How long --probe waits for a band's two replies. */
+constexpr double ProbeTimeout = 1.0;
+
+} // namespace
 
 QString DevicesCommand::summary() const
 {
     return tr("Lists the device transports and the serial ports, HID bands and sound outputs "
-              "present.");
+              "present, or asks one band who it is.");
 }
 
-void DevicesCommand::configure(QCommandLineParser &) {}
+void DevicesCommand::configure(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("probe"),
+                      tr("Ask the band at URI for its model, firmware and channels and for its "
+                         "link counters, instead of listing."),
+                      tr("URI")});
+}
 
 int DevicesCommand::execute(const QCommandLineParser &parser)
 {
     if (!parser.positionalArguments().isEmpty())
         return usageError(
             tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    if (parser.isSet(QStringLiteral("probe")))
+        return probe(parser.value(QStringLiteral("probe")));
     m_out << tr("Transports (URIs for --device and --bind):\n")
           << tr("  virtual:NAME             no hardware; keeps frames for previews\n")
           << tr("  serial:PATH[?baud=N]     a serial port or pseudo-terminal (default "
@@ -46,6 +63,42 @@ int DevicesCommand::execute(const QCommandLineParser &parser)
                               .arg(port.description);
         m_out << QStringLiteral("  %1  %2\n").arg(port.uri, -24).arg(description);
     }
+    return ExitOk;
+}
+
+int DevicesCommand::probe(const QString &uri)
+{
+    DeviceUri parsed;
+    QString reason;
+    if (!DeviceUri::parse(uri, &parsed, &reason))
+        return usageError(reason);
+    BandReport report;
+    if (!BandProbe::probe(uri, ProbeTimeout, &report, &reason))
+        return inputError(reason);
+    const protocol::Identity &id = report.identity;
+    m_out << tr("%1: %2, firmware %3.%4.%5, channels:\n")
+                 .arg(uri, id.model)
+                 .arg(id.firmwareMajor)
+                 .arg(id.firmwareMinor)
+                 .arg(id.firmwarePatch);
+    for (const protocol::WireChannel &channel : id.channels)
+        m_out << QStringLiteral("  %1  %2 … %3\n")
+                     .arg(channel.name, -8)
+                     .arg(double(channel.min))
+                     .arg(double(channel.max));
+    const protocol::DeviceStatus &status = report.status;
+    QStringList flags;
+    if (status.flags & protocol::WatchdogTripped)
+        flags << tr("watchdog tripped");
+    if (status.flags & protocol::ChannelCountMismatch)
+        flags << tr("channel count mismatch");
+    if (status.flags & protocol::Overpressure)
+        flags << tr("overpressure");
+    m_out << tr("status: %1 frames received, %2 dropped, %3 garbled; flags: %4\n")
+                 .arg(status.framesReceived)
+                 .arg(status.framesDropped)
+                 .arg(status.framesGarbled)
+                 .arg(flags.isEmpty() ? tr("none") : flags.join(QStringLiteral(", ")));
     return ExitOk;
 }
 

@@ -5,7 +5,10 @@
 
 namespace semhap {
 
-/** `semhap devices`: the transports semhap knows and the ports and HID devices present. */
+/**
+ * `semhap devices`: the transports semhap knows and the ports and HID devices present; with
+ * --probe, what one band says about itself.
+ */
 class DevicesCommand : public Command
 {
     Q_DECLARE_TR_FUNCTIONS(semhap::DevicesCommand)
@@ -18,6 +21,10 @@ public:
 protected:
     void configure(QCommandLineParser &parser) override;
     int execute(const QCommandLineParser &parser) override;
+
+private:
+    /** Prints what the band at `uri` answers (--probe); an exit code. */
+    int probe(const QString &uri);
 };
 
 } // namespace semhap

@@ -23,23 +23,33 @@ std::unique_ptr<Transport> TransportFactory::create(const QString &uri, DeviceMo
 
 std::unique_ptr<Transport> TransportFactory::create(const DeviceUri &uri, DeviceModelPtr model)
 {
-    std::unique_ptr<Link> link;
     switch (uri.scheme) {
     case DeviceUri::Scheme::Virtual:
         return std::make_unique<VirtualTransport>(uri.name, std::move(model));
-    case DeviceUri::Scheme::Serial:
-        link = std::make_unique<SerialLink>(uri.name, uri.baud);
-        break;
-    case DeviceUri::Scheme::Hid:
-        link = std::make_unique<HidLink>(uri.vendorId, uri.productId);
-        break;
-    case DeviceUri::Scheme::Udp:
-        link = std::make_unique<UdpLink>(uri.name, uri.port);
-        break;
     case DeviceUri::Scheme::Audio:
         return std::make_unique<AudioTransport>(uri, std::move(model));
+    case DeviceUri::Scheme::Serial:
+    case DeviceUri::Scheme::Hid:
+    case DeviceUri::Scheme::Udp:
+        break;
     }
-    return std::make_unique<LinkTransport>(std::move(link), std::move(model));
+    return std::make_unique<LinkTransport>(createLink(uri), std::move(model));
+}
+
+std::unique_ptr<Link> TransportFactory::createLink(const DeviceUri &uri)
+{
+    switch (uri.scheme) {
+    case DeviceUri::Scheme::Virtual:
+    case DeviceUri::Scheme::Audio:
+        break;
+    case DeviceUri::Scheme::Serial:
+        return std::make_unique<SerialLink>(uri.name, uri.baud);
+    case DeviceUri::Scheme::Hid:
+        return std::make_unique<HidLink>(uri.vendorId, uri.productId);
+    case DeviceUri::Scheme::Udp:
+        return std::make_unique<UdpLink>(uri.name, uri.port);
+    }
+    return nullptr;
 }
 
 } // namespace semhap

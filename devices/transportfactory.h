@@ -2,6 +2,7 @@
 #pragma once
 
 #include "deviceuri.h"
+#include "link.h"
 #include "transport.h"
 
 #include <memory>
@@ -17,6 +18,11 @@ public:
                                              QString *error);
     /** The same for a parsed URI the caller knows fits `model` (the form above checks). */
     static std::unique_ptr<Transport> create(const DeviceUri &uri, DeviceModelPtr model);
+    /**
+     * The byte link to a band at `uri`, not opened; null for `virtual:` and `audio:`, which
+     * have none (nothing there answers).
+     */
+    static std::unique_ptr<Link> createLink(const DeviceUri &uri);
 };
 
 } // namespace semhap

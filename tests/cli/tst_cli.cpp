@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The `semhap` command line as users meet it: exit codes, one-line errors, render output.
 #include "clitool.h"
+#include "emulatedband.h"
 
 #include <QBuffer>
 #include <QDir>
@@ -58,6 +59,7 @@ private slots:
     void renderReleaseRamp();
     void renderToFile();
     void validate();
+    void probeAsksTheBand();
     void realBinaryReadsStdin();
 };
 
@@ -138,6 +140,12 @@ void TestCli::errors_data()
         << QStringList{"validate", Data + "/broken-pattern.json"} << 1
         << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "
                   "model lra4 does not have (channels: m1, m2, m3, m4)";
+    QTest::newRow("probe of a malformed URI") << QStringList{"devices", "--probe", "bogus:x"} << 2
+                                              << "semhap devices: bogus:x: unknown device scheme "
+                                                 "'bogus' (virtual, serial, hid, udp, audio)";
+    QTest::newRow("probe of a virtual band")
+        << QStringList{"devices", "--probe", "virtual:x"} << 1
+        << "virtual:x: no band on a link there to answer (a virtual band or a sound output)";
 }
 
 void TestCli::errors()
@@ -263,6 +271,23 @@ void TestCli::validate()
     QVERIFY2(old.err.contains("old-spelling-router.json: /nodes/1/type: deprecated: node type "
                               "\"hysteresis\" is now \"debounce\""),
              old.err.constData());
+}
+
+void TestCli::probeAsksTheBand()
+{
+    EmulatedBand band("lra4");
+    QString error;
+    QVERIFY2(band.start(&error), qPrintable(error));
+    const Result r = semhapRun({"devices", "--probe", band.uri()});
+    QCOMPARE(r.code, 0);
+    // The probe's own two requests are all the band has received.
+    QCOMPARE(QString::fromUtf8(r.out), band.uri() + ": lra4, firmware 1.0.0, channels:\n"
+                                                    "  m1        0 … 1\n"
+                                                    "  m2        0 … 1\n"
+                                                    "  m3        0 … 1\n"
+                                                    "  m4        0 … 1\n"
+                                                    "status: 2 frames received, 0 dropped, 0 "
+                                                    "garbled; flags: none\n");
 }
 
 void TestCli::realBinaryReadsStdin()
