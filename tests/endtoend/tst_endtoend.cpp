@@ -2,84 +2,32 @@
 // The real device path end to end, in real time: `semhap emulate` in a child process on a pty
 // (the serial transport's termios path) or a UDP port, `semhap play` driving it. Pulse rate,
 // the firmware watchdog after a kill -9 of the host, reconnection after an emulator restart.
-#include <QElapsedTimer>
-#include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
+#include "bandprocess.h"
+
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <functional>
 #include <memory>
 
 namespace {
 
 const QString Semhap = QStringLiteral(SEMHAP_CLI_BINARY);
 
-/** One log line: the emulated band's commanded and delivered state. */
-struct LogLine
-{
-    double t = 0.0;
-    std::vector<double> setpoint;
-};
-
-std::vector<LogLine> readLog(const QString &path)
-{
-    std::vector<LogLine> out;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return out;
-    for (const QByteArray &line : file.readAll().split('\n')) {
-        const QJsonObject o = QJsonDocument::fromJson(line).object();
-        if (o.isEmpty())
-            continue; // a line still being written
-        LogLine l;
-        l.t = o.value("t").toDouble();
-        for (const QJsonValue &v : o.value("setpoint").toArray())
-            l.setpoint.push_back(v.toDouble());
-        out.push_back(l);
-    }
-    return out;
-}
-
-/** Polls the log until `done` holds for its last line; the elapsed ms, or -1 on timeout. */
-qint64 waitForLog(const QString &path, const std::function<bool(const LogLine &)> &done,
-                  int timeoutMs)
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < timeoutMs) {
-        const std::vector<LogLine> log = readLog(path);
-        if (!log.empty() && done(log.back()))
-            return timer.elapsed();
-        QTest::qSleep(5);
-    }
-    return -1;
-}
-
-bool allAt(const LogLine &l, double value)
-{
-    return !l.setpoint.empty() &&
-           std::all_of(l.setpoint.begin(), l.setpoint.end(),
-                       [value](double v) { return std::abs(v - value) < 1e-3; });
-}
-
-/** Starts a long `air.squeeze` on `uri` and waits until the band's log shows it full. */
-bool squeezeUntilFull(QProcess &play, const QString &uri, const QString &log)
-{
-    play.start(Semhap, {"play", "air.squeeze", "--device", uri, "--duration", "20"});
-    return waitForLog(
-               log, [](const LogLine &l) { return allAt(l, 1.0); }, 5000) >= 0;
-}
-
-/** `semhap emulate` in a child process; stopped with SIGTERM (a clean exit) when destroyed. */
-class Emulator
+/** `semhap emulate` in a child process, with the URI a host uses for it. */
+class Emulator : public BandProcess
 {
 public:
     Emulator(const QString &transport, const QString &model, const QString &where,
              const QString &log)
+        : BandProcess(arguments(transport, model, where, log)),
+          m_uri(transport == "serial" ? QString("serial:" + where) : QString("udp:" + address()))
+    {}
+    const QString &uri() const { return m_uri; }
+
+private:
+    static QStringList arguments(const QString &transport, const QString &model,
+                                 const QString &where, const QString &log)
     {
         QStringList args{"emulate", "--model", model, "--log", log};
         if (transport == "serial")
@@ -87,29 +35,9 @@ public:
                  << "--link" << where;
         else
             args << "--udp" << where;
-        m_process.start(Semhap, args);
-        if (m_process.waitForReadyRead(5000))
-            m_address = QString::fromUtf8(m_process.readLine()).trimmed();
-        m_uri = transport == "serial" ? QString("serial:" + where) : QString("udp:" + m_address);
-    }
-    ~Emulator()
-    {
-        m_process.terminate();
-        if (!m_process.waitForFinished(3000))
-            m_process.kill();
-    }
-    bool started() const { return !m_address.isEmpty(); }
-    const QString &uri() const { return m_uri; }
-    int stop()
-    {
-        m_process.terminate();
-        m_process.waitForFinished(3000);
-        return m_process.exitStatus() == QProcess::NormalExit ? m_process.exitCode() : -1;
+        return args;
     }
 
-private:
-    QProcess m_process;
-    QString m_address;
     QString m_uri;
 };
 
@@ -170,14 +98,8 @@ void TestEndToEnd::geigerPulseRate()
     QCOMPARE(emulator.stop(), 0);
 
     // 2 + 18 · 0.5 = 11 pulses per second, the first at the begin: 22 in 2 s.
-    const std::vector<LogLine> lines = readLog(log);
-    int pulses = 0;
-    double previous = 0.0;
-    for (const LogLine &l : lines) {
-        if (l.setpoint[0] > 0.5 && previous <= 0.5)
-            ++pulses;
-        previous = l.setpoint[0];
-    }
+    const std::vector<BandLogLine> lines = readBandLog(log);
+    const int pulses = int(pulseStarts(lines, 0).size());
     QVERIFY2(pulses >= 21 && pulses <= 23, qPrintable(QString::number(pulses)));
     QVERIFY(allAt(lines.back(), 0.0)); // stop-all at the end
 }
@@ -191,8 +113,8 @@ void TestEndToEnd::watchdogAfterHostKilled()
     QProcess play;
     QVERIFY(squeezeUntilFull(play, emulator.uri(), log));
     play.kill(); // SIGKILL: no stop-all from the host, only the band's watchdog
-    const qint64 ms = waitForLog(
-        log, [](const LogLine &l) { return allAt(l, 0.0); }, 2000);
+    const qint64 ms = waitForBandLog(
+        log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("setpoints at 0 %lld ms after the kill", ms);
     QVERIFY2(ms >= 0 && ms <= 300, qPrintable(QString::number(ms)));
@@ -211,8 +133,8 @@ void TestEndToEnd::reconnectsAfterEmulatorRestart()
     QCOMPARE(emulator->stop(), 0);
     emulator = std::make_unique<Emulator>(transport, "pneumatic6", place, second);
     QVERIFY(emulator->started());
-    const qint64 ms = waitForLog(
-        second, [](const LogLine &l) { return allAt(l, 1.0); }, 3000);
+    const qint64 ms = waitForBandLog(
+        second, [](const BandLogLine &l) { return allAt(l, 1.0); }, 3000);
     play.kill();
     play.waitForFinished(1000);
     qInfo("values back %lld ms after the restart", ms);
