@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "clitool.h"
 
+#include "bandsimcommand.h"
 #include "comparecommand.h"
 #include "convertcommand.h"
 #include "devicescommand.h"
@@ -24,8 +25,9 @@ const QStringList &commandNames()
     static const QStringList names{
         QStringLiteral("route"),   QStringLiteral("render"),  QStringLiteral("validate"),
         QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
-        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("convert"),
-        QStringLiteral("replay"),  QStringLiteral("export"),  QStringLiteral("listen")};
+        QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("bandsim"),
+        QStringLiteral("convert"), QStringLiteral("replay"),  QStringLiteral("export"),
+        QStringLiteral("listen")};
     return names;
 }
 
@@ -49,6 +51,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<DevicesCommand>(m_io);
     if (name == QLatin1String("emulate"))
         return std::make_unique<EmulateCommand>(m_io);
+    if (name == QLatin1String("bandsim"))
+        return std::make_unique<BandSimCommand>(m_io);
     if (name == QLatin1String("convert"))
         return std::make_unique<ConvertCommand>(m_io);
     if (name == QLatin1String("replay"))

@@ -18,8 +18,9 @@ packages=(
     libsdl2-dev libspnav-dev
     # statistics (semhap compare's paired tests)
     libgsl-dev
-    # the reference bands' firmware images (firmware/boards): the AVR compiler and C library
-    gcc-avr avr-libc
+    # the reference bands' firmware images (firmware/boards): the AVR compiler and C library;
+    # the simulated chip that runs them (semhap bandsim; libelf-dev for simavr's pkg-config)
+    gcc-avr avr-libc libsimavr-dev libelf-dev
     # GUI tests and screenshots without a display; a real window manager (openbox) and the
     # X tools that read windows' frames, for the studio's placement on small screens
     xvfb xauth libgl1-mesa-dri openbox x11-utils

@@ -140,6 +140,24 @@ void TestCli::errors_data()
         << QStringList{"validate", Data + "/broken-pattern.json"} << 1
         << Data + "/broken-pattern.json: /tracks: pattern 'broken' drives channel 'm5', which "
                   "model lra4 does not have (channels: m1, m2, m3, m4)";
+    QTest::newRow("bandsim without model")
+        << QStringList{"bandsim", "--pty"} << 2
+        << "semhap bandsim: MODEL is required (lra4, pneumatic6)";
+    QTest::newRow("bandsim of a model without a board")
+        << QStringList{"bandsim", "fingertips2", "--pty"} << 2
+        << "semhap bandsim: no reference board 'fingertips2' (boards: lra4, pneumatic6)";
+    QTest::newRow("bandsim without --pty")
+        << QStringList{"bandsim", "lra4"} << 2
+        << "semhap bandsim: --pty is required (the simulated band's only link for now)";
+    QTest::newRow("bandsim of a missing image")
+        << QStringList{"bandsim", "lra4", "--pty", "--firmware", "/nonexistent/lra4.hex"} << 1
+        << "/nonexistent/lra4.hex: cannot read: No such file or directory";
+    QTest::newRow("bandsim of a damaged image")
+        << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/broken-image.hex"} << 1
+        << Data + "/broken-image.hex:2: checksum mismatch";
+    QTest::newRow("bandsim of a truncated image")
+        << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/truncated-image.hex"}
+        << 1 << Data + "/truncated-image.hex: no end-of-file record (a truncated image?)";
     QTest::newRow("probe of a malformed URI") << QStringList{"devices", "--probe", "bogus:x"} << 2
                                               << "semhap devices: bogus:x: unknown device scheme "
                                                  "'bogus' (virtual, serial, hid, udp, audio)";

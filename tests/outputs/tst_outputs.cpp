@@ -195,6 +195,10 @@ void TestOutputs::outputIsAnInput_data()
         << QStringList{"emulate",     "--model", path("model.json"), "--udp",
                        "127.0.0.1:0", "--log",   path("model.json")}
         << path("model.json") << "it is the same file as the input";
+    QTest::newRow("bandsim: the live log onto its image")
+        << QStringList{"bandsim",          "lra4",  "--pty",           "--firmware",
+                       path("model.json"), "--log", path("model.json")}
+        << path("model.json") << "it is the same file as the input";
 }
 
 void TestOutputs::outputIsAnInput()
@@ -266,6 +270,8 @@ void TestOutputs::fullDisk_data()
     QTest::newRow("emulate --log")
         << QStringList{"emulate", "--model", "lra4", "--pty", "--log", full} << ""
         << full + ": " + nospace << qint64(0);
+    QTest::newRow("bandsim --log") << QStringList{"bandsim", "pneumatic6", "--pty", "--log", full}
+                                   << "" << full + ": " + nospace << qint64(0);
     QTest::newRow("compare --csv") << QStringList{"compare",    "--scene", "box_and_block",
                                                   "--routers",  "none",    "--operator",
                                                   "scripted",   "--seeds", "1",
