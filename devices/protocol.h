@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "wire.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
@@ -17,31 +19,32 @@ namespace semhap {
  */
 namespace protocol {
 
-constexpr std::uint8_t ProtocolVersion = 1;
+// The sizes and codes are the band firmware's (firmware/core/wire.h), so both sides share them.
+constexpr std::uint8_t ProtocolVersion = SEMHAP_PROTOCOL_VERSION;
 /** Header: version, type, 16-bit sequence number (little-endian). */
-constexpr int HeaderSize = 4;
-constexpr int CrcSize = 2;
+constexpr int HeaderSize = SEMHAP_HEADER_SIZE;
+constexpr int CrcSize = SEMHAP_CRC_SIZE;
 /** Largest payload a frame may carry; anything longer is an oversize frame. */
-constexpr int MaxPayload = 512;
-constexpr int MaxFrame = HeaderSize + MaxPayload + CrcSize;
+constexpr int MaxPayload = SEMHAP_MAX_PAYLOAD;
+constexpr int MaxFrame = SEMHAP_MAX_FRAME;
 /** Largest COBS-encoded frame, without its delimiter (one overhead byte per 254). */
-constexpr int MaxEncodedFrame = MaxFrame + MaxFrame / 254 + 1;
+constexpr int MaxEncodedFrame = SEMHAP_MAX_ENCODED_FRAME;
 /** Channels a set-values message may carry, as the core's frames. */
-constexpr int MaxWireChannels = 16;
+constexpr int MaxWireChannels = SEMHAP_MAX_CHANNELS;
 /** Channel names in an identify reply are at most this long (UTF-8 bytes). */
-constexpr int MaxNameLength = 32;
+constexpr int MaxNameLength = SEMHAP_MAX_NAME;
 
 /** What a frame carries; the values are the wire's type byte. */
 enum class MessageType : std::uint8_t
 {
-    IdentifyRequest = 0x01,
-    IdentifyReply = 0x02,
-    SetValues = 0x03,
-    StopAll = 0x04,
-    Heartbeat = 0x05,
-    HeartbeatReply = 0x06,
-    StatusRequest = 0x07,
-    Status = 0x08
+    IdentifyRequest = SEMHAP_IDENTIFY_REQUEST,
+    IdentifyReply = SEMHAP_IDENTIFY_REPLY,
+    SetValues = SEMHAP_SET_VALUES,
+    StopAll = SEMHAP_STOP_ALL,
+    Heartbeat = SEMHAP_HEARTBEAT,
+    HeartbeatReply = SEMHAP_HEARTBEAT_REPLY,
+    StatusRequest = SEMHAP_STATUS_REQUEST,
+    Status = SEMHAP_STATUS
 };
 
 /** One channel as the device describes it: its name and physical limits. */
@@ -65,9 +68,9 @@ struct Identity
 /** Error flags of a status message (a bit set). */
 enum StatusFlag : std::uint16_t
 {
-    WatchdogTripped = 0x0001, ///< setpoints were zeroed because the host went quiet
-    ChannelCountMismatch = 0x0002,
-    Overpressure = 0x0004
+    WatchdogTripped = SEMHAP_WATCHDOG_TRIPPED, ///< setpoints were zeroed: the host went quiet
+    ChannelCountMismatch = SEMHAP_CHANNEL_COUNT_MISMATCH,
+    Overpressure = SEMHAP_OVERPRESSURE
 };
 
 /** The device's counters and error flags: what a status (or acknowledge) reports. */
