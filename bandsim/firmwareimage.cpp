@@ -4,6 +4,8 @@
 #include <QDir>
 #include <QFile>
 
+#include <cctype>
+
 namespace semhap {
 
 namespace {
@@ -90,14 +92,30 @@ bool FirmwareImage::parse(const QByteArray &text, const QString &name, FirmwareI
     const QList<QByteArray> lines = text.split('\n');
     for (qsizetype n = 0; n < lines.size(); ++n) {
         const QByteArray line = lines[n].trimmed();
-        const auto fail = [&](const QString &reason) {
-            *error = QStringLiteral("%1:%2: %3").arg(name).arg(n + 1).arg(reason);
+        const qsizetype indent = lines[n].indexOf(line.isEmpty() ? '\n' : line[0]);
+        // Columns count from the record's colon; errors about a whole record name it.
+        const auto failAt = [&](qsizetype column, const QString &reason) {
+            *error = QStringLiteral("%1:%2:%3: %4")
+                         .arg(name)
+                         .arg(n + 1)
+                         .arg(indent + column + 1)
+                         .arg(reason);
             return false;
         };
+        const auto fail = [&](const QString &reason) { return failAt(0, reason); };
         if (line.isEmpty())
             continue;
-        if (line[0] != ':' || !decodeRecord(line, &record) || record.size() < 5)
-            return fail(QStringLiteral("not an Intel HEX record"));
+        if (line[0] != ':')
+            return fail(QStringLiteral("not an Intel HEX record (no ':' first)"));
+        if (!decodeRecord(line, &record) || record.size() < 5) {
+            qsizetype bad = 1;
+            while (bad < line.size() && std::isxdigit(static_cast<unsigned char>(line[bad])))
+                ++bad;
+            return failAt(bad, bad < line.size()
+                                   ? QStringLiteral("not a hexadecimal digit")
+                                   : QStringLiteral("not an Intel HEX record (too short or "
+                                                    "an odd number of digits)"));
+        }
         const size_t length = record[0];
         if (record.size() != length + 5)
             return fail(QStringLiteral("the record's length byte says %1 data bytes, it has %2")

@@ -10,7 +10,7 @@ namespace semhap {
 namespace {
 
 /** How long --probe waits for a band's two replies. */
-constexpr double ProbeTimeout = 1.0;
+constexpr double ProbeTimeout = 2.5; // a Nano's boot loader holds the line for up to 2 s
 
 } // namespace
 

@@ -11,6 +11,13 @@
 
 namespace semhap {
 
+namespace {
+
+/** How often the requests go again while the band has not answered (s). */
+constexpr double AskPeriod = 0.2;
+
+} // namespace
+
 bool BandProbe::probe(const QString &uri, double timeout, BandReport *report, QString *error)
 {
     DeviceUri parsed;
@@ -28,31 +35,43 @@ bool BandProbe::probe(const QString &uri, double timeout, BandReport *report, QS
         *error = QStringLiteral("%1: cannot open: %2").arg(uri, reason);
         return false;
     }
-    // A lone delimiter first: the band drops whatever half-frame it holds. Then the two
-    // requests, a frame per write (a HID report never carries two).
-    std::array<QByteArray, 3> frames{QByteArray(1, '\0'), QByteArray(), QByteArray()};
+    // Two delimiters first, as every host starts: the band drops whatever half-frame it
+    // holds and starts counting our numbers afresh. Then the two requests, a frame per
+    // write (a HID report never carries two).
+    std::array<QByteArray, 3> frames{QByteArray(2, '\0'), QByteArray(), QByteArray()};
     protocol::Message request;
     request.type = protocol::MessageType::IdentifyRequest;
     protocol::encode(request, &frames[1]);
     request.type = protocol::MessageType::StatusRequest;
     request.sequence = 1;
     protocol::encode(request, &frames[2]);
-    for (const QByteArray &frame : frames) {
-        if (!link->writeFrame(reinterpret_cast<const std::uint8_t *>(frame.constData()),
-                              int(frame.size()), &reason)) {
-            *error = QStringLiteral("%1: cannot write: %2").arg(uri, reason);
-            return false;
+    const auto ask = [&]() {
+        for (const QByteArray &frame : frames) {
+            if (!link->writeFrame(reinterpret_cast<const std::uint8_t *>(frame.constData()),
+                                  int(frame.size()), &reason)) {
+                *error = QStringLiteral("%1: cannot write: %2").arg(uri, reason);
+                return false;
+            }
         }
-    }
+        return true;
+    };
     bool identified = false;
     bool counted = false;
     FrameDecoder decoder;
     std::array<std::uint8_t, 1024> buffer{};
     const double deadline = monotonicSeconds() + timeout;
+    double askAt = monotonicSeconds();
     while (!(identified && counted) && monotonicSeconds() < deadline) {
+        // Asked again until answered: opening an Arduino's port resets it, and its boot
+        // loader takes what comes first. Each time after the two delimiters: no gap counted.
+        if (monotonicSeconds() >= askAt) {
+            if (!ask())
+                return false;
+            askAt = monotonicSeconds() + AskPeriod;
+        }
         // Links without a descriptor (HID) are read every 2 ms.
         pollfd fd{link->pollFd(), POLLIN, 0};
-        const double left = std::max(0.0, deadline - monotonicSeconds());
+        const double left = std::max(0.0, std::min(deadline, askAt) - monotonicSeconds());
         ::poll(&fd, 1, fd.fd >= 0 ? int(std::ceil(left * 1000.0)) : 2);
         const int n = link->read(buffer.data(), int(buffer.size()), &reason);
         if (n < 0) {

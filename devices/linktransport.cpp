@@ -106,8 +106,10 @@ bool LinkTransport::connect(QString *error)
     m_decoder.reset();
     m_safety.reset();
     EmergencyStop::add(m_link->emergencyFd());
-    const std::uint8_t delimiter = 0;
-    writeFrame(&delimiter, 1); // the device drops whatever half-frame it holds
+    // The first ends whatever half-frame the device holds, the second (an empty frame)
+    // tells it that a new host's numbering starts: no gap back to 0 (PROTOCOL.md).
+    const std::uint8_t delimiters[2] = {0, 0};
+    writeFrame(delimiters, 2);
     writeMessage(protocol::MessageType::IdentifyRequest);
     std::lock_guard<std::mutex> lock(m_statusMutex);
     if (m_status.connected || m_status.framesSent > 0)

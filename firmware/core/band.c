@@ -158,13 +158,12 @@ static void set_values(semhap_band *band, const uint8_t *payload)
     }
 }
 
-/* Handles the valid frame of `size` bytes at band->rx. */
-static void handle(semhap_band *band, size_t size)
+/* Handles the valid frame at band->rx. */
+static void handle(semhap_band *band)
 {
     const uint8_t type = band->rx[1];
     const uint16_t sequence = SEMHAP_U16(band->rx[2], band->rx[3]);
     uint8_t *payload = band->rx + SEMHAP_HEADER_SIZE;
-    (void)size;
     band->last_frame_ms = band->hw->millis(band->hw->context);
     ++band->received;
     if (band->heard && sequence != (uint16_t)(band->last_sequence + 1))
@@ -237,8 +236,12 @@ static void finish_frame(semhap_band *band)
         count_error(band, SEMHAP_FRAME_OVERSIZE);
         return;
     }
-    if (length == 0)
-        return; /* an empty frame: a sender flushing the line */
+    if (length == 0) {
+        /* An empty frame: a host starting afresh (PROTOCOL.md). Its numbers start again,
+         * and the jump back to them is no gap. */
+        band->heard = 0;
+        return;
+    }
     size = semhap_cobs_decode(band->rx, length, band->rx);
     if (size < 0) {
         count_error(band, SEMHAP_FRAME_COBS);
@@ -249,7 +252,7 @@ static void finish_frame(semhap_band *band)
         count_error(band, error);
         return;
     }
-    handle(band, (size_t)size);
+    handle(band);
 }
 
 void semhap_band_receive(semhap_band *band, const uint8_t *bytes, size_t size)

@@ -164,6 +164,7 @@ private slots:
     void channelCountMismatch_data();
     void channelCountMismatch();
     void sequenceGapsAreDropped();
+    void newHostStartsTheCountAfresh();
     void overpressureClosesEverything();
     void randomGarbageNeverSticks();
     void modelsThatDoNotFitAreRefused();
@@ -417,6 +418,22 @@ void TestFirmware::sequenceGapsAreDropped()
     QCOMPARE(board.band.dropped, 0u);
     board.feed(setValues(5, {1, 1, 1, 1}));
     QCOMPARE(board.band.dropped, 4u);
+}
+
+void TestFirmware::newHostStartsTheCountAfresh()
+{
+    // A host that comes after another numbers from 0 again; it says so with an empty frame
+    // (its two leading delimiters), and the jump back is no gap.
+    FakeBoard board;
+    QCOMPARE(board.init(), 0);
+    board.feed(setValues(5000, {1, 1, 1, 1}));
+    board.feed(QByteArray(2, '\0') + setValues(0, {2, 2, 2, 2}));
+    QCOMPARE(board.band.dropped, 0u);
+    QCOMPARE(semhap_band_garbled(&board.band), 0u);
+    QCOMPARE(int(board.outputs[0]), 2);
+    // Without it, the jump is counted.
+    board.feed(setValues(5000, {3, 3, 3, 3}));
+    QCOMPARE(board.band.dropped, 4999u);
 }
 
 void TestFirmware::overpressureClosesEverything()

@@ -49,9 +49,10 @@
 uint16_t lra4_i2c_failures;
 
 static uint16_t wanted[LRA_COUNT]; /* what the band drives each channel to */
-static uint32_t retry_at[LRA_COUNT];
+static uint32_t retry_at[LRA_COUNT]; /* meaningful only while its backoff bit is set */
 static uint8_t ready;   /* bit k: DRV2605L k is set up for real-time playback */
 static uint8_t pending; /* bit k: channel k's value has not reached its driver yet */
+static uint8_t backoff; /* bit k: driver k failed and waits until retry_at[k] */
 
 static uint8_t drv_write(uint8_t reg, uint8_t value)
 {
@@ -88,18 +89,22 @@ static void update(uint8_t k)
     const uint8_t bit = (uint8_t)(1u << k);
     if (deliver(k)) {
         pending &= (uint8_t)~bit;
+        backoff &= (uint8_t)~bit;
         return;
     }
     ++lra4_i2c_failures;
     /* A driver that stopped answering may have lost power and its set-up with it. */
     ready &= (uint8_t)~bit;
     pending |= bit;
+    backoff |= bit;
     retry_at[k] = clock_millis() + RETRY_MS;
 }
 
 static uint8_t due(uint8_t k)
 {
-    return (int32_t)(clock_millis() - retry_at[k]) >= 0;
+    /* Only a driver that failed waits: comparing with a stale retry time would read as
+     * "not yet" for 24.8 days at a time once the clock has run past 2^31 ms. */
+    return !(backoff & (1u << k)) || (int32_t)(clock_millis() - retry_at[k]) >= 0;
 }
 
 static void lra4_init(void)

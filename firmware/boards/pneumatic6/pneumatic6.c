@@ -2,8 +2,9 @@
 /*
  * pneumatic6: six valves on the chip's six hardware PWM outputs (8 bits, 976 Hz: every
  * timer in fast PWM with prescaler 64) and a pressure sensor on ADC0. Channel bK's value v
- * is the duty v >> 8 of 255; a duty of 0 disconnects the compare output and holds the pin
- * low, since fast PWM would still leave a one-count spike each period.
+ * sets the compare register to v >> 8: open (v >> 8) + 1 counts of 256, fully open at 255;
+ * 0 disconnects the compare output and holds the pin low instead, since fast PWM would
+ * still leave that one-count spike each period.
  */
 #include "board.h"
 
