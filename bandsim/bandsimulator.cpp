@@ -119,6 +119,8 @@ void BandSimulator::outputChanged(int channel, double output)
 
 void BandSimulator::tick()
 {
+    if (m_drivers)
+        m_drivers->followEnable(); // a reset lets EN fall without a word on the bus
     for (size_t c = 0; c < m_filters.size(); ++c)
         m_values[c] = m_filters[c].step(m_setpoints[c]);
     if (m_pressure)

@@ -10,6 +10,11 @@ namespace semhap {
 
 namespace {
 
+// The drivers' EN on the ATmega328P: PD2; port D's registers in data space.
+constexpr std::uint16_t DDRD_ADDRESS = 0x2A;
+constexpr std::uint16_t PORTD_ADDRESS = 0x2B;
+constexpr std::uint8_t EnableBit = 1u << 2;
+
 /** A DRV2605L's registers after power-on or DEV_RESET (the datasheet's register map). */
 std::array<std::uint8_t, 256> resetRegisters()
 {
@@ -40,7 +45,7 @@ std::array<std::uint8_t, 256> resetRegisters()
 } // namespace
 
 Drv2605lBus::Drv2605lBus(avr_t *avr, int channels, WriteHandler written, OutputHandler changed)
-    : m_written(std::move(written)), m_changed(std::move(changed)),
+    : m_avr(avr), m_written(std::move(written)), m_changed(std::move(changed)),
       m_registers(size_t(channels), resetRegisters()), m_outputs(size_t(channels), 0.0)
 {
     const std::uint32_t twi = AVR_IOCTL_TWI_GETIRQ(0);
@@ -58,6 +63,18 @@ void Drv2605lBus::onMessage(avr_irq_t *, std::uint32_t value, void *param)
                                                std::uint8_t(message.u.twi.data));
 }
 
+void Drv2605lBus::followEnable()
+{
+    // Driven high only as an output at 1: an input (a reset) floats, and the pull-down wins.
+    const bool enabled = (m_avr->data[DDRD_ADDRESS] & EnableBit) &&
+                         (m_avr->data[PORTD_ADDRESS] & EnableBit);
+    if (enabled == m_enabled)
+        return;
+    m_enabled = enabled;
+    for (size_t k = 0; k < m_registers.size(); ++k)
+        update(int(k));
+}
+
 void Drv2605lBus::acknowledge(std::uint8_t address)
 {
     avr_raise_irq(m_toMaster, avr_twi_irq_msg(TWI_COND_ACK, address, 1));
@@ -70,6 +87,7 @@ void Drv2605lBus::message(std::uint8_t kind, std::uint8_t address, std::uint8_t 
         return;
     }
     if (kind & TWI_COND_START) {
+        followEnable();
         m_address = address;
         m_pointerSet = false;
         const std::uint8_t device = address >> 1;
@@ -77,7 +95,7 @@ void Drv2605lBus::message(std::uint8_t kind, std::uint8_t address, std::uint8_t 
             std::uint8_t(m_muxControl & ((1u << m_registers.size()) - 1u));
         if (device == MuxAddress)
             m_target = Target::Mux;
-        else if (device == DriverAddress && connected != 0)
+        else if (device == DriverAddress && connected != 0 && m_enabled)
             m_target = Target::Drivers;
         else
             m_target = Target::None; // nobody answers: the master sees a NACK
@@ -136,6 +154,12 @@ void Drv2605lBus::writeDriver(int channel, std::uint8_t reg, std::uint8_t value)
         r = resetRegisters(); // DEV_RESET
     else if (reg != 0x00)     // STATUS is read-only
         r[reg] = value;
+    update(channel);
+}
+
+void Drv2605lBus::update(int channel)
+{
+    const std::array<std::uint8_t, 256> &r = m_registers[size_t(channel)];
     const std::uint8_t rtp = r[RtpInput];
     int level = std::int8_t(rtp); // signed data: 0x7F is full drive, negatives brake
     int full = 127;
@@ -144,7 +168,8 @@ void Drv2605lBus::writeDriver(int channel, std::uint8_t reg, std::uint8_t value)
         level = bidirectional ? rtp - 128 : rtp;
         full = bidirectional ? 127 : 255;
     }
-    const bool playing = !(r[Mode] & 0x40) && (r[Mode] & 0x07) == 5 && (r[Feedback] & 0x80);
+    const bool playing =
+        m_enabled && !(r[Mode] & 0x40) && (r[Mode] & 0x07) == 5 && (r[Feedback] & 0x80);
     const double output = playing ? std::max(0, level) / double(full) : 0.0;
     if (output != m_outputs[size_t(channel)]) {
         m_outputs[size_t(channel)] = output;

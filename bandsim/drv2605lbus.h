@@ -16,7 +16,10 @@ namespace semhap {
  * DRV2605L haptic driver at 0x5A on each of its channels 0…3. Both acknowledge their
  * addresses (the drivers only while the multiplexer connects at least one of them; a write
  * goes to every connected driver, as on the wire), keep their registers, and every register
- * write is reported. A driver drives nothing (0) in standby, outside real-time playback
+ * write is reported. The drivers' EN is the chip's pin D2 (PD2), pulled down on the
+ * board: while the chip does not drive it high (a reset, the boot loader) every driver is
+ * shut down — no output, no acknowledge. A driver drives nothing (0) in standby, outside
+ * real-time playback
  * (MODE 5) or when not set for an LRA (FEEDBACK bit 7); in real-time playback its output
  * is RTP_INPUT read as the datasheet says: unsigned (CONTROL3 bit 3) and unidirectional
  * (CONTROL2 bit 7 clear), RTP / 255; unsigned and bidirectional, (RTP − 128) / 127, the
@@ -42,6 +45,11 @@ public:
     Drv2605lBus(avr_t *avr, int channels, WriteHandler written, OutputHandler changed);
 
     double output(int channel) const { return m_outputs[size_t(channel)]; }
+    /**
+     * Reads EN from the chip's port D; when it has changed, every output follows (0 while
+     * low). Called at the model's rate and before every bus transfer.
+     */
+    void followEnable();
     /** Driver `channel`'s register `reg` as it holds it now. */
     std::uint8_t reg(int channel, std::uint8_t reg) const
     {
@@ -61,8 +69,12 @@ private:
     void write(std::uint8_t data);
     std::uint8_t read();
     void writeDriver(int channel, std::uint8_t reg, std::uint8_t value);
+    /** Driver `channel`'s output from its registers and EN; reports a change. */
+    void update(int channel);
     void acknowledge(std::uint8_t address);
 
+    avr_t *m_avr;
+    bool m_enabled = false;
     avr_irq_t *m_toMaster;
     WriteHandler m_written;
     OutputHandler m_changed;

@@ -9,7 +9,8 @@
  *   the DRV2605L datasheet: m1 unsigned and unidirectional, RTP 0x80 → 0x80 / 255; m2
  *   unsigned and bidirectional (CONTROL2's default), RTP 0xC0 → 0x40 / 127; m3 signed
  *   (CONTROL3's default), RTP 0x40 → 0x40 / 127; m4 left in standby, RTP 0xFF → 0.
- * - UART: echoes every byte it receives, polling, at 250000 baud.
+ * - UART: echoes every byte it receives, polling, at 250000 baud; an 'E' lets the drivers'
+ *   EN (PD2) float, as a reset does.
  * - ADC and PWM (pneumatic6): b2…b6 fully open, b1's duty the pressure sensor's reading
  *   (ADC0 against AVcc) / 4, again and again: with the simulated bellows b1 settles where
  *   the sensor's reading and its own duty agree.
@@ -58,7 +59,9 @@ int main(void)
     UBRR0 = 3;
     UCSR0C = _BV(UCSZ01) | _BV(UCSZ00);
     UCSR0B = _BV(RXEN0) | _BV(TXEN0);
-    DDRD = _BV(PD6) | _BV(PD5) | _BV(PD3);
+    /* PD2 is the drivers' EN (lra4): high, as the firmware drives it. */
+    PORTD = _BV(PD2);
+    DDRD = _BV(PD6) | _BV(PD5) | _BV(PD3) | _BV(PD2);
     DDRB = _BV(PB1) | _BV(PB2) | _BV(PB3);
     TCCR0A = _BV(COM0A1) | _BV(COM0B1) | _BV(WGM01) | _BV(WGM00);
     TCCR0B = _BV(CS01) | _BV(CS00);
@@ -90,6 +93,8 @@ int main(void)
         }
         if (UCSR0A & _BV(RXC0)) {
             const uint8_t byte = UDR0;
+            if (byte == 'E')
+                DDRD &= (uint8_t)~_BV(PD2); /* EN floats, as in a reset: drivers off */
             while (!(UCSR0A & _BV(UDRE0)))
                 ;
             UDR0 = byte;

@@ -400,7 +400,8 @@ void TestBandSim::garbageIsCountedAndSurvived()
 void TestBandSim::i2cFollowsTheDatasheet()
 {
     // The test image accepts only the datasheet's I2C status codes and waits for TWINT
-    // after each byte; it sets the four drivers up four ways (harness.c) if all held.
+    // after each byte; it sets the four drivers up four ways (harness.c) if all held. Then
+    // it lets their EN go.
     const QString log = m_dir.filePath("harness.jsonl");
     SimulatedBand band("lra4", m_dir.filePath("band"), log,
                        {"--firmware", SEMHAP_BANDSIM_HARNESS});
@@ -422,6 +423,16 @@ void TestBandSim::i2cFollowsTheDatasheet()
                                      .arg(lines.back().setpoint[1])
                                      .arg(lines.back().setpoint[2])
                                      .arg(lines.back().setpoint[3])));
+
+    // EN let go, as in a reset of the chip: every driver is off at once, whatever it had.
+    const int fd = ::open(QFile::encodeName(m_dir.filePath("band")).constData(),
+                          O_RDWR | O_NOCTTY | O_NONBLOCK);
+    QVERIFY(fd >= 0);
+    QCOMPARE(::write(fd, "E", 1), ssize_t(1));
+    const qint64 off = waitForBandLog(log, [](const BandLogLine &l) { return allAt(l, 0.0); },
+                                      2000);
+    ::close(fd);
+    QVERIFY2(off >= 0, "the drivers played on without their enable");
 }
 
 void TestBandSim::uartLosesNoByte()

@@ -8,10 +8,13 @@
 #include "clock.h"
 #include "twi.h"
 
+#include <avr/io.h>
 #include <stddef.h>
 #include <util/delay.h>
 
 #define LRA_COUNT 4
+/* D2: every DRV2605L's EN (firmware/README.md). */
+#define LRA4_ENABLE PD2
 #define MUX_ADDRESS 0x70
 #define DRV_ADDRESS 0x5A
 
@@ -110,7 +113,11 @@ static uint8_t due(uint8_t k)
 static void lra4_init(void)
 {
     twi_init();
-    /* The DRV2605L takes 250 µs after power-up before it answers I2C. */
+    /* The drivers' EN, pulled down on the board: off while this chip resets or sits in its
+     * boot loader (its pins float then), whatever amplitude they last had. */
+    PORTD |= _BV(LRA4_ENABLE);
+    DDRD |= _BV(LRA4_ENABLE);
+    /* The DRV2605L takes 250 µs after EN before it answers I2C. */
     _delay_ms(1);
 }
 
