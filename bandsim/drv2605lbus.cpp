@@ -66,8 +66,8 @@ void Drv2605lBus::onMessage(avr_irq_t *, std::uint32_t value, void *param)
 void Drv2605lBus::followEnable()
 {
     // Driven high only as an output at 1: an input (a reset) floats, and the pull-down wins.
-    const bool enabled = (m_avr->data[DDRD_ADDRESS] & EnableBit) &&
-                         (m_avr->data[PORTD_ADDRESS] & EnableBit);
+    const bool enabled =
+        (m_avr->data[DDRD_ADDRESS] & EnableBit) && (m_avr->data[PORTD_ADDRESS] & EnableBit);
     if (enabled == m_enabled)
         return;
     m_enabled = enabled;

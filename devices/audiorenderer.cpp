@@ -34,7 +34,7 @@ AudioRenderer::AudioRenderer(DeviceModelPtr model, double sampleRate, int output
 
 bool AudioRenderer::push(const DeviceFrame &safe, double sentAt)
 {
-    if (m_queue.push({safe, sentAt}))
+    if (m_queue.push({safe, sentAt, m_stops.load(std::memory_order_acquire)}))
         return true;
     m_fullSkipped.fetch_add(1, std::memory_order_relaxed);
     return false;
@@ -73,8 +73,14 @@ void AudioRenderer::render(float *out, unsigned long frames, double outputDelay,
     const std::uint32_t stops = m_stops.load(std::memory_order_acquire);
     if (stops != m_stopsSeen) {
         m_stopsSeen = stops;
-        Queued dropped;
-        while (m_queue.pop(&dropped)) {
+        // What was queued before the stop goes; a frame sent after it is played next.
+        Queued queued;
+        m_holding = false;
+        while (m_queue.pop(&queued)) {
+            if (queued.stops == stops) {
+                m_held = queued;
+                m_holding = true;
+            }
         }
         const DeviceFrame rest = m_model->restFrame(m_lastT);
         rampTo(rest, m_fade);
@@ -91,7 +97,11 @@ void AudioRenderer::render(float *out, unsigned long frames, double outputDelay,
                 m_queue.pop(&next);
                 m_backlogSkipped.fetch_add(1, std::memory_order_relaxed);
             }
-            if (m_queue.pop(&next)) {
+            if (m_holding) {
+                m_holding = false;
+                take(m_held, done, outputDelay, now);
+                tookFrame = true;
+            } else if (m_queue.pop(&next)) {
                 take(next, done, outputDelay, now);
                 tookFrame = true;
             }

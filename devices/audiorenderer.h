@@ -74,6 +74,7 @@ private:
     {
         DeviceFrame frame;
         double sentAt = 0.0;
+        std::uint32_t stops = 0; ///< stop() calls before it was pushed: older ones it drops
     };
     struct Voice
     {
@@ -97,6 +98,8 @@ private:
     int m_fade;   ///< samples of the stop's fade
     std::vector<Voice> m_voices;
     SpscRing<Queued> m_queue;
+    Queued m_held;          ///< audio thread: a frame pushed after a stop, popped with the drain
+    bool m_holding = false; ///< audio thread: m_held is next
     SpscRing<RenderedFrame> m_rendered;
     // The callback's own state.
     int m_untilNext = 0; ///< samples until the next frame may start its ramp

@@ -115,6 +115,7 @@ private slots:
     void channelsGoWhereMapped();
     void envelopeStepsAreRamped();
     void stopAllSilencesAtOnce();
+    void aValueSentAfterStopAllPlays();
     void disarmingSilencesHeldValues();
     void closeLeavesSilence();
     void vanishedCardIsRetried();
@@ -348,6 +349,27 @@ void TestAudio::stopAllSilencesAtOnce()
     const DeviceFrame rest = transport->sent().last();
     QCOMPARE(rest.t, 2.0);
     QCOMPARE(rest.values[0], 0.0);
+    transport->close();
+}
+
+void TestAudio::aValueSentAfterStopAllPlays()
+{
+    // Stop all drops what was waiting before it, not a value sent right after it: that one
+    // is held (the transport does not send an unchanged value again) and must sound.
+    FifoCard card(m_fifo, 4);
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    QVERIFY(transport);
+    transport->setArmed(true);
+    QVERIFY(playFor(card, 0.05));
+    transport->send(frameOf(2.0, {0.8, 0.8, 0.8, 0.8}));
+    QVERIFY(playFor(card, 0.2));
+    transport->stopAll();
+    transport->send(frameOf(2.1, {0.5, 0.5, 0.5, 0.5}));
+    QVERIFY(playFor(card, 0.3));
+    const std::vector<float> wave = card.channel(0);
+    const std::vector<float> tail(wave.end() - qsizetype(0.05 * Rate), wave.end());
+    QVERIFY2(std::abs(peak(tail) - 0.5f) < 0.01f, qPrintable(QString::number(peak(tail))));
+    QCOMPARE(transport->sent().last().values[0], 0.5);
     transport->close();
 }
 

@@ -429,8 +429,8 @@ void TestBandSim::i2cFollowsTheDatasheet()
                           O_RDWR | O_NOCTTY | O_NONBLOCK);
     QVERIFY(fd >= 0);
     QCOMPARE(::write(fd, "E", 1), ssize_t(1));
-    const qint64 off = waitForBandLog(log, [](const BandLogLine &l) { return allAt(l, 0.0); },
-                                      2000);
+    const qint64 off = waitForBandLog(
+        log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     ::close(fd);
     QVERIFY2(off >= 0, "the drivers played on without their enable");
 }

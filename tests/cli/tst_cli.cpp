@@ -156,8 +156,8 @@ void TestCli::errors_data()
         << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/broken-image.hex"} << 1
         << Data + "/broken-image.hex:2:1: checksum mismatch";
     QTest::newRow("bandsim of an image with a stray character")
-        << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/badchar-image.hex"}
-        << 1 << Data + "/badchar-image.hex:2:12: not a hexadecimal digit";
+        << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/badchar-image.hex"} << 1
+        << Data + "/badchar-image.hex:2:12: not a hexadecimal digit";
     QTest::newRow("bandsim of a truncated image")
         << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/truncated-image.hex"}
         << 1 << Data + "/truncated-image.hex: no end-of-file record (a truncated image?)";
