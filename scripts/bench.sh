@@ -9,6 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/build/tests/bench/bench_sim"
 "$root/build/tests/bench/bench_devices"
 "$root/build/tests/bench/bench_bandsim"
+"$root/build/tests/bench/bench_audio"
 "$root/build/tests/bench/bench_sessions"
 "$root/build/tests/bench/bench_warnings"
 "$root/build/tests/bench/bench_inputs"
