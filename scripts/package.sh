@@ -33,7 +33,7 @@ smoke() { # PREFIX: the installed programs work
         --quit-after 3 --size 1280x800
     [ -s "$tree/studio.png" ]
     man -l "$share/man/man1/semhap.1" >/dev/null
-    # Completion: `semhap ro<Tab>` and `semhap route --rou<Tab>`.
+    # Completion: `semhap ro<Tab>`, `semhap route --rou<Tab>` and `semhap bandsim pn<Tab>`.
     local completed
     completed=$(PATH="$bin:$PATH" bash -c '
         source /usr/share/bash-completion/bash_completion
@@ -42,9 +42,10 @@ smoke() { # PREFIX: the installed programs work
             COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
             _semhap; echo "${COMPREPLY[*]}"
         }
-        complete_words semhap ro; complete_words semhap route --rou' _ \
-        "$share/bash-completion/completions/semhap")
-    [ "$completed" = $'route\n--router' ] || { echo "completion gave: $completed"; exit 1; }
+        complete_words semhap ro; complete_words semhap route --rou
+        complete_words semhap bandsim pn' _ "$share/bash-completion/completions/semhap")
+    [ "$completed" = $'route\n--router\npneumatic6' ] ||
+        { echo "completion gave: $completed"; exit 1; }
 }
 echo "-- extracted into $tree/usr"
 smoke "$tree/usr"
