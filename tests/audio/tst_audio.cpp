@@ -124,6 +124,8 @@ private slots:
 
 private:
     std::unique_ptr<AudioTransport> open(const QString &uri, const QString &model = "lra4");
+    /** Armed on the test card, `level` on every channel (frame time `t`) for 0.2 s. */
+    std::unique_ptr<AudioTransport> playing(const FifoCard &card, double t, double level);
     QString m_fifo;
     QTemporaryDir m_dir;
     DeviceModelPtr m_lra4;
@@ -135,6 +137,18 @@ void TestAudio::initTestCase()
     m_fifo = FifoCard::install(m_dir.path());
     QVERIFY(!m_fifo.isEmpty());
     m_lra4 = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
+}
+
+std::unique_ptr<AudioTransport> TestAudio::playing(const FifoCard &card, double t, double level)
+{
+    auto transport = open(QStringLiteral("audio:semhaptest"));
+    if (!transport)
+        return nullptr;
+    transport->setArmed(true);
+    if (!playFor(card, 0.05))
+        return nullptr;
+    transport->send(frameOf(t, {level, level, level, level}));
+    return playFor(card, 0.2) ? std::move(transport) : nullptr;
 }
 
 std::unique_ptr<AudioTransport> TestAudio::open(const QString &uri, const QString &model)
@@ -327,12 +341,8 @@ void TestAudio::envelopeStepsAreRamped()
 void TestAudio::stopAllSilencesAtOnce()
 {
     FifoCard card(m_fifo, 4);
-    auto transport = open(QStringLiteral("audio:semhaptest"));
+    auto transport = playing(card, 2.0, 0.8);
     QVERIFY(transport);
-    transport->setArmed(true);
-    QVERIFY(playFor(card, 0.05));
-    transport->send(frameOf(2.0, {0.8, 0.8, 0.8, 0.8}));
-    QVERIFY(playFor(card, 0.2));
     transport->stopAll();
     const size_t stoppedAt = card.frames();
     QVERIFY(playFor(card, 0.3));
@@ -357,12 +367,8 @@ void TestAudio::aValueSentAfterStopAllPlays()
     // Stop all drops what was waiting before it, not a value sent right after it: that one
     // is held (the transport does not send an unchanged value again) and must sound.
     FifoCard card(m_fifo, 4);
-    auto transport = open(QStringLiteral("audio:semhaptest"));
+    auto transport = playing(card, 2.0, 0.8);
     QVERIFY(transport);
-    transport->setArmed(true);
-    QVERIFY(playFor(card, 0.05));
-    transport->send(frameOf(2.0, {0.8, 0.8, 0.8, 0.8}));
-    QVERIFY(playFor(card, 0.2));
     transport->stopAll();
     transport->send(frameOf(2.1, {0.5, 0.5, 0.5, 0.5}));
     QVERIFY(playFor(card, 0.3));
@@ -400,12 +406,8 @@ void TestAudio::disarmingSilencesHeldValues()
 void TestAudio::closeLeavesSilence()
 {
     FifoCard card(m_fifo, 4);
-    auto transport = open(QStringLiteral("audio:semhaptest"));
+    auto transport = playing(card, 1.0, 0.9);
     QVERIFY(transport);
-    transport->setArmed(true);
-    QVERIFY(playFor(card, 0.05));
-    transport->send(frameOf(1.0, {0.9, 0.9, 0.9, 0.9}));
-    QVERIFY(playFor(card, 0.2));
     transport.reset(); // as on exit: the destructor closes
     QTRY_VERIFY(card.ended());
     // It played, and what the card got last is a fade to silence, not a cut.
