@@ -3,6 +3,7 @@
 // the embedded defaults and runs; scene and router pickers, run/step/speed, the stop-all
 // key and teleoperation drive the engine; the layout is saved and restored; German can be
 // switched on in the preferences; `--screenshot` grabs the window and quits.
+#include "bandprocess.h"
 #include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
@@ -302,6 +303,8 @@ private slots:
     void auditionShowsInTheReadouts();
     void auditionPlaysOnASoundCard_data();
     void auditionPlaysOnASoundCard();
+    void auditionPlaysOnTheReferenceBand_data();
+    void auditionPlaysOnTheReferenceBand();
     void disarmedBandsReadZero();
     void statusBarCountsDevicesAsThePanelShowsThem_data();
     void statusBarCountsDevicesAsThePanelShowsThem();
@@ -773,6 +776,58 @@ void TestStudio::auditionPlaysOnASoundCard()
     QTRY_VERIFY(card.frames() > stopped + 20000);
     const std::vector<float> after = card.channel(0, stopped + 10000);
     QCOMPARE(*std::max_element(after.begin(), after.end()), 0.0f);
+}
+
+void TestStudio::auditionPlaysOnTheReferenceBand_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800-de") << QSize(1280, 800) << "de";
+}
+
+// The reference band as a user with a Nano and four DRV2605L meets it — here its firmware
+// image in simavr (`semhap bandsim lra4`): its port typed into right.vibro's address box
+// and connected (the band says it is an lra4), armed, vib.geiger auditioned: the drivers
+// pulse; Stop all (Esc) and they are still.
+void TestStudio::auditionPlaysOnTheReferenceBand()
+{
+    QTemporaryDir dir;
+    const QString link = dir.filePath("nano");
+    const QString log = dir.filePath("nano.jsonl");
+    BandProcess band({"bandsim", "lra4", "--pty", "--link", link, "--log", log});
+    QVERIFY(band.started());
+    const std::unique_ptr<Studio> studio = startStudio(options());
+    MainWindow &window = *studio->window();
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    DevicesPanel *devices = window.devicesPanel();
+    auto *address = devices->findChild<QComboBox *>("uri:right.vibro");
+    address->setFocus();
+    address->lineEdit()->selectAll();
+    QTest::keyClicks(address, "serial:" + link);
+    QTest::mouseClick(devices->findChild<QWidget *>("connect:right.vibro"), Qt::LeftButton);
+    const Transport *transport = window.engine().devices().transport("right.vibro");
+    QTRY_COMPARE(transport->uri(), "serial:" + link);
+    QTRY_COMPARE_WITH_TIMEOUT(transport->status().identity, QStringLiteral("lra4"), 5000);
+    QTest::mouseClick(devices->findChild<QPushButton *>("armAll"), Qt::LeftButton);
+
+    window.findChild<QDockWidget *>("patternsDock")->raise();
+    WaveformDesigner *designer = window.waveformDesigner();
+    designer->openBuiltin("vib.geiger");
+    QVERIFY(choose(designer->findChild<QComboBox *>("auditionDevice"), "right.vibro — lra4"));
+    QTest::mouseClick(designer->findChild<QPushButton *>("auditionBegin"), Qt::LeftButton);
+    // Three pulses at the drivers: the firmware drives every channel to 1 and back.
+    QTRY_VERIFY_WITH_TIMEOUT(pulseStarts(readBandLog(log), 0).size() >= 3, 5000);
+    window.findChild<QDockWidget *>("devicesDock")->raise();
+    auto *meter = window.findChild<LevelMeter *>("levels:right.vibro");
+    for (QWidget *w = meter; w; w = w->parentWidget()) {
+        if (auto *area = qobject_cast<QScrollArea *>(w))
+            area->ensureWidgetVisible(meter);
+    }
+    savePicture(&window, "devices-band");
+    QTest::keyClick(&window, Qt::Key_Escape);
+    QTRY_VERIFY(allAt(readBandLog(log).back(), 0.0));
+    QTest::qWait(300); // no pulse after Stop all
+    QVERIFY(allAt(readBandLog(log).back(), 0.0));
 }
 
 // The readouts show what the bands were sent: disarmed (Devices → Disarm all), the router's
