@@ -3,6 +3,7 @@
 
 #include "audiorenderer.h"
 #include "audiosystem.h"
+#include "framerate.h"
 #include "monotonic.h"
 
 #include <portaudio.h>
@@ -320,8 +321,7 @@ void AudioTransport::drain()
 void AudioTransport::run()
 {
     double nextAttempt = monotonicSeconds() + ReconnectPeriod;
-    double rateStart = monotonicSeconds();
-    std::uint32_t rateFrames = 0;
+    FrameRate rate;
     std::unique_lock<std::mutex> wake(m_wakeMutex);
     while (!m_quit) {
         wake.unlock();
@@ -354,11 +354,10 @@ void AudioTransport::run()
             connect(&error);
             nextAttempt = now + ReconnectPeriod;
         }
-        if (now - rateStart >= 1.0) {
+        {
             std::lock_guard<std::mutex> lock(m_statusMutex);
-            m_status.framesPerSecond = (m_status.framesSent - rateFrames) / (now - rateStart);
-            rateFrames = m_status.framesSent;
-            rateStart = now;
+            rate.record(m_status.framesSent, now);
+            m_status.framesPerSecond = rate.perSecond(m_status.framesSent, now);
         }
         wake.lock();
         m_wake.wait_for(wake, WorkerPeriod, [this] { return m_quit; });

@@ -2,6 +2,7 @@
 #include "linktransport.h"
 
 #include "emergencystop.h"
+#include "framerate.h"
 #include "monotonic.h"
 
 #include <algorithm>
@@ -254,8 +255,7 @@ void LinkTransport::run()
 {
     double nextHeartbeat = monotonicSeconds();
     double nextAttempt = nextHeartbeat + ReconnectPeriod;
-    double rateStart = nextHeartbeat;
-    std::uint32_t rateFrames = 0;
+    FrameRate rate;
     int heartbeats = 0;
     while (!m_quit) {
         const double now = monotonicSeconds();
@@ -293,12 +293,11 @@ void LinkTransport::run()
                 writeMessage(protocol::MessageType::StatusRequest);
             nextHeartbeat = now + HeartbeatPeriod;
         }
-        if (now - rateStart >= 1.0) {
+        {
             std::lock_guard<std::mutex> lock(m_statusMutex);
-            m_status.framesPerSecond = (m_status.framesSent - rateFrames) / (now - rateStart);
+            rate.record(m_status.framesSent, now);
+            m_status.framesPerSecond = rate.perSecond(m_status.framesSent, now);
             m_status.errors = m_linkErrors + m_decoder.counters().errors();
-            rateFrames = m_status.framesSent;
-            rateStart = now;
         }
         if (!m_linkOpen) {
             nextAttempt = now + ReconnectPeriod;

@@ -54,13 +54,7 @@ void VirtualTransport::stopAll()
 void VirtualTransport::store(const DeviceFrame &frame)
 {
     m_sent.append(frame);
-    const std::uint64_t count = m_sent.count();
-    const double now = monotonicSeconds();
-    if (now - m_windowStart >= 1.0) {
-        m_rate = m_windowCount > 0 ? double(count - m_windowCount) / (now - m_windowStart) : 0.0;
-        m_windowStart = now;
-        m_windowCount = count;
-    }
+    m_rate.record(m_sent.count(), monotonicSeconds());
 }
 
 TransportStatus VirtualTransport::status() const
@@ -72,9 +66,7 @@ TransportStatus VirtualTransport::status() const
     s.armed = isArmed();
     const std::uint64_t count = m_sent.count();
     s.framesSent = std::uint32_t(count);
-    // A window that ran past its second without closing means the frames slowed or stopped.
-    const double open = monotonicSeconds() - m_windowStart;
-    s.framesPerSecond = open >= 1.0 ? double(count - m_windowCount) / open : m_rate;
+    s.framesPerSecond = m_rate.perSecond(count, monotonicSeconds());
     s.identity = m_model->name();
     return s;
 }

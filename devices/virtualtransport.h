@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "framerate.h"
 #include "transport.h"
 
 #include <cstdint>
@@ -36,11 +37,7 @@ private:
     SafetyFilter m_safety;
     mutable std::mutex m_mutex;
     int m_stops = 0;
-    // The frame rate the status reports, as a real link counts it: frames over the last
-    // whole second, and what the current window has seen once it runs past a second.
-    double m_windowStart = 0.0;
-    std::uint64_t m_windowCount = 0;
-    double m_rate = 0.0;
+    FrameRate m_rate; ///< the status's frames per second, as a real link counts them
     bool m_open = false;
 };
 

@@ -5,6 +5,7 @@
 #include "deviceuri.h"
 #include "emulatedband.h"
 #include "framedecoder.h"
+#include "framerate.h"
 #include "hidlink.h"
 #include "safetyfilter.h"
 #include "transportfactory.h"
@@ -45,6 +46,8 @@ private slots:
     void inflationLimitOnlyForPneumatic();
     void virtualTransport();
     void virtualTransportCountsItsRate();
+    void frameRateIsTheLastSecond_data();
+    void frameRateIsTheLastSecond();
     void stopAllGetsThrough();
     void sentLogReadsWhatIsNew();
     void sentIsWhatTheBandGot_data();
@@ -325,6 +328,37 @@ void TestTransports::virtualTransportCountsItsRate()
     QThread::msleep(2500);
     QVERIFY2(transport.status().framesPerSecond < 0.3 * expected,
              qPrintable(QString::number(transport.status().framesPerSecond)));
+}
+
+void TestTransports::frameRateIsTheLastSecond_data()
+{
+    // 500 frames a second from 0 s to 3 s, each counted as it comes; read at `at`. The rate
+    // is over the last second and up to one sample spacing (0.1 s) more.
+    QTest::addColumn<double>("at");
+    QTest::addColumn<double>("low");
+    QTest::addColumn<double>("high");
+    QTest::newRow("at once: too soon to tell") << 0.05 << 0.0 << 0.0;
+    QTest::newRow("after 0.3 s, not a second later") << 0.3 << 495.0 << 505.0;
+    QTest::newRow("steady") << 2.0 << 495.0 << 505.0;
+    // Of the last 1.0…1.1 s, frames came for 0.5…0.6 s.
+    QTest::newRow("half a second after they stop") << 3.5 << 249.0 << 274.0;
+    QTest::newRow("a second after they stop") << 4.05 << 0.0 << 0.0;
+}
+
+void TestTransports::frameRateIsTheLastSecond()
+{
+    QFETCH(double, at);
+    QFETCH(double, low);
+    QFETCH(double, high);
+    FrameRate rate;
+    std::uint64_t total = 0;
+    rate.record(total, 0.0);
+    for (int k = 1; k <= 1500 && k * 0.002 <= at; ++k)
+        rate.record(++total, k * 0.002);
+    for (double t = 3.0; t <= at; t += 0.05) // the transport's loop goes on, frames or not
+        rate.record(total, t);
+    const double read = rate.perSecond(total, at);
+    QVERIFY2(read >= low && read <= high, qPrintable(QString::number(read)));
 }
 
 void TestTransports::stopAllGetsThrough()
