@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "framesignals.h"
+
 #include <QString>
 
 #include <array>
@@ -41,8 +43,9 @@ struct Fingertip
 };
 
 /**
- * One gripper, one tick: the two fingertips' contact state (spec section 1). A missing
- * fingertip is the default Fingertip: no force, no contacts, no actor.
+ * One gripper, one tick: the two fingertips' contact state (spec section 1) and the task's
+ * named signals for the gripper (docs/streams.md, "Signals"). A missing fingertip is the
+ * default Fingertip: no force, no contacts, no actor.
  */
 struct ContactFrame
 {
@@ -50,6 +53,8 @@ struct ContactFrame
     Gripper gripper = Gripper::Right;
     Fingertip left;  ///< the gripper's left fingertip
     Fingertip right; ///< the gripper's right fingertip
+    /** The task's named scalars ("signals" in the stream; Qt reserves the word). */
+    FrameSignals signalValues;
 
     double totalForce() const { return left.f + right.f; }
     int totalContacts() const { return left.n + right.n; }
