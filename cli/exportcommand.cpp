@@ -2,6 +2,7 @@
 #include "exportcommand.h"
 
 #include "jsonlineswriter.h"
+#include "nametable.h"
 #include "sessionreader.h"
 
 #include <QDir>
@@ -64,7 +65,7 @@ void ExportCommand::configure(QCommandLineParser &parser)
     parser.addPositionalArgument(QStringLiteral("session"), tr("The session database."),
                                  tr("SESSION"));
     parser.addOption({QStringLiteral("csv"),
-                      tr("Write contact_frames.csv, events.csv, device_frames.csv, "
+                      tr("Write contact_frames.csv, signals.csv, events.csv, device_frames.csv, "
                          "operator_input.csv and metadata.json into DIR."),
                       tr("DIR")});
     parser.addOption({QStringLiteral("jsonl"),
@@ -126,8 +127,23 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
             header += QByteArray(",") + tip + '_' + column;
     }
     frames->write(header + ",arrival\n");
+    // The frames' named signals, tidy: one row per signal per frame.
+    QIODevice *signalRows = create(dir, QStringLiteral("signals.csv"));
+    if (!signalRows)
+        return false;
+    signalRows->write("t,gripper,signal,value\n");
     const bool framesOk = session.readContactFrames(
         [&](const ContactFrame &frame, double arrival) {
+            for (const SignalValue &signal : frame.signalValues) {
+                row.clear();
+                appendNumber(row, frame.t);
+                row += ',' + gripperName(frame.gripper).toUtf8() + ',';
+                row += signalNames().name(signal.id).toUtf8() + ',';
+                appendNumber(row, signal.value);
+                row += '\n';
+                if (signalRows->write(row) != row.size())
+                    return false;
+            }
             row.clear();
             appendNumber(row, frame.t);
             row += ',' + gripperName(frame.gripper).toUtf8() + ',';

@@ -3,6 +3,8 @@
 
 #include "detectorparams.h"
 #include "jsonreader.h"
+#include "nametable.h"
+#include "routernodes.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -119,12 +121,59 @@ bool ContactFrameParser::parse(const QJsonObject &json, ContactFrame *frame, QSt
                                 .arg(formatNumber(parsed.t), formatNumber(m_lastT[g]),
                                      gripperName(gripper)));
     }
+    if (!parseSignals(json, &parsed.signalValues, reason))
+        return false;
     // Only a valid line may change state: the clock and the actor table.
     m_seen[g] = true;
     m_lastT[g] = parsed.t;
     parsed.left.actor = m_actors.intern(leftActor);
     parsed.right.actor = m_actors.intern(rightActor);
     *frame = parsed;
+    return true;
+}
+
+bool ContactFrameParser::parseSignals(const QJsonObject &json, FrameSignals *signalValues,
+                                      QString *reason)
+{
+    const QJsonValue value = json.value(QLatin1String("signals"));
+    if (value.isUndefined() || value.isNull())
+        return true;
+    if (!value.isObject())
+        return fail(
+            reason,
+            QStringLiteral("\"signals\" must be an object or null, got %1").arg(describe(value)));
+    const QJsonObject object = value.toObject();
+    if (object.size() > FrameSignals::Capacity)
+        return fail(reason, QStringLiteral("\"signals\" has %1 signals, more than the %2 a "
+                                           "frame may carry")
+                                .arg(object.size())
+                                .arg(FrameSignals::Capacity));
+    // Every name and value first: a rejected line must not grow the name table.
+    static const QStringList builtins = SignalNode::quantityNames();
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const QString field = quotedField(QStringLiteral("signals.") + it.key());
+        if (!isPlainName(it.key()))
+            return fail(reason, QStringLiteral("%1: a signal's name must be 1 to %2 characters "
+                                               "of a-z, 0-9, _ and .")
+                                    .arg(field)
+                                    .arg(MaxPlainNameLength));
+        if (builtins.contains(it.key()))
+            return fail(reason, QStringLiteral("%1: \"%2\" is a built-in quantity, not a "
+                                               "signal name")
+                                    .arg(field, it.key()));
+        if (!it.value().isDouble() || !std::isfinite(it.value().toDouble()))
+            return fail(reason, QStringLiteral("%1 must be a finite number, got %2")
+                                    .arg(field, describe(it.value())));
+    }
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const int id = signalNames().intern(it.key());
+        if (id < 0)
+            return fail(reason, QStringLiteral("\"signals.%1\": more distinct signal names "
+                                               "than the %2 semhap holds")
+                                    .arg(it.key())
+                                    .arg(NameTable::Capacity));
+        signalValues->set(id, it.value().toDouble());
+    }
     return true;
 }
 

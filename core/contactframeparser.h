@@ -46,6 +46,7 @@ public:
     ActorTable &actors() { return m_actors; }
 
 private:
+    static bool parseSignals(const QJsonObject &json, FrameSignals *signalValues, QString *reason);
     bool parseFingertip(const QJsonObject &json, QLatin1String name, Fingertip *tip,
                         QString *actor, QString *reason) const;
 

@@ -72,8 +72,10 @@ bool ForceDetector::Params::validate(QString *key, QString *reason) const
 ForceDetector::ForceDetector(int node, Gripper gripper, const Params &params)
     : Detector(node, gripper), m_params(params)
 {
-    m_grasp.configure(gripper, node, DetectorKind::Force, Message::Grasp, params.minDuration);
-    m_break.configure(gripper, node, DetectorKind::Force, Message::Break, params.minDuration);
+    m_grasp.configure(gripper, node, DetectorKind::Force, Message::Grasp, Category::Confirmation,
+                      params.minDuration);
+    m_break.configure(gripper, node, DetectorKind::Force, Message::Break, Category::Exception,
+                      params.minDuration);
 }
 
 void ForceDetector::update(const ContactFrame &frame, EventBuffer &out)

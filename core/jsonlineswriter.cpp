@@ -2,6 +2,7 @@
 #include "jsonlineswriter.h"
 
 #include "actortable.h"
+#include "nametable.h"
 
 #include <QIODevice>
 
@@ -56,7 +57,6 @@ JsonLinesWriter::JsonLinesWriter(QIODevice *device) : m_device(device)
 {
     encodeNames(m_grippers, gripperName);
     encodeNames(m_kinds, detectorKindName);
-    encodeNames(m_messages, messageName);
     encodeNames(m_categories, categoryName);
     encodeNames(m_phases, eventPhaseName);
     m_line.reserve(256);
@@ -84,7 +84,7 @@ bool JsonLinesWriter::write(const SemanticEvent &event)
     m_line += ",\"detector\":";
     m_line += lookup(m_kinds, event.detector);
     m_line += ",\"message\":";
-    m_line += lookup(m_messages, event.message);
+    m_line += tableName(messageNames(), m_messages, int(event.message));
     m_line += ",\"category\":";
     m_line += lookup(m_categories, event.category);
     m_line += ",\"phase\":";
@@ -122,6 +122,19 @@ bool JsonLinesWriter::write(const ContactFrame &frame)
     m_line += lookup(m_grippers, frame.gripper);
     appendFingertip(",\"left\":{\"f\":", frame.left);
     appendFingertip(",\"right\":{\"f\":", frame.right);
+    if (!frame.signalValues.isEmpty()) {
+        m_line += ",\"signals\":{";
+        bool first = true;
+        for (const SignalValue &signal : frame.signalValues) {
+            if (!first)
+                m_line += ',';
+            first = false;
+            m_line += tableName(signalNames(), m_signals, signal.id);
+            m_line += ':';
+            appendNumber(m_line, signal.value);
+        }
+        m_line += '}';
+    }
     m_line += '}';
     return writeLine();
 }
@@ -148,6 +161,20 @@ void JsonLinesWriter::appendFingertip(const char *key, const Fingertip &tip)
         appendNumber(m_line, tip.mu);
     }
     m_line += '}';
+}
+
+const QByteArray &JsonLinesWriter::tableName(const NameTable &table,
+                                             std::vector<QByteArray> &cache, int id)
+{
+    if (id < 0)
+        return Null;
+    while (cache.size() <= size_t(id)) {
+        const QString name = table.name(int(cache.size()));
+        if (name.isNull())
+            return Null;
+        cache.push_back(encoded(name));
+    }
+    return cache[size_t(id)];
 }
 
 const QByteArray &JsonLinesWriter::actorName(int actor)

@@ -17,6 +17,7 @@ class QIODevice;
 namespace semhap {
 
 class ActorTable;
+class NameTable;
 
 /**
  * Writes events, device frames and contact frames as JSON Lines (spec section 1): one
@@ -51,6 +52,9 @@ public:
 private:
     void appendFingertip(const char *key, const Fingertip &tip);
     const QByteArray &actorName(int actor);
+    /** `id`'s name in `table`, encoded once into `cache`; null for an id never given. */
+    static const QByteArray &tableName(const NameTable &table, std::vector<QByteArray> &cache,
+                                       int id);
     bool writeLine();
 
     QIODevice *m_device;
@@ -60,8 +64,9 @@ private:
     const ActorTable *m_actors = nullptr;
     std::vector<QByteArray> m_actorNames; ///< encoded lazily, as the table grows
     std::array<QByteArray, 2> m_grippers;
-    std::array<QByteArray, 3> m_kinds;
-    std::array<QByteArray, 3> m_messages;
+    std::array<QByteArray, 4> m_kinds;
+    std::vector<QByteArray> m_messages; ///< messageNames(), encoded lazily
+    std::vector<QByteArray> m_signals;  ///< signalNames(), encoded lazily
     std::array<QByteArray, 2> m_categories;
     std::array<QByteArray, 3> m_phases;
 };

@@ -4,14 +4,14 @@
 namespace semhap {
 
 void MessageTracker::configure(Gripper gripper, int node, DetectorKind detector, Message message,
-                               double minDuration)
+                               Category category, double minDuration)
 {
     m_template = SemanticEvent();
     m_template.gripper = gripper;
     m_template.node = node;
     m_template.detector = detector;
     m_template.message = message;
-    m_template.category = categoryOf(message);
+    m_template.category = category;
     m_minDuration = minDuration;
     clear();
 }

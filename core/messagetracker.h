@@ -17,7 +17,10 @@ class MessageTracker
 public:
     /** Sets the fields every event of this message carries; call once, before update(). */
     void configure(Gripper gripper, int node, DetectorKind detector, Message message,
-                   double minDuration = 0.0);
+                   Category category, double minDuration = 0.0);
+
+    /** The gripper the next events carry (a composed message takes its input's). */
+    void setGripper(Gripper gripper) { m_template.gripper = gripper; }
 
     /**
      * Feeds one tick: emits begin (inactive to active, with `intensity`), update (active,

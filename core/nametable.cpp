@@ -39,18 +39,6 @@ QString NameTable::name(int id) const
     return m_names.at(id);
 }
 
-bool isPlainName(const QString &name)
-{
-    if (name.isEmpty() || name.size() > MaxPlainNameLength)
-        return false;
-    for (const QChar c : name) {
-        const char16_t u = c.unicode();
-        if (!((u >= 'a' && u <= 'z') || (u >= '0' && u <= '9') || u == '_' || u == '.'))
-            return false;
-    }
-    return true;
-}
-
 NameTable &signalNames()
 {
     static NameTable table;

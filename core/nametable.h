@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paramspec.h" // isPlainName: the form of the names
+
 #include <QHash>
 #include <QMutex>
 #include <QString>
@@ -35,11 +37,6 @@ private:
     QHash<QString, int> m_ids;
     QStringList m_names;
 };
-
-/** Whether `name` has the form of a signal or message name: `[a-z0-9_.]+`, at most 64. */
-bool isPlainName(const QString &name);
-/** The longest signal or message name. */
-constexpr int MaxPlainNameLength = 64;
 
 /** The table of the frames' signal names. */
 NameTable &signalNames();

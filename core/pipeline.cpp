@@ -79,7 +79,11 @@ void Pipeline::advance(double t, bool inclusive, PipelineSink &sink)
         const double instant = player.nextInstant();
         // A timer due at an instant acts before it is rendered, like a frame at that time.
         if (timer <= instant && timer <= limit) {
-            m_router->fireTimers(timer);
+            // A held-back end reaching a compose node raises a message of its own.
+            m_events.clear();
+            m_router->fireTimers(timer, m_events);
+            for (const SemanticEvent &event : m_events)
+                sink.onEvent(event);
             reportActivity(sink);
         } else if (instant <= limit) {
             player.renderNext(&frame);

@@ -79,6 +79,12 @@ private:
     bool buildDevice(int node);
     std::unique_ptr<RuntimeNode> buildLogic(int node);
     std::unique_ptr<RuntimeNode> buildThreshold(int node);
+    std::unique_ptr<RuntimeNode> buildCompose(int node);
+    std::unique_ptr<RuntimeNode> buildSignal(int node);
+    /** The message and category of a threshold or compose node; false after failNode. */
+    bool messageOf(int node, Message *message, Category *category);
+    /** A [low, high] or single-number level parameter; false after failNode. */
+    bool level(int node, const QString &key, bool range, double *low, double *high);
     /** The default horizons of predict nodes: downstream devices' delay + reaction time. */
     void setDefaultHorizons();
 
@@ -103,6 +109,7 @@ private:
     std::vector<int> m_order;              ///< nodes in topological order (checkCycles)
     QHash<QString, PatternPtr> m_patterns; ///< embedded and loaded patterns by name or path
     QHash<QString, DeviceModelPtr> m_models;
+    QHash<int, std::pair<Category, int>> m_categories; ///< message -> category, first node
     std::unique_ptr<Router> m_router;
 };
 
@@ -315,15 +322,8 @@ bool RouterCompiler::buildDevice(int node)
 std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
-    if (n.type == QLatin1String("signal")) {
-        SignalNode::Quantity quantity = SignalNode::Quantity();
-        SignalNode::quantityFromName(param(node, QStringLiteral("quantity")).toString(),
-                                     &quantity);
-        auto signal = std::make_unique<SignalNode>(gripper(node), quantity,
-                                                   number(node, QStringLiteral("mu")));
-        m_router->m_signals.push_back(signal.get());
-        return signal;
-    }
+    if (n.type == QLatin1String("signal"))
+        return buildSignal(node);
     if (n.type == QLatin1String("derivative"))
         return std::make_unique<DerivativeNode>(number(node, QStringLiteral("tau")));
     if (n.type == QLatin1String("predict")) {
@@ -335,10 +335,26 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
     }
     if (n.type == QLatin1String("threshold"))
         return buildThreshold(node);
-    if (n.type == QLatin1String("filter"))
-        return std::make_unique<FilterNode>(choiceBits(node, QStringLiteral("message")),
+    if (n.type == QLatin1String("compose"))
+        return buildCompose(node);
+    if (n.type == QLatin1String("filter")) {
+        std::vector<Message> messages;
+        const QJsonValue value = param(node, QStringLiteral("message"));
+        for (const QJsonValue &item : value.isArray() ? value.toArray() : QJsonArray{value}) {
+            Message message = Message::Grasp;
+            if (item.isString() && !messageFromName(item.toString(), &message)) {
+                failNode(node, QStringLiteral("message"),
+                         QStringLiteral("more new messages than the %1 semhap can name")
+                             .arg(NameTable::Capacity));
+                return nullptr;
+            }
+            if (item.isString())
+                messages.push_back(message);
+        }
+        return std::make_unique<FilterNode>(std::move(messages),
                                             choiceBits(node, QStringLiteral("category")),
                                             choiceBits(node, QStringLiteral("gripper")));
+    }
     if (n.type == QLatin1String("gate"))
         return std::make_unique<GateNode>(param(node, QStringLiteral("mode")).toString() ==
                                           QLatin1String("open"));
@@ -362,23 +378,172 @@ std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
     return std::make_unique<ProportionalNode>(number(node, QStringLiteral("ref")));
 }
 
+std::unique_ptr<RuntimeNode> RouterCompiler::buildSignal(int node)
+{
+    const QString name = param(node, QStringLiteral("quantity")).toString();
+    const Gripper hand = gripper(node);
+    SignalNode::Quantity quantity = SignalNode::Quantity::Named;
+    int id = -1;
+    if (!SignalNode::quantityFromName(name, &quantity)) {
+        const QStringList &known = m_context.signalNames[size_t(hand)];
+        if (m_context.knowsSignals && !known.contains(name)) {
+            failNode(node, QStringLiteral("quantity"),
+                     QStringLiteral("the %1 gripper's frames carry no signal '%2' (%3)")
+                         .arg(gripperName(hand), name,
+                              known.isEmpty() ? QStringLiteral("they carry none")
+                                              : QStringLiteral("they carry: ") +
+                                                    known.join(QStringLiteral(", "))));
+            return nullptr;
+        }
+        id = signalNames().intern(name);
+        if (id < 0) {
+            failNode(node, QStringLiteral("quantity"),
+                     QStringLiteral("more signal names than the %1 semhap can hold")
+                         .arg(NameTable::Capacity));
+            return nullptr;
+        }
+    }
+    auto signal =
+        std::make_unique<SignalNode>(hand, quantity, number(node, QStringLiteral("mu")), id);
+    m_router->m_signals.push_back(signal.get());
+    return signal;
+}
+
+bool RouterCompiler::messageOf(int node, Message *message, Category *category)
+{
+    const QString name = param(node, QStringLiteral("message")).toString();
+    if (!messageFromName(name, message))
+        return failNode(node, QStringLiteral("message"),
+                        QStringLiteral("more new messages than the %1 semhap can name")
+                            .arg(NameTable::Capacity));
+    const QJsonValue given = param(node, QStringLiteral("category"));
+    if (given.isUndefined()) {
+        if (!isBuiltinMessage(*message))
+            return failNode(node, QString(),
+                            QStringLiteral("needs \"category\" for the new message '%1': "
+                                           "\"confirmation\" or \"exception\"")
+                                .arg(name));
+        *category = categoryOf(*message);
+    } else {
+        categoryFromName(given.toString(), category);
+    }
+    // A message means one thing in a router: the patterns and the plots take its category.
+    const auto known = m_categories.constFind(int(*message));
+    if (known != m_categories.cend() && known->first != *category)
+        return failNode(
+            node, QStringLiteral("category"),
+            QStringLiteral("'%1' has the category %2 in node '%3': a message has one")
+                .arg(name, categoryName(known->first), m_graph.nodes[size_t(known->second)].id));
+    if (isBuiltinMessage(*message) && *category != categoryOf(*message))
+        return failNode(node, QStringLiteral("category"),
+                        QStringLiteral("'%1' has the category %2")
+                            .arg(name, categoryName(categoryOf(*message))));
+    m_categories.insert(int(*message), {*category, node});
+    return true;
+}
+
+bool RouterCompiler::level(int node, const QString &key, bool range, double *low, double *high)
+{
+    const QJsonValue value = param(node, key);
+    if (range != value.isArray())
+        return failNode(node, key,
+                        range ? QStringLiteral("must be a [low, high] range for the condition "
+                                               "'%1'")
+                                    .arg(param(node, QStringLiteral("condition")).toString())
+                              : QStringLiteral("must be a number for the condition '%1'")
+                                    .arg(param(node, QStringLiteral("condition")).toString()));
+    if (!range) {
+        *low = *high = value.toDouble();
+        return true;
+    }
+    *low = value.toArray().at(0).toDouble();
+    *high = value.toArray().at(1).toDouble();
+    if (!(*low < *high))
+        return failNode(node, key,
+                        QStringLiteral("empty range: low %1 is not below high %2")
+                            .arg(formatNumber(*low), formatNumber(*high)));
+    return true;
+}
+
 std::unique_ptr<RuntimeNode> RouterCompiler::buildThreshold(int node)
 {
+    using Condition = ThresholdNode::Condition;
     ThresholdNode::Params p;
-    messageFromName(param(node, QStringLiteral("message")).toString(), &p.message);
-    p.level = number(node, QStringLiteral("level"));
-    p.full = number(node, QStringLiteral("full"));
-    p.hysteresis = number(node, QStringLiteral("hysteresis"));
-    p.minDuration = number(node, QStringLiteral("minDuration"));
-    if (p.full == p.level) {
-        failNode(node, QStringLiteral("full"),
-                 QStringLiteral("must differ from level (above it: active while the input "
-                                "is above level; below it: while below)"));
+    if (!messageOf(node, &p.message, &p.category))
+        return nullptr;
+    p.condition = Condition(ThresholdNode::conditionNames().indexOf(
+        param(node, QStringLiteral("condition")).toString()));
+    const bool range = p.condition == Condition::Inside || p.condition == Condition::Outside;
+    const QString begin = QStringLiteral("begin");
+    const QString end = QStringLiteral("end");
+    if (!level(node, begin, range, &p.begin, &p.beginHigh))
+        return nullptr;
+    if (param(node, end).isUndefined()) {
+        p.end = p.begin;
+        p.endHigh = p.beginHigh;
+    } else if (!level(node, end, range, &p.end, &p.endHigh)) {
         return nullptr;
     }
+    // The end level lies on the far side of the begin level, or the message would end as
+    // it begins.
+    bool crossed = false;
+    switch (p.condition) {
+    case Condition::Above:
+        crossed = p.end > p.begin;
+        break;
+    case Condition::Below:
+        crossed = p.end < p.begin;
+        break;
+    case Condition::Inside:
+        crossed = p.end > p.begin || p.endHigh < p.beginHigh;
+        break;
+    case Condition::Outside:
+        crossed = p.end < p.begin || p.endHigh > p.beginHigh;
+        break;
+    }
+    if (crossed) {
+        static const char *const rules[] = {
+            "above: end must not be above begin", "below: end must not be below begin",
+            "inside: the end range must contain the begin range",
+            "outside: the end range must lie within the begin range"};
+        failNode(node, end,
+                 QStringLiteral("begin/end levels crossed (%1)")
+                     .arg(QLatin1String(rules[int(p.condition)])));
+        return nullptr;
+    }
+    p.minDuration = number(node, QStringLiteral("minDuration"));
+    const QJsonValue intensity = param(node, QStringLiteral("intensity"));
+    if (!intensity.isUndefined()) {
+        const QJsonArray pair = intensity.toArray();
+        if (!intensity.isArray() || pair.at(0).toDouble() == pair.at(1).toDouble()) {
+            failNode(node, QStringLiteral("intensity"),
+                     QStringLiteral("must be [x0, x1] with x0 and x1 apart: the input at "
+                                    "intensity 0 and at 1"));
+            return nullptr;
+        }
+        p.mapsIntensity = true;
+        p.intensityFrom = pair.at(0).toDouble();
+        p.intensityTo = pair.at(1).toDouble();
+    }
     auto threshold = std::make_unique<ThresholdNode>(node, gripper(node), p);
-    m_router->m_thresholds.push_back(threshold.get());
+    m_router->m_messageSources.push_back(threshold.get());
     return threshold;
+}
+
+std::unique_ptr<RuntimeNode> RouterCompiler::buildCompose(int node)
+{
+    ComposeNode::Params p;
+    if (!messageOf(node, &p.message, &p.category))
+        return nullptr;
+    p.mode = ComposeNode::Mode(
+        ComposeNode::modeNames().indexOf(param(node, QStringLiteral("mode")).toString()));
+    const QJsonValue hand = param(node, QStringLiteral("gripper"));
+    p.fixedGripper = !hand.isUndefined();
+    if (p.fixedGripper)
+        p.gripper = gripper(node);
+    auto compose = std::make_unique<ComposeNode>(node, p);
+    m_router->m_messageSources.push_back(compose.get());
+    return compose;
 }
 
 void RouterCompiler::setDefaultHorizons()
@@ -816,9 +981,10 @@ void Router::process(const ContactFrame &frame, EventBuffer &events)
         if (detector->detector().gripper() == frame.gripper)
             detector->process(frame, events);
     }
-    // Threshold nodes fire as the signals reach them: after the detectors in the tick.
-    for (ThresholdNode *threshold : m_thresholds)
-        threshold->setOutput(&events);
+    // Threshold and compose nodes fire as signals and events reach them: after the
+    // detectors in the tick.
+    for (MessageSourceNode *source : m_messageSources)
+        source->setOutput(&events);
     for (const SignalNode *signal : m_signals) {
         if (signal->gripper() == frame.gripper)
             signal->process(frame);
@@ -827,18 +993,20 @@ void Router::process(const ContactFrame &frame, EventBuffer &events)
 
 void Router::endAll(double t, EventBuffer &events)
 {
+    for (MessageSourceNode *source : m_messageSources)
+        source->setOutput(&events);
     for (DetectorNode *detector : m_detectors)
         detector->endAll(t, events);
-    for (ThresholdNode *threshold : m_thresholds)
-        threshold->endAll(t, events);
+    for (MessageSourceNode *source : m_messageSources)
+        source->endAll(t, events);
 }
 
 void Router::appendActive(double t, EventBuffer &events) const
 {
     for (const DetectorNode *detector : m_detectors)
         detector->detector().appendActive(t, events);
-    for (const ThresholdNode *threshold : m_thresholds)
-        threshold->appendActive(t, events);
+    for (const MessageSourceNode *source : m_messageSources)
+        source->appendActive(t, events);
 }
 
 double Router::nextTimer() const
@@ -849,8 +1017,10 @@ double Router::nextTimer() const
     return next;
 }
 
-void Router::fireTimers(double t)
+void Router::fireTimers(double t, EventBuffer &events)
 {
+    for (MessageSourceNode *source : m_messageSources)
+        source->setOutput(&events);
     for (RuntimeNode *node : m_timed)
         node->fireTimers(t);
 }

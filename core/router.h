@@ -20,8 +20,8 @@ class Detector;
 class DetectorNode;
 class RouterActivity;
 class RuntimeNode;
+class MessageSourceNode;
 class SignalNode;
-class ThresholdNode;
 
 /**
  * A router graph compiled to run: detectors, logic, pattern voices and the player with its
@@ -55,8 +55,8 @@ public:
 
     /** When a logic node next needs fireTimers; infinity when none waits. */
     double nextTimer() const;
-    /** Fires the timers due at or before t, in time order. */
-    void fireTimers(double t);
+    /** Fires the timers due at or before t, in time order; messages raised go to `events`. */
+    void fireTimers(double t, EventBuffer &events);
 
     Player &player() { return m_player; }
     const Player &player() const { return m_player; }
@@ -94,8 +94,8 @@ private:
     std::vector<std::unique_ptr<RuntimeNode>> m_nodes; ///< graph order; null for devices
     std::vector<DetectorNode *> m_detectors;
     std::vector<SignalNode *> m_signals;
-    std::vector<ThresholdNode *> m_thresholds;
-    std::vector<RuntimeNode *> m_timed; ///< nodes that may hold timers
+    std::vector<MessageSourceNode *> m_messageSources; ///< threshold and compose nodes
+    std::vector<RuntimeNode *> m_timed;                ///< nodes that may hold timers
     /** What a node's pattern or model parameter resolved to, for selfContained(). */
     struct Sources
     {

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QStringList>
+
+#include <array>
+
 namespace semhap {
 
 /**
@@ -14,6 +18,13 @@ constexpr double DefaultReactionTime = 0.25;
 struct RouterContext
 {
     double reactionTime = DefaultReactionTime; ///< of the person the router warns (s)
+    /**
+     * The named signals the source's frames carry, per gripper (left, right), when the
+     * source says so in advance (a scene declares them): a signal node naming another is
+     * refused. Unknown (a file, a live rig): any name is taken.
+     */
+    bool knowsSignals = false;
+    std::array<QStringList, 2> signalNames;
 };
 
 } // namespace semhap

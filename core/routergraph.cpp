@@ -14,6 +14,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -45,8 +46,9 @@ QString joinEndpoint(const QString &node, const QString &port)
 
 /**
  * Spellings semhap 1.0 wrote, read as today's with a located warning: the debounce node was
- * called "hysteresis" like the detectors' parameter, and a fingertip's quantities were
- * "f.left" where the contact frame says `left.f`.
+ * called "hysteresis" like the detectors' parameter, a fingertip's quantities were "f.left"
+ * where the contact frame says `left.f`, and a threshold had one `level`, a `hysteresis`
+ * back from it and intensity growing to `full` (which also set the direction).
  */
 void readOldSpellings(const QString &file, const QString &where, RouterNode *node,
                       std::vector<LoadError> *warnings)
@@ -70,7 +72,30 @@ void readOldSpellings(const QString &file, const QString &where, RouterNode *nod
         {QStringLiteral("n.right"), QStringLiteral("right.n")},
         {QStringLiteral("friction.left"), QStringLiteral("left.friction")},
         {QStringLiteral("friction.right"), QStringLiteral("right.friction")}};
-    const QString quantity = node->params.value(QLatin1String("quantity")).toString();
+    QJsonObject &params = node->params;
+    const QJsonValue level = params.value(QLatin1String("level"));
+    const QJsonValue full = params.value(QLatin1String("full"));
+    const QJsonValue hysteresis = params.value(QLatin1String("hysteresis"));
+    if (node->type == QLatin1String("threshold") && level.isDouble() &&
+        full.toDouble(1.0) != level.toDouble() && !params.contains(QLatin1String("begin"))) {
+        const double at = level.toDouble();
+        const double to = full.toDouble(1.0);
+        const double relief = std::abs(hysteresis.toDouble(0.0));
+        params.insert(QStringLiteral("condition"),
+                      to > at ? QStringLiteral("above") : QStringLiteral("below"));
+        params.insert(QStringLiteral("begin"), at);
+        if (relief > 0.0)
+            params.insert(QStringLiteral("end"), to > at ? at - relief : at + relief);
+        params.insert(QStringLiteral("intensity"), QJsonArray{at, to});
+        for (const char *old : {"level", "full", "hysteresis"})
+            params.remove(QLatin1String(old));
+        warnings->push_back(LoadError::at(
+            file, where + QStringLiteral("/params"),
+            QStringLiteral("deprecated: threshold parameters \"level\", \"full\" and "
+                           "\"hysteresis\" are now \"condition\", \"begin\", \"end\" and "
+                           "\"intensity\" (read as those)")));
+    }
+    const QString quantity = params.value(QLatin1String("quantity")).toString();
     if (node->type == QLatin1String("signal") && quantities.contains(quantity)) {
         node->params.insert(QStringLiteral("quantity"), quantities.value(quantity));
         warn(QStringLiteral("/params/quantity"), QStringLiteral("quantity"), quantity,
@@ -382,7 +407,7 @@ QString RouterGraph::fanInProblem()
 bool RouterGraph::isDetectorType(const QString &type)
 {
     return type == QLatin1String("force") || type == QLatin1String("slip") ||
-           type == QLatin1String("threshold");
+           type == QLatin1String("threshold") || type == QLatin1String("compose");
 }
 
 bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const

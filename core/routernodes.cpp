@@ -36,11 +36,11 @@ void RouterActivity::set(int node, double t, const PassedMessages &passing)
     now.node = node;
     for (const PassedEntry &entry : passing) {
         now.level = std::max(now.level, entry.intensity);
-        now.messages |= 1u << unsigned(entry.message);
+        now.addMessage(int(entry.message));
         now.exception = now.exception || entry.category == Category::Exception;
     }
     NodeActivity &was = m_nodes[size_t(node)];
-    if (now.level == was.level && now.messages == was.messages && now.exception == was.exception)
+    if (now.level == was.level && now.sameMessages(was) && now.exception == was.exception)
         return;
     was = now;
     if (!m_dirty[size_t(node)]) {
@@ -65,7 +65,7 @@ void RuntimeNode::emitEvent(const SemanticEvent &event)
 
 void RuntimeNode::reportActivity(const SemanticEvent &event)
 {
-    const int key = PassedMessages::keyOf(event);
+    const MessageKey key = PassedMessages::keyOf(event);
     if (event.phase == EventPhase::End)
         m_passed.remove(key);
     else if (PassedEntry *entry = m_passed.insert(key))
@@ -82,7 +82,9 @@ void RuntimeNode::emitSignal(double value, double t) const
 
 void RuntimeNode::emitEvents(const EventBuffer &events, int from)
 {
-    for (int i = from; i < events.size(); ++i)
+    // Only this node's: nodes downstream (compose) append their own as these flow.
+    const int to = events.size();
+    for (int i = from; i < to; ++i)
         emitEvent(events[i]);
 }
 
@@ -160,6 +162,13 @@ void SignalNode::process(const ContactFrame &frame) const
     case Quantity::FrictionRight:
         value = frictionUse(frame.right);
         break;
+    case Quantity::Named: {
+        const double *named = frame.signalValues.find(m_signal);
+        if (!named)
+            return;
+        value = *named;
+        break;
+    }
     }
     emitSignal(value, frame.t);
 }
@@ -194,42 +203,129 @@ void PredictNode::onSignal(int, double value, double t)
     emitSignal(value + m_horizon * m_slope.update(value, t), t);
 }
 
-ThresholdNode::ThresholdNode(int node, Gripper gripper, const Params &params) : m_params(params)
-{
-    m_tracker.configure(gripper, node, DetectorKind::Threshold, params.message,
-                        params.minDuration);
-}
-
-void ThresholdNode::onSignal(int, double value, double t)
+void MessageSourceNode::update(double t, bool condition, double intensity)
 {
     if (!m_out)
         return;
-    // Beyond the level in the direction of `full`; an active message holds back to
-    // level -/+ hysteresis. With hysteresis 0 this is the strict x > level of the detectors.
-    const double direction = m_params.full > m_params.level ? 1.0 : -1.0;
-    const double relief = m_tracker.isActive() ? m_params.hysteresis : 0.0;
-    const bool condition = direction * (value - m_params.level) > -relief;
-    // In steps of IntensityStep: a signal that changes every tick (a friction ratio, a
-    // prediction) would otherwise flood the log with updates no band can render.
-    const double share =
-        std::clamp((value - m_params.level) / (m_params.full - m_params.level), 0.0, 1.0);
-    const double intensity = std::round(share / IntensityStep) * IntensityStep;
     const int from = m_out->size();
     m_tracker.update(t, condition, intensity, *m_out);
     emitEvents(*m_out, from);
 }
 
-void ThresholdNode::endAll(double t, EventBuffer &events)
+void MessageSourceNode::endAll(double t, EventBuffer &events)
 {
     const int from = events.size();
     m_tracker.forceEnd(t, events);
     emitEvents(events, from);
 }
 
+QStringList ThresholdNode::conditionNames()
+{
+    // In Condition's order.
+    return {QStringLiteral("above"), QStringLiteral("below"), QStringLiteral("inside"),
+            QStringLiteral("outside")};
+}
+
+ThresholdNode::ThresholdNode(int node, Gripper gripper, const Params &params) : m_params(params)
+{
+    m_tracker.configure(gripper, node, DetectorKind::Threshold, params.message, params.category,
+                        params.minDuration);
+}
+
+void ThresholdNode::onSignal(int, double value, double t)
+{
+    // An active message holds at the end levels; with end = begin, above is the strict
+    // x > level of the detectors.
+    const bool active = m_tracker.isActive();
+    const double low = active ? m_params.end : m_params.begin;
+    const double high = active ? m_params.endHigh : m_params.beginHigh;
+    bool condition = false;
+    switch (m_params.condition) {
+    case Condition::Above:
+        condition = value > low;
+        break;
+    case Condition::Below:
+        condition = value < low;
+        break;
+    case Condition::Inside:
+        condition = value >= low && value <= high;
+        break;
+    case Condition::Outside:
+        condition = value < low || value > high;
+        break;
+    }
+    double intensity = 1.0;
+    if (m_params.mapsIntensity) {
+        // In steps of IntensityStep: a signal that changes every tick (a friction ratio, a
+        // prediction) would otherwise flood the log with updates no band can render.
+        const double share = std::clamp((value - m_params.intensityFrom) /
+                                            (m_params.intensityTo - m_params.intensityFrom),
+                                        0.0, 1.0);
+        intensity = std::round(share / IntensityStep) * IntensityStep;
+    }
+    update(t, condition, intensity);
+}
+
+QStringList ComposeNode::modeNames()
+{
+    // In Mode's order.
+    return {QStringLiteral("all"), QStringLiteral("any"), QStringLiteral("while")};
+}
+
+ComposeNode::ComposeNode(int node, const Params &params) : m_params(params)
+{
+    m_tracker.configure(params.gripper, node, DetectorKind::Compose, params.message,
+                        params.category);
+}
+
+void ComposeNode::onEvent(int port, const SemanticEvent &event)
+{
+    ActiveMessages &input = m_inputs[size_t(port)];
+    const MessageKey key = ActiveMessages::keyOf(event);
+    if (event.phase == EventPhase::End)
+        input.remove(key);
+    else if (ActiveMessages::Entry *entry = input.insert(key))
+        entry->last = event;
+
+    // Each input's strongest active message.
+    std::array<const SemanticEvent *, 2> strongest{};
+    for (size_t i = 0; i < 2; ++i) {
+        for (const ActiveEntry &entry : m_inputs[i]) {
+            if (!strongest[i] || entry.last.intensity > strongest[i]->intensity)
+                strongest[i] = &entry.last;
+        }
+    }
+    const SemanticEvent *a = strongest[0];
+    const SemanticEvent *b = strongest[1];
+    bool condition = false;
+    double intensity = 0.0;
+    const SemanticEvent *origin = a;
+    switch (m_params.mode) {
+    case Mode::All:
+        condition = a && b;
+        intensity = condition ? std::min(a->intensity, b->intensity) : 0.0;
+        break;
+    case Mode::Any:
+        condition = a || b;
+        origin = a && (!b || a->intensity >= b->intensity) ? a : b;
+        intensity = origin ? origin->intensity : 0.0;
+        break;
+    case Mode::While:
+        condition = a && b;
+        intensity = a ? a->intensity : 0.0;
+        break;
+    }
+    // A message keeps the gripper it began with: downstream knows it by its origin.
+    if (!m_params.fixedGripper && condition && !m_tracker.isActive())
+        m_tracker.setGripper(origin->gripper);
+    update(event.t, condition, intensity);
+}
+
 void FilterNode::onEvent(int, const SemanticEvent &event)
 {
     const auto bit = [](auto value) { return 1u << unsigned(value); };
-    if (m_messages && !(m_messages & bit(event.message)))
+    if (!m_messages.empty() &&
+        std::find(m_messages.begin(), m_messages.end(), event.message) == m_messages.end())
         return;
     if (m_categories && !(m_categories & bit(event.category)))
         return;
@@ -240,7 +336,7 @@ void FilterNode::onEvent(int, const SemanticEvent &event)
 
 void GateNode::onEvent(int port, const SemanticEvent &event)
 {
-    const int key = ActiveMessages::keyOf(event);
+    const MessageKey key = ActiveMessages::keyOf(event);
     if (port == 0) {
         if (event.phase == EventPhase::End)
             m_inputs.remove(key);
@@ -270,7 +366,7 @@ void GateNode::onEvent(int port, const SemanticEvent &event)
 
 void DebounceNode::onEvent(int, const SemanticEvent &event)
 {
-    const int key = ActiveMessages::keyOf(event);
+    const MessageKey key = ActiveMessages::keyOf(event);
     ActiveMessages::Entry *entry = m_active.find(key);
     switch (event.phase) {
     case EventPhase::Begin:
@@ -348,7 +444,7 @@ void DebounceNode::fireTimers(double t)
 
 void CurveNode::onEvent(int, const SemanticEvent &event)
 {
-    const int key = ActiveMessages::keyOf(event);
+    const MessageKey key = ActiveMessages::keyOf(event);
     SemanticEvent mapped = event;
     mapped.intensity = std::clamp(m_curve.map(event.intensity), 0.0, 1.0);
     if (event.phase == EventPhase::End) {
@@ -369,7 +465,7 @@ void CurveNode::onEvent(int, const SemanticEvent &event)
 
 void PatternNode::onEvent(int, const SemanticEvent &event)
 {
-    const int key = ActiveMessages::keyOf(event);
+    const MessageKey key = ActiveMessages::keyOf(event);
     const bool wasActive = !m_active.isEmpty();
     if (event.phase == EventPhase::End) {
         m_active.remove(key);

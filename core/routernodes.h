@@ -28,6 +28,9 @@ struct RouteTarget
     int port;
 };
 
+/** A message's origin: its detector node and its Message id, in one number. */
+using MessageKey = long long;
+
 /**
  * A set of messages keyed by their origin (detector node and message), each with an `Entry`
  * of what a node keeps of it. Fixed capacity: a node listens to at most Capacity distinct
@@ -39,9 +42,12 @@ public:
     using Entry = EntryType;
     static constexpr int Capacity = 16;
 
-    static int keyOf(const SemanticEvent &e) { return e.node * 8 + int(e.message); }
+    static MessageKey keyOf(const SemanticEvent &e)
+    {
+        return MessageKey(e.node) << 32 | MessageKey(unsigned(e.message));
+    }
 
-    Entry *find(int key)
+    Entry *find(MessageKey key)
     {
         for (Entry &entry : *this) {
             if (entry.key == key)
@@ -50,7 +56,7 @@ public:
         return nullptr;
     }
     /** The entry of `key`, new (default values) when there was none; null when full. */
-    Entry *insert(int key)
+    Entry *insert(MessageKey key)
     {
         if (Entry *existing = find(key))
             return existing;
@@ -61,7 +67,7 @@ public:
         entry.key = key;
         return &entry;
     }
-    void remove(int key)
+    void remove(MessageKey key)
     {
         for (int i = 0; i < m_size; ++i) {
             if (m_entries[size_t(i)].key == key) {
@@ -89,7 +95,7 @@ private:
 /** What a logic node keeps of an active message: the last event, and a held-back end. */
 struct ActiveEntry
 {
-    int key = -1;
+    MessageKey key = -1;
     SemanticEvent last;      ///< the last event passed on for this message
     double pendingEnd = 0.0; ///< hysteresis: time the held-back end is due
     bool endPending = false;
@@ -102,7 +108,7 @@ using ActiveMessages = MessageSet<ActiveEntry>;
  */
 struct PassedEntry
 {
-    int key = -1;
+    MessageKey key = -1;
     Message message = Message::Grasp;
     Category category = Category::Confirmation;
     double intensity = 0.0;
@@ -204,14 +210,20 @@ public:
         NRight,
         Friction,
         FrictionLeft,
-        FrictionRight
+        FrictionRight,
+        Named ///< one of the frame's named signals
     };
     static bool quantityFromName(const QString &name, Quantity *quantity);
+    /** The built-in quantities' names, in Quantity's order (Named has none). */
     static QStringList quantityNames();
 
-    /** `mu` > 0 overrides the frames' friction coefficient for the friction quantities. */
-    SignalNode(Gripper gripper, Quantity quantity, double mu = 0.0)
-        : m_gripper(gripper), m_quantity(quantity), m_mu(mu)
+    /**
+     * `mu` > 0 overrides the frames' friction coefficient for the friction quantities;
+     * `signal` is the named signal's signalNames() id for Named. A frame without that signal
+     * sends no value.
+     */
+    SignalNode(Gripper gripper, Quantity quantity, double mu = 0.0, int signal = -1)
+        : m_gripper(gripper), m_quantity(quantity), m_mu(mu), m_signal(signal)
     {}
     Gripper gripper() const { return m_gripper; }
     void process(const ContactFrame &frame) const;
@@ -222,6 +234,7 @@ private:
     Gripper m_gripper;
     Quantity m_quantity;
     double m_mu;
+    int m_signal;
 };
 
 /**
@@ -270,53 +283,116 @@ private:
 };
 
 /**
- * A detector on a signal: its message is active while the input is beyond `level` (above
- * it when `full` > `level`, below it otherwise), with intensity clip((x - level) / (full -
- * level), 0, 1), the force detector's rule, in steps of IntensityStep; hysteresis and
- * minDuration as the detectors'.
- * Its events go into the tick's event buffer like a detector's.
+ * A node that raises messages of its own inside the router (threshold, compose): its events
+ * go into the tick's event buffer like a detector's, then on along its links.
  */
-class ThresholdNode : public RuntimeNode
+class MessageSourceNode : public RuntimeNode
 {
 public:
-    struct Params
-    {
-        Message message = Message::Break;
-        double level = 0.0;
-        double full = 1.0;
-        double hysteresis = 0.0;
-        double minDuration = 0.0;
-    };
-    /** Intensities come in steps of this size. */
-    static constexpr double IntensityStep = 0.01;
-
-    ThresholdNode(int node, Gripper gripper, const Params &params);
-    /** Where this tick's events go (the router sets it before the signals flow). */
+    /** Where events go from now on (the router sets it before each tick and timer). */
     void setOutput(EventBuffer *out) { m_out = out; }
-    void onSignal(int port, double value, double t) override;
     /** Ends the message now if active (end of a run, router swap). */
     void endAll(double t, EventBuffer &events);
     /** Appends a begin at t if the message is active (MessageTracker::appendActive). */
     void appendActive(double t, EventBuffer &events) const { m_tracker.appendActive(t, events); }
 
+protected:
+    /** Feeds the tracker one step and routes what it emits. */
+    void update(double t, bool condition, double intensity);
+
+    MessageTracker m_tracker;
+
+private:
+    EventBuffer *m_out = nullptr;
+};
+
+/**
+ * A detector on a signal (docs/detectors.md, "threshold"): its message is active while the
+ * input meets the condition at the begin levels, and stays active while it meets it at the
+ * end levels; intensity is a clipped linear map of the input in steps of IntensityStep, or
+ * 1; minDuration as the detectors'.
+ */
+class ThresholdNode : public MessageSourceNode
+{
+public:
+    enum class Condition
+    {
+        Above,
+        Below,
+        Inside,
+        Outside
+    };
+    static QStringList conditionNames();
+
+    struct Params
+    {
+        Message message = Message::Break;
+        Category category = Category::Exception;
+        Condition condition = Condition::Above;
+        double begin = 0.0;     ///< above, below: the level; inside, outside: the range's low
+        double beginHigh = 0.0; ///< inside, outside: the range's high
+        double end = 0.0;       ///< as begin, while active
+        double endHigh = 0.0;
+        double minDuration = 0.0;
+        bool mapsIntensity = false; ///< false: intensity 1 while active
+        double intensityFrom = 0.0; ///< the input at which intensity is 0
+        double intensityTo = 1.0;   ///< the input at which intensity is 1
+    };
+    /** Intensities come in steps of this size. */
+    static constexpr double IntensityStep = 0.01;
+
+    ThresholdNode(int node, Gripper gripper, const Params &params);
+    void onSignal(int port, double value, double t) override;
+    const Params &params() const { return m_params; }
+
 private:
     Params m_params;
-    MessageTracker m_tracker;
-    EventBuffer *m_out = nullptr;
+};
+
+/**
+ * A message made of two others (docs/detectors.md, "compose"): active while both inputs
+ * carry an active message (all), either does (any), or `a` does while `b` does (while).
+ */
+class ComposeNode : public MessageSourceNode
+{
+public:
+    enum class Mode
+    {
+        All,
+        Any,
+        While
+    };
+    static QStringList modeNames();
+
+    struct Params
+    {
+        Message message = Message::Grasp;
+        Category category = Category::Confirmation;
+        Mode mode = Mode::All;
+        bool fixedGripper = false; ///< false: the gripper of the input that makes it active
+        Gripper gripper = Gripper::Right;
+    };
+
+    ComposeNode(int node, const Params &params);
+    void onEvent(int port, const SemanticEvent &event) override;
+
+private:
+    Params m_params;
+    std::array<ActiveMessages, 2> m_inputs; ///< a and b: their active messages
 };
 
 /** Passes the messages that match; a message's whole lifecycle matches or none of it. */
 class FilterNode : public RuntimeNode
 {
 public:
-    /** Bit sets over Message, Category and Gripper values; 0 means "any". */
-    FilterNode(unsigned messages, unsigned categories, unsigned grippers)
-        : m_messages(messages), m_categories(categories), m_grippers(grippers)
+    /** The messages it passes (empty: any); bit sets over Category and Gripper (0: any). */
+    FilterNode(std::vector<Message> messages, unsigned categories, unsigned grippers)
+        : m_messages(std::move(messages)), m_categories(categories), m_grippers(grippers)
     {}
     void onEvent(int port, const SemanticEvent &event) override;
 
 private:
-    unsigned m_messages;
+    std::vector<Message> m_messages;
     unsigned m_categories;
     unsigned m_grippers;
 };

@@ -56,9 +56,28 @@ const ParamSpec *RouterNodeType::param(const QString &name) const
 
 namespace {
 
-QStringList messageNames()
+QStringList builtinMessageNames()
 {
     return {messageName(Message::Grasp), messageName(Message::Break), messageName(Message::Slip)};
+}
+
+QStringList categoryNames()
+{
+    return {categoryName(Category::Confirmation), categoryName(Category::Exception)};
+}
+
+ParamSpec messageParam(const QString &help)
+{
+    return ParamSpec::choice(QStringLiteral("message"), builtinMessageNames(), QString(), help)
+        .orNewName();
+}
+
+ParamSpec categoryParam()
+{
+    return ParamSpec::choice(QStringLiteral("category"), categoryNames(), QString(),
+                             QStringLiteral("Confirmation or exception; absent: the built-in "
+                                            "message's (a new message needs one)"))
+        .computed();
 }
 
 QStringList gripperNames()
@@ -122,8 +141,10 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {},
              {value},
              {gripperParam(),
-              ParamSpec::choice(QStringLiteral("quantity"), SignalNode::quantityNames(), QString(),
-                                QStringLiteral("The quantity it reads")),
+              ParamSpec::of(QStringLiteral("quantity"), ParamKind::Signal, ParamAbsent::Required,
+                            QStringLiteral("The quantity it reads: a built-in one, or a signal "
+                                           "the frames carry (a scene's, a rig's)"))
+                  .withChoices(SignalNode::quantityNames()),
               ParamSpec::number(QStringLiteral("mu"), 0, QString(),
                                 QStringLiteral("The friction coefficient of the friction "
                                                "quantities; absent: the frames' own"))
@@ -147,33 +168,54 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                   .computed(),
               tauParam()}},
             {QStringLiteral("threshold"),
-             QStringLiteral("A detector on a signal: its message is active while the signal is "
-                            "beyond level, toward full, with intensity growing to full"),
+             QStringLiteral("A detector on a signal: its message begins when the signal meets "
+                            "the condition at the begin level and ends when it no longer "
+                            "meets it at the end level"),
              {signalIn},
              {eventsOut},
-             {gripperParam(),
-              ParamSpec::choice(QStringLiteral("message"), messageNames(), QString(),
-                                QStringLiteral("The message it raises")),
-              ParamSpec::number(QStringLiteral("level"), 0, QString(),
-                                QStringLiteral("The message is active beyond this value"))
-                  .required(),
-              ParamSpec::number(QStringLiteral("full"), 1, QString(),
-                                QStringLiteral("The value at which intensity reaches 1; below "
-                                               "level, the message is active below level"))
-                  .required(),
-              hysteresisSpec(QString(), QStringLiteral("An active message holds until the "
-                                                       "signal is this far back past level")),
-              minDurationSpec()}},
+             {gripperParam(), messageParam(QStringLiteral("The message it raises")),
+              categoryParam(),
+              ParamSpec::choice(QStringLiteral("condition"), ThresholdNode::conditionNames(),
+                                QStringLiteral("above"),
+                                QStringLiteral("When the message is active: the signal above "
+                                               "or below a level, inside or outside a "
+                                               "[low, high] range")),
+              ParamSpec::of(QStringLiteral("begin"), ParamKind::Level, ParamAbsent::Required,
+                            QStringLiteral("The level (above, below) or [low, high] range "
+                                           "(inside, outside) at which the message begins"))
+                  .startingWith(0),
+              ParamSpec::of(QStringLiteral("end"), ParamKind::Level, ParamAbsent::Computed,
+                            QStringLiteral("The level or range at which an active message "
+                                           "ends; absent: begin (no hysteresis)")),
+              minDurationSpec(),
+              ParamSpec::of(QStringLiteral("intensity"), ParamKind::Level, ParamAbsent::Default,
+                            QStringLiteral("[x0, x1]: intensity grows from 0 at x0 to 1 at x1, "
+                                           "clipped; absent: 1"))}},
+            {QStringLiteral("compose"),
+             QStringLiteral("A message made of two: while both inputs have an active message "
+                            "(all), either has (any), or a has while b has (while)"),
+             {{QStringLiteral("a"), PortType::Event, true},
+              {QStringLiteral("b"), PortType::Event, true}},
+             {eventsOut},
+             {messageParam(QStringLiteral("The message it raises")), categoryParam(),
+              ParamSpec::choice(QStringLiteral("mode"), ComposeNode::modeNames(),
+                                QStringLiteral("all"),
+                                QStringLiteral("all: both active, the lower intensity; any: "
+                                               "either, the higher; while: a's, while b is "
+                                               "active")),
+              ParamSpec::choice(QStringLiteral("gripper"), gripperNames(), QString(),
+                                QStringLiteral("The gripper its events name; absent: that of "
+                                               "the input message that makes it active"))
+                  .computed()}},
             {QStringLiteral("filter"),
              QStringLiteral("Passes the messages that match by message, category and gripper"),
              {in},
              {out},
-             {ParamSpec::anyOf(QStringLiteral("message"), messageNames(),
-                               QStringLiteral("The messages it passes")),
-              ParamSpec::anyOf(
-                  QStringLiteral("category"),
-                  {categoryName(Category::Confirmation), categoryName(Category::Exception)},
-                  QStringLiteral("The categories it passes")),
+             {ParamSpec::anyOf(QStringLiteral("message"), builtinMessageNames(),
+                               QStringLiteral("The messages it passes"))
+                  .orNewName(),
+              ParamSpec::anyOf(QStringLiteral("category"), categoryNames(),
+                               QStringLiteral("The categories it passes")),
               ParamSpec::anyOf(QStringLiteral("gripper"), gripperNames(),
                                QStringLiteral("The grippers whose messages it passes"))}},
             {QStringLiteral("gate"),

@@ -19,9 +19,7 @@ bool fromName(const QLatin1String (&names)[Count], const QString &name, Enum *va
 }
 
 const QLatin1String detectorKindNames[] = {QLatin1String("force"), QLatin1String("slip"),
-                                           QLatin1String("threshold")};
-const QLatin1String messageNames[] = {QLatin1String("grasp"), QLatin1String("break"),
-                                      QLatin1String("slip")};
+                                           QLatin1String("threshold"), QLatin1String("compose")};
 const QLatin1String categoryNames[] = {QLatin1String("confirmation"), QLatin1String("exception")};
 const QLatin1String eventPhaseNames[] = {QLatin1String("begin"), QLatin1String("update"),
                                          QLatin1String("end")};
@@ -33,9 +31,16 @@ QString detectorKindName(DetectorKind kind)
     return detectorKindNames[size_t(kind)];
 }
 
+NameTable &messageNames()
+{
+    static NameTable table(
+        {QStringLiteral("grasp"), QStringLiteral("break"), QStringLiteral("slip")});
+    return table;
+}
+
 QString messageName(Message message)
 {
-    return messageNames[size_t(message)];
+    return messageNames().name(int(message));
 }
 
 QString categoryName(Category category)
@@ -55,7 +60,18 @@ bool detectorKindFromName(const QString &name, DetectorKind *kind)
 
 bool messageFromName(const QString &name, Message *message)
 {
-    return fromName(messageNames, name, message);
+    if (!isPlainName(name))
+        return false;
+    const int id = messageNames().intern(name);
+    if (id < 0)
+        return false;
+    *message = Message(id);
+    return true;
+}
+
+bool isBuiltinMessage(Message message)
+{
+    return int(message) >= int(Message::Grasp) && int(message) <= int(Message::Slip);
 }
 
 bool categoryFromName(const QString &name, Category *category)

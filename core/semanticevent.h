@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contactframe.h"
+#include "nametable.h"
 
 #include <QString>
 
@@ -12,10 +13,15 @@ enum class DetectorKind
 {
     Force,
     Slip,
-    Threshold
+    Threshold,
+    Compose
 };
-/** A semantic message. grasp is a confirmation; break and slip are exceptions. */
-enum class Message
+/**
+ * A semantic message: its id in messageNames(). grasp (a confirmation), break and slip
+ * (exceptions) are built in; a router's threshold and compose nodes may name new ones, whose
+ * ids follow (a new message's category is its node's).
+ */
+enum class Message : int
 {
     Grasp,
     Break,
@@ -38,10 +44,18 @@ QString messageName(Message message);
 QString categoryName(Category category);
 QString eventPhaseName(EventPhase phase);
 bool detectorKindFromName(const QString &name, DetectorKind *kind);
+/**
+ * A built-in message, or a new one of the form `[a-z0-9_.]+` (interned); false for any other
+ * name, or when messageNames() is full.
+ */
 bool messageFromName(const QString &name, Message *message);
+/** Whether `message` is grasp, break or slip. */
+bool isBuiltinMessage(Message message);
+/** The table of message names: grasp, break and slip at 0..2, then the new ones. */
+NameTable &messageNames();
 bool categoryFromName(const QString &name, Category *category);
 bool eventPhaseFromName(const QString &name, EventPhase *phase);
-/** The category a message belongs to. */
+/** The category of a built-in message; a new message's is its node's. */
 Category categoryOf(Message message);
 
 /**

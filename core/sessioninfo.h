@@ -21,7 +21,7 @@ struct SessionInfo
 {
     static constexpr const char *Format = "semhap.session/1";
     /** The schema this semhap writes; 2 added the scene states. */
-    static constexpr int SchemaVersion = 3;
+    static constexpr int SchemaVersion = 4;
     /** The oldest schema this semhap reads; a session outside the two is refused. */
     static constexpr int OldestSchemaVersion = 1;
 

@@ -331,7 +331,8 @@ bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error,
     // on per gripper.
     m_frames.restartClock();
     m_frames.setMaxGap(std::numeric_limits<double>::infinity());
-    const bool hasMu = m_schemaVersion >= 3; // friction coefficients came with schema 3
+    const bool hasMu = m_schemaVersion >= 3;      // friction coefficients came with schema 3
+    const bool hasSignals = m_schemaVersion >= 4; // and signals with 4
     const auto fingertip = [&query, hasMu](int column, int muColumn) {
         QJsonObject tip{{QStringLiteral("f"), jsonOf(query.value(column))},
                         {QStringLiteral("n"), jsonOf(query.value(column + 1))},
@@ -347,10 +348,18 @@ bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error,
     };
     ContactFrame frame;
     while (query.next()) {
-        const QJsonObject line{{QStringLiteral("t"), jsonOf(query.value(1))},
-                               {QStringLiteral("gripper"), jsonOf(query.value(2))},
-                               {QStringLiteral("left"), fingertip(3, 16)},
-                               {QStringLiteral("right"), fingertip(9, 17)}};
+        QJsonObject line{{QStringLiteral("t"), jsonOf(query.value(1))},
+                         {QStringLiteral("gripper"), jsonOf(query.value(2))},
+                         {QStringLiteral("left"), fingertip(3, 16)},
+                         {QStringLiteral("right"), fingertip(9, 17)}};
+        if (hasSignals && !query.value(18).isNull()) {
+            // Stored as the stream's JSON object; anything else is rejected by the parser.
+            const QJsonDocument document =
+                QJsonDocument::fromJson(query.value(18).toString().toUtf8());
+            line.insert(QStringLiteral("signals"), document.isObject()
+                                                       ? QJsonValue(document.object())
+                                                       : jsonOf(query.value(18)));
+        }
         if (!m_frames.parse(line, &frame, &reason)) {
             rejectRow("contact_frames", query.value(0), reason);
             continue;

@@ -35,7 +35,7 @@ QStringList SessionSchema::createStatements()
         QStringLiteral("CREATE TABLE contact_frames (t REAL NOT NULL, gripper TEXT NOT NULL, ") +
             fingertip.arg(QLatin1String("left")) + QStringLiteral(", ") +
             fingertip.arg(QLatin1String("right")) +
-            QStringLiteral(", arrival REAL, left_mu REAL, right_mu REAL)"),
+            QStringLiteral(", arrival REAL, left_mu REAL, right_mu REAL, signals TEXT)"),
         QStringLiteral("CREATE TABLE events (t REAL NOT NULL, gripper TEXT NOT NULL, "
                        "node TEXT NOT NULL, detector TEXT NOT NULL, message TEXT NOT NULL, "
                        "category TEXT NOT NULL, phase TEXT NOT NULL, intensity REAL NOT NULL)"),

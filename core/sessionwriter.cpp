@@ -2,6 +2,7 @@
 #include "sessionwriter.h"
 
 #include "actortable.h"
+#include "nametable.h"
 #include "router.h"
 #include "sessionschema.h"
 
@@ -299,7 +300,7 @@ private:
         m_inputInsert = QSqlQuery(db);
         m_sceneInsert = QSqlQuery(db);
         const std::array<std::pair<QSqlQuery *, int>, 5> inserts{{
-            {&m_frameInsert, 17},
+            {&m_frameInsert, 18},
             {&m_eventInsert, 8},
             {&m_deviceInsert, 2 + MaxChannels},
             {&m_inputInsert, 10},
@@ -377,7 +378,19 @@ private:
         m_frameInsert.addBindValue(optional(arrival));
         for (const Fingertip *tip : {&frame.left, &frame.right})
             m_frameInsert.addBindValue(tip->mu > 0.0 ? QVariant(tip->mu) : QVariant());
+        m_frameInsert.addBindValue(signalsText(frame.signalValues));
         check(m_frameInsert.exec(), m_frameInsert);
+    }
+
+    /** The frame's signals as the stream writes them (a JSON object), NULL for none. */
+    static QVariant signalsText(const FrameSignals &signalValues)
+    {
+        if (signalValues.isEmpty())
+            return QVariant();
+        QJsonObject object;
+        for (const SignalValue &signal : signalValues)
+            object.insert(signalNames().name(signal.id), signal.value);
+        return QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact));
     }
 
     void insert(const SemanticEvent &event, double)

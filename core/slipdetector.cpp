@@ -68,8 +68,10 @@ bool SlipDetector::Params::validate(QString *key, QString *reason) const
 SlipDetector::SlipDetector(int node, Gripper gripper, const Params &params)
     : Detector(node, gripper), m_params(params)
 {
-    m_grasp.configure(gripper, node, DetectorKind::Slip, Message::Grasp, params.minDuration);
-    m_slip.configure(gripper, node, DetectorKind::Slip, Message::Slip, params.minDuration);
+    m_grasp.configure(gripper, node, DetectorKind::Slip, Message::Grasp, Category::Confirmation,
+                      params.minDuration);
+    m_slip.configure(gripper, node, DetectorKind::Slip, Message::Slip, Category::Exception,
+                     params.minDuration);
 }
 
 void SlipDetector::update(const ContactFrame &frame, EventBuffer &out)

@@ -19,9 +19,17 @@ QString expected(const ParamSpec &spec)
     case ParamKind::Number:
         return QStringLiteral("a finite number");
     case ParamKind::Choice:
-        return spec.choiceList();
+        return spec.openChoices ? spec.choiceList() + QStringLiteral(" or a new name of "
+                                                                     "[a-z0-9_.]")
+                                : spec.choiceList();
     case ParamKind::Choices:
-        return spec.choiceList() + QStringLiteral(", or a list of them");
+        return spec.choiceList() + (spec.openChoices
+                                        ? QStringLiteral(" or a new name of [a-z0-9_.], or a list")
+                                        : QStringLiteral(", or a list of them"));
+    case ParamKind::Signal:
+        return spec.choiceList() + QStringLiteral(" or a signal's name of [a-z0-9_.]");
+    case ParamKind::Level:
+        return QStringLiteral("a finite number or a [low, high] range");
     case ParamKind::Points:
         return QStringLiteral("a list of [x, y] points with x increasing");
     case ParamKind::Channels:
@@ -168,6 +176,20 @@ ParamSpec ParamSpec::startingWith(const QJsonValue &value) const
     return spec;
 }
 
+ParamSpec ParamSpec::withChoices(const QStringList &list) const
+{
+    ParamSpec spec = *this;
+    spec.choices = list;
+    return spec;
+}
+
+ParamSpec ParamSpec::orNewName() const
+{
+    ParamSpec spec = *this;
+    spec.openChoices = true;
+    return spec;
+}
+
 bool ParamSpec::checkNumber(double value, QString *reason) const
 {
     const QString got = QStringLiteral(", got ") + formatNumber(value);
@@ -203,13 +225,23 @@ bool ParamSpec::check(const QJsonValue &value, QString *reason) const
         }
         return checkNumber(value.toDouble(), reason);
     case ParamKind::Choice:
-        ok = value.isString() && choices.contains(value.toString());
+    case ParamKind::Signal:
+        ok = value.isString() && isChoice(value.toString());
         break;
     case ParamKind::Choices: {
         const QJsonArray list = value.isArray() ? value.toArray() : QJsonArray{value};
         ok = !list.isEmpty();
         for (const QJsonValue &item : list)
-            ok = ok && item.isString() && choices.contains(item.toString());
+            ok = ok && item.isString() && isChoice(item.toString());
+        break;
+    }
+    case ParamKind::Level: {
+        const QJsonArray range = value.toArray();
+        const auto finite = [](const QJsonValue &v) {
+            return v.isDouble() && std::isfinite(v.toDouble());
+        };
+        ok = finite(value) ||
+             (value.isArray() && range.size() == 2 && finite(range[0]) && finite(range[1]));
         break;
     }
     case ParamKind::Points:
@@ -234,6 +266,12 @@ bool ParamSpec::check(const QJsonValue &value, QString *reason) const
     if (!ok)
         *reason = QStringLiteral("must be ") + expected(*this);
     return ok;
+}
+
+bool ParamSpec::isChoice(const QString &value) const
+{
+    return choices.contains(value) ||
+           ((openChoices || kind == ParamKind::Signal) && isPlainName(value));
 }
 
 QString ParamSpec::missingReason() const
@@ -261,6 +299,18 @@ QString ParamSpec::choiceList() const
         return quotedChoices.join(QString());
     const QString last = quotedChoices.takeLast();
     return quotedChoices.join(QStringLiteral(", ")) + QStringLiteral(" or ") + last;
+}
+
+bool isPlainName(const QString &name)
+{
+    if (name.isEmpty() || name.size() > MaxPlainNameLength)
+        return false;
+    for (const QChar c : name) {
+        const char16_t u = c.unicode();
+        if (!((u >= 'a' && u <= 'z') || (u >= '0' && u <= '9') || u == '_' || u == '.'))
+            return false;
+    }
+    return true;
 }
 
 const ParamSpec *findParamSpec(const std::vector<ParamSpec> &specs, const QString &name)

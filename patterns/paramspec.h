@@ -23,7 +23,9 @@ enum class ParamKind
     ParamName, ///< the name of one of the pattern's parameters
     Start,     ///< where a ramp starts: "current", "peak" or a number
     Waveform,  ///< one waveform, the input of a modifier
-    Waveforms  ///< a non-empty list of waveforms, the inputs of a combinator
+    Waveforms, ///< a non-empty list of waveforms, the inputs of a combinator
+    Signal,    ///< a built-in quantity (the choices) or the name of a frame's signal
+    Level      ///< a number, or a [low, high] range of two numbers
 };
 
 /** What leaving a parameter out means. */
@@ -50,9 +52,11 @@ struct ParamSpec
     double minimum = -std::numeric_limits<double>::infinity();
     double maximum = std::numeric_limits<double>::infinity();
     bool minimumExclusive = false; ///< the minimum itself is refused ("must be positive")
-    QStringList choices;           ///< Choice and Choices
-    QString unit;                  ///< a number's unit ("N", "s", "Hz"), empty when none
-    QString help;                  ///< one sentence, for tooltips and the reference
+    QStringList choices;           ///< Choice, Choices and Signal
+    /** Choice and Choices: a plain name (isPlainName) beyond the choices is taken too. */
+    bool openChoices = false;
+    QString unit;       ///< a number's unit ("N", "s", "Hz"), empty when none
+    QString help;       ///< one sentence, for tooltips and the reference
     QJsonValue example; ///< what an editor fills a new required parameter with; else undefined
 
     /** A number that defaults to `value`. */
@@ -73,6 +77,8 @@ struct ParamSpec
     ParamSpec required() const;                            ///< must be given
     ParamSpec computed() const;                            ///< absent: worked out elsewhere
     ParamSpec startingWith(const QJsonValue &value) const; ///< sets example
+    ParamSpec orNewName() const;                           ///< sets openChoices
+    ParamSpec withChoices(const QStringList &list) const;  ///< sets choices
 
     /**
      * Checks a value given in a document, with the loaders' wording (`must not be negative,
@@ -86,6 +92,8 @@ struct ParamSpec
     QString missingReason() const;
     /** The value used when absent: a number, a choice, or undefined. */
     QJsonValue defaultValue() const;
+    /** Whether `value` is one of the choices, or a plain name where those are taken. */
+    bool isChoice(const QString &value) const;
     /** The choices as a sentence fragment: `"a", "b" or "c"`. */
     QString choiceList() const;
 };
@@ -94,6 +102,14 @@ struct ParamSpec
 const ParamSpec *findParamSpec(const std::vector<ParamSpec> &specs, const QString &name);
 /** The names of `specs`, in order. */
 QStringList paramSpecNames(const std::vector<ParamSpec> &specs);
+
+/**
+ * Whether `name` has the form of a new message's or a frame signal's name: `[a-z0-9_.]+`,
+ * at most MaxPlainNameLength characters.
+ */
+bool isPlainName(const QString &name);
+/** The longest message or signal name. */
+constexpr int MaxPlainNameLength = 64;
 
 /** `value` in its shortest round-trip form, for messages that quote a number. */
 QString formatNumber(double value);

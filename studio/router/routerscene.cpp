@@ -406,7 +406,7 @@ void RouterScene::showActivity(const QString &node, const NodeActivity &activity
     const NodeActivity was = m_active.value(node);
     m_active.insert(node, activity);
     refreshState(node);
-    if (!flash || !activity.isActive() || (was.isActive() && was.messages == activity.messages))
+    if (!flash || !activity.isActive() || (was.isActive() && was.sameMessages(activity)))
         return; // nothing new began passing: the wires keep their glow
     const QColor color =
         colors::category(activity.exception ? Category::Exception : Category::Confirmation);
@@ -441,10 +441,8 @@ void RouterScene::refreshState(const QString &id)
         return;
     }
     QStringList messages;
-    for (Message message : {Message::Grasp, Message::Break, Message::Slip}) {
-        if (activity.messages & (1u << unsigned(message)))
-            messages.append(messageName(message));
-    }
+    for (int i = 0; i < activity.messageCount; ++i)
+        messages.append(messageName(Message(activity.messages[size_t(i)])));
     item->setState(tr("%1 %2").arg(messages.join(QLatin1Char('+')),
                                    QLocale().toString(activity.level, 'f', 2)),
                    activity.level);

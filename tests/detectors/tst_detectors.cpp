@@ -139,7 +139,14 @@ void TestDetectors::names()
     Message message = Message::Grasp;
     QVERIFY(messageFromName(QStringLiteral("slip"), &message));
     QCOMPARE(message, Message::Slip);
-    QVERIFY(!messageFromName(QStringLiteral("grip"), &message));
+    QVERIFY(!messageFromName(QStringLiteral("Grip!"), &message));
+    // A new name of [a-z0-9_.] is a new message, the same id each time.
+    Message aligned = Message::Grasp;
+    QVERIFY(messageFromName(QStringLiteral("plug.aligned"), &aligned));
+    QVERIFY(!isBuiltinMessage(aligned));
+    QCOMPARE(messageName(aligned), QStringLiteral("plug.aligned"));
+    QVERIFY(messageFromName(QStringLiteral("plug.aligned"), &message));
+    QCOMPARE(message, aligned);
     EventPhase phase = EventPhase::Begin;
     QVERIFY(eventPhaseFromName(QStringLiteral("end"), &phase));
     QCOMPARE(phase, EventPhase::End);
@@ -171,7 +178,8 @@ void TestDetectors::actorTable()
 void TestDetectors::tracker()
 {
     MessageTracker tracker;
-    tracker.configure(Gripper::Left, Node, DetectorKind::Slip, Message::Slip, 0.5);
+    tracker.configure(Gripper::Left, Node, DetectorKind::Slip, Message::Slip, Category::Exception,
+                      0.5);
     EventBuffer out;
     tracker.update(0.0, true, 0.25, out);
     QVERIFY(tracker.isPending());

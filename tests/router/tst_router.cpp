@@ -114,6 +114,10 @@ private slots:
     void invalidPredictive_data();
     void invalidPredictive();
     void defaultHorizon();
+    void namedSignalsDriveDetectors();
+    void signalsTheSourceLacksAreRefused();
+    void aMessageHasOneCategory();
+    void oldThresholdsReadAsNew();
     void predictiveWarningComesEarlier();
 };
 
@@ -219,8 +223,8 @@ void TestRouter::invalid_data()
     QTest::newRow("unknown type")
         << edited("nodes/1", object(R"({"id": "warn", "type": "fliter"})"))
         << "r.json: /nodes/1/type: node 'warn': unknown node type 'fliter' (known: force, slip, "
-           "signal, derivative, predict, threshold, filter, gate, debounce, curve, pattern, "
-           "proportional, device)";
+           "signal, derivative, predict, threshold, compose, filter, gate, debounce, curve, "
+           "pattern, proportional, device)";
     QTest::newRow("detector without gripper")
         << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
         << "r.json: /nodes/0: node 'right.force' (force): needs \"gripper\": \"left\" or "
@@ -313,7 +317,7 @@ void TestRouter::invalid_data()
              {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "G"}}]})")
         << "r.json: /nodes/0/params/quantity: node 'F' (signal): must be \"F\", \"N\", "
            "\"left.f\", \"right.f\", \"left.n\", \"right.n\", \"friction\", "
-           "\"left.friction\" or \"right.friction\"";
+           "\"left.friction\" or \"right.friction\" or a signal's name of [a-z0-9_.]";
     QTest::newRow("curve points")
         << object(R"({"format": "semhap.router/1", "nodes": [
              {"id": "c", "type": "curve", "params": {"points": [[0, 0], [0, 1]]}}]})")
@@ -639,7 +643,8 @@ void TestRouter::activityShowsWhatRouted()
     QCOMPARE(level("gate"), 0.5);
     QCOMPARE(level("buzz"), 0.5);
     const NodeActivity &buzz = router.activity()[size_t(router.nodeIds().indexOf("buzz"))];
-    QCOMPARE(buzz.messages, 1u << unsigned(Message::Break));
+    QCOMPARE(buzz.messageCount, 1);
+    QCOMPARE(buzz.messages[0], int(Message::Break));
     QCOMPARE(buzz.t, 0.02);
     // Every change was handed to the sink, each node once per change.
     QVERIFY(!sink.changes.empty());
@@ -687,7 +692,8 @@ QJsonObject predictiveRouter()
         {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "F"}},
         {"id": "F.predicted", "type": "predict", "params": {}},
         {"id": "break", "type": "threshold",
-         "params": {"gripper": "right", "message": "break", "level": 80, "full": 120}},
+         "params": {"gripper": "right", "message": "break", "begin": 80,
+                    "intensity": [80, 120]}},
         {"id": "geiger", "type": "pattern", "params": {"pattern": "vib.geiger"}},
         {"id": "right.vibro", "type": "device", "params": {"model": "lra4"}}
       ],
@@ -738,25 +744,205 @@ double firstBreakWarning(std::unique_ptr<Router> router)
 
 } // namespace
 
+namespace {
+
+/**
+ * A task's router built only from generic nodes: "aligned" while the plug's angle error is
+ * inside ±0.05 rad, and "aligned.grasp" while aligned and the right hand grasps.
+ */
+QJsonObject alignmentRouter()
+{
+    return object(R"({"format": "semhap.router/1", "nodes": [
+        {"id": "right.force", "type": "force", "params": {"gripper": "right"}},
+        {"id": "angle", "type": "signal",
+         "params": {"gripper": "right", "quantity": "plug.angle_error"}},
+        {"id": "aligned", "type": "threshold",
+         "params": {"gripper": "right", "message": "aligned", "category": "confirmation",
+                    "condition": "inside", "begin": [-0.05, 0.05], "end": [-0.06, 0.06]}},
+        {"id": "ready", "type": "compose",
+         "params": {"message": "aligned.grasp", "category": "confirmation", "mode": "while"}},
+        {"id": "squeeze", "type": "pattern", "params": {"pattern": "air.squeeze"}},
+        {"id": "right.air", "type": "device", "params": {"model": "pneumatic6"}}
+      ],
+      "links": [
+        {"from": "angle", "to": "aligned"}, {"from": "aligned", "to": "ready:a"},
+        {"from": "right.force", "to": "ready:b"}, {"from": "ready", "to": "squeeze"},
+        {"from": "squeeze", "to": "right.air"}
+      ]})");
+}
+
+} // namespace
+
+void TestRouter::namedSignalsDriveDetectors()
+{
+    LoadError error;
+    RouterGraph graph;
+    QVERIFY(RouterGraph::fromJson(alignmentRouter(), "r.json", &graph, &error));
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    const int angle = signalNames().intern("plug.angle_error");
+    router->start(0.0);
+    QStringList seen;
+    EventBuffer events;
+    // The angle closes in while a grasp (20 N) holds from 0.1 s on; a frame without the
+    // signal (0.3 s) leaves the threshold as it was.
+    const QList<double> angles{0.2, 0.1, 0.04, std::nan(""), 0.055, 0.07, 0.0};
+    for (int k = 0; k < angles.size(); ++k) {
+        ContactFrame frame;
+        frame.t = k * 0.1;
+        frame.left.f = frame.right.f = k >= 1 ? 15.0 : 0.0;
+        frame.left.n = frame.right.n = 16;
+        if (!std::isnan(angles[k]))
+            frame.signalValues.set(angle, angles[k]);
+        events.clear();
+        router->process(frame, events);
+        for (const SemanticEvent &e : events) {
+            seen.append(QStringLiteral("%1 %2 %3 %4")
+                            .arg(e.t)
+                            .arg(router->nodeIds().at(e.node), messageName(e.message),
+                                 eventPhaseName(e.phase)));
+        }
+    }
+    QCOMPARE(seen, (QStringList{"0.1 right.force grasp begin", "0.2 aligned aligned begin",
+                                "0.2 ready aligned.grasp begin", "0.5 aligned aligned end",
+                                "0.5 ready aligned.grasp end", "0.6 aligned aligned begin",
+                                "0.6 ready aligned.grasp begin"}));
+    // The composed message is a confirmation: it plays the squeeze that confirms grasps.
+    QCOMPARE(router->activity()[4].isActive(), true);
+}
+
+void TestRouter::signalsTheSourceLacksAreRefused()
+{
+    LoadError error;
+    RouterGraph graph;
+    QVERIFY(RouterGraph::fromJson(alignmentRouter(), "r.json", &graph, &error));
+    RouterContext context;
+    context.knowsSignals = true;
+    context.signalNames[size_t(Gripper::Right)] = QStringList{"plug.depth", "plug.lateral"};
+    QVERIFY(!Router::compile(graph, &error, context));
+    QCOMPARE(error.toString(),
+             QStringLiteral("r.json: /nodes/1/params/quantity: node 'angle' (signal): the right "
+                            "gripper's frames carry no signal 'plug.angle_error' (they carry: "
+                            "plug.depth, plug.lateral)"));
+    context.signalNames[size_t(Gripper::Right)].append("plug.angle_error");
+    QVERIFY2(Router::compile(graph, &error, context), qPrintable(error.toString()));
+}
+
+void TestRouter::aMessageHasOneCategory()
+{
+    QJsonObject json = alignmentRouter();
+    json = withParam(json, 3, "message", "aligned");
+    LoadError error;
+    RouterGraph graph;
+    QVERIFY(RouterGraph::fromJson(json, "r.json", &graph, &error));
+    QVERIFY(Router::compile(graph, &error)); // both confirmations: one meaning
+    json = withParam(json, 3, "category", "exception");
+    QVERIFY(RouterGraph::fromJson(json, "r.json", &graph, &error));
+    QVERIFY(!Router::compile(graph, &error));
+    QCOMPARE(error.toString(),
+             QStringLiteral("r.json: /nodes/3/params/category: node 'ready' (compose): 'aligned' "
+                            "has the category confirmation in node 'aligned': a message has "
+                            "one"));
+}
+
+void TestRouter::oldThresholdsReadAsNew()
+{
+    // semhap 1.0's level/full/hysteresis: the same warning, read as condition, begin, end
+    // and intensity, with a located warning.
+    const QJsonObject old =
+        withParam(withParam(withParam(withParam(withParam(predictiveRouter(), 2, "begin",
+                                                          QJsonValue(QJsonValue::Undefined)),
+                                                2, "intensity", QJsonValue(QJsonValue::Undefined)),
+                                      2, "level", 80),
+                            2, "full", 120),
+                  2, "hysteresis", 3);
+    LoadError error;
+    RouterGraph graph;
+    QVERIFY(RouterGraph::fromJson(old, "r.json", &graph, &error));
+    QCOMPARE(graph.warnings.size(), size_t(1));
+    QCOMPARE(graph.warnings.front().toString(),
+             QStringLiteral("r.json: /nodes/2/params: deprecated: threshold parameters "
+                            "\"level\", \"full\" and \"hysteresis\" are now \"condition\", "
+                            "\"begin\", \"end\" and \"intensity\" (read as those)"));
+    const QJsonObject params = graph.nodes[2].params;
+    QCOMPARE(params.value("condition").toString(), QStringLiteral("above"));
+    QCOMPARE(params.value("begin").toDouble(), 80.0);
+    QCOMPARE(params.value("end").toDouble(), 77.0);
+    QCOMPARE(params.value("intensity").toArray(), (QJsonArray{80, 120}));
+    QVERIFY(!params.contains("level") && !params.contains("hysteresis"));
+    QVERIFY2(Router::compile(graph, &error), qPrintable(error.toString()));
+    // C3p and C4p as shipped use the new form.
+    for (const char *preset : {"C3p", "C4p"}) {
+        QVERIFY(RouterPresets::preset(preset, &graph, &error));
+        QVERIFY2(graph.warnings.empty(), preset);
+    }
+}
+
 void TestRouter::invalidPredictive_data()
 {
     QTest::addColumn<QJsonObject>("json");
     QTest::addColumn<QString>("error");
-    QTest::newRow("threshold without level")
-        << withParam(predictiveRouter(), 2, "level", QJsonValue(QJsonValue::Undefined))
-        << "r.json: /nodes/2: node 'break' (threshold): needs \"level\": a finite number";
-    QTest::newRow("full equal to level")
-        << withParam(predictiveRouter(), 2, "full", 80)
-        << "r.json: /nodes/2/params/full: node 'break' (threshold): must differ from level "
-           "(above it: active while the input is above level; below it: while below)";
-    QTest::newRow("unknown message")
+    QTest::newRow("threshold without begin")
+        << withParam(predictiveRouter(), 2, "begin", QJsonValue(QJsonValue::Undefined))
+        << "r.json: /nodes/2: node 'break' (threshold): needs \"begin\": a finite number or a "
+           "[low, high] range";
+    QTest::newRow("a range where a level goes")
+        << withParam(predictiveRouter(), 2, "begin", QJsonArray{70, 90})
+        << "r.json: /nodes/2/params/begin: node 'break' (threshold): must be a number for the "
+           "condition 'above'";
+    QTest::newRow("a level where a range goes")
+        << withParam(withParam(predictiveRouter(), 2, "condition", "inside"), 2, "begin", 80)
+        << "r.json: /nodes/2/params/begin: node 'break' (threshold): must be a [low, high] "
+           "range for the condition 'inside'";
+    QTest::newRow("empty range")
+        << withParam(withParam(predictiveRouter(), 2, "condition", "outside"), 2, "begin",
+                     QJsonArray{90, 90})
+        << "r.json: /nodes/2/params/begin: node 'break' (threshold): empty range: low 90 is not "
+           "below high 90";
+    QTest::newRow("end above begin: crossed")
+        << withParam(predictiveRouter(), 2, "end", 81)
+        << "r.json: /nodes/2/params/end: node 'break' (threshold): begin/end levels crossed "
+           "(above: end must not be above begin)";
+    QTest::newRow("below: end below begin")
+        << withParam(withParam(predictiveRouter(), 2, "condition", "below"), 2, "end", 79)
+        << "r.json: /nodes/2/params/end: node 'break' (threshold): begin/end levels crossed "
+           "(below: end must not be below begin)";
+    QTest::newRow("inside: an end range narrower than begin's")
+        << withParam(withParam(withParam(predictiveRouter(), 2, "condition", "inside"), 2, "begin",
+                               QJsonArray{0, 1}),
+                     2, "end", QJsonArray{0.2, 2})
+        << "r.json: /nodes/2/params/end: node 'break' (threshold): begin/end levels crossed "
+           "(inside: the end range must contain the begin range)";
+    QTest::newRow("outside: an end range wider than begin's")
+        << withParam(withParam(withParam(predictiveRouter(), 2, "condition", "outside"), 2,
+                               "begin", QJsonArray{0, 1}),
+                     2, "end", QJsonArray{-0.5, 1})
+        << "r.json: /nodes/2/params/end: node 'break' (threshold): begin/end levels crossed "
+           "(outside: the end range must lie within the begin range)";
+    QTest::newRow("unknown condition")
+        << withParam(predictiveRouter(), 2, "condition", "over")
+        << "r.json: /nodes/2/params/condition: node 'break' (threshold): must be \"above\", "
+           "\"below\", \"inside\" or \"outside\"";
+    QTest::newRow("a new message needs a category")
         << withParam(predictiveRouter(), 2, "message", "crack")
+        << "r.json: /nodes/2: node 'break' (threshold): needs \"category\" for the new message "
+           "'crack': \"confirmation\" or \"exception\"";
+    QTest::newRow("not a message name")
+        << withParam(predictiveRouter(), 2, "message", "Crack!")
         << "r.json: /nodes/2/params/message: node 'break' (threshold): must be \"grasp\", "
-           "\"break\" or \"slip\"";
-    QTest::newRow("negative hysteresis")
-        << withParam(predictiveRouter(), 2, "hysteresis", -1)
-        << "r.json: /nodes/2/params/hysteresis: node 'break' (threshold): must not be negative, "
-           "got -1";
+           "\"break\" or \"slip\" or a new name of [a-z0-9_.]";
+    QTest::newRow("a built-in message keeps its category")
+        << withParam(predictiveRouter(), 2, "category", "confirmation")
+        << "r.json: /nodes/2/params/category: node 'break' (threshold): 'break' has the category "
+           "exception";
+    QTest::newRow("intensity from a point")
+        << withParam(predictiveRouter(), 2, "intensity", QJsonArray{80, 80})
+        << "r.json: /nodes/2/params/intensity: node 'break' (threshold): must be [x0, x1] with "
+           "x0 and x1 apart: the input at intensity 0 and at 1";
+    QTest::newRow("negative minDuration")
+        << withParam(predictiveRouter(), 2, "minDuration", -1)
+        << "r.json: /nodes/2/params/minDuration: node 'break' (threshold): must not be "
+           "negative, got -1";
     QTest::newRow("negative horizon")
         << withParam(predictiveRouter(), 1, "horizon", -0.1)
         << "r.json: /nodes/1/params/horizon: node 'F.predicted' (predict): must not be negative, "
@@ -792,7 +978,9 @@ void TestRouter::defaultHorizon()
     const double lra4 = 0.012 / std::log(9.0);
     QVERIFY(std::abs(DeviceModelLibrary::load("lra4", &error)->responseDelay() - lra4) < 1e-12);
     for (double reaction : {0.25, 0.4}) {
-        std::unique_ptr<Router> router = Router::compile(graph, &error, RouterContext{reaction});
+        RouterContext context;
+        context.reactionTime = reaction;
+        std::unique_ptr<Router> router = Router::compile(graph, &error, context);
         QVERIFY(router);
         const double begin = firstBreakWarning(std::move(router));
         // The ramp is predicted to cross 80 N a horizon ahead of the 0.8 s it does (the slope

@@ -537,11 +537,11 @@ void TestRouterEditor::inspectorShowsTheNodeTypeTable()
     f.editor.setGraph(preset("C3p"));
     f.select("right.break");
     const RouterNodeType &threshold = *routerNodeType("threshold");
-    auto *hysteresis = f.editor.inspector()->findChild<QLineEdit *>("param:hysteresis");
-    QVERIFY(hysteresis);
-    QCOMPARE(hysteresis->toolTip(), threshold.param("hysteresis")->help);
-    QVERIFY2(hysteresis->placeholderText().contains("0"),
-             qPrintable(hysteresis->placeholderText()));
+    auto *minDuration = f.editor.inspector()->findChild<QLineEdit *>("param:minDuration");
+    QVERIFY(minDuration);
+    QCOMPARE(minDuration->toolTip(), threshold.param("minDuration")->help);
+    QVERIFY2(minDuration->placeholderText().contains("0"),
+             qPrintable(minDuration->placeholderText()));
     auto *message = f.editor.inspector()->findChild<QComboBox *>("param:message");
     QVERIFY(message);
     for (const QString &choice : threshold.param("message")->choices)

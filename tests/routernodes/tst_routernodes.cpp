@@ -42,8 +42,10 @@ struct FrictionMargin
     {
         ThresholdNode::Params p;
         p.message = Message::Slip;
-        p.level = 0.8;
-        p.full = 1.0;
+        p.begin = p.end = 0.8;
+        p.mapsIntensity = true;
+        p.intensityFrom = 0.8;
+        p.intensityTo = 1.0;
         return p;
     }
     FrictionMargin()
@@ -78,7 +80,8 @@ SemanticEvent makeEvent(double t, int node, const QString &message, const QStrin
     e.node = node;
     e.gripper = gripper;
     messageFromName(message, &e.message);
-    e.category = categoryOf(e.message);
+    // A new message is a confirmation here, as "aligned" would be.
+    e.category = isBuiltinMessage(e.message) ? categoryOf(e.message) : Category::Confirmation;
     eventPhaseFromName(phase, &e.phase);
     e.intensity = intensity;
     return e;
@@ -127,6 +130,8 @@ private slots:
     void threshold_data();
     void threshold();
     void thresholdIntensitySteps();
+    void compose_data();
+    void compose();
     void thresholdEndsOnEndAll();
     void frictionUse_data();
     void frictionUse();
@@ -141,16 +146,22 @@ void TestRouterNodes::filter_data()
     QTest::addColumn<QStringList>("expected");
     const unsigned grasp = 1u << unsigned(Message::Grasp);
     const unsigned brk = 1u << unsigned(Message::Break);
+    Message aligned = Message::Grasp;
+    QVERIFY(messageFromName("aligned", &aligned));
+    const unsigned alignedOnly = 1u << 5; // a new message: the test's own bit for it
     const unsigned exception = 1u << unsigned(Category::Exception);
     const unsigned left = 1u << unsigned(Gripper::Left);
     QTest::newRow("everything") << 0u << 0u << 0u
-                                << QStringList{"1 grasp begin 1", "2 break begin 0.5"};
+                                << QStringList{"1 grasp begin 1", "2 break begin 0.5",
+                                               "3 aligned begin 1"};
     QTest::newRow("grasp") << grasp << 0u << 0u << QStringList{"1 grasp begin 1"};
     QTest::newRow("grasp or break")
         << (grasp | brk) << 0u << 0u << QStringList{"1 grasp begin 1", "2 break begin 0.5"};
     QTest::newRow("exceptions") << 0u << exception << 0u << QStringList{"2 break begin 0.5"};
     QTest::newRow("left gripper only") << 0u << 0u << left << QStringList{};
     QTest::newRow("grasp and exception") << grasp << exception << 0u << QStringList{};
+    QTest::newRow("a new message passes by name")
+        << alignedOnly << 0u << 0u << QStringList{"3 aligned begin 1"};
 }
 
 void TestRouterNodes::filter()
@@ -159,10 +170,19 @@ void TestRouterNodes::filter()
     QFETCH(unsigned, categories);
     QFETCH(unsigned, grippers);
     QFETCH(QStringList, expected);
-    FilterNode node(messages, categories, grippers);
+    std::vector<Message> list;
+    Message aligned = Message::Grasp;
+    messageFromName("aligned", &aligned);
+    for (Message m : {Message::Grasp, Message::Break}) {
+        if (messages & (1u << unsigned(m)))
+            list.push_back(m);
+    }
+    if (messages & (1u << 5))
+        list.push_back(aligned);
+    FilterNode node(list, categories, grippers);
     Recorder out;
     node.eventTargets.push_back({&out, 0});
-    feed(node, {"1 0 grasp begin", "2 0 break begin 0.5"});
+    feed(node, {"1 0 grasp begin", "2 0 break begin 0.5", "3 0 aligned begin"});
     QCOMPARE(out.seen, expected);
 }
 
@@ -384,41 +404,67 @@ void TestRouterNodes::predictExtrapolatesOverTheHorizon()
 
 void TestRouterNodes::threshold_data()
 {
-    QTest::addColumn<double>("level");
-    QTest::addColumn<double>("full");
-    QTest::addColumn<double>("hysteresis");
+    // condition begin-low begin-high end-low end-high intensity-from intensity-to (equal: 1).
+    QTest::addColumn<QString>("condition");
+    QTest::addColumn<QList<double>>("levels");
     QTest::addColumn<double>("minDuration");
     QTest::addColumn<QList<double>>("inputs"); // one per 10 ms from t = 0
     QTest::addColumn<QStringList>("expected");
-    QTest::newRow("above: strict, intensity to full, ends at the level")
-        << 80.0 << 120.0 << 0.0 << 0.0 << QList<double>{70, 80, 90, 100, 120, 130, 80, 70}
+    QTest::newRow("above: strict, intensity to 120, ends at the level")
+        << "above" << QList<double>{80, 0, 80, 0, 80, 120} << 0.0
+        << QList<double>{70, 80, 90, 100, 120, 130, 80, 70}
         << QStringList{"0.02 break begin 0.25", "0.03 break update 0.5", "0.04 break update 1",
                        "0.06 break end 1"};
-    QTest::newRow("hysteresis holds it down to level - 3")
-        << 80.0 << 120.0 << 3.0 << 0.0 << QList<double>{81, 78, 77, 81}
+    QTest::newRow("above: an end level 3 below holds it")
+        << "above" << QList<double>{80, 0, 77, 0, 80, 120} << 0.0 << QList<double>{81, 78, 77, 81}
         << QStringList{"0 break begin 0.03", "0.01 break update 0", "0.02 break end 0",
                        "0.03 break begin 0.03"};
-    QTest::newRow("minDuration: begins once it has held 20 ms")
-        << 80.0 << 120.0 << 0.0 << 0.02 << QList<double>{90, 90, 70, 90, 90, 90}
-        << QStringList{"0.05 break begin 0.25"};
-    QTest::newRow("below: full under level")
-        << 0.5 << 0.0 << 0.0 << 0.0 << QList<double>{0.6, 0.5, 0.25, 0.0, 0.7}
+    QTest::newRow("above: minDuration, begins once it has held 20 ms")
+        << "above" << QList<double>{80, 0, 80, 0, 80, 120} << 0.02
+        << QList<double>{90, 90, 70, 90, 90, 90} << QStringList{"0.05 break begin 0.25"};
+    QTest::newRow("below: strict, a falling intensity map")
+        << "below" << QList<double>{0.5, 0, 0.5, 0, 0.5, 0} << 0.0
+        << QList<double>{0.6, 0.5, 0.25, 0.0, 0.7}
         << QStringList{"0.02 break begin 0.5", "0.03 break update 1", "0.04 break end 1"};
+    QTest::newRow("below: an end level above holds it; no map: intensity 1")
+        << "below" << QList<double>{0.1, 0, 0.2, 0, 0, 0} << 0.0
+        << QList<double>{0.15, 0.05, 0.15, 0.2, 0.15}
+        << QStringList{"0.01 break begin 1", "0.03 break end 1"};
+    QTest::newRow("inside: both edges belong to the range")
+        << "inside" << QList<double>{-1, 1, -1, 1, 0, 0} << 0.0
+        << QList<double>{-2, -1, 0, 1, 1.01, 2}
+        << QStringList{"0.01 break begin 1", "0.04 break end 1"};
+    QTest::newRow("inside: the wider end range holds it")
+        << "inside" << QList<double>{-1, 1, -2, 2, 0, 0} << 0.0
+        << QList<double>{0, 1.5, -1.9, -2.1, -1.5, -0.5}
+        << QStringList{"0 break begin 1", "0.03 break end 1", "0.05 break begin 1"};
+    QTest::newRow("outside: strict, either side")
+        << "outside" << QList<double>{-1, 1, -1, 1, 0, 0} << 0.0
+        << QList<double>{0, 1, 1.01, 0, -1, -1.5}
+        << QStringList{"0.02 break begin 1", "0.03 break end 1", "0.05 break begin 1"};
+    QTest::newRow("outside: the narrower end range holds it")
+        << "outside" << QList<double>{-1, 1, -0.5, 0.5, 0, 0} << 0.0
+        << QList<double>{1.5, 0.7, 0.4, 0.9} << QStringList{"0 break begin 1", "0.02 break end 1"};
 }
 
 void TestRouterNodes::threshold()
 {
-    QFETCH(double, level);
-    QFETCH(double, full);
-    QFETCH(double, hysteresis);
+    QFETCH(QString, condition);
+    QFETCH(QList<double>, levels);
     QFETCH(double, minDuration);
     QFETCH(QList<double>, inputs);
     QFETCH(QStringList, expected);
     ThresholdNode::Params params;
     params.message = Message::Break;
-    params.level = level;
-    params.full = full;
-    params.hysteresis = hysteresis;
+    params.condition =
+        ThresholdNode::Condition(ThresholdNode::conditionNames().indexOf(condition));
+    params.begin = levels[0];
+    params.beginHigh = levels[1];
+    params.end = levels[2];
+    params.endHigh = levels[3];
+    params.mapsIntensity = levels[4] != levels[5];
+    params.intensityFrom = levels[4];
+    params.intensityTo = levels[5];
     params.minDuration = minDuration;
     ThresholdNode node(3, Gripper::Right, params);
     Recorder out;
@@ -434,6 +480,62 @@ void TestRouterNodes::threshold()
         QCOMPARE(e.node, 3);
         QCOMPARE(e.detector, DetectorKind::Threshold);
         QCOMPARE(e.category, Category::Exception);
+    }
+}
+
+void TestRouterNodes::compose_data()
+{
+    // Lines as feed() takes them: "c" first for input b.
+    QTest::addColumn<QString>("mode");
+    QTest::addColumn<QStringList>("lines");
+    QTest::addColumn<QStringList>("expected");
+    QTest::newRow("all: both, the lower intensity")
+        << "all"
+        << QStringList{"1 0 grasp begin 0.5", "c 2 1 slip begin 0.8", "3 0 grasp update 0.3",
+                       "c 4 1 slip end 0.8", "5 0 grasp end 0.3"}
+        << QStringList{"2 aligned begin 0.5", "3 aligned update 0.3", "4 aligned end 0.3"};
+    QTest::newRow("all: a second message on an input keeps it active")
+        << "all"
+        << QStringList{"1 0 grasp begin", "1 2 break begin", "c 2 1 slip begin", "3 0 grasp end",
+                       "4 2 break end"}
+        << QStringList{"2 aligned begin 1", "4 aligned end 1"};
+    QTest::newRow("any: either, the higher intensity")
+        << "any"
+        << QStringList{"1 0 grasp begin 0.5", "c 2 1 slip begin 0.8", "c 3 1 slip end 0.8",
+                       "4 0 grasp end 0.5"}
+        << QStringList{"1 aligned begin 0.5", "2 aligned update 0.8", "3 aligned update 0.5",
+                       "4 aligned end 0.5"};
+    QTest::newRow("while: a's intensity, only while b")
+        << "while"
+        << QStringList{"c 1 1 slip begin 0.9", "2 0 grasp begin 0.4", "c 3 1 slip update 0.2",
+                       "4 0 grasp update 0.6", "c 5 1 slip end 0.2",  "6 0 grasp end 0.6"}
+        << QStringList{"2 aligned begin 0.4", "4 aligned update 0.6", "5 aligned end 0.6"};
+    QTest::newRow("while: a alone is nothing")
+        << "while" << QStringList{"1 0 grasp begin", "2 0 grasp end"} << QStringList{};
+}
+
+void TestRouterNodes::compose()
+{
+    QFETCH(QString, mode);
+    QFETCH(QStringList, lines);
+    QFETCH(QStringList, expected);
+    ComposeNode::Params params;
+    QVERIFY(messageFromName("aligned", &params.message));
+    params.category = Category::Confirmation;
+    params.mode = ComposeNode::Mode(ComposeNode::modeNames().indexOf(mode));
+    ComposeNode node(7, params);
+    Recorder out;
+    node.eventTargets.push_back({&out, 0});
+    EventBuffer events;
+    node.setOutput(&events);
+    feed(node, lines);
+    QCOMPARE(out.seen, expected);
+    QCOMPARE(events.size(), int(expected.size()));
+    for (const SemanticEvent &e : events) {
+        QCOMPARE(e.node, 7);
+        QCOMPARE(e.detector, DetectorKind::Compose);
+        QCOMPARE(e.category, Category::Confirmation);
+        QCOMPARE(messageName(e.message), QStringLiteral("aligned"));
     }
 }
 

@@ -222,8 +222,8 @@ void TestSessionCli::replayKeepsTheReactionTime()
     const QStringList run{
         "run",        "--scene",  "box_and_block",        "--router", "C3p",
         "--operator", "scripted", "--duration",           "10",       "--reaction-time",
-        "0.6",        "--set",    "right.break.level=30", "--events", recorded,
-        "--session",  session};
+        "0.6",        "--set",    "right.break.begin=30", "--set",    "right.break.end=27",
+        "--events",   recorded,   "--session",            session};
     QCOMPARE(semhapRun(run).code, 0);
     QVERIFY(contents(recorded).contains("\"right.break\""));
     QString error;
@@ -306,7 +306,7 @@ void TestSessionCli::exportNestsJsonMetadata()
     QVERIFY(metadata.value("bindings").isObject());
     QVERIFY(metadata.value("overrides").isArray());
     QCOMPARE(metadata.value("notes").toString(), QString("[1]"));
-    QCOMPARE(metadata.value("schema_version").toString(), QString("3"));
+    QCOMPARE(metadata.value("schema_version").toString(), QString("4"));
 }
 
 void TestSessionCli::errors_data()

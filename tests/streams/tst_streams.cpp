@@ -2,6 +2,7 @@
 #include "actortable.h"
 #include "contactframereader.h"
 #include "jsonlineswriter.h"
+#include "nametable.h"
 
 #include <QBuffer>
 #include <QFile>
@@ -39,12 +40,19 @@ QString describe(const Fingertip &tip, const ActorTable &actors)
     return text;
 }
 
-/** "t gripper | left | right". */
+/** "t gripper | left | right", then " | name=value ..." for the signals. */
 QString describe(const ContactFrame &frame, const ActorTable &actors)
 {
-    return number(frame.t) + QLatin1Char(' ') + gripperName(frame.gripper) +
-           QStringLiteral(" | ") + describe(frame.left, actors) + QStringLiteral(" | ") +
-           describe(frame.right, actors);
+    QString text = number(frame.t) + QLatin1Char(' ') + gripperName(frame.gripper) +
+                   QStringLiteral(" | ") + describe(frame.left, actors) + QStringLiteral(" | ") +
+                   describe(frame.right, actors);
+    QStringList named;
+    for (const SignalValue &signal : frame.signalValues)
+        named.append(signalNames().name(signal.id) + QLatin1Char('=') + number(signal.value));
+    named.sort();
+    if (!named.isEmpty())
+        text += QStringLiteral(" | ") + named.join(QLatin1Char(' '));
+    return text;
 }
 
 /** Reads every frame of `input`, collecting described frames and rendered errors. */
@@ -139,6 +147,14 @@ void TestStreams::validFrames_data()
         << QByteArray(R"({"t": 1, "gripper": "right", "source": "sim",)"
                       R"( "left": {"f": 1, "n": 1, "actor": "b", "torque": 3}})")
         << QStringLiteral("1 right | 1 1 b | 0 0 -");
+    QTest::newRow("signals")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"plug.angle_error": 0.05,)"
+                      R"( "wrist.fz": 12.3, "x_2": -1e-9}})")
+        << QStringLiteral("1 right | 0 0 - | 0 0 - | plug.angle_error=0.05 wrist.fz=12.3 "
+                          "x_2=-1e-09");
+    QTest::newRow("null and empty signals")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": null})")
+        << QStringLiteral("1 right | 0 0 - | 0 0 -");
     QTest::newRow("CRLF line end") << QByteArray("{\"t\": 3, \"gripper\": \"left\"}\r")
                                    << QStringLiteral("3 left | 0 0 - | 0 0 -");
     QTest::newRow("byte order mark") << QByteArray("\xEF\xBB\xBF{\"t\": 3, \"gripper\": \"left\"}")
@@ -233,6 +249,40 @@ void TestStreams::malformed_data()
         << QByteArray(R"({"t": 1, "gripper": "right", "right": {"f": 1, "n": 3, "actor": "a",)"
                       R"( "mu": "0.1"}})")
         << QStringLiteral(R"("right.mu" must be a finite positive number or null, got "0.1")");
+    QTest::newRow("signals not an object")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": [1, 2]})")
+        << QStringLiteral(R"("signals" must be an object or null, got an array)");
+    QTest::newRow("signal not a number")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"plug.depth": "deep"}})")
+        << QStringLiteral(R"("signals.plug.depth" must be a finite number, got "deep")");
+    QTest::newRow("signal null")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"plug.depth": null}})")
+        << QStringLiteral(R"("signals.plug.depth" must be a finite number, got null)");
+    QTest::newRow("signal name with capitals")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"Wrist": 1}})")
+        << QStringLiteral(R"("signals.Wrist": a signal's name must be 1 to 64 characters of )"
+                          R"(a-z, 0-9, _ and .)");
+    QTest::newRow("empty signal name")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"": 1}})")
+        << QStringLiteral(R"("signals.": a signal's name must be 1 to 64 characters of )"
+                          R"(a-z, 0-9, _ and .)");
+    QTest::newRow("signal name too long")
+        << (QByteArray(R"({"t": 1, "gripper": "right", "signals": {")") + QByteArray(65, 'a') +
+            QByteArray(R"(": 1}})"))
+        << QStringLiteral(R"("signals.)") + QString(65, 'a') +
+               QStringLiteral(R"(": a signal's name must be 1 to 64 characters of a-z, 0-9, _ )"
+                              R"(and .)");
+    QTest::newRow("a built-in quantity's name")
+        << QByteArray(R"({"t": 1, "gripper": "right", "signals": {"left.f": 1}})")
+        << QStringLiteral(R"("signals.left.f": "left.f" is a built-in quantity, not a signal )"
+                          R"(name)");
+    QTest::newRow("65 signals") << [] {
+        QByteArray line = R"({"t": 1, "gripper": "right", "signals": {)";
+        for (int i = 0; i < 65; ++i)
+            line += (i ? ", " : "") + QByteArray("\"s") + QByteArray::number(i) + "\": 1";
+        line += "}}";
+        return line;
+    }() << QStringLiteral(R"("signals" has 65 signals, more than the 64 a frame may carry)");
     QTest::newRow("t jumps")
         << QByteArray(R"({"t": 1e9, "gripper": "left"})")
         << QStringLiteral(R"("t" jumps by 1e+09 s, more than the 10 s allowed (--max-gap))");
@@ -462,6 +512,8 @@ void TestStreams::contactFrameRoundTrip()
     second.t = 123456.789;
     second.gripper = Gripper::Right;
     second.right = {0.25, 1, actors.intern(QStringLiteral("odd \"name\"")), false, {}};
+    second.signalValues.set(signalNames().intern(QStringLiteral("wrist.fz")), 12.3);
+    second.signalValues.set(signalNames().intern(QStringLiteral("plug.depth")), -1e-300);
 
     QByteArray data;
     QBuffer out(&data);
@@ -485,6 +537,8 @@ void TestStreams::contactFrameRoundTrip()
     QVERIFY(reader.next(&back));
     QCOMPARE(describe(back, reader.actors()), describe(second, actors));
     QCOMPARE(back.t, 123456.789);
+    QCOMPARE(back.signalValues, second.signalValues);
+    QVERIFY(data.contains(R"("signals":{"wrist.fz":12.3,"plug.depth":-1e-300}})"));
     QVERIFY(!reader.next(&back));
     QCOMPARE(reader.rejectedCount(), 0);
 }

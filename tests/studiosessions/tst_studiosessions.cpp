@@ -442,7 +442,7 @@ void TestStudioSessions::replaySaysWhichRowsItSkipped()
         QVERIFY(db.open());
         QSqlQuery query(db);
         QVERIFY(query.exec("UPDATE contact_frames SET left_f = 'abc' WHERE rowid IN (5, 6)"));
-        QVERIFY(query.exec("UPDATE events SET message = 'shout' WHERE rowid = 1"));
+        QVERIFY(query.exec("UPDATE events SET message = 'Shout!' WHERE rowid = 1"));
         db.close();
     }
     QSqlDatabase::removeDatabase("damage");
