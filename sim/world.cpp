@@ -3,6 +3,7 @@
 
 #include "mujocohandles.h"
 #include "scenelibrary.h"
+#include "scenesignals.h"
 
 #include <QByteArray>
 
@@ -109,6 +110,7 @@ struct World::Private
     MjModelPtr model;
     MjDataPtr data;
     std::array<Hand, 2> hands;
+    SceneSignals sceneSignals;
     std::array<Tip, 4> tips;          ///< gripper * 2 + finger (0 left, 1 right)
     std::vector<int> tipOfGeom;       ///< per geom: its tip, or -1
     std::vector<long> taxelStamp;     ///< per geom: the step it was last counted in
@@ -234,6 +236,12 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         return nullptr;
     }
 
+    if (!p.sceneSignals.load(m, nameOrPath, {p.hands[0].present, p.hands[1].present}, error))
+        return nullptr;
+    const int task = id(m, mjOBJ_TEXT, QStringLiteral("semhap:task"));
+    if (task >= 0)
+        world->m_taskName = QString::fromUtf8(m->text_data + m->text_adr[task]);
+
     // Objects: free root bodies that are not grippers. Their names are the actors.
     p.objectOfBody.assign(size_t(m->nbody), -1);
     for (int body = 1; body < m->nbody; ++body) {
@@ -339,6 +347,10 @@ void World::step()
     ++d->stepCount;
     m_fractures.clear();
     d->extract(*this, t);
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (hasGripper(g))
+            d->sceneSignals.write(d->model.get(), d->data.get(), g, &d->hands[size_t(g)].frame);
+    }
     d->checkFractures(*this, t);
     d->sleepResting(*this);
 }
@@ -731,6 +743,11 @@ bool World::region(const QString &siteName, Region *region) const
     std::copy_n(d->data->site_xpos + 3 * site, 3, region->center.begin());
     std::copy_n(m->site_size + 3 * site, 3, region->half.begin());
     return true;
+}
+
+QStringList World::signalNames(Gripper gripper) const
+{
+    return d->sceneSignals.names(gripper);
 }
 
 bool World::hasGripper(Gripper gripper) const

@@ -76,6 +76,13 @@ public:
     double physicsSeconds() const;
 
     bool hasGripper(Gripper gripper) const;
+    /**
+     * The signals the scene declares for `gripper`'s frames, in the order declared
+     * (sim/README.md, "Signals"); every frame of that gripper carries them.
+     */
+    QStringList signalNames(Gripper gripper) const;
+    /** The scene's task (`<text name="semhap:task">`); empty when it names none. */
+    const QString &taskName() const { return m_taskName; }
     /** Where the wrist should be: the gripper follows this target through a soft weld. */
     void setTarget(Gripper gripper, const Pose &target);
     Pose target(Gripper gripper) const;
@@ -175,6 +182,7 @@ private:
     std::unique_ptr<Private> d;
 
     QString m_sceneName;
+    QString m_taskName;
     ActorTable m_actors;
     std::vector<SceneObject> m_objects;
     std::vector<Fracture> m_fractures;

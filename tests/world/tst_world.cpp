@@ -2,7 +2,10 @@
 // The MuJoCo world: scenes load, fingertips report the force they grip with, fragile cubes
 // break above their force and not below, contact counts stay steady while an object slides.
 #include "driveoperator.h"
+#include "nametable.h"
 #include "world.h"
+
+#include <QTemporaryDir>
 
 #include <thread>
 
@@ -68,6 +71,74 @@ void graspCube(World &world, double force, int object = 0)
     hold(world, 0.3);
 }
 
+/**
+ * A small scene for the signals: a right gripper far away, sites a (at 0 0 0.5), b (3 cm
+ * along a's x), c (at a, turned 90 degrees about z), a 200 g box resting on the floor with a
+ * touch site under it, a ball falling from 2 m, a framepos sensor of b; `custom` is the
+ * <custom> element's content.
+ */
+QByteArray signalScene(const QString &custom)
+{
+    return QStringLiteral(R"(<mujoco>
+  <compiler autolimits="true"/>
+  <option timestep="0.002"/>
+  <custom>%1</custom>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <site name="a" pos="0 0 0.5"/>
+    <site name="b" pos="0.03 0 0.5"/>
+    <site name="c" pos="0 0 0.5" euler="0 0 90"/>
+    <body name="box" pos="0.3 0 0.02">
+      <freejoint/>
+      <geom type="box" size="0.02 0.02 0.02" mass="0.2"/>
+      <site name="under" type="box" pos="0 0 -0.02" size="0.021 0.021 0.002"/>
+    </body>
+    <body name="ball" pos="-0.3 0 2">
+      <freejoint/>
+      <geom type="sphere" size="0.01" mass="0.1" contype="0" conaffinity="0"/>
+    </body>
+    <body name="right.target" mocap="true" pos="0 0.5 0.5"/>
+    <body name="right.gripper" pos="0 0.5 0.5">
+      <freejoint/>
+      <geom type="box" size="0.01 0.01 0.01" mass="0.1" contype="0" conaffinity="0"/>
+      <body name="finger.left"><joint name="sl" type="slide" axis="0 1 0" range="0 0.01"/>
+        <geom type="box" size="0.005 0.005 0.005" mass="0.01" contype="0" conaffinity="0"/>
+      </body>
+      <body name="finger.right"><joint name="sr" type="slide" axis="0 -1 0" range="0 0.01"/>
+        <geom type="box" size="0.005 0.005 0.005" mass="0.01" contype="0" conaffinity="0"/>
+      </body>
+    </body>
+  </worldbody>
+  <equality><weld body1="right.gripper" body2="right.target"/></equality>
+  <actuator>
+    <motor name="right.grip.left" joint="sl" ctrlrange="-20 20"/>
+    <motor name="right.grip.right" joint="sr" ctrlrange="-20 20"/>
+  </actuator>
+  <sensor>
+    <framepos name="bpos" objtype="site" objname="b"/>
+    <touch name="weight" site="under"/>
+  </sensor>
+</mujoco>
+)")
+        .arg(custom)
+        .toUtf8();
+}
+
+/** Writes `xml` as scene.xml into `dir`; its path. */
+QString writeScene(const QTemporaryDir &dir, const QByteArray &xml)
+{
+    const QString path = dir.filePath("scene.xml");
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(xml) != xml.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+QString signalText(const QString &name, const QString &data)
+{
+    return QStringLiteral("<text name=\"%1\" data=\"%2\"/>").arg(name, data);
+}
+
 } // namespace
 
 class TestWorld : public QObject
@@ -95,6 +166,11 @@ private slots:
     void restingCubesSleepUntilTouched();
     void clearanceBelowThePads_data();
     void clearanceBelowThePads();
+    void signalsFromMjcf_data();
+    void signalsFromMjcf();
+    void signalsKeepTheirOrder();
+    void badSignals_data();
+    void badSignals();
 };
 
 void TestWorld::scenesLoad_data()
@@ -468,6 +544,147 @@ void TestWorld::clearanceBelowThePads()
     QVERIFY(clearance);
     QVERIFY2(std::abs(*clearance - (pads - surface)) < 0.001,
              qPrintable(QString("%1 vs %2").arg(*clearance).arg(pads - surface)));
+}
+
+void TestWorld::signalsFromMjcf_data()
+{
+    QTest::addColumn<QString>("data");
+    QTest::addColumn<int>("steps");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<double>("tolerance");
+    const double pi = 3.14159265358979323846;
+    QTest::newRow("along") << "along a b x" << 1 << 0.03 << 1e-12;
+    QTest::newRow("along, across the offset") << "along a b y" << 1 << 0.0 << 1e-12;
+    QTest::newRow("across") << "across a b x" << 1 << 0.0 << 1e-12;
+    QTest::newRow("across, another axis") << "across a b z" << 1 << 0.03 << 1e-12;
+    QTest::newRow("along a turned frame") << "along c b y" << 1 << -0.03 << 1e-9;
+    QTest::newRow("distance") << "distance b a" << 1 << 0.03 << 1e-12;
+    QTest::newRow("a body") << "distance a box" << 1 << std::hypot(0.3, 0.48) << 1e-6;
+    QTest::newRow("angle, a quarter turn") << "angle a x c x" << 1 << pi / 2 << 1e-9;
+    QTest::newRow("angle, the same axis") << "angle a z c z" << 1 << 0.0 << 1e-6;
+    QTest::newRow("angle, opposite") << "angle a x c y" << 1 << pi << 1e-6;
+    // Falling from rest: the frame after step k has the speed after k - 1 steps.
+    QTest::newRow("speed") << "speed a ball" << 51 << 9.81 * 0.002 * 50 << 1e-9;
+    QTest::newRow("speed, both ways") << "speed ball a" << 51 << 9.81 * 0.002 * 50 << 1e-9;
+    QTest::newRow("speed at rest") << "speed a b" << 51 << 0.0 << 1e-12;
+    QTest::newRow("sensor, a component") << "sensor bpos x" << 1 << 0.03 << 1e-12;
+    QTest::newRow("sensor, an index") << "sensor bpos 2" << 1 << 0.5 << 1e-12;
+    QTest::newRow("sensor, a vector's norm")
+        << "sensor bpos" << 1 << std::hypot(0.03, 0.5) << 1e-12;
+    QTest::newRow("sensor, norm") << "sensor bpos norm" << 1 << std::hypot(0.03, 0.5) << 1e-12;
+    // The box rests on the floor (before it would fall asleep, sim/README.md): its weight.
+    QTest::newRow("touch under a resting box") << "sensor weight" << 50 << 0.2 * 9.81 << 0.01;
+}
+
+void TestWorld::signalsFromMjcf()
+{
+    QFETCH(QString, data);
+    QFETCH(int, steps);
+    QFETCH(double, value);
+    QFETCH(double, tolerance);
+    QTemporaryDir dir;
+    const QString path =
+        writeScene(dir, signalScene(signalText("signal:right:probe.value", data)));
+    QString error;
+    std::unique_ptr<World> world = World::load(path, SceneOptions{}, &error);
+    QVERIFY2(world, qPrintable(error));
+    QCOMPARE(world->signalNames(Gripper::Right), QStringList{"probe.value"});
+    for (int k = 0; k < steps; ++k)
+        world->step();
+    const double *got =
+        world->frame(Gripper::Right).signalValues.find(signalNames().find("probe.value"));
+    QVERIFY(got);
+    QVERIFY2(std::abs(*got - value) <= tolerance,
+             qPrintable(QString("%1, expected %2").arg(*got, 0, 'g', 12).arg(value)));
+}
+
+void TestWorld::signalsKeepTheirOrder()
+{
+    QTemporaryDir dir;
+    const QString path =
+        writeScene(dir, signalScene(signalText("signal:right:zeta", "distance a b") +
+                                    signalText("semhap:task", "probing") +
+                                    signalText("signal:right:alpha", "along a b x")));
+    QString error;
+    std::unique_ptr<World> world = World::load(path, SceneOptions{}, &error);
+    QVERIFY2(world, qPrintable(error));
+    QCOMPARE(world->signalNames(Gripper::Right), (QStringList{"zeta", "alpha"}));
+    QCOMPARE(world->signalNames(Gripper::Left), QStringList());
+    QCOMPARE(world->taskName(), QString("probing"));
+    world->step();
+    const FrameSignals &values = world->frame(Gripper::Right).signalValues;
+    QCOMPARE(values.size(), 2);
+    QCOMPARE(values.begin()->id, signalNames().find("zeta"));
+    // Stepping again sets the same signals: none added.
+    world->step();
+    QCOMPARE(world->frame(Gripper::Right).signalValues.size(), 2);
+    QCOMPARE(loadWorld("box_and_block")->taskName(), QString());
+}
+
+void TestWorld::badSignals_data()
+{
+    QTest::addColumn<QString>("custom");
+    QTest::addColumn<QString>("error");
+    const auto one = [](const QString &name, const QString &data) {
+        return signalText(name, data);
+    };
+    QTest::newRow("unknown kind")
+        << one("signal:right:x", "twist a b")
+        << "signal:right:x: unknown kind 'twist' (kinds: sensor, along, across, distance, "
+           "angle, speed)";
+    QTest::newRow("no kind") << one("signal:right:x", " ")
+                             << "signal:right:x: unknown kind '' (kinds: sensor, along, "
+                                "across, distance, angle, speed)";
+    QTest::newRow("unknown sensor")
+        << one("signal:right:x", "sensor nosuch") << "signal:right:x: no sensor 'nosuch'";
+    QTest::newRow("no such component")
+        << one("signal:right:x", "sensor bpos 3")
+        << "signal:right:x: sensor 'bpos' has 3 values: no component '3'";
+    QTest::newRow("a component of one value")
+        << one("signal:right:x", "sensor weight y")
+        << "signal:right:x: sensor 'weight' has 1 values: no component 'y'";
+    QTest::newRow("unknown site") << one("signal:right:x", "along a nosuch x")
+                                  << "signal:right:x: no site or body 'nosuch'";
+    QTest::newRow("bad axis") << one("signal:right:x", "across a b w")
+                              << "signal:right:x: axis 'w' is not x, y or z";
+    QTest::newRow("bad second axis")
+        << one("signal:right:x", "angle a x b 1") << "signal:right:x: axis '1' is not x, y or z";
+    QTest::newRow("arguments missing") << one("signal:right:x", "along a b")
+                                       << "signal:right:x: expected 'along|across A B x|y|z'";
+    QTest::newRow("arguments over") << one("signal:right:x", "distance a b c")
+                                    << "signal:right:x: expected 'distance|speed A B'";
+    QTest::newRow("upper case name")
+        << one("signal:right:Plug", "distance a b")
+        << "signal:right:Plug: a signal name is 1 to 64 of a-z, 0-9, _ and .";
+    QTest::newRow("empty name") << one("signal:right:", "distance a b")
+                                << "signal:right:: a signal name is 1 to 64 of a-z, 0-9, _ and .";
+    QTest::newRow("built-in name")
+        << one("signal:right:left.f", "distance a b")
+        << "signal:right:left.f: 'left.f' is a built-in quantity of every frame";
+    QTest::newRow("friction") << one("signal:right:friction", "distance a b")
+                              << "signal:right:friction: 'friction' is a built-in quantity of "
+                                 "every frame";
+    QTest::newRow("no left gripper")
+        << one("signal:left:x", "distance a b") << "signal:left:x: the scene has no left gripper";
+    QTest::newRow("no such hand")
+        << one("signal:middle:x", "distance a b")
+        << "signal:middle:x: expected signal:left:NAME or signal:right:NAME";
+    QString many;
+    for (int i = 0; i <= FrameSignals::Capacity; ++i)
+        many += one(QString("signal:right:s%1").arg(i), "distance a b");
+    QTest::newRow("too many") << many
+                              << "signal:right:s64: more than 64 signals for the right gripper";
+}
+
+void TestWorld::badSignals()
+{
+    QFETCH(QString, custom);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString path = writeScene(dir, signalScene(custom));
+    QString message;
+    QVERIFY(!World::load(path, SceneOptions{}, &message));
+    QCOMPARE(message, path + ": " + error);
 }
 
 QTEST_GUILESS_MAIN(TestWorld)
