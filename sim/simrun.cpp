@@ -70,8 +70,9 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
     if (!run->m_world)
         return nullptr;
     LoadError loadError;
-    std::unique_ptr<Router> router = loadRouter(options.router, options.overrides, &loadError,
-                                                RouterContext{options.reactionTime});
+    std::unique_ptr<Router> router =
+        loadRouter(options.router, options.overrides, &loadError,
+                   routerContext(*run->m_world, options.reactionTime));
     if (!router) {
         *error = loadError.toString();
         return nullptr;
@@ -85,6 +86,16 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
     run->m_task = std::make_unique<TaskMonitor>(*run->m_world, options.reactionTime);
     run->m_totalSteps = std::lround(options.duration / run->m_world->timestep());
     return run;
+}
+
+RouterContext SimRun::routerContext(const World &world, double reactionTime)
+{
+    RouterContext context;
+    context.reactionTime = reactionTime;
+    context.knowsSignals = true;
+    for (Gripper g : {Gripper::Left, Gripper::Right})
+        context.signalNames[size_t(g)] = world.signalNames(g);
+    return context;
 }
 
 bool SimRun::isDone() const

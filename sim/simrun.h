@@ -67,6 +67,11 @@ class SimRun
 public:
     /** Loads scene, router and operator; null with a one-line `error`. */
     static std::unique_ptr<SimRun> create(const RunOptions &options, QString *error);
+    /**
+     * What a router for `world` is compiled with: the reaction time, and the signals the
+     * scene declares, so a signal node naming another is refused at once.
+     */
+    static RouterContext routerContext(const World &world, double reactionTime);
 
     /** One physics step and the pipeline tick it makes; false once the duration is done. */
     bool step(RunSink &sink);
