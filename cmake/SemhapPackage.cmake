@@ -6,7 +6,8 @@ include(CMakePackageConfigHelpers)
 set(SEMHAP_PUBLIC_HEADERS
     patterns/loaderror.h patterns/waveform.h patterns/pattern.h patterns/voice.h
     patterns/patternlibrary.h patterns/paramspec.h
-    core/contactframe.h core/actortable.h core/semanticevent.h core/deviceframe.h
+    core/contactframe.h core/framesignals.h core/nametable.h core/actortable.h
+    core/semanticevent.h core/deviceframe.h
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h
     core/slipdetector.h core/contactframeparser.h core/contactframereader.h
     core/jsonlineswriter.h

@@ -3,6 +3,8 @@
 // the semantic events and on what the wristbands are told.
 #include <semhap/pipeline.h>
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTest>
 
 #include <vector>
@@ -61,6 +63,40 @@ private slots:
         // The air band confirms the grasp: 0.9 s after it began it is fully inflated.
         const int air = pipeline.router().player().deviceIndex("right.air");
         QCOMPARE(pipeline.router().player().lastFrame(air).values[0], 1.0);
+    }
+
+    void aSignalOfYourTaskConfirms()
+    {
+        // A frame's named signal, a threshold with a message of its own: "aligned" while the
+        // plug's angle error is under 0.03 rad.
+        const QJsonObject json = QJsonDocument::fromJson(R"({"format": "semhap.router/1",
+          "nodes": [
+            {"id": "angle", "type": "signal",
+             "params": {"gripper": "right", "quantity": "plug.angle"}},
+            {"id": "aligned", "type": "threshold",
+             "params": {"gripper": "right", "message": "aligned", "category": "confirmation",
+                        "condition": "below", "begin": 0.03}}],
+          "links": [{"from": "angle", "to": "aligned"}]})")
+                                     .object();
+        semhap::RouterGraph graph;
+        semhap::LoadError error;
+        QVERIFY2(semhap::RouterGraph::fromJson(json, "mine.json", &graph, &error),
+                 qPrintable(error.toString()));
+        std::unique_ptr<semhap::Router> router = semhap::Router::compile(graph, &error);
+        QVERIFY2(router, qPrintable(error.toString()));
+        semhap::Pipeline pipeline(std::move(router));
+        Collect out;
+        const int angle = semhap::signalNames().intern("plug.angle");
+        for (int k = 0; k <= 4; ++k) {
+            semhap::ContactFrame frame = pinch(0.1 * k, 0.0);
+            frame.signalValues.set(angle, 0.1 - 0.025 * k); // 0.1 rad down to 0
+            pipeline.process(frame, out);
+            pipeline.flush(out);
+        }
+        QCOMPARE(out.events.size(), size_t(1));
+        QCOMPARE(semhap::messageName(out.events[0].message), QString("aligned"));
+        QCOMPARE(out.events[0].category, semhap::Category::Confirmation);
+        QCOMPARE(out.events[0].t, 0.3); // 0.025 rad: the first below 0.03
     }
 };
 
