@@ -3,6 +3,7 @@
 // outputs, replay and re-routing give what route gives, export, listen over UDP, and a
 // recording killed with SIGKILL loses at most ~100 ms and still opens.
 #include "clitool.h"
+#include "nametable.h"
 #include "sessionreader.h"
 
 #include <QBuffer>
@@ -125,6 +126,7 @@ private slots:
     void errors_data();
     void errors();
     void listenRunsLikeRoute();
+    void aRigsSignalsDriveTheRouter();
     void killedRecordingOpens();
     void listenRefusesJumpsAndStopsOnTime();
     void listenEndsMessagesWhenTheSenderFallsSilent();
@@ -219,11 +221,25 @@ void TestSessionCli::replayKeepsTheReactionTime()
     // A low break level makes every grasp cross it, so the horizon shows in the begin times.
     const QString session = m_dir.filePath("slow.db");
     const QString recorded = m_dir.filePath("slow.events");
-    const QStringList run{
-        "run",        "--scene",  "box_and_block",        "--router", "C3p",
-        "--operator", "scripted", "--duration",           "10",       "--reaction-time",
-        "0.6",        "--set",    "right.break.begin=30", "--set",    "right.break.end=27",
-        "--events",   recorded,   "--session",            session};
+    const QStringList run{"run",
+                          "--scene",
+                          "box_and_block",
+                          "--router",
+                          "C3p",
+                          "--operator",
+                          "scripted",
+                          "--duration",
+                          "10",
+                          "--reaction-time",
+                          "0.6",
+                          "--set",
+                          "right.break.begin=30",
+                          "--set",
+                          "right.break.end=27",
+                          "--events",
+                          recorded,
+                          "--session",
+                          session};
     QCOMPARE(semhapRun(run).code, 0);
     QVERIFY(contents(recorded).contains("\"right.break\""));
     QString error;
@@ -404,6 +420,71 @@ void TestSessionCli::listenRunsLikeRoute()
         },
         &error));
     QVERIFY(lastArrival > 0);
+}
+
+void TestSessionCli::aRigsSignalsDriveTheRouter()
+{
+    // A rig sends its wrist sensor's force as a signal; a router of generic nodes warns when
+    // it passes 20 N, exactly as `route` does on the same frames, and the session keeps them.
+    const QString router = m_dir.filePath("wrist.json");
+    QFile file(router);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "semhap.router/1", "nodes": [
+        {"id": "fz", "type": "signal", "params": {"gripper": "right", "quantity": "wrist.fz"}},
+        {"id": "hard", "type": "threshold", "params": {"gripper": "right", "message": "hard",
+         "category": "exception", "begin": 20, "end": 18, "intensity": [20, 30]}}],
+        "links": [{"from": "fz", "to": "hard"}]})");
+    file.close();
+    QByteArray frames;
+    for (int k = 0; k < 40; ++k) {
+        frames += QStringLiteral(R"({"t":%1,"gripper":"right","signals":{"wrist.fz":%2}})")
+                      .arg(k * 0.01)
+                      .arg(k < 20 ? k * 1.5 : 30 - (k - 20) * 1.5)
+                      .toUtf8() +
+                  '\n';
+    }
+    const QString trace = m_dir.filePath("wrist.jsonl");
+    QFile traceFile(trace);
+    QVERIFY(traceFile.open(QIODevice::WriteOnly));
+    traceFile.write(frames);
+    traceFile.close();
+
+    const QString session = m_dir.filePath("wrist.db");
+    QProcess listen;
+    QByteArray err;
+    const quint16 port = startListen(listen,
+                                     {"--duration", "3", "--router", router, "--events", "-",
+                                      "--session", session, "--silence", "60"},
+                                     &err);
+    QVERIFY2(port, err.constData());
+    QUdpSocket sender;
+    for (const QByteArray &line : frames.trimmed().split('\n')) {
+        sender.writeDatagram(line, QHostAddress::LocalHost, port);
+        QThread::usleep(200);
+    }
+    QVERIFY(listen.waitForFinished(15000));
+    QCOMPARE(listen.exitCode(), 0);
+    const QByteArray events = listen.readAllStandardOutput();
+    const Result route =
+        semhapRun({"route", "--router", router, "--frames", trace, "--events", "-"});
+    QCOMPARE(route.code, 0);
+    QCOMPARE(events, route.out);
+    QVERIFY2(events.contains(R"("message":"hard","category":"exception","phase":"begin")"),
+             events.constData());
+    QVERIFY(events.contains(R"("phase":"end")"));
+
+    QString error;
+    auto recorded = SessionReader::open(session, &error);
+    QVERIFY2(recorded, qPrintable(error));
+    const int fz = signalNames().intern("wrist.fz");
+    int withSignal = 0;
+    QVERIFY(recorded->readContactFrames(
+        [&](const ContactFrame &frame, double) {
+            withSignal += frame.signalValues.find(fz) != nullptr;
+            return true;
+        },
+        &error));
+    QCOMPARE(withSignal, 40);
 }
 
 void TestSessionCli::listenRefusesJumpsAndStopsOnTime()
