@@ -221,25 +221,11 @@ void TestSessionCli::replayKeepsTheReactionTime()
     // A low break level makes every grasp cross it, so the horizon shows in the begin times.
     const QString session = m_dir.filePath("slow.db");
     const QString recorded = m_dir.filePath("slow.events");
-    const QStringList run{"run",
-                          "--scene",
-                          "box_and_block",
-                          "--router",
-                          "C3p",
-                          "--operator",
-                          "scripted",
-                          "--duration",
-                          "10",
-                          "--reaction-time",
-                          "0.6",
-                          "--set",
-                          "right.break.begin=30",
-                          "--set",
-                          "right.break.end=27",
-                          "--events",
-                          recorded,
-                          "--session",
-                          session};
+    const QStringList run =
+        QStringList{"run", "--scene", "box_and_block", "--router", "C3p", "--operator"} +
+        QStringList{"scripted", "--duration", "10", "--reaction-time", "0.6"} +
+        QStringList{"--set", "right.break.begin=30", "--set", "right.break.end=27"} +
+        QStringList{"--events", recorded, "--session", session};
     QCOMPARE(semhapRun(run).code, 0);
     QVERIFY(contents(recorded).contains("\"right.break\""));
     QString error;

@@ -394,18 +394,10 @@ void TestSimRun::commandLineErrors_data()
         << base + QStringList{"--scene", "box_and_block", "--cubes", "99"} << 1
         << "box_and_block: asked for 99 cubes, the scene has 24";
     // The scene says which signals its frames carry: a router reading another is refused.
+    const QStringList predictive{"run", "--scene", "box_and_block", "--router", "C3p"};
     QTest::newRow("a signal the scene lacks")
-        << QStringList{"run",
-                       "--scene",
-                       "box_and_block",
-                       "--router",
-                       "C3p",
-                       "--operator",
-                       "scripted",
-                       "--duration",
-                       "1",
-                       "--set",
-                       "right.F.quantity=wrist.fz"}
+        << predictive + QStringList{"--operator", "scripted", "--duration", "1", "--set"} +
+               QStringList{"right.F.quantity=wrist.fz"}
         << 1
         << "--set right.F.quantity=wrist.fz: node 'right.F' (signal): the right gripper's "
            "frames carry no signal 'wrist.fz' (they carry none)";
