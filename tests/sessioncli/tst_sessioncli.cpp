@@ -471,6 +471,15 @@ void TestSessionCli::aRigsSignalsDriveTheRouter()
         },
         &error));
     QCOMPARE(withSignal, 40);
+
+    // export writes them: tidy in signals.csv, in the frames in frames.jsonl.
+    const QString out = m_dir.filePath("wrist-export");
+    QCOMPARE(semhapRun({"export", session, "--csv", out, "--jsonl", out}).code, 0);
+    const QList<QByteArray> rows = contents(out + "/signals.csv").trimmed().split('\n');
+    QCOMPARE(rows.size(), 41);
+    QCOMPARE(rows[0], QByteArray("t,gripper,signal,value"));
+    QCOMPARE(rows[3], QByteArray("0.02,right,wrist.fz,3"));
+    QCOMPARE(contents(out + "/frames.jsonl").count(R"("signals":{"wrist.fz":)"), 40);
 }
 
 void TestSessionCli::listenRefusesJumpsAndStopsOnTime()
