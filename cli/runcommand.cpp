@@ -98,9 +98,10 @@ QString RunCommand::summary() const
 
 void RunCommand::configure(QCommandLineParser &parser)
 {
-    parser.addOption({QStringLiteral("scene"),
-                      tr("Scene: box_and_block, bimanual_sorting, or an MJCF file."),
-                      tr("NAME|FILE")});
+    parser.addOption(
+        {QStringLiteral("scene"),
+         tr("Scene: %1, or an MJCF file.").arg(World::builtinScenes().join(QStringLiteral(", "))),
+         tr("NAME|FILE")});
     parser.addOption(
         {QStringLiteral("router"), tr("Router preset or router file."), tr("PRESET|FILE")});
     parser.addOption(

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scriptedoperator.h"
 
+#include "insertionoperator.h"
+#include "insertiontask.h"
 #include "perception.h"
 #include "taskmonitor.h"
 #include "world.h"
@@ -443,6 +445,16 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, 
         *error = QStringLiteral("unknown operator '%1' (operators: %2)")
                      .arg(name, operatorNames().join(QStringLiteral(", ")));
         return nullptr;
+    }
+    if (world.taskName() == QLatin1String(InsertionTask::Name)) {
+        if (name != QLatin1String("scripted") && name != QLatin1String("reactive")) {
+            *error = QStringLiteral("%1: the %2 operator cannot do %3 (operators: scripted, "
+                                    "reactive)")
+                         .arg(world.sceneName(), name, QLatin1String(InsertionTask::Name));
+            return nullptr;
+        }
+        return std::make_unique<InsertionOperator>(seed, name == QLatin1String("reactive"),
+                                                   reactionTime);
     }
     Region region;
     ScriptedOperator::Task task = ScriptedOperator::Task::BoxAndBlock;

@@ -77,13 +77,16 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
         *error = loadError.toString();
         return nullptr;
     }
+    // The task first: it may lay the scene out (seeded) before the operator looks at it.
+    run->m_task = makeTask(*run->m_world, options.seed, options.reactionTime, error);
+    if (!run->m_task)
+        return nullptr;
     run->m_operator = makeOperator(options.operatorName, *run->m_world, options.seed,
                                    options.reactionTime, error);
     if (!run->m_operator)
         return nullptr;
     run->m_perception = std::make_unique<Perception>(*router);
     run->m_pipeline = std::make_unique<Pipeline>(std::move(router));
-    run->m_task = std::make_unique<TaskMonitor>(*run->m_world, options.reactionTime);
     run->m_totalSteps = std::lround(options.duration / run->m_world->timestep());
     return run;
 }

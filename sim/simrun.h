@@ -6,7 +6,7 @@
 #include "pipeline.h"
 #include "scenestate.h"
 #include "sessioninfo.h"
-#include "taskmonitor.h"
+#include "task.h"
 #include "world.h"
 
 #include <QJsonObject>
@@ -125,7 +125,7 @@ private:
     std::unique_ptr<Operator> m_operator;
     Operator *m_driveOperator = nullptr;
     std::unique_ptr<Perception> m_perception;
-    std::unique_ptr<TaskMonitor> m_task;
+    std::unique_ptr<Task> m_task;
     double m_nextSceneState = 0.0;
     long m_steps = 0;
     long m_totalSteps = 0;

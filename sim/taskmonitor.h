@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "operator.h"
+#include "task.h"
 #include "world.h"
 
 #include <QJsonObject>
@@ -17,19 +17,15 @@ namespace semhap {
  * per slip. The definitions are in docs/metrics.md. Call observe() after every physics step
  * and feel() with what each hand perceives.
  */
-class TaskMonitor
+class TaskMonitor : public Task
 {
 public:
     /** `reactionTime`: how long before a failure a warning must be felt to count in time. */
     explicit TaskMonitor(const World &world, double reactionTime = DefaultReactionTime);
 
-    /** Applies the rules and counts, after a physics step. */
-    void observe(World &world);
-    /** What the operator perceives of `hand` now (from Perception). */
-    void feel(Gripper hand, const Feeling &feeling, double t);
-
-    /** The metrics so far, snake_case keys; averages over nothing are null. */
-    QJsonObject metrics() const;
+    void observe(World &world) override;
+    void feel(Gripper hand, const Feeling &feeling, double t) override;
+    QJsonObject metrics() const override;
 
     static constexpr double RespawnPenalty = 2.0;
     /** How far from its home site (m) a container still stands on its base. */

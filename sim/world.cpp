@@ -989,15 +989,58 @@ std::array<double, 3> World::objectVelocity(int object) const
 
 void World::placeObject(int object, const std::array<double, 3> &pos)
 {
+    Pose upright;
+    upright.pos = pos;
+    setObjectPose(object, upright);
+}
+
+void World::setObjectPose(int object, const Pose &pose)
+{
     const mjModel *m = d->model.get();
     const int joint = m->body_jntadr[m_objects[size_t(object)].body];
     mjtNum *qpos = d->data->qpos + m->jnt_qposadr[joint];
     mjtNum *qvel = d->data->qvel + m->jnt_dofadr[joint];
-    std::copy(pos.begin(), pos.end(), qpos);
-    const mjtNum upright[4] = {1, 0, 0, 0};
-    std::copy(upright, upright + 4, qpos + 3);
+    std::copy(pose.pos.begin(), pose.pos.end(), qpos);
+    std::copy(pose.quat.begin(), pose.quat.end(), qpos + 3);
     std::fill(qvel, qvel + 6, 0.0);
     d->wake(*this, size_t(object));
+}
+
+bool World::placeFixture(const QString &bodyName, const Pose &pose)
+{
+    const mjModel *m = d->model.get();
+    const int body = id(m, mjOBJ_BODY, bodyName);
+    const int mocap = body >= 0 ? m->body_mocapid[body] : -1;
+    if (mocap < 0 || mocap == d->hands[0].mocap || mocap == d->hands[1].mocap)
+        return false;
+    std::copy(pose.pos.begin(), pose.pos.end(), d->data->mocap_pos + 3 * mocap);
+    std::copy(pose.quat.begin(), pose.quat.end(), d->data->mocap_quat + 4 * mocap);
+    // What is read before the next step (its sites, for the operator's eyes) follows now.
+    mj_kinematics(m, d->data.get());
+    return true;
+}
+
+std::optional<Pose> World::bodyPose(const QString &bodyName) const
+{
+    const int body = id(d->model.get(), mjOBJ_BODY, bodyName);
+    if (body < 0)
+        return std::nullopt;
+    Pose pose;
+    std::copy_n(d->data->xpos + 3 * body, 3, pose.pos.begin());
+    std::copy_n(d->data->xquat + 4 * body, 4, pose.quat.begin());
+    return pose;
+}
+
+std::optional<Pose> World::sitePose(const QString &siteName) const
+{
+    const mjModel *m = d->model.get();
+    const int site = id(m, mjOBJ_SITE, siteName);
+    if (site < 0)
+        return std::nullopt;
+    Pose pose;
+    std::copy_n(d->data->site_xpos + 3 * site, 3, pose.pos.begin());
+    mju_mat2Quat(pose.quat.data(), d->data->site_xmat + 9 * site);
+    return pose;
 }
 
 std::array<double, 3> World::homePosition(int object) const

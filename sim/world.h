@@ -140,6 +140,17 @@ public:
     std::array<double, 3> objectVelocity(int object) const;
     /** Puts an object back at `pos`, upright and at rest (a respawned container). */
     void placeObject(int object, const std::array<double, 3> &pos);
+    /** Puts an object at `pose`, at rest (a plug the task lays out again). */
+    void setObjectPose(int object, const Pose &pose);
+    /**
+     * Moves a mocap body that is no gripper's target (a fixture the task lays out, such as
+     * usb_insertion's port); false when there is no such body.
+     */
+    bool placeFixture(const QString &body, const Pose &pose);
+    /** Where body `name` is, with its orientation; none when the scene has no such body. */
+    std::optional<Pose> bodyPose(const QString &name) const;
+    /** Where site `name` is, with its orientation; none when the scene has no such site. */
+    std::optional<Pose> sitePose(const QString &name) const;
     /** Where the scene put the object at the start (its free joint's initial position). */
     std::array<double, 3> homePosition(int object) const;
     /**

@@ -375,7 +375,7 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("no scene") << base << 2 << "semhap run: --scene is required";
     QTest::newRow("unknown scene")
         << base + QStringList{"--scene", "kitchen"} << 1
-        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block)";
+        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block, usb_insertion)";
     QTest::newRow("unknown operator")
         << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
                        "--operator", "robot",   "--duration",    "1"}

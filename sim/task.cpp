@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#include "task.h"
+
+#include "insertiontask.h"
+#include "taskmonitor.h"
+#include "world.h"
+
+namespace semhap {
+
+std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
+                               QString *error)
+{
+    const QString &name = world.taskName();
+    if (name.isEmpty())
+        return std::make_unique<TaskMonitor>(world, reactionTime);
+    if (name == QLatin1String(InsertionTask::Name))
+        return InsertionTask::create(world, seed, error);
+    *error = QStringLiteral("%1: unknown task '%2' (tasks: %3)")
+                 .arg(world.sceneName(), name, QLatin1String(InsertionTask::Name));
+    return nullptr;
+}
+
+} // namespace semhap

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "operator.h"
+
+#include <QJsonObject>
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+
+namespace semhap {
+
+class World;
+
+/**
+ * A scene's task: its rules (what it puts back, and when) and its metrics
+ * (docs/metrics.md). SimRun calls observe() after every physics step and feel() with what
+ * each hand perceives.
+ */
+class Task
+{
+public:
+    virtual ~Task() = default;
+    /** Applies the rules and counts, after a physics step. */
+    virtual void observe(World &world) = 0;
+    /** What the operator perceives of `hand` now (from Perception). */
+    virtual void feel(Gripper hand, const Feeling &feeling, double t) = 0;
+    /** The metrics so far, snake_case keys; averages over nothing are null. */
+    virtual QJsonObject metrics() const = 0;
+};
+
+/**
+ * The task of `world`'s scene, by its `semhap:task` text (sim/README.md): `usb_insertion`,
+ * or without one the cube tasks (box_and_block, bimanual_sorting). It may lay the scene out
+ * from `seed` now. Null with `error` for a task semhap does not know or a scene it cannot do.
+ */
+std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
+                               QString *error);
+
+} // namespace semhap
