@@ -42,6 +42,12 @@ const QStringList &metricKeys()
                                   QStringLiteral("slip_episodes"),
                                   QStringLiteral("warnings_per_slip_episode"),
                                   QStringLiteral("box_refills"),
+                                  QStringLiteral("insertions"),
+                                  QStringLiteral("time_to_insert"),
+                                  QStringLiteral("collisions"),
+                                  QStringLiteral("peak_insertion_force"),
+                                  QStringLiteral("plug_pickups"),
+                                  QStringLiteral("plugs_dropped"),
                                   QStringLiteral("realtime_factor")};
     return keys;
 }

@@ -107,6 +107,7 @@ private slots:
     void unknownTask();
     void runReportsEveryMetric_data();
     void runReportsEveryMetric();
+    void compareRunsOnTheScene();
 };
 
 void TestInsertion::signalsAreOnTheFrames()
@@ -266,6 +267,25 @@ void TestInsertion::runReportsEveryMetric()
         QVERIFY2(metrics.contains(key), key);
     QVERIFY(metrics.value("insertions").toInt() >= 1);
     QVERIFY(metrics.value("time_to_insert").isDouble());
+}
+
+void TestInsertion::compareRunsOnTheScene()
+{
+    const CliResult r =
+        semhapRun({"compare", "--scene", "usb_insertion", "--routers", "none,usb", "--operator",
+                   "reactive", "--seeds", "2", "--duration", "12", "--jobs", "1", "--csv", "-"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    const QList<QByteArray> header = lines[0].split(',');
+    const int insertions = int(header.indexOf("insertions"));
+    QVERIFY(insertions > 0);
+    QVERIFY(header.contains("collisions") && header.contains("peak_insertion_force") &&
+            header.contains("time_to_insert"));
+    int total = 0;
+    for (int i = 1; i < lines.size(); ++i)
+        total += lines[i].split(',').value(insertions).toInt();
+    QVERIFY(total >= 1);
 }
 
 QTEST_GUILESS_MAIN(TestInsertion)
