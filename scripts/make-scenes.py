@@ -266,12 +266,12 @@ def usb_port():
              ("e", (px + hx) / 2, 0, (px - hx) / 2, hy), ("w", -(px + hx) / 2, 0, (px - hx) / 2, hy)]
     geoms = "\n".join(
         f'      <geom name="port.wall.{n}" type="box" pos="{x:.5f} {y:.5f} {wz:.4f}" '
-        f'size="{sx:.5f} {sy:.5f} {USB_DEPTH / 2:.4f}" rgba="0.25 0.25 0.28 1"/>'
+        f'size="{sx:.5f} {sy:.5f} {USB_DEPTH / 2:.4f}" rgba="0.62 0.64 0.68 1"/>'
         for n, x, y, sx, sy in walls)
     return f"""
     <body name="port" mocap="true" pos="0.1 0 0">
       <geom name="port.base" type="box" pos="0 0 {base / 2:.4f}" size="{px} {py} {base / 2:.4f}"
-            rgba="0.25 0.25 0.28 1"/>
+            rgba="0.62 0.64 0.68 1"/>
 {geoms}
       <geom name="port.tongue" type="box" pos="0 0 {base + 0.0005:.4f}" size="{hx:.5f} {hy:.5f} 0.0005"
             rgba="0.1 0.3 0.8 1" contype="0" conaffinity="0"/>

@@ -498,6 +498,7 @@ void TestViewport::screenshots_data()
     QTest::addColumn<bool>("manual");
     QTest::newRow("box_and_block") << "box_and_block" << true << true;
     QTest::newRow("bimanual_sorting") << "bimanual_sorting" << false << false;
+    QTest::newRow("usb_insertion") << "usb_insertion" << false << false;
 }
 
 void TestViewport::screenshots()
@@ -524,7 +525,7 @@ void TestViewport::presetsAreWellExposed_data()
 {
     QTest::addColumn<QString>("scene");
     QTest::addColumn<int>("key");
-    for (const char *scene : {"box_and_block", "bimanual_sorting"}) {
+    for (const char *scene : {"box_and_block", "bimanual_sorting", "usb_insertion"}) {
         const char *names[] = {"across the jaws", "top", "side", "follow"};
         for (int preset = 0; preset < 4; ++preset)
             QTest::addRow("%s, %s", scene, names[preset]) << QString(scene) << Qt::Key_1 + preset;
