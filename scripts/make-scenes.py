@@ -91,6 +91,16 @@ def gripper_actuators(hand, max_force):
         f'ctrllimited="true" ctrlrange="-20 {max_force}"/>' for side in ("left", "right"))
 
 
+def one_hand_closing(hand):
+    """The contact, equality and actuator sections of a scene with one gripper."""
+    return f"""  <contact>{gripper_exclusions(hand)}
+  </contact>
+  <equality>{gripper_equality(hand)}
+  </equality>
+  <actuator>{gripper_actuators(hand, 160)}
+  </actuator>"""
+
+
 def open_box(name, cx, cy, inner, height, wall, rgba):
     h = inner / 2 + wall / 2
     walls = [
@@ -193,12 +203,7 @@ def box_and_block(max_cubes=24):
 {gripper("right", (-0.15, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>
-  <contact>{gripper_exclusions("right")}
-  </contact>
-  <equality>{gripper_equality("right")}
-  </equality>
-  <actuator>{gripper_actuators("right", 160)}
-  </actuator>
+{one_hand_closing("right")}
 </mujoco>
 """
 
@@ -306,12 +311,7 @@ def usb_insertion():
     </body>
 {gripper("right", (-0.1, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
   </worldbody>
-  <contact>{gripper_exclusions("right")}
-  </contact>
-  <equality>{gripper_equality("right")}
-  </equality>
-  <actuator>{gripper_actuators("right", 160)}
-  </actuator>
+{one_hand_closing("right")}
   <sensor>
     <touch name="port.force" site="port.touch"/>
   </sensor>

@@ -85,6 +85,7 @@ void InsertionTask::layOut(World &world)
     plug.quat = yawQuaternion(m_random.uniform(-MaxYaw, MaxYaw));
     world.setObjectPose(m_plug, plug);
     world.placeFixture(QStringLiteral("port"), port);
+    m_face = world.sitePose(QStringLiteral("port.mouth"))->pos[2];
     m_pickedAt = -1.0;
     m_seated = false;
     m_droppedAt = -1.0;
@@ -145,8 +146,7 @@ void InsertionTask::observe(World &world)
         ++m_insertions;
         m_insertTimeSum += t - m_pickedAt;
     }
-    const Pose mouth = *world.sitePose(QStringLiteral("port.mouth"));
-    const bool handClear = world.gripperPose(Gripper::Right).pos[2] > mouth.pos[2] + HandClear;
+    const bool handClear = world.gripperPose(Gripper::Right).pos[2] > m_face + HandClear;
     const bool touched =
         world.frame(Gripper::Right).left.actor == world.objects()[size_t(m_plug)].actor ||
         world.frame(Gripper::Right).right.actor == world.objects()[size_t(m_plug)].actor;

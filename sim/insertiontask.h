@@ -64,6 +64,7 @@ private:
     int m_plug = -1;
     std::array<double, 3> m_portHome{};
     std::array<double, 3> m_plugHome{};
+    double m_face = 0.0; ///< the height of the port's face (m)
     int m_lateral = -1;
     int m_depth = -1;
     int m_force = -1;

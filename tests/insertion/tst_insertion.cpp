@@ -1,21 +1,19 @@
 // SPDX-License-Identifier: MIT
 // usb_insertion: the scene's signals are on the right frames, the task counts a collision
-// and an insertion when a test driver makes them and lays the scene out again by the seed,
-// and `semhap run` reports every metric.
-#include "clitool.h"
+// and an insertion when a test driver makes them and lays the scene out again by the seed
+// (`semhap run` and `compare` on the scene: tests/simrun).
 #include "insertiontask.h"
 #include "nametable.h"
 #include "operator.h"
 #include "task.h"
 #include "world.h"
 
-#include <QBuffer>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
+#include <functional>
 
 using namespace semhap;
 
@@ -74,25 +72,6 @@ void lower(World &world, Task &task, const std::function<bool()> &done)
     }
 }
 
-struct CliResult
-{
-    int code;
-    QByteArray out;
-    QByteArray err;
-};
-
-CliResult semhapRun(const QStringList &args)
-{
-    CliResult r{0, {}, {}};
-    QBuffer out(&r.out);
-    QBuffer err(&r.err);
-    out.open(QIODevice::WriteOnly);
-    err.open(QIODevice::WriteOnly);
-    CliTool tool({nullptr, &out, &err});
-    r.code = tool.run(args);
-    return r;
-}
-
 } // namespace
 
 class TestInsertion : public QObject
@@ -105,9 +84,6 @@ private slots:
     void taskCountsACollisionAndAnInsertion();
     void onlyItsOperators();
     void unknownTask();
-    void runReportsEveryMetric_data();
-    void runReportsEveryMetric();
-    void compareRunsOnTheScene();
 };
 
 void TestInsertion::signalsAreOnTheFrames()
@@ -245,47 +221,6 @@ void TestInsertion::unknownTask()
     QVERIFY2(world, qPrintable(error));
     QVERIFY(!makeTask(*world, 1, 0.25, &error));
     QCOMPARE(error, path + ": unknown task 'juggling' (tasks: usb_insertion)");
-}
-
-void TestInsertion::runReportsEveryMetric_data()
-{
-    QTest::addColumn<QString>("router");
-    QTest::newRow("usb") << "usb";
-    QTest::newRow("none") << "none";
-}
-
-void TestInsertion::runReportsEveryMetric()
-{
-    QFETCH(QString, router);
-    const CliResult r =
-        semhapRun({"run", "--scene", "usb_insertion", "--router", router, "--operator", "reactive",
-                   "--duration", "20", "--metrics", "-"});
-    QVERIFY2(r.code == 0, r.err.constData());
-    const QJsonObject metrics = QJsonDocument::fromJson(r.out).object();
-    for (const char *key : {"insertions", "time_to_insert", "collisions", "peak_insertion_force",
-                            "plug_pickups", "plugs_dropped"})
-        QVERIFY2(metrics.contains(key), key);
-    QVERIFY(metrics.value("insertions").toInt() >= 1);
-    QVERIFY(metrics.value("time_to_insert").isDouble());
-}
-
-void TestInsertion::compareRunsOnTheScene()
-{
-    const CliResult r =
-        semhapRun({"compare", "--scene", "usb_insertion", "--routers", "none,usb", "--operator",
-                   "reactive", "--seeds", "2", "--duration", "12", "--jobs", "1", "--csv", "-"});
-    QVERIFY2(r.code == 0, r.err.constData());
-    const QList<QByteArray> lines = r.out.trimmed().split('\n');
-    QCOMPARE(lines.size(), 5);
-    const QList<QByteArray> header = lines[0].split(',');
-    const int insertions = int(header.indexOf("insertions"));
-    QVERIFY(insertions > 0);
-    QVERIFY(header.contains("collisions") && header.contains("peak_insertion_force") &&
-            header.contains("time_to_insert"));
-    int total = 0;
-    for (int i = 1; i < lines.size(); ++i)
-        total += lines[i].split(',').value(insertions).toInt();
-    QVERIFY(total >= 1);
 }
 
 QTEST_GUILESS_MAIN(TestInsertion)

@@ -192,6 +192,9 @@ private slots:
     void confirmationsAndSlipEpisodes();
     void stressScripts_data();
     void stressScripts();
+    void usbInsertionReportsEveryMetric_data();
+    void usbInsertionReportsEveryMetric();
+    void compareRunsOnUsbInsertion();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -744,6 +747,47 @@ void TestSimRun::stressScripts()
     QVERIFY2(m.value(failure).toInt() >= atLeast, r.out.constData());
     if (op == "fast_squeeze")
         QCOMPARE(m.value("cubes_broken").toInt(), m.value("grasps").toInt());
+}
+
+void TestSimRun::usbInsertionReportsEveryMetric_data()
+{
+    QTest::addColumn<QString>("router");
+    QTest::newRow("usb") << "usb";
+    QTest::newRow("none") << "none";
+}
+
+void TestSimRun::usbInsertionReportsEveryMetric()
+{
+    QFETCH(QString, router);
+    const CliResult r =
+        semhapRun({"run", "--scene", "usb_insertion", "--router", router, "--operator", "reactive",
+                   "--duration", "20", "--metrics", "-"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QJsonObject metrics = QJsonDocument::fromJson(r.out).object();
+    for (const char *key : {"insertions", "time_to_insert", "collisions", "peak_insertion_force",
+                            "plug_pickups", "plugs_dropped"})
+        QVERIFY2(metrics.contains(key), key);
+    QVERIFY(metrics.value("insertions").toInt() >= 1);
+    QVERIFY(metrics.value("time_to_insert").isDouble());
+}
+
+void TestSimRun::compareRunsOnUsbInsertion()
+{
+    const CliResult r =
+        semhapRun({"compare", "--scene", "usb_insertion", "--routers", "none,usb", "--operator",
+                   "reactive", "--seeds", "2", "--duration", "12", "--jobs", "1", "--csv", "-"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    const QList<QByteArray> header = lines[0].split(',');
+    const int insertions = int(header.indexOf("insertions"));
+    QVERIFY(insertions > 0);
+    QVERIFY(header.contains("collisions") && header.contains("peak_insertion_force") &&
+            header.contains("time_to_insert"));
+    int total = 0;
+    for (int i = 1; i < lines.size(); ++i)
+        total += lines[i].split(',').value(insertions).toInt();
+    QVERIFY(total >= 1);
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
