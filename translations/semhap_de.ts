@@ -1147,6 +1147,30 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>Completion time</source>
         <translation>Zeit bis zum Abschluss</translation>
     </message>
+    <message>
+        <source>Plugs inserted</source>
+        <translation>Stecker eingesteckt</translation>
+    </message>
+    <message>
+        <source>Time to insert</source>
+        <translation>Zeit zum Einstecken</translation>
+    </message>
+    <message>
+        <source>Collisions with the port</source>
+        <translation>Kollisionen mit der Buchse</translation>
+    </message>
+    <message>
+        <source>Peak insertion force</source>
+        <translation>Höchste Steckkraft</translation>
+    </message>
+    <message>
+        <source>Plug pick-ups</source>
+        <translation>Stecker aufgenommen</translation>
+    </message>
+    <message>
+        <source>Plugs dropped</source>
+        <translation>Stecker fallen gelassen</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

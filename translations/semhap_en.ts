@@ -1144,6 +1144,30 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>Completion time</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Plugs inserted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time to insert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collisions with the port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peak insertion force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plug pick-ups</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plugs dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -348,6 +348,15 @@ void TestEventLog::metrics_data()
                             << "28.96×";
     QTest::newRow("text") << "router" << QJsonValue("C3") << "Router"
                           << "C3";
+    QTest::newRow("usb insertions") << "insertions" << QJsonValue(3) << "Plugs inserted"
+                                    << "3";
+    QTest::newRow("usb time") << "time_to_insert" << QJsonValue(6.5) << "Time to insert"
+                              << "6.50 s";
+    QTest::newRow("usb collisions") << "collisions" << QJsonValue(2) << "Collisions with the port"
+                                    << "2";
+    QTest::newRow("usb force") << "peak_insertion_force" << QJsonValue(9.876)
+                               << "Peak insertion force"
+                               << "9.88 N";
     QTest::newRow("unknown count") << "retries" << QJsonValue(4) << "retries"
                                    << "4";
     QTest::newRow("unknown rate") << "transfers_per_minute" << QJsonValue(2.456)

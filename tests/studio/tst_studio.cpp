@@ -2121,6 +2121,8 @@ void TestStudio::screenshotsOfEveryPanel_data()
                                << "en";
     QTest::newRow("1280x800-de") << QSize(1280, 800) << "bimanual_sorting"
                                  << "de";
+    QTest::newRow("1280x800-de-usb") << QSize(1280, 800) << "usb_insertion"
+                                     << "de";
 }
 
 // Pictures of the window with each bottom dock (and the patterns tab) raised, to be looked at
