@@ -180,7 +180,7 @@ void InsertionOperator::act(World &world)
             m_progressAt = t;
         } else if (t - m_progressAt > StuckTime * m_pace && m_command > depth + 0.001) {
             // It does not go in: back off and look again.
-            m_phase = Phase::Backing;
+            startBacking(depth);
         }
         break;
     }
@@ -279,6 +279,13 @@ void InsertionOperator::startInserting(const World &world)
     m_progressAt = world.time();
 }
 
+void InsertionOperator::startBacking(double depth)
+{
+    // From where the tip is: the command may have run ahead of a plug stuck on the face.
+    m_command = std::min(m_command, depth);
+    m_phase = Phase::Backing;
+}
+
 void InsertionOperator::aim(World &world, double above)
 {
     const double t = world.time();
@@ -318,7 +325,7 @@ void InsertionOperator::react(World &world, const Percept &percept)
     if (!percept.warning && m_phase == Phase::Aligning && percept.felt >= m_since + FadeWait) {
         startInserting(world);
     } else if (percept.warning && m_phase == Phase::Inserting && depthOf(world) < 0.0) {
-        m_phase = Phase::Backing;
+        startBacking(depthOf(world));
     }
 }
 

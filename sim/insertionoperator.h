@@ -53,6 +53,8 @@ private:
     void lookAtHand(const World &world);
     void startAligning(World &world, double t, bool lookAgain);
     void startInserting(const World &world);
+    /** Backs off from the tip's `depth` (m) to look again. */
+    void startBacking(double depth);
     /** Where the wrist must be for the plug's tip to be `above` the mouth, turned to the port. */
     void aim(World &world, double above);
     void react(World &world, const Percept &percept);
