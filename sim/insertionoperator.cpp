@@ -38,7 +38,7 @@ constexpr double MaxAlignTime = 2.0;
 // (air.squeeze deflates in 0.5 s).
 constexpr double FadeWait = 0.6;
 // Going in: the tip lowered at this speed (m/s), the wrist's target never more than PushLead
-// below the wrist — about 10 N through the gripper's weld (100 N/mm): a gentle push.
+// below the wrist: a gentle push, about 5 N on a plug held on the face (measured).
 constexpr double InsertSpeed = 0.01;
 constexpr double BackSpeed = 0.02;
 constexpr double PushLead = 0.0001;
