@@ -108,7 +108,8 @@ void RunCommand::configure(QCommandLineParser &parser)
         {QStringLiteral("operator"),
          tr("Who drives the grippers: %1.").arg(operatorNames().join(QStringLiteral(", "))),
          tr("NAME")});
-    parser.addOption({QStringLiteral("seed"), tr("Seed of the operator (default 1)."), tr("N")});
+    parser.addOption({QStringLiteral("seed"),
+                      tr("Seed of the operator and of a laid-out scene (default 1)."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
     parser.addOption(
         {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
