@@ -195,6 +195,7 @@ private slots:
     void usbInsertionReportsEveryMetric_data();
     void usbInsertionReportsEveryMetric();
     void compareRunsOnUsbInsertion();
+    void usbWarnsOfCollisionsOnlyOverThePort();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -788,6 +789,38 @@ void TestSimRun::compareRunsOnUsbInsertion()
     for (int i = 1; i < lines.size(); ++i)
         total += lines[i].split(',').value(insertions).toInt();
     QVERIFY(total >= 1);
+}
+
+// The usb preset's collision warning is for a plug over the port: lifting the plug from the
+// table carries its tip past the height of the port's face, far off the port's axis, which
+// warned before the plug had come near the port.
+void TestSimRun::usbWarnsOfCollisionsOnlyOverThePort()
+{
+    QTemporaryDir dir;
+    const QString events = dir.filePath("events.jsonl");
+    const CliResult r =
+        semhapRun({"run", "--scene", "usb_insertion", "--router", "usb", "--operator", "scripted",
+                   "--duration", "20", "--events", events});
+    QVERIFY2(r.code == 0, r.err.constData());
+    double overPort = -1.0;
+    int warnings = 0;
+    for (const QByteArray &line : readAll(events).split('\n')) {
+        const QJsonObject e = QJsonDocument::fromJson(line).object();
+        if (e.value("phase").toString() != "begin")
+            continue;
+        const double t = e.value("t").toDouble();
+        if (e.value("message").toString() == "plug.over_port" && overPort < 0)
+            overPort = t;
+        if (e.value("message").toString() == "plug.collision") {
+            ++warnings;
+            QVERIFY2(overPort >= 0 && t > overPort,
+                     qPrintable(QString("a collision warning at %1 s, over the port at %2 s")
+                                    .arg(t)
+                                    .arg(overPort)));
+        }
+    }
+    QVERIFY(overPort > 0);
+    QVERIFY(warnings > 0);
 }
 
 QTEST_GUILESS_MAIN(TestSimRun)
