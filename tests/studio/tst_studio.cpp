@@ -2114,14 +2114,19 @@ void TestStudio::screenshotsOfEveryPanel_data()
 {
     QTest::addColumn<QSize>("size");
     QTest::addColumn<QString>("scene");
+    QTest::addColumn<QString>("router");
     QTest::addColumn<QString>("language");
     QTest::newRow("1280x800") << QSize(1280, 800) << "box_and_block"
+                              << "C3"
                               << "en";
     QTest::newRow("1920x1080") << QSize(1920, 1080) << "bimanual_sorting"
+                               << "C3"
                                << "en";
     QTest::newRow("1280x800-de") << QSize(1280, 800) << "bimanual_sorting"
+                                 << "C3"
                                  << "de";
     QTest::newRow("1280x800-de-usb") << QSize(1280, 800) << "usb_insertion"
+                                     << "usb"
                                      << "de";
 }
 
@@ -2132,10 +2137,12 @@ void TestStudio::screenshotsOfEveryPanel()
 {
     QFETCH(QSize, size);
     QFETCH(QString, scene);
+    QFETCH(QString, router);
     QFETCH(QString, language);
     StudioOptions o = options();
     o.size = size;
     o.run.scene = scene;
+    o.run.router = router;
     o.speed = 2.0;
     Studio studio(o);
     studio.start();
