@@ -48,6 +48,14 @@ const QStringList &metricKeys()
                                   QStringLiteral("peak_insertion_force"),
                                   QStringLiteral("plug_pickups"),
                                   QStringLiteral("plugs_dropped"),
+                                  QStringLiteral("area_cleaned"),
+                                  QStringLiteral("plates_cleaned"),
+                                  QStringLiteral("time_to_clean"),
+                                  QStringLiteral("peak_force"),
+                                  QStringLiteral("time_above_safe_force"),
+                                  QStringLiteral("plates_broken"),
+                                  QStringLiteral("average_press_force"),
+                                  QStringLiteral("warnings_felt"),
                                   QStringLiteral("realtime_factor")};
     return keys;
 }

@@ -11,6 +11,8 @@ The grippers carry 4x4 taxel pads and follow semhap's naming convention (sim/REA
   site pick / place         box sites: where the operator picks cubes and where they go
   site home                 where a dropped container respawns (bimanual_sorting)
   body container            the container the left hand holds (bimanual_sorting)
+  semhap:task               a <text> naming the task when it is not found by the sites
+  signal:<hand>:<name>      a <text> declaring a signal of that hand's frames (sim/README.md)
 Run it after changing a dimension; the scenes are data, committed as generated.
 
 Speed (tests/bench/README.md, bench_sim): most of box_and_block's mj_step was the resting
@@ -34,9 +36,11 @@ SLIPPERY = "0.1 0.005 0.0001"
 OBJECT_CONTACT = 'priority="1" condim="3" solref="0.004 1" solimp="0.95 0.99 0.001"'
 
 
-def gripper(hand, pos, half_open, rgba):
-    """A parallel-jaw gripper hanging fingers down; `half_open`: finger offset from centre."""
+def gripper(hand, pos, half_open, rgba, quat=None, tool=""):
+    """A parallel-jaw gripper, fingers down unless turned by `quat`; `half_open`: finger
+    offset from centre; `tool`: bodies fixed to the wrist (a sponge)."""
     x, y, z = pos
+    turn = f' quat="{quat}"' if quat else ""
     taxels = []
     for side, sign in (("left", 1), ("right", -1)):
         pad = []
@@ -49,8 +53,8 @@ def gripper(hand, pos, half_open, rgba):
                     f'pos="{px:.4f} {-sign * 0.006:.4f} {pz:.4f}"/>')
         taxels.append("\n".join(pad))
     return f"""
-    <body name="{hand}.target" mocap="true" pos="{x} {y} {z}"/>
-    <body name="{hand}.gripper" pos="{x} {y} {z}">
+    <body name="{hand}.target" mocap="true" pos="{x} {y} {z}"{turn}/>
+    <body name="{hand}.gripper" pos="{x} {y} {z}"{turn}>
       <freejoint name="{hand}.free"/>
       <geom name="{hand}.palm" type="box" size="0.03 {half_open + 0.012:.3f} 0.012" mass="0.4"
             rgba="{rgba}" contype="0" conaffinity="0"/>
@@ -67,7 +71,7 @@ def gripper(hand, pos, half_open, rgba):
         <geom name="{hand}.link.right" type="box" size="0.022 0.002 0.05" pos="0 -0.002 0.01"
               mass="0.05" rgba="{rgba}" contype="0" conaffinity="0"/>
 {taxels[1]}
-      </body>
+      </body>{tool}
     </body>"""
 
 
@@ -91,13 +95,17 @@ def gripper_actuators(hand, max_force):
         f'ctrllimited="true" ctrlrange="-20 {max_force}"/>' for side in ("left", "right"))
 
 
-def one_hand_closing(hand):
-    """The contact, equality and actuator sections of a scene with one gripper."""
-    return f"""  <contact>{gripper_exclusions(hand)}
+def closing(hands, more_actuators=""):
+    """The contact, equality and actuator sections of a scene with these grippers, and the
+    scene's own actuators."""
+    exclusions = "".join(gripper_exclusions(hand) for hand in hands)
+    welds = "".join(gripper_equality(hand) for hand in hands)
+    actuators = "".join(gripper_actuators(hand, 160) for hand in hands)
+    return f"""  <contact>{exclusions}
   </contact>
-  <equality>{gripper_equality(hand)}
+  <equality>{welds}
   </equality>
-  <actuator>{gripper_actuators(hand, 160)}
+  <actuator>{actuators}{more_actuators}
   </actuator>"""
 
 
@@ -138,6 +146,8 @@ def cubes(count, cx, cy, layers_z, prefix="cube"):
     return "\n".join(bodies), "\n".join(numerics)
 
 
+CUBE_COUNT = '    <numeric name="semhap:cubes" data="12"/>\n'
+
 # jacobian="sparse": with a dozen resting cubes this is 1.5x faster than MuJoCo's automatic
 # (dense) choice here.
 HEADER = """<!-- SPDX-License-Identifier: MIT -->
@@ -177,13 +187,12 @@ HEADER = """<!-- SPDX-License-Identifier: MIT -->
   </asset>"""
 
 
-def opening(model, fragile):
-    """Everything a scene has before its own bodies: options, assets, the cube count and
-    fragile thresholds, light and floor."""
+def opening(model, custom):
+    """Everything a scene has before its own bodies: options, assets, its custom numbers and
+    texts (the cube count, fragile thresholds, task, signals), light and floor."""
     return HEADER.format(model=model, nconmax=400, njmax=1500, taxel=TAXEL_R) + f"""
   <custom>
-    <numeric name="semhap:cubes" data="12"/>
-{fragile}
+{custom}
   </custom>
   <worldbody>
     <light pos="0 -0.3 1.2" dir="0 0.2 -1" diffuse="0.4 0.4 0.4" specular="0.1 0.1 0.1"/>
@@ -193,7 +202,7 @@ def opening(model, fragile):
 def box_and_block(max_cubes=24):
     pile, fragile = cubes(max_cubes, -0.15, 0.0,
                           (CUBE + 0.001, 3 * CUBE + 0.003, 5 * CUBE + 0.005))
-    return opening("box_and_block", fragile) + f"""
+    return opening("box_and_block", CUBE_COUNT + fragile) + f"""
 {open_box("box.a", -0.15, 0.0, 0.26, 0.06, 0.01, "0.55 0.42 0.3 1")}
 {open_box("box.b", 0.15, 0.0, 0.26, 0.06, 0.01, "0.55 0.42 0.3 1")}
     <geom name="partition" type="box" pos="0 0 0.075" size="0.005 0.14 0.075"
@@ -203,7 +212,7 @@ def box_and_block(max_cubes=24):
 {gripper("right", (-0.15, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>
-{one_hand_closing("right")}
+{closing(["right"])}
 </mujoco>
 """
 
@@ -222,7 +231,7 @@ def bimanual_sorting(max_cubes=16):
                      f'pos="{x:.4f} {y:.4f} {height / 2:.4f}" '
                      f'size="{sx:.4f} {sy:.4f} {height / 2:.4f}" mass="0.07" '
                      f'friction="0.1 0.005 0.0001" {OBJECT_CONTACT} rgba="0.4 0.65 0.7 1"/>')
-    return opening("bimanual_sorting", fragile) + f"""
+    return opening("bimanual_sorting", CUBE_COUNT + fragile) + f"""
     <geom name="container.base" type="cylinder" pos="-0.2 0 0.01" size="0.075 0.01"
           rgba="0.45 0.45 0.5 1"/>
 {open_box("box.cubes", 0.2, 0.0, 0.26, 0.04, 0.01, "0.55 0.42 0.3 1")}
@@ -238,12 +247,100 @@ def bimanual_sorting(max_cubes=16):
 {gripper("right", (0.2, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
 {pile}
   </worldbody>
-  <contact>{gripper_exclusions("left")}{gripper_exclusions("right")}
-  </contact>
-  <equality>{gripper_equality("left")}{gripper_equality("right")}
-  </equality>
-  <actuator>{gripper_actuators("left", 160)}{gripper_actuators("right", 160)}
-  </actuator>
+{closing(["left", "right"])}
+</mujoco>
+"""
+
+
+# dish_wiping (docs/metrics.md, sim/README.md): a square ceramic plate on a stand, held at its rim by
+# the left gripper turned on its side (its jaws close vertically); a sponge on a spring-loaded
+# holder under the right wrist, whose force/torque sensor sits between the wrist and the sponge.
+PLATE_R = 0.11           # half the side of the square plate
+PLATE_HALF = 0.006
+STAND_TOP = 0.10
+STAINS = 6               # 6 x 6 cells over the plate's middle
+STAIN_SPAN = 0.07        # half the side of the stained square
+PLATE_BREAK = 40         # N: the press that breaks the plate (fragile:plate)
+SPONGE = (0.035, 0.025, 0.015)   # half sizes: a 7 x 5 x 3 cm sponge
+SPONGE_DROP = 0.105      # its centre below the wrist, at rest
+SPONGE_STIFFNESS = 1000  # N/m: the holder's spring with the sponge, as the run begins
+SPONGE_STIFFER = 1500    # N/m more once the seeded change has come (right.sponge.stiffen)
+# Boxes, not cylinders: MuJoCo 2.2 collides cylinders through its general convex test, which
+# gave the plate one or two contact points on the stand and pads, and it crept and spun away.
+# Contact bits: the sponge (4) touches only the plate (4 | 1), so it never catches on the stand
+# or the left fingers; the plate touches the world and the taxels (1) too.
+SPONGE_BITS = 'contype="4" conaffinity="4"'
+PLATE_BITS = 'contype="5" conaffinity="5"'
+SOFT_CONTACT = 'condim="3" solref="0.004 1" solimp="0.95 0.99 0.001"'
+SPONGE_CONTACT = 'condim="3" solref="0.03 1" solimp="0.9 0.95 0.001" solmix="10"'
+
+
+def sponge_tool():
+    sx, sy, sz = SPONGE
+    return f"""
+      <geom name="right.holder" type="box" pos="0 0 -0.05" size="0.012 0.012 0.045" mass="0.05"
+            rgba="0.3 0.3 0.33 1" contype="0" conaffinity="0"/>
+      <body name="right.sponge" pos="0 0 {-SPONGE_DROP}">
+        <!-- The sponge and its spring-loaded holder as one spring (4 cm of travel); the
+             stiffening actuator adds its gain times the compression when the task sets it. -->
+        <joint name="right.sponge.press" type="slide" axis="0 0 1" stiffness="{SPONGE_STIFFNESS}"
+               damping="20" range="-0.002 0.04" solreflimit="0.004 1"/>
+        <geom name="right.sponge" type="box" size="{sx} {sy} {sz}" mass="0.08"
+              rgba="0.96 0.78 0.2 1" friction="0.6 0.005 0.0001" {SPONGE_BITS} {SPONGE_CONTACT}/>
+        <!-- The wrist's force/torque sensor, z pointing down: fz is the press on the plate. -->
+        <site name="right.ft" pos="0 0 {sz}" quat="0 1 0 0" size="0.004"/>
+        <site name="right.sponge.face" type="box" pos="0 0 {-sz}" size="{sx + 0.002} {sy + 0.002} 0.01"
+              rgba="0 0 0 0"/>
+      </body>"""
+
+
+def stains():
+    cell = 2 * STAIN_SPAN / STAINS
+    geoms = []
+    for i in range(STAINS):
+        for j in range(STAINS):
+            x = -STAIN_SPAN + (i + 0.5) * cell
+            y = -STAIN_SPAN + (j + 0.5) * cell
+            geoms.append(
+                f'      <geom name="plate.stain.{i}.{j}" type="box" pos="{x:.4f} {y:.4f} '
+                f'{PLATE_HALF + 0.0004:.4f}" size="{cell / 2 - 0.001:.4f} {cell / 2 - 0.001:.4f} 0.0004" '
+                f'density="0" rgba="0.5 0.33 0.14 0.85" contype="0" conaffinity="0"/>')
+    return "\n".join(geoms)
+
+
+def dish_wiping():
+    custom = f"""    <numeric name="fragile:plate" data="{PLATE_BREAK}"/>
+    <text name="semhap:task" data="dish_wiping"/>
+    <text name="signal:right:wrist.fz" data="sensor right.wrist.force z"/>
+    <text name="signal:right:wrist.ft" data="sensor right.wrist.force x"/>
+    <text name="signal:right:sponge.contact" data="sensor right.sponge.touch"/>"""
+    plate_z = STAND_TOP + PLATE_HALF
+    # The left jaws reach 4-8 cm from the wrist along its turned z axis (world +y): the pads
+    # take the rim's outer 2.5 cm, clear of the stand (radius 8 cm) and of the sponge.
+    left_y = -PLATE_R - 0.054
+    sponge_rest = STAND_TOP + 2 * PLATE_HALF + 0.05
+    stiffen = f"""
+    <general name="right.sponge.stiffen" joint="right.sponge.press" gaintype="affine"
+             gainprm="0 {-SPONGE_STIFFER} 0" ctrllimited="true" ctrlrange="0 1"/>"""
+    return opening("dish_wiping", custom) + f"""
+    <geom name="stand" type="box" pos="0 0 {STAND_TOP / 2}" size="0.08 0.08 {STAND_TOP / 2}"
+          friction="1 0.005 0.0001" rgba="0.45 0.47 0.5 1"/>
+    <body name="plate" pos="0 0 {plate_z:.4f}">
+      <freejoint/>
+      <geom name="plate.body" type="box" size="{PLATE_R} {PLATE_R} {PLATE_HALF}" mass="0.4"
+            friction="0.3 0.005 0.0001" {PLATE_BITS} {SOFT_CONTACT} rgba="0.97 0.97 0.95 1"/>
+{stains()}
+    </body>
+{gripper("left", (0.0, left_y, plate_z), 0.03, "0.6 0.45 0.35 1", quat="0.70710678 0.70710678 0 0")}
+{gripper("right", (0.0, 0.0, sponge_rest + SPONGE_DROP + SPONGE[2]), 0.045, "0.35 0.45 0.6 1",
+         tool=sponge_tool())}
+  </worldbody>
+{closing(["left", "right"], stiffen)}
+  <sensor>
+    <force name="right.wrist.force" site="right.ft"/>
+    <torque name="right.wrist.torque" site="right.ft"/>
+    <touch name="right.sponge.touch" site="right.sponge.face"/>
+  </sensor>
 </mujoco>
 """
 
@@ -311,7 +408,7 @@ def usb_insertion():
     </body>
 {gripper("right", (-0.1, 0.0, 0.3), 0.045, "0.35 0.45 0.6 1")}
   </worldbody>
-{one_hand_closing("right")}
+{closing(["right"])}
   <sensor>
     <touch name="port.force" site="port.touch"/>
   </sensor>
@@ -323,7 +420,7 @@ def main():
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "resources", "scenes")
     os.makedirs(root, exist_ok=True)
     for name, text in (("box_and_block", box_and_block()), ("bimanual_sorting", bimanual_sorting()),
-                       ("usb_insertion", usb_insertion())):
+                       ("usb_insertion", usb_insertion()), ("dish_wiping", dish_wiping())):
         with open(os.path.join(root, name + ".xml"), "w") as out:
             out.write(text)
 

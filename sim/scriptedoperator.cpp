@@ -5,6 +5,8 @@
 #include "insertiontask.h"
 #include "perception.h"
 #include "taskmonitor.h"
+#include "wipingoperator.h"
+#include "wipingtask.h"
 #include "world.h"
 
 #include <algorithm>
@@ -446,15 +448,18 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, 
                      .arg(name, operatorNames().join(QStringLiteral(", ")));
         return nullptr;
     }
-    if (world.taskName() == QLatin1String(InsertionTask::Name)) {
+    const bool insertion = world.taskName() == QLatin1String(InsertionTask::Name);
+    if (insertion || world.taskName() == QLatin1String(WipingTask::Name)) {
         if (name != QLatin1String("scripted") && name != QLatin1String("reactive")) {
             *error = QStringLiteral("%1: the %2 operator cannot do %3 (operators: scripted, "
                                     "reactive)")
-                         .arg(world.sceneName(), name, QLatin1String(InsertionTask::Name));
+                         .arg(world.sceneName(), name, world.taskName());
             return nullptr;
         }
-        return std::make_unique<InsertionOperator>(seed, name == QLatin1String("reactive"),
-                                                   reactionTime);
+        const bool reactive = name == QLatin1String("reactive");
+        if (insertion)
+            return std::make_unique<InsertionOperator>(seed, reactive, reactionTime);
+        return std::make_unique<WipingOperator>(world, seed, reactive, reactionTime);
     }
     Region region;
     ScriptedOperator::Task task = ScriptedOperator::Task::BoxAndBlock;

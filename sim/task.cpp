@@ -3,6 +3,7 @@
 
 #include "insertiontask.h"
 #include "taskmonitor.h"
+#include "wipingtask.h"
 #include "world.h"
 
 namespace semhap {
@@ -15,8 +16,11 @@ std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reaction
         return std::make_unique<TaskMonitor>(world, reactionTime);
     if (name == QLatin1String(InsertionTask::Name))
         return InsertionTask::create(world, seed, error);
-    *error = QStringLiteral("%1: unknown task '%2' (tasks: %3)")
-                 .arg(world.sceneName(), name, QLatin1String(InsertionTask::Name));
+    if (name == QLatin1String(WipingTask::Name))
+        return WipingTask::create(world, seed, error);
+    *error = QStringLiteral("%1: unknown task '%2' (tasks: %3, %4)")
+                 .arg(world.sceneName(), name, QLatin1String(InsertionTask::Name),
+                      QLatin1String(WipingTask::Name));
     return nullptr;
 }
 

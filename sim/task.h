@@ -32,8 +32,9 @@ public:
 
 /**
  * The task of `world`'s scene, by its `semhap:task` text (sim/README.md): `usb_insertion`,
- * or without one the cube tasks (box_and_block, bimanual_sorting). It may lay the scene out
- * from `seed` now. Null with `error` for a task semhap does not know or a scene it cannot do.
+ * `dish_wiping`, or without one the cube tasks (box_and_block, bimanual_sorting). It may lay
+ * the scene out, or draw what it varies unseen, from `seed` now. Null with `error` for a task
+ * semhap does not know or a scene it cannot do.
  */
 std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
                                QString *error);

@@ -149,6 +149,8 @@ struct World::Private
 
     void extract(World &world, double t);
     void checkFractures(World &world, double t);
+    /** Object `i` breaks at `t` under `force`: it stops colliding, vanishes and is parked. */
+    void fracture(World &world, size_t i, double t, double force);
     /** Whether a fingertip of `gripper` touched `object` at the last step. */
     bool touches(const World &world, Gripper gripper, int object) const;
     /** The box around a geom and its margin, as placed at the last step's start. */
@@ -503,24 +505,53 @@ void World::Private::checkFractures(World &world, double t)
         if (object.fragileForce <= 0)
             continue;
         overForceSteps[i] = gripOnObject[i] > object.fragileForce ? overForceSteps[i] + 1 : 0;
-        if (overForceSteps[i] < FractureSteps)
-            continue;
-        wake(world, i);
-        object.broken = true;
-        world.m_fractures.push_back({t, int(i), gripOnObject[i]});
-        mjModel *m = model.get();
-        std::vector<float> &alphas = rests[i].alphas;
-        alphas.clear();
-        for (int geom = 0; geom < m->ngeom; ++geom) {
-            if (m->geom_bodyid[geom] == object.body) {
-                m->geom_contype[geom] = 0;
-                m->geom_conaffinity[geom] = 0;
-                alphas.push_back(m->geom_rgba[4 * geom + 3]);
-                m->geom_rgba[4 * geom + 3] = 0.0f;
-            }
-        }
-        world.placeObject(int(i), {0.0, 0.0, ParkingDepth});
+        if (overForceSteps[i] >= FractureSteps)
+            fracture(world, i, t, gripOnObject[i]);
     }
+}
+
+void World::Private::fracture(World &world, size_t i, double t, double force)
+{
+    SceneObject &object = world.m_objects[i];
+    wake(world, i);
+    object.broken = true;
+    world.m_fractures.push_back({t, int(i), force});
+    mjModel *m = model.get();
+    std::vector<float> &alphas = rests[i].alphas;
+    alphas.clear();
+    for (int geom = 0; geom < m->ngeom; ++geom) {
+        if (m->geom_bodyid[geom] == object.body) {
+            m->geom_contype[geom] = 0;
+            m->geom_conaffinity[geom] = 0;
+            alphas.push_back(m->geom_rgba[4 * geom + 3]);
+            m->geom_rgba[4 * geom + 3] = 0.0f;
+        }
+    }
+    world.placeObject(int(i), {0.0, 0.0, ParkingDepth});
+}
+
+void World::breakObject(int object, double force)
+{
+    if (!m_objects[size_t(object)].broken)
+        d->fracture(*this, size_t(object), time(), force);
+}
+
+bool World::setControl(const QString &actuator, double value)
+{
+    const int index = id(d->model.get(), mjOBJ_ACTUATOR, actuator);
+    if (index >= 0)
+        d->data->ctrl[index] = value;
+    return index >= 0;
+}
+
+int World::geomIndex(const QString &geomName) const
+{
+    return id(d->model.get(), mjOBJ_GEOM, geomName);
+}
+
+void World::setGeomAlpha(int geom, double alpha)
+{
+    d->model->geom_rgba[4 * geom + 3] = float(alpha);
 }
 
 Aabb World::Private::moverBox(size_t *k) const

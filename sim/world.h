@@ -182,6 +182,21 @@ public:
 
     /** The fractures of the last step. */
     const std::vector<Fracture> &fractures() const { return m_fractures; }
+    /**
+     * Breaks `object` now, as a fracture does (it leaves play and is listed in fractures()):
+     * a task's own rule, such as a plate pressed too hard by a tool rather than by fingertips.
+     */
+    void breakObject(int object, double force);
+
+    /**
+     * Sets the control of the scene's actuator `name` (a task changing the scene); false when
+     * it has none.
+     */
+    bool setControl(const QString &actuator, double value);
+    /** The geom named `name`, or -1. */
+    int geomIndex(const QString &name) const;
+    /** Sets how opaque a geom is drawn, 0 to 1 (a stain wiped off). */
+    void setGeomAlpha(int geom, double alpha);
 
     /** The MuJoCo model and state, for the renderer (sim/ only). */
     const mjModel_ *model() const;

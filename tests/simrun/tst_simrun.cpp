@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Headless runs of the simulation: deterministic streams, task metrics whose answer is known,
 // the container's slip timing, and the `semhap run` command line.
-#include "clitool.h"
+#include "clirun.h"
 #include "contactframereader.h"
 #include "handplan.h"
 #include "simrun.h"
@@ -18,25 +18,6 @@
 using namespace semhap;
 
 namespace {
-
-struct CliResult
-{
-    int code;
-    QByteArray out;
-    QByteArray err;
-};
-
-CliResult semhapRun(const QStringList &args)
-{
-    CliResult r{0, {}, {}};
-    QBuffer out(&r.out);
-    QBuffer err(&r.err);
-    out.open(QIODevice::WriteOnly);
-    err.open(QIODevice::WriteOnly);
-    CliTool tool({nullptr, &out, &err});
-    r.code = tool.run(args);
-    return r;
-}
 
 QByteArray readAll(const QString &path)
 {
@@ -379,7 +360,8 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("no scene") << base << 2 << "semhap run: --scene is required";
     QTest::newRow("unknown scene")
         << base + QStringList{"--scene", "kitchen"} << 1
-        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block, usb_insertion)";
+        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block, dish_wiping, "
+           "usb_insertion)";
     QTest::newRow("unknown operator")
         << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
                        "--operator", "robot",   "--duration",    "1"}
