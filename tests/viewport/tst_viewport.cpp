@@ -499,6 +499,7 @@ void TestViewport::screenshots_data()
     QTest::newRow("box_and_block") << "box_and_block" << true << true;
     QTest::newRow("bimanual_sorting") << "bimanual_sorting" << false << false;
     QTest::newRow("usb_insertion") << "usb_insertion" << false << false;
+    QTest::newRow("dish_wiping") << "dish_wiping" << false << false;
 }
 
 void TestViewport::screenshots()
@@ -525,7 +526,8 @@ void TestViewport::presetsAreWellExposed_data()
 {
     QTest::addColumn<QString>("scene");
     QTest::addColumn<int>("key");
-    for (const char *scene : {"box_and_block", "bimanual_sorting", "usb_insertion"}) {
+    for (const char *scene :
+         {"box_and_block", "bimanual_sorting", "usb_insertion", "dish_wiping"}) {
         const char *names[] = {"across the jaws", "top", "side", "follow"};
         for (int preset = 0; preset < 4; ++preset)
             QTest::addRow("%s, %s", scene, names[preset]) << QString(scene) << Qt::Key_1 + preset;
