@@ -1171,6 +1171,42 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>Plugs dropped</source>
         <translation>Stecker fallen gelassen</translation>
     </message>
+    <message>
+        <source>Area cleaned (plates)</source>
+        <translation>Gereinigte Fläche (Teller)</translation>
+    </message>
+    <message>
+        <source>Time to clean</source>
+        <translation>Zeit bis sauber</translation>
+    </message>
+    <message>
+        <source>Plates cleaned</source>
+        <translation>Teller gereinigt</translation>
+    </message>
+    <message>
+        <source>Plates broken</source>
+        <translation>Teller zerbrochen</translation>
+    </message>
+    <message>
+        <source>Peak force</source>
+        <translation>Spitzenkraft</translation>
+    </message>
+    <message>
+        <source>Time above the safe force</source>
+        <translation>Zeit über der sicheren Kraft</translation>
+    </message>
+    <message>
+        <source>Average press force</source>
+        <translation>Mittlere Andruckkraft</translation>
+    </message>
+    <message>
+        <source>Warnings felt</source>
+        <translation>Gefühlte Warnungen</translation>
+    </message>
+    <message>
+        <source>Sponge stiffened at</source>
+        <translation>Schwamm versteift bei</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -1165,6 +1165,42 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Area cleaned (plates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time to clean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plates cleaned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plates broken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peak force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time above the safe force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average press force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sponge stiffened at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Plugs dropped</source>
         <translation type="unfinished"></translation>
     </message>

@@ -357,6 +357,19 @@ void TestEventLog::metrics_data()
     QTest::newRow("usb force") << "peak_insertion_force" << QJsonValue(9.876)
                                << "Peak insertion force"
                                << "9.88 N";
+    // dish_wiping's (docs/metrics.md).
+    QTest::newRow("area cleaned") << "area_cleaned" << QJsonValue(3.0555)
+                                  << "Area cleaned (plates)"
+                                  << "3.06";
+    QTest::newRow("time to clean: not yet") << "time_to_clean" << QJsonValue() << "Time to clean"
+                                            << "n/a";
+    QTest::newRow("peak force") << "peak_force" << QJsonValue(40.218) << "Peak force"
+                                << "40.22 N";
+    QTest::newRow("above the safe force")
+        << "time_above_safe_force" << QJsonValue(17.566) << "Time above the safe force"
+        << "17.57 s";
+    QTest::newRow("plates broken") << "plates_broken" << QJsonValue(2) << "Plates broken"
+                                   << "2";
     QTest::newRow("unknown count") << "retries" << QJsonValue(4) << "retries"
                                    << "4";
     QTest::newRow("unknown rate") << "transfers_per_minute" << QJsonValue(2.456)
