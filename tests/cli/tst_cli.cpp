@@ -86,7 +86,8 @@ void TestCli::errors_data()
         << 2 << "semhap route: at most one output may be '-' (standard output)";
     QTest::newRow("unknown preset")
         << QStringList{"route", "--router", "C5", "--frames", Trace} << 1
-        << "C5: no such router preset (presets: C1, C2, C3, C3p, C4, C4p, none, sensory, visual)";
+        << "C5: no such router preset (presets: C1, C2, C3, C3p, C4, C4p, none, sensory, usb, "
+           "visual, wipe)";
     QTest::newRow("missing frames file")
         << QStringList{"route", "--router", "C3", "--frames", "/nonexistent/frames.jsonl"} << 1
         << "/nonexistent/frames.jsonl: cannot read: No such file or directory";

@@ -151,7 +151,7 @@ void TestRouter::unknownPreset()
     QCOMPARE(
         error.toString(),
         QString("C5: no such router preset (presets: C1, C2, C3, C3p, C4, C4p, none, sensory, "
-                "usb, visual)"));
+                "usb, visual, wipe)"));
 }
 
 void TestRouter::graphRoundTrip()

@@ -4,6 +4,9 @@
 #include "clirun.h"
 #include "handplan.h"
 #include "nametable.h"
+#include "pipeline.h"
+#include "router.h"
+#include "simrun.h"
 #include "wipingtask.h"
 #include "world.h"
 
@@ -96,6 +99,8 @@ private slots:
     void plateOverItsLimitBreaks();
     void signalsAreOnTheFrames();
     void stiffensAtASeededTime();
+    void wipePresetConfirmsRendersAndWarns_data();
+    void wipePresetConfirmsRendersAndWarns();
     void runReportsEveryMetric();
     void refusesASceneWithoutItsParts();
     void operatorsOfTheScene_data();
@@ -241,6 +246,74 @@ void TestWiping::stiffensAtASeededTime()
         QVERIFY(!times.contains(at));
         times.append(at);
     }
+}
+
+/** What a router made of the right hand's wiping: its events, and right.vibro's output. */
+class WipeSink : public PipelineSink
+{
+public:
+    explicit WipeSink(const Router &router)
+        : m_vibro(router.player().deviceIndex(QStringLiteral("right.vibro")))
+    {}
+    void onEvent(const SemanticEvent &event) override
+    {
+        if (event.gripper == Gripper::Right && event.phase == EventPhase::Begin)
+            begun.append(messageNames().name(int(event.message)));
+    }
+    void onDeviceFrame(const DeviceFrame &frame) override
+    {
+        if (frame.device == m_vibro)
+            vibro = frame.values[0];
+    }
+
+    QStringList begun;
+    double vibro = 0.0;
+
+private:
+    int m_vibro;
+};
+
+void TestWiping::wipePresetConfirmsRendersAndWarns_data()
+{
+    QTest::addColumn<double>("depth");
+    QTest::addColumn<QStringList>("begun");
+    QTest::newRow("in the air") << -0.005 << QStringList();
+    QTest::newRow("a firm wipe, 12 mm") << 0.012 << QStringList{"engaged"};
+    QTest::newRow("past the safe force, 30 mm") << 0.03 << QStringList{"engaged", "break"};
+}
+
+void TestWiping::wipePresetConfirmsRendersAndWarns()
+{
+    QFETCH(double, depth);
+    QFETCH(QStringList, begun);
+    std::unique_ptr<World> world = loadScene();
+    QVERIFY(world);
+    LoadError error;
+    std::unique_ptr<Router> router =
+        loadRouter("wipe", {}, &error, SimRun::routerContext(*world, DefaultReactionTime));
+    QVERIFY2(router, qPrintable(error.toString()));
+    WipeSink sink(*router);
+    Pipeline pipeline(std::move(router));
+    std::unique_ptr<WipingTask> made = wipingTask(*world, 1);
+    QVERIFY(made);
+    WipingTask &task = *made;
+    double rendered = -1.0;
+    pass(*world, task, depth, [&](double phase) {
+        for (Gripper g : {Gripper::Left, Gripper::Right})
+            pipeline.process(world->frame(g), sink);
+        pipeline.flush(sink);
+        if (phase > 1.1 && phase < 1.15 && depth > 0 && depth < 0.02) {
+            // Settled, below the safe force: the band buzzes with the force, full at 40 N.
+            const double fz = signal(*world, Gripper::Right, "wrist.fz");
+            QVERIFY2(std::abs(sink.vibro - fz / 40.0) < 0.02,
+                     qPrintable(QString("%1 %2").arg(sink.vibro).arg(fz)));
+            rendered = sink.vibro;
+        }
+    });
+    // Each message began once: the engagement holds through the strokes, as does the warning.
+    QCOMPARE(sink.begun, begun);
+    if (depth > 0 && depth < 0.02)
+        QVERIFY(rendered > 0.2);
 }
 
 void TestWiping::runReportsEveryMetric()
