@@ -893,6 +893,54 @@ std::vector<const Detector *> Router::detectors() const
     return list;
 }
 
+std::vector<ThresholdLevels> Router::thresholds() const
+{
+    std::vector<ThresholdLevels> list;
+    for (size_t i = 0; i < m_nodes.size(); ++i) {
+        const auto *node = dynamic_cast<const ThresholdNode *>(m_nodes[i].get());
+        if (!node)
+            continue;
+        const ThresholdNode::Params &p = node->params();
+        ThresholdLevels t;
+        t.node = m_nodeIds[int(i)];
+        t.gripper = node->gripper();
+        t.message = p.message;
+        t.category = p.category;
+        t.condition = ThresholdNode::conditionNames().value(int(p.condition));
+        t.range = p.condition == ThresholdNode::Condition::Inside ||
+                  p.condition == ThresholdNode::Condition::Outside;
+        t.begin = p.begin;
+        t.beginHigh = p.beginHigh;
+        t.end = p.end;
+        t.endHigh = p.endHigh;
+        t.levelsInSignalUnits = true;
+        // Up the single signal input: through derivative and predict to the signal node.
+        QString at = t.node;
+        for (int hops = 0; hops <= int(m_graph.nodes.size()); ++hops) {
+            const auto in = std::find_if(m_graph.links.begin(), m_graph.links.end(),
+                                         [&at](const RouterLink &l) { return l.to == at; });
+            const int from = in == m_graph.links.end() ? -1 : m_graph.nodeIndex(in->from);
+            if (from < 0)
+                break;
+            const RouterNode &source = m_graph.nodes[size_t(from)];
+            if (source.type == QLatin1String("signal")) {
+                t.quantity = source.params.value(QStringLiteral("quantity")).toString();
+                t.signalGripper =
+                    static_cast<const SignalNode *>(m_nodes[size_t(from)].get())->gripper();
+                break;
+            }
+            if (source.type != QLatin1String("derivative") &&
+                source.type != QLatin1String("predict"))
+                break;
+            t.via.prepend(source.type);
+            t.levelsInSignalUnits &= source.type != QLatin1String("derivative");
+            at = source.id;
+        }
+        list.push_back(t);
+    }
+    return list;
+}
+
 RouterGraph Router::selfContained() const
 {
     RouterGraph graph = m_graph;

@@ -24,6 +24,33 @@ class MessageSourceNode;
 class SignalNode;
 
 /**
+ * What a threshold node watches and at which levels, as compiled: what plots draw a
+ * signal's levels and shade its message's spans from (Router::thresholds()).
+ */
+struct ThresholdLevels
+{
+    QString node;                     ///< the threshold node's id
+    Gripper gripper = Gripper::Right; ///< the gripper its events name
+    Message message = Message::Break;
+    Category category = Category::Exception;
+    QString condition;  ///< above, below, inside or outside
+    bool range = false; ///< inside, outside: [begin, beginHigh] and [end, endHigh]
+    double begin = 0.0;
+    double beginHigh = 0.0;
+    double end = 0.0;
+    double endHigh = 0.0;
+    /**
+     * The quantity of the signal node its input comes from (`F`, `plug.angle`), through
+     * `via`; empty when its input is not linked to one.
+     */
+    QString quantity;
+    Gripper signalGripper = Gripper::Right; ///< that signal node's gripper
+    QStringList via; ///< the derivative and predict node types between, signal side first
+    /** No derivative on the way: the levels are in the quantity's units, drawn on its plot. */
+    bool levelsInSignalUnits = false;
+};
+
+/**
  * A router graph compiled to run: detectors, logic, pattern voices and the player with its
  * devices. Compiling checks everything (types, ports, cycles, patterns, models, channels)
  * and names the node and the reason of the first problem. Running allocates nothing.
@@ -76,6 +103,8 @@ public:
     void clearActivityChanges();
     /** The compiled detectors (force, slip), in graph order: what plots take thresholds from. */
     std::vector<const Detector *> detectors() const;
+    /** The threshold nodes, in graph order: the signals they read and their levels. */
+    std::vector<ThresholdLevels> thresholds() const;
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
     const QStringList &nodeIds() const { return m_nodeIds; }
     const RouterGraph &graph() const { return m_graph; }

@@ -226,7 +226,8 @@ QStringList ThresholdNode::conditionNames()
             QStringLiteral("outside")};
 }
 
-ThresholdNode::ThresholdNode(int node, Gripper gripper, const Params &params) : m_params(params)
+ThresholdNode::ThresholdNode(int node, Gripper gripper, const Params &params)
+    : m_gripper(gripper), m_params(params)
 {
     m_tracker.configure(gripper, node, DetectorKind::Threshold, params.message, params.category,
                         params.minDuration);

@@ -344,8 +344,10 @@ public:
     ThresholdNode(int node, Gripper gripper, const Params &params);
     void onSignal(int port, double value, double t) override;
     const Params &params() const { return m_params; }
+    Gripper gripper() const { return m_gripper; }
 
 private:
+    Gripper m_gripper;
     Params m_params;
 };
 

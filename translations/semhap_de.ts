@@ -1613,6 +1613,14 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>right.f (finger)</source>
         <translation>right.f (Finger)</translation>
     </message>
+    <message>
+        <source>%1 %2 (end %3)</source>
+        <translation>%1 %2 (Ende %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation>%1: %2 %3</translation>
+    </message>
 </context>
 <context>
     <name>semhap::PoseInput</name>

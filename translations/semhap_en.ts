@@ -1610,6 +1610,14 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>right.f (finger)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 %2 (end %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::PoseInput</name>

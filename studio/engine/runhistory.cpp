@@ -46,6 +46,10 @@ std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands 
             t.min = slip->params().min;
         }
     }
+    for (const ThresholdLevels &levels : router.thresholds()) {
+        if (!levels.quantity.isEmpty() && present[size_t(levels.signalGripper)])
+            result[size_t(levels.signalGripper)].signalThresholds.push_back(levels);
+    }
     return result;
 }
 

@@ -4,6 +4,7 @@
 #include "contactframe.h"
 #include "deviceframe.h"
 #include "nodeactivity.h"
+#include "router.h"
 #include "semanticevent.h"
 
 #include <QJsonObject>
@@ -26,9 +27,9 @@ struct GripperThresholds
     bool hasSlip = false;
     double loss = 0.0;
     double min = 0.0;
+    /** The threshold nodes reading a signal of this gripper's frames, in graph order. */
+    std::vector<ThresholdLevels> signalThresholds;
 };
-
-class Router;
 
 /** One device of the running router, as the panels list it. */
 struct RunDevice
@@ -44,8 +45,8 @@ struct RunDevice
 using Hands = std::array<bool, 2>;
 
 /**
- * The thresholds each present hand's detectors fire at, as the router compiled them; an
- * absent hand's detectors never fire, so it gets none.
+ * The thresholds each present hand's detectors fire at, and the threshold nodes reading its
+ * signals, as the router compiled them; an absent hand's never fire, so it gets none.
  */
 std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands &present);
 

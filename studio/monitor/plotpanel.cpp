@@ -3,7 +3,9 @@
 
 #include "colors.h"
 #include "filedialogs.h"
+#include "nametable.h"
 #include "outputfile.h"
+#include "routernodetype.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -128,6 +130,22 @@ struct PlotPanel::GripperPlot
     qint64 next = 0;           ///< the history index not yet plotted
 };
 
+/** A frame signal that threshold nodes read, with their levels. */
+struct PlotPanel::SignalPlot
+{
+    Gripper gripper = Gripper::Right;
+    QString quantity; ///< the signal's name (`plug.angle`)
+    int id = -1;      ///< its signalNames() id
+    QCPAxisRect *rect = nullptr;
+    QCPGraph *graph = nullptr;
+    QStringList nodes; ///< the threshold nodes reading it: their spans are shaded here
+    bool hasLevels = false;
+    double levelLow = 0.0; ///< the levels drawn, kept in view
+    double levelHigh = 0.0;
+    bool gap = true; ///< the last point plotted was a frame without the signal (or none)
+    qint64 next = 0;
+};
+
 struct PlotPanel::DevicePlot
 {
     int device = 0;
@@ -149,9 +167,9 @@ struct PlotPanel::SpanView
     double end = 0.0;
     bool active = true;
     int row = 0; ///< the label's own row under the rect's title (a kind of message each)
-    std::array<QCPItemRect *, 2> shades{};
-    std::array<QCPItemStraightLine *, 2> beginLines{};
-    std::array<QCPItemStraightLine *, 2> endLines{};
+    std::vector<QCPItemRect *> shades; ///< one per rect it is shaded on
+    std::vector<QCPItemStraightLine *> beginLines;
+    std::vector<QCPItemStraightLine *> endLines;
     QCPItemText *label = nullptr;
     bool seen = false;
 
@@ -282,6 +300,7 @@ void PlotPanel::clearPlots()
     m_marginGroup = new QCPMarginGroup(m_plot);
     m_rects.clear();
     m_grippers.clear();
+    m_signals.clear();
     m_devices.clear();
     m_spans.clear();
     m_cursorLines.clear();
@@ -294,7 +313,8 @@ static std::vector<Gripper> shownGrippers(const RunHistory &history)
     for (Gripper gripper : {Gripper::Right, Gripper::Left}) {
         const GripperThresholds &thresholds = history.thresholds()[size_t(gripper)];
         const auto &frames = history.frames(gripper);
-        if (thresholds.hasForce || thresholds.hasSlip || !frames.isEmpty())
+        if (thresholds.hasForce || thresholds.hasSlip || !thresholds.signalThresholds.empty() ||
+            !frames.isEmpty())
             shown.push_back(gripper);
     }
     return shown;
@@ -315,8 +335,10 @@ bool PlotPanel::needsRebuild() const
 void PlotPanel::rebuild()
 {
     clearPlots();
-    for (Gripper gripper : shownGrippers(m_history))
+    for (Gripper gripper : shownGrippers(m_history)) {
         addGripper(gripper);
+        addSignals(gripper);
+    }
     // A device of a hand the scene lacks never plays: its rect would only take room.
     for (int device = 0; device < int(m_history.devices().size()); ++device) {
         if (!m_history.devices()[size_t(device)].idle)
@@ -419,9 +441,9 @@ QCPGraph *PlotPanel::addGraph(QCPAxisRect *rect, const QString &id, const QStrin
 }
 
 void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString &name,
-                             double value, const QColor &color)
+                             double value, const QColor &color, Qt::PenStyle style)
 {
-    QPen pen(color, 1.0, Qt::DashLine);
+    QPen pen(color, 1.0, style);
     auto *line = new QCPItemStraightLine(m_plot);
     line->setObjectName(id);
     line->setClipAxisRect(rect);
@@ -443,7 +465,8 @@ void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString
         names->setTickLabels(true);
         names->setBasePen(Qt::NoPen);
     }
-    ticker->addTick(value, name);
+    if (!name.isEmpty()) // a line named in another's label
+        ticker->addTick(value, name);
 }
 
 /** The gripper's name as shown (the data keep the untranslated one). */
@@ -492,6 +515,65 @@ void PlotPanel::addGripper(Gripper gripper)
     }
     plot->next = m_history.frames(gripper).begin();
     m_grippers.push_back(std::move(plot));
+}
+
+void PlotPanel::addSignals(Gripper gripper)
+{
+    // The built-in quantities are the force and contact rects' already.
+    const RouterNodeType *signalType = routerNodeType(QStringLiteral("signal"));
+    const ParamSpec *quantitySpec =
+        signalType ? signalType->param(QStringLiteral("quantity")) : nullptr;
+    const QString hand = gripperName(gripper);
+    for (const ThresholdLevels &levels :
+         m_history.thresholds()[size_t(gripper)].signalThresholds) {
+        if (quantitySpec && quantitySpec->choices.contains(levels.quantity))
+            continue;
+        auto found = std::find_if(m_signals.begin(), m_signals.end(), [&](const auto &p) {
+            return p->gripper == gripper && p->quantity == levels.quantity;
+        });
+        if (found == m_signals.end()) {
+            auto plot = std::make_unique<SignalPlot>();
+            plot->gripper = gripper;
+            plot->quantity = levels.quantity;
+            plot->id = signalNames().find(levels.quantity);
+            plot->rect = addRect(tr("%1: %2").arg(gripperTitle(gripper), levels.quantity), 3);
+            plot->rect->axis(QCPAxis::atLeft)->setLabel(levels.quantity);
+            plot->graph = addGraph(plot->rect, hand + QLatin1Char('.') + levels.quantity,
+                                   levels.quantity, Black, 1.0);
+            plot->next = m_history.frames(gripper).begin();
+            m_signals.push_back(std::move(plot));
+            found = m_signals.end() - 1;
+        }
+        SignalPlot &plot = **found;
+        plot.nodes.append(levels.node);
+        // A derivative's levels are in other units than the signal: its spans only.
+        if (!levels.levelsInSignalUnits)
+            continue;
+        const QColor color = levels.category == Category::Confirmation ? Blue : Orange;
+        const QString id = plot.graph->objectName() + QLatin1Char('/') + levels.node;
+        const auto line = [&](const QString &key, const QString &name, double value,
+                              Qt::PenStyle style) {
+            addThreshold(plot.rect, id + QLatin1Char('.') + key, name, value, color, style);
+            plot.levelLow = plot.hasLevels ? std::min(plot.levelLow, value) : value;
+            plot.levelHigh = plot.hasLevels ? std::max(plot.levelHigh, value) : value;
+            plot.hasLevels = true;
+        };
+        // Begin dashed, end (where it differs: hysteresis) dotted; a range as two lines. The
+        // end is named in its begin's label: the two lie too close for a label each.
+        const auto name = [&](double begin, double end) {
+            return begin == end
+                       ? tr("%1 %2").arg(levels.node, number(begin))
+                       : tr("%1 %2 (end %3)").arg(levels.node, number(begin), number(end));
+        };
+        line(QStringLiteral("begin"), name(levels.begin, levels.end), levels.begin, Qt::DashLine);
+        if (levels.range)
+            line(QStringLiteral("beginHigh"), name(levels.beginHigh, levels.endHigh),
+                 levels.beginHigh, Qt::DashLine);
+        if (levels.end != levels.begin)
+            line(QStringLiteral("end"), QString(), levels.end, Qt::DotLine);
+        if (levels.range && levels.endHigh != levels.beginHigh)
+            line(QStringLiteral("endHigh"), QString(), levels.endHigh, Qt::DotLine);
+    }
 }
 
 void PlotPanel::addDevice(int device)
@@ -572,6 +654,22 @@ void PlotPanel::appendNew()
         plot->sum->data()->add(sum, true);
         plot->count->data()->add(count, true);
     }
+    QVector<QCPGraphData> values;
+    for (auto &plot : m_signals) {
+        const RunSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
+        values.clear();
+        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
+            const ContactFrame &frame = frames.at(i);
+            const double *value = frame.signalValues.find(plot->id);
+            // A frame without the signal breaks the curve (a NaN is a gap).
+            if (value || !plot->gap)
+                values.append(QCPGraphData(
+                    frame.t, value ? *value : std::numeric_limits<double>::quiet_NaN()));
+            plot->gap = !value;
+        }
+        plot->next = frames.end();
+        plot->graph->data()->add(values, true);
+    }
     std::vector<QVector<QCPGraphData>> channels;
     for (auto &plot : m_devices) {
         const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
@@ -616,7 +714,9 @@ static QString messageTitle(Message message)
     return QString();
 }
 
-PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const GripperPlot &plot)
+PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span,
+                                            const std::vector<QCPAxisRect *> &rects,
+                                            QCPAxisRect *labelRect)
 {
     SpanView view;
     view.gripper = span.gripper;
@@ -645,7 +745,6 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
         QStringLiteral("span.%1.%2").arg(gripperName(span.gripper), messageName(span.message));
     if (threshold)
         id += QLatin1Char('/') + span.node;
-    const std::array<QCPAxisRect *, 2> rects = {plot.forceRect, plot.countRect};
     for (size_t i = 0; i < rects.size(); ++i) {
         auto *shade = new QCPItemRect(m_plot);
         shade->setObjectName(id);
@@ -658,15 +757,14 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
               QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
         place(shade->bottomRight, rects[i], QCPItemPosition::ptPlotCoords,
               QCPItemPosition::ptAxisRectRatio, span.end, 1.0);
-        view.shades[i] = shade;
-        view.beginLines[i] = addTimeLine(m_plot, rects[i], span.begin, QPen(color, 1.0));
-        view.endLines[i] = addTimeLine(m_plot, rects[i], span.end, QPen(color, 1.0));
-        view.beginLines[i]->setLayer(QStringLiteral("spans"));
-        view.endLines[i]->setLayer(QStringLiteral("spans"));
+        view.shades.push_back(shade);
+        view.beginLines.push_back(addTimeLine(m_plot, rects[i], span.begin, QPen(color, 1.0)));
+        view.endLines.push_back(addTimeLine(m_plot, rects[i], span.end, QPen(color, 1.0)));
+        view.beginLines.back()->setLayer(QStringLiteral("spans"));
+        view.endLines.back()->setLayer(QStringLiteral("spans"));
     }
-    view.label =
-        addText(m_plot, plot.forceRect, threshold ? span.node : messageTitle(span.message),
-                Qt::AlignLeft | Qt::AlignTop);
+    view.label = addText(m_plot, labelRect, threshold ? span.node : messageTitle(span.message),
+                         Qt::AlignLeft | Qt::AlignTop);
     view.label->setObjectName(id);
     view.label->setColor(color.darker(150));
     QFont font = view.label->font();
@@ -676,7 +774,7 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span, const Gripp
     // A row per kind of message below the rect's title, so overlapping spans stay readable
     // (layoutSpanLabels() places it).
     view.row = int(span.message) + (threshold ? 3 : 0);
-    place(view.label->position, plot.forceRect, QCPItemPosition::ptPlotCoords,
+    place(view.label->position, labelRect, QCPItemPosition::ptPlotCoords,
           QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
     return view;
 }
@@ -695,15 +793,27 @@ void PlotPanel::syncSpans()
     for (SpanView &view : m_spans)
         view.seen = false;
     for (const MessageSpan &span : m_history.spans()) {
-        const auto plot = std::find_if(m_grippers.begin(), m_grippers.end(),
-                                       [&](const auto &p) { return p->gripper == span.gripper; });
-        if (plot == m_grippers.end())
-            continue;
         auto view = std::find_if(m_spans.begin(), m_spans.end(),
                                  [&](const SpanView &v) { return v.shows(span); });
         if (view == m_spans.end()) {
-            m_spans.push_back(makeSpanView(span, **plot));
+            // On its gripper's force and contact rects, and on the plots of the signals its
+            // threshold node reads.
+            std::vector<QCPAxisRect *> rects;
+            const auto plot =
+                std::find_if(m_grippers.begin(), m_grippers.end(),
+                             [&](const auto &p) { return p->gripper == span.gripper; });
+            if (plot != m_grippers.end())
+                rects = {(*plot)->forceRect, (*plot)->countRect};
+            for (const auto &signal : m_signals) {
+                if (span.detector == DetectorKind::Threshold && signal->nodes.contains(span.node))
+                    rects.push_back(signal->rect);
+            }
+            if (rects.empty())
+                continue;
+            m_spans.push_back(makeSpanView(span, rects, rects.front()));
             view = m_spans.end() - 1;
+            // Only a force rect's labels are laid out (layoutSpanLabels).
+            view->label->setVisible(plot != m_grippers.end());
         }
         view->seen = true;
         view->end = span.end;
@@ -804,6 +914,26 @@ bool PlotPanel::fitValueAxes()
         const double count = visibleTop(plot->count, std::max(4.0, plot->countTop));
         changed |= setValueRange(plot->countRect, 0.0,
                                  std::ceil(upperUnderHeader(plot->countRect, 0.0, count, 0.1)));
+    }
+    for (auto &plot : m_signals) {
+        // The data in view and the levels, whatever their sign and scale.
+        bool found = false;
+        const QCPRange range = plot->graph->getValueRange(found, QCP::sdBoth, visible);
+        double low = found ? range.lower : plot->levelLow;
+        double high = found ? range.upper : plot->levelHigh;
+        if (plot->hasLevels) {
+            low = std::min(low, plot->levelLow);
+            high = std::max(high, plot->levelHigh);
+        }
+        if (!(high > low)) {
+            // A flat signal: around its value, at its scale (a millimetre, a newton).
+            const double pad = low == 0.0 ? 1.0 : std::abs(low) / 2;
+            low -= pad;
+            high += pad;
+        }
+        const double lower = low - 0.08 * (high - low);
+        changed |=
+            setValueRange(plot->rect, lower, upperUnderHeader(plot->rect, lower, high, 0.1));
     }
     for (auto &plot : m_devices) {
         // Normalised outputs keep a fixed 0..1 scale so devices compare at a glance; a
@@ -917,6 +1047,14 @@ void PlotPanel::updateCursor()
                      .arg(QLocale().toString(frame->left.f, 'f', 2))
                      .arg(QLocale().toString(frame->right.f, 'f', 2))
                      .arg(frame->totalContacts());
+    }
+    for (const auto &plot : m_signals) {
+        const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+        const double *value = frame ? frame->signalValues.find(plot->id) : nullptr;
+        if (value)
+            lines << tr("%1: %2 %3")
+                         .arg(gripperTitle(plot->gripper), plot->quantity,
+                              QLocale().toString(*value, 'g', 4));
     }
     for (const auto &plot : m_devices) {
         const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
@@ -1055,6 +1193,8 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
         for (const char *column : {".F", ".left.f", ".right.f", ".N"})
             header << id + QLatin1String(column);
     }
+    for (const auto &plot : m_signals)
+        header << plot->graph->objectName();
     for (const auto &plot : m_devices) {
         const RunDevice &info = m_history.devices()[size_t(plot->device)];
         for (const QString &channel : info.channels)
@@ -1097,6 +1237,11 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
             } else {
                 cells << QString() << QString() << QString() << QString();
             }
+        }
+        for (const auto &plot : m_signals) {
+            const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+            const double *value = frame ? frame->signalValues.find(plot->id) : nullptr;
+            cells << (value ? number(*value) : QString());
         }
         for (const auto &plot : m_devices) {
             const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);

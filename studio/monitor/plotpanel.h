@@ -27,8 +27,9 @@ namespace semhap {
 
 /**
  * The studio's live plots: per gripper its fingertip forces and contact count with the
- * detectors' thresholds and the messages as shaded spans, and per device its channel
- * outputs, on one shared scrolling time axis. It reads only what is new in a RunHistory
+ * detectors' thresholds and the messages as shaded spans, each frame signal a threshold
+ * node reads with its levels and that node's spans, and per device its channel outputs, on
+ * one shared scrolling time axis. It reads only what is new in a RunHistory
  * on each `updated()`, and can pause, inspect a moment with a cursor and export what it
  * shows.
  */
@@ -68,18 +69,21 @@ public slots:
 
 private:
     struct GripperPlot;
+    struct SignalPlot;
     struct DevicePlot;
     struct SpanView;
 
     void rebuild();
     void clearPlots();
     void addGripper(Gripper gripper);
+    /** A plot per frame signal of the gripper that threshold nodes read, with their levels. */
+    void addSignals(Gripper gripper);
     void addDevice(int device);
     QCPAxisRect *addRect(const QString &label, int stretch);
     QCPGraph *addGraph(QCPAxisRect *rect, const QString &id, const QString &name,
                        const QColor &color, double width);
     void addThreshold(QCPAxisRect *rect, const QString &id, const QString &name, double value,
-                      const QColor &color);
+                      const QColor &color, Qt::PenStyle style = Qt::DashLine);
     bool needsRebuild() const;
 
     void onUpdated();
@@ -87,7 +91,9 @@ private:
     void requestReplot();
     void appendNew();
     void syncSpans();
-    SpanView makeSpanView(const MessageSpan &span, const GripperPlot &plot);
+    /** Shades `span` on `rects`; its label goes on `labelRect` (laid out when a force rect). */
+    SpanView makeSpanView(const MessageSpan &span, const std::vector<QCPAxisRect *> &rects,
+                          QCPAxisRect *labelRect);
     void placeSpan(const SpanView &view, const MessageSpan &span);
     /** Shows the labels of the spans in view, none over another (the pixels are laid out). */
     void layoutSpanLabels();
@@ -127,6 +133,7 @@ private:
 
     std::vector<QCPAxisRect *> m_rects;
     std::vector<std::unique_ptr<GripperPlot>> m_grippers;
+    std::vector<std::unique_ptr<SignalPlot>> m_signals;
     std::vector<std::unique_ptr<DevicePlot>> m_devices;
     std::vector<SpanView> m_spans;
     std::vector<QCPItemStraightLine *> m_cursorLines;

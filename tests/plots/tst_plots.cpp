@@ -5,6 +5,7 @@
 #include "runhistory.h"
 
 #include <QFile>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -177,6 +178,7 @@ private slots:
     void exportPng();
     void resetClears();
     void manyDevicesScroll();
+    void signalPlotsShowLevelsAndSpans();
     void dataAndLabelsStayClear_data();
     void dataAndLabelsStayClear();
 
@@ -646,6 +648,138 @@ void TestPlots::dataAndLabelsStayClear()
         QVERIFY2(shown.size() >= 2, qPrintable(where));
         for (size_t t = 1; t < shown.size(); ++t)
             QVERIFY2(std::abs(shown[t] - shown[t - 1]) >= metrics.height(), qPrintable(where));
+    }
+}
+
+void TestPlots::signalPlotsShowLevelsAndSpans()
+{
+    // A router whose threshold nodes read the right hand's plug.angle directly ("aligned":
+    // inside a range, with hysteresis), through a derivative ("turning": other units, so
+    // no levels) and F through predict (a built-in: the force rect's, no plot of its own).
+    const char *json = R"({"format": "semhap.router/1", "nodes": [
+        {"id": "angle", "type": "signal",
+         "params": {"gripper": "right", "quantity": "plug.angle"}},
+        {"id": "aligned", "type": "threshold",
+         "params": {"gripper": "right", "message": "aligned", "category": "confirmation",
+                    "condition": "inside", "begin": [-0.05, 0.05], "end": [-0.06, 0.06]}},
+        {"id": "rate", "type": "derivative", "params": {}},
+        {"id": "turning", "type": "threshold",
+         "params": {"gripper": "right", "message": "turning", "category": "exception",
+                    "begin": 2}},
+        {"id": "F", "type": "signal", "params": {"gripper": "right", "quantity": "F"}},
+        {"id": "Fp", "type": "predict", "params": {}},
+        {"id": "depth", "type": "signal",
+         "params": {"gripper": "right", "quantity": "plug.depth"}},
+        {"id": "speed", "type": "derivative", "params": {}},
+        {"id": "pushing", "type": "threshold",
+         "params": {"gripper": "right", "message": "pushing", "category": "exception",
+                    "begin": 0.1}},
+        {"id": "soon", "type": "threshold",
+         "params": {"gripper": "right", "message": "break", "begin": 70}}
+      ], "links": [
+        {"from": "angle", "to": "aligned"}, {"from": "angle", "to": "rate"},
+        {"from": "rate", "to": "turning"}, {"from": "F", "to": "Fp"}, {"from": "Fp", "to": "soon"},
+        {"from": "depth", "to": "speed"}, {"from": "speed", "to": "pushing"}
+      ]})";
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(
+        RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), "r.json", &graph, &error));
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+
+    RunHistory history;
+    PlotPanel panel(history);
+    panel.resize(1280, 800);
+    history.start({}, thresholdsOf(*router, Hands{false, true}), router->nodeIds());
+    // The angle falls from 0.2 by 0.05 per second; the frames from 2.0 to 2.4 s lack it.
+    // plug.depth holds at 2 mm.
+    const int angle = signalNames().find("plug.angle");
+    const int depth = signalNames().find("plug.depth");
+    for (int k = 0; k <= Ticks; ++k) {
+        ContactFrame frame = frameAt(k / 10.0, Gripper::Right);
+        frame.signalValues.set(depth, 0.002);
+        if (k < 20 || k > 24)
+            frame.signalValues.set(angle, 0.2 - 0.05 * frame.t);
+        history.append(frame);
+    }
+    const int aligned = int(router->nodeIds().indexOf("aligned"));
+    SemanticEvent event = eventAt(3.0, aligned, Message::Grasp, EventPhase::Begin);
+    QVERIFY(messageFromName("aligned", &event.message));
+    event.detector = DetectorKind::Threshold;
+    event.category = Category::Confirmation;
+    history.append(event);
+    event.t = 4.5;
+    event.phase = EventPhase::End;
+    history.append(event);
+    history.commit();
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto *plot = panel.findChild<QCustomPlot *>();
+    plot->replot();
+
+    // One plot for plug.angle, its axis named after it, with the values and a gap.
+    QCPGraph *values = graphNamed(plot, "right.plug.angle");
+    QVERIFY(values);
+    QCOMPARE(values->valueAxis()->label(), QStringLiteral("plug.angle"));
+    QCOMPARE(values->data()->findBegin(1.0, false)->value, 0.15);
+    QVERIFY(std::isnan(values->data()->findBegin(2.0, false)->value));
+    QCOMPARE(values->data()->findBegin(2.5, false)->value, 0.2 - 0.05 * 2.5);
+    QVERIFY(!graphNamed(plot, "right.F.predicted"));
+    QCOMPARE(plot->axisRectCount(), 4); // force, contacts, plug.angle, plug.depth
+    // A flat signal without levels is shown at its own scale.
+    QCPGraph *flat = graphNamed(plot, "right.plug.depth");
+    QVERIFY(flat);
+    QVERIFY(flat->valueAxis()->range().contains(0.002));
+    QVERIFY2(flat->valueAxis()->range().size() < 0.01,
+             qPrintable(QString::number(flat->valueAxis()->range().size())));
+
+    // Its levels: the begin range dashed, the end range dotted; none for the derivative's.
+    const std::pair<const char *, double> lines[] = {
+        {"begin", -0.05}, {"beginHigh", 0.05}, {"end", -0.06}, {"endHigh", 0.06}};
+    for (const auto &[key, level] : lines) {
+        auto *line = itemNamed<QCPItemStraightLine>(
+            plot, QStringLiteral("right.plug.angle/aligned.") + key);
+        QVERIFY2(line, key);
+        QCOMPARE(line->point1->coords().y(), level);
+        QVERIFY(line->pen().style() ==
+                (QByteArray(key).startsWith("begin") ? Qt::DashLine : Qt::DotLine));
+        QCOMPARE(line->clipAxisRect(), values->keyAxis()->axisRect());
+        QVERIFY(values->valueAxis()->range().contains(level));
+    }
+    QVERIFY(!itemNamed<QCPItemStraightLine>(plot, "right.plug.angle/turning.begin"));
+
+    // The message's span shaded on the signal's plot as on the gripper's two rects.
+    int shades = 0;
+    bool onSignal = false;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        auto *shade = qobject_cast<QCPItemRect *>(plot->item(i));
+        if (!shade || shade->objectName() != "span.right.aligned/aligned")
+            continue;
+        ++shades;
+        onSignal |= shade->clipAxisRect() == values->keyAxis()->axisRect();
+        QCOMPARE(shade->topLeft->coords().x(), 3.0);
+        QCOMPARE(shade->bottomRight->coords().x(), 4.5);
+        QCOMPARE(shade->brush().color().rgb(), QColor(0x0072B2).rgb()); // a confirmation
+    }
+    QCOMPARE(shades, 3);
+    QVERIFY(onSignal);
+
+    // Exported with the rest.
+    panel.setWindowSeconds(2.0);
+    QTemporaryDir dir;
+    QVERIFY2(panel.exportCsv(dir.filePath("plots.csv"), nullptr), "cannot export");
+    QFile file(dir.filePath("plots.csv"));
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList rows = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(rows.value(0),
+             "t,right.F,right.left.f,right.right.f,right.N,right.plug.angle,right.plug.depth");
+    QCOMPARE(rows.value(1).split(',').value(5).toDouble(), 0.2 - 0.05 * 3.0);
+    if (qEnvironmentVariableIsSet("SEMHAP_SCREENSHOTS")) {
+        panel.setWindowSeconds(5.0);
+        plot->replot();
+        QVERIFY(
+            panel.grab().save(qEnvironmentVariable("SEMHAP_SCREENSHOTS") + "/plots-signal.png"));
     }
 }
 

@@ -116,6 +116,7 @@ private slots:
     void defaultHorizon();
     void namedSignalsDriveDetectors();
     void signalsTheSourceLacksAreRefused();
+    void thresholdsTellTheirSignalAndLevels();
     void aMessageHasOneCategory();
     void oldThresholdsReadAsNew();
     void predictiveWarningComesEarlier();
@@ -826,6 +827,71 @@ void TestRouter::signalsTheSourceLacksAreRefused()
                             "plug.depth, plug.lateral)"));
     context.signalNames[size_t(Gripper::Right)].append("plug.angle_error");
     QVERIFY2(Router::compile(graph, &error, context), qPrintable(error.toString()));
+}
+
+void TestRouter::thresholdsTellTheirSignalAndLevels()
+{
+    // A range on a named signal read directly; a level on F through predict (same units)
+    // and on its derivative (other units); the compose node is no threshold.
+    QJsonObject json = alignmentRouter();
+    QJsonArray nodes = json.value("nodes").toArray();
+    QJsonArray links = json.value("links").toArray();
+    nodes.append(object(R"({"id": "F", "type": "signal",
+                            "params": {"gripper": "left", "quantity": "F"}})"));
+    nodes.append(object(R"({"id": "Fp", "type": "predict", "params": {}})"));
+    nodes.append(object(R"({"id": "dF", "type": "derivative", "params": {}})"));
+    nodes.append(object(R"({"id": "soon", "type": "threshold",
+                            "params": {"gripper": "right", "message": "break", "begin": 80,
+                                       "end": 70}})"));
+    nodes.append(object(R"({"id": "steep", "type": "threshold",
+                            "params": {"gripper": "left", "message": "steep",
+                                       "category": "exception", "condition": "below",
+                                       "begin": -5}})"));
+    for (const char *link :
+         {R"({"from": "F", "to": "Fp"})", R"({"from": "Fp", "to": "dF"})",
+          R"({"from": "Fp", "to": "soon"})", R"({"from": "dF", "to": "steep"})"})
+        links.append(object(link));
+    json.insert("nodes", nodes);
+    json.insert("links", links);
+    LoadError error;
+    RouterGraph graph;
+    QVERIFY(RouterGraph::fromJson(json, "r.json", &graph, &error));
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+
+    const std::vector<ThresholdLevels> levels = router->thresholds();
+    QCOMPARE(levels.size(), size_t(3));
+    const ThresholdLevels &aligned = levels[0];
+    QCOMPARE(aligned.node, QStringLiteral("aligned"));
+    QCOMPARE(aligned.quantity, QStringLiteral("plug.angle_error"));
+    QCOMPARE(aligned.signalGripper, Gripper::Right);
+    QCOMPARE(messageName(aligned.message), QStringLiteral("aligned"));
+    QCOMPARE(aligned.category, Category::Confirmation);
+    QCOMPARE(aligned.condition, QStringLiteral("inside"));
+    QVERIFY(aligned.range);
+    QCOMPARE(aligned.begin, -0.05);
+    QCOMPARE(aligned.beginHigh, 0.05);
+    QCOMPARE(aligned.end, -0.06);
+    QCOMPARE(aligned.endHigh, 0.06);
+    QVERIFY(aligned.via.isEmpty());
+    QVERIFY(aligned.levelsInSignalUnits);
+
+    const ThresholdLevels &soon = levels[1];
+    QCOMPARE(soon.node, QStringLiteral("soon"));
+    QCOMPARE(soon.quantity, QStringLiteral("F"));
+    QCOMPARE(soon.signalGripper, Gripper::Left);
+    QCOMPARE(soon.gripper, Gripper::Right);
+    QVERIFY(!soon.range);
+    QCOMPARE(soon.begin, 80.0);
+    QCOMPARE(soon.end, 70.0);
+    QCOMPARE(soon.via, QStringList{"predict"});
+    QVERIFY(soon.levelsInSignalUnits);
+
+    const ThresholdLevels &steep = levels[2];
+    QCOMPARE(steep.quantity, QStringLiteral("F"));
+    QCOMPARE(steep.via, (QStringList{"predict", "derivative"}));
+    QVERIFY(!steep.levelsInSignalUnits);
+    QCOMPARE(steep.condition, QStringLiteral("below"));
 }
 
 void TestRouter::aMessageHasOneCategory()
