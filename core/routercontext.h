@@ -19,11 +19,15 @@ struct RouterContext
 {
     double reactionTime = DefaultReactionTime; ///< of the person the router warns (s)
     /**
-     * The named signals the source's frames carry, per gripper (left, right), when the
-     * source says so in advance (a scene declares them): a signal node naming another is
-     * refused. Unknown (a file, a live rig): any name is taken.
+     * Whether the source says in advance which named signals its frames carry (a scene
+     * declares them): then a signal node naming another is refused. Unknown (a file, a live
+     * rig): any name is taken.
      */
     bool knowsSignals = false;
+    /**
+     * The named signals the source's frames carry, per gripper (left, right): a scene's
+     * declared ones; a live rig's seen so far, offered by the router editor, not checked.
+     */
     std::array<QStringList, 2> signalNames;
 };
 

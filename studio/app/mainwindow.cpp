@@ -487,6 +487,7 @@ void MainWindow::createDocks()
     m_routerEditor->setApplyFunction([this](const RouterGraph &graph, QString *error) {
         return m_engine.setRouter(graph, error);
     });
+    m_routerEditor->setContextFunction([this] { return m_engine.routerContext(); });
     m_designer = new WaveformDesigner(&m_engine.devices(), &m_workspace.patternDocument(), this);
     m_designer->setRunClock([this] { return m_engine.readoutTime(); });
 
@@ -658,6 +659,7 @@ void MainWindow::connectEngine()
     });
     connect(&m_engine, &Engine::sourceChanged, this, [this] {
         showSource();
+        m_routerEditor->updateContext(); // another scene's signals, or a rig's
         if (m_engine.source()->isStreaming())
             syncRouterEditor(); // a replay is re-routed through the editor's graph: keep it
     });

@@ -183,11 +183,29 @@ bool Engine::listen(const LiveRigOptions &options, QString *error)
     return listening;
 }
 
+RouterContext Engine::routerContext() const
+{
+    if (isReplaying())
+        return m_replay.info().routerContext;
+    if (m_simulation)
+        return SimRun::routerContext(m_simulation->run().world(), m_options.reactionTime);
+    RouterContext context;
+    context.reactionTime = m_options.reactionTime;
+    for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
+        if (m_rig)
+            context.signalNames[size_t(gripper)] = m_rig->signalNames(gripper);
+    }
+    return context;
+}
+
 bool Engine::startLive(const LiveRigOptions &options, QString *error)
 {
     LoadError loadError;
+    // A rig says nothing in advance of the signals it sends.
+    RouterContext context;
+    context.reactionTime = m_options.reactionTime;
     std::unique_ptr<Router> router =
-        loadRouter(options.router, options.overrides, &loadError, routerContext());
+        loadRouter(options.router, options.overrides, &loadError, context);
     if (!router) {
         *error = loadError.toString();
         return false;
@@ -736,7 +754,7 @@ bool Engine::startRecording(const QString &path, const QString &notes, QString *
         // Like `semhap listen --session`: no scene, operator or seed, the rig's address.
         info.routerSource = m_options.router;
         info.overrides = m_options.overrides;
-        info.routerContext = routerContext();
+        info.routerContext.reactionTime = m_options.reactionTime;
         info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
     } else {
         info = m_simulation->run().sessionInfo();

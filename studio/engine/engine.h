@@ -133,8 +133,13 @@ public:
     bool reset(QString *error);
     /** The simulation's options; while live, `router` and `overrides` are the rig's. */
     const RunOptions &options() const { return m_options; }
-    /** What routers are compiled for, the simulation's and the live rig's alike. */
-    RouterContext routerContext() const { return RouterContext{m_options.reactionTime}; }
+    /**
+     * What routers are compiled for: the reaction time and, for the simulation, the signals
+     * its scene declares (a signal node naming another is refused); for a live rig, the
+     * signals its frames carried so far (offered, not checked); during a replay, the
+     * recorded session's context.
+     */
+    RouterContext routerContext() const;
     bool isLoaded() const { return m_source != nullptr; }
 
     void run();

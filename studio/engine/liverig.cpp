@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "liverig.h"
 
+#include "nametable.h"
 #include "udpframesource.h"
 
 #include <algorithm>
@@ -44,6 +45,8 @@ bool LiveRig::open(QString *error)
     std::lock_guard<std::mutex> lock(m_statsMutex);
     m_stats = Stats();
     m_stats.port = m_source->port();
+    for (auto &seen : m_seenSignals)
+        seen.clear();
     return true;
 }
 
@@ -66,6 +69,7 @@ void LiveRig::poll(const FrameHandler &process, bool hold)
             m_delayMax = std::max(m_delayMax, delay);
         }
         ++m_windowFrames;
+        noteSignals(frame);
         if (hold)
             ++m_held;
         else
@@ -122,6 +126,27 @@ QString LiveRig::lastRejection(quint64 *count) const
     if (count)
         *count = m_rejections;
     return m_lastRejection;
+}
+
+void LiveRig::noteSignals(const ContactFrame &frame)
+{
+    // Only this thread appends: reading without the lock is safe here.
+    const std::vector<int> &seen = m_seenSignals[size_t(frame.gripper)];
+    for (const SignalValue &signal : frame.signalValues) {
+        if (std::find(seen.begin(), seen.end(), signal.id) != seen.end())
+            continue;
+        std::lock_guard<std::mutex> lock(m_statsMutex);
+        m_seenSignals[size_t(frame.gripper)].push_back(signal.id);
+    }
+}
+
+QStringList LiveRig::signalNames(Gripper gripper) const
+{
+    std::lock_guard<std::mutex> lock(m_statsMutex);
+    QStringList names;
+    for (int id : m_seenSignals[size_t(gripper)])
+        names.append(semhap::signalNames().name(id));
+    return names;
 }
 
 QString LiveRig::uri() const

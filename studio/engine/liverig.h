@@ -10,10 +10,12 @@
 #include <QString>
 #include <QStringList>
 
+#include <array>
 #include <atomic>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 namespace semhap {
 
@@ -97,9 +99,16 @@ public:
     QString lastRejection(quint64 *count = nullptr) const;
     /** The address the user reaches the rig on, `udp:ADDRESS:PORT`. */
     QString uri() const;
+    /**
+     * The named signals the gripper's valid frames carried since the rig started listening,
+     * in the order first seen: what the router editor's signal picker offers.
+     */
+    QStringList signalNames(Gripper gripper) const;
 
 private:
     void publish(double now);
+    /** Notes the signals of a valid frame that no earlier frame of its gripper carried. */
+    void noteSignals(const ContactFrame &frame);
 
     LiveRigOptions m_options;
     std::unique_ptr<Pipeline> m_pipeline;
@@ -117,6 +126,11 @@ private:
     Stats m_stats;
     QString m_lastRejection;
     quint64 m_rejections = 0;
+    /**
+     * Per gripper, the signalNames() ids seen: appended under m_statsMutex on the pipeline
+     * thread (rarely: only a new name), read under it on any. At most NameTable::Capacity.
+     */
+    std::array<std::vector<int>, 2> m_seenSignals;
 };
 
 } // namespace semhap

@@ -30,6 +30,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QMimeData>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
@@ -114,6 +115,75 @@ QJsonValue parseValue(const QString &text)
     if (doc.isArray() && doc.array().size() == 1)
         return doc.array().at(0);
     return trimmed;
+}
+
+/** The separator of a range's two numbers: `;` where the comma is the decimal point. */
+QString rangeSeparator()
+{
+    return numberLocale().decimalPoint() == QLatin1String(",") ? QStringLiteral("; ")
+                                                               : QStringLiteral(", ");
+}
+
+/** A level as the inspector shows it: `80`, or `[0.02, 0.08]` (`[0,02; 0,08]` in German). */
+QString levelText(const QJsonValue &value)
+{
+    const QJsonArray pair = value.toArray();
+    if (!value.isArray() || pair.size() != 2 || !pair.at(0).isDouble() || !pair.at(1).isDouble())
+        return valueText(value);
+    const QLocale locale = numberLocale();
+    return QStringLiteral("[%1%2%3]")
+        .arg(locale.toString(pair.at(0).toDouble(), 'g', 12), rangeSeparator(),
+             locale.toString(pair.at(1).toDouble(), 'g', 12));
+}
+
+/**
+ * A level typed: a number, a JSON range `[0.02, 0.08]`, or two numbers in the user's
+ * locale with or without brackets (`0.02, 0.08`; in German `0,02; 0,08` or `0,02, 0,08`);
+ * else what parseValue() makes of it, for the compiler to name what is wrong.
+ */
+QJsonValue parseLevel(const QString &text)
+{
+    const QJsonValue value = parseValue(text);
+    if (!value.isString())
+        return value;
+    QString inner = value.toString();
+    if (inner.startsWith(QLatin1Char('[')) && inner.endsWith(QLatin1Char(']')))
+        inner = inner.mid(1, inner.size() - 2);
+    // A comma with a space after it parts the numbers even where it is the decimal point.
+    const QStringList parts = inner.contains(QLatin1Char(';'))
+                                  ? inner.split(QLatin1Char(';'))
+                                  : inner.split(QRegularExpression(QStringLiteral(",\\s+")));
+    if (parts.size() != 2)
+        return value;
+    QJsonArray range;
+    for (const QString &part : parts) {
+        bool ok = false;
+        const double number = numberLocale().toDouble(part.trimmed(), &ok);
+        if (!ok)
+            return value;
+        range.append(number);
+    }
+    return range;
+}
+
+/** Names typed into a list field: `grasp, aligned` as a list, one name as itself. */
+QJsonValue parseNames(const QString &text)
+{
+    const QJsonValue value = parseValue(text);
+    if (!value.isString() || !value.toString().contains(QLatin1Char(',')))
+        return value;
+    QJsonArray names;
+    for (const QString &name : value.toString().split(QLatin1Char(','), Qt::SkipEmptyParts))
+        names.append(name.trimmed());
+    return names;
+}
+
+/** Whether the field takes a name the user may type: a signal, an open message list. */
+bool takesTypedName(const ParamSpec &spec)
+{
+    return spec.kind == ParamKind::Signal ||
+           (spec.openChoices &&
+            (spec.kind == ParamKind::Choice || spec.kind == ParamKind::Choices));
 }
 
 } // namespace
@@ -621,11 +691,12 @@ QStringList RouterEditor::validate()
         linkIndex[j] = int(j);
     QHash<QString, QString> nodeErrors;
     QHash<int, QString> linkErrors;
+    const RouterContext source = context();
     m_errors.clear();
     m_errorList->clear();
     for (int round = 0; round < 32; ++round) {
         LoadError error;
-        if (Router::compile(graph, &error))
+        if (Router::compile(graph, &error, source))
             break;
         const QStringList tokens = error.pointer.split(QLatin1Char('/'));
         const int index = tokens.size() > 2 ? tokens[2].toInt() : -1;
@@ -858,6 +929,27 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
         spec && !spec->unit.isEmpty() ? QStringLiteral("%1 (%2)").arg(key, spec->unit) : key,
         form->parentWidget());
     label->setToolTip(help);
+    if (spec && kind == ParamKind::Signal) {
+        // The built-in quantities, then what the source's frames carry for the node's
+        // gripper (both grippers' while it has none).
+        QStringList choices = spec->choices;
+        const RouterContext source = context();
+        const QString hand = node.params.value(QStringLiteral("gripper")).toString();
+        for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
+            if (hand.isEmpty() || hand == gripperName(gripper))
+                choices.append(source.signalNames[size_t(gripper)]);
+        }
+        choices.removeDuplicates();
+        addNameCombo(form, label, node, key, *spec, choices);
+        return;
+    }
+    if (spec && takesTypedName(*spec)) {
+        // The built-in messages, then the new ones other nodes of the graph name.
+        QStringList choices = spec->choices + newMessageNames();
+        choices.removeDuplicates();
+        addNameCombo(form, label, node, key, *spec, choices);
+        return;
+    }
     if (kind == ParamKind::Choice || kind == ParamKind::Choices || name) {
         QStringList choices = spec->choices;
         if (kind == ParamKind::Pattern) {
@@ -918,13 +1010,83 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
         form->addRow(label, combo);
         return;
     }
-    auto *edit = new QLineEdit(valueText(value), form->parentWidget());
+    auto *edit = new QLineEdit(kind == ParamKind::Level ? levelText(value) : valueText(value),
+                               form->parentWidget());
     edit->setObjectName(objectName);
     edit->setPlaceholderText(spec ? absentText(*spec) : QString());
     edit->setToolTip(help);
     connect(edit, &QLineEdit::editingFinished, this,
             [this, id, key, edit] { commitText(id, key, edit->text()); });
     form->addRow(label, edit);
+}
+
+void RouterEditor::addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node,
+                                const QString &key, const ParamSpec &spec,
+                                const QStringList &choices)
+{
+    auto *combo = new QComboBox(form->parentWidget());
+    combo->setObjectName(QStringLiteral("param:") + key);
+    combo->setToolTip(spec.help);
+    combo->setEditable(true);
+    combo->setInsertPolicy(QComboBox::NoInsert);
+    // The first entry leaves the parameter out; typed, its text means the same.
+    combo->addItem(absentText(spec), QString());
+    for (const QString &choice : choices)
+        combo->addItem(choice, choice);
+    const QString current = valueText(node.params.value(key));
+    const int at = current.isEmpty() ? 0 : combo->findData(current);
+    combo->setCurrentIndex(std::max(at, 0));
+    combo->setEditText(at >= 0 ? combo->itemText(at) : current);
+    if (QLineEdit *line = combo->lineEdit())
+        line->setPlaceholderText(absentText(spec));
+    const QString id = node.id;
+    connect(combo, &QComboBox::activated, this,
+            [this, id, key, combo](int i) { commitText(id, key, combo->itemData(i).toString()); });
+    connect(combo->lineEdit(), &QLineEdit::editingFinished, this, [this, id, key, combo] {
+        const int i = combo->findText(combo->currentText());
+        commitText(id, key, i >= 0 ? combo->itemData(i).toString() : combo->currentText());
+    });
+    form->addRow(label, combo);
+}
+
+QStringList RouterEditor::newMessageNames() const
+{
+    QStringList names;
+    for (const RouterNode &node : graph().nodes) {
+        for (const ParamSpec &spec : graph().paramsOf(node)) {
+            if (!spec.openChoices)
+                continue;
+            // A name beyond the spec's own choices (the built-in messages) is a new one.
+            const QJsonValue value = node.params.value(spec.name);
+            const QJsonArray list = value.isArray() ? value.toArray() : QJsonArray{value};
+            for (const QJsonValue &item : list) {
+                const QString name = item.toString();
+                if (isPlainName(name) && !spec.choices.contains(name))
+                    names.append(name);
+            }
+        }
+    }
+    names.removeDuplicates();
+    names.sort();
+    return names;
+}
+
+void RouterEditor::setContextFunction(ContextFunction context)
+{
+    m_context = std::move(context);
+    updateContext();
+}
+
+void RouterEditor::updateContext()
+{
+    m_validateTimer->start();
+    m_inspectedNode = RouterNode(); // the signal picker's choices follow the source
+    scheduleInspector();
+}
+
+RouterContext RouterEditor::context() const
+{
+    return m_context ? m_context() : RouterContext();
 }
 
 QString RouterEditor::absentText(const ParamSpec &spec)
@@ -952,10 +1114,16 @@ void RouterEditor::commitText(const QString &id, const QString &key, const QStri
     const int index = graph().nodeIndex(id);
     if (index < 0)
         return;
-    const QJsonValue value = parseValue(text);
-    // A numeric-looking pattern or model name is still a name.
     const ParamSpec *spec = findParamSpec(graph().paramsOf(graph().nodes[size_t(index)]), key);
-    const bool name = spec && (spec->kind == ParamKind::Pattern || spec->kind == ParamKind::Model);
+    const ParamKind kind = spec ? spec->kind : ParamKind::Points;
+    QJsonValue value = parseValue(text);
+    if (kind == ParamKind::Level)
+        value = parseLevel(text);
+    else if (kind == ParamKind::Choices && spec->openChoices)
+        value = parseNames(text);
+    // A numeric-looking pattern, model, signal or message name is still a name.
+    const bool name = kind == ParamKind::Pattern || kind == ParamKind::Model ||
+                      (spec && kind != ParamKind::Choices && takesTypedName(*spec));
     setParam(id, key, name && !value.isUndefined() ? QJsonValue(text.trimmed()) : value);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "routercontext.h"
 #include "routergraph.h"
 
 #include <QHash>
@@ -39,6 +40,11 @@ class RouterEditor : public QWidget
 public:
     /** Sends a graph to the running session; false with a one-line error. */
     using ApplyFunction = std::function<bool(const RouterGraph &graph, QString *error)>;
+    /**
+     * What the running source compiles routers for (its signals): the graph is checked
+     * against it, and the signal picker offers its signals.
+     */
+    using ContextFunction = std::function<RouterContext()>;
 
     /** Edits `document` (null: a document of the editor's own); it must outlive the editor. */
     explicit RouterEditor(RouterDocument *document = nullptr, QWidget *parent = nullptr);
@@ -93,6 +99,19 @@ public:
     QStringList validate();
     QStringList errors() const { return m_errors; }
 
+    /**
+     * Where the source's context comes from (none: any signal name is taken and only the
+     * built-in quantities are offered); checks the graph again.
+     */
+    void setContextFunction(ContextFunction context);
+    /** The source changed (another scene, a rig): checks the graph and the picker again. */
+    void updateContext();
+    /**
+     * The messages the graph's nodes name (threshold, compose, filter) that are not built
+     * in, sorted: what the message fields offer besides grasp, break and slip.
+     */
+    QStringList newMessageNames() const;
+
     /** Where Apply sends the graph; without one Apply is disabled. */
     void setApplyFunction(ApplyFunction apply);
     /** Sends the graph to the session; false (with the reason shown) when it cannot. */
@@ -142,6 +161,11 @@ private:
     /** What the field shows when the parameter is absent: "(default: 20)", "(any)"… */
     static QString absentText(const ParamSpec &spec);
     void commitText(const QString &id, const QString &key, const QString &text);
+    /** An editable combo for a name typed or picked: a signal, a new message. */
+    void addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node, const QString &key,
+                      const ParamSpec &spec, const QStringList &choices);
+    /** The context the source compiles for (a default one without a context function). */
+    RouterContext context() const;
     void showStatus(const QString &text, bool warning);
     /** Says what Apply did, the run's or the replay's router (`to`), as is true now. */
     enum class Applied
@@ -168,6 +192,7 @@ private:
     QTimer *m_validateTimer = nullptr;
 
     ApplyFunction m_apply;
+    ContextFunction m_context;
     /** What the status line says Apply went to; None once it says anything else. */
     Applied m_applied = Applied::None;
     bool m_replaying = false;

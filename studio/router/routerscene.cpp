@@ -46,7 +46,8 @@ QString summaryOf(const RouterNode &node)
     const RouterNodeType *type = routerNodeType(node.type);
     for (const ParamSpec &spec : type ? type->params : std::vector<ParamSpec>()) {
         if (spec.kind != ParamKind::Pattern && spec.kind != ParamKind::Model &&
-            spec.kind != ParamKind::Choice && spec.kind != ParamKind::Choices)
+            spec.kind != ParamKind::Choice && spec.kind != ParamKind::Choices &&
+            spec.kind != ParamKind::Signal)
             continue;
         const QJsonValue v = node.params.value(spec.name);
         if (v.isString())

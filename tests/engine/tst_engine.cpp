@@ -48,6 +48,7 @@ private slots:
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
+    void routersKnowTheScenesSignals();
     void recordingsOfOneSecondGetTheirOwnFiles();
     void keepsTheRunBehindAReplay();
     void keepsTheRigBehindAReplay();
@@ -672,6 +673,54 @@ void TestEngine::recordsAndReplays()
     QVERIFY(!replay.isOpen());
     QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
     QVERIFY(engine.simTime() < 0.1);
+}
+
+void TestEngine::routersKnowTheScenesSignals()
+{
+    // The simulation's routers are compiled knowing its scene's signals: a signal node
+    // naming another is refused with the core's reason, the running router keeps going; the
+    // history keeps each threshold on a signal for the plots, in a replay too.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("usb.db");
+    Engine engine;
+    QString error;
+    QVERIFY2(engine.load(options("usb_insertion", "usb"), &error), qPrintable(error));
+    const RouterContext context = engine.routerContext();
+    QVERIFY(context.knowsSignals);
+    QVERIFY(context.signalNames[size_t(Gripper::Right)].contains("plug.angle"));
+
+    RouterGraph graph = engine.routerGraph();
+    const int angle = graph.nodeIndex("right.plug.angle");
+    QVERIFY(angle >= 0);
+    graph.nodes[size_t(angle)].params.insert("quantity", "plug.angel");
+    QVERIFY(!engine.setRouter(graph, &error));
+    QVERIFY2(error.contains("node 'right.plug.angle' (signal): the right gripper's frames carry "
+                            "no signal 'plug.angel' (they carry: "),
+             qPrintable(error));
+    QCOMPARE(engine.routerGraph().nodes[size_t(angle)].params.value("quantity"), "plug.angle");
+
+    const auto readsTheAngle = [&engine] {
+        for (const ThresholdLevels &levels :
+             engine.history().thresholds()[size_t(Gripper::Right)].signalThresholds) {
+            if (levels.node == "right.angle.ok" && levels.quantity == "plug.angle")
+                return true;
+        }
+        return false;
+    };
+    QVERIFY(readsTheAngle());
+    QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+    engine.setSpeed(4.0);
+    engine.run();
+    QTRY_VERIFY_WITH_TIMEOUT(engine.simTime() > 1.0, 20000);
+    engine.pause();
+    engine.stopRecording();
+
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    engine.replay().seek(engine.replay().endTime());
+    QVERIFY(readsTheAngle());
+    const RunSeries<ContactFrame> &frames = engine.history().frames(Gripper::Right);
+    QVERIFY(!frames.isEmpty());
+    QVERIFY(frames.last().signalValues.find(signalNames().find("plug.angle")));
 }
 
 void TestEngine::keepsTheRunBehindAReplay()

@@ -31,6 +31,7 @@ private slots:
     void malformedDatagramsAreCounted();
     void floodDoesNotStallTheGui();
     void pausedHoldsFrames();
+    void offersTheSignalsItsFramesCarry();
     void recordsArrivalTimes();
     void portInUseKeepsTheRun();
     void resetAndRouterSwapKeepListening();
@@ -350,6 +351,32 @@ void TestLiveRig::pausedHoldsFrames()
     QCOMPARE(engine.liveStats().held, quint64(100));
     QTest::qWait(50);
     QCOMPARE(count(engine.history().frames(Gripper::Right)), qint64(50));
+}
+
+void TestLiveRig::offersTheSignalsItsFramesCarry()
+{
+    // What the router editor's signal picker offers for a rig: the names its frames carried
+    // so far, per gripper, in the order first seen (held frames count: paused, the user
+    // builds the router). Not checked: a rig does not say in advance what it sends.
+    Engine engine;
+    QString error;
+    QVERIFY2(engine.listen(anyPort(), &error), qPrintable(error));
+    QVERIFY(engine.routerContext().signalNames[size_t(Gripper::Right)].isEmpty());
+    Sender sender(engine);
+    QVERIFY(sender.sendBatches(
+        {R"({"t": 0.0, "gripper": "right", "left": null, "right": null,
+             "signals": {"plug.angle": 0.1, "plug.depth": 0.0}})",
+         R"({"t": 0.0, "gripper": "left", "left": null, "right": null,
+             "signals": {"wrist.fz": 2.0}})",
+         R"({"t": 0.01, "gripper": "right", "left": null, "right": null,
+             "signals": {"plug.depth": 0.001, "plug.lateral": 0.002}})"},
+        1));
+    QVERIFY(waitForFrames(engine, 3));
+    const RouterContext context = engine.routerContext();
+    QVERIFY(!context.knowsSignals);
+    QCOMPARE(context.signalNames[size_t(Gripper::Right)],
+             (QStringList{"plug.angle", "plug.depth", "plug.lateral"}));
+    QCOMPARE(context.signalNames[size_t(Gripper::Left)], QStringList{"wrist.fz"});
 }
 
 void TestLiveRig::recordsArrivalTimes()

@@ -8,7 +8,6 @@
 #include "engine.h"
 #include "gatedrouter.h"
 #include "mainwindow.h"
-#include "workspace.h"
 #include "pipeline.h"
 #include "routercommands.h"
 #include "routerdocument.h"
@@ -19,7 +18,9 @@
 #include "runhistory.h"
 #include "studio.h"
 #include "userpatterns.h"
+#include "workspace.h"
 
+#include <QAbstractItemView>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
@@ -164,6 +165,26 @@ struct Fixture
         settle();
     }
 
+    /** Opens an inspector combo's list and clicks the entry `text`; false without one. */
+    bool pick(const QString &field, const QString &text)
+    {
+        auto *combo = editor.inspector()->findChild<QComboBox *>(field);
+        if (!combo)
+            qFatal("no inspector combo %s", qPrintable(field));
+        const int row = combo->findText(text);
+        if (row < 0)
+            return false;
+        combo->showPopup();
+        QAbstractItemView *list = combo->view();
+        if (!QTest::qWaitForWindowExposed(list->window()))
+            return false;
+        const QModelIndex index = list->model()->index(row, 0);
+        list->scrollTo(index);
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualRect(index).center());
+        settle();
+        return true;
+    }
+
     /** Drags a wire from one port to another. */
     void drag(const QPointF &from, const QPointF &to)
     {
@@ -227,6 +248,10 @@ private slots:
     void inspectorShowsTheNodeTypeTable();
     void engineSwapsWhileRunning();
     void liveActivityLightsWires();
+    void signalPickerOffersTheSourcesSignals();
+    void messageFieldsOfferNewMessages();
+    void levelsAreTypedAsNumbersOrRanges_data();
+    void levelsAreTypedAsNumbersOrRanges();
     void screenshot();
 };
 
@@ -925,6 +950,133 @@ void TestRouterEditor::liveActivityLightsWires()
     QVERIFY(scene->nodeItem("gate")->state().isEmpty());
     QVERIFY(scene->nodeItem("buzz")->state().isEmpty());
     QVERIFY(scene->nodeItem("breaks")->state().contains("break"));
+}
+
+void TestRouterEditor::signalPickerOffersTheSourcesSignals()
+{
+    // The source's context: the picker lists its signals for the node's gripper, the
+    // graph is checked against it, and a signal it lacks is refused with the core's reason.
+    Fixture f;
+    RouterContext source;
+    source.knowsSignals = true;
+    source.signalNames[size_t(Gripper::Right)] = QStringList{"plug.angle", "plug.depth"};
+    source.signalNames[size_t(Gripper::Left)] = QStringList{"wrist.fz"};
+    f.editor.setContextFunction([&source] { return source; });
+    QString applied;
+    f.editor.setApplyFunction([&applied](const RouterGraph &graph, QString *) {
+        applied = graph.nodes.front().params.value("quantity").toString();
+        return true;
+    });
+    const QString id = f.addFromPalette("signal");
+    QVERIFY(f.pick("param:gripper", "right"));
+    QCOMPARE(f.editor.graph().nodes.front().params.value("gripper"), "right");
+    auto *quantity = f.editor.inspector()->findChild<QComboBox *>("param:quantity");
+    QVERIFY(quantity);
+    QVERIFY(quantity->isEditable());
+    for (const QString &builtin : routerNodeType("signal")->param("quantity")->choices)
+        QVERIFY2(quantity->findText(builtin) >= 0, qPrintable(builtin));
+    QVERIFY(quantity->findText("plug.angle") >= 0);
+    QVERIFY(quantity->findText("plug.depth") >= 0);
+    QCOMPARE(quantity->findText("wrist.fz"), -1); // the left gripper's
+    QVERIFY(f.pick("param:quantity", "plug.angle"));
+    QCOMPARE(f.editor.graph().nodes.front().params.value("quantity"), "plug.angle");
+    QTRY_VERIFY(f.editor.errors().isEmpty());
+    QVERIFY(f.editor.apply());
+    QCOMPARE(applied, QStringLiteral("plug.angle"));
+
+    // Typed: a name the scene does not declare is marked, and Apply says why.
+    f.select(id);
+    f.type("param:quantity", "plug.lateral");
+    QCOMPARE(f.editor.graph().nodes.front().params.value("quantity"), "plug.lateral");
+    QVERIFY(!f.editor.apply());
+    const QString reason = "the right gripper's frames carry no signal 'plug.lateral' (they "
+                           "carry: plug.angle, plug.depth)";
+    QVERIFY2(f.editor.statusLabel()->text().contains(reason),
+             qPrintable(f.editor.statusLabel()->text()));
+    QVERIFY(f.editor.errors().join("\n").contains(reason));
+    // A source that does not know its signals in advance takes any name.
+    source.knowsSignals = false;
+    f.editor.updateContext();
+    QTRY_VERIFY(f.editor.errors().isEmpty());
+}
+
+void TestRouterEditor::messageFieldsOfferNewMessages()
+{
+    // A message typed on one node is offered on the others, besides the built-in ones.
+    Fixture f;
+    f.addFromPalette("threshold");
+    auto *message = f.editor.inspector()->findChild<QComboBox *>("param:message");
+    QVERIFY(message);
+    QVERIFY(message->isEditable());
+    f.type("param:message", "aligned");
+    QCOMPARE(f.editor.graph().nodes.front().params.value("message"), "aligned");
+    QVERIFY(f.pick("param:category", "confirmation"));
+    QCOMPARE(f.editor.newMessageNames(), QStringList{"aligned"});
+
+    f.addFromPalette("compose");
+    QVERIFY(f.pick("param:message", "aligned"));
+    QCOMPARE(f.editor.graph().nodes.back().params.value("message"), "aligned");
+    const QString filter = f.addFromPalette("filter");
+    auto *passes = f.editor.inspector()->findChild<QComboBox *>("param:message");
+    QVERIFY(passes->findText("aligned") >= 0);
+    QVERIFY(passes->findText("grasp") >= 0);
+    // A filter passes a list: typed with commas.
+    f.type("param:message", "grasp, aligned");
+    const int node = f.editor.graph().nodeIndex(filter);
+    QCOMPARE(f.editor.graph().nodes[size_t(node)].params.value("message"),
+             QJsonArray({"grasp", "aligned"}));
+    // Its "(any)" entry clears it again.
+    QVERIFY(f.pick("param:message", RouterEditor::tr("(any)")));
+    QVERIFY(!f.editor.graph().nodes[size_t(node)].params.contains("message"));
+}
+
+void TestRouterEditor::levelsAreTypedAsNumbersOrRanges_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("shown");
+    const QJsonValue range(QJsonArray{0.02, 0.08});
+    QTest::newRow("number") << "en_US"
+                            << "80" << QJsonValue(80) << "80";
+    QTest::newRow("JSON range") << "en_US"
+                                << "[0.02, 0.08]" << range << "[0.02, 0.08]";
+    QTest::newRow("two numbers") << "en_US"
+                                 << "0.02, 0.08" << range << "[0.02, 0.08]";
+    QTest::newRow("negative range")
+        << "en_US"
+        << "-0.05; 0.05" << QJsonValue(QJsonArray{-0.05, 0.05}) << "[-0.05, 0.05]";
+    QTest::newRow("German number") << "de_DE"
+                                   << "0,5" << QJsonValue(0.5) << "0,5";
+    QTest::newRow("German semicolon") << "de_DE"
+                                      << "0,02; 0,08" << range << "[0,02; 0,08]";
+    QTest::newRow("German brackets") << "de_DE"
+                                     << "[0,02; 0,08]" << range << "[0,02; 0,08]";
+    QTest::newRow("German comma space") << "de_DE"
+                                        << "0,02, 0,08" << range << "[0,02; 0,08]";
+    QTest::newRow("German JSON") << "de_DE"
+                                 << "[0.02, 0.08]" << range << "[0,02; 0,08]";
+    QTest::newRow("not a level") << "en_US"
+                                 << "low" << QJsonValue("low") << "low";
+}
+
+void TestRouterEditor::levelsAreTypedAsNumbersOrRanges()
+{
+    QFETCH(QString, locale);
+    QFETCH(QString, typed);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, shown);
+    struct LocaleGuard
+    {
+        QLocale before;
+        ~LocaleGuard() { QLocale::setDefault(before); }
+    } guard;
+    QLocale::setDefault(QLocale(locale));
+    Fixture f;
+    f.addFromPalette("threshold");
+    f.type("param:begin", typed);
+    QCOMPARE(f.editor.graph().nodes.front().params.value("begin"), value);
+    QCOMPARE(f.editor.inspector()->findChild<QLineEdit *>("param:begin")->text(), shown);
 }
 
 void TestRouterEditor::screenshot()
