@@ -7,6 +7,7 @@
 #include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
+#include "editordriver.h"
 #include "emulatedband.h"
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
@@ -346,6 +347,8 @@ private slots:
     void fileDialogsRememberTheirKindsFolder();
     void routerFollowsARenamedPattern_data();
     void routerFollowsARenamedPattern();
+    void buildsAnAlignmentConfirmationByMouse_data();
+    void buildsAnAlignmentConfirmationByMouse();
 
 private:
     StudioOptions options() const;
@@ -2557,6 +2560,141 @@ void TestStudio::routerFollowsARenamedPattern()
     QString error;
     QVERIFY2(window.engine().reset(&error), qPrintable(error));
     QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+}
+
+void TestStudio::buildsAnAlignmentConfirmationByMouse_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("en-1280x800") << "en" << QSize(1280, 800);
+    QTest::newRow("en-1920x1080") << "en" << QSize(1920, 1080);
+    QTest::newRow("de-1280x800") << "de" << QSize(1280, 800);
+}
+
+// The walk-through: on usb_insertion with C3, a user builds "aligned" (the plug's
+// angle to the port within 0.05 rad) by mouse in the router editor, routes it to the filter
+// that plays air.squeeze on the right pneumatic band (the squeeze that confirms grasps),
+// applies it and runs: the plug.angle plot shows the levels and shades the aligned span,
+// and the right band plays the squeeze for it.
+void TestStudio::buildsAnAlignmentConfirmationByMouse()
+{
+    QFETCH(QString, language);
+    QFETCH(QSize, size);
+    StudioOptions o = options();
+    o.size = size;
+    o.run.scene = "usb_insertion";
+    o.run.router = "C3";
+    o.run.operatorName = "reactive";
+    o.autoRun = false;
+    Studio studio(o);
+    MainWindow &window = startIn(studio, language);
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    RouterEditor *editor = window.routerEditor();
+    QVERIFY(raiseTab(window, window.findChild<QDockWidget *>("routerDock")->windowTitle()));
+    QTRY_VERIFY(editor->view()->isVisible());
+    QVERIFY(editor->graph().nodeIndex("right.confirm") >= 0); // C3's, before right.squeeze
+    const size_t links = editor->graph().links.size();
+
+    EditorDriver user(editor);
+    const QString signal = user.addFromPalette("signal");
+    QVERIFY(!signal.isEmpty());
+    QVERIFY(user.pick("param:gripper", "right"));
+    QVERIFY(user.pick("param:quantity", "plug.angle")); // offered: the scene declares it
+    const QString threshold = user.addFromPalette("threshold");
+    QVERIFY(!threshold.isEmpty());
+    QVERIFY(user.pick("param:gripper", "right"));
+    user.type("param:message", "aligned");
+    QVERIFY(user.pick("param:category", "confirmation"));
+    QVERIFY(user.pick("param:condition", "inside"));
+    user.type("param:begin", language == "de" ? "-0,05; 0,05" : "[-0.05, 0.05]");
+    const RouterNode &made = editor->graph().nodes[size_t(editor->graph().nodeIndex(threshold))];
+    QCOMPARE(made.params.value("begin"), QJsonValue(QJsonArray{-0.05, 0.05}));
+    QCOMPARE(made.params.value("message"), "aligned");
+
+    // Laid out and fitted with the toolbar's buttons, then wired port to port.
+    for (const QString &button : {RouterEditor::tr("Arrange"), RouterEditor::tr("Fit")}) {
+        QToolButton *found = nullptr;
+        for (QToolButton *b : editor->findChildren<QToolButton *>()) {
+            if (b->text() == button)
+                found = b;
+        }
+        QVERIFY2(found, qPrintable(button));
+        QTest::mouseClick(found, Qt::LeftButton);
+        user.settle();
+    }
+    user.wire(signal, "value", threshold, "in");
+    user.wire(threshold, "events", "right.confirm", "in");
+    QCOMPARE(editor->graph().links.size(), links + 2);
+    QTRY_VERIFY2(editor->errors().isEmpty(), qPrintable(editor->errors().join("; ")));
+    auto *apply = editor->findChild<QWidget *>("applyButton");
+    QVERIFY(apply && apply->isEnabled());
+    QTest::mouseClick(apply, Qt::LeftButton);
+    QTRY_VERIFY(window.engine().routerGraph().nodeIndex(threshold) >= 0);
+
+    // Run until the operator has the plug aligned over the port.
+    window.engine().run();
+    const auto alignedSpan = [&window] {
+        for (const MessageSpan &span : window.engine().history().spans()) {
+            if (messageName(span.message) == "aligned")
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(alignedSpan(), 120000);
+    // The squeeze node plays for it, and the right band's meter shows it.
+    auto *meter = window.findChild<LevelMeter *>("levels:right.air");
+    QVERIFY(meter);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        editor->scene()->nodeItem("right.squeeze")->state().contains("aligned") &&
+            *std::max_element(meter->values().begin(), meter->values().end()) > 0.0,
+        30000);
+    // A few seconds more, so the plots show the run around it.
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().simTime() > 8.0, 60000);
+    window.engine().pause();
+
+    // The plug.angle plot: its levels and the aligned span shaded on it.
+    const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    QString error;
+    if (!dir.isEmpty())
+        QVERIFY2(Studio::screenshot(
+                     &window,
+                     QString("%1/walkthrough-router-%2.png").arg(dir, QTest::currentDataTag()),
+                     &error),
+                 qPrintable(error));
+    QVERIFY(raiseTab(window, window.findChild<QDockWidget *>("plotsDock")->windowTitle()));
+    auto *plot = window.plots()->findChild<QCustomPlot *>();
+    QCPGraph *angle = nullptr;
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        if (plot->graph(g)->objectName() == "right.plug.angle")
+            angle = plot->graph(g);
+    }
+    QVERIFY(angle);
+    QVERIFY(angle->dataCount() > 0);
+    QCPAxisRect *rect = angle->keyAxis()->axisRect();
+    QStringList levels;
+    int shades = 0;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        QCPAbstractItem *item = plot->item(i);
+        if (item->clipAxisRect() != rect)
+            continue;
+        if (auto *line = qobject_cast<QCPItemStraightLine *>(item);
+            line && line->objectName().startsWith("right.plug.angle/" + threshold))
+            levels << QString::number(line->point1->coords().y());
+        if (qobject_cast<QCPItemRect *>(item) &&
+            item->objectName() == "span.right.aligned/" + threshold)
+            ++shades;
+    }
+    levels.sort();
+    QCOMPARE(levels, (QStringList{"-0.05", "0.05"}));
+    QVERIFY(shades >= 1);
+    if (!dir.isEmpty()) {
+        QTest::qWait(300);
+        QVERIFY2(Studio::screenshot(
+                     &window,
+                     QString("%1/walkthrough-plots-%2.png").arg(dir, QTest::currentDataTag()),
+                     &error),
+                 qPrintable(error));
+    }
 }
 
 QTEST_MAIN(TestStudio)
