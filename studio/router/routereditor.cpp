@@ -78,6 +78,47 @@ protected:
     }
 };
 
+/**
+ * An editable list of names whose entries are worked out again each time it opens: a live
+ * rig's signals grow while the inspector shows a node.
+ */
+class NameCombo : public QComboBox
+{
+public:
+    using Choices = std::function<QStringList()>;
+
+    NameCombo(const QString &absent, Choices choices, QWidget *parent)
+        : QComboBox(parent), m_absent(absent), m_choices(std::move(choices))
+    {
+        setEditable(true);
+        setInsertPolicy(QComboBox::NoInsert);
+        fill();
+    }
+    void showPopup() override
+    {
+        const QString typed = currentText();
+        {
+            const QSignalBlocker blocker(this);
+            clear();
+            fill();
+            setEditText(typed);
+        }
+        QComboBox::showPopup();
+    }
+
+private:
+    /** The first entry leaves the parameter out; typed, its text means the same. */
+    void fill()
+    {
+        addItem(m_absent, QString());
+        for (const QString &choice : m_choices())
+            addItem(choice, choice);
+    }
+
+    QString m_absent;
+    Choices m_choices;
+};
+
 /** Numbers in the user's locale, without group separators that would read as decimals. */
 QLocale numberLocale()
 {
@@ -932,22 +973,26 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
     if (spec && kind == ParamKind::Signal) {
         // The built-in quantities, then what the source's frames carry for the node's
         // gripper (both grippers' while it has none).
-        QStringList choices = spec->choices;
-        const RouterContext source = context();
         const QString hand = node.params.value(QStringLiteral("gripper")).toString();
-        for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
-            if (hand.isEmpty() || hand == gripperName(gripper))
-                choices.append(source.signalNames[size_t(gripper)]);
-        }
-        choices.removeDuplicates();
-        addNameCombo(form, label, node, key, *spec, choices);
+        addNameCombo(form, label, node, key, *spec, [this, builtin = spec->choices, hand] {
+            QStringList choices = builtin;
+            const RouterContext source = context();
+            for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
+                if (hand.isEmpty() || hand == gripperName(gripper))
+                    choices.append(source.signalNames[size_t(gripper)]);
+            }
+            choices.removeDuplicates();
+            return choices;
+        });
         return;
     }
     if (spec && takesTypedName(*spec)) {
         // The built-in messages, then the new ones other nodes of the graph name.
-        QStringList choices = spec->choices + newMessageNames();
-        choices.removeDuplicates();
-        addNameCombo(form, label, node, key, *spec, choices);
+        addNameCombo(form, label, node, key, *spec, [this, builtin = spec->choices] {
+            QStringList choices = builtin + newMessageNames();
+            choices.removeDuplicates();
+            return choices;
+        });
         return;
     }
     if (kind == ParamKind::Choice || kind == ParamKind::Choices || name) {
@@ -1022,17 +1067,11 @@ void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QSt
 
 void RouterEditor::addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node,
                                 const QString &key, const ParamSpec &spec,
-                                const QStringList &choices)
+                                std::function<QStringList()> choices)
 {
-    auto *combo = new QComboBox(form->parentWidget());
+    auto *combo = new NameCombo(absentText(spec), std::move(choices), form->parentWidget());
     combo->setObjectName(QStringLiteral("param:") + key);
     combo->setToolTip(spec.help);
-    combo->setEditable(true);
-    combo->setInsertPolicy(QComboBox::NoInsert);
-    // The first entry leaves the parameter out; typed, its text means the same.
-    combo->addItem(absentText(spec), QString());
-    for (const QString &choice : choices)
-        combo->addItem(choice, choice);
     const QString current = valueText(node.params.value(key));
     const int at = current.isEmpty() ? 0 : combo->findData(current);
     combo->setCurrentIndex(std::max(at, 0));

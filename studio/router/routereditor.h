@@ -161,9 +161,12 @@ private:
     /** What the field shows when the parameter is absent: "(default: 20)", "(any)"… */
     static QString absentText(const ParamSpec &spec);
     void commitText(const QString &id, const QString &key, const QString &text);
-    /** An editable combo for a name typed or picked: a signal, a new message. */
+    /**
+     * An editable combo for a name typed or picked (a signal, a new message), offering
+     * `choices()` each time it opens.
+     */
     void addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node, const QString &key,
-                      const ParamSpec &spec, const QStringList &choices);
+                      const ParamSpec &spec, std::function<QStringList()> choices);
     /** The context the source compiles for (a default one without a context function). */
     RouterContext context() const;
     void showStatus(const QString &text, bool warning);

@@ -76,13 +76,16 @@ public:
         auto *combo = m_editor->inspector()->findChild<QComboBox *>(field);
         if (!combo)
             qFatal("no inspector combo %s", qPrintable(field));
-        const int row = combo->findText(text);
-        if (row < 0)
-            return false;
+        // Opened first: what the list offers may be worked out as it opens.
         combo->showPopup();
         QAbstractItemView *list = combo->view();
         if (!QTest::qWaitForWindowExposed(list->window()))
             return false;
+        const int row = combo->findText(text);
+        if (row < 0) {
+            combo->hidePopup();
+            return false;
+        }
         const QModelIndex index = list->model()->index(row, 0);
         list->scrollTo(index);
         QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualRect(index).center());

@@ -889,6 +889,12 @@ void TestRouterEditor::signalPickerOffersTheSourcesSignals()
     QVERIFY(quantity->findText("plug.angle") >= 0);
     QVERIFY(quantity->findText("plug.depth") >= 0);
     QCOMPARE(quantity->findText("wrist.fz"), -1); // the left gripper's
+    // A signal the source reports later (a live rig's next frames) is offered as the list
+    // opens again.
+    source.signalNames[size_t(Gripper::Right)].append("plug.force");
+    QVERIFY(f.pick("param:quantity", "plug.force"));
+    QCOMPARE(f.editor.graph().nodes.front().params.value("quantity"), "plug.force");
+    source.signalNames[size_t(Gripper::Right)].removeLast();
     QVERIFY(f.pick("param:quantity", "plug.angle"));
     QCOMPARE(f.editor.graph().nodes.front().params.value("quantity"), "plug.angle");
     QTRY_VERIFY(f.editor.errors().isEmpty());
