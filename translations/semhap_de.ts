@@ -2297,8 +2297,8 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Tab: Hand wechseln</translation>
     </message>
     <message>
-        <source>Scripted operator</source>
-        <translation>Skriptgesteuerter Bediener</translation>
+        <source>Simulated operator</source>
+        <translation>Simulierter Bediener</translation>
     </message>
     <message>
         <source>Click here and press W A S D to drive</source>

@@ -2294,7 +2294,7 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Scripted operator</source>
+        <source>Simulated operator</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

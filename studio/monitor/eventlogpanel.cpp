@@ -94,10 +94,9 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
     m_follow->setObjectName(QStringLiteral("follow"));
     m_follow->setToolTip(tr("Keep the newest event in view"));
     m_follow->setChecked(true);
-    m_gripper =
-        choiceBox(tr("All grippers"),
-                  {{tr("Left"), only(int(Gripper::Left))}, {tr("Right"), only(int(Gripper::Right))}},
-                  this);
+    m_gripper = choiceBox(
+        tr("All grippers"),
+        {{tr("Left"), only(int(Gripper::Left))}, {tr("Right"), only(int(Gripper::Right))}}, this);
     m_gripper->setObjectName(QStringLiteral("gripperFilter"));
     m_category = choiceBox(tr("All categories"),
                            {{tr("Confirmation"), only(int(Category::Confirmation))},
@@ -143,6 +142,23 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
                                                fontMetrics().horizontalAdvance(sample)) +
                                           16);
     }
+    // A router's own messages (plug.collision) are longer than grasp or break: the column
+    // grows to the longest one logged, measured once per row appended, and may be dragged.
+    header->setSectionResizeMode(EventLogModel::MessageColumn, QHeaderView::Interactive);
+    connect(m_model, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex &, int first, int last) {
+                QHeaderView *header = m_view->horizontalHeader();
+                int wanted = header->sectionSize(EventLogModel::MessageColumn);
+                for (int row = first; row <= last; ++row) {
+                    const QString text =
+                        m_model->index(row, EventLogModel::MessageColumn).data().toString();
+                    wanted = std::max(
+                        wanted,
+                        fontMetrics().horizontalAdvance(QStringLiteral("WW ") + text) + 16);
+                }
+                if (wanted > header->sectionSize(EventLogModel::MessageColumn))
+                    header->resizeSection(EventLogModel::MessageColumn, wanted);
+            });
 
     auto *top = new QHBoxLayout;
     top->addWidget(m_text, 1);

@@ -570,7 +570,8 @@ void SimViewport::drawOverlay(QPainter &painter, bool hasPicture, const QRectF &
         if (m_handDrive && m_handDrive->hasBothHands())
             lines << tr("Tab: switch hand");
     } else {
-        title = tr("Scripted operator");
+        // Scripted or reactive: the status bar names which.
+        title = tr("Simulated operator");
         if (m_handDrive)
             lines << tr("Click here and press W A S D to drive");
     }

@@ -11,6 +11,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
@@ -110,6 +111,7 @@ private slots:
     void filters_data();
     void filters();
     void clickReportsTheTime();
+    void longMessagesFitTheirColumn();
     void followKeepsTheNewestInView();
     void resetClears();
     void longRunStaysCapped();
@@ -249,6 +251,31 @@ void TestEventLog::clickReportsTheTime()
     QTest::keyClick(view, Qt::Key_Down);
     QCOMPARE(activated.count(), 4);
     QCOMPARE(activated.last()[0].toDouble(), 4.0);
+}
+
+void TestEventLog::longMessagesFitTheirColumn()
+{
+    // A router's own message is longer than "break": its column grows to show it whole.
+    RunHistory history;
+    startRun(history);
+    EventLogPanel panel(history);
+    panel.resize(640, 400);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QHeaderView *header = panel.view()->horizontalHeader();
+    const int before = header->sectionSize(EventLogModel::MessageColumn);
+    Message collision = Message::Grasp;
+    QVERIFY(messageFromName("plug.collision_imminent", &collision));
+    SemanticEvent e = makeEvent(0.5, Gripper::Right, 2, DetectorKind::Compose, collision,
+                                EventPhase::Begin, 1.0);
+    e.category = Category::Exception;
+    history.append(e);
+    history.commit();
+    QTRY_COMPARE(panel.view()->model()->rowCount(), 1);
+    const int text = panel.fontMetrics().horizontalAdvance("plug.collision_imminent");
+    QVERIFY2(header->sectionSize(EventLogModel::MessageColumn) > text,
+             qPrintable(QString::number(header->sectionSize(EventLogModel::MessageColumn))));
+    QVERIFY(header->sectionSize(EventLogModel::MessageColumn) > before);
 }
 
 void TestEventLog::followKeepsTheNewestInView()
