@@ -132,19 +132,24 @@ bool keepCubes(const QByteArray &xml, int count, QByteArray *out, int *available
     return true;
 }
 
-MjModelPtr compile(const QByteArray &xml, const QString &where, QString *error)
+/**
+ * Compiles `xml` held in memory (a scene with cubes dropped, a bundled one). `file` is where
+ * MuJoCo takes it to be: for a scene on disk its own path, so its <include>s and asset
+ * folders resolve against its folder, as when MuJoCo reads the file itself.
+ */
+MjModelPtr compile(const QByteArray &xml, const QByteArray &file, const QString &where,
+                   QString *error)
 {
     MjVfsPtr vfs(new mjVFS);
     mj_defaultVFS(vfs.get());
-    const char *file = "scene.xml";
-    if (mj_makeEmptyFileVFS(vfs.get(), file, int(xml.size())) != 0) {
+    if (mj_makeEmptyFileVFS(vfs.get(), file.constData(), int(xml.size())) != 0) {
         *error = where + QStringLiteral(": cannot hold the scene in MuJoCo's file system");
         return nullptr;
     }
-    const int index = mj_findFileVFS(vfs.get(), file);
+    const int index = mj_findFileVFS(vfs.get(), file.constData());
     std::memcpy(vfs->filedata[index], xml.constData(), size_t(xml.size()));
     char message[1000] = "";
-    MjModelPtr model(mj_loadXML(file, vfs.get(), message, sizeof message));
+    MjModelPtr model(mj_loadXML(file.constData(), vfs.get(), message, sizeof message));
     if (!model)
         *error = mujocoError(where, message);
     return checked(std::move(model), xml, where, error);
@@ -193,7 +198,7 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                 *error = mujocoError(nameOrPath, message);
             return checked(std::move(model), xml, nameOrPath, error);
         }
-        return compile(xml, nameOrPath, error);
+        return compile(xml, QByteArrayLiteral("scene.xml"), nameOrPath, error);
     }
     QByteArray filtered;
     int available = 0;
@@ -209,7 +214,10 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                      .arg(available);
         return nullptr;
     }
-    return compile(filtered, nameOrPath, error);
+    return compile(filtered,
+                   isPath ? QFile::encodeName(QFileInfo(path).absoluteFilePath())
+                          : QByteArrayLiteral("scene.xml"),
+                   nameOrPath, error);
 }
 
 } // namespace semhap

@@ -5,6 +5,7 @@
 #include "nametable.h"
 #include "world.h"
 
+#include <QDir>
 #include <QTemporaryDir>
 
 #include <thread>
@@ -151,6 +152,8 @@ private slots:
     void cubeCount();
     void badScenes_data();
     void badScenes();
+    void includesResolveFromTheScenesFolder_data();
+    void includesResolveFromTheScenesFolder();
     void squeezeReportsForce_data();
     void squeezeReportsForce();
     void fragileCubeBreaksAboveItsForce_data();
@@ -230,6 +233,42 @@ void TestWorld::badScenes()
     QString message;
     QVERIFY(!World::load(scene, SceneOptions{cubes}, &message));
     QCOMPARE(message, error);
+}
+
+void TestWorld::includesResolveFromTheScenesFolder_data()
+{
+    QTest::addColumn<int>("cubes");
+    QTest::newRow("the declared cubes") << -1;
+    QTest::newRow("--cubes 4 (compiled from memory)") << 4;
+}
+
+void TestWorld::includesResolveFromTheScenesFolder()
+{
+    // A user's scene keeps its assets in an <include> beside it, and declares semhap:cubes;
+    // it is run from another folder. Every way of loading it resolves the include against the
+    // scene's folder (the in-memory compile did so against the current folder).
+    QFETCH(int, cubes);
+    QFile bundled(":/semhap/scenes/box_and_block.xml");
+    QVERIFY(bundled.open(QIODevice::ReadOnly));
+    QByteArray xml = bundled.readAll();
+    const int from = int(xml.indexOf("  <asset>"));
+    const int to = int(xml.indexOf("  </asset>")) + int(qstrlen("  </asset>\n"));
+    QVERIFY(from > 0 && to > from);
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("parts"));
+    QFile include(dir.filePath("parts/assets.xml"));
+    QVERIFY(include.open(QIODevice::WriteOnly));
+    include.write("<mujoco>\n" + xml.mid(from, to - from) + "</mujoco>\n");
+    include.close();
+    xml.replace(from, to - from, "  <include file=\"parts/assets.xml\"/>\n");
+    const QString path = writeScene(dir, xml);
+    QTemporaryDir elsewhere;
+    const QString was = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(elsewhere.path()));
+    QString error;
+    const std::unique_ptr<World> world = World::load(path, SceneOptions{cubes}, &error);
+    QVERIFY(QDir::setCurrent(was));
+    QVERIFY2(world, qPrintable(error));
 }
 
 void TestWorld::squeezeReportsForce_data()
