@@ -44,6 +44,29 @@ QString name(const mjModel *m, mjtObj type, int index)
     return text ? QString::fromUtf8(text) : QString();
 }
 
+/**
+ * Whether actuator `a` turns its control into a force on a joint, as operators command
+ * grips in newtons: no activation dynamics, a fixed gain, no bias. A position servo (a
+ * bias) would read newtons as a position, and a run would grasp nothing without a word.
+ */
+bool isForceMotorOnJoint(const mjModel *m, int a)
+{
+    return m->actuator_trntype[a] == mjTRN_JOINT && m->actuator_dyntype[a] == mjDYN_NONE &&
+           m->actuator_gaintype[a] == mjGAIN_FIXED && m->actuator_biastype[a] == mjBIAS_NONE;
+}
+
+/** What actuator `a` is instead, for the error that refuses it. */
+QString actuatorKind(const mjModel *m, int a)
+{
+    if (m->actuator_trntype[a] != mjTRN_JOINT)
+        return QStringLiteral("it drives a tendon, a site or a body, not a joint");
+    if (m->actuator_biastype[a] != mjBIAS_NONE)
+        return QStringLiteral("it is a servo (it has a bias: a position or velocity actuator)");
+    if (m->actuator_dyntype[a] != mjDYN_NONE)
+        return QStringLiteral("it has activation dynamics (a filter or an integrator)");
+    return QStringLiteral("its gain is not fixed");
+}
+
 /** An axis-aligned box in world coordinates. */
 struct Aabb
 {
@@ -207,8 +230,6 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         const int target = id(m, mjOBJ_BODY, hand + QStringLiteral(".target"));
         h.actuators[0] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.left"));
         h.actuators[1] = id(m, mjOBJ_ACTUATOR, hand + QStringLiteral(".grip.right"));
-        for (int finger = 0; finger < 2; ++finger)
-            h.slides[finger] = m->actuator_trnid[2 * h.actuators[finger]];
         h.present = h.body >= 0 && target >= 0 && m->body_mocapid[target] >= 0 &&
                     h.actuators[0] >= 0 && h.actuators[1] >= 0;
         if (h.body >= 0 && !h.present) {
@@ -219,6 +240,16 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
         }
         if (!h.present)
             continue;
+        for (int finger = 0; finger < 2; ++finger) {
+            const int a = h.actuators[finger];
+            if (!isForceMotorOnJoint(m, a)) {
+                *error = QStringLiteral("%1: actuator %2 must be a motor on its finger's "
+                                        "joint, force in N closing (see sim/README.md): %3")
+                             .arg(nameOrPath, name(m, mjOBJ_ACTUATOR, a), actuatorKind(m, a));
+                return nullptr;
+            }
+            h.slides[finger] = m->actuator_trnid[2 * a];
+        }
         h.mocap = m->body_mocapid[target];
         h.frame.gripper = g;
         for (int finger = 0; finger < 2; ++finger) {

@@ -223,6 +223,35 @@ void TestWorld::badScenes_data()
     QTest::newRow("missing file") << "/nonexistent/scene.xml" << -1
                                   << "/nonexistent/scene.xml: cannot read: No such file or "
                                      "directory";
+    // Grips in newtons need force motors on the finger joints.
+    static QTemporaryDir dir;
+    QFile bundled(":/semhap/scenes/box_and_block.xml");
+    bundled.open(QIODevice::ReadOnly);
+    const QByteArray xml = bundled.readAll();
+    const QByteArray motor = R"(<motor name="right.grip.left" joint="right.slide.left" gear="1")";
+    const auto edited = [&](const char *file, const QByteArray &actuator) {
+        QByteArray scene = xml;
+        scene.replace(motor, actuator);
+        const QString path = dir.filePath(file);
+        QFile out(path);
+        out.open(QIODevice::WriteOnly);
+        out.write(scene);
+        return path;
+    };
+    const QString servo = edited(
+        "servo.xml", R"(<position name="right.grip.left" joint="right.slide.left" kp="100")");
+    QTest::newRow("a position servo for a grip")
+        << servo << -1
+        << servo + ": actuator right.grip.left must be a motor on its finger's joint, force in "
+                   "N closing (see sim/README.md): it is a servo (it has a bias: a position or "
+                   "velocity actuator)";
+    const QString affine =
+        edited("affine.xml", R"(<general name="right.grip.left" joint="right.slide.left" )"
+                             R"(gaintype="affine" gainprm="1 0 -50")");
+    QTest::newRow("a grip whose gain follows the finger")
+        << affine << -1
+        << affine + ": actuator right.grip.left must be a motor on its finger's joint, force "
+                    "in N closing (see sim/README.md): its gain is not fixed";
 }
 
 void TestWorld::badScenes()
