@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "command.h"
 
+#include "gripperlibrary.h"
+
 #include "inputfile.h"
 #include "patternlibrary.h"
 #include "pipeline.h"
@@ -196,7 +198,8 @@ void Command::addRoutingOptions(QCommandLineParser &parser)
                       tr("S")});
 }
 
-bool Command::simulationOptions(const QCommandLineParser &parser, double *duration, int *cubes)
+bool Command::simulationOptions(const QCommandLineParser &parser, double *duration,
+                                SceneOptions *scene)
 {
     double count = -1;
     if (!numberOption(parser, QStringLiteral("duration"), duration) ||
@@ -211,8 +214,20 @@ bool Command::simulationOptions(const QCommandLineParser &parser, double *durati
         usageError(tr("--cubes must be a whole number from 0 to %1").arg(RunOptions::MaxCubes));
         return false;
     }
-    *cubes = int(count);
+    scene->cubes = int(count);
+    scene->gripper = parser.value(QStringLiteral("gripper"));
     return true;
+}
+
+void Command::addSceneOptions(QCommandLineParser &parser)
+{
+    parser.addOption(
+        {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
+    parser.addOption({QStringLiteral("gripper"),
+                      tr("A gripper adapter (docs/grippers.md) whose model replaces the "
+                         "scene's grippers: %1, or a file.")
+                          .arg(GripperLibrary::names().join(QStringLiteral(", "))),
+                      tr("NAME|FILE")});
 }
 
 void Command::reportWarnings(const RouterGraph &graph)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "sceneoptions.h"
+
 #include "contactframeparser.h"
 #include "devicemodel.h"
 #include "outputfile.h"
@@ -118,7 +120,10 @@ protected:
      * >= 0; absent: -1, the scene's own): what run and compare share. False after a usage
      * message.
      */
-    bool simulationOptions(const QCommandLineParser &parser, double *duration, int *cubes);
+    bool simulationOptions(const QCommandLineParser &parser, double *duration,
+                           SceneOptions *scene);
+    /** Adds --cubes and --gripper, which simulationOptions() reads. */
+    static void addSceneOptions(QCommandLineParser &parser);
     /** The longest simulated run (s): about eleven days. */
     static constexpr double MaxDuration = 1e6;
     /** Declares --max-gap: how far a frame's `t` may jump (route, listen). */

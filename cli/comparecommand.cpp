@@ -273,8 +273,7 @@ void CompareCommand::configure(QCommandLineParser &parser)
          tr("NAME")});
     parser.addOption({QStringLiteral("seeds"), tr("Seeds 1..N per router."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds per run."), tr("S")});
-    parser.addOption(
-        {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
+    addSceneOptions(parser);
     parser.addOption({QStringLiteral("jobs"), tr("Runs at once (default: the cores)."), tr("N")});
     parser.addOption({QStringLiteral("shard"),
                       tr("Run only slice I of N of the grid (1-based), for job arrays."),
@@ -304,10 +303,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     }
     double seeds = 0;
     double duration = 0;
-    int cubes = -1;
+    SceneOptions scene;
     double jobs = std::max(1u, std::thread::hardware_concurrency());
     if (!numberOption(parser, QStringLiteral("seeds"), &seeds) ||
-        !simulationOptions(parser, &duration, &cubes) ||
+        !simulationOptions(parser, &duration, &scene) ||
         !numberOption(parser, QStringLiteral("jobs"), &jobs))
         return ExitUsage;
     if (seeds < 1 || seeds != std::floor(seeds) || seeds > 100000)
@@ -345,7 +344,7 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             options.operatorName = parser.value(QStringLiteral("operator"));
             options.seed = std::uint64_t(seed);
             options.duration = duration;
-            options.sceneOptions.cubes = cubes;
+            options.sceneOptions = scene;
             grid.push_back(options);
         }
     }

@@ -111,8 +111,7 @@ void RunCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("seed"),
                       tr("Seed of the operator and of a laid-out scene (default 1)."), tr("N")});
     parser.addOption({QStringLiteral("duration"), tr("Simulated seconds."), tr("S")});
-    parser.addOption(
-        {QStringLiteral("cubes"), tr("Cubes in play (default: the scene's)."), tr("N")});
+    addSceneOptions(parser);
     parser.addOption({QStringLiteral("reaction-time"),
                       tr("Reaction time in seconds of the reactive operator, and of the person "
                          "the router's predict nodes warn (default 0.25)."),
@@ -155,7 +154,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     options.operatorName = parser.value(QStringLiteral("operator"));
     options.overrides = parser.values(QStringLiteral("set"));
     double seed = 1;
-    if (!simulationOptions(parser, &options.duration, &options.sceneOptions.cubes) ||
+    if (!simulationOptions(parser, &options.duration, &options.sceneOptions) ||
         !numberOption(parser, QStringLiteral("seed"), &seed))
         return ExitUsage;
     RouterContext context{options.reactionTime};

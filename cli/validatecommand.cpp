@@ -2,6 +2,7 @@
 #include "validatecommand.h"
 
 #include "devicemodel.h"
+#include "gripperadapter.h"
 #include "jsonreader.h"
 #include "pattern.h"
 #include "patternrender.h"
@@ -29,6 +30,50 @@ bool validateScene(const QString &path, QString *error, QString *what)
     *what = QStringLiteral("scene (grippers: %1; %2 objects)")
                 .arg(grippers.join(QStringLiteral(", ")))
                 .arg(world->objects().size());
+    return true;
+}
+
+QString vector(const std::array<double, 3> &v)
+{
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(v[0], 0, 'f', 3)
+        .arg(v[1], 0, 'f', 3)
+        .arg(v[2], 0, 'f', 3);
+}
+
+/**
+ * An adapter is valid when its model goes into a bundled scene's wrist and its fingers close:
+ * what the loader measured is the description (docs/grippers.md).
+ */
+bool validateGripper(const QString &path, QString *error, QString *what)
+{
+    SceneOptions options;
+    options.gripper = path;
+    const QString scene = QStringLiteral("box_and_block");
+    std::unique_ptr<World> world = World::load(scene, options, error);
+    if (!world)
+        return false;
+    const GripperGeometry &g = world->gripperGeometry(Gripper::Right);
+    const GripperComposer::Mount &mount = *world->gripperMount();
+    const auto arms = g.armRange(0);
+    *what = ValidateCommand::tr(
+                "gripper adapter, measured in %1: mount pos %2 quat (%3, %4, %5, %6); closing "
+                "axis %7, approach axis %8 (in the wrist's frame); pads %9 mm apart open, %10 mm "
+                "closed; pads' centre %11 mm below the wrist open, %12 mm closed; moment arm "
+                "%13 to %14 mm per unit of the finger joint; a full grasp touches %15 pad geoms")
+                .arg(scene, vector(mount.pos))
+                .arg(mount.quat[0], 0, 'f', 4)
+                .arg(mount.quat[1], 0, 'f', 4)
+                .arg(mount.quat[2], 0, 'f', 4)
+                .arg(mount.quat[3], 0, 'f', 4)
+                .arg(vector(g.closingAxis()), vector(g.approachAxis()))
+                .arg(g.openGap() * 1000, 0, 'f', 1)
+                .arg(g.closedGap() * 1000, 0, 'f', 1)
+                .arg(g.drop(g.openGap()) * 1000, 0, 'f', 1)
+                .arg(g.drop(g.closedGap()) * 1000, 0, 'f', 1)
+                .arg(arms[0] * 1000, 0, 'f', 1)
+                .arg(arms[1] * 1000, 0, 'f', 1)
+                .arg(world->fullContacts(Gripper::Right));
     return true;
 }
 
@@ -116,6 +161,14 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 ok = Router::compile(graph, &error) != nullptr;
                 what = tr("router '%1'").arg(graph.name);
             }
+        } else if (format == QLatin1String(GripperAdapter::Format)) {
+            QString reason;
+            ok = validateGripper(doc.path, &reason, &what);
+            if (!ok) {
+                report(reason);
+                ++invalid;
+                continue;
+            }
         } else if (format == QLatin1String(DeviceModel::Format)) {
             DeviceModelPtr model = DeviceModel::fromJson(doc.json, doc.path, &error);
             ok = model != nullptr;
@@ -123,10 +176,11 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 what = tr("device model '%1'").arg(model->name());
         } else {
             error = LoadError::at(doc.path, QStringLiteral("/format"),
-                                  tr("unknown format '%1' (expected %2, %3 or %4)")
+                                  tr("unknown format '%1' (expected %2, %3, %4 or %5)")
                                       .arg(format, QLatin1String(Pattern::Format),
                                            QLatin1String(RouterGraph::Format),
-                                           QLatin1String(DeviceModel::Format)));
+                                           QLatin1String(DeviceModel::Format),
+                                           QLatin1String(GripperAdapter::Format)));
         }
         if (ok) {
             m_out << tr("%1: valid %2").arg(doc.path, what) << '\n';

@@ -13,14 +13,13 @@ namespace semhap {
 namespace {
 
 constexpr double OpenGrip = -20.0;
-// Heights of the wrist (m): carrying, and above a standing plug's centre when grasping it
-// (the pads' centre 6 cm below the wrist, 14 mm above the plug's centre: the pads' lowest
-// taxels then stay above the port's face when the plug is seated).
+// Heights of the wrist (m) carrying, and of the pads' centre above a standing plug's centre
+// when grasping it (14 mm: the pads' lowest taxels then stay above the port's face when the
+// plug is seated). Where the pads are below the wrist is the gripper's (World::padDrop).
 constexpr double CarryHeight = 0.2;
-constexpr double GraspAbove = 0.06 + 0.014;
-// How far the pads reach below the wrist (m): 6 cm to their centre, 1.5 cm to the lowest
-// taxels' centres, 4 mm taxels.
-constexpr double PadsBelowWrist = 0.079;
+constexpr double GraspAbove = 0.014;
+// The plug's width across the grip (m; 12 x 4.5 mm, taken by its wide faces).
+constexpr double PlugWidth = 0.0045;
 // How far above the port's face the tip is held while aligning (m).
 constexpr double Hover = 0.015;
 // The eye's error above the port (sim/README.md, "usb_insertion"): after the carry, turned
@@ -220,7 +219,8 @@ void InsertionOperator::planPick(World &world)
     const double force = std::clamp(m_random.normal(20.0, 4.0), 10.0, 30.0);
     m_hand.grip(OpenGrip, 0.1);
     m_hand.move({x, y, CarryHeight}, 0.9 * m_pace);
-    m_hand.move({x, y, plug.pos[2] + GraspAbove}, 0.6 * m_pace);
+    m_hand.move({x, y, plug.pos[2] + GraspAbove + world.padDrop(Gripper::Right, PlugWidth)},
+                0.6 * m_pace);
     m_hand.wait(0.1);
     m_hand.grip(force, 0.5 * m_pace);
     m_hand.wait(0.2);
@@ -245,7 +245,8 @@ void InsertionOperator::startAligning(World &world, double t, bool lookAgain)
         // the fingers would meet the face before it is seated, it is let go of, to be taken
         // again from the table (the task puts a dropped plug back).
         lookAtHand(world);
-        if (m_tipInHand[2] > -(PadsBelowWrist + InsertionTask::FullDepth)) {
+        if (m_tipInHand[2] >
+            -(world.padReach(Gripper::Right, PlugWidth) + InsertionTask::FullDepth)) {
             m_hand.clear();
             m_hand.grip(OpenGrip, 0.2);
             const Pose wrist = world.target(Gripper::Right);

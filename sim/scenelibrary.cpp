@@ -2,6 +2,7 @@
 #include "scenelibrary.h"
 
 #include "inputfile.h"
+#include "mjcfelement.h"
 
 #include <QDir>
 #include <QFile>
@@ -168,6 +169,7 @@ QStringList SceneLibrary::builtinNames()
 }
 
 MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &options,
+                              const GripperAdapter *gripper, const GripperComposer::Mount &mount,
                               QString *error)
 {
     installMujocoHandlers();
@@ -187,37 +189,61 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
         return nullptr;
     }
     const int count = options.cubes >= 0 ? options.cubes : declaredCubes(xml);
-    if (count < 0) {
+    const QByteArray file = isPath ? QFile::encodeName(QFileInfo(path).absoluteFilePath())
+                                   : QByteArrayLiteral("scene.xml");
+    if (count < 0 && !gripper) {
         // A file on disk compiles from its own folder, so its <include>s and meshes resolve.
         if (isPath) {
             char message[1000] = "";
-            MjModelPtr model(
-                mj_loadXML(QFile::encodeName(QFileInfo(path).absoluteFilePath()).constData(),
-                           nullptr, message, sizeof message));
+            MjModelPtr model(mj_loadXML(file.constData(), nullptr, message, sizeof message));
             if (!model)
                 *error = mujocoError(nameOrPath, message);
             return checked(std::move(model), xml, nameOrPath, error);
         }
-        return compile(xml, QByteArrayLiteral("scene.xml"), nameOrPath, error);
+        return compile(xml, file, nameOrPath, error);
     }
-    QByteArray filtered;
-    int available = 0;
-    QString xmlError;
-    if (!keepCubes(xml, count, &filtered, &available, &xmlError)) {
-        *error = nameOrPath + QLatin1Char(':') + xmlError;
+    if (count >= 0) {
+        QByteArray filtered;
+        int available = 0;
+        QString xmlError;
+        if (!keepCubes(xml, count, &filtered, &available, &xmlError)) {
+            *error = nameOrPath + QLatin1Char(':') + xmlError;
+            return nullptr;
+        }
+        if (count > available) {
+            *error = QStringLiteral("%1: asked for %2 cubes, the scene has %3")
+                         .arg(nameOrPath)
+                         .arg(count)
+                         .arg(available);
+            return nullptr;
+        }
+        xml = filtered;
+    }
+    if (!gripper)
+        return compile(xml, file, nameOrPath, error);
+    MjcfElement scene;
+    if (!MjcfElement::parse(xml, &scene, &reason)) {
+        *error = nameOrPath + QLatin1Char(':') + reason;
         return nullptr;
     }
-    if (count > available) {
-        *error = QStringLiteral("%1: asked for %2 cubes, the scene has %3")
-                     .arg(nameOrPath)
-                     .arg(count)
-                     .arg(available);
+    if (!GripperComposer::compose(&scene, *gripper, mount, &reason)) {
+        *error = nameOrPath + QStringLiteral(": ") + reason;
         return nullptr;
     }
-    return compile(filtered,
-                   isPath ? QFile::encodeName(QFileInfo(path).absoluteFilePath())
-                          : QByteArrayLiteral("scene.xml"),
-                   nameOrPath, error);
+    // MuJoCo's lines are the composed document's, which no editor has: no line numbers.
+    QString where = nameOrPath + QStringLiteral(" with ") + gripper->file;
+    const QByteArray composed = scene.toXml();
+    MjModelPtr model = compile(composed, file, where, error);
+    if (!model)
+        error->replace(QRegularExpression(QStringLiteral("^([^:]*):\\d+:")),
+                       QStringLiteral("\\1:"));
+    return model;
+}
+
+MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &options,
+                              QString *error)
+{
+    return load(nameOrPath, options, nullptr, GripperComposer::Mount(), error);
 }
 
 } // namespace semhap

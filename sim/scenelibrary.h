@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "grippercomposer.h"
 #include "mujocohandles.h"
 #include "sceneoptions.h"
 
@@ -27,6 +28,13 @@ public:
      * `FILE:LINE: reason` where MuJoCo or the check names a place.
      */
     static MjModelPtr load(const QString &nameOrPath, const SceneOptions &options, QString *error);
+    /**
+     * The same with `gripper`'s model in place of the scene's grippers, its root at `mount`
+     * in the wrist (GripperComposer); `options.gripper` is not read here.
+     */
+    static MjModelPtr load(const QString &nameOrPath, const SceneOptions &options,
+                           const GripperAdapter *gripper, const GripperComposer::Mount &mount,
+                           QString *error);
 };
 
 } // namespace semhap

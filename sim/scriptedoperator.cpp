@@ -17,8 +17,7 @@ namespace semhap {
 namespace {
 
 constexpr double Pi = 3.14159265358979323846;
-// Heights of the wrist (the gripper origin sits 6 cm above the pads' centre).
-constexpr double PadDrop = 0.06;
+// Heights of the wrist; where the pads are below it is the gripper's (World::padDrop).
 constexpr double CarryHeight = 0.25;
 constexpr double ReleaseHeight = 0.19;
 // How far from a cube's centre the fingers come down, and the room they need there.
@@ -198,7 +197,11 @@ void ScriptedOperator::planGrasp(World &world)
         closing = FastClosingTime;
     }
     m_right.move({pos[0], pos[1], CarryHeight}, 0.3 * pace);
-    m_right.move({pos[0], pos[1], pos[2] + PadDrop}, 0.5 * pace);
+    // The pads' centre at the cube's, where they will be once closed on it.
+    const SceneObject &object = world.objects()[size_t(cube)];
+    const double width =
+        std::min(object.upper[0] - object.lower[0], object.upper[1] - object.lower[1]);
+    m_right.move({pos[0], pos[1], pos[2] + world.padDrop(Gripper::Right, width)}, 0.5 * pace);
     m_right.wait(0.1);
     m_right.grip(force, closing);
     m_right.wait(0.25);
@@ -266,7 +269,8 @@ void ScriptedOperator::planHold(World &world)
                 break;
             }
             const auto pos = world.objectPosition(container);
-            const double gripZ = pos[2] + object.upper[2] - 0.02 + PadDrop;
+            const double gripZ = pos[2] + object.upper[2] - 0.02 +
+                                 world.padDrop(Gripper::Left, object.upper[1] - object.lower[1]);
             // The grip a practised person chooses for the empty container: 1.56 times what
             // holds it (a safety margin of 36 % of the grip), kept as the grip-to-load ratio
             // for the load it expects.

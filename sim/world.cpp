@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "world.h"
 
+#include "gripperadapter.h"
+#include "grippergeometry.h"
+#include "gripperlibrary.h"
 #include "mujocohandles.h"
 #include "scenelibrary.h"
 #include "scenesignals.h"
@@ -32,6 +35,9 @@ constexpr double StillAngularSpeed = 0.05; // rad/s
 // Clearance kept between anything awake and a sleeping object, on top of the distance the
 // awake thing covers in two steps: a sleeping object wakes before anything can touch it.
 constexpr double WakeMargin = 0.008; // m
+// Where a mounted model's pads' centre goes below the wrist when no mount is given: where
+// the bundled grippers have theirs.
+constexpr double PadsBelowWrist = 0.06; // m
 
 int id(const mjModel *m, mjtObj type, const QString &name)
 {
@@ -97,6 +103,33 @@ struct Aabb
     }
 };
 
+/**
+ * The mount that turns a model measured at the identity mount so its fingers point down (-z)
+ * and close along y, left finger at +y, with the pads' centre 6 cm below the wrist when open:
+ * where semhap's own grippers have them.
+ */
+GripperComposer::Mount fittingMount(const GripperGeometry &geometry)
+{
+    const auto &y = geometry.closingAxis();
+    const auto &a = geometry.approachAxis();
+    const std::array<double, 3> z{-a[0], -a[1], -a[2]};
+    const std::array<double, 3> x{y[1] * z[2] - y[2] * z[1], y[2] * z[0] - y[0] * z[2],
+                                  y[0] * z[1] - y[1] * z[0]};
+    // Rows x, y, z: the rotation taking the model's axes to the wrist's.
+    const mjtNum rotation[9] = {x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2]};
+    GripperComposer::Mount mount;
+    mjtNum quat[4];
+    mju_mat2Quat(quat, rotation);
+    const auto &c = geometry.openCentre();
+    for (int i = 0; i < 3; ++i)
+        mount.pos[size_t(i)] =
+            (i == 2 ? -PadsBelowWrist : 0.0) -
+            (rotation[3 * i] * c[0] + rotation[3 * i + 1] * c[1] + rotation[3 * i + 2] * c[2]);
+    for (int i = 0; i < 4; ++i)
+        mount.quat[size_t(i)] = quat[i];
+    return mount;
+}
+
 } // namespace
 
 struct World::Private
@@ -128,6 +161,14 @@ struct World::Private
         int actuators[2] = {-1, -1};
         int slides[2] = {-1, -1};
         ContactFrame frame;
+        /** What its fingers do as they close, measured at load. */
+        GripperGeometry geometry;
+        /**
+         * A gripper model brought in by an adapter: its motors' gears follow the moment arm
+         * of each finger's joint at every step, so a control in newtons presses the pad with
+         * that many newtons whatever the linkage.
+         */
+        bool adapted = false;
     };
 
     MjModelPtr model;
@@ -170,6 +211,16 @@ struct World::Private
     std::vector<Aabb> awake;   ///< scratch: boxes around what is awake
     std::vector<char> blocked; ///< scratch: per object, stays awake this step
 
+    /** A World on a compiled model: its grippers, objects and signals found and measured. */
+    static std::unique_ptr<World> assemble(MjModelPtr model, const QString &nameOrPath,
+                                           const GripperAdapter *adapter, QString *error);
+    /** The moment arm of `finger`'s motor now (m; 1 for a finger on a slide of its own). */
+    double arm(const Hand &hand, int finger) const
+    {
+        return hand.adapted
+                   ? hand.geometry.arm(finger, data->qpos[model->jnt_qposadr[hand.slides[finger]]])
+                   : 1.0;
+    }
     void extract(World &world, double t);
     void checkFractures(World &world, double t);
     /** Object `i` breaks at `t` under `force`: it stops colliding, vanishes and is parked. */
@@ -211,9 +262,47 @@ QStringList World::builtinScenes()
 std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions &options,
                                    QString *error)
 {
-    MjModelPtr model = SceneLibrary::load(nameOrPath, options, error);
-    if (!model)
+    if (options.gripper.isEmpty()) {
+        MjModelPtr model = SceneLibrary::load(nameOrPath, options, error);
+        return model ? Private::assemble(std::move(model), nameOrPath, nullptr, error) : nullptr;
+    }
+    const QString path = GripperLibrary::find(options.gripper);
+    if (path.isEmpty()) {
+        *error = QStringLiteral("%1: no such gripper adapter (adapters: %2)")
+                     .arg(options.gripper, GripperLibrary::names().join(QStringLiteral(", ")));
         return nullptr;
+    }
+    GripperAdapter adapter;
+    LoadError adapterError;
+    if (!GripperAdapter::read(path, &adapter, &adapterError)) {
+        *error = adapterError.toString();
+        return nullptr;
+    }
+    GripperComposer::Mount mount;
+    if (adapter.hasMount)
+        mount = {adapter.mountPos, adapter.mountQuat};
+    const QString where = nameOrPath + QStringLiteral(" with ") + path;
+    MjModelPtr model = SceneLibrary::load(nameOrPath, options, &adapter, mount, error);
+    std::unique_ptr<World> world =
+        model ? Private::assemble(std::move(model), where, &adapter, error) : nullptr;
+    if (world)
+        world->m_mount = mount;
+    if (!world || adapter.hasMount)
+        return world;
+    // No mount given: turn the model so its fingers point down and close along y, the pads'
+    // centre 6 cm below the wrist when open (docs/grippers.md), as measured on this first load.
+    const Gripper hand = world->hasGripper(Gripper::Right) ? Gripper::Right : Gripper::Left;
+    mount = fittingMount(world->d->hands[size_t(hand)].geometry);
+    model = SceneLibrary::load(nameOrPath, options, &adapter, mount, error);
+    world = model ? Private::assemble(std::move(model), where, &adapter, error) : nullptr;
+    if (world)
+        world->m_mount = mount;
+    return world;
+}
+
+std::unique_ptr<World> World::Private::assemble(MjModelPtr model, const QString &nameOrPath,
+                                                const GripperAdapter *adapter, QString *error)
+{
     std::unique_ptr<World> world(new World);
     world->m_sceneName = nameOrPath;
     Private &p = *world->d;
@@ -266,6 +355,27 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
     if (!p.hands[0].present && !p.hands[1].present) {
         *error = nameOrPath + QStringLiteral(": no gripper (a body left.gripper or "
                                              "right.gripper; see sim/README.md)");
+        return nullptr;
+    }
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        Private::Hand &h = p.hands[size_t(g)];
+        if (!h.present)
+            continue;
+        std::array<std::vector<int>, 2> pads;
+        for (int geom = 0; geom < m->ngeom; ++geom) {
+            const int tip = p.tipOfGeom[size_t(geom)];
+            if (tip >= 0 && tip / 2 == int(g))
+                pads[size_t(tip % 2)].push_back(geom);
+        }
+        QString reason;
+        // A gripper without fingertips touches nothing (a scene testing other things): no
+        // geometry to measure.
+        if (pads[0].empty() || pads[1].empty() ||
+            h.geometry.measure(m, h.body, {h.slides[0], h.slides[1]}, pads, &reason)) {
+            h.adapted = adapter != nullptr;
+            continue;
+        }
+        *error = QStringLiteral("%1: gripper '%2': %3").arg(nameOrPath, gripperName(g), reason);
         return nullptr;
     }
 
@@ -373,6 +483,14 @@ void World::step()
 {
     const double t = d->data->time;
     d->wakeNearAwake(*this);
+    for (const Private::Hand &h : d->hands) {
+        for (int finger = 0; h.adapted && finger < 2; ++finger) {
+            const int joint = h.slides[finger];
+            const double q = d->data->qpos[d->model->jnt_qposadr[joint]];
+            d->model->actuator_gear[6 * h.actuators[finger]] = h.geometry.arm(finger, q);
+            d->data->qfrc_applied[d->model->jnt_dofadr[joint]] = -h.geometry.spring(finger, q);
+        }
+    }
     const auto start = std::chrono::steady_clock::now();
     mj_step(d->model.get(), d->data.get());
     d->physics += std::chrono::steady_clock::now() - start;
@@ -856,22 +974,49 @@ double World::maxGrip(Gripper gripper) const
 double World::closingForce(Gripper gripper, double speed) const
 {
     // Each finger's actuator pushes with half the total; a free finger moves at the speed
-    // its damping takes all of that.
+    // its damping takes all of that (through its moment arm: a pad at `speed` turns its
+    // joint at speed / arm, and the joint's damping needs a pad force of damping * speed /
+    // arm^2).
     const Private::Hand &h = d->hands[size_t(gripper)];
     const mjModel *m = d->model.get();
-    double damping = 0.0;
-    for (int slide : h.slides)
-        damping += m->dof_damping[m->jnt_dofadr[slide]];
-    return damping * speed;
+    double force = 0.0;
+    for (int finger = 0; finger < 2; ++finger) {
+        const double arm = d->arm(h, finger);
+        force += m->dof_damping[m->jnt_dofadr[h.slides[finger]]] * speed / (arm * arm);
+    }
+    return force;
 }
 
 double World::fingerTravel(Gripper gripper) const
 {
     const Private::Hand &h = d->hands[size_t(gripper)];
     const mjModel *m = d->model.get();
-    return (d->data->qpos[m->jnt_qposadr[h.slides[0]]] +
-            d->data->qpos[m->jnt_qposadr[h.slides[1]]]) /
-           2;
+    double travel = 0.0;
+    for (int finger = 0; finger < 2; ++finger) {
+        const double q = d->data->qpos[m->jnt_qposadr[h.slides[finger]]];
+        travel += (h.adapted ? h.geometry.travel(finger, q) : q) / 2;
+    }
+    return travel;
+}
+
+double World::padDrop(Gripper gripper, double gap) const
+{
+    return d->hands[size_t(gripper)].geometry.drop(gap);
+}
+
+double World::padReach(Gripper gripper, double gap) const
+{
+    return d->hands[size_t(gripper)].geometry.reach(gap);
+}
+
+const GripperGeometry &World::gripperGeometry(Gripper gripper) const
+{
+    return d->hands[size_t(gripper)].geometry;
+}
+
+int World::fullContacts(Gripper gripper) const
+{
+    return d->hands[size_t(gripper)].geometry.fullContacts();
 }
 
 double World::supportForce(Gripper gripper) const

@@ -3,6 +3,8 @@
 
 #include "actortable.h"
 #include "contactframe.h"
+#include "grippercomposer.h"
+#include "grippergeometry.h"
 #include "pose.h"
 #include "sceneoptions.h"
 
@@ -98,6 +100,25 @@ public:
      * joints' damping; 0 when the joints have none (the speed is then not the force's).
      */
     double closingForce(Gripper gripper, double speed) const;
+    /**
+     * How far below the wrist, along the fingers, the pads' centre is when the pads are `gap`
+     * apart (m): measured from the model at load (a linkage's pads drop as they close).
+     */
+    double padDrop(Gripper gripper, double gap) const;
+    /** How far below the wrist the pads reach at `gap`: their lowest point (m). */
+    double padReach(Gripper gripper, double gap) const;
+    /**
+     * How many pad geoms of both fingertips a flat object held between them touches: the
+     * contact count `n` of a full, steady grasp (32 for the bundled 4 × 4 taxel pads).
+     */
+    int fullContacts(Gripper gripper) const;
+    /** What the gripper's fingers do as they close, measured at load (GripperGeometry). */
+    const GripperGeometry &gripperGeometry(Gripper gripper) const;
+    /**
+     * Where a gripper adapter's model sits in the wrists (its own, or the one the loader
+     * fitted); none for a scene's own grippers.
+     */
+    const std::optional<GripperComposer::Mount> &gripperMount() const { return m_mount; }
     /** The highest total grip force the actuators can give (N). */
     double maxGrip(Gripper gripper) const;
     /**
@@ -209,6 +230,7 @@ private:
 
     QString m_sceneName;
     QString m_taskName;
+    std::optional<GripperComposer::Mount> m_mount;
     ActorTable m_actors;
     std::vector<SceneObject> m_objects;
     std::vector<Fracture> m_fractures;

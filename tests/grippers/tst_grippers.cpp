@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: MIT
+// Gripper adapters (docs/grippers.md): a model semhap did not write goes into a scene's wrist
+// unedited, its geometry is measured, and its pads press with the commanded force. The test
+// grippers in this folder have the traits of real ones (their MJCF says which).
+#include "world.h"
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+QByteArray hashOf(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return QByteArray();
+    return QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256);
+}
+
+/** Copies a test gripper's folder into `dir`, so it is loaded from elsewhere than the sources. */
+QString copyGripper(const QString &name, const QTemporaryDir &dir)
+{
+    const QDir source(QStringLiteral(SEMHAP_TEST_DATA "/") + name);
+    QDir(dir.path()).mkpath(name + QStringLiteral("/assets"));
+    for (const QString &file : source.entryList(QDir::Files))
+        QFile::copy(source.filePath(file), dir.filePath(name + QLatin1Char('/') + file));
+    for (const QString &file :
+         QDir(source.filePath(QStringLiteral("assets"))).entryList(QDir::Files))
+        QFile::copy(source.filePath(QStringLiteral("assets/") + file),
+                    dir.filePath(name + QStringLiteral("/assets/") + file));
+    return dir.filePath(name + QLatin1Char('/') + name + QStringLiteral(".json"));
+}
+
+std::unique_ptr<World> load(const QString &gripper, int cubes = -1)
+{
+    SceneOptions options;
+    options.cubes = cubes;
+    options.gripper = gripper;
+    QString error;
+    std::unique_ptr<World> world = World::load(QStringLiteral("box_and_block"), options, &error);
+    if (!world)
+        qWarning("%s", qPrintable(error));
+    return world;
+}
+
+void steps(World &world, double seconds, const std::function<void(double)> &each = {})
+{
+    const int count = int(std::lround(seconds / world.timestep()));
+    for (int k = 1; k <= count; ++k) {
+        if (each)
+            each(double(k) / count);
+        world.step();
+    }
+}
+
+} // namespace
+
+class TestGrippers : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void loadsTheModelAsItIs_data();
+    void loadsTheModelAsItIs();
+    void padsPressWithTheCommand_data();
+    void padsPressWithTheCommand();
+    void badAdaptersAreRefused_data();
+    void badAdaptersAreRefused();
+};
+
+void TestGrippers::loadsTheModelAsItIs_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<double>("openGap");    // mm, from the model's dimensions
+    QTest::addColumn<double>("closedGap");  // mm
+    QTest::addColumn<double>("closedDrop"); // mm below the wrist, pads' centre
+    QTest::addColumn<int>("fullContacts");
+    // Linkage: pivots 15 mm off the middle, pads 40 mm out and 40 mm down the link, 8 mm
+    // to their faces; closed 35 degrees: each face at 15 + 40 (cos - sin) - 8 mm.
+    const double a = 35 * M_PI / 180;
+    QTest::newRow("linkage") << "linkage"
+                             << "linkage.xml" << 94.0
+                             << 2 * (15 + 40 * (std::cos(a) - std::sin(a)) - 8)
+                             << 60 + 40 * (std::sin(a) + std::cos(a) - 1) << 2;
+    // Slider: fingers 40 mm of travel each, faces 5 mm off the finger's origin at 10 mm.
+    QTest::newRow("slider") << "slider"
+                            << "slider.xml" << 90.0 << 10.0 << 60.0 << 2;
+}
+
+void TestGrippers::loadsTheModelAsItIs()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, model);
+    QFETCH(double, openGap);
+    QFETCH(double, closedGap);
+    QFETCH(double, closedDrop);
+    QFETCH(int, fullContacts);
+    QTemporaryDir dir;
+    const QString adapter = copyGripper(name, dir);
+    const QString modelPath = QFileInfo(adapter).absoluteDir().filePath(model);
+    const QByteArray before = hashOf(modelPath);
+    // From another folder: the model, its meshes and includes resolve where the adapter is.
+    QTemporaryDir elsewhere;
+    const QString previous = QDir::currentPath();
+    QDir::setCurrent(elsewhere.path());
+    std::unique_ptr<World> world = load(adapter);
+    QDir::setCurrent(previous);
+    QVERIFY(world);
+    QCOMPARE(hashOf(modelPath), before);
+    const GripperGeometry &g = world->gripperGeometry(Gripper::Right);
+    qDebug() << name << "gap" << g.openGap() << g.closedGap() << "drop" << g.drop(g.openGap())
+             << g.drop(g.closedGap()) << "contacts" << world->fullContacts(Gripper::Right);
+    // Mounted so that the fingers point down and close along y, pads' centre 6 cm below.
+    QVERIFY(std::abs(g.closingAxis()[1] - 1) < 1e-6);
+    QVERIFY(std::abs(g.approachAxis()[2] + 1) < 1e-6);
+    QVERIFY(std::abs(g.drop(g.openGap()) - 0.06) < 1e-6);
+    QVERIFY2(std::abs(g.openGap() * 1000 - openGap) < 0.5,
+             qPrintable(QString::number(g.openGap())));
+    QVERIFY2(std::abs(g.closedGap() * 1000 - closedGap) < 0.5,
+             qPrintable(QString::number(g.closedGap())));
+    QVERIFY2(std::abs(g.drop(g.closedGap()) * 1000 - closedDrop) < 0.5,
+             qPrintable(QString::number(g.drop(g.closedGap()))));
+    QCOMPARE(world->fullContacts(Gripper::Right), fullContacts);
+    // The bundled gripper, measured the same way: 4 x 4 taxels a side, 6 cm below the wrist.
+    QString error;
+    std::unique_ptr<World> bundled = World::load(QStringLiteral("box_and_block"), {}, &error);
+    QCOMPARE(bundled->fullContacts(Gripper::Right), 32);
+    QVERIFY(std::abs(bundled->padDrop(Gripper::Right, 0.05) - 0.06) < 1e-9);
+}
+
+void TestGrippers::padsPressWithTheCommand_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<double>("force");
+    for (const char *name : {"linkage", "slider", ""}) {
+        for (double force : {20.0, 60.0}) {
+            QTest::addRow("%s %g N", *name ? name : "bundled", force) << QString(name) << force;
+        }
+    }
+}
+
+void TestGrippers::padsPressWithTheCommand()
+{
+    QFETCH(QString, name);
+    QFETCH(double, force);
+    QTemporaryDir dir;
+    std::unique_ptr<World> world = load(name.isEmpty() ? QString() : copyGripper(name, dir), 1);
+    QVERIFY(world);
+    // The cube alone on the floor of box A; the pads' centre comes down to its centre.
+    const std::array<double, 3> cube{-0.15, 0.0, 0.0251};
+    world->restoreObject(0, cube);
+    const double drop = world->padDrop(Gripper::Right, 0.05);
+    Pose above = world->target(Gripper::Right);
+    const Pose start = above;
+    world->setGrip(Gripper::Right, -10);
+    steps(*world, 0.6, [&](double s) {
+        Pose p = start;
+        for (int i = 0; i < 3; ++i)
+            p.pos[size_t(i)] =
+                start.pos[size_t(i)] +
+                s * ((i == 2 ? cube[2] + drop : cube[size_t(i)]) - start.pos[size_t(i)]);
+        world->setTarget(Gripper::Right, p);
+    });
+    steps(*world, 0.3);
+    steps(*world, 0.5, [&](double s) { world->setGrip(Gripper::Right, -10 + s * (force + 10)); });
+    double sum = 0;
+    int count = 0;
+    steps(*world, 1.0, [&](double s) {
+        if (s > 0.5) {
+            sum += world->frame(Gripper::Right).totalForce();
+            ++count;
+        }
+    });
+    const double measured = sum / count;
+    const ContactFrame &frame = world->frame(Gripper::Right);
+    qDebug() << name << "command" << force << "pads" << measured << "n" << frame.left.n
+             << frame.right.n;
+    QCOMPARE(frame.left.actor, world->objects()[0].actor);
+    QCOMPARE(frame.right.actor, world->objects()[0].actor);
+    QVERIFY2(std::abs(measured - force) < 0.05 * force, qPrintable(QString::number(measured)));
+}
+
+void TestGrippers::badAdaptersAreRefused_data()
+{
+    QTest::addColumn<QString>("file"); // of the linkage gripper: its adapter or its model
+    QTest::addColumn<QString>("from");
+    QTest::addColumn<QString>("to");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("format") << "linkage.json"
+                            << "semhap.gripper/1"
+                            << "semhap.gripper/9"
+                            << "linkage.json: /format: unsupported format 'semhap.gripper/9'";
+    QTest::newRow("no model") << "linkage.json"
+                              << "\"linkage.xml\""
+                              << "\"missing/linkage.xml\""
+                              << "linkage.json: model missing/linkage.xml: cannot read";
+    QTest::newRow("root") << "linkage.json"
+                          << "\"base\""
+                          << "\"palm\""
+                          << "linkage.json: /root: linkage.xml has no body 'palm'";
+    QTest::newRow("joint") << "linkage.json"
+                           << "\"driver_a\""
+                           << "\"driver_x\""
+                           << "linkage.json: /fingers/left/joint: linkage.xml has no joint "
+                              "'driver_x'";
+    QTest::newRow("pad") << "linkage.json"
+                         << "[\"pad_b\"]"
+                         << "[\"pad_c\"]"
+                         << "linkage.json: /fingers/right/pads/0: linkage.xml has no body or "
+                            "geom 'pad_c'";
+    QTest::newRow("closing") << "linkage.json"
+                             << "\"positive\""
+                             << "\"inwards\""
+                             << "linkage.json: /closing: must be 'positive' or 'negative'";
+    QTest::newRow("same joint") << "linkage.json"
+                                << "\"driver_b\""
+                                << "\"driver_a\""
+                                << "linkage.json: /fingers/right/joint: must differ";
+    QTest::newRow("typo") << "linkage.json"
+                          << "\"closing\""
+                          << "\"closng\""
+                          << "linkage.json: unknown key 'closng'";
+    QTest::newRow("force") << "linkage.json"
+                           << "\"max\": 200"
+                           << "\"max\": -1"
+                           << "linkage.json: /force/max: must be above 0";
+    QTest::newRow("a finger that does not close") << "linkage.xml"
+                                                  << "range=\"0 35\""
+                                                  << "range=\"0 0.01\""
+                                                  << "does not close the gripper";
+}
+
+void TestGrippers::badAdaptersAreRefused()
+{
+    QFETCH(QString, file);
+    QFETCH(QString, from);
+    QFETCH(QString, to);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString adapter = copyGripper(QStringLiteral("linkage"), dir);
+    {
+        QFile edited(QFileInfo(adapter).absoluteDir().filePath(file));
+        QVERIFY(edited.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(edited.readAll());
+        edited.close();
+        text.replace(from, to);
+        QVERIFY(edited.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        edited.write(text.toUtf8());
+    }
+    SceneOptions options;
+    options.gripper = adapter;
+    QString message;
+    QVERIFY(!World::load(QStringLiteral("box_and_block"), options, &message));
+    QVERIFY2(message.contains(error), qPrintable(message));
+}
+
+QTEST_GUILESS_MAIN(TestGrippers)
+#include "tst_grippers.moc"
