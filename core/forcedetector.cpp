@@ -69,6 +69,15 @@ bool ForceDetector::Params::validate(QString *key, QString *reason) const
     return true;
 }
 
+ForceDetector::Params ForceDetector::Params::fittedTo(const GripperTraits &gripper) const
+{
+    // Active above T, ended at T - hysteresis or below: a swing wider than the band would
+    // cross both on every cycle.
+    Params fitted = *this;
+    fitted.hysteresis = std::max(hysteresis, gripper.forceRipple);
+    return fitted;
+}
+
 ForceDetector::ForceDetector(int node, Gripper gripper, const Params &params)
     : Detector(node, gripper), m_params(params)
 {

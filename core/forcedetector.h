@@ -4,6 +4,7 @@
 #include "detector.h"
 #include "messagetracker.h"
 #include "paramspec.h"
+#include "routercontext.h"
 
 namespace semhap {
 
@@ -32,6 +33,11 @@ public:
         static std::vector<ParamSpec> specs();
         /** grasp < break < max, hysteresis and minDuration >= 0, all finite. */
         bool validate(QString *key, QString *reason) const;
+        /**
+         * The parameters as they run on `gripper`: the hysteresis is at least the gripper's
+         * forceRipple, so a steady grip's swing cannot end and begin a message again.
+         */
+        Params fittedTo(const GripperTraits &gripper) const;
     };
 
     /** `params` should have passed validate(); events carry `node` and `gripper`. */
@@ -44,6 +50,7 @@ public:
     bool isActive(Message message, double *intensity = nullptr) const override;
     void appendActive(double t, EventBuffer &out) const override;
 
+    /** The parameters it runs with (a router's are fitted to the gripper). */
     const Params &params() const { return m_params; }
 
 private:

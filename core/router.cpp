@@ -229,16 +229,19 @@ bool RouterCompiler::buildDetector(int node)
     QString key;
     QString reason;
     std::unique_ptr<Detector> detector;
+    // The node's own values are checked and kept in the graph; they run fitted to the
+    // gripper, like a predict node's horizon to the reaction time.
+    const GripperTraits &traits = m_context.grippers[size_t(gripper(node))];
     if (n.type == QLatin1String("force")) {
         ForceDetector::Params p;
         if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
             return failNode(node, key, reason);
-        detector = std::make_unique<ForceDetector>(node, gripper(node), p);
+        detector = std::make_unique<ForceDetector>(node, gripper(node), p.fittedTo(traits));
     } else {
         SlipDetector::Params p;
         if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
             return failNode(node, key, reason);
-        detector = std::make_unique<SlipDetector>(node, gripper(node), p);
+        detector = std::make_unique<SlipDetector>(node, gripper(node), p.fittedTo(traits));
     }
     auto runtime = std::make_unique<DetectorNode>(std::move(detector));
     m_router->m_detectors.push_back(runtime.get());

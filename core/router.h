@@ -101,7 +101,11 @@ public:
     /** The nodes whose activity changed since clearActivityChanges(), in order of change. */
     const std::vector<int> &activityChanges() const;
     void clearActivityChanges();
-    /** The compiled detectors (force, slip), in graph order: what plots take thresholds from. */
+    /**
+     * The compiled detectors (force, slip), in graph order: what plots take thresholds from.
+     * Their params() are what they run with, fitted to the context's grippers; the graph
+     * keeps the nodes' own.
+     */
     std::vector<const Detector *> detectors() const;
     /** The threshold nodes, in graph order: the signals they read and their levels. */
     std::vector<ThresholdLevels> thresholds() const;

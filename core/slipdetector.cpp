@@ -4,6 +4,7 @@
 #include "detectorparams.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -63,6 +64,23 @@ bool SlipDetector::Params::validate(QString *key, QString *reason) const
                               .arg(formatNumber(min), formatNumber(loss)));
     }
     return true;
+}
+
+SlipDetector::Params SlipDetector::Params::fittedTo(const GripperTraits &gripper) const
+{
+    // The reference gripper runs the values as written, fractions included.
+    if (gripper.fullContacts < 1 || gripper.fullContacts == ReferenceFullContacts)
+        return *this;
+    const double scale = double(gripper.fullContacts) / ReferenceFullContacts;
+    // N is a whole count: N < x exactly when N < ceil(x), N <= x exactly when N <= floor(x).
+    // So slip begins below ceil(loss), ends from ceil(loss + hysteresis) and is at full
+    // intensity up to floor(min), each at the share of a full grasp the written value has;
+    // floor(min) <= min < loss <= ceil(loss) keeps min < loss.
+    Params fitted = *this;
+    fitted.loss = std::ceil(loss * scale);
+    fitted.min = std::floor(min * scale);
+    fitted.hysteresis = std::ceil((loss + hysteresis) * scale) - fitted.loss;
+    return fitted;
 }
 
 SlipDetector::SlipDetector(int node, Gripper gripper, const Params &params)

@@ -4,6 +4,7 @@
 #include "detector.h"
 #include "messagetracker.h"
 #include "paramspec.h"
+#include "routercontext.h"
 
 namespace semhap {
 
@@ -34,6 +35,13 @@ public:
         static std::vector<ParamSpec> specs();
         /** min < loss, grasp >= 0, hysteresis and minDuration >= 0, all finite. */
         bool validate(QString *key, QString *reason) const;
+        /**
+         * The parameters as they run on `gripper`: the counts (loss, min, hysteresis) are
+         * written for a full grasp of ReferenceFullContacts and scaled to the gripper's
+         * fullContacts, rounded to whole contacts so that every rule holds at the same share
+         * of a full grasp (docs/detectors.md). Valid parameters stay valid.
+         */
+        Params fittedTo(const GripperTraits &gripper) const;
     };
 
     /** `params` should have passed validate(); events carry `node` and `gripper`. */
@@ -46,6 +54,7 @@ public:
     bool isActive(Message message, double *intensity = nullptr) const override;
     void appendActive(double t, EventBuffer &out) const override;
 
+    /** The parameters it runs with (a router's are fitted to the gripper). */
     const Params &params() const { return m_params; }
     /** The grasped actor (ActorTable id), -1 for none. */
     int graspedActor() const { return m_actor; }
