@@ -1,8 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "sessioninfo.h"
 
+#include "contactframe.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QLocale>
+
+#include <climits>
+#include <cmath>
+#include <functional>
 
 namespace semhap {
 
@@ -23,6 +30,41 @@ const QString StartedKey = QStringLiteral("started_utc");
 const QString EndedKey = QStringLiteral("ended_utc");
 const QString NotesKey = QStringLiteral("notes");
 const QString ReactionTimeKey = QStringLiteral("reaction_time");
+
+/** A gripper's trait's key: `left_full_contacts`, `right_force_ripple`. */
+QString traitKey(Gripper gripper, const char *trait)
+{
+    return gripperName(gripper) + QLatin1Char('_') + QLatin1String(trait);
+}
+
+const char *const FullContactsTrait = "full_contacts";
+const char *const ForceRippleTrait = "force_ripple";
+
+/**
+ * Moves `key`'s number from `rows` to `value` when the key is there; false with `error`
+ * (`KEY: expected WHAT, got 'TEXT'`) when it is not a number `valid` takes.
+ */
+bool takeNumber(QMap<QString, QString> &rows, const QString &key, const QString &expected,
+                const std::function<bool(double)> &valid, double *value, QString *error)
+{
+    if (!rows.contains(key))
+        return true;
+    const QString text = rows.take(key);
+    bool ok = false;
+    const double number = text.toDouble(&ok);
+    if (!ok || !valid(number)) {
+        *error = QStringLiteral("%1: expected %2, got '%3'").arg(key, expected, text);
+        return false;
+    }
+    *value = number;
+    return true;
+}
+
+/** A number as text that reads back as the same double. */
+QString exactNumber(double value)
+{
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+}
 
 QString compact(const QJsonDocument &document)
 {
@@ -61,7 +103,12 @@ QMap<QString, QString> SessionInfo::toMetadata() const
     if (ended.isValid())
         rows.insert(EndedKey, utc(ended));
     rows.insert(NotesKey, notes);
-    rows.insert(ReactionTimeKey, QString::number(routerContext.reactionTime));
+    rows.insert(ReactionTimeKey, exactNumber(routerContext.reactionTime));
+    for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
+        const GripperTraits &traits = routerContext.grippers[size_t(gripper)];
+        rows.insert(traitKey(gripper, FullContactsTrait), QString::number(traits.fullContacts));
+        rows.insert(traitKey(gripper, ForceRippleTrait), exactNumber(traits.forceRipple));
+    }
     return rows;
 }
 
@@ -110,19 +157,25 @@ bool SessionInfo::fromMetadata(const QMap<QString, QString> &rows, SessionInfo *
     info.started = QDateTime::fromString(take(StartedKey), Qt::ISODateWithMs);
     info.ended = QDateTime::fromString(take(EndedKey), Qt::ISODateWithMs);
     info.notes = take(NotesKey);
-    // Sessions recorded before the router had a context ran it with the default.
-    if (rest.contains(ReactionTimeKey)) {
-        const QString text = take(ReactionTimeKey);
-        bool ok = false;
-        const double seconds = text.toDouble(&ok);
-        if (!ok || !(seconds >= 0.0 && seconds <= MaxReactionTime)) {
-            *error = QStringLiteral("%1: expected seconds from 0 to %2, got '%3'")
-                         .arg(ReactionTimeKey)
-                         .arg(MaxReactionTime)
-                         .arg(text);
+    // Sessions recorded before the router had a context ran it with the defaults: a key
+    // missing leaves its default.
+    RouterContext &context = info.routerContext;
+    const auto seconds = [](double s) { return s >= 0.0 && s <= MaxReactionTime; };
+    const auto count = [](double n) { return n >= 0 && n <= INT_MAX && n == std::floor(n); };
+    const auto newtons = [](double f) { return f >= 0.0 && std::isfinite(f); };
+    if (!takeNumber(rest, ReactionTimeKey,
+                    QStringLiteral("seconds from 0 to %1").arg(MaxReactionTime), seconds,
+                    &context.reactionTime, error))
+        return false;
+    for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
+        GripperTraits &traits = context.grippers[size_t(gripper)];
+        double contacts = traits.fullContacts;
+        if (!takeNumber(rest, traitKey(gripper, FullContactsTrait),
+                        QStringLiteral("a whole number of contacts"), count, &contacts, error) ||
+            !takeNumber(rest, traitKey(gripper, ForceRippleTrait),
+                        QStringLiteral("newtons, 0 or more"), newtons, &traits.forceRipple, error))
             return false;
-        }
-        info.routerContext.reactionTime = seconds;
+        traits.fullContacts = int(contacts);
     }
     info.extra = rest;
     *result = info;

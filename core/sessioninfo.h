@@ -30,7 +30,7 @@ struct SessionInfo
     QJsonObject router;          ///< RouterGraph JSON with its patterns and models embedded
     QString routerSource;        ///< the preset name or file the router was loaded from
     QStringList overrides;       ///< `NODE.PARAM=VALUE` applied to it
-    RouterContext routerContext; ///< what the router was compiled for (`reaction_time`)
+    RouterContext routerContext; ///< what the router was compiled for (`reaction_time`, …)
     QJsonObject bindings;        ///< device name → transport URI
     QString operatorName;
     QString seed;

@@ -7,6 +7,7 @@
 #include "router.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"
+#include "slipdetector.h"
 #include "udpframesource.h"
 
 #include <QFile>
@@ -164,6 +165,7 @@ private slots:
     void roundTripIsBitForBit();
     void negativeZeroReadsAsZero();
     void metadataAndRouter();
+    void gripperTraitsReplay();
     void recordingMidGraspBeginsWhatIsOpen();
     void timeWindow();
     void neverOverwrites();
@@ -315,6 +317,52 @@ void TestSessions::metadataAndRouter()
     auto again = Router::compile(graph, &loadError);
     QVERIFY2(again, qPrintable(loadError.toString()));
     QCOMPARE(again->nodeIds(), router->nodeIds());
+}
+
+void TestSessions::gripperTraitsReplay()
+{
+    // A run on another gripper compiled its detectors fitted to it: its session says so, and
+    // the router read back compiles as it ran, to the last bit of the ripple.
+    const auto router = c3();
+    const QString path = m_dir.filePath("traits.db");
+    SessionInfo info;
+    info.routerContext.grippers[size_t(Gripper::Left)] = {4, 0.0};
+    info.routerContext.grippers[size_t(Gripper::Right)] = {8, 0.1 + 0.2};
+    info.routerContext.reactionTime = 0.1 + 0.2;
+    QString error;
+    {
+        auto writer = SessionWriter::create(path, info, *router, &error);
+        QVERIFY2(writer, qPrintable(error));
+        QVERIFY2(writer->finish(&error), qPrintable(error));
+    }
+    auto reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    const RouterContext &context = reader->info().routerContext;
+    QCOMPARE(context.grippers[0].fullContacts, 4);
+    QCOMPARE(context.grippers[0].forceRipple, 0.0);
+    QCOMPARE(context.grippers[1].fullContacts, 8);
+    QVERIFY(sameBits(context.grippers[1].forceRipple, 0.1 + 0.2));
+    QVERIFY(sameBits(context.reactionTime, 0.1 + 0.2));
+    QVERIFY(!reader->info().extra.contains("left_full_contacts"));
+    RouterGraph graph;
+    LoadError loadError;
+    QVERIFY(reader->routerGraph(&graph, &loadError));
+    const auto replayed = Router::compile(graph, &loadError, context);
+    QVERIFY2(replayed, qPrintable(loadError.toString()));
+    const auto *slip = dynamic_cast<const SlipDetector *>(replayed->detectors()[1]);
+    QVERIFY(slip && slip->gripper() == Gripper::Left);
+    QCOMPARE(slip->params().loss, 4.0);
+
+    // One recorded before the router knew its grippers ran it for the bundled ones.
+    reader.reset();
+    damage(path, {"DELETE FROM metadata WHERE key LIKE '%_full_contacts' "
+                  "OR key LIKE '%_force_ripple'"});
+    reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    for (const GripperTraits &traits : reader->info().routerContext.grippers) {
+        QCOMPARE(traits.fullContacts, ReferenceFullContacts);
+        QCOMPARE(traits.forceRipple, 0.0);
+    }
 }
 
 void TestSessions::recordingMidGraspBeginsWhatIsOpen()
@@ -535,6 +583,29 @@ void TestSessions::damagedFiles_data()
         << QStringList{"UPDATE metadata SET value = '-0.1' WHERE key = 'reaction_time'"}
         << QByteArray() << 0
         << "damaged session: metadata reaction_time: expected seconds from 0 to 10, got '-0.1'";
+    QTest::newRow("full contacts not a number")
+        << QStringList{"UPDATE metadata SET value = 'four' WHERE key = 'left_full_contacts'"}
+        << QByteArray() << 0
+        << "damaged session: metadata left_full_contacts: expected a whole number of contacts, "
+           "got 'four'";
+    QTest::newRow("full contacts a fraction")
+        << QStringList{"UPDATE metadata SET value = '2.5' WHERE key = 'right_full_contacts'"}
+        << QByteArray() << 0
+        << "damaged session: metadata right_full_contacts: expected a whole number of contacts, "
+           "got '2.5'";
+    QTest::newRow("full contacts negative")
+        << QStringList{"UPDATE metadata SET value = '-1' WHERE key = 'left_full_contacts'"}
+        << QByteArray() << 0
+        << "damaged session: metadata left_full_contacts: expected a whole number of contacts, "
+           "got '-1'";
+    QTest::newRow("force ripple negative")
+        << QStringList{"UPDATE metadata SET value = '-2' WHERE key = 'right_force_ripple'"}
+        << QByteArray() << 0
+        << "damaged session: metadata right_force_ripple: expected newtons, 0 or more, got '-2'";
+    QTest::newRow("force ripple infinite")
+        << QStringList{"UPDATE metadata SET value = 'inf' WHERE key = 'left_force_ripple'"}
+        << QByteArray() << 0
+        << "damaged session: metadata left_force_ripple: expected newtons, 0 or more, got 'inf'";
     QTest::newRow("missing scene states")
         << QStringList{"DROP TABLE scene_states"} << QByteArray() << 0
         << "damaged session: table 'scene_states' is missing";
