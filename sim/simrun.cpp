@@ -96,8 +96,11 @@ RouterContext SimRun::routerContext(const World &world, double reactionTime)
     RouterContext context;
     context.reactionTime = reactionTime;
     context.knowsSignals = true;
-    for (Gripper g : {Gripper::Left, Gripper::Right})
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
         context.signalNames[size_t(g)] = world.signalNames(g);
+        if (world.hasGripper(g))
+            context.grippers[size_t(g)] = world.gripperTraits(g);
+    }
     return context;
 }
 
@@ -181,6 +184,12 @@ SessionInfo SimRun::sessionInfo() const
     info.seed = QString::number(m_options.seed);
     info.extra.insert(QStringLiteral("duration"), QString::number(m_options.duration));
     info.routerContext.reactionTime = m_options.reactionTime;
+    for (Gripper g : {Gripper::Left, Gripper::Right}) {
+        if (m_world->hasGripper(g))
+            info.routerContext.grippers[size_t(g)] = m_world->gripperTraits(g);
+    }
+    if (!m_options.sceneOptions.gripper.isEmpty())
+        info.extra.insert(QStringLiteral("gripper"), m_options.sceneOptions.gripper);
     if (m_options.sceneOptions.cubes >= 0)
         info.extra.insert(QStringLiteral("cubes"), QString::number(m_options.sceneOptions.cubes));
     return info;

@@ -285,8 +285,14 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
     MjModelPtr model = SceneLibrary::load(nameOrPath, options, &adapter, mount, error);
     std::unique_ptr<World> world =
         model ? Private::assemble(std::move(model), where, &adapter, error) : nullptr;
+    // What the loaded world keeps of its adapter.
+    const auto adopt = [&](World &w) {
+        w.m_mount = mount;
+        w.m_adapterFullContacts = adapter.fullContacts;
+        w.m_adapterForceRipple = std::max(0.0, adapter.forceRipple);
+    };
     if (world)
-        world->m_mount = mount;
+        adopt(*world);
     if (!world || adapter.hasMount)
         return world;
     // No mount given: turn the model so its fingers point down and close along y, the pads'
@@ -296,7 +302,7 @@ std::unique_ptr<World> World::load(const QString &nameOrPath, const SceneOptions
     model = SceneLibrary::load(nameOrPath, options, &adapter, mount, error);
     world = model ? Private::assemble(std::move(model), where, &adapter, error) : nullptr;
     if (world)
-        world->m_mount = mount;
+        adopt(*world);
     return world;
 }
 
@@ -1007,6 +1013,15 @@ double World::padDrop(Gripper gripper, double gap) const
 double World::padReach(Gripper gripper, double gap) const
 {
     return d->hands[size_t(gripper)].geometry.reach(gap);
+}
+
+GripperTraits World::gripperTraits(Gripper gripper) const
+{
+    GripperTraits traits;
+    traits.fullContacts =
+        m_adapterFullContacts > 0 ? m_adapterFullContacts : fullContacts(gripper);
+    traits.forceRipple = m_adapterForceRipple;
+    return traits;
 }
 
 const GripperGeometry &World::gripperGeometry(Gripper gripper) const

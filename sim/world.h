@@ -6,6 +6,7 @@
 #include "grippercomposer.h"
 #include "grippergeometry.h"
 #include "pose.h"
+#include "routercontext.h"
 #include "sceneoptions.h"
 
 #include <QString>
@@ -112,6 +113,11 @@ public:
      * contact count `n` of a full, steady grasp (32 for the bundled 4 × 4 taxel pads).
      */
     int fullContacts(Gripper gripper) const;
+    /**
+     * What routers on this gripper's frames are fitted to (docs/detectors.md): the full-grasp
+     * contact count measured, and the force ripple, each unless its adapter states it.
+     */
+    GripperTraits gripperTraits(Gripper gripper) const;
     /** What the gripper's fingers do as they close, measured at load (GripperGeometry). */
     const GripperGeometry &gripperGeometry(Gripper gripper) const;
     /**
@@ -231,6 +237,8 @@ private:
     QString m_sceneName;
     QString m_taskName;
     std::optional<GripperComposer::Mount> m_mount;
+    int m_adapterFullContacts = 0;   ///< the adapter's, 0: measured
+    double m_adapterForceRipple = 0; ///< the adapter's, N
     ActorTable m_actors;
     std::vector<SceneObject> m_objects;
     std::vector<Fracture> m_fractures;

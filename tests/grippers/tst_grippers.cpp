@@ -2,6 +2,9 @@
 // Gripper adapters (docs/grippers.md): a model semhap did not write goes into a scene's wrist
 // unedited, its geometry is measured, and its pads press with the commanded force. The test
 // grippers in this folder have the traits of real ones (their MJCF says which).
+#include "eventbuffer.h"
+#include "router.h"
+#include "simrun.h"
 #include "world.h"
 
 #include <QCryptographicHash>
@@ -60,6 +63,28 @@ void steps(World &world, double seconds, const std::function<void(double)> &each
     }
 }
 
+/** Puts the cube alone on the floor of box A and closes the right gripper on it with `force`. */
+void grasp(World &world, double force)
+{
+    // The cube alone on the floor of box A; the pads' centre comes down to its centre.
+    const std::array<double, 3> cube{-0.15, 0.0, 0.0251};
+    world.restoreObject(0, cube);
+    const double drop = world.padDrop(Gripper::Right, 0.05);
+    Pose above = world.target(Gripper::Right);
+    const Pose start = above;
+    world.setGrip(Gripper::Right, -10);
+    steps(world, 0.6, [&](double s) {
+        Pose p = start;
+        for (int i = 0; i < 3; ++i)
+            p.pos[size_t(i)] =
+                start.pos[size_t(i)] +
+                s * ((i == 2 ? cube[2] + drop : cube[size_t(i)]) - start.pos[size_t(i)]);
+        world.setTarget(Gripper::Right, p);
+    });
+    steps(world, 0.3);
+    steps(world, 0.5, [&](double s) { world.setGrip(Gripper::Right, -10 + s * (force + 10)); });
+}
+
 } // namespace
 
 class TestGrippers : public QObject
@@ -71,6 +96,8 @@ private slots:
     void loadsTheModelAsItIs();
     void padsPressWithTheCommand_data();
     void padsPressWithTheCommand();
+    void steadyHoldGivesOneConfirmation_data();
+    void steadyHoldGivesOneConfirmation();
     void badAdaptersAreRefused_data();
     void badAdaptersAreRefused();
 };
@@ -154,23 +181,7 @@ void TestGrippers::padsPressWithTheCommand()
     QTemporaryDir dir;
     std::unique_ptr<World> world = load(name.isEmpty() ? QString() : copyGripper(name, dir), 1);
     QVERIFY(world);
-    // The cube alone on the floor of box A; the pads' centre comes down to its centre.
-    const std::array<double, 3> cube{-0.15, 0.0, 0.0251};
-    world->restoreObject(0, cube);
-    const double drop = world->padDrop(Gripper::Right, 0.05);
-    Pose above = world->target(Gripper::Right);
-    const Pose start = above;
-    world->setGrip(Gripper::Right, -10);
-    steps(*world, 0.6, [&](double s) {
-        Pose p = start;
-        for (int i = 0; i < 3; ++i)
-            p.pos[size_t(i)] =
-                start.pos[size_t(i)] +
-                s * ((i == 2 ? cube[2] + drop : cube[size_t(i)]) - start.pos[size_t(i)]);
-        world->setTarget(Gripper::Right, p);
-    });
-    steps(*world, 0.3);
-    steps(*world, 0.5, [&](double s) { world->setGrip(Gripper::Right, -10 + s * (force + 10)); });
+    grasp(*world, force);
     double sum = 0;
     int count = 0;
     steps(*world, 1.0, [&](double s) {
@@ -186,6 +197,66 @@ void TestGrippers::padsPressWithTheCommand()
     QCOMPARE(frame.left.actor, world->objects()[0].actor);
     QCOMPARE(frame.right.actor, world->objects()[0].actor);
     QVERIFY2(std::abs(measured - force) < 0.05 * force, qPrintable(QString::number(measured)));
+}
+
+void TestGrippers::steadyHoldGivesOneConfirmation_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::newRow("linkage") << "linkage";
+    QTest::newRow("slider") << "slider";
+    QTest::newRow("bundled") << "";
+}
+
+void TestGrippers::steadyHoldGivesOneConfirmation()
+{
+    // A cube taken, lifted and held for 10 s under C4 (force and slip detectors on both
+    // hands), compiled for this gripper as semhap run does: one grasp confirmation, no
+    // warning of a slip or a break the hold never had.
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    std::unique_ptr<World> world = load(name.isEmpty() ? QString() : copyGripper(name, dir), 1);
+    QVERIFY(world);
+    LoadError error;
+    std::unique_ptr<Router> router =
+        loadRouter(QStringLiteral("C4"), {}, &error, SimRun::routerContext(*world, 0.25));
+    QVERIFY2(router, qPrintable(error.toString()));
+    std::vector<SemanticEvent> events;
+    EventBuffer buffer;
+    bool started = false;
+    const auto route = [&](double) {
+        const ContactFrame &frame = world->frame(Gripper::Right);
+        if (!started) {
+            router->start(frame.t);
+            started = true;
+        }
+        buffer.clear();
+        router->process(frame, buffer);
+        events.insert(events.end(), buffer.begin(), buffer.end());
+    };
+    grasp(*world, 40.0);
+    const Pose held = world->target(Gripper::Right);
+    steps(*world, 1.0, [&](double s) {
+        Pose p = held;
+        p.pos[2] += 0.05 * s;
+        world->setTarget(Gripper::Right, p);
+        route(s);
+    });
+    steps(*world, 10.0, route);
+    int confirmations = 0;
+    int exceptions = 0;
+    for (const SemanticEvent &e : events) {
+        if (e.phase != EventPhase::Begin)
+            continue;
+        confirmations += e.category == Category::Confirmation ? 1 : 0;
+        exceptions += e.category == Category::Exception ? 1 : 0;
+    }
+    const ContactFrame &frame = world->frame(Gripper::Right);
+    qDebug() << name << "confirmations" << confirmations << "exceptions" << exceptions << "n"
+             << frame.left.n << frame.right.n << "F" << frame.totalForce();
+    QCOMPARE(frame.left.actor, world->objects()[0].actor);
+    QVERIFY(world->objectPosition(0)[2] > 0.06);
+    QCOMPARE(confirmations, 1);
+    QCOMPARE(exceptions, 0);
 }
 
 void TestGrippers::badAdaptersAreRefused_data()
