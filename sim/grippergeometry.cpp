@@ -313,32 +313,36 @@ size_t GripperGeometry::gapSegment(double gap, double *fraction) const
     return k;
 }
 
-double GripperGeometry::drop(double gap) const
+double GripperGeometry::atGap(double gap, double Sample::*field) const
 {
     if (m_samples.empty())
         return 0.0;
     double s = 0;
     const size_t k = gapSegment(gap, &s);
-    return m_samples[k].drop + s * (m_samples[k + 1].drop - m_samples[k].drop);
+    return m_samples[k].*field + s * (m_samples[k + 1].*field - m_samples[k].*field);
+}
+
+double GripperGeometry::atQ(int finger, double q, std::array<double, 2> Sample::*field) const
+{
+    double s = 0;
+    const size_t k = segment(finger, q, &s);
+    const double v0 = (m_samples[k].*field)[size_t(finger)];
+    return v0 + s * ((m_samples[k + 1].*field)[size_t(finger)] - v0);
+}
+
+double GripperGeometry::drop(double gap) const
+{
+    return atGap(gap, &Sample::drop);
 }
 
 double GripperGeometry::reach(double gap) const
 {
-    if (m_samples.empty())
-        return 0.0;
-    double s = 0;
-    const size_t k = gapSegment(gap, &s);
-    return m_samples[k].reach + s * (m_samples[k + 1].reach - m_samples[k].reach);
+    return atGap(gap, &Sample::reach);
 }
 
 double GripperGeometry::travel(int finger, double q) const
 {
-    if (m_samples.empty())
-        return q;
-    double s = 0;
-    const size_t k = segment(finger, q, &s);
-    const double t0 = m_samples[k].travel[size_t(finger)];
-    return t0 + s * (m_samples[k + 1].travel[size_t(finger)] - t0);
+    return m_samples.empty() ? q : atQ(finger, q, &Sample::travel);
 }
 
 double GripperGeometry::arm(int finger, double q) const
@@ -368,12 +372,7 @@ std::array<double, 2> GripperGeometry::armRange(int finger) const
 
 double GripperGeometry::spring(int finger, double q) const
 {
-    if (m_samples.empty())
-        return 0.0;
-    double s = 0;
-    const size_t k = segment(finger, q, &s);
-    const double t0 = m_samples[k].spring[size_t(finger)];
-    return t0 + s * (m_samples[k + 1].spring[size_t(finger)] - t0);
+    return m_samples.empty() ? 0.0 : atQ(finger, q, &Sample::spring);
 }
 
 } // namespace semhap

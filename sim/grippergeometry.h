@@ -70,6 +70,9 @@ private:
     size_t segment(int finger, double q, double *fraction) const;
     /** The samples around `gap` and where it lies between them. */
     size_t gapSegment(double gap, double *fraction) const;
+    /** `field` interpolated at `gap`, and of `finger` at its joint position `q`. */
+    double atGap(double gap, double Sample::*field) const;
+    double atQ(int finger, double q, std::array<double, 2> Sample::*field) const;
 
     std::vector<Sample> m_samples; ///< from open to closed
     std::array<double, 3> m_closing{0, 1, 0};
