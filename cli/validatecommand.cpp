@@ -3,6 +3,7 @@
 
 #include "devicemodel.h"
 #include "gripperadapter.h"
+#include "grippercheck.h"
 #include "jsonreader.h"
 #include "pattern.h"
 #include "patternrender.h"
@@ -17,11 +18,12 @@ namespace semhap {
 namespace {
 
 // A scene is valid when MuJoCo compiles it and semhap finds its grippers (sim/README.md).
-bool validateScene(const QString &path, QString *error, QString *what)
+bool validateScene(const QString &path, QString *error, QString *what, QStringList *warnings)
 {
     std::unique_ptr<World> world = World::load(path, SceneOptions(), error);
     if (!world)
         return false;
+    *warnings = GripperCheck::warnings(*world, path, nullptr);
     QStringList grippers;
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         if (world->hasGripper(g))
@@ -45,14 +47,17 @@ QString vector(const std::array<double, 3> &v)
  * An adapter is valid when its model goes into a bundled scene's wrist and its fingers close:
  * what the loader measured is the description (docs/grippers.md).
  */
-bool validateGripper(const QString &path, QString *error, QString *what)
+bool validateGripper(const QString &path, QString *error, QString *what, QStringList *warnings)
 {
     SceneOptions options;
     options.gripper = path;
     const QString scene = QStringLiteral("box_and_block");
     std::unique_ptr<World> world = World::load(scene, options, error);
-    if (!world)
+    GripperAdapter adapter;
+    LoadError adapterError;
+    if (!world || !GripperAdapter::read(path, &adapter, &adapterError))
         return false;
+    *warnings = GripperCheck::warnings(*world, scene, &adapter);
     const GripperGeometry &g = world->gripperGeometry(Gripper::Right);
     const GripperComposer::Mount &mount = *world->gripperMount();
     const auto arms = g.armRange(0);
@@ -81,7 +86,8 @@ bool validateGripper(const QString &path, QString *error, QString *what)
 
 QString ValidateCommand::summary() const
 {
-    return tr("Checks pattern, router, device model and scene files. Device model files "
+    return tr("Checks pattern, router, device model, scene and gripper adapter files. Device "
+              "model files "
               "given on the same command line are known to the patterns and routers checked.");
 }
 
@@ -121,11 +127,12 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
     for (const Document &doc : documents) {
         LoadError error = doc.error;
         QString what;
+        QStringList warnings;
         const QString format = doc.json.value(QStringLiteral("format")).toString();
         bool ok = false;
         if (doc.path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive)) {
             QString sceneError;
-            ok = validateScene(doc.path, &sceneError, &what);
+            ok = validateScene(doc.path, &sceneError, &what, &warnings);
             if (!ok) {
                 report(sceneError);
                 ++invalid;
@@ -163,7 +170,7 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
             }
         } else if (format == QLatin1String(GripperAdapter::Format)) {
             QString reason;
-            ok = validateGripper(doc.path, &reason, &what);
+            ok = validateGripper(doc.path, &reason, &what, &warnings);
             if (!ok) {
                 report(reason);
                 ++invalid;
@@ -182,6 +189,8 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                                            QLatin1String(DeviceModel::Format),
                                            QLatin1String(GripperAdapter::Format)));
         }
+        for (const QString &warning : warnings)
+            report(tr("%1: warning: %2").arg(doc.path, warning));
         if (ok) {
             m_out << tr("%1: valid %2").arg(doc.path, what) << '\n';
         } else {

@@ -357,6 +357,9 @@ bool HandCopy::findPads(MjcfElement &root, const QString &rootClass, QString *er
             const QString name =
                 QStringLiteral("%1.tip.%2.%3").arg(m_hand, QLatin1String(sides[side])).arg(k);
             MjcfElement &geom = *pads[k].geom;
+            // semhap's objects set their own friction by contact priority (sim/README.md): a
+            // pad with the same priority (the 2F-85's) would win the tie with its larger one.
+            geom.setAttribute(QStringLiteral("priority"), QStringLiteral("0"));
             if (geom.has(QStringLiteral("name")))
                 m_names.insert(geom.attribute(QStringLiteral("name")), name);
             geom.setAttribute(QStringLiteral("name"), name);

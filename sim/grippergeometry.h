@@ -53,6 +53,11 @@ public:
      * pads to press with exactly the commanded force.
      */
     double spring(int finger, double q) const;
+    /** Whether the fingers close as their joints' positions grow (else as they shrink). */
+    bool closesAsJointRises() const
+    {
+        return m_samples.size() < 2 || m_samples.back().q[0] > m_samples.front().q[0];
+    }
     /** The least and the greatest moment arm of `finger` over its travel (m). */
     std::array<double, 2> armRange(int finger) const;
 

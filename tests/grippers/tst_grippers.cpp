@@ -3,6 +3,8 @@
 // unedited, its geometry is measured, and its pads press with the commanded force. The test
 // grippers in this folder have the traits of real ones (their MJCF says which).
 #include "eventbuffer.h"
+#include "gripperadapter.h"
+#include "grippercheck.h"
 #include "router.h"
 #include "simrun.h"
 #include "world.h"
@@ -98,6 +100,8 @@ private slots:
     void padsPressWithTheCommand();
     void steadyHoldGivesOneConfirmation_data();
     void steadyHoldGivesOneConfirmation();
+    void validateWarns_data();
+    void validateWarns();
     void badAdaptersAreRefused_data();
     void badAdaptersAreRefused();
 };
@@ -257,6 +261,127 @@ void TestGrippers::steadyHoldGivesOneConfirmation()
     QVERIFY(world->objectPosition(0)[2] > 0.06);
     QCOMPARE(confirmations, 1);
     QCOMPARE(exceptions, 0);
+}
+
+void TestGrippers::validateWarns_data()
+{
+    // A scene (bundled, edited by replacing text) or a test gripper in box_and_block (its
+    // adapter edited), and the warning it must give; none for the untouched ones.
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QString>("gripper");
+    QTest::addColumn<QString>("from"); // texts to replace, separated by |
+    QTest::addColumn<QString>("to");
+    QTest::addColumn<QString>("warning");
+    const QString taxels = "contype=\"2\" conaffinity=\"1\"";
+    QTest::newRow("bundled box_and_block") << "box_and_block"
+                                           << ""
+                                           << ""
+                                           << ""
+                                           << "";
+    QTest::newRow("bundled bimanual_sorting") << "bimanual_sorting"
+                                              << ""
+                                              << ""
+                                              << ""
+                                              << "";
+    QTest::newRow("bundled dish_wiping") << "dish_wiping"
+                                         << ""
+                                         << ""
+                                         << ""
+                                         << "";
+    QTest::newRow("fingers that can collide")
+        << "box_and_block"
+        << "" << taxels + "|<exclude body1=\"right.finger.left\" body2=\"right.finger.right\"/>"
+        << "contype=\"2\" conaffinity=\"3\"|"
+        << "of the two fingers can collide: fingers closing on nothing push into each other "
+           "and can lock; add <exclude body1=\"right.finger.left\" body2=\"right.finger.right\"/>";
+    QTest::newRow("pads over the objects' priority")
+        << "box_and_block"
+        << "" << taxels << taxels + " priority=\"2\""
+        << "pad geom right.tip.left.t00 has contact priority 2 and friction 1, object cube_0 "
+           "priority 1 and friction 0.1";
+    QTest::newRow("pads that let go")
+        << "box_and_block"
+        << "" << taxels + "|friction=\"1 0.005 0.0001\""
+        << taxels + " solref=\"0.01 0.1\" priority=\"2\"|friction=\"0.1 0.005 0.0001\""
+        << "a steady 40 N grip does not keep cube_0 between the pads";
+    QTest::newRow("an object wider than the opening")
+        << "box_and_block"
+        << ""
+        << "size=\"0.025 0.025 0.025\""
+        << "size=\"0.05 0.05 0.05\""
+        << "12 objects (cube_0, cube_1, cube_2, …) are up to 100 mm across at their narrowest, "
+           "the pads open to 70 mm: this gripper cannot take them";
+    QTest::newRow("few pad contacts") << "box_and_block"
+                                      << "linkage"
+                                      << ""
+                                      << ""
+                                      << "a full grasp touches only 2 pad geoms";
+    QTest::newRow("fingers along another axis")
+        << "box_and_block"
+        << "linkage"
+        << "\"root\": \"base\","
+        << "\"root\": \"base\", \"mount\": {\"pos\": [0, 0, 0], \"quat\": [1, 0, 0, 0]},"
+        << "the fingers close along (0.00, -1.00, 0.00)";
+    QTest::newRow("closing the other way")
+        << "box_and_block"
+        << "slider"
+        << "\"negative\""
+        << "\"positive\""
+        << "the adapter says \"closing\": \"positive\", but "
+           "the fingers close as their joints' positions shrink";
+}
+
+void TestGrippers::validateWarns()
+{
+    QFETCH(QString, scene);
+    QFETCH(QString, gripper);
+    QFETCH(QString, from);
+    QFETCH(QString, to);
+    QFETCH(QString, warning);
+    QTemporaryDir dir;
+    QString path = scene;
+    QString adapterPath;
+    if (gripper.isEmpty() && !from.isEmpty()) {
+        QFile bundled(QStringLiteral(SEMHAP_RESOURCES "/scenes/") + scene + ".xml");
+        QVERIFY(bundled.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(bundled.readAll());
+        const QStringList froms = from.split('|'), tos = to.split('|');
+        for (int i = 0; i < froms.size(); ++i) {
+            QVERIFY2(text.contains(froms[i]), qPrintable(froms[i]));
+            text.replace(froms[i], tos[i]);
+        }
+        path = dir.filePath(scene + ".xml");
+        QFile edited(path);
+        QVERIFY(edited.open(QIODevice::WriteOnly));
+        edited.write(text.toUtf8());
+    } else if (!gripper.isEmpty()) {
+        adapterPath = copyGripper(gripper, dir);
+        QFile edited(adapterPath);
+        QVERIFY(edited.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(edited.readAll());
+        edited.close();
+        QVERIFY2(text.contains(from), qPrintable(from));
+        text.replace(from, to);
+        QVERIFY(edited.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        edited.write(text.toUtf8());
+    }
+    SceneOptions options;
+    options.gripper = adapterPath;
+    QString error;
+    std::unique_ptr<World> world = World::load(path, options, &error);
+    QVERIFY2(world, qPrintable(error));
+    GripperAdapter adapter;
+    LoadError adapterError;
+    const bool adapted = !adapterPath.isEmpty();
+    QVERIFY(!adapted || GripperAdapter::read(adapterPath, &adapter, &adapterError));
+    const QStringList warnings =
+        GripperCheck::warnings(*world, path, adapted ? &adapter : nullptr);
+    qDebug() << warnings;
+    if (warning.isEmpty()) {
+        QVERIFY2(warnings.isEmpty(), qPrintable(warnings.join('\n')));
+    } else {
+        QCOMPARE(warnings.filter(warning).size(), 1);
+    }
 }
 
 void TestGrippers::badAdaptersAreRefused_data()
