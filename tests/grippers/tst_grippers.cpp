@@ -16,6 +16,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <map>
 
 using namespace semhap;
 
@@ -29,9 +30,38 @@ QByteArray hashOf(const QString &path)
     return QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256);
 }
 
-/** Copies a test gripper's folder into `dir`, so it is loaded from elsewhere than the sources. */
+/** The folders of a MuJoCo Menagerie checkout the shipped adapters use, when it is given. */
+const QStringList &shippedAdapters()
+{
+    static const QStringList names = qEnvironmentVariableIsSet("SEMHAP_MENAGERIE")
+                                         ? QStringList{"robotiq_2f85", "franka_hand"}
+                                         : QStringList();
+    return names;
+}
+
+void copyFolder(const QDir &from, const QString &to)
+{
+    QDir().mkpath(to);
+    for (const QString &file : from.entryList(QDir::Files))
+        QFile::copy(from.filePath(file), to + QLatin1Char('/') + file);
+    for (const QString &sub : from.entryList(QDir::Dirs | QDir::NoDotAndDotDot))
+        copyFolder(QDir(from.filePath(sub)), to + QLatin1Char('/') + sub);
+}
+
+/**
+ * Copies a test gripper's folder, or a shipped adapter with its model's Menagerie folder
+ * (SEMHAP_MENAGERIE), into `dir`: loaded from elsewhere than where they were written.
+ */
 QString copyGripper(const QString &name, const QTemporaryDir &dir)
 {
+    if (shippedAdapters().contains(name)) {
+        const QString adapter = QStringLiteral(SEMHAP_RESOURCES "/grippers/") + name + ".json";
+        QFile::copy(adapter, dir.filePath(name + ".json"));
+        const QString model = name == "franka_hand" ? "franka_emika_panda" : name;
+        copyFolder(QDir(qEnvironmentVariable("SEMHAP_MENAGERIE") + '/' + model),
+                   dir.filePath(model));
+        return dir.filePath(name + ".json");
+    }
     const QDir source(QStringLiteral(SEMHAP_TEST_DATA "/") + name);
     QDir(dir.path()).mkpath(name + QStringLiteral("/assets"));
     for (const QString &file : source.entryList(QDir::Files))
@@ -171,9 +201,11 @@ void TestGrippers::padsPressWithTheCommand_data()
 {
     QTest::addColumn<QString>("name");
     QTest::addColumn<double>("force");
-    for (const char *name : {"linkage", "slider", ""}) {
+    const QStringList names = QStringList{"linkage", "slider", ""} + shippedAdapters();
+    for (const QString &name : names) {
         for (double force : {20.0, 60.0}) {
-            QTest::addRow("%s %g N", *name ? name : "bundled", force) << QString(name) << force;
+            QTest::addRow("%s %g N", name.isEmpty() ? "bundled" : qPrintable(name), force)
+                << name << force;
         }
     }
 }
@@ -209,20 +241,24 @@ void TestGrippers::steadyHoldGivesOneConfirmation_data()
     QTest::newRow("linkage") << "linkage";
     QTest::newRow("slider") << "slider";
     QTest::newRow("bundled") << "";
+    for (const QString &name : shippedAdapters())
+        QTest::newRow(qPrintable(name)) << name;
 }
 
 void TestGrippers::steadyHoldGivesOneConfirmation()
 {
-    // A cube taken, lifted and held for 10 s under C4 (force and slip detectors on both
-    // hands), compiled for this gripper as semhap run does: one grasp confirmation, no
-    // warning of a slip or a break the hold never had.
+    // A cube taken, lifted and held for 10 s under C4 with its slip detector moved to the
+    // right hand (the presets watch the left hand's hold for slips), compiled for this
+    // gripper as semhap run does: one grasp confirmation from each detector, no warning of a
+    // slip or a break the hold never had.
     QFETCH(QString, name);
     QTemporaryDir dir;
     std::unique_ptr<World> world = load(name.isEmpty() ? QString() : copyGripper(name, dir), 1);
     QVERIFY(world);
     LoadError error;
     std::unique_ptr<Router> router =
-        loadRouter(QStringLiteral("C4"), {}, &error, SimRun::routerContext(*world, 0.25));
+        loadRouter(QStringLiteral("C4"), {QStringLiteral("left.slip.gripper=right")}, &error,
+                   SimRun::routerContext(*world, 0.25));
     QVERIFY2(router, qPrintable(error.toString()));
     std::vector<SemanticEvent> events;
     EventBuffer buffer;
@@ -246,20 +282,22 @@ void TestGrippers::steadyHoldGivesOneConfirmation()
         route(s);
     });
     steps(*world, 10.0, route);
-    int confirmations = 0;
+    std::map<DetectorKind, int> confirmations;
     int exceptions = 0;
     for (const SemanticEvent &e : events) {
         if (e.phase != EventPhase::Begin)
             continue;
-        confirmations += e.category == Category::Confirmation ? 1 : 0;
+        confirmations[e.detector] += e.category == Category::Confirmation ? 1 : 0;
         exceptions += e.category == Category::Exception ? 1 : 0;
     }
     const ContactFrame &frame = world->frame(Gripper::Right);
-    qDebug() << name << "confirmations" << confirmations << "exceptions" << exceptions << "n"
+    qDebug() << name << "confirmations" << confirmations[DetectorKind::Force]
+             << confirmations[DetectorKind::Slip] << "exceptions" << exceptions << "n"
              << frame.left.n << frame.right.n << "F" << frame.totalForce();
     QCOMPARE(frame.left.actor, world->objects()[0].actor);
     QVERIFY(world->objectPosition(0)[2] > 0.06);
-    QCOMPARE(confirmations, 1);
+    QCOMPARE(confirmations[DetectorKind::Force], 1);
+    QCOMPARE(confirmations[DetectorKind::Slip], 1);
     QCOMPARE(exceptions, 0);
 }
 
