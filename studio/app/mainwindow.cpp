@@ -149,6 +149,12 @@ MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidg
         } else if (openRun(options.run) && options.autoRun) {
             m_engine.run();
         }
+        // A run that did not load (the message says why) leaves the default one to look at,
+        // paused, rather than no scene under pickers that name one.
+        RunOptions defaults;
+        defaults.duration = options.run.duration;
+        if (!m_engine.isLoaded() && options.run.toJson() != defaults.toJson())
+            openRun(defaults);
     }
     applyTeleopSettings();
     connect(m_gamepad, &GamepadInput::triggered, this, [this](GamepadMapping::Action action) {
@@ -311,9 +317,7 @@ void MainWindow::createActions()
                                                    tr("MuJoCo scenes (*.xml)"));
         if (file.isEmpty())
             return;
-        RunOptions options = m_engine.options();
-        options.scene = file;
-        openRun(options);
+        loadScene(file, SceneOptions()); // the scene's own cube count
     });
     m_openRouterAction = action(tr("Open router…"), QStringLiteral("openRouterAction"),
                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
@@ -874,9 +878,14 @@ void MainWindow::pickScene(int index)
         syncPickers(); // cancelled, it shows what runs
         return;
     }
+    loadScene(m_scenePicker->itemData(index).toString(), SceneOptions());
+}
+
+void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOptions)
+{
     RunOptions options = m_engine.options();
-    options.scene = m_scenePicker->itemData(index).toString();
-    options.sceneOptions = SceneOptions();
+    options.scene = scene;
+    options.sceneOptions = sceneOptions;
     const bool running = m_engine.isRunning();
     if (openRun(options) && running)
         m_engine.run();

@@ -122,6 +122,11 @@ private:
     /** Shows the running router in the editor unless the editor already holds it. */
     void syncRouterEditor();
     void pickScene(int index);
+    /**
+     * Loads `scene` with `sceneOptions` in place of the run's, keeping a running session
+     * running; a scene that does not load is said and the run that was there stays.
+     */
+    void loadScene(const QString &scene, const SceneOptions &sceneOptions);
     void pickRouter(int index);
     void setSpeedIndex(int index);
     void showPreferences();

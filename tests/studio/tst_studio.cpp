@@ -37,6 +37,7 @@
 #include "waveformdesigner.h"
 #include "widgetchecks.h"
 #include "workspace.h"
+#include "world.h"
 
 #include <QComboBox>
 #include <QDesktopServices>
@@ -55,6 +56,7 @@
 #include <QListWidget>
 #include <QMatrix4x4>
 #include <QMenu>
+#include <QMessageBox>
 #include <QProcess>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -349,6 +351,10 @@ private slots:
     void routerFollowsARenamedPattern();
     void buildsAnAlignmentConfirmationByMouse_data();
     void buildsAnAlignmentConfirmationByMouse();
+    void aSceneThatDoesNotLoadLeavesTheRun_data();
+    void aSceneThatDoesNotLoadLeavesTheRun();
+    void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults_data();
+    void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults();
 
 private:
     StudioOptions options() const;
@@ -2421,6 +2427,52 @@ void TestStudio::fileDialogsStartWhereTheirKindLives_data()
 
 namespace {
 
+/** The message the window shows in a box (which does not block it), closed; else empty. */
+QString shownMessage(MainWindow &window)
+{
+    for (QMessageBox *box : window.findChildren<QMessageBox *>()) {
+        if (box->isVisible()) {
+            const QString text = box->text() + "\n" + box->informativeText();
+            box->close();
+            return text;
+        }
+    }
+    return QString();
+}
+
+/** Writes `content` to `path` (its folder made); false when it could not. */
+bool writeFile(const QString &path, const QByteArray &content)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+}
+
+/**
+ * A row per way a scene fails to load, in column `file`: an <include> that does not
+ * resolve, an XML syntax error, grips by position servos.
+ */
+void badSceneRows()
+{
+    QTest::addColumn<QString>("file");
+    static QTemporaryDir dir;
+    const QString include = dir.filePath("include.xml");
+    writeFile(include, R"(<mujoco model="include"><include file="missing_part.xml"/>
+<worldbody/></mujoco>)");
+    QTest::newRow("include that does not resolve") << include;
+    const QString syntax = dir.filePath("syntax.xml");
+    writeFile(syntax, "<mujoco model=\"syntax\"><worldbody><body></worldbody></mujoco>\n");
+    QTest::newRow("syntax error") << syntax;
+    QFile bundled(":/semhap/scenes/box_and_block.xml");
+    QVERIFY(bundled.open(QIODevice::ReadOnly));
+    QByteArray servo = bundled.readAll();
+    servo.replace(R"(<motor name="right.grip.left" joint="right.slide.left" gear="1")",
+                  R"(<position name="right.grip.left" joint="right.slide.left" kp="100")");
+    const QString servoFile = dir.filePath("servo.xml");
+    writeFile(servoFile, servo);
+    QTest::newRow("grips by position servos") << servoFile;
+}
+
 /** Opens the file dialog `how` names: a shortcut, a designer action, a router editor menu
  * entry or a plots button. */
 void openDialog(MainWindow &window, const QString &how)
@@ -2695,6 +2747,96 @@ void TestStudio::buildsAnAlignmentConfirmationByMouse()
                      &error),
                  qPrintable(error));
     }
+}
+
+void TestStudio::aSceneThatDoesNotLoadLeavesTheRun_data()
+{
+    badSceneRows();
+}
+
+// A scene file that does not load, opened as a person does it (Ctrl+O, the file dialog), is
+// reported in the loader's own words, and the run that was there goes on: its world in the
+// viewport, its name in the scene picker and the title, running as before.
+void TestStudio::aSceneThatDoesNotLoadLeavesTheRun()
+{
+    QFETCH(QString, file);
+    QString error;
+    QVERIFY(!World::load(file, SceneOptions(), &error));
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    Engine &engine = window.engine();
+    QComboBox *scene = window.scenePicker();
+    scene->setFocus();
+    const int bimanual = scene->findData("bimanual_sorting");
+    while (scene->currentIndex() != bimanual)
+        QTest::keyClick(scene, bimanual > scene->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(engine.options().scene, QString("bimanual_sorting"));
+    QVERIFY(engine.isRunning());
+    const World *world = engine.world();
+
+    dialogFolder([&] { openDialog(window, "key:Ctrl+O"); }, file);
+    QTRY_VERIFY(window.findChild<QMessageBox *>());
+    QCOMPARE(shownMessage(window),
+             QString("Could not load scene %1 with router C3\n%2").arg(file, error));
+    QVERIFY2(window.statusBar()->currentMessage().endsWith(error),
+             qPrintable(window.statusBar()->currentMessage()));
+    QCOMPARE(engine.world(), world);
+    QCOMPARE(engine.options().scene, QString("bimanual_sorting"));
+    QCOMPARE(scene->currentText(), QString("bimanual_sorting"));
+    QVERIFY(window.windowTitle().contains("bimanual_sorting"));
+    QVERIFY(engine.isRunning());
+    QVERIFY(window.findChild<QAction *>("runAction")->isChecked());
+    const double time = engine.simTime();
+    QTRY_VERIFY(engine.simTime() > time);
+    QString why;
+    QVERIFY2(looksDrawn(window.viewport()->grabFramebuffer(), &why), qPrintable(why));
+
+    // A scene file that loads takes over, and the run goes on with it, as a picked one does.
+    QTemporaryDir dir;
+    QFile bundled(":/semhap/scenes/box_and_block.xml");
+    QVERIFY(bundled.open(QIODevice::ReadOnly));
+    const QString mine = dir.filePath("mine.xml");
+    QVERIFY(writeFile(mine, bundled.readAll()));
+    dialogFolder([&] { openDialog(window, "key:Ctrl+O"); }, mine);
+    QTRY_COMPARE(engine.options().scene, mine);
+    QCOMPARE(scene->currentText(), QString("mine.xml"));
+    QVERIFY(engine.isRunning());
+}
+
+void TestStudio::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults_data()
+{
+    badSceneRows();
+}
+
+// A scene named on the command line that does not load is reported the same way, and the
+// studio opens on the default run, paused, rather than on no scene under a picker naming one.
+void TestStudio::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults()
+{
+    QFETCH(QString, file);
+    QString error;
+    QVERIFY(!World::load(file, SceneOptions(), &error));
+    StudioOptions o;
+    QString text;
+    bool help = false;
+    QVERIFY(StudioOptions::parse({"--scene", file, "--pose-port", "0", "--size", "1280x800"}, &o,
+                                 &text, &help));
+    Studio studio(o);
+    studio.start();
+    MainWindow *window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QTRY_VERIFY(window->findChild<QMessageBox *>());
+    QCOMPARE(shownMessage(*window),
+             QString("Could not load scene %1 with router C3\n%2").arg(file, error));
+    Engine &engine = window->engine();
+    QVERIFY(engine.isLoaded());
+    QCOMPARE(engine.options().scene, QString("box_and_block"));
+    QCOMPARE(window->scenePicker()->currentText(), QString("box_and_block"));
+    QVERIFY(window->windowTitle().contains("box_and_block"));
+    QVERIFY(!engine.isRunning());
+    QVERIFY(!window->findChild<QAction *>("runAction")->isChecked());
+    QString why;
+    QTRY_VERIFY2(looksDrawn(window->viewport()->grabFramebuffer(), &why), qPrintable(why));
 }
 
 QTEST_MAIN(TestStudio)
