@@ -162,6 +162,14 @@
         <source>Who drives until you do: scripted or reactive.</source>
         <translation>Wer steuert, bis Sie es tun: scripted oder reactive.</translation>
     </message>
+    <message>
+        <source>A gripper adapter, by name or as a semhap.gripper/1 file, whose model takes the place of the scene&apos;s grippers (default: the scene&apos;s own).</source>
+        <translation>Ein Greifer-Adapter, als Name oder als semhap.gripper/1-Datei, dessen Modell an die Stelle der Greifer der Szene tritt (Standard: die eigenen der Szene).</translation>
+    </message>
+    <message>
+        <source>gripper</source>
+        <translation>Greifer</translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -799,7 +807,7 @@
     </message>
     <message>
         <source>Session notes</source>
-        <translation>Sitzungsnotizen</translation>
+        <translation>Notizen</translation>
     </message>
     <message>
         <source>Kept with the next recording (participant, condition, …)</source>
@@ -1003,6 +1011,44 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Latest malformed datagram: %1</source>
         <translation>Letztes fehlerhaftes Datagramm: %1</translation>
+    </message>
+    <message>
+        <source>Scene&apos;s own</source>
+        <translation>Eigene der Szene</translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation>Andere Datei…</translation>
+    </message>
+    <message>
+        <source>Open gripper adapter</source>
+        <translation>Greifer-Adapter öffnen</translation>
+    </message>
+    <message>
+        <source>Gripper adapters (*.json)</source>
+        <translation>Greifer-Adapter (*.json)</translation>
+    </message>
+    <message>
+        <source>%1 with %2</source>
+        <translation>%1 mit %2</translation>
+    </message>
+    <message>
+        <source>Could not load scene %1 with gripper %2 and router %3</source>
+        <translation>Szene %1 mit Greifer %2 und Router %3 konnte nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Gripper</source>
+        <translation>Greifer</translation>
+    </message>
+    <message>
+        <source>Gripper: %1
+The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
+        <translation>Greifer: %1
+Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adapters</translation>
+    </message>
+    <message>
+        <source>the scene&apos;s own</source>
+        <translation>die eigenen der Szene</translation>
     </message>
 </context>
 <context>

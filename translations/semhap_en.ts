@@ -162,6 +162,14 @@
         <source>Who drives until you do: scripted or reactive.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>A gripper adapter, by name or as a semhap.gripper/1 file, whose model takes the place of the scene&apos;s grippers (default: the scene&apos;s own).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -999,6 +1007,43 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Latest malformed datagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene&apos;s own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open gripper adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper adapters (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 with %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not load scene %1 with gripper %2 and router %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper: %1
+The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene&apos;s own</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

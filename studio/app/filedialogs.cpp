@@ -25,6 +25,8 @@ QString settingsKey(FileKind kind)
         return QStringLiteral("fileDialogs/routers");
     case FileKind::Scene:
         return QStringLiteral("fileDialogs/scenes");
+    case FileKind::Gripper:
+        return QStringLiteral("fileDialogs/grippers");
     case FileKind::HapticFile:
         return QStringLiteral("fileDialogs/hapticFiles");
     case FileKind::PlotExport:

@@ -14,6 +14,7 @@ enum class FileKind
     Pattern,    ///< the designer's patterns: the user pattern folder
     Router,     ///< router files
     Scene,      ///< MuJoCo scenes
+    Gripper,    ///< gripper adapters (`semhap.gripper/1`) outside the gripper folders
     HapticFile, ///< AHAP and `.haptic` files, imported and exported
     PlotExport, ///< the plots as CSV or PNG
 };

@@ -7,6 +7,7 @@
 #include "eventlogpanel.h"
 #include "filedialogs.h"
 #include "gamepadinput.h"
+#include "gripperlibrary.h"
 #include "handdrive.h"
 #include "keymapdialog.h"
 #include "liverigdialog.h"
@@ -29,6 +30,7 @@
 #include "world.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -50,6 +52,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <functional>
 #include <map>
 
 namespace semhap {
@@ -63,6 +66,8 @@ constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
 
 /** The scene picker's entry for a live rig (not a scene file or name). */
 const QString LiveRigEntry = QStringLiteral("semhap:live-rig");
+/** The Gripper menu's entry that asks for an adapter file (not an adapter's name). */
+const QString OtherGripperEntry = QStringLiteral("semhap:other-gripper");
 
 /** Marks a router picker entry that names what a replay shows, not a router to load. */
 constexpr int ShownByReplayRole = Qt::UserRole + 1;
@@ -76,17 +81,45 @@ constexpr int RouterNameChars = 14;
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
 
-/** The record button's red dot. */
-QIcon recordIcon()
+/** A 32×32 icon of filled shapes (no outlines) that `draw` paints. */
+QIcon drawnIcon(const std::function<void(QPainter &)> &draw)
 {
     QPixmap pixmap(32, 32);
     pixmap.fill(Qt::transparent);
-    QPainter painter(&pixmap);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(colors::Error);
-    painter.drawEllipse(QRectF(6, 6, 20, 20));
+    {
+        QPainter painter(&pixmap);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(Qt::NoPen);
+        draw(painter);
+    }
     return QIcon(pixmap);
+}
+
+/** The record button's red dot. */
+QIcon recordIcon()
+{
+    return drawnIcon([](QPainter &painter) {
+        painter.setBrush(colors::Error);
+        painter.drawEllipse(QRectF(6, 6, 20, 20));
+    });
+}
+
+/**
+ * The Gripper menu's button: a parallel gripper holding a cube, its jaws blue when a gripper
+ * adapter's model takes the place of the scene's own.
+ */
+QIcon gripperIcon(bool adapter)
+{
+    return drawnIcon([adapter](QPainter &painter) {
+        painter.setBrush(colors::Text);
+        painter.drawRect(QRectF(13, 2, 6, 5)); // the wrist
+        painter.setBrush(adapter ? colors::Confirmation : colors::Text);
+        painter.drawRect(QRectF(4, 7, 24, 5));  // the palm
+        painter.drawRect(QRectF(4, 12, 5, 17)); // the jaws
+        painter.drawRect(QRectF(23, 12, 5, 17));
+        painter.setBrush(colors::Border);
+        painter.drawRect(QRectF(11, 17, 10, 10)); // the cube
+    });
 }
 
 QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
@@ -153,7 +186,9 @@ MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidg
         // paused, rather than no scene under pickers that name one.
         RunOptions defaults;
         defaults.duration = options.run.duration;
-        if (!m_engine.isLoaded() && options.run.toJson() != defaults.toJson())
+        const bool defaultRun = options.run.toJson() == defaults.toJson() &&
+                                options.run.sceneOptions.gripper.isEmpty();
+        if (!m_engine.isLoaded() && !defaultRun)
             openRun(defaults);
     }
     applyTeleopSettings();
@@ -214,8 +249,13 @@ bool MainWindow::openRun(const RunOptions &options)
 {
     QString error;
     if (!m_engine.load(options, &error)) {
-        showError(tr("Could not load scene %1 with router %2").arg(options.scene, options.router),
-                  error);
+        const QString &gripper = options.sceneOptions.gripper;
+        showError(
+            gripper.isEmpty()
+                ? tr("Could not load scene %1 with router %2").arg(options.scene, options.router)
+                : tr("Could not load scene %1 with gripper %2 and router %3")
+                      .arg(options.scene, gripper, options.router),
+            error);
         syncPickers();
         return false;
     }
@@ -317,8 +357,18 @@ void MainWindow::createActions()
                                                    tr("MuJoCo scenes (*.xml)"));
         if (file.isEmpty())
             return;
-        loadScene(file, SceneOptions()); // the scene's own cube count
+        SceneOptions sceneOptions; // the scene's own cube count; the gripper picked stays
+        sceneOptions.gripper = m_engine.options().sceneOptions.gripper;
+        loadScene(file, sceneOptions);
     });
+    m_gripperMenu = new QMenu(this);
+    m_gripperMenu->setObjectName(QStringLiteral("gripperMenu"));
+    // Filled as it opens: an adapter copied into the gripper folder shows without a restart.
+    connect(m_gripperMenu, &QMenu::aboutToShow, this, &MainWindow::fillGripperMenu);
+    m_gripperAction = new QAction(tr("Gripper"), this);
+    m_gripperAction->setObjectName(QStringLiteral("gripperAction"));
+    m_gripperAction->setMenu(m_gripperMenu);
+    m_gripperAction->setIcon(gripperIcon(false));
     m_openRouterAction = action(tr("Open router…"), QStringLiteral("openRouterAction"),
                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     connect(m_openRouterAction, &QAction::triggered, this, [this] {
@@ -414,6 +464,14 @@ void MainWindow::createToolBar()
     m_scenePicker->addItem(tr("Live rig (UDP)…"), LiveRigEntry);
     connect(m_scenePicker, &QComboBox::activated, this, &MainWindow::pickScene);
     bar->addWidget(m_scenePicker);
+    // Beside the scene, as its icon: a field naming the choice has no room at 1280 px in
+    // German; the button's tooltip and the window's title name it.
+    bar->addAction(m_gripperAction);
+    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_gripperAction))) {
+        button->setObjectName(QStringLiteral("gripperButton"));
+        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
+        button->setPopupMode(QToolButton::InstantPopup);
+    }
 
     bar->addWidget(new QLabel(tr("Router:"), bar));
     m_routerPicker = new QComboBox(bar);
@@ -555,6 +613,7 @@ void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     file->addAction(m_openSceneAction);
+    file->addAction(m_gripperAction);
     file->addAction(m_openRouterAction);
     file->addAction(m_openSessionAction);
     file->addAction(m_listenAction);
@@ -818,6 +877,7 @@ void MainWindow::updateMode()
          {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
         action->setEnabled(simulating);
     m_speedPicker->setEnabled(simulating);
+    m_gripperAction->setEnabled(!m_engine.isLive()); // a rig's grippers are its own
     m_stepAction->setEnabled(simulating && !m_engine.isRunning());
     updateStatus();
 }
@@ -878,7 +938,49 @@ void MainWindow::pickScene(int index)
         syncPickers(); // cancelled, it shows what runs
         return;
     }
-    loadScene(m_scenePicker->itemData(index).toString(), SceneOptions());
+    SceneOptions sceneOptions; // the scene's own cube count; the gripper picked stays
+    sceneOptions.gripper = m_engine.options().sceneOptions.gripper;
+    loadScene(m_scenePicker->itemData(index).toString(), sceneOptions);
+}
+
+void MainWindow::fillGripperMenu()
+{
+    const QString loaded = m_engine.options().sceneOptions.gripper;
+    delete m_gripperChoices; // with its entries, which leave the menu
+    m_gripperMenu->clear();
+    m_gripperChoices = new QActionGroup(this);
+    m_gripperMenu->addSection(tr("Gripper")); // the toolbar shows only its icon
+    const auto add = [this, &loaded](const QString &text, const QString &gripper) {
+        QAction *choice = m_gripperChoices->addAction(text);
+        choice->setData(gripper);
+        choice->setCheckable(gripper != OtherGripperEntry);
+        choice->setChecked(gripper == loaded);
+        connect(choice, &QAction::triggered, this, [this, gripper] { pickGripper(gripper); });
+        m_gripperMenu->addAction(choice);
+    };
+    add(tr("Scene's own"), QString());
+    const QStringList names = GripperLibrary::names();
+    for (const QString &name : names)
+        add(name, name);
+    // A file, or a name no gripper folder has now: shown, so the menu never hides what runs.
+    if (!loaded.isEmpty() && !names.contains(loaded))
+        add(QFileInfo(loaded).fileName(), loaded);
+    m_gripperMenu->addSeparator();
+    add(tr("Other file…"), OtherGripperEntry);
+}
+
+void MainWindow::pickGripper(const QString &choice)
+{
+    QString gripper = choice;
+    if (gripper == OtherGripperEntry) {
+        gripper = FileDialogs::openFile(this, FileKind::Gripper, tr("Open gripper adapter"),
+                                        tr("Gripper adapters (*.json)"));
+        if (gripper.isEmpty())
+            return;
+    }
+    SceneOptions sceneOptions = m_engine.options().sceneOptions;
+    sceneOptions.gripper = gripper;
+    loadScene(m_engine.options().scene, sceneOptions);
 }
 
 void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOptions)
@@ -909,6 +1011,11 @@ void MainWindow::syncPickers()
         return index;
     };
     sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
+    const QString gripper = m_engine.options().sceneOptions.gripper;
+    m_gripperAction->setIcon(gripperIcon(!gripper.isEmpty()));
+    m_gripperAction->setToolTip(
+        tr("Gripper: %1\nThe scene's own grippers, or a gripper adapter's model in their place")
+            .arg(gripper.isEmpty() ? tr("the scene's own") : QFileInfo(gripper).fileName()));
     // A router only a replay shows (an untitled re-routing graph, a recorded file) is named
     // while it shows and cannot be picked: the picker offers only what it can load.
     const QString router = m_engine.routerSource();
@@ -983,9 +1090,11 @@ void MainWindow::updateTitle()
                 .arg(m_engine.liveUri(), QFileInfo(m_engine.options().router).completeBaseName()));
         return;
     }
+    QString scene = QFileInfo(m_engine.options().scene).completeBaseName();
+    if (const QString gripper = m_engine.options().sceneOptions.gripper; !gripper.isEmpty())
+        scene = tr("%1 with %2").arg(scene, QFileInfo(gripper).completeBaseName());
     setWindowTitle(tr("semhap studio — %1 · %2")
-                       .arg(QFileInfo(m_engine.options().scene).completeBaseName(),
-                            QFileInfo(m_engine.options().router).completeBaseName()));
+                       .arg(scene, QFileInfo(m_engine.options().router).completeBaseName()));
 }
 
 void MainWindow::updateStatus()

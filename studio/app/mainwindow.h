@@ -123,6 +123,13 @@ private:
     void syncRouterEditor();
     void pickScene(int index);
     /**
+     * Lists the gripper choices in the Gripper menu — the scene's own, the adapters found by
+     * name, the file in use, another file — with the loaded one checked.
+     */
+    void fillGripperMenu();
+    /** Loads the scene with `choice`: empty, an adapter's name, a file, or "ask for a file". */
+    void pickGripper(const QString &choice);
+    /**
      * Loads `scene` with `sceneOptions` in place of the run's, keeping a running session
      * running; a scene that does not load is said and the run that was there stays.
      */
@@ -167,6 +174,8 @@ private:
     RouterEditor *m_routerEditor = nullptr;
     WaveformDesigner *m_designer = nullptr;
     QComboBox *m_scenePicker = nullptr;
+    QMenu *m_gripperMenu = nullptr;
+    QActionGroup *m_gripperChoices = nullptr; ///< the Gripper menu's entries, refilled on show
     QComboBox *m_routerPicker = nullptr;
     QComboBox *m_speedPicker = nullptr;
     QLineEdit *m_notesEdit = nullptr;
@@ -192,6 +201,7 @@ private:
     QAction *m_driveAction = nullptr;
     QAction *m_forcesAction = nullptr;
     QAction *m_openSceneAction = nullptr;
+    QAction *m_gripperAction = nullptr; ///< the Gripper menu, in the toolbar and File menu
     QAction *m_openRouterAction = nullptr;
     QAction *m_recordAction = nullptr;
     QAction *m_openSessionAction = nullptr;

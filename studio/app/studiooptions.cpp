@@ -44,6 +44,11 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
         tr("seconds"), QString::number(o.run.reactionTime));
     const QCommandLineOption cubes({QStringLiteral("cubes")},
                                    tr("Cubes in play (default: the scene's)."), tr("n"));
+    const QCommandLineOption gripper(
+        {QStringLiteral("gripper")},
+        tr("A gripper adapter, by name or as a semhap.gripper/1 file, whose model takes the "
+           "place of the scene's grippers (default: the scene's own)."),
+        tr("gripper"));
     const QCommandLineOption speed({QStringLiteral("speed")},
                                    tr("Simulated seconds per real second."), tr("factor"),
                                    QStringLiteral("1"));
@@ -68,8 +73,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                     tr("[address:]port"));
     const QCommandLineOption defaultLayout({QStringLiteral("default-layout")},
                                            tr("Ignore the saved window layout."));
-    parser.addOptions({scene, router, op, seed, reactionTime, cubes, speed, paused, screenshot,
-                       quitAfter, size, language, posePort, listen, defaultLayout});
+    parser.addOptions({scene, router, op, seed, reactionTime, cubes, gripper, speed, paused,
+                       screenshot, quitAfter, size, language, posePort, listen, defaultLayout});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
         *message = parser.errorText();
         return false;
@@ -118,6 +123,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
             return false;
         o.run.sceneOptions.cubes = int(value);
     }
+    o.run.sceneOptions.gripper = parser.value(gripper);
     if (!number(speed, 0.01, 100, &o.speed))
         return false;
     o.autoRun = !parser.isSet(paused);
@@ -165,7 +171,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     }
     o.restoreLayout = !parser.isSet(defaultLayout);
     for (const QCommandLineOption *option :
-         {&scene, &router, &op, &seed, &reactionTime, &cubes, &listen})
+         {&scene, &router, &op, &seed, &reactionTime, &cubes, &gripper, &listen})
         o.runGiven = o.runGiven || parser.isSet(*option);
     *options = o;
     return true;

@@ -27,6 +27,12 @@ namespace {
 const QString AddressesKey = QStringLiteral("devices/addresses");
 
 /**
+ * The simulation's gripper adapter (SceneOptions::gripper) beside RunOptions' own JSON, which
+ * does not hold it; left out for the scene's own.
+ */
+constexpr QLatin1String GripperKey("gripper");
+
+/**
  * A router graph as the workspace keeps it: the document, and where it came from (its file
  * and the folder its relative pattern and model paths are resolved against).
  */
@@ -120,7 +126,10 @@ QJsonObject Workspace::toJson() const
                         {QStringLiteral("router"), rig.router},
                         {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}});
     } else if (run) {
-        json.insert(QStringLiteral("simulation"), engine.options().toJson());
+        QJsonObject simulation = engine.options().toJson();
+        if (const QString &gripper = engine.options().sceneOptions.gripper; !gripper.isEmpty())
+            simulation.insert(GripperKey, gripper);
+        json.insert(QStringLiteral("simulation"), simulation);
     }
     if (run && engine.isRunRouterEdited())
         json.insert(QStringLiteral("router"), graphEntry(engine.routerGraph()));
@@ -237,6 +246,11 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
     } else if (!simulation.isEmpty()) {
         const QString at = QStringLiteral("/simulation");
         RunOptions run = options.run;
+        if (!reader.string(simulation, at, GripperKey, &run.sceneOptions.gripper, false)) {
+            problems->append(reader.error().toString());
+            return;
+        }
+        simulation.remove(GripperKey);
         if (!RunOptions::fromJson(reader, simulation, at, &run)) {
             problems->append(reader.error().toString());
             return;

@@ -63,8 +63,8 @@ public:
     static QString defaultFile();
 
     /**
-     * The workspace as its file holds it: the run (a simulation's scene, cubes, router,
-     * operator, seed and reaction time, or a live rig's address, port and router), the
+     * The workspace as its file holds it: the run (a simulation's scene, cubes, gripper,
+     * router, operator, seed and reaction time, or a live rig's address, port and router), the
      * running router's graph when it is an edit, the bindings to real devices (with their
      * models), the two documents (content, file, read-only, modified) and the next
      * recording's name and notes. A replay is not kept: the run it replaced is.

@@ -13,6 +13,7 @@
 #include "eventlogpanel.h"
 #include "fifocard.h"
 #include "gamepadinput.h"
+#include "gripperlibrary.h"
 #include "handdrive.h"
 #include "imagechecks.h"
 #include "keymapdialog.h"
@@ -58,11 +59,13 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QProcess>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
@@ -355,6 +358,12 @@ private slots:
     void aSceneThatDoesNotLoadLeavesTheRun();
     void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults_data();
     void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults();
+    void gripperMenuPicksAnAdapter_data();
+    void gripperMenuPicksAnAdapter();
+    void gripperIsKept();
+    void aGripperThatDoesNotLoadAtTheStartIsReported();
+    void gripperMenuScreenshots_data();
+    void gripperMenuScreenshots();
 
 private:
     StudioOptions options() const;
@@ -1711,6 +1720,10 @@ void TestStudio::brokenWorkspacesAreReported_data()
         << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
            "colour": 1}})")
         << ": /simulation: unknown key 'colour'";
+    QTest::newRow("gripper not a name")
+        << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "box_and_block",
+           "gripper": 2}})")
+        << ": /simulation/gripper: expected a string";
     QTest::newRow("scene gone")
         << QByteArray(R"({"format": "semhap.workspace/1", "simulation": {"scene": "/gone.xml",
            "router": "C3", "operator": "scripted", "seed": 1, "reaction_time": 0.25}})")
@@ -2423,9 +2436,45 @@ void TestStudio::fileDialogsStartWhereTheirKindLives_data()
                                 << "documents";
     QTest::newRow("plots: PNG") << "plots:exportPng"
                                 << "documents";
+    QTest::newRow("gripper: other file") << "gripper:Other file…"
+                                         << "documents";
 }
 
 namespace {
+
+/**
+ * Opens the toolbar's Gripper menu under its button and clicks its entry `text` (which may
+ * open a file dialog: no waiting in between, a caller may have its answer queued).
+ */
+void chooseGripper(MainWindow &window, const QString &text)
+{
+    auto *button = window.findChild<QToolButton *>("gripperButton");
+    auto *menu = window.findChild<QMenu *>("gripperMenu");
+    QVERIFY(button && button->isVisible() && menu);
+    menu->popup(button->mapToGlobal(button->rect().bottomLeft()));
+    QAction *entry = nullptr;
+    for (QAction *action : menu->actions()) {
+        if (action->text() == text)
+            entry = action;
+    }
+    QVERIFY2(entry, qPrintable(text + " is not in the Gripper menu"));
+    QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(entry).center());
+}
+
+/** The Gripper menu's checked entry, as a person sees it when opening the menu. */
+QString checkedGripper(MainWindow &window)
+{
+    auto *button = window.findChild<QToolButton *>("gripperButton");
+    auto *menu = window.findChild<QMenu *>("gripperMenu");
+    menu->popup(button->mapToGlobal(button->rect().bottomLeft()));
+    QStringList checked;
+    for (QAction *action : menu->actions()) {
+        if (action->isChecked())
+            checked.append(action->text());
+    }
+    menu->hide();
+    return checked.join(", ");
+}
 
 /** The message the window shows in a box (which does not block it), closed; else empty. */
 QString shownMessage(MainWindow &window)
@@ -2446,6 +2495,22 @@ bool writeFile(const QString &path, const QByteArray &content)
     QDir().mkpath(QFileInfo(path).absolutePath());
     QFile file(path);
     return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+}
+
+/** A studio started as `semhap-studio ARGS --pose-port 0 --size 1280x800`, its window shown. */
+std::unique_ptr<Studio> startFromCommandLine(const QStringList &args)
+{
+    StudioOptions o;
+    QString text;
+    bool help = false;
+    if (!StudioOptions::parse(args + QStringList{"--pose-port", "0", "--size", "1280x800"}, &o,
+                              &text, &help))
+        qWarning("%s", qPrintable(text));
+    auto studio = std::make_unique<Studio>(o);
+    studio->start();
+    if (!QTest::qWaitForWindowExposed(studio->window()))
+        qWarning("the window did not show");
+    return studio;
 }
 
 /**
@@ -2474,7 +2539,7 @@ void badSceneRows()
 }
 
 /** Opens the file dialog `how` names: a shortcut, a designer action, a router editor menu
- * entry or a plots button. */
+ * entry, a plots button or the Gripper menu's entry. */
 void openDialog(MainWindow &window, const QString &how)
 {
     const QString what = how.section(':', 1);
@@ -2483,6 +2548,8 @@ void openDialog(MainWindow &window, const QString &how)
         QTest::keyClick(&window, key[0].key(), key[0].keyboardModifiers());
     } else if (how.startsWith("designer:")) {
         clickDesignerAction(window, what);
+    } else if (how.startsWith("gripper:")) {
+        chooseGripper(window, what);
     } else if (how.startsWith("router:")) {
         window.findChild<QDockWidget *>("routerDock")->raise();
         for (QAction *action : window.routerEditor()->findChild<QMenu *>("routerMenu")->actions())
@@ -2816,15 +2883,8 @@ void TestStudio::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults()
     QFETCH(QString, file);
     QString error;
     QVERIFY(!World::load(file, SceneOptions(), &error));
-    StudioOptions o;
-    QString text;
-    bool help = false;
-    QVERIFY(StudioOptions::parse({"--scene", file, "--pose-port", "0", "--size", "1280x800"}, &o,
-                                 &text, &help));
-    Studio studio(o);
-    studio.start();
-    MainWindow *window = studio.window();
-    QVERIFY(QTest::qWaitForWindowExposed(window));
+    const std::unique_ptr<Studio> studio = startFromCommandLine({"--scene", file});
+    MainWindow *window = studio->window();
     QTRY_VERIFY(window->findChild<QMessageBox *>());
     QCOMPARE(shownMessage(*window),
              QString("Could not load scene %1 with router C3\n%2").arg(file, error));
@@ -2837,6 +2897,265 @@ void TestStudio::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults()
     QVERIFY(!window->findChild<QAction *>("runAction")->isChecked());
     QString why;
     QTRY_VERIFY2(looksDrawn(window->viewport()->grabFramebuffer(), &why), qPrintable(why));
+}
+
+namespace {
+
+/** The user's gripper folder, where GripperLibrary finds adapters by name. */
+QString userGripperFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) +
+           "/semhap/grippers";
+}
+
+/** The test gripper `slider`'s adapter in the sources (tests/grippers). */
+QString sliderAdapter()
+{
+    return QDir::cleanPath(SEMHAP_TEST_DATA "/../grippers/slider/slider.json");
+}
+
+/** Copies the test gripper `slider` (its adapter, its MJCF) into the user's gripper folder. */
+bool addSlider()
+{
+    const QDir slider = QFileInfo(sliderAdapter()).dir();
+    QDir().mkpath(userGripperFolder());
+    for (const QString &file : slider.entryList(QDir::Files)) {
+        if (!QFile::copy(slider.filePath(file), userGripperFolder() + "/" + file))
+            return false;
+    }
+    return true;
+}
+
+/**
+ * Fills the user's gripper folder: `slider`, which loads; `nomodel` (the slider's adapter
+ * naming a model that is not there, as a shipped adapter's before it is downloaded) and
+ * `broken` (its JSON breaks off), which do not.
+ */
+bool addTestGrippers()
+{
+    QFile slider(sliderAdapter());
+    if (!addSlider() || !slider.open(QIODevice::ReadOnly))
+        return false;
+    // Its model where a download would put it: a folder that is not there.
+    const QByteArray noModel =
+        slider.readAll().replace("\"slider.xml\"", "\"nomodel/slider.xml\"");
+    return writeFile(userGripperFolder() + "/nomodel.json", noModel) &&
+           writeFile(userGripperFolder() + "/broken.json", "{\"format\": \"semhap.gripper/1\",\n");
+}
+
+} // namespace
+
+void TestStudio::gripperMenuPicksAnAdapter_data()
+{
+    QTest::addColumn<QString>("entry");   // what the user picks in the Gripper menu
+    QTest::addColumn<QString>("gripper"); // what that is: a name, or the file chosen
+    QTest::addColumn<bool>("loads");
+    QTest::newRow("an adapter of the gripper folder, by name") << "slider"
+                                                               << "slider" << true;
+    QTest::newRow("another file") << "Other file…" << sliderAdapter() << true;
+    QTest::newRow("a model not downloaded") << "nomodel"
+                                            << "nomodel" << false;
+    QTest::newRow("a broken adapter") << "broken"
+                                      << "broken" << false;
+}
+
+// The Gripper menu beside the scene picker lists the scene's own, the gripper folders'
+// adapters by name and another file. A choice loads the scene with it, the run going on, and
+// the menu's check, the title, the tooltip and the icon say so; one that does not load is
+// reported in the loader's words, and the run, the world and all of these stay as they were.
+void TestStudio::gripperMenuPicksAnAdapter()
+{
+    QFETCH(QString, entry);
+    QFETCH(QString, gripper);
+    QFETCH(bool, loads);
+    OwnHome home;
+    QVERIFY(addTestGrippers());
+    QString error;
+    QCOMPARE(World::load("box_and_block", SceneOptions{-1, gripper}, &error) != nullptr, loads);
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    Engine &engine = window.engine();
+    QCOMPARE(checkedGripper(window), QString("Scene's own"));
+    auto *button = window.findChild<QToolButton *>("gripperButton");
+    // The button's jaws are blue while an adapter's gripper is in the scene.
+    const auto blueJaws = [button] {
+        return pixelsOfColour(button->icon().pixmap(32).toImage(), colors::Confirmation) > 0;
+    };
+    QVERIFY(!blueJaws());
+    const World *world = engine.world();
+    QVERIFY(!world->gripperMount());
+
+    if (entry == "Other file…")
+        QCOMPARE(dialogFolder([&] { chooseGripper(window, entry); }, gripper), home.documents());
+    else
+        chooseGripper(window, entry);
+    const QString shown = QFileInfo(gripper).fileName();
+    if (loads) {
+        QTRY_COMPARE(engine.options().sceneOptions.gripper, gripper);
+        QVERIFY(engine.world()->gripperMount()); // the adapter's model is in the wrist
+        QCOMPARE(checkedGripper(window), shown);
+        QVERIFY2(window.windowTitle().contains("box_and_block with " +
+                                               QFileInfo(gripper).completeBaseName()),
+                 qPrintable(window.windowTitle()));
+        QVERIFY2(button->toolTip().startsWith("Gripper: " + shown), qPrintable(button->toolTip()));
+        QVERIFY(blueJaws());
+    } else {
+        QTRY_VERIFY(window.findChild<QMessageBox *>());
+        QCOMPARE(shownMessage(window),
+                 QString("Could not load scene box_and_block with gripper %1 and router C3\n%2")
+                     .arg(gripper, error));
+        QVERIFY2(window.statusBar()->currentMessage().endsWith(error),
+                 qPrintable(window.statusBar()->currentMessage()));
+        QCOMPARE(engine.world(), world);
+        QVERIFY(engine.options().sceneOptions.gripper.isEmpty());
+        QCOMPARE(checkedGripper(window), QString("Scene's own"));
+        QVERIFY(!window.windowTitle().contains(" with "));
+        QVERIFY2(button->toolTip().startsWith("Gripper: the scene's own"),
+                 qPrintable(button->toolTip()));
+        QVERIFY(!blueJaws());
+    }
+    QVERIFY(engine.isRunning());
+    QCOMPARE(window.scenePicker()->currentText(), QString("box_and_block"));
+
+    // Another scene keeps the gripper; the scene's own brings the scene's back.
+    QComboBox *scene = window.scenePicker();
+    scene->setFocus();
+    QTest::keyClick(scene, Qt::Key_Down);
+    QTRY_VERIFY(engine.options().scene != "box_and_block");
+    QCOMPARE(engine.options().sceneOptions.gripper, loads ? gripper : QString());
+    QCOMPARE(bool(engine.world()->gripperMount()), loads);
+    chooseGripper(window, "Scene's own");
+    QTRY_VERIFY(engine.options().sceneOptions.gripper.isEmpty());
+    QVERIFY(!engine.world()->gripperMount());
+    QCOMPARE(checkedGripper(window), QString("Scene's own"));
+    QVERIFY(!window.windowTitle().contains(" with "));
+    QVERIFY(!blueJaws());
+    QVERIFY(engine.isRunning());
+}
+
+// The gripper is part of the run: a language switch keeps it, the next start opens it again
+// (the workspace file has it), and `--gripper NAME` opens it.
+void TestStudio::gripperIsKept()
+{
+    OwnHome home;
+    QVERIFY(addTestGrippers());
+    const auto hasSlider = [](MainWindow &window) {
+        return window.engine().options().sceneOptions.gripper == "slider" &&
+               window.engine().world()->gripperMount() && checkedGripper(window) == "slider";
+    };
+    {
+        Studio studio(options());
+        studio.start();
+        MainWindow *window = studio.window();
+        QVERIFY(QTest::qWaitForWindowExposed(window));
+        chooseGripper(*window, "slider");
+        QTRY_VERIFY(hasSlider(*window));
+        pickLanguage(studio, "de");
+        QVERIFY(QTest::qWaitForWindowExposed(studio.window()));
+        QVERIFY(hasSlider(*studio.window()));
+        QVERIFY(studio.window()->windowTitle().contains("box_and_block mit slider"));
+        QVERIFY(studio.window()->engine().isRunning());
+        pickLanguage(studio, "en"); // for the next start
+        studio.window()->close();
+    }
+    {
+        Studio studio(options());
+        studio.start();
+        QVERIFY(QTest::qWaitForWindowExposed(studio.window()));
+        QVERIFY(hasSlider(*studio.window()));
+        QVERIFY(studio.window()->engine().isRunning());
+        studio.window()->close();
+    }
+    QFile::remove(Workspace::defaultFile());
+    const std::unique_ptr<Studio> studio = startFromCommandLine({"--gripper", "slider"});
+    QVERIFY(hasSlider(*studio->window()));
+    QVERIFY(studio->window()->engine().isRunning());
+}
+
+// A gripper that does not load at the start — named on the command line, or kept in the
+// workspace from the last time — is said in the loader's words, and the studio opens on the
+// default run with the scene's own gripper.
+void TestStudio::aGripperThatDoesNotLoadAtTheStartIsReported()
+{
+    OwnHome home;
+    QVERIFY(addTestGrippers());
+    QString error;
+    QVERIFY(!World::load("box_and_block", SceneOptions{-1, "nomodel"}, &error));
+    {
+        const std::unique_ptr<Studio> studio = startFromCommandLine({"--gripper", "nomodel"});
+        MainWindow *window = studio->window();
+        QTRY_VERIFY(window->findChild<QMessageBox *>());
+        QCOMPARE(shownMessage(*window),
+                 "Could not load scene box_and_block with gripper nomodel and router C3\n" +
+                     error);
+        QVERIFY(window->engine().world());
+        QVERIFY(!window->engine().world()->gripperMount());
+        QVERIFY(!window->engine().isRunning());
+        QCOMPARE(checkedGripper(*window), QString("Scene's own"));
+        window->close();
+    }
+
+    const QString file = Workspace::defaultFile();
+    QVERIFY(writeFile(file, R"({"format": "semhap.workspace/1", "simulation": {
+        "scene": "bimanual_sorting", "gripper": "nomodel", "router": "C3"}})"));
+    QVERIFY(!World::load("bimanual_sorting", SceneOptions{-1, "nomodel"}, &error));
+    Studio studio(options());
+    studio.start();
+    MainWindow *window = studio.window();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    const QString message = window->statusBar()->currentMessage();
+    QVERIFY2(message.contains(file + ": /simulation: " + error), qPrintable(message));
+    QVERIFY(window->engine().world());
+    QVERIFY(!window->engine().world()->gripperMount());
+    QCOMPARE(checkedGripper(*window), QString("Scene's own"));
+}
+
+void TestStudio::gripperMenuScreenshots_data()
+{
+    addWindowRows();
+}
+
+// The Gripper menu open under its button with the test gripper picked, as the screen shows
+// it (the menu is a window of its own), to be looked at: it lists the scene's own, every
+// adapter of the gripper folders (the shipped ones too) and another file, and lies on the
+// screen whole; its button is in the toolbar, not in its overflow.
+void TestStudio::gripperMenuScreenshots()
+{
+    OwnHome home;
+    QVERIFY(addSlider());
+    const QStringList names = GripperLibrary::names();
+    for (const QString name : {"franka_hand", "robotiq_2f85", "slider"})
+        QVERIFY2(names.contains(name), qPrintable(names.join(", ")));
+    StudioOptions o = options();
+    o.autoRun = false;
+    auto studio = startStudio(o);
+    MainWindow *window = studio->window();
+    auto *button = window->findChild<QToolButton *>("gripperButton");
+    QVERIFY(button && button->isVisible());
+    chooseGripper(*window, "slider");
+    QTRY_COMPARE(window->engine().options().sceneOptions.gripper, QString("slider"));
+    auto *menu = window->findChild<QMenu *>("gripperMenu");
+    menu->popup(button->mapToGlobal(button->rect().bottomLeft()));
+    QVERIFY(QTest::qWaitForWindowExposed(menu));
+    QStringList entries;
+    for (QAction *action : menu->actions())
+        entries.append(action->text());
+    const QStringList expected =
+        QStringList{MainWindow::tr("Gripper"), MainWindow::tr("Scene's own")} + names +
+        QStringList{QString(), MainWindow::tr("Other file…")};
+    QCOMPARE(entries, expected);
+    QVERIFY(window->screen()->availableGeometry().contains(menu->geometry()));
+    QTest::qWait(200);
+    const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+    if (!folder.isEmpty()) {
+        const QRect frame = window->frameGeometry();
+        const QPixmap picture =
+            window->screen()->grabWindow(0, frame.x(), frame.y(), frame.width(), frame.height());
+        QVERIFY(picture.save(
+            QString("%1/gripper-menu-%2.png").arg(folder, QTest::currentDataTag()), "PNG"));
+    }
+    menu->hide();
 }
 
 QTEST_MAIN(TestStudio)

@@ -38,6 +38,8 @@ void TestStudioOptions::defaults()
     QCOMPARE(o.run.router, QString("C3"));
     QCOMPARE(o.run.operatorName, QString("scripted"));
     QCOMPARE(o.run.reactionTime, DefaultReactionTime);
+    QVERIFY(o.run.sceneOptions.gripper.isEmpty()); // the scene's own
+    QVERIFY(!o.runGiven);
     QVERIFY(o.run.duration >= 3600.0); // the studio runs until stopped
     QVERIFY(o.autoRun);
     QCOMPARE(o.speed, 1.0);
@@ -64,6 +66,8 @@ void TestStudioOptions::options()
                     "0.4",
                     "--cubes",
                     "4",
+                    "--gripper",
+                    "robotiq_2f85",
                     "--speed",
                     "0.5",
                     "--paused",
@@ -86,6 +90,8 @@ void TestStudioOptions::options()
     QCOMPARE(o.run.seed, std::uint64_t(7));
     QCOMPARE(o.run.reactionTime, 0.4);
     QCOMPARE(o.run.sceneOptions.cubes, 4);
+    QCOMPARE(o.run.sceneOptions.gripper, QString("robotiq_2f85"));
+    QVERIFY(o.runGiven);
     QCOMPARE(o.speed, 0.5);
     QVERIFY(!o.autoRun);
     QCOMPARE(o.screenshot, QString("a.png"));
@@ -94,6 +100,13 @@ void TestStudioOptions::options()
     QCOMPARE(o.language, QString("de"));
     QCOMPARE(o.posePort, 0);
     QVERIFY(!o.restoreLayout);
+
+    // A gripper alone names a run too: the default scene with that gripper; a file is kept
+    // as given (the loader reads names and files alike).
+    QVERIFY(parse({"--gripper", "/lab/hands/ours.json"}, &o, &message));
+    QCOMPARE(o.run.sceneOptions.gripper, QString("/lab/hands/ours.json"));
+    QCOMPARE(o.run.scene, QString("box_and_block"));
+    QVERIFY(o.runGiven);
 
     // A live rig: on this machine unless an address is given; the router is --router's.
     QVERIFY(parse({"--listen", "9900", "--router", "C2"}, &o, &message));
@@ -116,6 +129,7 @@ void TestStudioOptions::rejects_data()
     QTest::addColumn<QString>("expected");
     QTest::newRow("unknown option") << QStringList{"--bogus"} << "bogus";
     QTest::newRow("missing value") << QStringList{"--scene"} << "scene";
+    QTest::newRow("missing gripper") << QStringList{"--gripper"} << "gripper";
     QTest::newRow("speed not a number") << QStringList{"--speed", "fast"} << "--speed";
     QTest::newRow("speed too high") << QStringList{"--speed", "1000"} << "0.01 to 100";
     QTest::newRow("negative seed") << QStringList{"--seed", "-1"} << "--seed";
@@ -151,6 +165,7 @@ void TestStudioOptions::help()
     QVERIFY(help);
     QVERIFY(message.contains("--screenshot"));
     QVERIFY(message.contains("--router"));
+    QVERIFY(message.contains("--gripper"));
 }
 
 QTEST_GUILESS_MAIN(TestStudioOptions)
