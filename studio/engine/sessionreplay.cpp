@@ -260,6 +260,7 @@ void SessionReplay::loadScene()
     const int cubes = info.extra.value(QStringLiteral("cubes")).toInt(&counted);
     if (counted)
         options.cubes = cubes;
+    options.gripper = info.extra.value(QStringLiteral("gripper"));
     QString error;
     std::unique_ptr<World> world = World::load(info.scene, options, &error);
     SceneState first;

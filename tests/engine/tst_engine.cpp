@@ -48,6 +48,7 @@ private slots:
     void swapsSources();
     void swapsTheRouterMidGrasp();
     void recordsAndReplays();
+    void replaysShowTheRecordedGripper();
     void routersKnowTheScenesSignals();
     void recordingsOfOneSecondGetTheirOwnFiles();
     void keepsTheRunBehindAReplay();
@@ -673,6 +674,31 @@ void TestEngine::recordsAndReplays()
     QVERIFY(!replay.isOpen());
     QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
     QVERIFY(engine.simTime() < 0.1);
+}
+
+void TestEngine::replaysShowTheRecordedGripper()
+{
+    // A run with a gripper adapter's model in the scene is replayed with it: its scene states
+    // are that model's bodies, which the scene's own gripper would not take.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("slider.db");
+    Engine engine;
+    QString error;
+    RunOptions run = options();
+    run.sceneOptions.gripper = SEMHAP_TEST_DATA "/../grippers/slider/slider.json";
+    QVERIFY2(engine.load(run, &error), qPrintable(error));
+    QVERIFY(engine.world()->gripperMount());
+    QVERIFY2(engine.startRecording(path, QString(), &error), qPrintable(error));
+    engine.setSpeed(4.0);
+    engine.run();
+    QTRY_VERIFY(engine.simTime() > 0.5);
+    engine.pause();
+    engine.stopRecording();
+
+    QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
+    QVERIFY2(engine.replay().sceneNote().isEmpty(), qPrintable(engine.replay().sceneNote()));
+    QVERIFY(engine.world());
+    QVERIFY(engine.world()->gripperMount());
 }
 
 void TestEngine::routersKnowTheScenesSignals()
