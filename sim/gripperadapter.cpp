@@ -63,13 +63,14 @@ bool GripperAdapter::read(const QString &path, GripperAdapter *out, LoadError *e
     a.file = path;
     QJsonObject mount, fingers, force, detectors;
     QString closing;
+    QString collisions = QStringLiteral("all");
     double fullContacts = 0.0;
     const bool ok =
         reader.checkKeys(json, QString(),
                          {QLatin1String("format"), QLatin1String("name"), QLatin1String("model"),
                           QLatin1String("root"), QLatin1String("mount"), QLatin1String("fingers"),
                           QLatin1String("closing"), QLatin1String("force"),
-                          QLatin1String("detectors")}) &&
+                          QLatin1String("detectors"), QLatin1String("collisions")}) &&
         reader.nonEmptyString(json, QString(), QLatin1String("name"), &a.name) &&
         reader.nonEmptyString(json, QString(), QLatin1String("model"), &a.modelName) &&
         reader.nonEmptyString(json, QString(), QLatin1String("root"), &a.root) &&
@@ -84,11 +85,15 @@ bool GripperAdapter::read(const QString &path, GripperAdapter *out, LoadError *e
         readFinger(reader, fingers, QLatin1String("left"), &a.fingers[0]) &&
         readFinger(reader, fingers, QLatin1String("right"), &a.fingers[1]) &&
         reader.string(json, QString(), QLatin1String("closing"), &closing) &&
+        reader.string(json, QString(), QLatin1String("collisions"), &collisions, false) &&
         reader.object(json, QString(), QLatin1String("force"), &force, false) &&
-        reader.checkKeys(force, QStringLiteral("/force"),
-                         {QLatin1String("max"), QLatin1String("open")}) &&
+        reader.checkKeys(
+            force, QStringLiteral("/force"),
+            {QLatin1String("max"), QLatin1String("open"), QLatin1String("damping")}) &&
         reader.number(force, QStringLiteral("/force"), QLatin1String("max"), &a.maxForce, false) &&
         reader.number(force, QStringLiteral("/force"), QLatin1String("open"), &a.openForce,
+                      false) &&
+        reader.number(force, QStringLiteral("/force"), QLatin1String("damping"), &a.damping,
                       false) &&
         reader.object(json, QString(), QLatin1String("detectors"), &detectors, false) &&
         reader.checkKeys(detectors, QStringLiteral("/detectors"),
@@ -116,12 +121,22 @@ bool GripperAdapter::read(const QString &path, GripperAdapter *out, LoadError *e
                         QStringLiteral("must be 'positive' or 'negative' (the direction of the "
                                        "fingers' joints that closes them), got %1")
                             .arg(quoted(closing)));
+        if (collisions == QLatin1String("pads"))
+            a.padsOnly = true;
+        else if (collisions != QLatin1String("all"))
+            reader.fail(QStringLiteral("/collisions"),
+                        QStringLiteral("must be 'all' (every geom of the model collides, as it "
+                                       "says) or 'pads' (only the pads), got %1")
+                            .arg(quoted(collisions)));
         if (!(a.maxForce > 0 && a.maxForce <= 10000))
             reader.fail(QStringLiteral("/force/max"),
                         QStringLiteral("must be above 0 and at most 10000 N"));
         if (!(a.openForce > 0 && a.openForce <= a.maxForce))
             reader.fail(QStringLiteral("/force/open"),
                         QStringLiteral("must be above 0 and at most /force/max"));
+        if (!(a.damping >= 0 && a.damping <= 10000))
+            reader.fail(QStringLiteral("/force/damping"),
+                        QStringLiteral("must be from 0 to 10000 N s/m"));
         if (detectors.contains(QLatin1String("fullContacts")) &&
             !(fullContacts >= 1 && fullContacts <= 1000 &&
               fullContacts == std::floor(fullContacts)))

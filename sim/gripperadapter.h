@@ -40,6 +40,16 @@ struct GripperAdapter
     int closing = 1;
     double maxForce = 100.0; ///< the highest total grip (N, both fingers)
     double openForce = 40.0; ///< the total force that opens the fingers (N)
+    /**
+     * The damping of each pad's motion (N·s/m) that stands in for the velocity term of the
+     * servo the model's actuator was (left out with it); semhap's own fingers have 60.
+     */
+    double damping = 60.0;
+    /**
+     * Whether only the pads collide (the rest of the model passes through what it meets, as
+     * semhap's own fingers' links do); else every geom collides as the model says.
+     */
+    bool padsOnly = false;
     /** Overrides of what the loader measures (docs/grippers.md); 0 or less: measured. */
     int fullContacts = 0;
     double forceRipple = -1.0;

@@ -307,6 +307,8 @@ private:
     bool findPads(MjcfElement &root, const QString &rootClass, QString *error);
     void convertUnits(MjcfElement &root, const QString &rootClass);
     void takeAssets();
+    /** Every colliding geom of the subtree but the pads stops colliding. */
+    void keepPadsColliding(MjcfElement &root, const QString &rootClass);
 
     const Model &m_model;
     const GripperAdapter &m_adapter;
@@ -491,6 +493,31 @@ void HandCopy::takeAssets()
     }
 }
 
+void HandCopy::keepPadsColliding(MjcfElement &root, const QString &rootClass)
+{
+    const Defaults classes(m_root);
+    const QString tips = m_hand + QStringLiteral(".tip.");
+    std::function<void(MjcfElement &, const QString &)> walk = [&](MjcfElement &body,
+                                                                   const QString &inherited) {
+        const QString cls = body.has(QStringLiteral("childclass"))
+                                ? body.attribute(QStringLiteral("childclass"))
+                                : inherited;
+        std::vector<ModelGeom> colliding;
+        bodyGeoms(body, cls, classes, &colliding);
+        for (const ModelGeom &g : colliding) {
+            if (!g.geom->attribute(QStringLiteral("name")).startsWith(tips)) {
+                g.geom->setAttribute(QStringLiteral("contype"), QStringLiteral("0"));
+                g.geom->setAttribute(QStringLiteral("conaffinity"), QStringLiteral("0"));
+            }
+        }
+        for (MjcfElement &child : body.children()) {
+            if (child.tag() == QLatin1String("body"))
+                walk(child, cls);
+        }
+    };
+    walk(root, rootClass);
+}
+
 bool HandCopy::build(QString *error)
 {
     MjcfElement *worldbody = m_root.child(QStringLiteral("worldbody"));
@@ -505,6 +532,8 @@ bool HandCopy::build(QString *error)
     if (!findPads(*root, rootClass, error))
         return false;
     convertUnits(*root, rootClass);
+    if (m_adapter.padsOnly)
+        keepPadsColliding(*root, rootClass);
     if (!root->has(QStringLiteral("childclass")))
         root->setAttribute(QStringLiteral("childclass"),
                            rootClass.isEmpty() ? QStringLiteral("main") : rootClass);

@@ -169,6 +169,8 @@ struct World::Private
          * that many newtons whatever the linkage.
          */
         bool adapted = false;
+        /** The adapter's damping of each pad's motion (N·s/m), as the model's servo had. */
+        double padDamping = 0.0;
     };
 
     MjModelPtr model;
@@ -379,6 +381,7 @@ std::unique_ptr<World> World::Private::assemble(MjModelPtr model, const QString 
         if (pads[0].empty() || pads[1].empty() ||
             h.geometry.measure(m, h.body, {h.slides[0], h.slides[1]}, pads, &reason)) {
             h.adapted = adapter != nullptr;
+            h.padDamping = adapter ? adapter->damping : 0.0;
             continue;
         }
         *error = QStringLiteral("%1: gripper '%2': %3").arg(nameOrPath, gripperName(g), reason);
@@ -494,7 +497,10 @@ void World::step()
             const int joint = h.slides[finger];
             const double q = d->data->qpos[d->model->jnt_qposadr[joint]];
             d->model->actuator_gear[6 * h.actuators[finger]] = h.geometry.arm(finger, q);
-            d->data->qfrc_applied[d->model->jnt_dofadr[joint]] = -h.geometry.spring(finger, q);
+            const int dof = d->model->jnt_dofadr[joint];
+            const double arm = h.geometry.arm(finger, q);
+            d->data->qfrc_applied[dof] =
+                -h.geometry.spring(finger, q) - h.padDamping * arm * arm * d->data->qvel[dof];
         }
     }
     const auto start = std::chrono::steady_clock::now();
@@ -988,7 +994,8 @@ double World::closingForce(Gripper gripper, double speed) const
     double force = 0.0;
     for (int finger = 0; finger < 2; ++finger) {
         const double arm = d->arm(h, finger);
-        force += m->dof_damping[m->jnt_dofadr[h.slides[finger]]] * speed / (arm * arm);
+        force += m->dof_damping[m->jnt_dofadr[h.slides[finger]]] * speed / (arm * arm) +
+                 h.padDamping * speed;
     }
     return force;
 }

@@ -462,6 +462,10 @@ void TestGrippers::badAdaptersAreRefused_data()
                           << "\"closing\""
                           << "\"closng\""
                           << "linkage.json: unknown key 'closng'";
+    QTest::newRow("collisions") << "linkage.json"
+                                << "\"closing\""
+                                << "\"collisions\": \"some\", \"closing\""
+                                << "linkage.json: /collisions: must be 'all'";
     QTest::newRow("force") << "linkage.json"
                            << "\"max\": 200"
                            << "\"max\": -1"
