@@ -13,6 +13,8 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <cmath>
+
 namespace semhap {
 
 namespace {
@@ -35,12 +37,17 @@ bool validateScene(const QString &path, QString *error, QString *what, QStringLi
     return true;
 }
 
+/** `value` to `decimals` places, without a negative zero. */
+QString fixed(double value, int decimals)
+{
+    const double scale = std::pow(10.0, decimals);
+    return QString::number(std::round(value * scale) / scale + 0.0, 'f', decimals);
+}
+
+/** `(x, y, z)` to the millimetre or thousandth. */
 QString vector(const std::array<double, 3> &v)
 {
-    return QStringLiteral("(%1, %2, %3)")
-        .arg(v[0], 0, 'f', 3)
-        .arg(v[1], 0, 'f', 3)
-        .arg(v[2], 0, 'f', 3);
+    return QStringLiteral("(%1, %2, %3)").arg(fixed(v[0], 3), fixed(v[1], 3), fixed(v[2], 3));
 }
 
 /**
@@ -66,18 +73,12 @@ bool validateGripper(const QString &path, QString *error, QString *what, QString
                 "axis %7, approach axis %8 (in the wrist's frame); pads %9 mm apart open, %10 mm "
                 "closed; pads' centre %11 mm below the wrist open, %12 mm closed; moment arm "
                 "%13 to %14 mm per unit of the finger joint; a full grasp touches %15 pad geoms")
-                .arg(scene, vector(mount.pos))
-                .arg(mount.quat[0], 0, 'f', 4)
-                .arg(mount.quat[1], 0, 'f', 4)
-                .arg(mount.quat[2], 0, 'f', 4)
-                .arg(mount.quat[3], 0, 'f', 4)
-                .arg(vector(g.closingAxis()), vector(g.approachAxis()))
-                .arg(g.openGap() * 1000, 0, 'f', 1)
-                .arg(g.closedGap() * 1000, 0, 'f', 1)
-                .arg(g.drop(g.openGap()) * 1000, 0, 'f', 1)
-                .arg(g.drop(g.closedGap()) * 1000, 0, 'f', 1)
-                .arg(arms[0] * 1000, 0, 'f', 1)
-                .arg(arms[1] * 1000, 0, 'f', 1)
+                .arg(scene, vector(mount.pos), fixed(mount.quat[0], 4), fixed(mount.quat[1], 4),
+                     fixed(mount.quat[2], 4), fixed(mount.quat[3], 4), vector(g.closingAxis()),
+                     vector(g.approachAxis()), fixed(g.openGap() * 1000, 1))
+                .arg(fixed(g.closedGap() * 1000, 1), fixed(g.drop(g.openGap()) * 1000, 1),
+                     fixed(g.drop(g.closedGap()) * 1000, 1), fixed(arms[0] * 1000, 1),
+                     fixed(arms[1] * 1000, 1))
                 .arg(world->fullContacts(Gripper::Right));
     return true;
 }

@@ -15,6 +15,7 @@ namespace {
 // The hold that shows ringing: this grip (N, both fingers), held this long, of which the
 // last part is read; a swing above RingingShare of the grip (or RingingFloor N) warns.
 constexpr double HoldGrip = 40.0;
+constexpr double OpeningGrip = -20.0;
 constexpr double HoldSeconds = 0.6;
 constexpr double ReadSeconds = 0.3;
 constexpr double RingingShare = 0.05;
@@ -178,6 +179,10 @@ void checkRinging(const World &world, const QString &scene, const GripperAdapter
     bool held = false;
     int heldSteps = 0;
     double low = 1e9, high = -1e9;
+    // Open first: a model may start closed (the Franka hand's fingers rest at 0).
+    hold->setGrip(hand, OpeningGrip);
+    for (int k = 0; k < steps; ++k)
+        hold->step();
     // Held where the pads will close on it until they do (it would fall meanwhile).
     for (int k = 0; k < 4 * steps && heldSteps < steps; ++k) {
         const ContactFrame &frame = hold->frame(hand);

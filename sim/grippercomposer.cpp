@@ -165,15 +165,9 @@ private:
     QHash<QString, Entry> m_classes;
 };
 
-/** Copies `element`'s subtree's geoms that collide into `out`, with their body's class. */
-struct ModelGeom
-{
-    MjcfElement *geom = nullptr;
-    QString cls;
-};
-
+/** Appends `body`'s own geoms that collide (its classes say how) to `out`. */
 void bodyGeoms(MjcfElement &body, const QString &inherited, const Defaults &defaults,
-               std::vector<ModelGeom> *out)
+               std::vector<MjcfElement *> *out)
 {
     const QString cls = body.has(QStringLiteral("childclass"))
                             ? body.attribute(QStringLiteral("childclass"))
@@ -189,7 +183,7 @@ void bodyGeoms(MjcfElement &body, const QString &inherited, const Defaults &defa
             return v.isEmpty() ? 1 : v.toInt();
         };
         if (value(QStringLiteral("contype")) != 0 || value(QStringLiteral("conaffinity")) != 0)
-            out->push_back({&child, own});
+            out->push_back(&child);
     }
 }
 
@@ -325,14 +319,14 @@ bool HandCopy::findPads(MjcfElement &root, const QString &rootClass, QString *er
     static const char *const sides[] = {"left", "right"};
     for (int side = 0; side < 2; ++side) {
         const GripperAdapter::Finger &finger = m_adapter.fingers[size_t(side)];
-        std::vector<ModelGeom> pads;
+        std::vector<MjcfElement *> pads;
         for (int i = 0; i < finger.pads.size(); ++i) {
             const QString &pad = finger.pads[i];
             QString cls = rootClass;
             MjcfElement *body = root.attribute(QStringLiteral("name")) == pad
                                     ? &root
                                     : findBody(root, pad, rootClass, &cls);
-            std::vector<ModelGeom> found;
+            std::vector<MjcfElement *> found;
             if (body) {
                 bodyGeoms(*body,
                           body->has(QStringLiteral("childclass"))
@@ -341,7 +335,7 @@ bool HandCopy::findPads(MjcfElement &root, const QString &rootClass, QString *er
                           classes, &found);
                 padBodies[size_t(side)].insert(pad);
             } else if (MjcfElement *geom = root.find(QStringLiteral("geom"), pad)) {
-                found.push_back({geom, QString()});
+                found.push_back(geom);
             }
             if (found.empty()) {
                 *error = QStringLiteral("%1: /fingers/%2/pads/%3: %4 has no %5 %6 below %7")
@@ -358,7 +352,7 @@ bool HandCopy::findPads(MjcfElement &root, const QString &rootClass, QString *er
         for (size_t k = 0; k < pads.size(); ++k) {
             const QString name =
                 QStringLiteral("%1.tip.%2.%3").arg(m_hand, QLatin1String(sides[side])).arg(k);
-            MjcfElement &geom = *pads[k].geom;
+            MjcfElement &geom = *pads[k];
             // semhap's objects set their own friction by contact priority (sim/README.md): a
             // pad with the same priority (the 2F-85's) would win the tie with its larger one.
             geom.setAttribute(QStringLiteral("priority"), QStringLiteral("0"));
@@ -502,12 +496,12 @@ void HandCopy::keepPadsColliding(MjcfElement &root, const QString &rootClass)
         const QString cls = body.has(QStringLiteral("childclass"))
                                 ? body.attribute(QStringLiteral("childclass"))
                                 : inherited;
-        std::vector<ModelGeom> colliding;
+        std::vector<MjcfElement *> colliding;
         bodyGeoms(body, cls, classes, &colliding);
-        for (const ModelGeom &g : colliding) {
-            if (!g.geom->attribute(QStringLiteral("name")).startsWith(tips)) {
-                g.geom->setAttribute(QStringLiteral("contype"), QStringLiteral("0"));
-                g.geom->setAttribute(QStringLiteral("conaffinity"), QStringLiteral("0"));
+        for (MjcfElement *geom : colliding) {
+            if (!geom->attribute(QStringLiteral("name")).startsWith(tips)) {
+                geom->setAttribute(QStringLiteral("contype"), QStringLiteral("0"));
+                geom->setAttribute(QStringLiteral("conaffinity"), QStringLiteral("0"));
             }
         }
         for (MjcfElement &child : body.children()) {
