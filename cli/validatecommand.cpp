@@ -4,6 +4,7 @@
 #include "devicemodel.h"
 #include "gripperadapter.h"
 #include "grippercheck.h"
+#include "gripperlibrary.h"
 #include "jsonreader.h"
 #include "pattern.h"
 #include "patternrender.h"
@@ -20,12 +21,19 @@ namespace semhap {
 namespace {
 
 // A scene is valid when MuJoCo compiles it and semhap finds its grippers (sim/README.md).
-bool validateScene(const QString &path, QString *error, QString *what, QStringList *warnings)
+bool validateScene(const QString &path, const QString &gripper, QString *error, QString *what,
+                   QStringList *warnings)
 {
-    std::unique_ptr<World> world = World::load(path, SceneOptions(), error);
+    SceneOptions options;
+    options.gripper = gripper;
+    std::unique_ptr<World> world = World::load(path, options, error);
     if (!world)
         return false;
-    *warnings = GripperCheck::warnings(*world, path, nullptr);
+    GripperAdapter adapter;
+    LoadError adapterError;
+    const bool adapted = !gripper.isEmpty() && GripperAdapter::read(GripperLibrary::find(gripper),
+                                                                    &adapter, &adapterError);
+    *warnings = GripperCheck::warnings(*world, path, adapted ? &adapter : nullptr);
     QStringList grippers;
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         if (world->hasGripper(g))
@@ -95,6 +103,9 @@ QString ValidateCommand::summary() const
 void ValidateCommand::configure(QCommandLineParser &parser)
 {
     parser.addPositionalArgument(QStringLiteral("files"), tr("Files to check."), tr("FILE..."));
+    parser.addOption({QStringLiteral("gripper"),
+                      tr("Check the scenes with this gripper adapter's model in their wrists."),
+                      tr("NAME|FILE")});
 }
 
 int ValidateCommand::execute(const QCommandLineParser &parser)
@@ -133,7 +144,8 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
         bool ok = false;
         if (doc.path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive)) {
             QString sceneError;
-            ok = validateScene(doc.path, &sceneError, &what, &warnings);
+            ok = validateScene(doc.path, parser.value(QStringLiteral("gripper")), &sceneError,
+                               &what, &warnings);
             if (!ok) {
                 report(sceneError);
                 ++invalid;

@@ -286,6 +286,18 @@ void TestCli::validate()
     QCOMPARE(bad.out.count('\n'), 1);
     QCOMPARE(bad.err.count('\n'), 2); // one line per broken file
 
+    // A scene with another gripper: valid, with what will not work well as warnings.
+    const QString linkage =
+        QStringLiteral(SEMHAP_RESOURCES "/../tests/grippers/linkage/linkage.json");
+    const Result adapted =
+        semhapRun({"validate", "--gripper", linkage,
+                   QStringLiteral(SEMHAP_RESOURCES "/scenes/box_and_block.xml")});
+    QCOMPARE(adapted.code, 0);
+    QCOMPARE(adapted.out.count('\n'), 1);
+    QVERIFY2(adapted.err.contains("box_and_block.xml: warning: gripper 'right': a full grasp "
+                                  "touches only 2 pad geoms"),
+             adapted.err.constData());
+
     // An old spelling is valid, with a located warning.
     const Result old = semhapRun({"validate", Data + "/old-spelling-router.json"});
     QCOMPARE(old.code, 0);
