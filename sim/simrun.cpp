@@ -21,6 +21,8 @@ QJsonObject RunOptions::toJson() const
                      {QStringLiteral("reaction_time"), reactionTime}};
     if (sceneOptions.cubes >= 0)
         json.insert(QStringLiteral("cubes"), sceneOptions.cubes);
+    if (!sceneOptions.gripper.isEmpty())
+        json.insert(QStringLiteral("gripper"), sceneOptions.gripper);
     return json;
 }
 
@@ -31,10 +33,12 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
     double seed = double(o.seed);
     double cubes = o.sceneOptions.cubes;
     if (!reader.checkKeys(json, pointer,
-                          {QLatin1String("scene"), QLatin1String("cubes"), QLatin1String("router"),
+                          {QLatin1String("scene"), QLatin1String("cubes"),
+                           QLatin1String("gripper"), QLatin1String("router"),
                            QLatin1String("overrides"), QLatin1String("operator"),
                            QLatin1String("seed"), QLatin1String("reaction_time")}) ||
         !reader.string(json, pointer, QLatin1String("scene"), &o.scene, false) ||
+        !reader.string(json, pointer, QLatin1String("gripper"), &o.sceneOptions.gripper, false) ||
         !reader.number(json, pointer, QLatin1String("cubes"), &cubes, false) ||
         !reader.string(json, pointer, QLatin1String("router"), &o.router, false) ||
         !reader.strings(json, pointer, QLatin1String("overrides"), &o.overrides, false) ||

@@ -27,12 +27,6 @@ namespace {
 const QString AddressesKey = QStringLiteral("devices/addresses");
 
 /**
- * The simulation's gripper adapter (SceneOptions::gripper) beside RunOptions' own JSON, which
- * does not hold it; left out for the scene's own.
- */
-constexpr QLatin1String GripperKey("gripper");
-
-/**
  * A router graph as the workspace keeps it: the document, and where it came from (its file
  * and the folder its relative pattern and model paths are resolved against).
  */
@@ -126,10 +120,7 @@ QJsonObject Workspace::toJson() const
                         {QStringLiteral("router"), rig.router},
                         {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}});
     } else if (run) {
-        QJsonObject simulation = engine.options().toJson();
-        if (const QString &gripper = engine.options().sceneOptions.gripper; !gripper.isEmpty())
-            simulation.insert(GripperKey, gripper);
-        json.insert(QStringLiteral("simulation"), simulation);
+        json.insert(QStringLiteral("simulation"), engine.options().toJson());
     }
     if (run && engine.isRunRouterEdited())
         json.insert(QStringLiteral("router"), graphEntry(engine.routerGraph()));
@@ -246,11 +237,6 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
     } else if (!simulation.isEmpty()) {
         const QString at = QStringLiteral("/simulation");
         RunOptions run = options.run;
-        if (!reader.string(simulation, at, GripperKey, &run.sceneOptions.gripper, false)) {
-            problems->append(reader.error().toString());
-            return;
-        }
-        simulation.remove(GripperKey);
         if (!RunOptions::fromJson(reader, simulation, at, &run)) {
             problems->append(reader.error().toString());
             return;
