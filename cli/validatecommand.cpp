@@ -9,6 +9,7 @@
 #include "pattern.h"
 #include "patternrender.h"
 #include "router.h"
+#include "studyprotocol.h"
 #include "world.h"
 
 #include <QFile>
@@ -189,6 +190,18 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 ++invalid;
                 continue;
             }
+        } else if (format == QLatin1String(StudyProtocol::Format)) {
+            StudyProtocol protocol;
+            ok = StudyProtocol::read(doc.path, &protocol, &error);
+            if (ok) {
+                const size_t orders = protocol.order().rows().size();
+                what = tr("study protocol '%1' (%2 conditions; %3)")
+                           .arg(protocol.name)
+                           .arg(protocol.conditions.size())
+                           .arg(orders > 0
+                                    ? tr("%1 orders, participants take them in turn").arg(orders)
+                                    : tr("a seeded random order per participant"));
+            }
         } else if (format == QLatin1String(DeviceModel::Format)) {
             DeviceModelPtr model = DeviceModel::fromJson(doc.json, doc.path, &error);
             ok = model != nullptr;
@@ -196,11 +209,12 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 what = tr("device model '%1'").arg(model->name());
         } else {
             error = LoadError::at(doc.path, QStringLiteral("/format"),
-                                  tr("unknown format '%1' (expected %2, %3, %4 or %5)")
+                                  tr("unknown format '%1' (expected %2, %3, %4, %5 or %6)")
                                       .arg(format, QLatin1String(Pattern::Format),
                                            QLatin1String(RouterGraph::Format),
                                            QLatin1String(DeviceModel::Format),
-                                           QLatin1String(GripperAdapter::Format)));
+                                           QLatin1String(GripperAdapter::Format),
+                                           QLatin1String(StudyProtocol::Format)));
         }
         for (const QString &warning : warnings)
             report(tr("%1: warning: %2").arg(doc.path, warning));

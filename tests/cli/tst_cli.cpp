@@ -270,7 +270,7 @@ void TestCli::renderToFile()
 void TestCli::validate()
 {
     QStringList files;
-    for (const char *dir : {"routers", "patterns", "devices", "scenes"}) {
+    for (const char *dir : {"routers", "patterns", "devices", "scenes", "studies"}) {
         const QDir d(QString(SEMHAP_RESOURCES "/") + dir);
         for (const QString &f : d.entryList({"*.json", "*.xml"}))
             files.append(d.filePath(f));

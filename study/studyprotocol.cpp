@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+#include "studyprotocol.h"
+
+#include "jsonreader.h"
+#include "router.h"
+#include "world.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+constexpr int MaxConditions = 16;
+constexpr int MaxTrials = 20;
+constexpr int MaxTransfers = 1000;
+constexpr int MaxQuestions = 100;
+
+/** A number at `key` (when present) within [low, high]; a whole one when `whole`. */
+bool bounded(JsonReader &reader, const QJsonObject &object, const QString &pointer,
+             QLatin1String key, double low, double high, bool whole, double *out)
+{
+    if (!object.contains(key))
+        return true;
+    if (!reader.number(object, pointer, key, out))
+        return false;
+    if (*out < low || *out > high || (whole && *out != std::floor(*out)))
+        return reader.fail(pointer + QLatin1Char('/') + key,
+                           QStringLiteral("must be %1from %2 to %3, got %4")
+                               .arg(whole ? QStringLiteral("a whole number ") : QString())
+                               .arg(low)
+                               .arg(high)
+                               .arg(*out));
+    return true;
+}
+
+bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &pointer,
+                   QLatin1String key, const std::vector<StudyProtocol::Condition> &conditions,
+                   std::vector<StudyProtocol::Question> *out)
+{
+    QJsonArray items;
+    if (!reader.array(json, pointer, key, &items, false))
+        return false;
+    const QString at = pointer + QLatin1Char('/') + key;
+    if (items.size() > MaxQuestions)
+        return reader.fail(at, QStringLiteral("at most %1 items").arg(MaxQuestions));
+    for (int i = 0; i < items.size(); ++i) {
+        const QString item = jsonPointerChild(at, i);
+        if (!items[i].isObject())
+            return reader.fail(item, QStringLiteral("must be an object"));
+        const QJsonObject q = items[i].toObject();
+        StudyProtocol::Question question;
+        QString type;
+        double points = 7;
+        if (!reader.checkKeys(q, item,
+                              {QLatin1String("type"), QLatin1String("id"), QLatin1String("text"),
+                               QLatin1String("anchors"), QLatin1String("points"),
+                               QLatin1String("conditions")}) ||
+            !reader.string(q, item, QLatin1String("type"), &type) ||
+            !reader.string(q, item, QLatin1String("id"), &question.id, false) ||
+            !reader.string(q, item, QLatin1String("text"), &question.text, false) ||
+            !reader.strings(q, item, QLatin1String("anchors"), &question.anchors, false) ||
+            !bounded(reader, q, item, QLatin1String("points"), 2, 11, true, &points) ||
+            !reader.strings(q, item, QLatin1String("conditions"), &question.ranked, false))
+            return false;
+        question.points = int(points);
+        if (type == QLatin1String("nasa_tlx")) {
+            question.kind = StudyProtocol::Question::Kind::NasaTlx;
+            question.id = QStringLiteral("tlx");
+        } else if (type == QLatin1String("likert")) {
+            question.kind = StudyProtocol::Question::Kind::Likert;
+            if (question.id.isEmpty() || question.text.isEmpty())
+                return reader.fail(item, QStringLiteral("a likert item needs an id and a text"));
+            if (question.anchors.size() != 2)
+                return reader.fail(item + QStringLiteral("/anchors"),
+                                   QStringLiteral("must name the scale's two ends, got %1")
+                                       .arg(question.anchors.size()));
+        } else if (type == QLatin1String("ranking")) {
+            question.kind = StudyProtocol::Question::Kind::Ranking;
+            if (question.id.isEmpty())
+                question.id = QStringLiteral("rank");
+            if (question.ranked.isEmpty())
+                for (const StudyProtocol::Condition &c : conditions)
+                    question.ranked.append(c.id);
+            for (const StudyProtocol::Condition &c : conditions) {
+                if (question.ranked.count(c.id) != 1)
+                    return reader.fail(
+                        item + QStringLiteral("/conditions"),
+                        question.ranked.contains(c.id)
+                            ? QStringLiteral("names condition %1 twice").arg(quoted(c.id))
+                            : QStringLiteral("leaves out condition %1").arg(quoted(c.id)));
+            }
+            if (question.ranked.size() != int(conditions.size()))
+                return reader.fail(item + QStringLiteral("/conditions"),
+                                   QStringLiteral("names a condition the protocol does not have"));
+        } else if (type == QLatin1String("notes")) {
+            question.kind = StudyProtocol::Question::Kind::Notes;
+            if (question.id.isEmpty())
+                question.id = QStringLiteral("notes");
+        } else {
+            return reader.fail(item + QStringLiteral("/type"),
+                               QStringLiteral("must be nasa_tlx, likert, ranking or notes, got %1")
+                                   .arg(quoted(type)));
+        }
+        out->push_back(question);
+    }
+    return true;
+}
+
+} // namespace
+
+bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *error)
+{
+    QJsonObject json;
+    if (!readJsonObjectFile(path, &json, error) ||
+        !checkFormat(json, path, QLatin1String(Format), error))
+        return false;
+    JsonReader reader(path);
+    StudyProtocol p;
+    p.file = path;
+    const QDir folder = QFileInfo(path).absoluteDir();
+    QJsonObject options, order, practice, trials, questionnaires;
+    QJsonArray conditions;
+    QString scheme = QStringLiteral("latin");
+    double cubes = -1, seed = 1, transfers = 0, count = p.trials;
+    bool ok =
+        reader.checkKeys(json, QString(),
+                         {QLatin1String("format"), QLatin1String("name"), QLatin1String("scene"),
+                          QLatin1String("options"), QLatin1String("conditions"),
+                          QLatin1String("order"), QLatin1String("practice"),
+                          QLatin1String("trials"), QLatin1String("questionnaires")}) &&
+        reader.nonEmptyString(json, QString(), QLatin1String("name"), &p.name) &&
+        reader.nonEmptyString(json, QString(), QLatin1String("scene"), &p.scene) &&
+        reader.object(json, QString(), QLatin1String("options"), &options, false) &&
+        reader.checkKeys(options, QStringLiteral("/options"),
+                         {QLatin1String("cubes"), QLatin1String("gripper")}) &&
+        bounded(reader, options, QStringLiteral("/options"), QLatin1String("cubes"), 0, 24, true,
+                &cubes) &&
+        reader.string(options, QStringLiteral("/options"), QLatin1String("gripper"),
+                      &p.sceneOptions.gripper, false) &&
+        reader.array(json, QString(), QLatin1String("conditions"), &conditions) &&
+        reader.object(json, QString(), QLatin1String("order"), &order, false) &&
+        reader.checkKeys(order, QStringLiteral("/order"),
+                         {QLatin1String("scheme"), QLatin1String("seed")}) &&
+        reader.string(order, QStringLiteral("/order"), QLatin1String("scheme"), &scheme, false) &&
+        bounded(reader, order, QStringLiteral("/order"), QLatin1String("seed"), 0, 1e15, true,
+                &seed) &&
+        reader.object(json, QString(), QLatin1String("practice"), &practice, false) &&
+        reader.checkKeys(practice, QStringLiteral("/practice"),
+                         {QLatin1String("transfers"), QLatin1String("seconds")}) &&
+        bounded(reader, practice, QStringLiteral("/practice"), QLatin1String("transfers"), 0,
+                MaxTransfers, true, &transfers) &&
+        bounded(reader, practice, QStringLiteral("/practice"), QLatin1String("seconds"), 0,
+                MaxSeconds, false, &p.practiceSeconds) &&
+        reader.object(json, QString(), QLatin1String("trials"), &trials) &&
+        reader.checkKeys(
+            trials, QStringLiteral("/trials"),
+            {QLatin1String("count"), QLatin1String("seconds"), QLatin1String("break")}) &&
+        bounded(reader, trials, QStringLiteral("/trials"), QLatin1String("count"), 1, MaxTrials,
+                true, &count) &&
+        reader.require(trials, QStringLiteral("/trials"), QLatin1String("seconds")) &&
+        bounded(reader, trials, QStringLiteral("/trials"), QLatin1String("seconds"), 1, MaxSeconds,
+                false, &p.trialSeconds) &&
+        bounded(reader, trials, QStringLiteral("/trials"), QLatin1String("break"), 0, MaxSeconds,
+                false, &p.breakSeconds);
+    p.sceneOptions.cubes = int(cubes);
+    p.seed = std::uint64_t(seed);
+    p.practiceTransfers = int(transfers);
+    p.trials = int(count);
+    // The scene: a bundled one, or a file beside the protocol.
+    if (ok && !World::builtinScenes().contains(p.scene)) {
+        const QString file = folder.absoluteFilePath(p.scene);
+        if (!QFileInfo(file).isFile())
+            ok = reader.fail(
+                QStringLiteral("/scene"),
+                QStringLiteral("no bundled scene %1 (%2) and no such file")
+                    .arg(quoted(p.scene), World::builtinScenes().join(QStringLiteral(", "))));
+        p.scene = file;
+    }
+    if (ok && (conditions.isEmpty() || conditions.size() > MaxConditions))
+        ok = reader.fail(QStringLiteral("/conditions"),
+                         QStringLiteral("must list 1 to %1 conditions").arg(MaxConditions));
+    static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
+    for (int i = 0; ok && i < conditions.size(); ++i) {
+        const QString at = jsonPointerChild(QStringLiteral("/conditions"), i);
+        if (!conditions[i].isObject()) {
+            ok = reader.fail(at, QStringLiteral("must be an object"));
+            break;
+        }
+        const QJsonObject c = conditions[i].toObject();
+        Condition condition;
+        ok = reader.checkKeys(
+                 c, at, {QLatin1String("id"), QLatin1String("label"), QLatin1String("router")}) &&
+             reader.nonEmptyString(c, at, QLatin1String("id"), &condition.id) &&
+             reader.nonEmptyString(c, at, QLatin1String("label"), &condition.label) &&
+             reader.nonEmptyString(c, at, QLatin1String("router"), &condition.router);
+        if (!ok)
+            break;
+        if (!idPattern.match(condition.id).hasMatch()) {
+            ok = reader.fail(at + QStringLiteral("/id"),
+                             QStringLiteral("must be 1 to 32 of A-Z a-z 0-9 _ . -"));
+            break;
+        }
+        for (const Condition &other : p.conditions) {
+            if (other.id == condition.id)
+                ok = reader.fail(
+                    at + QStringLiteral("/id"),
+                    QStringLiteral("%1 is already a condition").arg(quoted(condition.id)));
+        }
+        // A router file is the protocol's neighbour; a preset is a name.
+        if (condition.router.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
+            condition.router = folder.absoluteFilePath(condition.router);
+        LoadError routerError;
+        if (ok && !loadRouter(condition.router, {}, &routerError)) {
+            ok = reader.fail(at + QStringLiteral("/router"), routerError.toString());
+            break;
+        }
+        p.conditions.push_back(condition);
+    }
+    if (ok) {
+        if (scheme == QLatin1String("williams"))
+            p.scheme = ConditionOrder::Scheme::Williams;
+        else if (scheme == QLatin1String("latin"))
+            p.scheme = ConditionOrder::Scheme::Latin;
+        else if (scheme == QLatin1String("random"))
+            p.scheme = ConditionOrder::Scheme::Random;
+        else
+            ok = reader.fail(
+                QStringLiteral("/order/scheme"),
+                QStringLiteral("must be williams, latin or random, got %1").arg(quoted(scheme)));
+        if (ok && !ConditionOrder::accepts(p.scheme, int(p.conditions.size())))
+            ok = reader.fail(QStringLiteral("/order/scheme"),
+                             QStringLiteral("a Williams design needs an even number of "
+                                            "conditions, the protocol has %1: use 'latin' (the "
+                                            "design and its mirror, %2 orders)")
+                                 .arg(p.conditions.size())
+                                 .arg(2 * p.conditions.size()));
+    }
+    ok = ok &&
+         reader.object(json, QString(), QLatin1String("questionnaires"), &questionnaires, false) &&
+         reader.checkKeys(questionnaires, QStringLiteral("/questionnaires"),
+                          {QLatin1String("afterCondition"), QLatin1String("atTheEnd")}) &&
+         readQuestions(reader, questionnaires, QStringLiteral("/questionnaires"),
+                       QLatin1String("afterCondition"), p.conditions, &p.afterCondition) &&
+         readQuestions(reader, questionnaires, QStringLiteral("/questionnaires"),
+                       QLatin1String("atTheEnd"), p.conditions, &p.atTheEnd);
+    if (!ok || reader.error().isSet()) {
+        *error = reader.error();
+        return false;
+    }
+    *out = p;
+    return true;
+}
+
+} // namespace semhap
