@@ -35,6 +35,30 @@ double exactLowerTail(int n, double w)
 
 } // namespace
 
+/**
+ * The ranks of `values` from 1, tied values sharing their mid-rank; `ties` gets the sum of
+ * t^3 - t over the groups of t tied values (what tie corrections subtract).
+ */
+std::vector<double> midRanks(const std::vector<double> &values, double *ties)
+{
+    std::vector<size_t> order(values.size());
+    gsl_sort_index(order.data(), values.data(), 1, values.size());
+    std::vector<double> ranks(values.size());
+    *ties = 0.0;
+    for (size_t i = 0; i < order.size();) {
+        size_t j = i;
+        while (j + 1 < order.size() && values[order[j + 1]] == values[order[i]])
+            ++j;
+        const double midRank = (double(i) + double(j)) / 2.0 + 1.0;
+        for (size_t k = i; k <= j; ++k)
+            ranks[order[k]] = midRank;
+        const double t = double(j - i + 1);
+        *ties += t * t * t - t;
+        i = j + 1;
+    }
+    return ranks;
+}
+
 SignedRankTest signedRankTest(const std::vector<double> &differences)
 {
     SignedRankTest test;
@@ -52,21 +76,8 @@ SignedRankTest signedRankTest(const std::vector<double> &differences)
         return test;
 
     // Mid-ranks of the magnitudes, and the tie groups' sizes for the variance.
-    std::vector<size_t> order(magnitudes.size());
-    gsl_sort_index(order.data(), magnitudes.data(), 1, magnitudes.size());
-    std::vector<double> ranks(magnitudes.size());
     double tieCorrection = 0.0;
-    for (size_t i = 0; i < order.size();) {
-        size_t j = i;
-        while (j + 1 < order.size() && magnitudes[order[j + 1]] == magnitudes[order[i]])
-            ++j;
-        const double midRank = (double(i) + double(j)) / 2.0 + 1.0;
-        for (size_t k = i; k <= j; ++k)
-            ranks[order[k]] = midRank;
-        const double t = double(j - i + 1);
-        tieCorrection += t * t * t - t;
-        i = j + 1;
-    }
+    const std::vector<double> ranks = midRanks(magnitudes, &tieCorrection);
     for (size_t index : positive)
         test.w += ranks[index];
 
@@ -127,6 +138,41 @@ PairedComparison comparePaired(const std::vector<double> &baseline,
     comparison.interval = bootstrapMeanInterval(differences);
     comparison.test = signedRankTest(differences);
     return comparison;
+}
+
+FriedmanTest friedmanTest(const std::vector<std::vector<double>> &rows)
+{
+    FriedmanTest test;
+    test.n = int(rows.size());
+    test.k = rows.empty() ? 0 : int(rows.front().size());
+    const auto complete = [&](const std::vector<double> &row) {
+        return int(row.size()) == test.k &&
+               std::none_of(row.begin(), row.end(), [](double v) { return std::isnan(v); });
+    };
+    if (test.n < 2 || test.k < 2 || !std::all_of(rows.begin(), rows.end(), complete))
+        return test;
+    // Ranks within each subject; the conditions' rank sums against what chance gives.
+    std::vector<double> sums(size_t(test.k), 0.0);
+    double ties = 0.0;
+    for (const std::vector<double> &row : rows) {
+        double rowTies = 0.0;
+        const std::vector<double> ranks = midRanks(row, &rowTies);
+        ties += rowTies;
+        for (size_t j = 0; j < ranks.size(); ++j)
+            sums[j] += ranks[j];
+    }
+    const double n = test.n, k = test.k;
+    double spread = 0.0;
+    for (double sum : sums)
+        spread += (sum - n * (k + 1) / 2) * (sum - n * (k + 1) / 2);
+    const double denominator = n * k * (k + 1) - ties / (k - 1);
+    if (denominator <= 0.0) // every subject ranked every condition alike: nothing to test
+        return test;
+    test.df = test.k - 1;
+    test.chiSquared = 12.0 * spread / denominator;
+    test.p = gsl_cdf_chisq_Q(test.chiSquared, double(test.df));
+    test.kendallW = test.chiSquared / (n * (k - 1));
+    return test;
 }
 
 Summary summarise(const std::vector<double> &values)

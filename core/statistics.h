@@ -58,6 +58,25 @@ struct PairedComparison
 PairedComparison comparePaired(const std::vector<double> &baseline,
                                const std::vector<double> &other);
 
+/** Friedman's rank test of k conditions measured on the same n subjects, and Kendall's W. */
+struct FriedmanTest
+{
+    int n = 0;               ///< subjects
+    int k = 0;               ///< conditions
+    int df = 0;              ///< k - 1; 0 when there was nothing to test
+    double chiSquared = 0.0; ///< the statistic, tie-corrected
+    double p = 1.0;          ///< from the chi-squared distribution with df degrees of freedom
+    double kendallW = 0.0;   ///< chiSquared / (n (k - 1)): 0 no agreement, 1 complete
+};
+
+/**
+ * Friedman's test of `rows` (one per subject, one value per condition, all complete):
+ * ranks within each subject (mid-ranks on ties), the statistic with the tie correction R's
+ * friedman.test applies, its chi-squared p, and Kendall's coefficient of concordance W from
+ * it. Fewer than 2 subjects or conditions, a NaN or a short row: nothing tested (p = 1).
+ */
+FriedmanTest friedmanTest(const std::vector<std::vector<double>> &rows);
+
 /** The mean of the values that are not NaN, and their sample standard deviation. */
 struct Summary
 {

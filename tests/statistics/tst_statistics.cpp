@@ -45,6 +45,8 @@ class TestStatistics : public QObject
     Q_OBJECT
 
 private slots:
+    void friedmanAsR();
+    void friedmanAgreement();
     void exactSignedRank_data();
     void exactSignedRank();
     void normalApproximationWithTies();
@@ -179,6 +181,40 @@ void TestStatistics::pairsBySeed()
     QCOMPARE(none.pairs, 0);
     QVERIFY(std::isnan(none.meanDifference));
     QCOMPARE(none.test.p, 1.0);
+}
+
+void TestStatistics::friedmanAsR()
+{
+    // R's friedman.test example (Hollander & Wolfe's rounding first base, 22 players x 3
+    // methods): Friedman chi-squared = 11.143, df = 2, p-value = 0.003805; ties in 9 rows.
+    const std::vector<double> times{
+        5.40, 5.50, 5.55, 5.85, 5.70, 5.75, 5.20, 5.60, 5.50, 5.55, 5.50, 5.40, 5.90, 5.85,
+        5.70, 5.45, 5.55, 5.60, 5.40, 5.40, 5.35, 5.45, 5.50, 5.35, 5.25, 5.15, 5.00, 5.85,
+        5.80, 5.70, 5.25, 5.20, 5.10, 5.65, 5.55, 5.45, 5.60, 5.35, 5.45, 5.05, 5.00, 4.95,
+        5.50, 5.50, 5.40, 5.45, 5.55, 5.50, 5.55, 5.55, 5.35, 5.45, 5.50, 5.55, 5.50, 5.45,
+        5.25, 5.65, 5.60, 5.40, 5.70, 5.65, 5.55, 6.30, 6.30, 6.25};
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < times.size(); i += 3)
+        rows.push_back({times[i], times[i + 1], times[i + 2]});
+    const FriedmanTest test = friedmanTest(rows);
+    QCOMPARE(test.n, 22);
+    QCOMPARE(test.df, 2);
+    QCOMPARE(qRound(test.chiSquared * 1000), 11143);
+    QCOMPARE(qRound(test.p * 1e6), 3805);
+    // W = chi-squared / (n (k - 1)) = 11.1429 / 44.
+    QVERIFY(std::abs(test.kendallW - 0.253247) < 1e-6);
+}
+
+void TestStatistics::friedmanAgreement()
+{
+    // Every subject ranks the conditions alike: W = 1, chi-squared = n (k - 1).
+    const FriedmanTest same = friedmanTest({{1, 2, 3, 4}, {10, 20, 30, 40}, {0, 5, 6, 9}});
+    QCOMPARE(same.chiSquared, 9.0);
+    QCOMPARE(same.kendallW, 1.0);
+    // Nothing to test: one subject, a missing value, every value tied.
+    QCOMPARE(friedmanTest({{1, 2, 3}}).df, 0);
+    QCOMPARE(friedmanTest({{1, 2, 3}, {1, qQNaN(), 3}}).p, 1.0);
+    QCOMPARE(friedmanTest({{1, 1}, {2, 2}}).df, 0);
 }
 
 void TestStatistics::summary()
