@@ -73,6 +73,37 @@ QString copyGripper(const QString &name, const QTemporaryDir &dir)
     return dir.filePath(name + QLatin1Char('/') + name + QStringLiteral(".json"));
 }
 
+/**
+ * Writes `source`'s text to `target` (the same file or another) with each of the
+ * `|`-separated texts of `from` replaced by its counterpart in `to`; false with the text it
+ * did not find, or the file it could not read or write, in `missing`.
+ */
+bool edit(const QString &source, const QString &target, const QString &from, const QString &to,
+          QString *missing)
+{
+    QFile in(source);
+    if (!in.open(QIODevice::ReadOnly)) {
+        *missing = source;
+        return false;
+    }
+    QString text = QString::fromUtf8(in.readAll());
+    in.close();
+    const QStringList froms = from.split('|'), tos = to.split('|');
+    for (int i = 0; i < froms.size(); ++i) {
+        if (!text.contains(froms[i])) {
+            *missing = froms[i];
+            return false;
+        }
+        text.replace(froms[i], tos.value(i));
+    }
+    QFile out(target);
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate) || out.write(text.toUtf8()) < 0) {
+        *missing = target;
+        return false;
+    }
+    return true;
+}
+
 std::unique_ptr<World> load(const QString &gripper, int cubes = -1)
 {
     SceneOptions options;
@@ -379,29 +410,15 @@ void TestGrippers::validateWarns()
     QTemporaryDir dir;
     QString path = scene;
     QString adapterPath;
+    QString missing;
     if (gripper.isEmpty() && !from.isEmpty()) {
-        QFile bundled(QStringLiteral(SEMHAP_RESOURCES "/scenes/") + scene + ".xml");
-        QVERIFY(bundled.open(QIODevice::ReadOnly));
-        QString text = QString::fromUtf8(bundled.readAll());
-        const QStringList froms = from.split('|'), tos = to.split('|');
-        for (int i = 0; i < froms.size(); ++i) {
-            QVERIFY2(text.contains(froms[i]), qPrintable(froms[i]));
-            text.replace(froms[i], tos[i]);
-        }
         path = dir.filePath(scene + ".xml");
-        QFile edited(path);
-        QVERIFY(edited.open(QIODevice::WriteOnly));
-        edited.write(text.toUtf8());
+        QVERIFY2(edit(QStringLiteral(SEMHAP_RESOURCES "/scenes/") + scene + ".xml", path, from, to,
+                      &missing),
+                 qPrintable(missing));
     } else if (!gripper.isEmpty()) {
         adapterPath = copyGripper(gripper, dir);
-        QFile edited(adapterPath);
-        QVERIFY(edited.open(QIODevice::ReadOnly));
-        QString text = QString::fromUtf8(edited.readAll());
-        edited.close();
-        QVERIFY2(text.contains(from), qPrintable(from));
-        text.replace(from, to);
-        QVERIFY(edited.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        edited.write(text.toUtf8());
+        QVERIFY2(edit(adapterPath, adapterPath, from, to, &missing), qPrintable(missing));
     }
     SceneOptions options;
     options.gripper = adapterPath;
@@ -484,15 +501,9 @@ void TestGrippers::badAdaptersAreRefused()
     QFETCH(QString, error);
     QTemporaryDir dir;
     const QString adapter = copyGripper(QStringLiteral("linkage"), dir);
-    {
-        QFile edited(QFileInfo(adapter).absoluteDir().filePath(file));
-        QVERIFY(edited.open(QIODevice::ReadOnly));
-        QString text = QString::fromUtf8(edited.readAll());
-        edited.close();
-        text.replace(from, to);
-        QVERIFY(edited.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        edited.write(text.toUtf8());
-    }
+    const QString edited = QFileInfo(adapter).absoluteDir().filePath(file);
+    QString missing;
+    QVERIFY2(edit(edited, edited, from, to, &missing), qPrintable(missing));
     SceneOptions options;
     options.gripper = adapter;
     QString message;
