@@ -52,26 +52,13 @@ bool excluded(const mjModel *m, int b1, int b2)
     return false;
 }
 
-/** The geoms of `gripper`'s fingertip `side` (0 left, 1 right). */
-std::vector<int> tipGeoms(const mjModel *m, Gripper gripper, int side)
-{
-    const QString prefix = gripperName(gripper) + (side == 0 ? QStringLiteral(".tip.left.")
-                                                             : QStringLiteral(".tip.right."));
-    std::vector<int> geoms;
-    for (int g = 0; g < m->ngeom; ++g) {
-        if (name(m, mjOBJ_GEOM, g).startsWith(prefix))
-            geoms.push_back(g);
-    }
-    return geoms;
-}
-
-void checkFingersCollide(const mjModel *m, Gripper hand, QStringList *out)
+void checkFingersCollide(const World &world, const mjModel *m, Gripper hand, QStringList *out)
 {
     // Every geom of the bodies that carry the fingertips, not only the pads: a finger's
     // link can meet the other finger too.
     std::array<std::vector<int>, 2> bodies;
     for (int side = 0; side < 2; ++side) {
-        for (int g : tipGeoms(m, hand, side)) {
+        for (int g : world.fingertipGeoms(hand, side)) {
             if (std::find(bodies[size_t(side)].begin(), bodies[size_t(side)].end(),
                           m->geom_bodyid[g]) == bodies[size_t(side)].end())
                 bodies[size_t(side)].push_back(m->geom_bodyid[g]);
@@ -110,7 +97,7 @@ void checkPadPriority(const World &world, const mjModel *m, Gripper hand, QStrin
             if (m->geom_bodyid[g] != object.body || m->geom_priority[g] == 0)
                 continue;
             for (int side = 0; side < 2; ++side) {
-                for (int pad : tipGeoms(m, hand, side)) {
+                for (int pad : world.fingertipGeoms(hand, side)) {
                     const int pp = m->geom_priority[pad], op = m->geom_priority[g];
                     const double pf = m->geom_friction[3 * pad], of = m->geom_friction[3 * g];
                     if ((pp > op && pf != of) || (pp == op && pf > of)) {
@@ -244,7 +231,7 @@ QStringList GripperCheck::warnings(const World &world, const QString &scene,
         const GripperGeometry &geometry = world.gripperGeometry(hand);
         const QString who = QStringLiteral("gripper '%1': ").arg(gripperName(hand));
         QStringList found;
-        checkFingersCollide(m, hand, &found);
+        checkFingersCollide(world, m, hand, &found);
         checkPadPriority(world, m, hand, &found);
         const auto &y = geometry.closingAxis();
         const auto &z = geometry.approachAxis();

@@ -369,12 +369,8 @@ std::unique_ptr<World> World::Private::assemble(MjModelPtr model, const QString 
         Private::Hand &h = p.hands[size_t(g)];
         if (!h.present)
             continue;
-        std::array<std::vector<int>, 2> pads;
-        for (int geom = 0; geom < m->ngeom; ++geom) {
-            const int tip = p.tipOfGeom[size_t(geom)];
-            if (tip >= 0 && tip / 2 == int(g))
-                pads[size_t(tip % 2)].push_back(geom);
-        }
+        const std::array<std::vector<int>, 2> pads{world->fingertipGeoms(g, 0),
+                                                   world->fingertipGeoms(g, 1)};
         QString reason;
         // A gripper without fingertips touches nothing (a scene testing other things): no
         // geometry to measure.
@@ -1020,6 +1016,17 @@ double World::padDrop(Gripper gripper, double gap) const
 double World::padReach(Gripper gripper, double gap) const
 {
     return d->hands[size_t(gripper)].geometry.reach(gap);
+}
+
+std::vector<int> World::fingertipGeoms(Gripper gripper, int finger) const
+{
+    std::vector<int> geoms;
+    const int tip = int(gripper) * 2 + finger;
+    for (size_t geom = 0; geom < d->tipOfGeom.size(); ++geom) {
+        if (d->tipOfGeom[geom] == tip)
+            geoms.push_back(int(geom));
+    }
+    return geoms;
 }
 
 GripperTraits World::gripperTraits(Gripper gripper) const

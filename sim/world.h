@@ -118,6 +118,8 @@ public:
      * contact count measured, and the force ripple, each unless its adapter states it.
      */
     GripperTraits gripperTraits(Gripper gripper) const;
+    /** The geoms of fingertip `finger` (0 left, 1 right) of `gripper`: its pads, MuJoCo ids. */
+    std::vector<int> fingertipGeoms(Gripper gripper, int finger) const;
     /** What the gripper's fingers do as they close, measured at load (GripperGeometry). */
     const GripperGeometry &gripperGeometry(Gripper gripper) const;
     /**
