@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "studyprotocol.h"
 
+#include "inputfile.h"
 #include "jsonreader.h"
 #include "router.h"
 #include "world.h"
@@ -9,6 +10,7 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <cmath>
 
 namespace semhap {
@@ -81,6 +83,10 @@ bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &p
                                        .arg(question.anchors.size()));
         } else if (type == QLatin1String("ranking")) {
             question.kind = StudyProtocol::Question::Kind::Ranking;
+            if (key != QLatin1String("atTheEnd"))
+                return reader.fail(item + QStringLiteral("/type"),
+                                   QStringLiteral("a ranking of the conditions belongs in "
+                                                  "atTheEnd, once they are all done"));
             if (question.id.isEmpty())
                 question.id = QStringLiteral("rank");
             if (question.ranked.isEmpty())
@@ -111,20 +117,178 @@ bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &p
     return true;
 }
 
+/** The protocol's `factors`: 1 or 2, each with 2–8 distinct levels. */
+bool readFactors(JsonReader &reader, const QJsonArray &factors,
+                 std::vector<StudyProtocol::Factor> *out)
+{
+    const QString at = QStringLiteral("/factors");
+    if (factors.size() > 2)
+        return reader.fail(at, QStringLiteral("at most 2 factors (a two-way design), got %1")
+                                   .arg(factors.size()));
+    for (int i = 0; i < factors.size(); ++i) {
+        const QString item = jsonPointerChild(at, i);
+        if (!factors[i].isObject())
+            return reader.fail(item, QStringLiteral("must be an object"));
+        const QJsonObject f = factors[i].toObject();
+        StudyProtocol::Factor factor;
+        if (!reader.checkKeys(f, item, {QLatin1String("id"), QLatin1String("levels")}) ||
+            !reader.nonEmptyString(f, item, QLatin1String("id"), &factor.id) ||
+            !reader.strings(f, item, QLatin1String("levels"), &factor.levels))
+            return false;
+        if (factor.levels.size() < 2 || factor.levels.size() > 8)
+            return reader.fail(item + QStringLiteral("/levels"),
+                               QStringLiteral("must list 2 to 8 levels, got %1")
+                                   .arg(factor.levels.size()));
+        if (factor.levels.removeDuplicates() > 0)
+            return reader.fail(item + QStringLiteral("/levels"),
+                               QStringLiteral("names a level twice"));
+        for (const StudyProtocol::Factor &other : *out) {
+            if (other.id == factor.id)
+                return reader.fail(item + QStringLiteral("/id"),
+                                   QStringLiteral("%1 is already a factor").arg(quoted(factor.id)));
+        }
+        out->push_back(factor);
+    }
+    return true;
+}
+
+/** A condition's `levels`: one of each factor's, for every factor. */
+bool readLevels(JsonReader &reader, const QJsonObject &condition, const QString &at,
+                const std::vector<StudyProtocol::Factor> &factors, QStringList *out)
+{
+    QJsonObject levels;
+    if (!reader.object(condition, at, QLatin1String("levels"), &levels, !factors.empty()))
+        return false;
+    const QString pointer = at + QStringLiteral("/levels");
+    if (factors.empty()) {
+        if (condition.contains(QLatin1String("levels")))
+            return reader.fail(pointer, QStringLiteral("the protocol declares no factors"));
+        return true;
+    }
+    for (auto it = levels.begin(); it != levels.end(); ++it) {
+        const bool known = std::any_of(factors.begin(), factors.end(),
+                                       [&](const StudyProtocol::Factor &f) { return f.id == it.key(); });
+        if (!known)
+            return reader.fail(jsonPointerChild(pointer, it.key()),
+                               QStringLiteral("no such factor"));
+    }
+    for (const StudyProtocol::Factor &factor : factors) {
+        QString level;
+        if (!reader.nonEmptyString(levels, pointer, QLatin1String(factor.id.toUtf8()), &level))
+            return false;
+        if (!factor.levels.contains(level))
+            return reader.fail(jsonPointerChild(pointer, factor.id),
+                               QStringLiteral("%1 is not a level of %2 (%3)")
+                                   .arg(quoted(level), quoted(factor.id),
+                                        factor.levels.join(QStringLiteral(", "))));
+        out->append(level);
+    }
+    return true;
+}
+
 } // namespace
+
+const QStringList &StudyProtocol::tlxSubscales()
+{
+    static const QStringList names{
+        QStringLiteral("tlx.mental"),      QStringLiteral("tlx.physical"),
+        QStringLiteral("tlx.temporal"),    QStringLiteral("tlx.performance"),
+        QStringLiteral("tlx.effort"),      QStringLiteral("tlx.frustration")};
+    return names;
+}
+
+QStringList StudyProtocol::Question::measures() const
+{
+    return kind == Kind::NasaTlx ? tlxSubscales() : QStringList{id};
+}
+
+double StudyProtocol::Question::lowest() const
+{
+    return kind == Kind::Likert || kind == Kind::Ranking ? 1.0 : 0.0;
+}
+
+double StudyProtocol::Question::highest() const
+{
+    switch (kind) {
+    case Kind::NasaTlx:
+        return 100.0;
+    case Kind::Likert:
+        return points;
+    case Kind::Ranking:
+        return double(ranked.size());
+    case Kind::Notes:
+        break;
+    }
+    return 0.0;
+}
+
+int StudyProtocol::conditionIndex(const QString &id) const
+{
+    for (size_t i = 0; i < conditions.size(); ++i) {
+        if (conditions[i].id == id)
+            return int(i);
+    }
+    return -1;
+}
+
+std::vector<StudyProtocol::Step> StudyProtocol::steps(const std::vector<int> &order) const
+{
+    std::vector<Step> out;
+    for (int condition : order) {
+        if (practiceSeconds > 0 || practiceTransfers > 0)
+            out.push_back({Step::Kind::Practice, condition, 0});
+        for (int trial = 1; trial <= trials; ++trial)
+            out.push_back({Step::Kind::Trial, condition, trial});
+        if (!afterCondition.empty())
+            out.push_back({Step::Kind::Questionnaire, condition, 0});
+    }
+    if (!atTheEnd.empty())
+        out.push_back({Step::Kind::Final, -1, 0});
+    return out;
+}
+
+bool StudyProtocol::practiceDone(const QJsonObject &metrics, double seconds) const
+{
+    if (practiceSeconds > 0 && seconds >= practiceSeconds)
+        return true;
+    return practiceTransfers > 0 &&
+           metrics.value(QLatin1String("cubes_transferred")).toInt() >= practiceTransfers;
+}
+
+RunOptions StudyProtocol::runOptions(int condition) const
+{
+    RunOptions options;
+    options.scene = scene;
+    options.sceneOptions = sceneOptions;
+    options.router = conditions[size_t(condition)].router;
+    return options;
+}
 
 bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *error)
 {
+    QByteArray source;
+    QString reason;
+    if (!InputFile::readDocument(path, &source, &reason)) {
+        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + reason);
+        return false;
+    }
+    return parse(source, path, out, error);
+}
+
+bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyProtocol *out,
+                          LoadError *error)
+{
     QJsonObject json;
-    if (!readJsonObjectFile(path, &json, error) ||
+    if (!parseJsonObject(source, path, &json, error) ||
         !checkFormat(json, path, QLatin1String(Format), error))
         return false;
     JsonReader reader(path);
     StudyProtocol p;
     p.file = path;
+    p.source = source;
     const QDir folder = QFileInfo(path).absoluteDir();
     QJsonObject options, order, practice, trials, questionnaires;
-    QJsonArray conditions;
+    QJsonArray conditions, factors;
     QString scheme = QStringLiteral("latin");
     double cubes = -1, seed = 1, transfers = 0, count = p.trials;
     bool ok =
@@ -132,7 +296,8 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
                          {QLatin1String("format"), QLatin1String("name"), QLatin1String("scene"),
                           QLatin1String("options"), QLatin1String("conditions"),
                           QLatin1String("order"), QLatin1String("practice"),
-                          QLatin1String("trials"), QLatin1String("questionnaires")}) &&
+                          QLatin1String("trials"), QLatin1String("questionnaires"),
+                          QLatin1String("factors")}) &&
         reader.nonEmptyString(json, QString(), QLatin1String("name"), &p.name) &&
         reader.nonEmptyString(json, QString(), QLatin1String("scene"), &p.scene) &&
         reader.object(json, QString(), QLatin1String("options"), &options, false) &&
@@ -143,6 +308,7 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
         reader.string(options, QStringLiteral("/options"), QLatin1String("gripper"),
                       &p.sceneOptions.gripper, false) &&
         reader.array(json, QString(), QLatin1String("conditions"), &conditions) &&
+        reader.array(json, QString(), QLatin1String("factors"), &factors, false) &&
         reader.object(json, QString(), QLatin1String("order"), &order, false) &&
         reader.checkKeys(order, QStringLiteral("/order"),
                          {QLatin1String("scheme"), QLatin1String("seed")}) &&
@@ -181,6 +347,7 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
                     .arg(quoted(p.scene), World::builtinScenes().join(QStringLiteral(", "))));
         p.scene = file;
     }
+    ok = ok && readFactors(reader, factors, &p.factors);
     if (ok && (conditions.isEmpty() || conditions.size() > MaxConditions))
         ok = reader.fail(QStringLiteral("/conditions"),
                          QStringLiteral("must list 1 to %1 conditions").arg(MaxConditions));
@@ -193,11 +360,13 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
         }
         const QJsonObject c = conditions[i].toObject();
         Condition condition;
-        ok = reader.checkKeys(
-                 c, at, {QLatin1String("id"), QLatin1String("label"), QLatin1String("router")}) &&
+        ok = reader.checkKeys(c, at,
+                              {QLatin1String("id"), QLatin1String("label"),
+                               QLatin1String("router"), QLatin1String("levels")}) &&
              reader.nonEmptyString(c, at, QLatin1String("id"), &condition.id) &&
              reader.nonEmptyString(c, at, QLatin1String("label"), &condition.label) &&
-             reader.nonEmptyString(c, at, QLatin1String("router"), &condition.router);
+             reader.nonEmptyString(c, at, QLatin1String("router"), &condition.router) &&
+             readLevels(reader, c, at, p.factors, &condition.levels);
         if (!ok)
             break;
         if (!idPattern.match(condition.id).hasMatch()) {
@@ -219,7 +388,26 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
             ok = reader.fail(at + QStringLiteral("/router"), routerError.toString());
             break;
         }
+        for (const Condition &other : p.conditions) {
+            if (ok && !p.factors.empty() && other.levels == condition.levels)
+                ok = reader.fail(at + QStringLiteral("/levels"),
+                                 QStringLiteral("the same cell as condition %1")
+                                     .arg(quoted(other.id)));
+        }
+        if (!ok)
+            break;
         p.conditions.push_back(condition);
+    }
+    if (ok && !p.factors.empty()) {
+        int cells = 1;
+        for (const Factor &factor : p.factors)
+            cells *= int(factor.levels.size());
+        if (cells != int(p.conditions.size()))
+            ok = reader.fail(QStringLiteral("/conditions"),
+                             QStringLiteral("the factors cross into %1 cells, the protocol has "
+                                            "%2 conditions: each cell must be one condition")
+                                 .arg(cells)
+                                 .arg(p.conditions.size()));
     }
     if (ok) {
         if (scheme == QLatin1String("williams"))
@@ -248,6 +436,22 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
                        QLatin1String("afterCondition"), p.conditions, &p.afterCondition) &&
          readQuestions(reader, questionnaires, QStringLiteral("/questionnaires"),
                        QLatin1String("atTheEnd"), p.conditions, &p.atTheEnd);
+    // Each measure has one name in the exports.
+    QStringList measures;
+    for (const auto *list : {&p.afterCondition, &p.atTheEnd}) {
+        for (size_t i = 0; ok && i < list->size(); ++i) {
+            for (const QString &measure : (*list)[i].measures()) {
+                if (ok && measures.contains(measure))
+                    ok = reader.fail(
+                        jsonPointerChild(list == &p.atTheEnd
+                                             ? QStringLiteral("/questionnaires/atTheEnd")
+                                             : QStringLiteral("/questionnaires/afterCondition"),
+                                         int(i)),
+                        QStringLiteral("%1 is already a measure").arg(quoted(measure)));
+                measures.append(measure);
+            }
+        }
+    }
     if (!ok || reader.error().isSet()) {
         *error = reader.error();
         return false;

@@ -3,7 +3,7 @@
 
 #include "conditionorder.h"
 #include "loaderror.h"
-#include "sceneoptions.h"
+#include "simrun.h"
 
 #include <QString>
 #include <QStringList>
@@ -30,6 +30,14 @@ struct StudyProtocol
         QString id;     ///< short, in tables and file names (`[A-Za-z0-9_.-]`)
         QString label;  ///< what the experimenter and the participant read
         QString router; ///< a preset, or a router file relative to the protocol
+        QStringList levels; ///< its level of each factor, in the factors' order
+    };
+
+    /** A factor of a factorial design: what the conditions cross (docs/studies.md). */
+    struct Factor
+    {
+        QString id;
+        QStringList levels;
     };
 
     /** One questionnaire item. */
@@ -48,13 +56,49 @@ struct StudyProtocol
         QStringList anchors; ///< Likert: the two ends' words
         int points = 7;      ///< Likert: the scale's length
         QStringList ranked;  ///< Ranking: the condition ids ranked (all of them)
+
+        /**
+         * The measures the item gives, as exports name them: the six `tlx.*` subscales for
+         * NASA-TLX, the id for the others (a ranking gives its id once per condition).
+         */
+        QStringList measures() const;
+        /** Whether the answer is text (notes) rather than a number. */
+        bool isText() const { return kind == Kind::Notes; }
+        /** The lowest and highest answer a measure of the item takes. */
+        double lowest() const;
+        double highest() const;
+    };
+
+    /** The NASA-TLX subscales' measure names, in the questionnaire's order. */
+    static const QStringList &tlxSubscales();
+
+    /** One step of a participant's way through the study. */
+    struct Step
+    {
+        enum class Kind
+        {
+            Practice,      ///< the condition's practice round
+            Trial,         ///< a timed trial (`trial` 1..trials)
+            Questionnaire, ///< the afterCondition items for `condition`
+            Final,         ///< the atTheEnd items
+            Done           ///< nothing left
+        };
+        Kind kind = Kind::Done;
+        int condition = -1; ///< index into conditions; -1 for Final and Done
+        int trial = 0;      ///< Trial: 1-based
+        bool operator==(const Step &other) const
+        {
+            return kind == other.kind && condition == other.condition && trial == other.trial;
+        }
     };
 
     QString file;  ///< the protocol, as the user named it
+    QByteArray source; ///< the file's bytes, as read (a study keeps the protocol it began with)
     QString name;  ///< what the experimenter's view shows
     QString scene; ///< a bundled scene, or an MJCF file (absolute once read)
     SceneOptions sceneOptions;
     std::vector<Condition> conditions;
+    std::vector<Factor> factors; ///< empty, or the 1–2 factors every condition is a cell of
     ConditionOrder::Scheme scheme = ConditionOrder::Scheme::Latin;
     std::uint64_t seed = 1;       ///< of the random scheme
     int practiceTransfers = 0;    ///< practice until this many transfers (0: no such goal)
@@ -67,12 +111,31 @@ struct StudyProtocol
 
     /** The order scheme over this protocol's conditions. */
     ConditionOrder order() const { return ConditionOrder(scheme, int(conditions.size()), seed); }
+    /** The index of the condition `id`, or -1. */
+    int conditionIndex(const QString &id) const;
+
+    /**
+     * The steps of a participant who meets the conditions in `order`: per condition its
+     * practice (when the protocol has one), its trials and its questionnaire (when it has
+     * items), then the final questionnaire (when it has items).
+     */
+    std::vector<Step> steps(const std::vector<int> &order) const;
+    /** Whether a practice round that got `metrics` after `seconds` has reached its goal. */
+    bool practiceDone(const QJsonObject &metrics, double seconds) const;
+    /** The run of `condition`: the scene, its options and the condition's router. */
+    RunOptions runOptions(int condition) const;
 
     /**
      * Reads and checks a protocol (its routers compile, its scene exists); false with
      * `FILE: /pointer: reason` in `error`.
      */
     static bool read(const QString &path, StudyProtocol *out, LoadError *error);
+    /**
+     * Checks a protocol's bytes as read() does, `path` saying where it came from (errors
+     * name it; its folder holds the scene and router files it names).
+     */
+    static bool parse(const QByteArray &source, const QString &path, StudyProtocol *out,
+                      LoadError *error);
 };
 
 } // namespace semhap

@@ -105,12 +105,19 @@ void TestStudy::exampleProtocolsRead_data()
     QTest::addColumn<QString>("file");
     QTest::addColumn<QString>("scene");
     QTest::addColumn<int>("scheme");
+    QTest::addColumn<double>("trialSeconds");
+    QTest::addColumn<int>("factors");
+    // The paper's trials: one minute in box_and_block, two in the bimanual task; its first
+    // study crossed grasp and break modality.
     QTest::newRow("comparison") << "comparison.json"
-                                << "box_and_block" << int(ConditionOrder::Scheme::Williams);
+                                << "box_and_block" << int(ConditionOrder::Scheme::Williams)
+                                << 60.0 << 2;
     QTest::newRow("unimanual") << "unimanual.json"
-                               << "box_and_block" << int(ConditionOrder::Scheme::Williams);
+                               << "box_and_block" << int(ConditionOrder::Scheme::Williams)
+                               << 60.0 << 0;
     QTest::newRow("bimanual") << "bimanual.json"
-                              << "bimanual_sorting" << int(ConditionOrder::Scheme::Random);
+                              << "bimanual_sorting" << int(ConditionOrder::Scheme::Latin)
+                              << 120.0 << 0;
 }
 
 void TestStudy::exampleProtocolsRead()
@@ -118,6 +125,8 @@ void TestStudy::exampleProtocolsRead()
     QFETCH(QString, file);
     QFETCH(QString, scene);
     QFETCH(int, scheme);
+    QFETCH(double, trialSeconds);
+    QFETCH(int, factors);
     StudyProtocol protocol;
     LoadError error;
     QVERIFY2(StudyProtocol::read(QString(SEMHAP_RESOURCES "/studies/") + file, &protocol, &error),
@@ -125,10 +134,13 @@ void TestStudy::exampleProtocolsRead()
     QCOMPARE(protocol.scene, scene);
     QCOMPARE(int(protocol.scheme), scheme);
     QCOMPARE(int(protocol.conditions.size()), 4);
-    // The paper's procedure: practice until 10 transfers, two one-minute trials.
+    // The paper's procedure: practice until 10 transfers, two trials.
     QCOMPARE(protocol.practiceTransfers, 10);
     QCOMPARE(protocol.trials, 2);
-    QCOMPARE(protocol.trialSeconds, 60.0);
+    QCOMPARE(protocol.trialSeconds, trialSeconds);
+    QCOMPARE(int(protocol.factors.size()), factors);
+    for (const StudyProtocol::Condition &condition : protocol.conditions)
+        QCOMPARE(int(condition.levels.size()), factors);
     QCOMPARE(protocol.afterCondition.front().kind, StudyProtocol::Question::Kind::NasaTlx);
     QCOMPARE(protocol.atTheEnd.front().kind, StudyProtocol::Question::Kind::Ranking);
     QCOMPARE(protocol.atTheEnd.front().ranked.size(), 4);
@@ -181,6 +193,39 @@ void TestStudy::badProtocolsAreRefused_data()
     QTest::newRow("unknown scheme") << "\"williams\""
                                     << "\"balanced\""
                                     << "/order/scheme: must be williams, latin or random";
+    QTest::newRow("ranking after a condition")
+        << "{\"type\": \"nasa_tlx\"}"
+        << "{\"type\": \"ranking\"}"
+        << "/questionnaires/afterCondition/0/type: a ranking of the conditions belongs in "
+           "atTheEnd";
+    QTest::newRow("one measure, two items")
+        << "\"id\": \"real\""
+        << "\"id\": \"tlx.effort\""
+        << "/questionnaires/afterCondition/1: 'tlx.effort' is already a measure";
+    QTest::newRow("levels without factors")
+        << "\"router\": \"C1\"}"
+        << "\"router\": \"C1\", \"levels\": {\"grasp\": \"vib\"}}"
+        << "/conditions/0/levels: the protocol declares no factors";
+    // In the 2 x 2 factorial version of the protocol (badProtocolsAreRefused's `factorial`).
+    QTest::newRow("factorial: a condition outside the factors")
+        << ", \"levels\": {\"grasp\": \"vib\", \"break\": \"vib\"}"
+        << "" << "/conditions/0: missing key 'levels'";
+    QTest::newRow("factorial: three factors")
+        << "\"factors\": ["
+        << "\"factors\": [{\"id\": \"c\", \"levels\": [\"1\", \"2\"]}, "
+        << "/factors: at most 2 factors (a two-way design), got 3";
+    QTest::newRow("factorial: no such level")
+        << "{\"grasp\": \"vib\", \"break\": \"vib\"}"
+        << "{\"grasp\": \"heat\", \"break\": \"vib\"}"
+        << "/conditions/0/levels/grasp: 'heat' is not a level of 'grasp' (vib, air)";
+    QTest::newRow("factorial: one cell twice")
+        << "{\"grasp\": \"vib\", \"break\": \"air\"}"
+        << "{\"grasp\": \"vib\", \"break\": \"vib\"}"
+        << "/conditions/1/levels: the same cell as condition 'A'";
+    QTest::newRow("factorial: a cell left empty")
+        << "{\"id\": \"break\", \"levels\": [\"vib\", \"air\"]}"
+        << "{\"id\": \"break\", \"levels\": [\"vib\", \"air\", \"heat\"]}"
+        << "/conditions: the factors cross into 6 cells, the protocol has 4 conditions";
     QTest::newRow("no trials") << "\"trials\""
                                << "\"trial\""
                                << "unknown key 'trial'";
@@ -201,6 +246,20 @@ void TestStudy::badProtocolsAreRefused()
           "afterCondition": [{"type": "nasa_tlx"},
                              {"type": "likert", "id": "real", "text": "Real?", "anchors": ["no", "yes"], "points": 7}],
           "atTheEnd": [{"type": "ranking"}]}})");
+    if (QString::fromUtf8(QTest::currentDataTag()).startsWith(QLatin1String("factorial"))) {
+        // The paper's first study: grasp and break modality crossed.
+        text.replace(QLatin1String("\"order\""),
+                     QLatin1String("\"factors\": [{\"id\": \"grasp\", \"levels\": [\"vib\", "
+                                   "\"air\"]}, {\"id\": \"break\", \"levels\": [\"vib\", "
+                                   "\"air\"]}], \"order\""));
+        const char *cells[] = {"vib\", \"break\": \"vib", "vib\", \"break\": \"air",
+                               "air\", \"break\": \"vib", "air\", \"break\": \"air"};
+        for (int c = 0; c < 4; ++c) {
+            const QString router = QStringLiteral("\"router\": \"C%1\"").arg(c + 1);
+            text.replace(router, router + QStringLiteral(", \"levels\": {\"grasp\": \"%1\"}")
+                                              .arg(QLatin1String(cells[c])));
+        }
+    }
     QVERIFY2(text.contains(from), qPrintable(from));
     text.replace(from, to);
     QTemporaryDir dir;
