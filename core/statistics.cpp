@@ -2,12 +2,15 @@
 #include "statistics.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_poly.h>
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <memory>
 
@@ -33,7 +36,87 @@ double exactLowerTail(int n, double w)
     return below / std::ldexp(1.0, n);
 }
 
+/**
+ * The Shapiro–Wilk coefficients for n sorted values, Royston (1992, 1995): normal scores m
+ * scaled to unit length, the outer one (two from n = 6 on) replaced by Royston's polynomials
+ * in 1 / sqrt(n), the rest rescaled so that the coefficients keep unit length.
+ */
+std::vector<double> shapiroWilkCoefficients(int n)
+{
+    std::vector<double> a(size_t(n), 0.0);
+    if (n == 3) {
+        a[0] = -M_SQRT1_2;
+        a[2] = M_SQRT1_2;
+        return a;
+    }
+    std::vector<double> m(a.size());
+    double mm = 0.0;
+    for (int i = 0; i < n; ++i) {
+        m[size_t(i)] = gsl_cdf_ugaussian_Pinv((i + 1 - 0.375) / (n + 0.25));
+        mm += m[size_t(i)] * m[size_t(i)];
+    }
+    const double u = 1.0 / std::sqrt(double(n));
+    const size_t last = size_t(n) - 1;
+    const double outer[6] = {
+        m[last] / std::sqrt(mm), 0.221157, -0.147981, -2.071190, 4.434685, -2.706056};
+    a[last] = gsl_poly_eval(outer, 6, u);
+    double phi = (mm - 2 * m[last] * m[last]) / (1 - 2 * a[last] * a[last]);
+    size_t edge = 1; // coefficients fixed at each end
+    if (n > 5) {
+        const double second[6] = {
+            m[last - 1] / std::sqrt(mm), 0.042981, -0.293762, -1.752461, 5.682633, -3.582633};
+        a[last - 1] = gsl_poly_eval(second, 6, u);
+        phi = (mm - 2 * m[last] * m[last] - 2 * m[last - 1] * m[last - 1]) /
+              (1 - 2 * a[last] * a[last] - 2 * a[last - 1] * a[last - 1]);
+        edge = 2;
+    }
+    for (size_t i = edge; i + edge < size_t(n); ++i)
+        a[i] = m[i] / std::sqrt(phi);
+    for (size_t i = 0; i < edge; ++i)
+        a[i] = -a[last - i];
+    return a;
+}
+
+/**
+ * The p of a Shapiro–Wilk W from n values: exact for n = 3 (Shapiro and Wilk 1965), else the
+ * upper tail of Royston's normalising transformation of log(1 - W), with its mean and sd
+ * polynomials in n for 4 ≤ n ≤ 11 and in log n from 12 on.
+ */
+double shapiroWilkP(double w, int n)
+{
+    if (n == 3) {
+        const double p = 6.0 / M_PI * (std::asin(std::sqrt(w)) - std::asin(std::sqrt(0.75)));
+        return std::clamp(p, 0.0, 1.0);
+    }
+    const double y = std::log1p(-w);
+    double z;
+    if (n <= 11) {
+        const double gamma = -2.273 + 0.459 * n;
+        if (y >= gamma) // beyond the transformation's range: far out in the lower tail of W
+            return 0.0;
+        const double meanCoefficients[4] = {0.5440, -0.39978, 0.025054, -6.714e-4};
+        const double sdCoefficients[4] = {1.3822, -0.77857, 0.062767, -0.0020322};
+        z = (-std::log(gamma - y) - gsl_poly_eval(meanCoefficients, 4, n)) /
+            std::exp(gsl_poly_eval(sdCoefficients, 4, n));
+    } else {
+        const double meanCoefficients[4] = {-1.5861, -0.31082, -0.083751, 0.0038915};
+        const double sdCoefficients[3] = {-0.4803, -0.082676, 0.0030302};
+        const double ln = std::log(double(n));
+        z = (y - gsl_poly_eval(meanCoefficients, 4, ln)) /
+            std::exp(gsl_poly_eval(sdCoefficients, 3, ln));
+    }
+    return gsl_cdf_ugaussian_Q(z);
+}
+
 } // namespace
+
+bool isCompleteTable(const std::vector<std::vector<double>> &rows, size_t columns)
+{
+    return std::all_of(rows.begin(), rows.end(), [columns](const std::vector<double> &row) {
+        return row.size() == columns &&
+               std::all_of(row.begin(), row.end(), [](double v) { return std::isfinite(v); });
+    });
+}
 
 /**
  * The ranks of `values` from 1, tied values sharing their mid-rank; `ties` gets the sum of
@@ -145,11 +228,7 @@ FriedmanTest friedmanTest(const std::vector<std::vector<double>> &rows)
     FriedmanTest test;
     test.n = int(rows.size());
     test.k = rows.empty() ? 0 : int(rows.front().size());
-    const auto complete = [&](const std::vector<double> &row) {
-        return int(row.size()) == test.k &&
-               std::none_of(row.begin(), row.end(), [](double v) { return std::isnan(v); });
-    };
-    if (test.n < 2 || test.k < 2 || !std::all_of(rows.begin(), rows.end(), complete))
+    if (test.n < 2 || test.k < 2 || !isCompleteTable(rows, size_t(test.k)))
         return test;
     // Ranks within each subject; the conditions' rank sums against what chance gives.
     std::vector<double> sums(size_t(test.k), 0.0);
@@ -173,6 +252,96 @@ FriedmanTest friedmanTest(const std::vector<std::vector<double>> &rows)
     test.p = gsl_cdf_chisq_Q(test.chiSquared, double(test.df));
     test.kendallW = test.chiSquared / (n * (k - 1));
     return test;
+}
+
+ShapiroWilkTest shapiroWilkTest(const std::vector<double> &values)
+{
+    ShapiroWilkTest test;
+    std::vector<double> x;
+    std::copy_if(values.begin(), values.end(), std::back_inserter(x),
+                 [](double v) { return std::isfinite(v); });
+    test.n = int(x.size());
+    if (test.n < 3 || test.n > 5000)
+        return test;
+    gsl_sort(x.data(), 1, x.size());
+    const double mean = gsl_stats_mean(x.data(), 1, x.size());
+    double squares = 0.0;
+    for (double v : x)
+        squares += (v - mean) * (v - mean);
+    if (x.front() == x.back())
+        return test;
+    const std::vector<double> a = shapiroWilkCoefficients(test.n);
+    double b = 0.0;
+    for (size_t i = 0; i < x.size(); ++i)
+        b += a[i] * x[i];
+    test.tested = true;
+    test.w = std::min(1.0, b * b / squares); // rounding can carry a perfect fit past 1
+    test.p = shapiroWilkP(test.w, test.n);
+    return test;
+}
+
+PairedTTest pairedTTest(const std::vector<double> &baseline, const std::vector<double> &other)
+{
+    PairedTTest test;
+    if (baseline.size() != other.size())
+        return test;
+    std::vector<double> differences;
+    for (size_t i = 0; i < baseline.size(); ++i) {
+        if (!std::isnan(baseline[i]) && !std::isnan(other[i]))
+            differences.push_back(other[i] - baseline[i]);
+    }
+    test.n = int(differences.size());
+    if (test.n < 2)
+        return test;
+    test.meanDifference = gsl_stats_mean(differences.data(), 1, differences.size());
+    const double sd =
+        gsl_stats_sd_m(differences.data(), 1, differences.size(), test.meanDifference);
+    // Equal differences (sd 0, or rounding noise next to the mean) leave nothing to test.
+    if (!std::isfinite(sd) || !(sd > 1e-12 * std::abs(test.meanDifference)))
+        return test;
+    test.tested = true;
+    test.df = test.n - 1;
+    test.t = test.meanDifference / (sd / std::sqrt(double(test.n)));
+    test.p = std::min(1.0, 2.0 * gsl_cdf_tdist_Q(std::abs(test.t), double(test.df)));
+    return test;
+}
+
+std::vector<PairwiseComparison> pairwiseComparisons(const std::vector<std::vector<double>> &rows,
+                                                    PairedTest test)
+{
+    const size_t k = rows.empty() ? 0 : rows.front().size();
+    if (rows.size() < 2 || k < 2 || !isCompleteTable(rows, k))
+        return {};
+    const double comparisons = double(k * (k - 1) / 2);
+    std::vector<PairwiseComparison> pairs;
+    for (size_t first = 0; first + 1 < k; ++first) {
+        for (size_t second = first + 1; second < k; ++second) {
+            std::vector<double> a, b, differences;
+            for (const std::vector<double> &row : rows) {
+                a.push_back(row[first]);
+                b.push_back(row[second]);
+                differences.push_back(row[second] - row[first]);
+            }
+            PairwiseComparison pair;
+            pair.first = int(first);
+            pair.second = int(second);
+            pair.meanDifference = gsl_stats_mean(differences.data(), 1, differences.size());
+            if (test == PairedTest::T) {
+                const PairedTTest t = pairedTTest(a, b);
+                pair.tested = t.tested;
+                pair.statistic = t.t;
+                pair.p = t.p;
+            } else {
+                const SignedRankTest signedRank = signedRankTest(differences);
+                pair.tested = signedRank.n > 0;
+                pair.statistic = signedRank.w;
+                pair.p = signedRank.p;
+            }
+            pair.pAdjusted = std::min(1.0, pair.p * comparisons);
+            pairs.push_back(pair);
+        }
+    }
+    return pairs;
 }
 
 Summary summarise(const std::vector<double> &values)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -73,9 +74,79 @@ struct FriedmanTest
  * Friedman's test of `rows` (one per subject, one value per condition, all complete):
  * ranks within each subject (mid-ranks on ties), the statistic with the tie correction R's
  * friedman.test applies, its chi-squared p, and Kendall's coefficient of concordance W from
- * it. Fewer than 2 subjects or conditions, a NaN or a short row: nothing tested (p = 1).
+ * it. Fewer than 2 subjects or conditions, a NaN (or infinity) or a short row: nothing tested
+ * (p = 1).
  */
 FriedmanTest friedmanTest(const std::vector<std::vector<double>> &rows);
+
+/**
+ * Whether `rows` form a complete table: every row has exactly `columns` values and none is
+ * NaN or infinite (what the tests of subjects × conditions below need).
+ */
+bool isCompleteTable(const std::vector<std::vector<double>> &rows, size_t columns);
+
+/** The Shapiro–Wilk test of normality. */
+struct ShapiroWilkTest
+{
+    bool tested = false; ///< false: fewer than 3 or more than 5000 values, or all of them equal
+    int n = 0;           ///< the values tested (NaN and infinite values are left out)
+    double w = 1.0;      ///< W, 0 to 1: 1 when the ordered values lie on a normal's quantiles
+    double p = 1.0;      ///< the chance of a W this small from normal data; 1 when untested
+};
+
+/**
+ * The Shapiro–Wilk W of `values` and its p, by Royston's algorithm (AS R94, 1995): the
+ * coefficients from normal scores with Royston's polynomial corrections of the outer two,
+ * the p exact for n = 3 and from Royston's normalising transformations for 4 ≤ n ≤ 11 and
+ * 12 ≤ n ≤ 5000. NaN and infinite values are left out, as R's shapiro.test drops NA.
+ */
+ShapiroWilkTest shapiroWilkTest(const std::vector<double> &values);
+
+/** Student's paired t test. */
+struct PairedTTest
+{
+    bool tested = false; ///< false: fewer than 2 pairs, unequal lengths, or constant differences
+    int n = 0;           ///< the pairs with both values (a NaN on either side leaves a pair out)
+    double meanDifference = 0.0; ///< the mean of other - baseline
+    double t = 0.0;
+    int df = 0;     ///< n - 1
+    double p = 1.0; ///< two-sided, from Student's t distribution; 1 when untested
+};
+
+/**
+ * The paired t test of `other` against `baseline` (one value each per subject, the same
+ * subjects in the same order): the differences other - baseline, their mean, t = mean / (sd /
+ * sqrt(n)) on n - 1 degrees of freedom and the two-sided p. Pairs with a NaN are left out.
+ */
+PairedTTest pairedTTest(const std::vector<double> &baseline, const std::vector<double> &other);
+
+/** Which paired test pairwiseComparisons runs on each pair of conditions. */
+enum class PairedTest
+{
+    T,         ///< Student's paired t test (pairedTTest)
+    SignedRank ///< the Wilcoxon signed-rank test (signedRankTest)
+};
+
+/** One pair of conditions compared over the same subjects, Bonferroni-corrected. */
+struct PairwiseComparison
+{
+    int first = 0;               ///< the earlier condition's column
+    int second = 0;              ///< the later condition's column
+    bool tested = false;         ///< false: the differences were all 0 or (t test) all equal
+    double meanDifference = 0.0; ///< the mean of second - first
+    double statistic = 0.0;      ///< t, or W+ of the signed-rank test
+    double p = 1.0;              ///< the test's own two-sided p
+    double pAdjusted = 1.0;      ///< Bonferroni's: min(1, p k (k - 1) / 2) for k conditions
+};
+
+/**
+ * Every pair of the conditions of `rows` (one row per subject, one value per condition, all
+ * complete) compared with `test` on the differences second - first, in the order (0, 1),
+ * (0, 2), ..., (k - 2, k - 1), each p multiplied by the k (k - 1) / 2 comparisons (capped at
+ * 1). Fewer than 2 subjects or conditions, a NaN or a short row: nothing tested, no pairs.
+ */
+std::vector<PairwiseComparison> pairwiseComparisons(const std::vector<std::vector<double>> &rows,
+                                                    PairedTest test);
 
 /** The mean of the values that are not NaN, and their sample standard deviation. */
 struct Summary

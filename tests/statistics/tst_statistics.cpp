@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The statistics module: the Wilcoxon signed-rank test against published values and exact
-// enumeration, the bootstrap interval, and paired comparisons of seeds.
+// enumeration, the bootstrap interval, paired comparisons of seeds, and the study analysis's
+// tests (Shapiro–Wilk, paired t, Bonferroni-corrected pairs), each
+// against published worked examples to the digits they were published with.
 #include "statistics.h"
 
 #include <QTest>
@@ -38,6 +40,69 @@ double bruteForceP(const std::vector<double> &differences)
     return double(asExtreme) / patterns;
 }
 
+/**
+ * Whether `actual` rounds to `published`, to the digits printed there: within half a unit of
+ * its last digit ("0.0387" allows 0.00005, "6.2e-09" allows 0.05e-09).
+ */
+bool agrees(double actual, QStringView published)
+{
+    const qsizetype e = published.indexOf(u'e');
+    const QStringView mantissa = e < 0 ? published : published.left(e);
+    const int exponent = e < 0 ? 0 : published.mid(e + 1).toInt();
+    const qsizetype dot = mantissa.indexOf(u'.');
+    const int decimals = dot < 0 ? 0 : int(mantissa.size() - dot - 1);
+    const double halfUnit = 0.5 * std::pow(10.0, exponent - decimals);
+    return std::abs(actual - published.toDouble()) <= halfUnit * (1 + 1e-9);
+}
+
+/** Empty when `actual` agrees with `published`, else what `what` was instead. */
+QString mismatch(const QString &what, double actual, QStringView published)
+{
+    if (agrees(actual, published))
+        return {};
+    return QStringLiteral("%1 = %2, published %3")
+        .arg(what, QString::number(actual, 'g', 10), published.toString());
+}
+
+#define COMPARE_PUBLISHED(actual, published)                                                      \
+    do {                                                                                          \
+        const QString difference = mismatch(QStringLiteral(#actual), (actual), (published));      \
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));                                   \
+    } while (false)
+
+/**
+ * Field, Miles & Field, Discovering Statistics Using R (2012), chapter 13: the time in seconds
+ * eight celebrities took to retch eating each of four bushtucker foods (Bushtucker.dat; stick
+ * insect, kangaroo testicle, fish eye, witchetty grub).
+ */
+const std::vector<std::vector<double>> bushtucker{
+    {8, 7, 1, 6}, {9, 5, 2, 5}, {6, 2, 3, 8},  {5, 3, 1, 9},
+    {8, 4, 5, 8}, {7, 5, 6, 7}, {10, 2, 7, 2}, {12, 6, 8, 1},
+};
+
+/**
+ * The same book's 3 x 3 within-subjects example (Attitude.dat): 20 participants' ratings
+ * (-100 to 100) of adverts for beer, wine and water (drink, factor A), each shown with
+ * positive, negative and neutral imagery (factor B); columns beerpos, beerneg, beerneut,
+ * winepos, ..., waterneu, so A varies slowest.
+ */
+const std::vector<std::vector<double>> attitude{
+    {1, 6, 5, 38, -5, 4, 10, -14, -2},     {43, 30, 8, 20, -12, 4, 9, -10, -13},
+    {15, 15, 12, 20, -15, 6, 6, -16, 1},   {40, 30, 19, 28, -4, 0, 20, -10, 2},
+    {8, 12, 8, 11, -2, 6, 27, 5, -5},      {17, 17, 15, 17, -6, 6, 9, -6, -13},
+    {30, 21, 21, 15, -2, 16, 19, -20, 3},  {34, 23, 28, 27, -7, 7, 12, -12, 2},
+    {34, 20, 26, 24, -10, 12, 12, -9, 4},  {26, 27, 27, 23, -15, 14, 21, -6, 0},
+    {1, -19, -10, 28, -13, 13, 33, -2, 9}, {7, -18, 6, 26, -16, 19, 23, -17, 5},
+    {22, -8, 4, 34, -23, 14, 21, -19, 0},  {30, -6, 3, 32, -22, 21, 17, -11, 4},
+    {40, -6, 0, 24, -9, 19, 15, -10, 2},   {15, -9, 4, 29, -18, 7, 13, -17, 8},
+    {20, -17, 9, 30, -17, 12, 16, -4, 10}, {9, -12, -5, 24, -15, 18, 17, -4, 8},
+    {14, -11, 7, 34, -14, 20, 19, -1, 12}, {15, -6, 13, 23, -15, 15, 29, -1, 10},
+};
+
+/** Leukocytes of six animals before and after surgery (see pairedT). */
+const std::vector<double> beforeSurgery{10.8, 12.9, 9.59, 8.81, 12, 6.07};
+const std::vector<double> afterSurgery{10.6, 16.6, 17.2, 14, 10.6, 8.6};
+
 } // namespace
 
 class TestStatistics : public QObject
@@ -54,6 +119,17 @@ private slots:
     void bootstrapInterval();
     void pairsBySeed();
     void summary();
+    void shapiroWilk_data();
+    void shapiroWilk();
+    void shapiroWilkExactForThree();
+    void shapiroWilkNothingToTest();
+    void pairedT_data();
+    void pairedT();
+    void pairedTNothingToTest();
+    void pairwiseTAsR();
+    void pairwiseTFactorialCells();
+    void pairwiseSignedRank();
+    void pairwiseNothingToTest();
 };
 
 void TestStatistics::exactSignedRank_data()
@@ -225,6 +301,285 @@ void TestStatistics::summary()
     QVERIFY(std::abs(s.sd - std::sqrt(32.0 / 7.0)) < 1e-12);
     QCOMPARE(summarise({}).n, 0);
     QCOMPARE(summarise({3.0}).sd, 0.0);
+}
+
+void TestStatistics::shapiroWilk_data()
+{
+    QTest::addColumn<std::vector<double>>("values");
+    QTest::addColumn<QString>("w");
+    QTest::addColumn<QString>("p");
+    // R's shapiro.test as printed in github.com/s4rduk4r/R-examples (R 3.6.1): notebook 06,
+    // leukocytes before and after surgery (n = 6, Royston's small-sample branch, a tie after).
+    QTest::newRow("before surgery, n = 6") << beforeSurgery << "0.96736"
+                                           << "0.8742";
+    QTest::newRow("after surgery, n = 6") << afterSurgery << "0.90401"
+                                          << "0.3982";
+    // Notebook 10: body mass changes of mice on three supplements (n = 9, ties).
+    QTest::newRow("supplement F1, n = 9")
+        << std::vector<double>{7.1, 7.0, 7.0, 8.6, 8.2, 6.6, 6.8, 6.7, 7.7} << "0.86142"
+        << "0.09936";
+    QTest::newRow("supplement F2, n = 9")
+        << std::vector<double>{7.6, 7.3, 7.3, 8.3, 7.6, 6.6, 6.7, 6.8, 7.0} << "0.93473"
+        << "0.5277";
+    QTest::newRow("supplement F3, n = 9")
+        << std::vector<double>{9.2, 8.3, 9.1, 9.0, 8.9, 9.0, 9.2, 7.6, 8.1} << "0.82447"
+        << "0.0387";
+    // Notebook 09: HDL of infants on three milk regimes (n = 10).
+    QTest::newRow("human milk, n = 10")
+        << std::vector<double>{56, 63, 45, 41, 71, 60, 78, 50, 68, 62} << "0.97975"
+        << "0.9638";
+    QTest::newRow("formula, n = 10")
+        << std::vector<double>{40, 48, 60, 38, 28, 44, 66, 22, 45, 54} << "0.9826"
+        << "0.9775";
+    QTest::newRow("supplemented formula, n = 10")
+        << std::vector<double>{71, 57, 64, 44, 73, 50, 79, 67, 84, 61} << "0.98636"
+        << "0.9901";
+    // R's ToothGrowth$len (n = 60, the large-sample branch): shapiro.test gives W = 0.96743,
+    // p-value = 0.1091 (r-stats-lightbridge.netlify.app/stats/normality-test.html).
+    QTest::newRow("ToothGrowth, n = 60")
+        << std::vector<double>{4.2,  11.5, 7.3,  5.8,  6.4,  10.0, 11.2, 11.2, 5.2,  7.0,
+                               16.5, 16.5, 15.2, 17.3, 22.5, 17.3, 13.6, 14.5, 18.8, 15.5,
+                               23.6, 18.5, 33.9, 25.5, 26.4, 32.5, 26.7, 21.5, 23.3, 29.5,
+                               15.2, 21.5, 17.6, 9.7,  14.5, 10.0, 8.2,  9.4,  16.5, 9.7,
+                               19.7, 23.3, 23.6, 26.4, 20.0, 25.2, 25.8, 21.2, 14.5, 27.3,
+                               25.5, 26.4, 22.4, 24.5, 24.8, 30.9, 26.4, 27.3, 29.4, 23.0}
+        << "0.96743"
+        << "0.1091";
+    // Field's RExam.dat exam marks (n = 100): scipy.stats.shapiro (the same AS R94, in single
+    // precision) gives (0.96130979, 0.00499133) in github.com/snehilk1312/AppliedStatistics,
+    // Python/statistics_with_Python/05_Exploring_Assumptions (02_..._normality.ipynb); taken
+    // to the digits single precision supports.
+    QTest::newRow("RExam, n = 100")
+        << std::vector<double>{18, 30, 40, 30, 40, 15, 36, 40, 63, 31, 22, 47, 38, 34, 54, 35, 33,
+                               38, 29, 36, 59, 31, 34, 28, 50, 59, 33, 57, 25, 53, 65, 47, 28, 43,
+                               47, 60, 45, 22, 39, 43, 66, 36, 26, 58, 53, 37, 48, 32, 42, 34, 56,
+                               76, 72, 77, 77, 66, 62, 86, 97, 72, 69, 87, 88, 72, 75, 74, 68, 81,
+                               77, 71, 60, 74, 80, 68, 64, 94, 65, 72, 75, 92, 89, 83, 80, 95, 99,
+                               80, 81, 75, 78, 65, 80, 86, 73, 81, 69, 60, 69, 71, 82, 58}
+        << "0.96131"
+        << "0.004991";
+}
+
+void TestStatistics::shapiroWilk()
+{
+    QFETCH(std::vector<double>, values);
+    const ShapiroWilkTest test = shapiroWilkTest(values);
+    QVERIFY(test.tested);
+    QCOMPARE(test.n, int(values.size()));
+    QFETCH(QString, w);
+    QFETCH(QString, p);
+    COMPARE_PUBLISHED(test.w, w);
+    COMPARE_PUBLISHED(test.p, p);
+    // The order of the values does not matter, a NaN is left out.
+    std::vector<double> shuffled(values.rbegin(), values.rend());
+    shuffled.insert(shuffled.begin() + 1, qQNaN());
+    const ShapiroWilkTest again = shapiroWilkTest(shuffled);
+    QCOMPARE(again.n, test.n);
+    QCOMPARE(again.w, test.w);
+}
+
+void TestStatistics::shapiroWilkExactForThree()
+{
+    // For n = 3 the coefficients are -1/sqrt 2, 0, 1/sqrt 2 and the null distribution of W is
+    // known exactly (Shapiro & Wilk 1965, Biometrika 52, p. 596): P(W <= w) =
+    // 6/pi (asin sqrt w - asin sqrt 3/4). For 1, 2, 4: W = (3/sqrt 2)^2 / (42/9) = 27/28.
+    const ShapiroWilkTest test = shapiroWilkTest({4, 1, 2});
+    QVERIFY(test.tested);
+    QVERIFY(std::abs(test.w - 27.0 / 28.0) < 1e-12);
+    const double p = 6 / M_PI * (std::asin(std::sqrt(27.0 / 28.0)) - M_PI / 3);
+    QVERIFY2(std::abs(test.p - p) < 1e-12, qPrintable(QString::number(test.p)));
+    // Equally spaced: W = 1, the largest p there is.
+    QCOMPARE(shapiroWilkTest({1, 2, 3}).p, 1.0);
+    // Two equal values and one apart: the smallest W, 3/4, p = 0.
+    const ShapiroWilkTest lowest = shapiroWilkTest({5, 5, 8});
+    QVERIFY(std::abs(lowest.w - 0.75) < 1e-12);
+    QVERIFY(lowest.p < 1e-6);
+}
+
+void TestStatistics::shapiroWilkNothingToTest()
+{
+    const auto untested = [](const std::vector<double> &values) {
+        const ShapiroWilkTest test = shapiroWilkTest(values);
+        return !test.tested && test.p == 1.0 && test.w == 1.0;
+    };
+    QVERIFY(untested({}));
+    QVERIFY(untested({1.0, 2.0}));
+    QVERIFY(untested({1.0, qQNaN(), 2.0, qInf()})); // two values left
+    QVERIFY(untested({3.0, 3.0, 3.0, 3.0}));        // all equal: no spread to judge
+    QVERIFY(untested(std::vector<double>(5001, 1.0)));
+    std::vector<double> ramp(5001);
+    for (size_t i = 0; i < ramp.size(); ++i)
+        ramp[i] = double(i);
+    QVERIFY(untested(ramp)); // past Royston's 5000
+    ramp.pop_back();
+    QVERIFY(shapiroWilkTest(ramp).tested);
+    QCOMPARE(shapiroWilkTest({3.0, 3.0, 3.0, 3.0}).n, 4);
+}
+
+void TestStatistics::pairedT_data()
+{
+    QTest::addColumn<std::vector<double>>("baseline");
+    QTest::addColumn<std::vector<double>>("other");
+    QTest::addColumn<QString>("mean");
+    QTest::addColumn<QString>("t");
+    QTest::addColumn<int>("df");
+    QTest::addColumn<QString>("p");
+    // R's t.test(before, after, paired = TRUE) in github.com/s4rduk4r/R-examples, notebook 06:
+    // t = -2.1205, df = 5, p-value = 0.08745, mean of the differences -2.905.
+    QTest::newRow("leukocytes") << afterSurgery << beforeSurgery << "-2.905"
+                                << "-2.1205" << 5 << "0.08745";
+    // STHDA's mice weights, t.test(after, before, paired = TRUE) as printed at
+    // rstudio-pubs-static.s3.amazonaws.com/805708_042b43ff85154c5187e66d2eba2f0cd5.html:
+    // t = 20.883, df = 9, p-value = 6.2e-09, mean of the differences 194.49.
+    QTest::newRow("mice weights") << std::vector<double>{200.1, 190.9, 192.7, 213,   241.4,
+                                                         196.9, 172.2, 185.5, 205.2, 193.7}
+                                  << std::vector<double>{392.9, 393.2, 345.1, 393,   434,
+                                                         427.9, 422,   383.9, 392.3, 352.2}
+                                  << "194.49"
+                                  << "20.883" << 9 << "6.2e-09";
+}
+
+void TestStatistics::pairedT()
+{
+    QFETCH(std::vector<double>, baseline);
+    QFETCH(std::vector<double>, other);
+    QFETCH(QString, mean);
+    QFETCH(QString, t);
+    QFETCH(int, df);
+    QFETCH(QString, p);
+    const PairedTTest test = pairedTTest(baseline, other);
+    QVERIFY(test.tested);
+    QCOMPARE(test.n, df + 1);
+    QCOMPARE(test.df, df);
+    COMPARE_PUBLISHED(test.meanDifference, mean);
+    COMPARE_PUBLISHED(test.t, t);
+    COMPARE_PUBLISHED(test.p, p);
+    // The other way round: the same test, t negated.
+    const PairedTTest reversed = pairedTTest(other, baseline);
+    QCOMPARE(reversed.t, -test.t);
+    QCOMPARE(reversed.p, test.p);
+}
+
+void TestStatistics::pairedTNothingToTest()
+{
+    const auto untested = [](const PairedTTest &test) {
+        return !test.tested && test.p == 1.0 && test.df == 0;
+    };
+    QVERIFY(untested(pairedTTest({}, {})));
+    QVERIFY(untested(pairedTTest({1.0}, {2.0})));
+    QVERIFY(untested(pairedTTest({1.0, 2.0, 3.0}, {1.0, 2.0})));              // unequal lengths
+    QVERIFY(untested(pairedTTest({1.0, 2.0, 3.0}, {3.0, 4.0, 5.0})));         // all differ by 2
+    QVERIFY(untested(pairedTTest({1.0, qQNaN(), 3.0}, {2.0, 5.0, qQNaN()}))); // one pair left
+    const PairedTTest twoLeft = pairedTTest({1.0, 2.0, qQNaN(), 4.0}, {2.0, 5.0, 3.0, 4.5});
+    QVERIFY(twoLeft.tested);
+    QCOMPARE(twoLeft.n, 3);
+}
+
+void TestStatistics::pairwiseTAsR()
+{
+    // pairwise.t.test(paired = TRUE, p.adjust.method = "bonferroni") on the bushtucker data,
+    // printed in github.com/snehilk1312/AppliedStatistics, R/statistics_with_R/
+    // 13_GLM4_RepeatedMeasuresDesigns/Markdown_notebook/01_RepeatedMeasuresAnova.md; the t and
+    // unadjusted p from statsmodels' allpairtest(ttest_rel, method = "bonf") in its Python twin.
+    const std::vector<PairwiseComparison> pairs = pairwiseComparisons(bushtucker, PairedTest::T);
+    QCOMPARE(pairs.size(), size_t(6));
+    const struct
+    {
+        int first, second;
+        const char16_t *t, *p, *adjusted;
+    } published[] = {
+        {0, 1, u"-4.7753", u"0.002", u"0.0121"},  {0, 2, u"-5.465", u"0.0009", u"0.0056"},
+        {0, 3, u"-1.3252", u"0.2267", u"1.0000"}, {1, 2, u"-0.104", u"0.9201", u"1.0000"},
+        {1, 3, u"1.1225", u"0.2987", u"1.0000"},  {2, 3, u"0.8919", u"0.402", u"1.0000"},
+    };
+    for (size_t i = 0; i < pairs.size(); ++i) {
+        const PairwiseComparison &pair = pairs[i];
+        QCOMPARE(pair.first, published[i].first);
+        QCOMPARE(pair.second, published[i].second);
+        QVERIFY(pair.tested);
+        const QString where = QStringLiteral("pair %1-%2 ").arg(pair.first).arg(pair.second);
+        const QString differences =
+            mismatch(where + u't', pair.statistic, published[i].t) +
+            mismatch(where + u'p', pair.p, published[i].p) +
+            mismatch(where + QStringLiteral("adjusted p"), pair.pAdjusted, published[i].adjusted);
+        QVERIFY2(differences.isEmpty(), qPrintable(differences));
+        QCOMPARE(pair.pAdjusted, std::min(1.0, 6 * pair.p));
+    }
+    QCOMPARE(pairs[0].meanDifference, 4.25 - 8.125); // kangaroo testicle - stick insect
+}
+
+void TestStatistics::pairwiseTFactorialCells()
+{
+    // The nine attitude cells as conditions: 36 pairs, Bonferroni times 36. R's matrix, as
+    // printed in that repository's
+    // 03_FactorialRepeatedMeasureAnova.md (row: later cell, column: earlier), read by row.
+    const char16_t *published[9][8] = {
+        {},
+        {u"0.00217"},
+        {u"0.01982", u"1.00000"},
+        {u"1.00000", u"0.01105", u"0.00310"},
+        {u"5.6e-08", u"0.00265", u"2.0e-07", u"1.9e-10"},
+        {u"0.39905", u"1.00000", u"1.00000", u"2.2e-05", u"2.3e-07"},
+        {u"1.00000", u"0.47584", u"1.00000", u"0.07300", u"1.3e-09", u"0.10547"},
+        {u"2.9e-06", u"0.18860", u"0.00010", u"3.2e-10", u"1.00000", u"1.1e-07", u"4.9e-11"},
+        {u"0.00212", u"1.00000", u"0.74838", u"4.3e-10", u"0.00041", u"8.1e-05", u"9.0e-07",
+         u"0.00068"},
+    };
+    const std::vector<PairwiseComparison> pairs = pairwiseComparisons(attitude, PairedTest::T);
+    QCOMPARE(pairs.size(), size_t(36));
+    for (const PairwiseComparison &pair : pairs) {
+        const QString difference =
+            mismatch(QStringLiteral("cells %1-%2 adjusted p").arg(pair.first).arg(pair.second),
+                     pair.pAdjusted, published[pair.second][pair.first]);
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));
+    }
+}
+
+void TestStatistics::pairwiseSignedRank()
+{
+    // Three conditions built on Hollander & Wolfe's depression scores (R's wilcox.test example:
+    // V = 40 for x - y, p-value = 0.03906): y - x has W+ = 45 - 40 = 5 and the same exact p,
+    // times the 3 comparisons. The third condition lies above x in every subject: W+ = 45,
+    // the most extreme of 2^9 sign patterns, p = 2 / 512.
+    const std::vector<double> x{1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
+    const std::vector<double> y{0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29};
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < x.size(); ++i)
+        rows.push_back({x[i], y[i], x[i] + 0.1 * double(i + 1)});
+    const std::vector<PairwiseComparison> pairs =
+        pairwiseComparisons(rows, PairedTest::SignedRank);
+    QCOMPARE(pairs.size(), size_t(3));
+    QCOMPARE(pairs[0].statistic, 5.0);
+    QVERIFY(std::abs(pairs[0].p - 0.0390625) < 1e-12);
+    QVERIFY(std::abs(pairs[0].pAdjusted - 3 * 0.0390625) < 1e-12);
+    QCOMPARE(pairs[1].statistic, 45.0);
+    QVERIFY(std::abs(pairs[1].pAdjusted - 3 * 2.0 / 512) < 1e-12);
+    std::vector<double> yToZ;
+    for (const std::vector<double> &row : rows)
+        yToZ.push_back(row[2] - row[1]);
+    QCOMPARE(pairs[2].p, signedRankTest(yToZ).p);
+    // A pair with no differences: untested, p 1 before and after the correction.
+    for (std::vector<double> &row : rows)
+        row[2] = row[1];
+    const PairwiseComparison same = pairwiseComparisons(rows, PairedTest::SignedRank)[2];
+    QVERIFY(!same.tested);
+    QCOMPARE(same.pAdjusted, 1.0);
+}
+
+void TestStatistics::pairwiseNothingToTest()
+{
+    QVERIFY(pairwiseComparisons({}, PairedTest::T).empty());
+    QVERIFY(pairwiseComparisons({{1, 2, 3}}, PairedTest::T).empty());
+    QVERIFY(pairwiseComparisons({{1}, {2}}, PairedTest::SignedRank).empty());
+    QVERIFY(pairwiseComparisons({{1, 2}, {2, qQNaN()}}, PairedTest::T).empty());
+    QVERIFY(pairwiseComparisons({{1, 2, 3}, {2, 3}}, PairedTest::SignedRank).empty());
+    // Constant differences: the t test has nothing to test, p stays 1 after the correction.
+    const std::vector<PairwiseComparison> constant =
+        pairwiseComparisons({{1, 3}, {2, 4}, {5, 7}}, PairedTest::T);
+    QCOMPARE(constant.size(), size_t(1));
+    QVERIFY(!constant[0].tested);
+    QCOMPARE(constant[0].pAdjusted, 1.0);
+    QCOMPARE(constant[0].meanDifference, 2.0);
 }
 
 QTEST_GUILESS_MAIN(TestStatistics)
