@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The statistics module: the Wilcoxon signed-rank test against published values and exact
 // enumeration, the bootstrap interval, paired comparisons of seeds, and the study analysis's
-// tests (Shapiro–Wilk, paired t, Bonferroni-corrected pairs), each
+// tests (Shapiro–Wilk, paired t, repeated-measures ANOVA, Bonferroni-corrected pairs), each
 // against published worked examples to the digits they were published with.
+#include "repeatedmeasures.h"
 #include "statistics.h"
 
 #include <QTest>
@@ -126,6 +127,12 @@ private slots:
     void pairedT_data();
     void pairedT();
     void pairedTNothingToTest();
+    void oneWayAsField();
+    void twoLevelsAsPairedT();
+    void twoWay_data();
+    void twoWay();
+    void oneDfEffectsAreSpherical();
+    void anovaNothingToTest();
     void pairwiseTAsR();
     void pairwiseTFactorialCells();
     void pairwiseSignedRank();
@@ -475,12 +482,216 @@ void TestStatistics::pairedTNothingToTest()
     QCOMPARE(twoLeft.n, 3);
 }
 
+void TestStatistics::oneWayAsField()
+{
+    // Field, Miles & Field (2012), chapter 13, ezANOVA on the bushtucker data as printed in
+    // github.com/snehilk1312/AppliedStatistics, R/statistics_with_R/13_GLM4_RepeatedMeasures
+    // Designs/Markdown_notebook/01_RepeatedMeasuresAnova.md: Animal DFn 3, DFd 21, SSn 83.125,
+    // SSd 153.375, F 3.793806, p 2.557030e-02; Mauchly W 0.136248, p 0.04684581; GGe
+    // 0.5328456, p[GG] 0.06258412; HFe 0.6657636, p[HF] 0.04833061. Field's SPSS output in
+    // the book: Mauchly's W .136, GG .533, HF .666, F(3, 21) = 3.79, p = .026.
+    const WithinEffect anova = repeatedMeasuresAnova(bushtucker);
+    QVERIFY(anova.tested);
+    QCOMPARE(anova.df1, 3);
+    QCOMPARE(anova.df2, 21);
+    COMPARE_PUBLISHED(anova.ssEffect, u"83.125");
+    COMPARE_PUBLISHED(anova.ssError, u"153.375");
+    COMPARE_PUBLISHED(anova.f, u"3.793806");
+    COMPARE_PUBLISHED(anova.p, u"2.557030e-02");
+    // pingouin's rm_anova in the Python twin of that notebook: np2 0.35148.
+    COMPARE_PUBLISHED(anova.partialEtaSquared, u"0.35148");
+    QVERIFY(anova.sphericity.tested);
+    COMPARE_PUBLISHED(anova.sphericity.w, u"0.136248");
+    QCOMPARE(anova.sphericity.df, 5);
+    COMPARE_PUBLISHED(anova.sphericity.p, u"0.04684581");
+    COMPARE_PUBLISHED(anova.sphericity.greenhouseGeisser, u"0.5328456");
+    COMPARE_PUBLISHED(anova.greenhouseGeisser.p, u"0.06258412");
+    COMPARE_PUBLISHED(anova.sphericity.huynhFeldt, u"0.6657636");
+    COMPARE_PUBLISHED(anova.huynhFeldt.p, u"0.04833061");
+    // The corrected dfs are the dfs times epsilon (SPSS: 1.60 and 11.19).
+    COMPARE_PUBLISHED(anova.greenhouseGeisser.df1, u"1.60");
+    COMPARE_PUBLISHED(anova.greenhouseGeisser.df2, u"11.19");
+    // The conditions in another order: the same ANOVA.
+    std::vector<std::vector<double>> swapped = bushtucker;
+    for (std::vector<double> &row : swapped)
+        std::swap(row[0], row[3]);
+    const WithinEffect again = repeatedMeasuresAnova(swapped);
+    QVERIFY(std::abs(again.f - anova.f) < 1e-9);
+    QVERIFY(std::abs(again.sphericity.w - anova.sphericity.w) < 1e-9);
+}
+
+void TestStatistics::twoLevelsAsPairedT()
+{
+    // With two conditions the ANOVA is the paired t test: F = t^2 with the same p (the
+    // leukocytes' published t = -2.1205, p = 0.08745), and sphericity holds trivially.
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < beforeSurgery.size(); ++i)
+        rows.push_back({beforeSurgery[i], afterSurgery[i]});
+    const WithinEffect anova = repeatedMeasuresAnova(rows);
+    QVERIFY(anova.tested);
+    QCOMPARE(anova.df1, 1);
+    QCOMPARE(anova.df2, 5);
+    QVERIFY2(std::abs(anova.f - 2.1205 * 2.1205) < 2 * 2.1205 * 0.00005,
+             qPrintable(QString::number(anova.f)));
+    COMPARE_PUBLISHED(anova.p, u"0.08745");
+    QVERIFY(!anova.sphericity.tested);
+    QCOMPARE(anova.sphericity.w, 1.0);
+    QCOMPARE(anova.sphericity.greenhouseGeisser, 1.0);
+    QCOMPARE(anova.greenhouseGeisser.p, anova.p);
+    QCOMPARE(anova.huynhFeldt.p, anova.p);
+}
+
+void TestStatistics::twoWay_data()
+{
+    QTest::addColumn<int>("effect"); // 0 drink (A), 1 imagery (B), 2 interaction
+    QTest::addColumn<int>("df1");
+    QTest::addColumn<QString>("ssEffect");
+    QTest::addColumn<QString>("ssError");
+    QTest::addColumn<QString>("f");
+    QTest::addColumn<QString>("p");
+    QTest::addColumn<QString>("w");
+    QTest::addColumn<QString>("mauchlyP");
+    QTest::addColumn<QString>("gg");
+    QTest::addColumn<QString>("ggP");
+    QTest::addColumn<QString>("hf");
+    QTest::addColumn<QString>("hfP");
+    // Field, Miles & Field (2012), chapter 13, ezANOVA(within = .(atd, drink), type = 3) on
+    // Attitude.dat as printed in github.com/snehilk1312/AppliedStatistics, R/statistics_with_R/
+    // 13_GLM4_RepeatedMeasuresDesigns/Markdown_notebook/03_FactorialRepeatedMeasureAnova.md.
+    // The book's SPSS output agrees: drink F(1.15, 21.93) = 5.11 with GG, imagery F(2, 38) =
+    // 122.56, interaction F(4, 76) = 17.16.
+    QTest::newRow("drink") << 0 << 2 << "2092.344"
+                           << "7785.878"
+                           << "5.105981"
+                           << "1.086293e-02"
+                           << "0.2672411"
+                           << "6.952302e-06"
+                           << "0.5771143"
+                           << "2.976868e-02"
+                           << "0.5907442"
+                           << "2.881391e-02";
+    QTest::newRow("imagery") << 1 << 2 << "21628.678"
+                             << "3352.878"
+                             << "122.564825"
+                             << "2.680197e-17"
+                             << "0.6621013"
+                             << "2.445230e-02"
+                             << "0.7474407"
+                             << "1.757286e-13"
+                             << "0.7968420"
+                             << "3.142804e-14";
+    QTest::newRow("drink x imagery") << 2 << 4 << "2624.422"
+                                     << "2906.689"
+                                     << "17.154922"
+                                     << "4.589040e-10"
+                                     << "0.5950440"
+                                     << "4.356587e-01"
+                                     << "0.7983979"
+                                     << "1.900249e-08"
+                                     << "0.9785878"
+                                     << "6.809640e-10";
+}
+
+void TestStatistics::twoWay()
+{
+    QFETCH(int, effect);
+    QFETCH(int, df1);
+    QFETCH(QString, ssEffect);
+    QFETCH(QString, ssError);
+    QFETCH(QString, f);
+    QFETCH(QString, p);
+    QFETCH(QString, w);
+    QFETCH(QString, mauchlyP);
+    QFETCH(QString, gg);
+    QFETCH(QString, ggP);
+    QFETCH(QString, hf);
+    QFETCH(QString, hfP);
+    const TwoWayWithinEffects anova = twoWayRepeatedMeasuresAnova(attitude, 3, 3);
+    const WithinEffect &e = effect == 0 ? anova.a : effect == 1 ? anova.b : anova.interaction;
+    QVERIFY(e.tested);
+    QCOMPARE(e.df1, df1);
+    QCOMPARE(e.df2, df1 * 19);
+    COMPARE_PUBLISHED(e.ssEffect, ssEffect);
+    COMPARE_PUBLISHED(e.ssError, ssError);
+    COMPARE_PUBLISHED(e.f, f);
+    COMPARE_PUBLISHED(e.p, p);
+    COMPARE_PUBLISHED(e.sphericity.w, w);
+    COMPARE_PUBLISHED(e.sphericity.p, mauchlyP);
+    COMPARE_PUBLISHED(e.sphericity.greenhouseGeisser, gg);
+    COMPARE_PUBLISHED(e.greenhouseGeisser.p, ggP);
+    COMPARE_PUBLISHED(e.sphericity.huynhFeldt, hf);
+    COMPARE_PUBLISHED(e.huynhFeldt.p, hfP);
+    QCOMPARE(e.sphericity.df, df1 * (df1 + 1) / 2 - 1);
+    // Partial eta squared from the published sums of squares.
+    QVERIFY(std::abs(e.partialEtaSquared -
+                     ssEffect.toDouble() / (ssEffect.toDouble() + ssError.toDouble())) < 1e-6);
+}
+
+void TestStatistics::oneDfEffectsAreSpherical()
+{
+    // A 2 x 2 (beer and wine with positive and negative imagery): every effect has 1 df, so
+    // Mauchly's test has nothing to test and the corrections change nothing. Each effect is
+    // then the paired t test of its contrast: A's of the subjects' means per drink.
+    std::vector<std::vector<double>> cells;
+    std::vector<double> beer, wine;
+    for (const std::vector<double> &row : attitude) {
+        cells.push_back({row[0], row[1], row[3], row[4]});
+        beer.push_back((row[0] + row[1]) / 2);
+        wine.push_back((row[3] + row[4]) / 2);
+    }
+    const TwoWayWithinEffects anova = twoWayRepeatedMeasuresAnova(cells, 2, 2);
+    for (const WithinEffect *e : {&anova.a, &anova.b, &anova.interaction}) {
+        QVERIFY(e->tested);
+        QCOMPARE(e->df1, 1);
+        QCOMPARE(e->df2, 19);
+        QVERIFY(!e->sphericity.tested);
+        QCOMPARE(e->sphericity.greenhouseGeisser, 1.0);
+        QCOMPARE(e->greenhouseGeisser.p, e->p);
+        QCOMPARE(e->huynhFeldt.df2, 19.0);
+    }
+    const PairedTTest drink = pairedTTest(beer, wine);
+    QVERIFY(std::abs(anova.a.f - drink.t * drink.t) < 1e-9 * anova.a.f);
+    QVERIFY(std::abs(anova.a.p - drink.p) < 1e-12);
+}
+
+void TestStatistics::anovaNothingToTest()
+{
+    const auto untested = [](const WithinEffect &e) {
+        return !e.tested && e.p == 1.0 && e.df1 == 0 && !e.sphericity.tested;
+    };
+    QVERIFY(untested(repeatedMeasuresAnova({})));
+    QVERIFY(untested(repeatedMeasuresAnova({{1, 2, 3}})));                  // one subject
+    QVERIFY(untested(repeatedMeasuresAnova({{1}, {2}, {3}})));              // one condition
+    QVERIFY(untested(repeatedMeasuresAnova({{1, 2, 3}, {1, qQNaN(), 3}}))); // a NaN
+    QVERIFY(untested(repeatedMeasuresAnova({{1, 2, 3}, {1, 2}})));          // a short row
+    // Every subject shifted alike: no error variance, F undefined.
+    QVERIFY(untested(repeatedMeasuresAnova({{1, 2, 4}, {11, 12, 14}, {-1, 0, 2}})));
+    QVERIFY(untested(repeatedMeasuresAnova({{5, 5}, {5, 5}})));
+    // Two-way: rows that do not hold a x b cells, or a factor with one level.
+    const auto untestedTwoWay = [&](const TwoWayWithinEffects &anova) {
+        return untested(anova.a) && untested(anova.b) && untested(anova.interaction);
+    };
+    QVERIFY(untestedTwoWay(twoWayRepeatedMeasuresAnova(attitude, 3, 2)));
+    QVERIFY(untestedTwoWay(twoWayRepeatedMeasuresAnova(attitude, 1, 9)));
+    QVERIFY(untestedTwoWay(twoWayRepeatedMeasuresAnova({attitude[0]}, 3, 3)));
+    // Fewer subjects than the effect has df: the F test stands, Mauchly's test cannot be had
+    // (a singular covariance), the epsilons stay within their bounds.
+    const WithinEffect few =
+        repeatedMeasuresAnova({{1, 4, 2, 8, 5}, {2, 3, 7, 1, 1}, {0, 5, 5, 2, 9}});
+    QVERIFY(few.tested);
+    QVERIFY(!few.sphericity.tested);
+    QCOMPARE(few.sphericity.p, 1.0);
+    QVERIFY(few.sphericity.greenhouseGeisser >= 0.25 && few.sphericity.greenhouseGeisser <= 1);
+    QVERIFY(few.sphericity.huynhFeldt >= 0.25 && few.sphericity.huynhFeldt <= 1);
+    QVERIFY(few.greenhouseGeisser.p >= 0 && few.greenhouseGeisser.p <= 1);
+    QVERIFY(few.huynhFeldt.p >= 0 && few.huynhFeldt.p <= 1);
+}
+
 void TestStatistics::pairwiseTAsR()
 {
     // pairwise.t.test(paired = TRUE, p.adjust.method = "bonferroni") on the bushtucker data,
-    // printed in github.com/snehilk1312/AppliedStatistics, R/statistics_with_R/
-    // 13_GLM4_RepeatedMeasuresDesigns/Markdown_notebook/01_RepeatedMeasuresAnova.md; the t and
-    // unadjusted p from statsmodels' allpairtest(ttest_rel, method = "bonf") in its Python twin.
+    // printed in the notebook of oneWayAsField; the t and unadjusted p from statsmodels'
+    // allpairtest(ttest_rel, method = "bonf") in its Python twin.
     const std::vector<PairwiseComparison> pairs = pairwiseComparisons(bushtucker, PairedTest::T);
     QCOMPARE(pairs.size(), size_t(6));
     const struct
@@ -511,8 +722,7 @@ void TestStatistics::pairwiseTAsR()
 void TestStatistics::pairwiseTFactorialCells()
 {
     // The nine attitude cells as conditions: 36 pairs, Bonferroni times 36. R's matrix, as
-    // printed in that repository's
-    // 03_FactorialRepeatedMeasureAnova.md (row: later cell, column: earlier), read by row.
+    // printed in the notebook of twoWay (row: later cell, column: earlier), read by row.
     const char16_t *published[9][8] = {
         {},
         {u"0.00217"},
