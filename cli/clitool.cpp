@@ -14,6 +14,7 @@
 #include "routecommand.h"
 #include "runcommand.h"
 #include "semhaprevision.h"
+#include "studycommand.h"
 #include "validatecommand.h"
 
 namespace semhap {
@@ -27,7 +28,7 @@ const QStringList &commandNames()
         QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
         QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("bandsim"),
         QStringLiteral("convert"), QStringLiteral("replay"),  QStringLiteral("export"),
-        QStringLiteral("listen")};
+        QStringLiteral("listen"),  QStringLiteral("study")};
     return names;
 }
 
@@ -61,6 +62,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<ExportCommand>(m_io);
     if (name == QLatin1String("listen"))
         return std::make_unique<ListenCommand>(m_io);
+    if (name == QLatin1String("study"))
+        return std::make_unique<StudyCommand>(m_io);
     return nullptr;
 }
 

@@ -11,7 +11,9 @@
 #include "sessionwriter.h"
 #include "simrun.h"
 
+#include <QDir>
 #include <QFile>
+#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>
@@ -152,6 +154,15 @@ void Command::flushOutputs()
         output->flush();
     if (m_io.outFile)
         m_io.outFile->flush();
+}
+
+QIODevice *Command::openOutputIn(const QString &dir, const QString &name)
+{
+    if (!QDir().mkpath(dir)) {
+        inputError(tr("%1: cannot create the folder").arg(dir));
+        return nullptr;
+    }
+    return openOutput(QDir(dir).filePath(name));
 }
 
 QIODevice *Command::openInput(const QString &path)

@@ -82,6 +82,8 @@ protected:
      * inputs or the session given so far, or another output. Null after printing why.
      */
     QIODevice *openOutput(const QString &path);
+    /** Opens `name` in the folder `dir` (made when missing) as openOutput() does. */
+    QIODevice *openOutputIn(const QString &dir, const QString &name);
     /**
      * Opens a stream, FILE (a regular file or a pipe) or standard input for `-`, for
      * reading, and keeps it from being an output. Null after printing why.

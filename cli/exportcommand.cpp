@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "exportcommand.h"
 
+#include "csvrow.h"
 #include "jsonlineswriter.h"
 #include "nametable.h"
 #include "sessionreader.h"
@@ -15,25 +16,8 @@ namespace semhap {
 
 namespace {
 
-/** A CSV field: quoted when it holds a separator, a quote or a line break (RFC 4180). */
-void appendText(QByteArray &row, const QString &text)
-{
-    const QByteArray utf8 = text.toUtf8();
-    if (utf8.contains(',') || utf8.contains('"') || utf8.contains('\n') || utf8.contains('\r')) {
-        row += '"';
-        row += QByteArray(utf8).replace('"', "\"\"");
-        row += '"';
-    } else {
-        row += utf8;
-    }
-}
-
-/** A CSV number, exact (shortest round trip); empty for none. */
-void appendNumber(QByteArray &row, double value)
-{
-    if (std::isfinite(value))
-        JsonLinesWriter::appendNumber(row, value);
-}
+using CsvRow::appendNumber;
+using CsvRow::appendText;
 
 void appendFingertip(QByteArray &row, const Fingertip &tip, const ActorTable &actors)
 {
@@ -98,15 +82,6 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     return ExitOk;
 }
 
-QIODevice *ExportCommand::create(const QString &dir, const QString &name)
-{
-    if (!QDir().mkpath(dir)) {
-        inputError(tr("%1: cannot create the folder").arg(dir));
-        return nullptr;
-    }
-    return openOutput(QDir(dir).filePath(name));
-}
-
 bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
 {
     QString error;
@@ -118,7 +93,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
         return false;
     };
 
-    QIODevice *frames = create(dir, QStringLiteral("contact_frames.csv"));
+    QIODevice *frames = openOutputIn(dir, QStringLiteral("contact_frames.csv"));
     if (!frames)
         return false;
     QByteArray header = "t,gripper";
@@ -128,7 +103,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     }
     frames->write(header + ",arrival\n");
     // The frames' named signals, tidy: one row per signal per frame.
-    QIODevice *signalRows = create(dir, QStringLiteral("signals.csv"));
+    QIODevice *signalRows = openOutputIn(dir, QStringLiteral("signals.csv"));
     if (!signalRows)
         return false;
     signalRows->write("t,gripper,signal,value\n");
@@ -159,7 +134,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     if (!framesOk)
         return fail();
 
-    QIODevice *events = create(dir, QStringLiteral("events.csv"));
+    QIODevice *events = openOutputIn(dir, QStringLiteral("events.csv"));
     if (!events)
         return false;
     events->write("t,gripper,node,detector,message,category,phase,intensity\n");
@@ -184,7 +159,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
 
     // One row per instant, one column per device channel: devices at other rates leave
     // their columns empty, which pandas and PlotJuggler read as missing.
-    QIODevice *devices = create(dir, QStringLiteral("device_frames.csv"));
+    QIODevice *devices = openOutputIn(dir, QStringLiteral("device_frames.csv"));
     if (!devices)
         return false;
     std::vector<int> firstColumn;
@@ -231,7 +206,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     if (!devicesOk || !writeInstant())
         return fail();
 
-    QIODevice *inputs = create(dir, QStringLiteral("operator_input.csv"));
+    QIODevice *inputs = openOutputIn(dir, QStringLiteral("operator_input.csv"));
     if (!inputs)
         return false;
     inputs->write("t,hand,x,y,z,qw,qx,qy,qz,grip\n");
@@ -257,7 +232,7 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
     if (!inputsOk)
         return fail();
 
-    QIODevice *metadata = create(dir, QStringLiteral("metadata.json"));
+    QIODevice *metadata = openOutputIn(dir, QStringLiteral("metadata.json"));
     if (!metadata)
         return false;
     metadata->write(QJsonDocument(session.info().toJson()).toJson(QJsonDocument::Indented));
@@ -266,10 +241,10 @@ bool ExportCommand::exportCsv(SessionReader &session, const QString &dir)
 
 bool ExportCommand::exportJsonLines(SessionReader &session, const QString &dir)
 {
-    QIODevice *framesOut = create(dir, QStringLiteral("frames.jsonl"));
-    QIODevice *eventsOut = framesOut ? create(dir, QStringLiteral("events.jsonl")) : nullptr;
+    QIODevice *framesOut = openOutputIn(dir, QStringLiteral("frames.jsonl"));
+    QIODevice *eventsOut = framesOut ? openOutputIn(dir, QStringLiteral("events.jsonl")) : nullptr;
     QIODevice *devicesOut =
-        eventsOut ? create(dir, QStringLiteral("device_frames.jsonl")) : nullptr;
+        eventsOut ? openOutputIn(dir, QStringLiteral("device_frames.jsonl")) : nullptr;
     if (!devicesOut)
         return false;
     JsonLinesWriter frames(framesOut);

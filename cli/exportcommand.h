@@ -27,8 +27,6 @@ protected:
 private:
     bool exportCsv(SessionReader &session, const QString &dir);
     bool exportJsonLines(SessionReader &session, const QString &dir);
-    /** Opens DIR/NAME for writing, creating DIR; null after an error line. */
-    QIODevice *create(const QString &dir, const QString &name);
 };
 
 } // namespace semhap

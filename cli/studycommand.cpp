@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: MIT
+#include "studycommand.h"
+
+#include "csvrow.h"
+#include "quitsignal.h"
+#include "studydatabase.h"
+#include "studysimulation.h"
+#include "studytable.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+/** The most simulated participants one call adds. */
+constexpr int MaxParticipants = 1000;
+
+} // namespace
+
+QString StudyCommand::summary() const
+{
+    return tr("A user study headless: simulate a protocol's participants, export a study's "
+              "tidy CSV, analyze a study or a CSV.");
+}
+
+void StudyCommand::configure(QCommandLineParser &parser)
+{
+    parser.setApplicationDescription(
+        tr("semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
+           "semhap study export STUDY.db --csv DIR\n\n"
+           "simulate: runs the protocol with simulated participants (the reactive operator, a\n"
+           "seed each) into a new study, the questionnaires left unanswered.\n"
+           "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
+           "DIR/trials.csv and DIR/answers.csv."));
+    parser.addPositionalArgument(QStringLiteral("action"), tr("simulate or export"));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("The protocol, or the study."));
+    parser.addOption({QStringLiteral("participants"),
+                      tr("simulate: how many participants (1 to %1).").arg(MaxParticipants),
+                      tr("N")});
+    parser.addOption({QStringLiteral("out"), tr("simulate: the new study's file."),
+                      tr("STUDY.db")});
+    parser.addOption({QStringLiteral("trial-seconds"),
+                      tr("simulate: cap every practice round and trial at S simulated seconds."),
+                      tr("S")});
+    parser.addOption({QStringLiteral("csv"), tr("export: the folder of the CSV files."),
+                      tr("DIR")});
+}
+
+int StudyCommand::execute(const QCommandLineParser &parser)
+{
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty())
+        return usageError(tr("an action is required: simulate or export"));
+    const QString action = positional.first();
+    if (positional.size() < 2)
+        return usageError(tr("%1 needs a file").arg(action));
+    if (positional.size() > 2)
+        return usageError(tr("unexpected argument '%1'").arg(positional.at(2)));
+    if (action == QLatin1String("simulate"))
+        return simulate(parser, positional.at(1));
+    if (action == QLatin1String("export")) {
+        if (!parser.isSet(QStringLiteral("csv")))
+            return usageError(tr("export needs --csv DIR"));
+        return exportCsv(positional.at(1), parser.value(QStringLiteral("csv")));
+    }
+    return usageError(tr("unknown action '%1': simulate or export").arg(action));
+}
+
+int StudyCommand::simulate(const QCommandLineParser &parser, const QString &protocolPath)
+{
+    if (!parser.isSet(QStringLiteral("out")))
+        return usageError(tr("simulate needs --out STUDY.db"));
+    double participants = 0;
+    if (!parser.isSet(QStringLiteral("participants")))
+        return usageError(tr("simulate needs --participants N"));
+    if (!numberOption(parser, QStringLiteral("participants"), &participants))
+        return ExitUsage;
+    if (participants < 1 || participants > MaxParticipants ||
+        participants != std::floor(participants))
+        return usageError(tr("--participants must be a whole number from 1 to %1")
+                              .arg(MaxParticipants));
+    StudySimulation::Options options;
+    options.participants = int(participants);
+    if (parser.isSet(QStringLiteral("trial-seconds"))) {
+        if (!numberOption(parser, QStringLiteral("trial-seconds"), &options.maxSeconds))
+            return ExitUsage;
+        if (!(options.maxSeconds > 0) || options.maxSeconds > StudyProtocol::MaxSeconds)
+            return usageError(tr("--trial-seconds must be more than 0 and at most %1")
+                                  .arg(StudyProtocol::MaxSeconds));
+    }
+    const QString out = parser.value(QStringLiteral("out"));
+    keepFromOutputs(protocolPath, Kept::Input);
+    if (!checkOutputPath(out))
+        return ExitInvalidInput;
+    StudyProtocol protocol;
+    LoadError loadError;
+    if (!StudyProtocol::read(protocolPath, &protocol, &loadError))
+        return inputError(loadError.toString());
+    QString error;
+    std::unique_ptr<StudyDatabase> study = StudyDatabase::create(out, protocol, &error);
+    if (!study)
+        return inputError(error);
+    QuitSignal::install();
+    options.cancelled = [] { return QuitSignal::requested(); };
+    options.progress = [&](const StudyDatabase::Trial &trial) {
+        const StudyProtocol::Condition &condition = protocol.conditions[size_t(trial.condition)];
+        m_out << QStringLiteral("%1 %2 %3: %4 s, %5 transferred\n")
+                     .arg(trial.participant, condition.id,
+                          trial.practice ? QStringLiteral("practice")
+                                         : QStringLiteral("trial %1").arg(trial.number))
+                     .arg(trial.seconds, 0, 'f', 1)
+                     .arg(trial.metrics.value(QLatin1String("cubes_transferred")).toInt());
+        flushOutputs(); // a pipe sees each run as it ends
+    };
+    if (!StudySimulation::run(*study, options, &error))
+        return inputError(error);
+    m_out << tr("%1: %2 simulated participants, %3 runs (sessions in %4)\n")
+                 .arg(out)
+                 .arg(options.participants)
+                 .arg(study->trials().size())
+                 .arg(QFileInfo(out).completeBaseName() + QStringLiteral(".sessions"));
+    return ExitOk;
+}
+
+int StudyCommand::exportCsv(const QString &path, const QString &dir)
+{
+    QString error;
+    std::unique_ptr<StudyDatabase> study =
+        StudyDatabase::open(path, StudyDatabase::Access::Read, &error);
+    if (!study)
+        return inputError(error);
+    keepFromOutputs(path, Kept::Input);
+    QIODevice *measures = openOutputIn(dir, QStringLiteral("measures.csv"));
+    if (!measures)
+        return ExitInvalidInput;
+    measures->write(StudyTable::fromStudy(*study).toCsv());
+    return writeLogs(*study, dir) ? ExitOk : ExitInvalidInput;
+}
+
+bool StudyCommand::writeLogs(const StudyDatabase &study, const QString &dir)
+{
+    const StudyProtocol &protocol = study.protocol();
+    const auto conditionId = [&](int condition) {
+        return condition >= 0 ? protocol.conditions[size_t(condition)].id : QString();
+    };
+    QIODevice *trials = openOutputIn(dir, QStringLiteral("trials.csv"));
+    if (!trials)
+        return false;
+    QByteArray csv = "participant,condition,phase,trial,status,reason,seconds,started,ended,"
+                     "session\n";
+    for (const StudyDatabase::Trial &t : study.trials()) {
+        for (const QString &field :
+             {t.participant, conditionId(t.condition),
+              t.practice ? QStringLiteral("practice") : QStringLiteral("trial")}) {
+            CsvRow::appendText(csv, field);
+            csv += ',';
+        }
+        if (!t.practice)
+            csv += QByteArray::number(t.number);
+        csv += ',';
+        CsvRow::appendText(csv, statusName(t.status));
+        csv += ',';
+        CsvRow::appendText(csv, t.reason);
+        csv += ',';
+        CsvRow::appendNumber(csv, t.seconds);
+        for (const QString &field : {t.started.toString(Qt::ISODateWithMs),
+                                     t.ended.toString(Qt::ISODateWithMs), t.session}) {
+            csv += ',';
+            CsvRow::appendText(csv, field);
+        }
+        csv += '\n';
+    }
+    trials->write(csv);
+    QIODevice *answers = openOutputIn(dir, QStringLiteral("answers.csv"));
+    if (!answers)
+        return false;
+    csv = "participant,condition,measure,value,text,answered\n";
+    for (const StudyDatabase::Answer &a : study.answers()) {
+        for (const QString &field : {a.participant, conditionId(a.condition), a.measure}) {
+            CsvRow::appendText(csv, field);
+            csv += ',';
+        }
+        CsvRow::appendNumber(csv, a.value);
+        csv += ',';
+        CsvRow::appendText(csv, a.text);
+        csv += ',';
+        CsvRow::appendText(csv, a.answered.toString(Qt::ISODateWithMs));
+        csv += '\n';
+    }
+    answers->write(csv);
+    return true;
+}
+
+} // namespace semhap

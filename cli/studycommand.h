@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "command.h"
+
+namespace semhap {
+
+class StudyDatabase;
+
+/**
+ * `semhap study`: a user study headless (docs/studies.md) — `simulate` runs a protocol with
+ * simulated participants into a new study, `export` writes a study's tidy CSV, `analyze`
+ * runs the analysis on a study or a tidy CSV.
+ */
+class StudyCommand : public Command
+{
+    Q_DECLARE_TR_FUNCTIONS(semhap::StudyCommand)
+
+public:
+    using Command::Command;
+    QString name() const override { return QStringLiteral("study"); }
+    QString summary() const override;
+
+protected:
+    void configure(QCommandLineParser &parser) override;
+    int execute(const QCommandLineParser &parser) override;
+
+private:
+    int simulate(const QCommandLineParser &parser, const QString &protocol);
+    int exportCsv(const QString &study, const QString &dir);
+    /** Writes the trials' log and every answer beside the tidy CSV. */
+    bool writeLogs(const StudyDatabase &study, const QString &dir);
+};
+
+} // namespace semhap

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "studydatabase.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <functional>
+
+namespace semhap {
+
+/**
+ * A study run headless with simulated participants (`semhap study simulate`,
+ * docs/studies.md): each participant, added in turn, takes their order of conditions and
+ * does every practice round and trial the protocol asks with the reactive operator, each
+ * recorded into a session and entered into the study as a real one would be. The
+ * questionnaires are left unanswered: nothing simulates what a person thinks.
+ */
+class StudySimulation
+{
+public:
+    struct Options
+    {
+        int participants = 20;
+        /** Caps every practice round and trial (simulated s); 0: the protocol's lengths. */
+        double maxSeconds = 0.0;
+        /** Asked between physics steps; true ends the simulation (the trial aborted). */
+        std::function<bool()> cancelled;
+        /** Told of each practice round and trial once it is entered into the study. */
+        std::function<void(const StudyDatabase::Trial &)> progress;
+    };
+
+    /**
+     * The seed of a participant's run: from their number (1-based) and the trial (0 for the
+     * practice round), the same for every condition, so conditions meet the same cubes and
+     * the same operator noise, as the seeds of `semhap compare` do.
+     */
+    static std::uint64_t seed(int participant, int trial);
+    /** The longest a practice round runs when its goal is a number of transfers only (s). */
+    static constexpr double PracticeLimit = 600.0;
+
+    /**
+     * Adds `options.participants` participants (P01, P02, …) to a study that has none and
+     * runs their steps; false with `error` (`FILE: reason`) when a run or a write failed or
+     * the simulation was cancelled.
+     */
+    static bool run(StudyDatabase &study, const Options &options, QString *error);
+};
+
+} // namespace semhap

@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: MIT
+#include "studytable.h"
+
+#include "csvrow.h"
+#include "inputfile.h"
+#include "studydatabase.h"
+
+#include <QJsonObject>
+#include <QMap>
+#include <QRegularExpression>
+
+#include <cmath>
+#include <map>
+
+namespace semhap {
+
+namespace {
+
+/** One CSV field and where it began. */
+struct Field
+{
+    QString text;
+    int column = 1;
+};
+
+/**
+ * Splits `bytes` into records of fields (RFC 4180: quoted fields may hold commas, quotes
+ * doubled, and line breaks); false with the place of an unterminated quote.
+ */
+bool splitCsv(const QByteArray &bytes, const QString &path, std::vector<std::vector<Field>> *records,
+              std::vector<int> *lines, LoadError *error)
+{
+    std::vector<Field> record;
+    QByteArray field;
+    int line = 1, column = 1, fieldColumn = 1, recordLine = 1;
+    bool quoted = false, wasQuoted = false;
+    const auto endField = [&] {
+        record.push_back({QString::fromUtf8(field), fieldColumn});
+        field.clear();
+        wasQuoted = false;
+    };
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        const char c = bytes[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < bytes.size() && bytes[i + 1] == '"') {
+                field += '"';
+                ++i;
+                column += 2;
+                continue;
+            }
+            if (c == '"')
+                quoted = false;
+            else
+                field += c;
+            if (c == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+            continue;
+        }
+        if (c == '"' && field.isEmpty() && !wasQuoted) {
+            quoted = wasQuoted = true;
+        } else if (c == ',') {
+            endField();
+            fieldColumn = column + 1;
+        } else if (c == '\n' || c == '\r') {
+            if (c == '\r' && i + 1 < bytes.size() && bytes[i + 1] == '\n')
+                ++i;
+            endField();
+            records->push_back(record);
+            lines->push_back(recordLine);
+            record.clear();
+            ++line;
+            recordLine = line;
+            column = 0;
+            fieldColumn = 1;
+        } else {
+            field += c;
+        }
+        ++column;
+    }
+    if (quoted) {
+        *error = LoadError::atLine(path, line, column, QStringLiteral("a quoted field never ends"));
+        return false;
+    }
+    if (!field.isEmpty() || !record.empty()) {
+        endField();
+        records->push_back(record);
+        lines->push_back(recordLine);
+    }
+    return true;
+}
+
+} // namespace
+
+void StudyTable::add(const QString &participant, const QString &condition, int trial,
+                     const QString &measure, double value)
+{
+    m_rows.push_back({participant, condition, trial, measure, value});
+}
+
+StudyTable StudyTable::fromStudy(const StudyDatabase &study)
+{
+    StudyTable table;
+    const StudyProtocol &protocol = study.protocol();
+    for (const StudyProtocol::Condition &condition : protocol.conditions) {
+        table.m_conditions.append(condition.id);
+        table.m_levels.append(condition.levels);
+    }
+    table.m_factors = protocol.factors;
+    for (const StudyDatabase::Trial &trial : study.trials()) {
+        if (trial.practice || trial.status != StudyDatabase::Status::Done)
+            continue;
+        for (auto it = trial.metrics.begin(); it != trial.metrics.end(); ++it) {
+            if (it.value().isDouble())
+                table.add(trial.participant, protocol.conditions[size_t(trial.condition)].id,
+                          trial.number, it.key(), it.value().toDouble());
+        }
+    }
+    // The answers; a complete NASA-TLX adds its raw score.
+    std::map<std::pair<QString, int>, std::vector<double>> tlx;
+    for (const StudyDatabase::Answer &answer : study.answers()) {
+        if (std::isnan(answer.value) || answer.condition < 0)
+            continue;
+        table.add(answer.participant, protocol.conditions[size_t(answer.condition)].id, 0,
+                  answer.measure, answer.value);
+        if (StudyProtocol::tlxSubscales().contains(answer.measure))
+            tlx[{answer.participant, answer.condition}].push_back(answer.value);
+    }
+    for (const auto &[key, values] : tlx) {
+        if (values.size() != size_t(StudyProtocol::tlxSubscales().size()))
+            continue;
+        double sum = 0;
+        for (double v : values)
+            sum += v;
+        table.add(key.first, protocol.conditions[size_t(key.second)].id, 0,
+                  QLatin1String(RawTlx), sum / double(values.size()));
+    }
+    return table;
+}
+
+bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
+{
+    QByteArray bytes;
+    QString reason;
+    if (!InputFile::readDocument(path, &bytes, &reason)) {
+        *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + reason);
+        return false;
+    }
+    if (bytes.startsWith("\xEF\xBB\xBF")) // a spreadsheet's byte-order mark
+        bytes.remove(0, 3);
+    std::vector<std::vector<Field>> records;
+    std::vector<int> lines;
+    if (!splitCsv(bytes, path, &records, &lines, error))
+        return false;
+    const QStringList header = QString::fromLatin1(Header).split(QLatin1Char(','));
+    const auto fail = [&](size_t record, int column, const QString &why) {
+        *error = LoadError::atLine(path, lines[record], column, why);
+        return false;
+    };
+    if (records.empty())
+        return fail(0, 1, QStringLiteral("empty; the first line must be %1").arg(QLatin1String(Header)));
+    QStringList names;
+    for (const Field &f : records[0])
+        names.append(f.text.trimmed());
+    if (names != header)
+        return fail(0, 1, QStringLiteral("the header must be exactly %1, got %2")
+                              .arg(QLatin1String(Header), names.join(QLatin1Char(','))));
+    StudyTable table;
+    static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,64}$"));
+    for (size_t r = 1; r < records.size(); ++r) {
+        const std::vector<Field> &f = records[r];
+        if (f.size() == 1 && f[0].text.trimmed().isEmpty())
+            continue; // a blank line
+        if (f.size() != 5)
+            return fail(r, 1, QStringLiteral("expected 5 fields, got %1").arg(f.size()));
+        for (int i : {0, 1, 3}) {
+            if (!idPattern.match(f[size_t(i)].text).hasMatch())
+                return fail(r, f[size_t(i)].column,
+                            QStringLiteral("%1 must be 1 to 64 of A-Z a-z 0-9 _ . -, got '%2'")
+                                .arg(header[i], f[size_t(i)].text));
+        }
+        int trial = 0;
+        if (!f[2].text.isEmpty() && f[2].text != QLatin1String("NA")) {
+            bool ok = false;
+            trial = f[2].text.toInt(&ok);
+            if (!ok || trial < 1 || trial > 1000)
+                return fail(r, f[2].column,
+                            QStringLiteral("trial must be a whole number from 1 to 1000 or "
+                                           "empty, got '%1'")
+                                .arg(f[2].text));
+        }
+        const QString text = f[4].text.trimmed();
+        if (text.isEmpty() || text == QLatin1String("NA"))
+            continue;
+        bool ok = false;
+        const double value = text.toDouble(&ok);
+        if (!ok || !std::isfinite(value))
+            return fail(r, f[4].column,
+                        QStringLiteral("value must be a number, empty or NA, got '%1'").arg(text));
+        if (!table.m_conditions.contains(f[1].text))
+            table.m_conditions.append(f[1].text);
+        table.add(f[0].text, f[1].text, trial, f[3].text, value);
+    }
+    *out = table;
+    return true;
+}
+
+QByteArray StudyTable::toCsv() const
+{
+    QByteArray csv = QByteArray(Header) + '\n';
+    for (const Row &row : m_rows) {
+        CsvRow::appendText(csv, row.participant);
+        csv += ',';
+        CsvRow::appendText(csv, row.condition);
+        csv += ',';
+        if (row.trial > 0)
+            csv += QByteArray::number(row.trial);
+        csv += ',';
+        CsvRow::appendText(csv, row.measure);
+        csv += ',';
+        CsvRow::appendNumber(csv, row.value);
+        csv += '\n';
+    }
+    return csv;
+}
+
+QStringList StudyTable::measures() const
+{
+    QStringList names;
+    for (const Row &row : m_rows) {
+        if (!names.contains(row.measure))
+            names.append(row.measure);
+    }
+    return names;
+}
+
+StudyTable::Matrix StudyTable::matrix(const QString &measure) const
+{
+    // Sum and count per participant and condition, participants in the order first seen.
+    QStringList participants;
+    QMap<QString, std::vector<std::pair<double, int>>> cells;
+    const size_t k = size_t(m_conditions.size());
+    for (const Row &row : m_rows) {
+        if (row.measure != measure)
+            continue;
+        if (!cells.contains(row.participant)) {
+            participants.append(row.participant);
+            cells.insert(row.participant, std::vector<std::pair<double, int>>(k, {0.0, 0}));
+        }
+        auto &cell = cells[row.participant][size_t(m_conditions.indexOf(row.condition))];
+        cell.first += row.value;
+        ++cell.second;
+    }
+    Matrix matrix;
+    for (const QString &participant : participants) {
+        std::vector<double> means;
+        for (const auto &[sum, count] : cells.value(participant)) {
+            if (count > 0)
+                means.push_back(sum / count);
+        }
+        if (means.size() == k) {
+            matrix.participants.append(participant);
+            matrix.rows.push_back(means);
+        } else {
+            matrix.incomplete.append(participant);
+        }
+    }
+    return matrix;
+}
+
+} // namespace semhap

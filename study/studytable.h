@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "loaderror.h"
+#include "studyprotocol.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace semhap {
+
+class StudyDatabase;
+
+/**
+ * A study's numbers in tidy form (docs/studies.md, "Export"): one row per participant,
+ * condition, trial and measure — what `semhap study export` writes and `study analyze`
+ * reads, from a study or from a CSV collected elsewhere.
+ */
+class StudyTable
+{
+public:
+    /** One observation. */
+    struct Row
+    {
+        QString participant;
+        QString condition;
+        int trial = 0; ///< 1..trials; 0 for a questionnaire's answer
+        QString measure;
+        double value = 0.0;
+    };
+
+    /** One measure as the analysis takes it: each participant's mean per condition. */
+    struct Matrix
+    {
+        QStringList participants;              ///< those with a value in every condition
+        std::vector<std::vector<double>> rows; ///< per participant, per condition
+        QStringList incomplete;                ///< participants left out: a condition missing
+    };
+
+    /** The CSV's one header line. */
+    static constexpr const char *Header = "participant,condition,trial,measure,value";
+    /** The raw NASA-TLX score's measure: the mean of the six subscales. */
+    static constexpr const char *RawTlx = "tlx.raw";
+
+    /**
+     * The study's rows: each done trial's numeric metrics (practice rounds, aborted,
+     * invalid and interrupted trials left out), each numeric answer, and the raw TLX of each
+     * complete NASA-TLX.
+     */
+    static StudyTable fromStudy(const StudyDatabase &study);
+    /**
+     * Reads a tidy CSV (the header above, then a row per observation; an empty value or
+     * `NA` is no observation); false with `FILE:LINE:COL: reason`.
+     */
+    static bool readCsv(const QString &path, StudyTable *out, LoadError *error);
+
+    /** The CSV, header first. */
+    QByteArray toCsv() const;
+
+    const std::vector<Row> &rows() const { return m_rows; }
+    /** The conditions: the protocol's order from a study, first seen from a CSV. */
+    const QStringList &conditions() const { return m_conditions; }
+    /** The measures, in the order first seen. */
+    QStringList measures() const;
+    /** The factorial design, when the study's protocol declares one (a CSV has none). */
+    const std::vector<StudyProtocol::Factor> &factors() const { return m_factors; }
+    /** Condition `i`'s level of each factor. */
+    QStringList levels(int condition) const { return m_levels.value(condition); }
+
+    /** Each participant's mean over trials of `measure` per condition (conditions()). */
+    Matrix matrix(const QString &measure) const;
+
+private:
+    void add(const QString &participant, const QString &condition, int trial,
+             const QString &measure, double value);
+
+    std::vector<Row> m_rows;
+    QStringList m_conditions;
+    std::vector<StudyProtocol::Factor> m_factors;
+    QList<QStringList> m_levels;
+};
+
+} // namespace semhap

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// `semhap study` (docs/studies.md): a protocol simulated with 20 participants into a study,
+// its tidy export, a kill in the middle, and the refusals.
+#include "clirun.h"
+#include "sessionreader.h"
+#include "studydatabase.h"
+#include "studysimulation.h"
+#include "studytable.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <csignal>
+#include <set>
+
+using namespace semhap;
+
+namespace {
+
+QString example(const char *name)
+{
+    return QStringLiteral(SEMHAP_RESOURCES "/studies/") + QLatin1String(name);
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+/** The trial seconds CI can afford: 20 participants x 4 conditions x 3 runs. */
+constexpr double TrialSeconds = 6.0;
+
+} // namespace
+
+class TestStudyCli : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void simulatedStudyFollowsTheProtocol();
+    void exportIsTidy();
+    void aKillLosesAtMostTheRunningTrial();
+    void badCallsAreRefused_data();
+    void badCallsAreRefused();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_study;
+    CliResult m_simulated;
+};
+
+void TestStudyCli::initTestCase()
+{
+    m_study = m_dir.filePath(QStringLiteral("unimanual.db"));
+    m_simulated = semhapRun({QStringLiteral("study"), QStringLiteral("simulate"),
+                             example("unimanual.json"), QStringLiteral("--participants"),
+                             QStringLiteral("20"), QStringLiteral("--out"), m_study,
+                             QStringLiteral("--trial-seconds"), QString::number(TrialSeconds)});
+    QVERIFY2(m_simulated.code == 0, m_simulated.err.constData());
+}
+
+void TestStudyCli::simulatedStudyFollowsTheProtocol()
+{
+    QString error;
+    auto study = StudyDatabase::open(m_study, StudyDatabase::Access::Read, &error);
+    QVERIFY2(study, qPrintable(error));
+    const StudyProtocol &protocol = study->protocol();
+    const QStringList participants = study->participants();
+    QCOMPARE(participants.size(), 20);
+    QCOMPARE(participants.first(), QStringLiteral("P01"));
+    QCOMPARE(participants.last(), QStringLiteral("P20"));
+    const std::vector<StudyDatabase::Trial> trials = study->trials();
+    // Each participant: per condition a practice round and two trials, all done.
+    QCOMPARE(int(trials.size()), 20 * 4 * 3);
+    QVERIFY(m_simulated.out.contains("20 simulated participants, 240 runs"));
+    for (int p = 0; p < 20; ++p) {
+        const QString id = participants[p];
+        QCOMPARE(study->order(id), protocol.order().order(p));
+        std::vector<int> met; // the conditions in the order the trials ran
+        for (const StudyDatabase::Trial &t : study->trials(id)) {
+            QCOMPARE(t.status, StudyDatabase::Status::Done);
+            QVERIFY(t.seconds <= TrialSeconds + 1e-6);
+            QVERIFY(t.metrics.contains(QLatin1String("cubes_transferred")));
+            if (met.empty() || met.back() != t.condition)
+                met.push_back(t.condition);
+        }
+        QCOMPARE(met, study->order(id));
+        // The questionnaires are left for people: that is the step each stops at.
+        QCOMPARE(study->nextStep(id).kind, StudyProtocol::Step::Kind::Questionnaire);
+    }
+    // A trial's session is tagged with its place in the study and ran the condition's
+    // router with the participant's seed.
+    const StudyDatabase::Trial &trial = trials[4]; // P01's second condition, trial 1
+    QVERIFY(!trial.practice);
+    std::unique_ptr<SessionReader> session = SessionReader::open(
+        QFileInfo(m_study).absoluteDir().filePath(trial.session), &error);
+    QVERIFY2(session, qPrintable(error));
+    const SessionInfo &info = session->info();
+    QCOMPARE(info.extra.value("participant"), QStringLiteral("P01"));
+    QCOMPARE(info.extra.value("condition"), protocol.conditions[size_t(trial.condition)].id);
+    QCOMPARE(info.extra.value("phase"), QStringLiteral("trial"));
+    QCOMPARE(info.extra.value("trial"), QStringLiteral("1"));
+    QCOMPARE(info.routerSource, protocol.conditions[size_t(trial.condition)].router);
+    QCOMPARE(info.operatorName, QStringLiteral("reactive"));
+    QCOMPARE(info.seed, QString::number(StudySimulation::seed(1, 1)));
+    // Participants differ from one another; conditions of one participant share the seeds.
+    QVERIFY(StudySimulation::seed(1, 1) != StudySimulation::seed(2, 1));
+}
+
+void TestStudyCli::exportIsTidy()
+{
+    const QString dir = m_dir.filePath(QStringLiteral("export"));
+    const CliResult r = semhapRun(
+        {QStringLiteral("study"), QStringLiteral("export"), m_study, QStringLiteral("--csv"), dir});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QList<QByteArray> lines = readAll(dir + QStringLiteral("/measures.csv")).split('\n');
+    QCOMPARE(lines.first(), QByteArray("participant,condition,trial,measure,value"));
+    // Every timed trial's numeric metrics, no practice round.
+    QString error;
+    auto study = StudyDatabase::open(m_study, StudyDatabase::Access::Read, &error);
+    int expected = 0;
+    std::set<QString> seen;
+    for (const StudyDatabase::Trial &t : study->trials()) {
+        if (t.practice)
+            continue;
+        for (auto it = t.metrics.begin(); it != t.metrics.end(); ++it) {
+            if (!it.value().isDouble())
+                continue;
+            ++expected;
+            const QString row = QStringLiteral("%1,%2,%3,%4,")
+                                    .arg(t.participant,
+                                         study->protocol().conditions[size_t(t.condition)].id)
+                                    .arg(t.number)
+                                    .arg(it.key());
+            seen.insert(row + QString::number(it.value().toDouble(), 'g', 17));
+        }
+    }
+    QCOMPARE(lines.size() - 2, expected); // the header, and the empty end after the last \n
+    for (int i = 1; i < lines.size() - 1; ++i) {
+        const QList<QByteArray> f = lines[i].split(',');
+        QCOMPARE(f.size(), 5);
+        const QString key = QStringLiteral("%1,%2,%3,%4,%5")
+                                .arg(QString::fromUtf8(f[0]), QString::fromUtf8(f[1]),
+                                     QString::fromUtf8(f[2]), QString::fromUtf8(f[3]))
+                                .arg(QString::number(f[4].toDouble(), 'g', 17));
+        QVERIFY2(seen.count(key), qPrintable(key));
+    }
+    // The export reads back as it was written.
+    StudyTable table;
+    LoadError loadError;
+    QVERIFY2(StudyTable::readCsv(dir + QStringLiteral("/measures.csv"), &table, &loadError),
+             qPrintable(loadError.toString()));
+    QCOMPARE(int(table.rows().size()), expected);
+    QCOMPARE(table.toCsv(), StudyTable::fromStudy(*study).toCsv());
+    const QList<QByteArray> trials = readAll(dir + QStringLiteral("/trials.csv")).split('\n');
+    QCOMPARE(trials.size() - 2, 240);
+    QVERIFY(trials[1].startsWith("P01,"));
+    QVERIFY(trials[1].contains(",practice,,done,"));
+}
+
+void TestStudyCli::aKillLosesAtMostTheRunningTrial()
+{
+    const QString path = m_dir.filePath(QStringLiteral("killed.db"));
+    QProcess process;
+    process.start(QStringLiteral(SEMHAP_CLI_BINARY),
+                  {QStringLiteral("study"), QStringLiteral("simulate"), example("unimanual.json"),
+                   QStringLiteral("--participants"), QStringLiteral("2"), QStringLiteral("--out"),
+                   path, QStringLiteral("--trial-seconds"), QStringLiteral("20")});
+    QVERIFY(process.waitForStarted());
+    // Three runs done, the fourth running: kill it there, as a power cut would.
+    QByteArray out;
+    QTRY_VERIFY_WITH_TIMEOUT((out += process.readAllStandardOutput(), out.count('\n') >= 3),
+                             60000);
+    const int lines = int(out.count('\n'));
+    QCOMPARE(process.state(), QProcess::Running);
+    QVERIFY(process.processId() > 0); // never kill(0): that is this test's own group
+    ::kill(pid_t(process.processId()), SIGKILL);
+    QVERIFY(process.waitForFinished());
+    QString error;
+    auto study = StudyDatabase::open(path, StudyDatabase::Access::Write, &error);
+    QVERIFY2(study, qPrintable(error)); // the dead process's lock is taken over
+    const std::vector<StudyDatabase::Trial> trials = study->trials();
+    int done = 0, interrupted = 0;
+    for (const StudyDatabase::Trial &t : trials) {
+        done += t.status == StudyDatabase::Status::Done;
+        interrupted += t.status == StudyDatabase::Status::Interrupted;
+    }
+    QVERIFY(done >= lines);
+    QVERIFY(interrupted <= 1);
+    QCOMPARE(done + interrupted, int(trials.size()));
+    // The next step of the participant is the one that was running.
+    const StudyDatabase::Trial &last = trials.back();
+    if (last.status == StudyDatabase::Status::Interrupted) {
+        const StudyProtocol::Step next = study->nextStep(last.participant);
+        QCOMPARE(next.condition, last.condition);
+        QCOMPARE(next.trial, last.number);
+    }
+    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("check"));
+    db.setDatabaseName(path);
+    QVERIFY(db.open());
+    QSqlQuery check(db);
+    QVERIFY(check.exec(QStringLiteral("PRAGMA integrity_check")) && check.next());
+    QCOMPARE(check.value(0).toString(), QStringLiteral("ok"));
+}
+
+void TestStudyCli::badCallsAreRefused_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("error");
+    const QString out = QStringLiteral("OUT/new.db");
+    QTest::newRow("no action") << QStringList{} << 2 << "an action is required";
+    QTest::newRow("unknown action") << QStringList{"analyse", "x.db"} << 2 << "unknown action";
+    QTest::newRow("no --out") << QStringList{"simulate", example("unimanual.json"),
+                                             "--participants", "2"}
+                              << 2 << "simulate needs --out";
+    QTest::newRow("no participants")
+        << QStringList{"simulate", example("unimanual.json"), "--participants", "0", "--out", out}
+        << 2 << "--participants must be a whole number from 1 to 1000";
+    QTest::newRow("trial seconds 0")
+        << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out", out,
+                       "--trial-seconds", "0"}
+        << 2 << "--trial-seconds must be more than 0";
+    QTest::newRow("the study exists")
+        << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out",
+                       "STUDY"}
+        << 1 << "already exists";
+    QTest::newRow("the protocol as the output")
+        << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out",
+                       example("unimanual.json")}
+        << 1 << "cannot write: it is the same file as the input";
+    QTest::newRow("a bad protocol")
+        << QStringList{"simulate", QStringLiteral(SEMHAP_TEST_DATA "/bad.json"), "--participants",
+                       "2", "--out", out}
+        << 1 << "bad.json: /conditions/0/router: C9: no such router preset";
+    QTest::newRow("export of no study")
+        << QStringList{"export", example("unimanual.json"), "--csv", "OUT"} << 1
+        << "not a semhap study";
+    QTest::newRow("export without --csv") << QStringList{"export", "STUDY"} << 2
+                                          << "export needs --csv DIR";
+}
+
+void TestStudyCli::badCallsAreRefused()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, code);
+    QFETCH(QString, error);
+    const QString out = m_dir.filePath(QStringLiteral("refused"));
+    QDir().mkpath(out);
+    for (QString &arg : args) {
+        arg.replace(QLatin1String("OUT"), out);
+        if (arg == QLatin1String("STUDY"))
+            arg = m_study;
+    }
+    const QByteArray before = readAll(m_study);
+    const CliResult r = semhapRun(QStringList{QStringLiteral("study")} + args);
+    QCOMPARE(r.code, code);
+    QVERIFY2(QString::fromUtf8(r.err).contains(error), r.err.constData());
+    QCOMPARE(readAll(m_study), before); // nothing written over
+    QVERIFY(!QFileInfo::exists(out + QStringLiteral("/new.db")));
+}
+
+QTEST_GUILESS_MAIN(TestStudyCli)
+#include "tst_studycli.moc"
