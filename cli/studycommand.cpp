@@ -3,12 +3,14 @@
 
 #include "csvrow.h"
 #include "quitsignal.h"
+#include "studyanalysis.h"
 #include "studydatabase.h"
 #include "studysimulation.h"
 #include "studytable.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonDocument>
 
 #include <cmath>
 
@@ -31,13 +33,17 @@ void StudyCommand::configure(QCommandLineParser &parser)
 {
     parser.setApplicationDescription(
         tr("semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
-           "semhap study export STUDY.db --csv DIR\n\n"
+           "semhap study export STUDY.db --csv DIR\n"
+           "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
            "simulate: runs the protocol with simulated participants (the reactive operator, a\n"
            "seed each) into a new study, the questionnaires left unanswered.\n"
            "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
-           "DIR/trials.csv and DIR/answers.csv."));
-    parser.addPositionalArgument(QStringLiteral("action"), tr("simulate or export"));
-    parser.addPositionalArgument(QStringLiteral("file"), tr("The protocol, or the study."));
+           "DIR/trials.csv and DIR/answers.csv.\n"
+           "analyze: the analysis of each measure (docs/studies.md) as Markdown on standard\n"
+           "output, as JSON with --json, or as DIR/report.md with a box plot per measure."));
+    parser.addPositionalArgument(QStringLiteral("action"), tr("simulate, export or analyze"));
+    parser.addPositionalArgument(QStringLiteral("file"),
+                                 tr("The protocol, the study, or (analyze) a tidy CSV."));
     parser.addOption({QStringLiteral("participants"),
                       tr("simulate: how many participants (1 to %1).").arg(MaxParticipants),
                       tr("N")});
@@ -48,13 +54,20 @@ void StudyCommand::configure(QCommandLineParser &parser)
                       tr("S")});
     parser.addOption({QStringLiteral("csv"), tr("export: the folder of the CSV files."),
                       tr("DIR")});
+    parser.addOption({QStringLiteral("report"),
+                      tr("analyze: write report.md and a box plot per measure into DIR."),
+                      tr("DIR")});
+    parser.addOption({QStringLiteral("json"), tr("analyze: print the statistics as JSON.")});
+    parser.addOption({QStringLiteral("measure"),
+                      tr("analyze: only this measure (repeatable); default: every one."),
+                      tr("NAME")});
 }
 
 int StudyCommand::execute(const QCommandLineParser &parser)
 {
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return usageError(tr("an action is required: simulate or export"));
+        return usageError(tr("an action is required: simulate, export or analyze"));
     const QString action = positional.first();
     if (positional.size() < 2)
         return usageError(tr("%1 needs a file").arg(action));
@@ -67,7 +80,9 @@ int StudyCommand::execute(const QCommandLineParser &parser)
             return usageError(tr("export needs --csv DIR"));
         return exportCsv(positional.at(1), parser.value(QStringLiteral("csv")));
     }
-    return usageError(tr("unknown action '%1': simulate or export").arg(action));
+    if (action == QLatin1String("analyze"))
+        return analyze(parser, positional.at(1));
+    return usageError(tr("unknown action '%1': simulate, export or analyze").arg(action));
 }
 
 int StudyCommand::simulate(const QCommandLineParser &parser, const QString &protocolPath)
@@ -193,6 +208,55 @@ bool StudyCommand::writeLogs(const StudyDatabase &study, const QString &dir)
     }
     answers->write(csv);
     return true;
+}
+
+int StudyCommand::analyze(const QCommandLineParser &parser, const QString &input)
+{
+    StudyTable table;
+    QString name;
+    if (input.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+        LoadError loadError;
+        if (!StudyTable::readCsv(input, &table, &loadError))
+            return inputError(loadError.toString());
+        name = QFileInfo(input).fileName();
+    } else {
+        QString error;
+        std::unique_ptr<StudyDatabase> study =
+            StudyDatabase::open(input, StudyDatabase::Access::Read, &error);
+        if (!study)
+            return inputError(error);
+        table = StudyTable::fromStudy(*study);
+        name = study->protocol().name;
+    }
+    keepFromOutputs(input, Kept::Input);
+    const QStringList measures = parser.values(QStringLiteral("measure"));
+    const QStringList known = table.measures();
+    for (const QString &measure : measures) {
+        if (!known.contains(measure))
+            return inputError(tr("%1: no measure '%2' (measures: %3)")
+                                  .arg(input, measure, known.join(QStringLiteral(", "))));
+    }
+    StudyAnalysis analysis = StudyAnalysis::run(table, measures);
+    analysis.source = QFileInfo(input).fileName();
+    analysis.name = tr("Analysis: %1").arg(name);
+    if (parser.isSet(QStringLiteral("report"))) {
+        const QString dir = parser.value(QStringLiteral("report"));
+        QIODevice *report = openOutputIn(dir, QStringLiteral("report.md"));
+        if (!report)
+            return ExitInvalidInput;
+        report->write(analysis.markdown());
+        for (const StudyAnalysis::Measure &m : analysis.measures) {
+            QIODevice *plot = openOutputIn(dir, StudyAnalysis::plotFile(m.name));
+            if (!plot)
+                return ExitInvalidInput;
+            plot->write(analysis.boxPlotSvg(m));
+        }
+    }
+    if (parser.isSet(QStringLiteral("json")))
+        m_out << QJsonDocument(analysis.toJson()).toJson(QJsonDocument::Indented);
+    else if (!parser.isSet(QStringLiteral("report")))
+        m_out << QString::fromUtf8(analysis.markdown());
+    return ExitOk;
 }
 
 } // namespace semhap

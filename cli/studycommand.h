@@ -28,6 +28,7 @@ protected:
 private:
     int simulate(const QCommandLineParser &parser, const QString &protocol);
     int exportCsv(const QString &study, const QString &dir);
+    int analyze(const QCommandLineParser &parser, const QString &input);
     /** Writes the trials' log and every answer beside the tidy CSV. */
     bool writeLogs(const StudyDatabase &study, const QString &dir);
 };

@@ -361,4 +361,35 @@ Summary summarise(const std::vector<double> &values)
     return summary;
 }
 
+BoxPlot boxPlot(const std::vector<double> &values)
+{
+    std::vector<double> sorted;
+    for (double v : values) {
+        if (!std::isnan(v))
+            sorted.push_back(v);
+    }
+    BoxPlot box;
+    if (sorted.empty()) {
+        box.low = box.q1 = box.median = box.q3 = box.high = NaN;
+        return box;
+    }
+    std::sort(sorted.begin(), sorted.end());
+    const size_t n = sorted.size();
+    box.q1 = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, n, 0.25);
+    box.median = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, n, 0.5);
+    box.q3 = gsl_stats_quantile_from_sorted_data(sorted.data(), 1, n, 0.75);
+    const double reach = 1.5 * (box.q3 - box.q1);
+    box.low = box.q1;
+    box.high = box.q3;
+    for (double v : sorted) {
+        if (v < box.q1 - reach || v > box.q3 + reach)
+            box.outliers.push_back(v);
+        else {
+            box.low = std::min(box.low, v);
+            box.high = std::max(box.high, v);
+        }
+    }
+    return box;
+}
+
 } // namespace semhap

@@ -157,4 +157,20 @@ struct Summary
 };
 Summary summarise(const std::vector<double> &values);
 
+/**
+ * What a box plot draws of some values: the quartiles (R's default quantiles, type 7), the
+ * whiskers' ends (the most extreme values within 1.5 interquartile ranges of the box, as
+ * Tukey drew them) and the values beyond them. All NaN when there are no values.
+ */
+struct BoxPlot
+{
+    double low = 0.0;
+    double q1 = 0.0;
+    double median = 0.0;
+    double q3 = 0.0;
+    double high = 0.0;
+    std::vector<double> outliers;
+};
+BoxPlot boxPlot(const std::vector<double> &values);
+
 } // namespace semhap

@@ -157,7 +157,7 @@ bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
         return false;
     const QStringList header = QString::fromLatin1(Header).split(QLatin1Char(','));
     const auto fail = [&](size_t record, int column, const QString &why) {
-        *error = LoadError::atLine(path, lines[record], column, why);
+        *error = LoadError::atLine(path, record < lines.size() ? lines[record] : 1, column, why);
         return false;
     };
     if (records.empty())

@@ -137,6 +137,7 @@ private slots:
     void pairwiseTFactorialCells();
     void pairwiseSignedRank();
     void pairwiseNothingToTest();
+    void boxPlotAsGgplot();
 };
 
 void TestStatistics::exactSignedRank_data()
@@ -790,6 +791,30 @@ void TestStatistics::pairwiseNothingToTest()
     QVERIFY(!constant[0].tested);
     QCOMPARE(constant[0].pAdjusted, 1.0);
     QCOMPARE(constant[0].meanDifference, 2.0);
+}
+
+void TestStatistics::boxPlotAsGgplot()
+{
+    // R: quantile(1:10) is 1, 3.25, 5.5, 7.75, 10 (type 7, R's default and ggplot2's).
+    std::vector<double> values{10, 9, 8, 7, 6, 5, 4, 3, 2, 1};
+    BoxPlot box = boxPlot(values);
+    QCOMPARE(box.q1, 3.25);
+    QCOMPARE(box.median, 5.5);
+    QCOMPARE(box.q3, 7.75);
+    QCOMPARE(box.low, 1.0);
+    QCOMPARE(box.high, 10.0);
+    QVERIFY(box.outliers.empty());
+    // quantile(c(1:10, 30)): 3.5, 6, 8.5; 30 lies beyond q3 + 1.5 IQR = 16, the whisker
+    // ends at 10. A NaN is no value.
+    values.push_back(30);
+    values.push_back(qQNaN());
+    box = boxPlot(values);
+    QCOMPARE(box.q1, 3.5);
+    QCOMPARE(box.median, 6.0);
+    QCOMPARE(box.q3, 8.5);
+    QCOMPARE(box.high, 10.0);
+    QCOMPARE(box.outliers, std::vector<double>{30});
+    QVERIFY(std::isnan(boxPlot({}).median));
 }
 
 QTEST_GUILESS_MAIN(TestStatistics)

@@ -9,6 +9,9 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QSqlDatabase>
 #include <QSqlQuery>
@@ -46,6 +49,8 @@ private slots:
     void initTestCase();
     void simulatedStudyFollowsTheProtocol();
     void exportIsTidy();
+    void analysisOfTheStudyAndOfItsExportAgree();
+    void reportHasAPlotPerMeasure();
     void aKillLosesAtMostTheRunningTrial();
     void badCallsAreRefused_data();
     void badCallsAreRefused();
@@ -165,6 +170,91 @@ void TestStudyCli::exportIsTidy()
     QVERIFY(trials[1].contains(",practice,,done,"));
 }
 
+void TestStudyCli::analysisOfTheStudyAndOfItsExportAgree()
+{
+    const CliResult fromStudy =
+        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
+                   QStringLiteral("--json")});
+    QVERIFY2(fromStudy.code == 0, fromStudy.err.constData());
+    const QJsonObject json = QJsonDocument::fromJson(fromStudy.out).object();
+    QCOMPARE(json[QLatin1String("conditions")].toArray().size(), 4);
+    QJsonObject transferred;
+    for (const QJsonValue &m : json[QLatin1String("measures")].toArray()) {
+        if (m[QLatin1String("measure")].toString() == QLatin1String("cubes_transferred"))
+            transferred = m.toObject();
+    }
+    QCOMPARE(transferred[QLatin1String("participants")].toInt(), 20);
+    QCOMPARE(transferred[QLatin1String("pairwise")].toArray().size(), 6);
+    const QString primary = transferred[QLatin1String("primary")].toString();
+    QVERIFY(primary == QLatin1String("anova") || primary == QLatin1String("friedman"));
+    // The same analysis from the tidy export (collected elsewhere, say): the same numbers.
+    const QString dir = m_dir.filePath(QStringLiteral("export-for-analysis"));
+    QCOMPARE(semhapRun({QStringLiteral("study"), QStringLiteral("export"), m_study,
+                        QStringLiteral("--csv"), dir})
+                 .code,
+             0);
+    const CliResult fromCsv =
+        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"),
+                   dir + QStringLiteral("/measures.csv"), QStringLiteral("--json")});
+    QVERIFY2(fromCsv.code == 0, fromCsv.err.constData());
+    // A CSV's conditions come in the order first seen (P01's order here), so compare what
+    // does not depend on the order: the tests' statistics and each condition's mean.
+    const auto invariant = [](const QJsonObject &analysis) {
+        QMap<QString, QString> out;
+        for (const QJsonValue &m : analysis[QLatin1String("measures")].toArray()) {
+            const QString name = m[QLatin1String("measure")].toString();
+            out[name] = QStringLiteral("n %1 F %2 p %3 chi2 %4")
+                            .arg(m[QLatin1String("participants")].toInt())
+                            .arg(m[QLatin1String("anova")][QLatin1String("f")].toDouble(), 0,
+                                 'g', 10)
+                            .arg(m[QLatin1String("anova")][QLatin1String("p")].toDouble(), 0,
+                                 'g', 10)
+                            .arg(m[QLatin1String("friedman")][QLatin1String("chi_squared")]
+                                     .toDouble(),
+                                 0, 'g', 10);
+            for (const QJsonValue &c : m[QLatin1String("conditions")].toArray())
+                out[name + QLatin1Char('/') + c[QLatin1String("condition")].toString()] =
+                    QString::number(c[QLatin1String("mean")].toDouble(), 'g', 12);
+        }
+        return out;
+    };
+    QCOMPARE(invariant(QJsonDocument::fromJson(fromCsv.out).object()), invariant(json));
+    // One measure on its own; an unknown one is refused with the ones there are.
+    const CliResult one = semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
+                                     QStringLiteral("--measure"),
+                                     QStringLiteral("cubes_transferred")});
+    QCOMPARE(one.code, 0);
+    QVERIFY(one.out.contains("| cubes_transferred | 20 |"));
+    QVERIFY(!one.out.contains("## cubes_broken"));
+    const CliResult unknown = semhapRun({QStringLiteral("study"), QStringLiteral("analyze"),
+                                         m_study, QStringLiteral("--measure"),
+                                         QStringLiteral("happiness")});
+    QCOMPARE(unknown.code, 1);
+    QVERIFY(unknown.err.contains("no measure 'happiness' (measures: "));
+}
+
+void TestStudyCli::reportHasAPlotPerMeasure()
+{
+    const QString dir = m_dir.filePath(QStringLiteral("report"));
+    const CliResult r = semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
+                                   QStringLiteral("--report"), dir});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const QString report = QString::fromUtf8(readAll(dir + QStringLiteral("/report.md")));
+    QVERIFY(report.startsWith(QLatin1String("# Analysis: Unimanual evaluation")));
+    QVERIFY(report.contains(QLatin1String("## Summary")));
+    int plots = 0;
+    for (const QString &line : report.split(QLatin1Char('\n'))) {
+        if (!line.startsWith(QLatin1String("![")))
+            continue;
+        const QString file = line.mid(line.indexOf(QLatin1String("](")) + 2).chopped(1);
+        const QByteArray svg = readAll(dir + QLatin1Char('/') + file);
+        QVERIFY2(svg.startsWith("<svg xmlns=\"http://www.w3.org/2000/svg\""), qPrintable(file));
+        QVERIFY(svg.trimmed().endsWith("</svg>"));
+        ++plots;
+    }
+    QVERIFY(plots >= 10);
+}
+
 void TestStudyCli::aKillLosesAtMostTheRunningTrial()
 {
     const QString path = m_dir.filePath(QStringLiteral("killed.db"));
@@ -245,6 +335,9 @@ void TestStudyCli::badCallsAreRefused_data()
         << "not a semhap study";
     QTest::newRow("export without --csv") << QStringList{"export", "STUDY"} << 2
                                           << "export needs --csv DIR";
+    QTest::newRow("analyze a bad CSV")
+        << QStringList{"analyze", QStringLiteral(SEMHAP_TEST_DATA "/bad.csv")} << 1
+        << "bad.csv:3:19: value must be a number, empty or NA, got 'many'";
 }
 
 void TestStudyCli::badCallsAreRefused()

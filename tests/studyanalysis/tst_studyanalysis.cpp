@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: MIT
+// The study analysis (docs/studies.md, "Analysis") on textbook data with published results,
+// through the same tidy table a study or a CSV gives; and the CSV's located errors.
+#include "studyanalysis.h"
+#include "studydatabase.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace semhap;
+
+namespace {
+
+QString data(const char *name)
+{
+    return QStringLiteral(SEMHAP_TEST_DATA "/") + QLatin1String(name);
+}
+
+StudyTable readTable(const QString &path)
+{
+    StudyTable table;
+    LoadError error;
+    if (!StudyTable::readCsv(path, &table, &error))
+        qFatal("%s", qPrintable(error.toString()));
+    return table;
+}
+
+/** `actual` equals a published value to the digits it was printed with. */
+bool published(double actual, double value, double halfUnit)
+{
+    return std::abs(actual - value) <= halfUnit;
+}
+
+} // namespace
+
+class TestStudyAnalysis : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void oneWayAsField();
+    void twoWayFromAFactorialStudy();
+    void friedmanAsR();
+    void nothingToTest();
+    void badCsvIsLocated_data();
+    void badCsvIsLocated();
+};
+
+void TestStudyAnalysis::oneWayAsField()
+{
+    // Field, Miles & Field (2012), Discovering Statistics Using R, ch. 13: eight celebrities'
+    // seconds to retch on four bushtucker foods, each value here the mean of two trials.
+    // ezANOVA: F(3, 21) = 3.793806, p = .02557030; Mauchly W = 0.136248, p = .04684581; GG
+    // epsilon 0.5328456, p = .06258412. The book reports the corrected test as F(1.60, 11.19)
+    // = 3.79, p = .063.
+    const StudyTable table = readTable(data("bushtucker.csv"));
+    QCOMPARE(table.conditions().size(), 4);
+    const StudyAnalysis analysis = StudyAnalysis::run(table);
+    QCOMPARE(int(analysis.measures.size()), 1);
+    const StudyAnalysis::Measure &m = analysis.measures.front();
+    QCOMPARE(m.participants.size(), 8);
+    QCOMPARE(m.conditions[0].summary.mean, 8.125); // stick insect: 65 / 8
+    QVERIFY(published(m.anova.f, 3.793806, 5e-7));
+    QVERIFY(published(m.anova.p, 0.02557030, 5e-9));
+    QVERIFY(published(m.anova.sphericity.w, 0.136248, 5e-7));
+    QVERIFY(published(m.anova.sphericity.p, 0.04684581, 5e-9));
+    QVERIFY(published(m.anova.sphericity.greenhouseGeisser, 0.5328456, 5e-8));
+    QVERIFY(published(m.anova.greenhouseGeisser.p, 0.06258412, 5e-9));
+    QVERIFY(StudyAnalysis::Measure::sphericityViolated(m.anova));
+    // The report gives the corrected test, as the book does.
+    const QString report = QString::fromUtf8(analysis.markdown());
+    QVERIFY2(report.contains(QStringLiteral("F(1.60, 11.19) = 3.79, p = .063, η²p = .351; "
+                                            "Mauchly W = .136, p = .047, Greenhouse–Geisser ε = "
+                                            ".533")),
+             qPrintable(report));
+    // Bonferroni-corrected paired t tests, as R's pairwise.t.test(paired = TRUE,
+    // p.adjust.method = "bonferroni") prints them for these data: .0121 and .0056, the
+    // other four pairs 1.
+    QVERIFY(m.normal);
+    QCOMPARE(m.pairedTest, PairedTest::T);
+    QCOMPARE(int(m.pairwise.size()), 6);
+    QVERIFY2(report.contains(QStringLiteral("stick_insect–kangaroo_testicle (p = .012), "
+                                            "stick_insect–fish_eye (p = .006) |")),
+             qPrintable(report));
+    // JSON carries the same numbers.
+    const QJsonObject json = analysis.toJson();
+    const QJsonObject anova = json[QLatin1String("measures")][0][QLatin1String("anova")].toObject();
+    QCOMPARE(anova[QLatin1String("f")].toDouble(), m.anova.f);
+    QCOMPARE(anova[QLatin1String("greenhouse_geisser")][QLatin1String("epsilon")].toDouble(),
+             m.anova.sphericity.greenhouseGeisser);
+}
+
+void TestStudyAnalysis::twoWayFromAFactorialStudy()
+{
+    // Field's 3 x 3 attitude data (drink x imagery, 20 participants) entered as the trials
+    // of a study whose protocol declares the two factors, its conditions listed out of the
+    // cells' order. ezANOVA: drink F = 5.105981 (GG epsilon .5771143), imagery F =
+    // 122.564825, interaction F = 17.154922; the book: drink F(1.15, 21.93) = 5.11.
+    QTemporaryDir dir;
+    const QString protocolPath = dir.filePath(QStringLiteral("attitude.json"));
+    const char *cells[][3] = {
+        {"waterneut", "water", "neutral"}, {"beerpos", "beer", "positive"},
+        {"wineneg", "wine", "negative"},   {"beerneg", "beer", "negative"},
+        {"waterpos", "water", "positive"}, {"winepos", "wine", "positive"},
+        {"beerneut", "beer", "neutral"},   {"wineneut", "wine", "neutral"},
+        {"waterneg", "water", "negative"}};
+    QString conditions;
+    for (const auto &c : cells)
+        conditions += QStringLiteral(R"({"id": "%1", "label": "%1", "router": "C1",
+                                         "levels": {"drink": "%2", "imagery": "%3"}},)")
+                          .arg(QLatin1String(c[0]), QLatin1String(c[1]), QLatin1String(c[2]));
+    conditions.chop(1);
+    QFile file(protocolPath);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral(R"({"format": "semhap.study/1", "name": "Attitude",
+        "scene": "box_and_block",
+        "factors": [{"id": "drink", "levels": ["beer", "wine", "water"]},
+                    {"id": "imagery", "levels": ["positive", "negative", "neutral"]}],
+        "conditions": [%1], "trials": {"count": 1, "seconds": 60}})")
+                   .arg(conditions)
+                   .toUtf8());
+    file.close();
+    StudyProtocol protocol;
+    LoadError loadError;
+    QVERIFY2(StudyProtocol::read(protocolPath, &protocol, &loadError),
+             qPrintable(loadError.toString()));
+    QString error;
+    auto study = StudyDatabase::create(dir.filePath(QStringLiteral("attitude.db")), protocol,
+                                       &error);
+    QVERIFY2(study, qPrintable(error));
+    const StudyTable attitude = readTable(data("attitude.csv"));
+    for (const StudyTable::Row &row : attitude.rows()) {
+        if (!study->participants().contains(row.participant))
+            QVERIFY(study->addParticipant(row.participant, &error));
+        const StudyProtocol::Step step{StudyProtocol::Step::Kind::Trial,
+                                       protocol.conditionIndex(row.condition), 1};
+        const qint64 id = study->beginTrial(row.participant, step, dir.filePath("s.db"), &error);
+        QVERIFY2(id > 0, qPrintable(error));
+        QVERIFY(study->finishTrial(id, 60, {{QStringLiteral("attitude"), row.value}}, &error));
+    }
+    const StudyAnalysis analysis = StudyAnalysis::run(StudyTable::fromStudy(*study));
+    const StudyAnalysis::Measure &m = analysis.measures.front();
+    QCOMPARE(m.name, QStringLiteral("attitude"));
+    QCOMPARE(m.participants.size(), 20);
+    QVERIFY(m.twoWay);
+    QVERIFY(published(m.twoWayAnova.a.f, 5.105981, 5e-7));
+    QVERIFY(published(m.twoWayAnova.a.sphericity.greenhouseGeisser, 0.5771143, 5e-8));
+    QVERIFY(published(m.twoWayAnova.b.f, 122.564825, 5e-7));
+    QVERIFY(published(m.twoWayAnova.interaction.f, 17.154922, 5e-7));
+    const QString report = QString::fromUtf8(analysis.markdown());
+    QVERIFY2(report.contains(QLatin1String("drink: F(1.15, 21.93) = 5.11")), qPrintable(report));
+    const QJsonObject twoWay = analysis.toJson()[QLatin1String("measures")][0]
+                                   [QLatin1String("two_way_anova")].toObject();
+    QCOMPARE(twoWay.keys(), (QStringList{"drink", "drink:imagery", "imagery"}));
+}
+
+void TestStudyAnalysis::friedmanAsR()
+{
+    // R's friedman.test example (Hollander & Wolfe's rounding first base, 22 x 3, with ties):
+    // chi-squared = 11.143, df = 2, p = 0.003805; Kendall's W = 11.143 / (22 x 2) = .2532.
+    const StudyAnalysis analysis = StudyAnalysis::run(readTable(data("roundingtimes.csv")));
+    const StudyAnalysis::Measure &m = analysis.measures.front();
+    QCOMPARE(m.friedman.df, 2);
+    QVERIFY(published(m.friedman.chiSquared, 11.143, 5e-4));
+    QVERIFY(published(m.friedman.p, 0.003805, 5e-7));
+    QVERIFY(published(m.friedman.kendallW, 0.2532, 5e-5));
+    QVERIFY(QString::fromUtf8(analysis.markdown())
+                .contains(QStringLiteral("χ²(2) = 11.14, p = .004, Kendall's W = .253")));
+}
+
+void TestStudyAnalysis::nothingToTest()
+{
+    // A measure with no variance, and one a participant lacks in a condition.
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("flat.csv")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("participant,condition,trial,measure,value\n"
+               "P1,A,1,zero,0\nP1,B,1,zero,0\nP2,A,1,zero,0\nP2,B,1,zero,0\n"
+               "P3,A,1,zero,0\nP3,B,1,zero,0\nP3,A,1,one,1\n");
+    file.close();
+    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    QCOMPARE(int(analysis.measures.size()), 2);
+    QVERIFY(!analysis.measures[0].tested());
+    QCOMPARE(analysis.measures[1].participants.size(), 0);
+    QCOMPARE(analysis.measures[1].excluded, QStringList{"P3"});
+    const QString report = QString::fromUtf8(analysis.markdown());
+    QVERIFY(report.contains(QStringLiteral("| zero | 3 | — | not tested")));
+    QVERIFY(report.contains(QLatin1String("left out for a missing condition: P3")));
+    QVERIFY(!report.contains(QLatin1String("nan")));
+}
+
+void TestStudyAnalysis::badCsvIsLocated_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<QString>("error");
+    const QByteArray header = "participant,condition,trial,measure,value\n";
+    QTest::newRow("empty") << QByteArray() << ":1:1: empty";
+    QTest::newRow("another header") << QByteArray("subject,condition,trial,measure,value\n")
+                                    << ":1:1: the header must be exactly";
+    QTest::newRow("four fields") << header + "P1,A,1,x\n" << ":2:1: expected 5 fields, got 4";
+    QTest::newRow("a bad trial") << header + "P1,A,first,x,1\n"
+                                 << ":2:6: trial must be a whole number";
+    QTest::newRow("a bad value") << header + "P1,A,1,x,1\nP1,B,1,x,lots\n"
+                                 << ":3:10: value must be a number, empty or NA, got 'lots'";
+    QTest::newRow("a name with a space") << header + "P 1,A,1,x,1\n"
+                                         << ":2:1: participant must be 1 to 64 of";
+    QTest::newRow("an open quote") << header + "P1,A,1,\"x,1\n" << ":3:1: a quoted field never ends";
+    QTest::newRow("infinity") << header + "P1,A,1,x,inf\n" << ":2:10: value must be a number";
+}
+
+void TestStudyAnalysis::badCsvIsLocated()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bad.csv"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text);
+    file.close();
+    StudyTable table;
+    LoadError loadError;
+    QVERIFY(!StudyTable::readCsv(path, &table, &loadError));
+    QVERIFY2(loadError.toString().startsWith(path + error), qPrintable(loadError.toString()));
+}
+
+QTEST_GUILESS_MAIN(TestStudyAnalysis)
+#include "tst_studyanalysis.moc"
