@@ -157,7 +157,8 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (!simulationOptions(parser, &options.duration, &options.sceneOptions) ||
         !numberOption(parser, QStringLiteral("seed"), &seed))
         return ExitUsage;
-    RouterContext context{options.reactionTime};
+    RouterContext context;
+    context.reactionTime = options.reactionTime;
     if (!routerContextOption(parser, &context))
         return ExitUsage;
     options.reactionTime = context.reactionTime;
