@@ -344,13 +344,22 @@ std::vector<PairwiseComparison> pairwiseComparisons(const std::vector<std::vecto
     return pairs;
 }
 
+namespace {
+
+/** The values that are not NaN. */
+std::vector<double> present(const std::vector<double> &values)
+{
+    std::vector<double> kept;
+    std::copy_if(values.begin(), values.end(), std::back_inserter(kept),
+                 [](double v) { return !std::isnan(v); });
+    return kept;
+}
+
+} // namespace
+
 Summary summarise(const std::vector<double> &values)
 {
-    std::vector<double> present;
-    for (double v : values) {
-        if (!std::isnan(v))
-            present.push_back(v);
-    }
+    const std::vector<double> present = semhap::present(values);
     Summary summary;
     summary.n = int(present.size());
     if (present.empty())
@@ -363,11 +372,7 @@ Summary summarise(const std::vector<double> &values)
 
 BoxPlot boxPlot(const std::vector<double> &values)
 {
-    std::vector<double> sorted;
-    for (double v : values) {
-        if (!std::isnan(v))
-            sorted.push_back(v);
-    }
+    std::vector<double> sorted = present(values);
     BoxPlot box;
     if (sorted.empty()) {
         box.low = box.q1 = box.median = box.q3 = box.high = NaN;
