@@ -279,6 +279,11 @@ void TestCli::validate()
     QCOMPARE(ok.code, 0);
     QCOMPARE(ok.out.count('\n'), files.size());
     QVERIFY(ok.err.isEmpty());
+    // A factorial protocol says its design.
+    QVERIFY2(ok.out.contains("comparison.json: valid study protocol 'Semantic haptics comparison "
+                             "(grasp x break modality)' (4 conditions: 2 grasp × 2 break; 4 "
+                             "orders, participants take them in turn)"),
+             ok.out.constData());
 
     const Result bad = semhapRun(
         {"validate", files.first(), Data + "/broken-router.json", Data + "/syntax-error.json"});
