@@ -28,6 +28,12 @@ QString unit(double value)
     return text;
 }
 
+/** A p in a table's cell: `.004`, or `< .001`. */
+QString pCell(double p)
+{
+    return p < 0.001 ? QStringLiteral("< .001") : unit(p);
+}
+
 QString pText(double p)
 {
     return p < 0.001 ? QStringLiteral("p < .001") : QStringLiteral("p = %1").arg(unit(p));
@@ -362,8 +368,8 @@ QByteArray StudyAnalysis::markdown() const
             md += QStringLiteral("| %1 – %2 | %3 | %4 | %5 | %6 |\n")
                       .arg(conditions[p.second], conditions[p.first], fixed(p.meanDifference),
                            p.tested ? fixed(p.statistic) : QStringLiteral("—"),
-                           p.tested ? unit(p.p) : QStringLiteral("—"),
-                           p.tested ? unit(p.pAdjusted) : QStringLiteral("—"));
+                           p.tested ? pCell(p.p) : QStringLiteral("—"),
+                           p.tested ? pCell(p.pAdjusted) : QStringLiteral("—"));
         }
     }
     return md.toUtf8();
