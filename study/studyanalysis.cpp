@@ -209,6 +209,11 @@ QString StudyAnalysis::plotFile(const QString &measure)
     QString name = measure;
     static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9_.-]"));
     name.replace(unsafe, QStringLiteral("_"));
+    // A name changed to be a file name gets its hash, so "a b" and "a_b" keep two plots; a
+    // leading dot would hide the file.
+    if (name != measure || name.startsWith(QLatin1Char('.')))
+        name = QStringLiteral("%1-%2").arg(name.left(60)).arg(qHash(measure, 0) % 100000u, 5,
+                                                               10, QLatin1Char('0'));
     return name + QStringLiteral(".svg");
 }
 
@@ -301,7 +306,7 @@ QByteArray StudyAnalysis::markdown() const
         for (const PairwiseComparison &p : m.pairwise) {
             if (p.tested && p.pAdjusted < Alpha)
                 differing.append(QStringLiteral("%1–%2 (%3)").arg(
-                    conditions[p.first], conditions[p.second], pText(p.pAdjusted)));
+                    cell(conditions[p.first]), cell(conditions[p.second]), pText(p.pAdjusted)));
         }
         QString test, result;
         if (!m.tested()) {
@@ -337,7 +342,7 @@ QByteArray StudyAnalysis::markdown() const
                              "|---|---|---|---|---|---|\n");
         for (const Condition &c : m.conditions) {
             md += QStringLiteral("| %1 | %2 | %3 | %4 | %5–%6 | %7 |\n")
-                      .arg(c.id, fixed(c.summary.mean), fixed(c.summary.sd), fixed(c.box.median),
+                      .arg(cell(c.id), fixed(c.summary.mean), fixed(c.summary.sd), fixed(c.box.median),
                            fixed(c.box.q1), fixed(c.box.q3),
                            c.normality.tested ? QStringLiteral("W = %1, %2")
                                                     .arg(unit(c.normality.w), pText(c.normality.p))
@@ -366,7 +371,8 @@ QByteArray StudyAnalysis::markdown() const
                   .arg(t ? QStringLiteral("t") : QStringLiteral("W+"));
         for (const PairwiseComparison &p : m.pairwise) {
             md += QStringLiteral("| %1 – %2 | %3 | %4 | %5 | %6 |\n")
-                      .arg(conditions[p.second], conditions[p.first], fixed(p.meanDifference),
+                      .arg(cell(conditions[p.second]), cell(conditions[p.first]),
+                           fixed(p.meanDifference),
                            p.tested ? fixed(p.statistic) : QStringLiteral("—"),
                            p.tested ? pCell(p.p) : QStringLiteral("—"),
                            p.tested ? pCell(p.pAdjusted) : QStringLiteral("—"));

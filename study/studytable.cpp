@@ -169,7 +169,8 @@ bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
         return fail(0, 1, QStringLiteral("the header must be exactly %1, got %2")
                               .arg(QLatin1String(Header), names.join(QLatin1Char(','))));
     StudyTable table;
-    static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,64}$"));
+    // Names from other tools may hold spaces ("No feedback"); not line breaks or controls.
+    static const QRegularExpression namePattern(QStringLiteral("^[^\\x00-\\x1f\\x7f]{1,200}$"));
     for (size_t r = 1; r < records.size(); ++r) {
         const std::vector<Field> &f = records[r];
         if (f.size() == 1 && f[0].text.trimmed().isEmpty())
@@ -177,10 +178,12 @@ bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
         if (f.size() != 5)
             return fail(r, 1, QStringLiteral("expected 5 fields, got %1").arg(f.size()));
         for (int i : {0, 1, 3}) {
-            if (!idPattern.match(f[size_t(i)].text).hasMatch())
+            if (!namePattern.match(f[size_t(i)].text).hasMatch() ||
+                f[size_t(i)].text.trimmed().isEmpty())
                 return fail(r, f[size_t(i)].column,
-                            QStringLiteral("%1 must be 1 to 64 of A-Z a-z 0-9 _ . -, got '%2'")
-                                .arg(header[i], f[size_t(i)].text));
+                            QStringLiteral("%1 must be 1 to 200 characters, not blank and "
+                                           "without line breaks or control characters")
+                                .arg(header[i]));
         }
         int trial = 0;
         if (!f[2].text.isEmpty() && f[2].text != QLatin1String("NA")) {

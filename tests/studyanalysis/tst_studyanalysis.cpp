@@ -46,6 +46,7 @@ private slots:
     void twoWayFromAFactorialStudy();
     void friedmanAsR();
     void nothingToTest();
+    void namesFromOtherTools();
     void badCsvIsLocated_data();
     void badCsvIsLocated();
 };
@@ -193,6 +194,33 @@ void TestStudyAnalysis::nothingToTest()
     QVERIFY(!report.contains(QLatin1String("nan")));
 }
 
+void TestStudyAnalysis::namesFromOtherTools()
+{
+    // R or a spreadsheet names conditions as people read them, even with a pipe.
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("named.csv")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QByteArray csv = "participant,condition,trial,measure,value\n";
+    for (int p = 1; p <= 6; ++p)
+        csv += QStringLiteral("P%1,No feedback,1,time on task,%2\nP%1,\"Haptic | visual\",1,"
+                              "time on task,%3\n")
+                   .arg(p)
+                   .arg(10 + p)
+                   .arg(8 + p * p % 5)
+                   .toUtf8();
+    file.write(csv);
+    file.close();
+    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    QCOMPARE(analysis.conditions, (QStringList{"No feedback", "Haptic | visual"}));
+    const QString report = QString::fromUtf8(analysis.markdown());
+    QVERIFY(report.contains(QLatin1String("| Haptic \\| visual |")));
+    const QString plot = StudyAnalysis::plotFile(QStringLiteral("time on task"));
+    QVERIFY(plot.startsWith(QLatin1String("time_on_task-")));
+    QVERIFY(plot != StudyAnalysis::plotFile(QStringLiteral("time_on task")));
+    QCOMPARE(StudyAnalysis::plotFile(QStringLiteral("cubes_transferred")),
+             QStringLiteral("cubes_transferred.svg"));
+}
+
 void TestStudyAnalysis::badCsvIsLocated_data()
 {
     QTest::addColumn<QByteArray>("text");
@@ -206,8 +234,10 @@ void TestStudyAnalysis::badCsvIsLocated_data()
                                  << ":2:6: trial must be a whole number";
     QTest::newRow("a bad value") << header + "P1,A,1,x,1\nP1,B,1,x,lots\n"
                                  << ":3:10: value must be a number, empty or NA, got 'lots'";
-    QTest::newRow("a name with a space") << header + "P 1,A,1,x,1\n"
-                                         << ":2:1: participant must be 1 to 64 of";
+    QTest::newRow("a line break in a name") << header + "\"P\n1\",A,1,x,1\n"
+                                            << ":2:1: participant must be 1 to 200 characters";
+    QTest::newRow("a blank condition") << header + "P1,  ,1,x,1\n"
+                                       << ":2:4: condition must be 1 to 200 characters";
     QTest::newRow("an open quote") << header + "P1,A,1,\"x,1\n" << ":3:1: a quoted field never ends";
     QTest::newRow("infinity") << header + "P1,A,1,x,inf\n" << ":2:10: value must be a number";
 }
