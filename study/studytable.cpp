@@ -149,6 +149,12 @@ bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
         *error = LoadError::at(path, QString(), QStringLiteral("cannot read: ") + reason);
         return false;
     }
+    return parseCsv(bytes, path, out, error);
+}
+
+bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out,
+                          LoadError *error)
+{
     if (bytes.startsWith("\xEF\xBB\xBF")) // a spreadsheet's byte-order mark
         bytes.remove(0, 3);
     std::vector<std::vector<Field>> records;
