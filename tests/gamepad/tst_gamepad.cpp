@@ -125,7 +125,7 @@ void TestGamepad::cleanupTestCase()
 void TestGamepad::init()
 {
     QString error;
-    m_world = World::load("box_and_block", SceneOptions{4}, &error);
+    m_world = World::load("box_and_block", SceneOptions{4, {}}, &error);
     QVERIFY2(m_world, qPrintable(error));
     m_operator = std::make_unique<DriveOperator>();
     m_drive = std::make_unique<HandDrive>();

@@ -459,7 +459,7 @@ void TestHandDrive::descentStopsOnTheCube()
     QFETCH(double, grip);
     QFETCH(double, tick);
     QString error;
-    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{cubes}, &error);
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{cubes, {}}, &error);
     QVERIFY2(world, qPrintable(error));
     DriveOperator op;
     HandDrive drive;

@@ -71,7 +71,7 @@ QJsonObject pickAndPlace(double force, const Told &told = {}, double *fractureAt
                          std::unique_ptr<World> *keep = nullptr)
 {
     QString error;
-    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1, {}}, &error);
     TaskMonitor monitor(*world);
     HandPlan plan(Gripper::Right);
     const auto cube = world->objectPosition(0);
@@ -103,7 +103,7 @@ QJsonObject pickAndPlace(double force, const Told &told = {}, double *fractureAt
 QJsonObject holdTooLightly(double force, const Told &told = {}, double *lostAt = nullptr)
 {
     QString error;
-    std::unique_ptr<World> world = World::load("bimanual_sorting", SceneOptions{0}, &error);
+    std::unique_ptr<World> world = World::load("bimanual_sorting", SceneOptions{0, {}}, &error);
     TaskMonitor monitor(*world);
     HandPlan plan(Gripper::Left);
     const int container = world->objectIndex("container");

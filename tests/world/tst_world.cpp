@@ -21,7 +21,7 @@ namespace {
 std::unique_ptr<World> loadWorld(const QString &scene, int cubes = -1)
 {
     QString error;
-    std::unique_ptr<World> world = World::load(scene, SceneOptions{cubes}, &error);
+    std::unique_ptr<World> world = World::load(scene, SceneOptions{cubes, {}}, &error);
     if (!world)
         qFatal("%s", qPrintable(error));
     return world;
@@ -260,7 +260,7 @@ void TestWorld::badScenes()
     QFETCH(int, cubes);
     QFETCH(QString, error);
     QString message;
-    QVERIFY(!World::load(scene, SceneOptions{cubes}, &message));
+    QVERIFY(!World::load(scene, SceneOptions{cubes, {}}, &message));
     QCOMPARE(message, error);
 }
 
@@ -295,7 +295,7 @@ void TestWorld::includesResolveFromTheScenesFolder()
     const QString was = QDir::currentPath();
     QVERIFY(QDir::setCurrent(elsewhere.path()));
     QString error;
-    const std::unique_ptr<World> world = World::load(path, SceneOptions{cubes}, &error);
+    const std::unique_ptr<World> world = World::load(path, SceneOptions{cubes, {}}, &error);
     QVERIFY(QDir::setCurrent(was));
     QVERIFY2(world, qPrintable(error));
 }
@@ -597,7 +597,7 @@ void TestWorld::clearanceBelowThePads()
     QFETCH(double, dy);
     QFETCH(double, surface);
     QString error;
-    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1}, &error);
+    std::unique_ptr<World> world = World::load("box_and_block", SceneOptions{1, {}}, &error);
     QVERIFY2(world, qPrintable(error));
     const auto cube = world->objectPosition(0);
     Pose target = world->target(Gripper::Right);
