@@ -13,7 +13,6 @@
 
 #include <QDir>
 #include <QFile>
-#include <QDir>
 #include <QFileInfo>
 
 #include <algorithm>

@@ -31,29 +31,29 @@ QString StudyCommand::summary() const
 
 void StudyCommand::configure(QCommandLineParser &parser)
 {
-    parser.setApplicationDescription(
-        tr("semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
-           "semhap study export STUDY.db --csv DIR\n"
-           "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
-           "simulate: runs the protocol with simulated participants (the reactive operator, a\n"
-           "seed each) into a new study, the questionnaires left unanswered.\n"
-           "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
-           "DIR/trials.csv and DIR/answers.csv.\n"
-           "analyze: the analysis of each measure (docs/studies.md) as Markdown on standard\n"
-           "output, as JSON with --json, or as DIR/report.md with a box plot per measure."));
+    parser.setApplicationDescription(tr(
+        "semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
+        "semhap study export STUDY.db --csv DIR\n"
+        "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
+        "simulate: runs the protocol with simulated participants (the reactive operator, a\n"
+        "seed each) into a new study, the questionnaires left unanswered.\n"
+        "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
+        "DIR/trials.csv and DIR/answers.csv.\n"
+        "analyze: the analysis of each measure (docs/studies.md) as Markdown on standard\n"
+        "output, as JSON with --json, or as DIR/report.md with a box plot per measure."));
     parser.addPositionalArgument(QStringLiteral("action"), tr("simulate, export or analyze"));
     parser.addPositionalArgument(QStringLiteral("file"),
                                  tr("The protocol, the study, or (analyze) a tidy CSV."));
     parser.addOption({QStringLiteral("participants"),
                       tr("simulate: how many participants (1 to %1).").arg(MaxParticipants),
                       tr("N")});
-    parser.addOption({QStringLiteral("out"), tr("simulate: the new study's file."),
-                      tr("STUDY.db")});
+    parser.addOption(
+        {QStringLiteral("out"), tr("simulate: the new study's file."), tr("STUDY.db")});
     parser.addOption({QStringLiteral("trial-seconds"),
                       tr("simulate: cap every practice round and trial at S simulated seconds."),
                       tr("S")});
-    parser.addOption({QStringLiteral("csv"), tr("export: the folder of the CSV files."),
-                      tr("DIR")});
+    parser.addOption(
+        {QStringLiteral("csv"), tr("export: the folder of the CSV files."), tr("DIR")});
     parser.addOption({QStringLiteral("report"),
                       tr("analyze: write report.md and a box plot per measure into DIR."),
                       tr("DIR")});
@@ -96,8 +96,8 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
         return ExitUsage;
     if (participants < 1 || participants > MaxParticipants ||
         participants != std::floor(participants))
-        return usageError(tr("--participants must be a whole number from 1 to %1")
-                              .arg(MaxParticipants));
+        return usageError(
+            tr("--participants must be a whole number from 1 to %1").arg(MaxParticipants));
     StudySimulation::Options options;
     options.participants = int(participants);
     if (parser.isSet(QStringLiteral("trial-seconds"))) {

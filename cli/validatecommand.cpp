@@ -197,15 +197,17 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 const size_t orders = protocol.order().rows().size();
                 QStringList design;
                 for (const StudyProtocol::Factor &factor : protocol.factors)
-                    design.append(QStringLiteral("%1 %2").arg(factor.levels.size()).arg(factor.id));
-                what = tr("study protocol '%1' (%2 conditions%3; %4)")
-                           .arg(protocol.name)
-                           .arg(protocol.conditions.size())
-                           .arg(design.isEmpty() ? QString()
-                                                 : tr(": %1").arg(design.join(QStringLiteral(" × "))))
-                           .arg(orders > 0
-                                    ? tr("%1 orders, participants take them in turn").arg(orders)
-                                    : tr("a seeded random order per participant"));
+                    design.append(
+                        QStringLiteral("%1 %2").arg(factor.levels.size()).arg(factor.id));
+                what =
+                    tr("study protocol '%1' (%2 conditions%3; %4)")
+                        .arg(protocol.name)
+                        .arg(protocol.conditions.size())
+                        .arg(design.isEmpty() ? QString()
+                                              : tr(": %1").arg(design.join(QStringLiteral(" × "))))
+                        .arg(orders > 0
+                                 ? tr("%1 orders, participants take them in turn").arg(orders)
+                                 : tr("a seeded random order per participant"));
             }
         } else if (format == QLatin1String(DeviceModel::Format)) {
             DeviceModelPtr model = DeviceModel::fromJson(doc.json, doc.path, &error);

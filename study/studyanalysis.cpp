@@ -82,10 +82,10 @@ QString effectText(const WithinEffect &e)
     const bool corrected = StudyAnalysis::Measure::sphericityViolated(e);
     const double df1 = corrected ? e.greenhouseGeisser.df1 : e.df1;
     const double df2 = corrected ? e.greenhouseGeisser.df2 : e.df2;
-    QString text = QStringLiteral("F(%1, %2) = %3, %4, η²p = %5")
-                       .arg(dfText(df1), dfText(df2), fixed(e.f),
-                            pText(corrected ? e.greenhouseGeisser.p : e.p),
-                            unit(e.partialEtaSquared));
+    QString text =
+        QStringLiteral("F(%1, %2) = %3, %4, η²p = %5")
+            .arg(dfText(df1), dfText(df2), fixed(e.f),
+                 pText(corrected ? e.greenhouseGeisser.p : e.p), unit(e.partialEtaSquared));
     if (!e.sphericity.tested && e.df1 > 1)
         text += QStringLiteral("; Mauchly's test not computable (too few participants, or "
                                "conditions that differ by a constant)");
@@ -178,10 +178,10 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
             condition.normality = shapiroWilkTest(column);
             m.conditions.push_back(condition);
         }
-        m.normal = k > 0 && std::all_of(m.conditions.begin(), m.conditions.end(),
-                                        [](const Condition &c) {
-                                            return c.normality.tested && c.normality.p >= Alpha;
-                                        });
+        m.normal =
+            k > 0 && std::all_of(m.conditions.begin(), m.conditions.end(), [](const Condition &c) {
+                return c.normality.tested && c.normality.p >= Alpha;
+            });
         m.anova = repeatedMeasuresAnova(matrix.rows);
         if (cells.size() == k && k > 0) {
             m.twoWay = true;
@@ -212,8 +212,9 @@ QString StudyAnalysis::plotFile(const QString &measure)
     // A name changed to be a file name gets its hash, so "a b" and "a_b" keep two plots; a
     // leading dot would hide the file.
     if (name != measure || name.startsWith(QLatin1Char('.')))
-        name = QStringLiteral("%1-%2").arg(name.left(60)).arg(qHash(measure, 0) % 100000u, 5,
-                                                               10, QLatin1Char('0'));
+        name = QStringLiteral("%1-%2")
+                   .arg(name.left(60))
+                   .arg(qHash(measure, 0) % 100000u, 5, 10, QLatin1Char('0'));
     return name + QStringLiteral(".svg");
 }
 
@@ -223,29 +224,28 @@ QJsonObject StudyAnalysis::toJson() const
     for (const Measure &m : measures) {
         QJsonArray conditionList;
         for (const Condition &c : m.conditions) {
-            conditionList.append(QJsonObject{
-                {QStringLiteral("condition"), c.id},
-                {QStringLiteral("n"), c.summary.n},
-                {QStringLiteral("mean"), number(c.summary.mean)},
-                {QStringLiteral("sd"), number(c.summary.sd)},
-                {QStringLiteral("median"), number(c.box.median)},
-                {QStringLiteral("q1"), number(c.box.q1)},
-                {QStringLiteral("q3"), number(c.box.q3)},
-                {QStringLiteral("shapiro_wilk"),
-                 QJsonObject{{QStringLiteral("tested"), c.normality.tested},
-                             {QStringLiteral("w"), number(c.normality.w)},
-                             {QStringLiteral("p"), number(c.normality.p)}}}});
+            conditionList.append(
+                QJsonObject{{QStringLiteral("condition"), c.id},
+                            {QStringLiteral("n"), c.summary.n},
+                            {QStringLiteral("mean"), number(c.summary.mean)},
+                            {QStringLiteral("sd"), number(c.summary.sd)},
+                            {QStringLiteral("median"), number(c.box.median)},
+                            {QStringLiteral("q1"), number(c.box.q1)},
+                            {QStringLiteral("q3"), number(c.box.q3)},
+                            {QStringLiteral("shapiro_wilk"),
+                             QJsonObject{{QStringLiteral("tested"), c.normality.tested},
+                                         {QStringLiteral("w"), number(c.normality.w)},
+                                         {QStringLiteral("p"), number(c.normality.p)}}}});
         }
         QJsonArray pairs;
         for (const PairwiseComparison &p : m.pairwise) {
-            pairs.append(QJsonObject{
-                {QStringLiteral("first"), conditions[p.first]},
-                {QStringLiteral("second"), conditions[p.second]},
-                {QStringLiteral("tested"), p.tested},
-                {QStringLiteral("mean_difference"), number(p.meanDifference)},
-                {QStringLiteral("statistic"), number(p.statistic)},
-                {QStringLiteral("p"), number(p.p)},
-                {QStringLiteral("p_bonferroni"), number(p.pAdjusted)}});
+            pairs.append(QJsonObject{{QStringLiteral("first"), conditions[p.first]},
+                                     {QStringLiteral("second"), conditions[p.second]},
+                                     {QStringLiteral("tested"), p.tested},
+                                     {QStringLiteral("mean_difference"), number(p.meanDifference)},
+                                     {QStringLiteral("statistic"), number(p.statistic)},
+                                     {QStringLiteral("p"), number(p.p)},
+                                     {QStringLiteral("p_bonferroni"), number(p.pAdjusted)}});
         }
         QJsonObject measure{
             {QStringLiteral("measure"), m.name},
@@ -262,8 +262,8 @@ QJsonObject StudyAnalysis::toJson() const
                          {QStringLiteral("p"), number(m.friedman.p)},
                          {QStringLiteral("kendall_w"), number(m.friedman.kendallW)}}},
             {QStringLiteral("pairwise_test"), m.pairedTest == PairedTest::T
-                                                   ? QStringLiteral("paired_t")
-                                                   : QStringLiteral("wilcoxon_signed_rank")},
+                                                  ? QStringLiteral("paired_t")
+                                                  : QStringLiteral("wilcoxon_signed_rank")},
             {QStringLiteral("pairwise"), pairs}};
         if (m.twoWay) {
             measure.insert(QStringLiteral("two_way_anova"),
@@ -276,9 +276,9 @@ QJsonObject StudyAnalysis::toJson() const
     }
     QJsonArray factorList;
     for (const StudyProtocol::Factor &f : factors)
-        factorList.append(QJsonObject{{QStringLiteral("id"), f.id},
-                                      {QStringLiteral("levels"),
-                                       QJsonArray::fromStringList(f.levels)}});
+        factorList.append(
+            QJsonObject{{QStringLiteral("id"), f.id},
+                        {QStringLiteral("levels"), QJsonArray::fromStringList(f.levels)}});
     return {{QStringLiteral("source"), source},
             {QStringLiteral("name"), name},
             {QStringLiteral("alpha"), Alpha},
@@ -305,8 +305,9 @@ QByteArray StudyAnalysis::markdown() const
         QStringList differing;
         for (const PairwiseComparison &p : m.pairwise) {
             if (p.tested && p.pAdjusted < Alpha)
-                differing.append(QStringLiteral("%1–%2 (%3)").arg(
-                    cell(conditions[p.first]), cell(conditions[p.second]), pText(p.pAdjusted)));
+                differing.append(QStringLiteral("%1–%2 (%3)")
+                                     .arg(cell(conditions[p.first]), cell(conditions[p.second]),
+                                          pText(p.pAdjusted)));
         }
         QString test, result;
         if (!m.tested()) {
@@ -342,8 +343,8 @@ QByteArray StudyAnalysis::markdown() const
                              "|---|---|---|---|---|---|\n");
         for (const Condition &c : m.conditions) {
             md += QStringLiteral("| %1 | %2 | %3 | %4 | %5–%6 | %7 |\n")
-                      .arg(cell(c.id), fixed(c.summary.mean), fixed(c.summary.sd), fixed(c.box.median),
-                           fixed(c.box.q1), fixed(c.box.q3),
+                      .arg(cell(c.id), fixed(c.summary.mean), fixed(c.summary.sd),
+                           fixed(c.box.median), fixed(c.box.q1), fixed(c.box.q3),
                            c.normality.tested ? QStringLiteral("W = %1, %2")
                                                     .arg(unit(c.normality.w), pText(c.normality.p))
                                               : QStringLiteral("not tested"));
@@ -408,20 +409,18 @@ QByteArray StudyAnalysis::boxPlotSvg(const Measure &m) const
     const double step = tickStep(high - low);
     low = std::floor(low / step) * step;
     high = std::ceil(high / step) * step;
-    const auto y = [&](double v) {
-        return top + plotHeight * (1.0 - (v - low) / (high - low));
-    };
-    QString svg = QStringLiteral(
-                      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%1\" height=\"%2\" "
-                      "viewBox=\"0 0 %1 %2\" font-family=\"sans-serif\" font-size=\"12\">\n"
-                      "<rect width=\"%1\" height=\"%2\" fill=\"white\"/>\n"
-                      "<text x=\"%3\" y=\"22\" font-size=\"14\" font-weight=\"bold\">%4 "
-                      "(n = %5)</text>\n")
-                      .arg(width)
-                      .arg(height)
-                      .arg(left)
-                      .arg(xml(m.name))
-                      .arg(m.participants.size());
+    const auto y = [&](double v) { return top + plotHeight * (1.0 - (v - low) / (high - low)); };
+    QString svg =
+        QStringLiteral("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%1\" height=\"%2\" "
+                       "viewBox=\"0 0 %1 %2\" font-family=\"sans-serif\" font-size=\"12\">\n"
+                       "<rect width=\"%1\" height=\"%2\" fill=\"white\"/>\n"
+                       "<text x=\"%3\" y=\"22\" font-size=\"14\" font-weight=\"bold\">%4 "
+                       "(n = %5)</text>\n")
+            .arg(width)
+            .arg(height)
+            .arg(left)
+            .arg(xml(m.name))
+            .arg(m.participants.size());
     for (double v = low; v <= high + step / 2; v += step) {
         const double at = y(v);
         svg += QStringLiteral("<line x1=\"%1\" x2=\"%2\" y1=\"%3\" y2=\"%3\" stroke=\"#ddd\"/>"

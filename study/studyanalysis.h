@@ -45,7 +45,7 @@ struct StudyAnalysis
         /** Every condition's Shapiro–Wilk test ran and kept p >= Alpha. */
         bool normal = false;
         bool twoWay = false;
-        WithinEffect anova;         ///< one-way, over the conditions
+        WithinEffect anova;              ///< one-way, over the conditions
         TwoWayWithinEffects twoWayAnova; ///< when twoWay
         FriedmanTest friedman;
         PairedTest pairedTest = PairedTest::T; ///< t when normal, else signed-rank
@@ -57,8 +57,8 @@ struct StudyAnalysis
         static bool sphericityViolated(const WithinEffect &effect);
     };
 
-    QString source;       ///< the study or CSV analysed
-    QString name;         ///< the study's name (a CSV: its file name)
+    QString source; ///< the study or CSV analysed
+    QString name;   ///< the study's name (a CSV: its file name)
     QStringList conditions;
     std::vector<StudyProtocol::Factor> factors;
     std::vector<Measure> measures;

@@ -91,8 +91,7 @@ StudyDatabase::~StudyDatabase()
 }
 
 std::unique_ptr<StudyDatabase> StudyDatabase::create(const QString &path,
-                                                     const StudyProtocol &protocol,
-                                                     QString *error)
+                                                     const StudyProtocol &protocol, QString *error)
 {
     if (QFileInfo::exists(path)) {
         *error = located(path, QStringLiteral("already exists (a study is never overwritten; "
@@ -184,7 +183,8 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
     if (access == Access::Read)
         study->m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
     if (!study->m_db.open()) {
-        *error = located(path, QStringLiteral("cannot open: %1").arg(study->m_db.lastError().text()));
+        *error =
+            located(path, QStringLiteral("cannot open: %1").arg(study->m_db.lastError().text()));
         return nullptr;
     }
     QSqlQuery query(study->m_db);
@@ -194,7 +194,8 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
             rows.insert(query.value(0).toString(), query.value(1).toString());
     }
     if (rows.value(QStringLiteral("format")) != QLatin1String(Format)) {
-        *error = located(path, QStringLiteral("not a semhap study (%1)").arg(QLatin1String(Format)));
+        *error =
+            located(path, QStringLiteral("not a semhap study (%1)").arg(QLatin1String(Format)));
         return nullptr;
     }
     // The protocol the study began with, whatever became of its file since; routers and
@@ -203,8 +204,9 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
     if (!StudyProtocol::parse(rows.value(QStringLiteral("protocol")).toUtf8(),
                               rows.value(QStringLiteral("protocol_file")), &study->m_protocol,
                               &protocolError)) {
-        *error = located(path, QStringLiteral("its protocol no longer loads: %1")
-                                   .arg(protocolError.toString()));
+        *error = located(
+            path,
+            QStringLiteral("its protocol no longer loads: %1").arg(protocolError.toString()));
         return nullptr;
     }
     if (access == Access::Write) {
@@ -212,11 +214,11 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
         const bool ok =
             query.exec(QStringLiteral("PRAGMA journal_mode=WAL")) &&
             query.exec(QStringLiteral("PRAGMA synchronous=FULL")) &&
-            study->exec(QStringLiteral("UPDATE trials SET status = ?, reason = ? WHERE status = ?"),
-                        {statusName(Status::Interrupted),
-                         QStringLiteral("the study closed while it ran"),
-                         statusName(Status::Running)},
-                        error);
+            study->exec(
+                QStringLiteral("UPDATE trials SET status = ?, reason = ? WHERE status = ?"),
+                {statusName(Status::Interrupted), QStringLiteral("the study closed while it ran"),
+                 statusName(Status::Running)},
+                error);
         if (!ok) {
             if (error->isEmpty())
                 *error = located(path, query.lastError().text());
@@ -252,8 +254,8 @@ bool StudyDatabase::addParticipant(const QString &id, QString *error)
 {
     static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
     if (!idPattern.match(id).hasMatch()) {
-        *error = QStringLiteral("a participant's id is 1 to 32 of A-Z a-z 0-9 _ . -, got '%1'")
-                     .arg(id);
+        *error =
+            QStringLiteral("a participant's id is 1 to 32 of A-Z a-z 0-9 _ . -, got '%1'").arg(id);
         return false;
     }
     if (participants().contains(id)) {
@@ -275,8 +277,8 @@ std::vector<int> StudyDatabase::order(const QString &participant) const
     query.addBindValue(participant);
     std::vector<int> order;
     if (query.exec() && query.next()) {
-        for (const QString &id : query.value(0).toString().split(QLatin1Char(' '),
-                                                                  Qt::SkipEmptyParts))
+        for (const QString &id :
+             query.value(0).toString().split(QLatin1Char(' '), Qt::SkipEmptyParts))
             order.push_back(m_protocol.conditionIndex(id));
     }
     return order;
@@ -393,8 +395,8 @@ StudyProtocol::Step StudyDatabase::nextStep(const QString &participant) const
     return {};
 }
 
-QString StudyDatabase::newSessionPath(const QString &participant,
-                                      const StudyProtocol::Step &step, QString *error) const
+QString StudyDatabase::newSessionPath(const QString &participant, const StudyProtocol::Step &step,
+                                      QString *error) const
 {
     const QFileInfo file(m_path);
     const QString folder =
@@ -405,10 +407,10 @@ QString StudyDatabase::newSessionPath(const QString &participant,
     }
     const bool practice = step.kind == StudyProtocol::Step::Kind::Practice;
     const QString stem =
-        QStringLiteral("%1/%2-%3-%4").arg(folder, participant,
-                                          m_protocol.conditions[size_t(step.condition)].id,
-                                          practice ? QStringLiteral("practice")
-                                                   : QStringLiteral("trial%1").arg(step.trial));
+        QStringLiteral("%1/%2-%3-%4")
+            .arg(folder, participant, m_protocol.conditions[size_t(step.condition)].id,
+                 practice ? QStringLiteral("practice")
+                          : QStringLiteral("trial%1").arg(step.trial));
     // A redone trial gets a file of its own; the first attempt's session stays.
     QString path = stem + QStringLiteral(".db");
     for (int attempt = 2; QFileInfo::exists(path); ++attempt)
@@ -472,9 +474,9 @@ bool StudyDatabase::setStatus(qint64 id, Status from, Status to, double seconds,
     if (to == Status::Invalid)
         return exec(QStringLiteral("UPDATE trials SET status = ?, reason = ? WHERE id = ?"),
                     {statusName(to), text(reason), id}, error);
-    const QString json = metrics ? QString::fromUtf8(QJsonDocument(*metrics).toJson(
-                                       QJsonDocument::Compact))
-                                 : QStringLiteral("{}");
+    const QString json =
+        metrics ? QString::fromUtf8(QJsonDocument(*metrics).toJson(QJsonDocument::Compact))
+                : QStringLiteral("{}");
     return exec(QStringLiteral("UPDATE trials SET status = ?, reason = ?, ended = ?, seconds = ?, "
                                "metrics = ? WHERE id = ?"),
                 {statusName(to), text(reason), now(), seconds, json, id}, error);
@@ -500,8 +502,7 @@ bool StudyDatabase::invalidateTrial(qint64 id, const QString &reason, QString *e
     return setStatus(id, Status::Done, Status::Invalid, 0, nullptr, reason, error);
 }
 
-const StudyProtocol::Question *StudyDatabase::question(int condition,
-                                                       const QString &measure) const
+const StudyProtocol::Question *StudyDatabase::question(int condition, const QString &measure) const
 {
     using Kind = StudyProtocol::Question::Kind;
     for (const StudyProtocol::Question &q : m_protocol.afterCondition) {

@@ -38,11 +38,11 @@ public:
     /** What a practice round or trial is now. */
     enum class Status
     {
-        Running,     ///< begun, not finished
-        Done,        ///< finished; counts
-        Aborted,     ///< stopped by the experimenter before its end
-        Invalid,     ///< finished, then marked not to count (a reason says why)
-        Interrupted  ///< the study closed while it ran (a crash, a power cut)
+        Running,    ///< begun, not finished
+        Done,       ///< finished; counts
+        Aborted,    ///< stopped by the experimenter before its end
+        Invalid,    ///< finished, then marked not to count (a reason says why)
+        Interrupted ///< the study closed while it ran (a crash, a power cut)
     };
 
     /** One practice round or trial. */
@@ -86,8 +86,7 @@ public:
      * holds it) and marks a trial left running by a crash as interrupted. Null with
      * `PATH: reason` in `error`.
      */
-    static std::unique_ptr<StudyDatabase> open(const QString &path, Access access,
-                                               QString *error);
+    static std::unique_ptr<StudyDatabase> open(const QString &path, Access access, QString *error);
 
     const QString &path() const { return m_path; }
     const StudyProtocol &protocol() const { return m_protocol; }

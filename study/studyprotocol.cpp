@@ -123,8 +123,9 @@ bool readFactors(JsonReader &reader, const QJsonArray &factors,
 {
     const QString at = QStringLiteral("/factors");
     if (factors.size() > 2)
-        return reader.fail(at, QStringLiteral("at most 2 factors (a two-way design), got %1")
-                                   .arg(factors.size()));
+        return reader.fail(
+            at,
+            QStringLiteral("at most 2 factors (a two-way design), got %1").arg(factors.size()));
     for (int i = 0; i < factors.size(); ++i) {
         const QString item = jsonPointerChild(at, i);
         if (!factors[i].isObject())
@@ -136,16 +137,17 @@ bool readFactors(JsonReader &reader, const QJsonArray &factors,
             !reader.strings(f, item, QLatin1String("levels"), &factor.levels))
             return false;
         if (factor.levels.size() < 2 || factor.levels.size() > 8)
-            return reader.fail(item + QStringLiteral("/levels"),
-                               QStringLiteral("must list 2 to 8 levels, got %1")
-                                   .arg(factor.levels.size()));
+            return reader.fail(
+                item + QStringLiteral("/levels"),
+                QStringLiteral("must list 2 to 8 levels, got %1").arg(factor.levels.size()));
         if (factor.levels.removeDuplicates() > 0)
             return reader.fail(item + QStringLiteral("/levels"),
                                QStringLiteral("names a level twice"));
         for (const StudyProtocol::Factor &other : *out) {
             if (other.id == factor.id)
-                return reader.fail(item + QStringLiteral("/id"),
-                                   QStringLiteral("%1 is already a factor").arg(quoted(factor.id)));
+                return reader.fail(
+                    item + QStringLiteral("/id"),
+                    QStringLiteral("%1 is already a factor").arg(quoted(factor.id)));
         }
         out->push_back(factor);
     }
@@ -166,8 +168,9 @@ bool readLevels(JsonReader &reader, const QJsonObject &condition, const QString 
         return true;
     }
     for (auto it = levels.begin(); it != levels.end(); ++it) {
-        const bool known = std::any_of(factors.begin(), factors.end(),
-                                       [&](const StudyProtocol::Factor &f) { return f.id == it.key(); });
+        const bool known =
+            std::any_of(factors.begin(), factors.end(),
+                        [&](const StudyProtocol::Factor &f) { return f.id == it.key(); });
         if (!known)
             return reader.fail(jsonPointerChild(pointer, it.key()),
                                QStringLiteral("no such factor"));
@@ -191,9 +194,9 @@ bool readLevels(JsonReader &reader, const QJsonObject &condition, const QString 
 const QStringList &StudyProtocol::tlxSubscales()
 {
     static const QStringList names{
-        QStringLiteral("tlx.mental"),      QStringLiteral("tlx.physical"),
-        QStringLiteral("tlx.temporal"),    QStringLiteral("tlx.performance"),
-        QStringLiteral("tlx.effort"),      QStringLiteral("tlx.frustration")};
+        QStringLiteral("tlx.mental"),   QStringLiteral("tlx.physical"),
+        QStringLiteral("tlx.temporal"), QStringLiteral("tlx.performance"),
+        QStringLiteral("tlx.effort"),   QStringLiteral("tlx.frustration")};
     return names;
 }
 
@@ -390,9 +393,9 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
         }
         for (const Condition &other : p.conditions) {
             if (ok && !p.factors.empty() && other.levels == condition.levels)
-                ok = reader.fail(at + QStringLiteral("/levels"),
-                                 QStringLiteral("the same cell as condition %1")
-                                     .arg(quoted(other.id)));
+                ok = reader.fail(
+                    at + QStringLiteral("/levels"),
+                    QStringLiteral("the same cell as condition %1").arg(quoted(other.id)));
         }
         if (!ok)
             break;

@@ -27,9 +27,9 @@ struct StudyProtocol
     /** One feedback condition: what the participant gets. */
     struct Condition
     {
-        QString id;     ///< short, in tables and file names (`[A-Za-z0-9_.-]`)
-        QString label;  ///< what the experimenter and the participant read
-        QString router; ///< a preset, or a router file relative to the protocol
+        QString id;         ///< short, in tables and file names (`[A-Za-z0-9_.-]`)
+        QString label;      ///< what the experimenter and the participant read
+        QString router;     ///< a preset, or a router file relative to the protocol
         QStringList levels; ///< its level of each factor, in the factors' order
     };
 
@@ -92,10 +92,10 @@ struct StudyProtocol
         }
     };
 
-    QString file;  ///< the protocol, as the user named it
+    QString file;      ///< the protocol, as the user named it
     QByteArray source; ///< the file's bytes, as read (a study keeps the protocol it began with)
-    QString name;  ///< what the experimenter's view shows
-    QString scene; ///< a bundled scene, or an MJCF file (absolute once read)
+    QString name;      ///< what the experimenter's view shows
+    QString scene;     ///< a bundled scene, or an MJCF file (absolute once read)
     SceneOptions sceneOptions;
     std::vector<Condition> conditions;
     std::vector<Factor> factors; ///< empty, or the 1–2 factors every condition is a cell of

@@ -4,7 +4,6 @@
 #include "sessionwriter.h"
 #include "simrun.h"
 
-
 #include <algorithm>
 
 namespace semhap {
@@ -124,12 +123,10 @@ bool StudySimulation::run(StudyDatabase &study, const Options &options, QString 
     }
     const int width = std::max(2, int(QString::number(options.participants).size()));
     for (int number = 1; number <= options.participants; ++number) {
-        const QString participant =
-            QStringLiteral("P%1").arg(number, width, 10, QLatin1Char('0'));
+        const QString participant = QStringLiteral("P%1").arg(number, width, 10, QLatin1Char('0'));
         if (!study.addParticipant(participant, error))
             return false;
-        for (const StudyProtocol::Step &step :
-             study.protocol().steps(study.order(participant))) {
+        for (const StudyProtocol::Step &step : study.protocol().steps(study.order(participant))) {
             if (step.kind != Kind::Practice && step.kind != Kind::Trial)
                 continue;
             if (!runStep(study, participant, number, step, options, error))

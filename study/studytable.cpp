@@ -27,8 +27,8 @@ struct Field
  * Splits `bytes` into records of fields (RFC 4180: quoted fields may hold commas, quotes
  * doubled, and line breaks); false with the place of an unterminated quote.
  */
-bool splitCsv(const QByteArray &bytes, const QString &path, std::vector<std::vector<Field>> *records,
-              std::vector<int> *lines, LoadError *error)
+bool splitCsv(const QByteArray &bytes, const QString &path,
+              std::vector<std::vector<Field>> *records, std::vector<int> *lines, LoadError *error)
 {
     std::vector<Field> record;
     QByteArray field;
@@ -82,7 +82,8 @@ bool splitCsv(const QByteArray &bytes, const QString &path, std::vector<std::vec
         ++column;
     }
     if (quoted) {
-        *error = LoadError::atLine(path, line, column, QStringLiteral("a quoted field never ends"));
+        *error =
+            LoadError::atLine(path, line, column, QStringLiteral("a quoted field never ends"));
         return false;
     }
     if (!field.isEmpty() || !record.empty()) {
@@ -135,8 +136,8 @@ StudyTable StudyTable::fromStudy(const StudyDatabase &study)
         double sum = 0;
         for (double v : values)
             sum += v;
-        table.add(key.first, protocol.conditions[size_t(key.second)].id, 0,
-                  QLatin1String(RawTlx), sum / double(values.size()));
+        table.add(key.first, protocol.conditions[size_t(key.second)].id, 0, QLatin1String(RawTlx),
+                  sum / double(values.size()));
     }
     return table;
 }
@@ -152,8 +153,7 @@ bool StudyTable::readCsv(const QString &path, StudyTable *out, LoadError *error)
     return parseCsv(bytes, path, out, error);
 }
 
-bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out,
-                          LoadError *error)
+bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out, LoadError *error)
 {
     if (bytes.startsWith("\xEF\xBB\xBF")) // a spreadsheet's byte-order mark
         bytes.remove(0, 3);
@@ -167,13 +167,15 @@ bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out
         return false;
     };
     if (records.empty())
-        return fail(0, 1, QStringLiteral("empty; the first line must be %1").arg(QLatin1String(Header)));
+        return fail(0, 1,
+                    QStringLiteral("empty; the first line must be %1").arg(QLatin1String(Header)));
     QStringList names;
     for (const Field &f : records[0])
         names.append(f.text.trimmed());
     if (names != header)
-        return fail(0, 1, QStringLiteral("the header must be exactly %1, got %2")
-                              .arg(QLatin1String(Header), names.join(QLatin1Char(','))));
+        return fail(0, 1,
+                    QStringLiteral("the header must be exactly %1, got %2")
+                        .arg(QLatin1String(Header), names.join(QLatin1Char(','))));
     StudyTable table;
     // Names from other tools may hold spaces ("No feedback"); not line breaks or controls.
     static const QRegularExpression namePattern(QStringLiteral("^[^\\x00-\\x1f\\x7f]{1,200}$"));

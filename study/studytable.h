@@ -57,8 +57,7 @@ public:
      */
     static bool readCsv(const QString &path, StudyTable *out, LoadError *error);
     /** Reads a tidy CSV's bytes as readCsv() does, `path` naming them in errors. */
-    static bool parseCsv(QByteArray bytes, const QString &path, StudyTable *out,
-                         LoadError *error);
+    static bool parseCsv(QByteArray bytes, const QString &path, StudyTable *out, LoadError *error);
 
     /** The CSV, header first. */
     QByteArray toCsv() const;

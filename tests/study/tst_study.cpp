@@ -110,14 +110,14 @@ void TestStudy::exampleProtocolsRead_data()
     // The paper's trials: one minute in box_and_block, two in the bimanual task; its first
     // study crossed grasp and break modality.
     QTest::newRow("comparison") << "comparison.json"
-                                << "box_and_block" << int(ConditionOrder::Scheme::Williams)
-                                << 60.0 << 2;
+                                << "box_and_block" << int(ConditionOrder::Scheme::Williams) << 60.0
+                                << 2;
     QTest::newRow("unimanual") << "unimanual.json"
-                               << "box_and_block" << int(ConditionOrder::Scheme::Williams)
-                               << 60.0 << 0;
+                               << "box_and_block" << int(ConditionOrder::Scheme::Williams) << 60.0
+                               << 0;
     QTest::newRow("bimanual") << "bimanual.json"
-                              << "bimanual_sorting" << int(ConditionOrder::Scheme::Latin)
-                              << 120.0 << 0;
+                              << "bimanual_sorting" << int(ConditionOrder::Scheme::Latin) << 120.0
+                              << 0;
 }
 
 void TestStudy::exampleProtocolsRead()
@@ -209,7 +209,8 @@ void TestStudy::badProtocolsAreRefused_data()
     // In the 2 x 2 factorial version of the protocol (badProtocolsAreRefused's `factorial`).
     QTest::newRow("factorial: a condition outside the factors")
         << ", \"levels\": {\"grasp\": \"vib\", \"break\": \"vib\"}"
-        << "" << "/conditions/0: missing key 'levels'";
+        << ""
+        << "/conditions/0: missing key 'levels'";
     QTest::newRow("factorial: three factors")
         << "\"factors\": ["
         << "\"factors\": [{\"id\": \"c\", \"levels\": [\"1\", \"2\"]}, "

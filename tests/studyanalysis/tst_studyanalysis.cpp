@@ -89,7 +89,8 @@ void TestStudyAnalysis::oneWayAsField()
              qPrintable(report));
     // JSON carries the same numbers.
     const QJsonObject json = analysis.toJson();
-    const QJsonObject anova = json[QLatin1String("measures")][0][QLatin1String("anova")].toObject();
+    const QJsonObject anova =
+        json[QLatin1String("measures")][0][QLatin1String("anova")].toObject();
     QCOMPARE(anova[QLatin1String("f")].toDouble(), m.anova.f);
     QCOMPARE(anova[QLatin1String("greenhouse_geisser")][QLatin1String("epsilon")].toDouble(),
              m.anova.sphericity.greenhouseGeisser);
@@ -103,12 +104,11 @@ void TestStudyAnalysis::twoWayFromAFactorialStudy()
     // 122.564825, interaction F = 17.154922; the book: drink F(1.15, 21.93) = 5.11.
     QTemporaryDir dir;
     const QString protocolPath = dir.filePath(QStringLiteral("attitude.json"));
-    const char *cells[][3] = {
-        {"waterneut", "water", "neutral"}, {"beerpos", "beer", "positive"},
-        {"wineneg", "wine", "negative"},   {"beerneg", "beer", "negative"},
-        {"waterpos", "water", "positive"}, {"winepos", "wine", "positive"},
-        {"beerneut", "beer", "neutral"},   {"wineneut", "wine", "neutral"},
-        {"waterneg", "water", "negative"}};
+    const char *cells[][3] = {{"waterneut", "water", "neutral"}, {"beerpos", "beer", "positive"},
+                              {"wineneg", "wine", "negative"},   {"beerneg", "beer", "negative"},
+                              {"waterpos", "water", "positive"}, {"winepos", "wine", "positive"},
+                              {"beerneut", "beer", "neutral"},   {"wineneut", "wine", "neutral"},
+                              {"waterneg", "water", "negative"}};
     QString conditions;
     for (const auto &c : cells)
         conditions += QStringLiteral(R"({"id": "%1", "label": "%1", "router": "C1",
@@ -130,8 +130,8 @@ void TestStudyAnalysis::twoWayFromAFactorialStudy()
     QVERIFY2(StudyProtocol::read(protocolPath, &protocol, &loadError),
              qPrintable(loadError.toString()));
     QString error;
-    auto study = StudyDatabase::create(dir.filePath(QStringLiteral("attitude.db")), protocol,
-                                       &error);
+    auto study =
+        StudyDatabase::create(dir.filePath(QStringLiteral("attitude.db")), protocol, &error);
     QVERIFY2(study, qPrintable(error));
     const StudyTable attitude = readTable(data("attitude.csv"));
     for (const StudyTable::Row &row : attitude.rows()) {
@@ -154,8 +154,8 @@ void TestStudyAnalysis::twoWayFromAFactorialStudy()
     QVERIFY(published(m.twoWayAnova.interaction.f, 17.154922, 5e-7));
     const QString report = QString::fromUtf8(analysis.markdown());
     QVERIFY2(report.contains(QLatin1String("drink: F(1.15, 21.93) = 5.11")), qPrintable(report));
-    const QJsonObject twoWay = analysis.toJson()[QLatin1String("measures")][0]
-                                   [QLatin1String("two_way_anova")].toObject();
+    const QJsonObject twoWay =
+        analysis.toJson()[QLatin1String("measures")][0][QLatin1String("two_way_anova")].toObject();
     QCOMPARE(twoWay.keys(), (QStringList{"drink", "drink:imagery", "imagery"}));
 }
 
@@ -229,7 +229,8 @@ void TestStudyAnalysis::badCsvIsLocated_data()
     QTest::newRow("empty") << QByteArray() << ":1:1: empty";
     QTest::newRow("another header") << QByteArray("subject,condition,trial,measure,value\n")
                                     << ":1:1: the header must be exactly";
-    QTest::newRow("four fields") << header + "P1,A,1,x\n" << ":2:1: expected 5 fields, got 4";
+    QTest::newRow("four fields") << header + "P1,A,1,x\n"
+                                 << ":2:1: expected 5 fields, got 4";
     QTest::newRow("a bad trial") << header + "P1,A,first,x,1\n"
                                  << ":2:6: trial must be a whole number";
     QTest::newRow("a bad value") << header + "P1,A,1,x,1\nP1,B,1,x,lots\n"
@@ -238,8 +239,10 @@ void TestStudyAnalysis::badCsvIsLocated_data()
                                             << ":2:1: participant must be 1 to 200 characters";
     QTest::newRow("a blank condition") << header + "P1,  ,1,x,1\n"
                                        << ":2:4: condition must be 1 to 200 characters";
-    QTest::newRow("an open quote") << header + "P1,A,1,\"x,1\n" << ":3:1: a quoted field never ends";
-    QTest::newRow("infinity") << header + "P1,A,1,x,inf\n" << ":2:10: value must be a number";
+    QTest::newRow("an open quote") << header + "P1,A,1,\"x,1\n"
+                                   << ":3:1: a quoted field never ends";
+    QTest::newRow("infinity") << header + "P1,A,1,x,inf\n"
+                              << ":2:10: value must be a number";
 }
 
 void TestStudyAnalysis::badCsvIsLocated()

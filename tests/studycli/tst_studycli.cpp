@@ -64,10 +64,10 @@ private:
 void TestStudyCli::initTestCase()
 {
     m_study = m_dir.filePath(QStringLiteral("unimanual.db"));
-    m_simulated = semhapRun({QStringLiteral("study"), QStringLiteral("simulate"),
-                             example("unimanual.json"), QStringLiteral("--participants"),
-                             QStringLiteral("20"), QStringLiteral("--out"), m_study,
-                             QStringLiteral("--trial-seconds"), QString::number(TrialSeconds)});
+    m_simulated =
+        semhapRun({QStringLiteral("study"), QStringLiteral("simulate"), example("unimanual.json"),
+                   QStringLiteral("--participants"), QStringLiteral("20"), QStringLiteral("--out"),
+                   m_study, QStringLiteral("--trial-seconds"), QString::number(TrialSeconds)});
     QVERIFY2(m_simulated.code == 0, m_simulated.err.constData());
 }
 
@@ -104,8 +104,8 @@ void TestStudyCli::simulatedStudyFollowsTheProtocol()
     // router with the participant's seed.
     const StudyDatabase::Trial &trial = trials[4]; // P01's second condition, trial 1
     QVERIFY(!trial.practice);
-    std::unique_ptr<SessionReader> session = SessionReader::open(
-        QFileInfo(m_study).absoluteDir().filePath(trial.session), &error);
+    std::unique_ptr<SessionReader> session =
+        SessionReader::open(QFileInfo(m_study).absoluteDir().filePath(trial.session), &error);
     QVERIFY2(session, qPrintable(error));
     const SessionInfo &info = session->info();
     QCOMPARE(info.extra.value("participant"), QStringLiteral("P01"));
@@ -122,8 +122,8 @@ void TestStudyCli::simulatedStudyFollowsTheProtocol()
 void TestStudyCli::exportIsTidy()
 {
     const QString dir = m_dir.filePath(QStringLiteral("export"));
-    const CliResult r = semhapRun(
-        {QStringLiteral("study"), QStringLiteral("export"), m_study, QStringLiteral("--csv"), dir});
+    const CliResult r = semhapRun({QStringLiteral("study"), QStringLiteral("export"), m_study,
+                                   QStringLiteral("--csv"), dir});
     QVERIFY2(r.code == 0, r.err.constData());
     const QList<QByteArray> lines = readAll(dir + QStringLiteral("/measures.csv")).split('\n');
     QCOMPARE(lines.first(), QByteArray("participant,condition,trial,measure,value"));
@@ -139,11 +139,11 @@ void TestStudyCli::exportIsTidy()
             if (!it.value().isDouble())
                 continue;
             ++expected;
-            const QString row = QStringLiteral("%1,%2,%3,%4,")
-                                    .arg(t.participant,
-                                         study->protocol().conditions[size_t(t.condition)].id)
-                                    .arg(t.number)
-                                    .arg(it.key());
+            const QString row =
+                QStringLiteral("%1,%2,%3,%4,")
+                    .arg(t.participant, study->protocol().conditions[size_t(t.condition)].id)
+                    .arg(t.number)
+                    .arg(it.key());
             seen.insert(row + QString::number(it.value().toDouble(), 'g', 17));
         }
     }
@@ -172,9 +172,8 @@ void TestStudyCli::exportIsTidy()
 
 void TestStudyCli::analysisOfTheStudyAndOfItsExportAgree()
 {
-    const CliResult fromStudy =
-        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
-                   QStringLiteral("--json")});
+    const CliResult fromStudy = semhapRun(
+        {QStringLiteral("study"), QStringLiteral("analyze"), m_study, QStringLiteral("--json")});
     QVERIFY2(fromStudy.code == 0, fromStudy.err.constData());
     const QJsonObject json = QJsonDocument::fromJson(fromStudy.out).object();
     QCOMPARE(json[QLatin1String("conditions")].toArray().size(), 4);
@@ -203,15 +202,13 @@ void TestStudyCli::analysisOfTheStudyAndOfItsExportAgree()
         QMap<QString, QString> out;
         for (const QJsonValue &m : analysis[QLatin1String("measures")].toArray()) {
             const QString name = m[QLatin1String("measure")].toString();
-            out[name] = QStringLiteral("n %1 F %2 p %3 chi2 %4")
-                            .arg(m[QLatin1String("participants")].toInt())
-                            .arg(m[QLatin1String("anova")][QLatin1String("f")].toDouble(), 0,
-                                 'g', 10)
-                            .arg(m[QLatin1String("anova")][QLatin1String("p")].toDouble(), 0,
-                                 'g', 10)
-                            .arg(m[QLatin1String("friedman")][QLatin1String("chi_squared")]
-                                     .toDouble(),
-                                 0, 'g', 10);
+            out[name] =
+                QStringLiteral("n %1 F %2 p %3 chi2 %4")
+                    .arg(m[QLatin1String("participants")].toInt())
+                    .arg(m[QLatin1String("anova")][QLatin1String("f")].toDouble(), 0, 'g', 10)
+                    .arg(m[QLatin1String("anova")][QLatin1String("p")].toDouble(), 0, 'g', 10)
+                    .arg(m[QLatin1String("friedman")][QLatin1String("chi_squared")].toDouble(), 0,
+                         'g', 10);
             for (const QJsonValue &c : m[QLatin1String("conditions")].toArray())
                 out[name + QLatin1Char('/') + c[QLatin1String("condition")].toString()] =
                     QString::number(c[QLatin1String("mean")].toDouble(), 'g', 12);
@@ -220,15 +217,15 @@ void TestStudyCli::analysisOfTheStudyAndOfItsExportAgree()
     };
     QCOMPARE(invariant(QJsonDocument::fromJson(fromCsv.out).object()), invariant(json));
     // One measure on its own; an unknown one is refused with the ones there are.
-    const CliResult one = semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
-                                     QStringLiteral("--measure"),
-                                     QStringLiteral("cubes_transferred")});
+    const CliResult one =
+        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
+                   QStringLiteral("--measure"), QStringLiteral("cubes_transferred")});
     QCOMPARE(one.code, 0);
     QVERIFY(one.out.contains("| cubes_transferred | 20 |"));
     QVERIFY(!one.out.contains("## cubes_broken"));
-    const CliResult unknown = semhapRun({QStringLiteral("study"), QStringLiteral("analyze"),
-                                         m_study, QStringLiteral("--measure"),
-                                         QStringLiteral("happiness")});
+    const CliResult unknown =
+        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), m_study,
+                   QStringLiteral("--measure"), QStringLiteral("happiness")});
     QCOMPARE(unknown.code, 1);
     QVERIFY(unknown.err.contains("no measure 'happiness' (measures: "));
 }
@@ -292,7 +289,8 @@ void TestStudyCli::aKillLosesAtMostTheRunningTrial()
         QCOMPARE(next.condition, last.condition);
         QCOMPARE(next.trial, last.number);
     }
-    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("check"));
+    QSqlDatabase db =
+        QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("check"));
     db.setDatabaseName(path);
     QVERIFY(db.open());
     QSqlQuery check(db);
@@ -314,27 +312,29 @@ void TestStudyCli::badCallsAreRefused_data()
     QTest::newRow("no participants")
         << QStringList{"simulate", example("unimanual.json"), "--participants", "0", "--out", out}
         << 2 << "--participants must be a whole number from 1 to 1000";
-    QTest::newRow("trial seconds 0")
-        << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out", out,
-                       "--trial-seconds", "0"}
-        << 2 << "--trial-seconds must be more than 0";
+    QTest::newRow("trial seconds 0") << QStringList{"simulate",        example("unimanual.json"),
+                                                    "--participants",  "2",
+                                                    "--out",           out,
+                                                    "--trial-seconds", "0"}
+                                     << 2 << "--trial-seconds must be more than 0";
     QTest::newRow("the study exists")
         << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out",
                        "STUDY"}
         << 1 << "already exists";
     QTest::newRow("the protocol as the output")
-        << QStringList{"simulate", example("unimanual.json"), "--participants", "2", "--out",
-                       example("unimanual.json")}
+        << QStringList{"simulate", example("unimanual.json"), "--participants", "2",
+                       "--out",    example("unimanual.json")}
         << 1 << "cannot write: it is the same file as the input";
     QTest::newRow("a bad protocol")
-        << QStringList{"simulate", QStringLiteral(SEMHAP_TEST_DATA "/bad.json"), "--participants",
-                       "2", "--out", out}
+        << QStringList{"simulate",       QStringLiteral(SEMHAP_TEST_DATA "/bad.json"),
+                       "--participants", "2",
+                       "--out",          out}
         << 1 << "bad.json: /conditions/0/router: C9: no such router preset";
     QTest::newRow("export of no study")
         << QStringList{"export", example("unimanual.json"), "--csv", "OUT"} << 1
         << "not a semhap study";
-    QTest::newRow("export without --csv") << QStringList{"export", "STUDY"} << 2
-                                          << "export needs --csv DIR";
+    QTest::newRow("export without --csv")
+        << QStringList{"export", "STUDY"} << 2 << "export needs --csv DIR";
     QTest::newRow("analyze a bad CSV")
         << QStringList{"analyze", QStringLiteral(SEMHAP_TEST_DATA "/bad.csv")} << 1
         << "bad.csv:3:19: value must be a number, empty or NA, got 'many'";

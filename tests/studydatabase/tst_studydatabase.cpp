@@ -52,8 +52,8 @@ private slots:
 
 private:
     QTemporaryDir m_dir;
-    std::unique_ptr<StudyDatabase> create(const QString &name,
-                                          const QString &protocol = QStringLiteral("bimanual.json"))
+    std::unique_ptr<StudyDatabase>
+    create(const QString &name, const QString &protocol = QStringLiteral("bimanual.json"))
     {
         QString error;
         auto study = StudyDatabase::create(m_dir.filePath(name),
@@ -127,9 +127,9 @@ void TestStudyDatabase::aSecondWriterIsRefused()
     QVERIFY2(StudyDatabase::open(first->path(), StudyDatabase::Access::Read, &error),
              qPrintable(error));
     first.reset();
-    QVERIFY2(StudyDatabase::open(m_dir.filePath("locked.db"), StudyDatabase::Access::Write,
-                                 &error),
-             qPrintable(error));
+    QVERIFY2(
+        StudyDatabase::open(m_dir.filePath("locked.db"), StudyDatabase::Access::Write, &error),
+        qPrintable(error));
 }
 
 void TestStudyDatabase::stepsFollowTheProtocol()
@@ -270,7 +270,8 @@ void TestStudyDatabase::answersStayWithinTheirScale()
     QFETCH(QString, measure);
     QFETCH(double, value);
     QFETCH(bool, accepted);
-    auto study = create(QStringLiteral("scale-%1.db").arg(QTest::currentDataTag())
+    auto study = create(QStringLiteral("scale-%1.db")
+                            .arg(QTest::currentDataTag())
                             .replace(QLatin1Char(' '), QLatin1Char('_')));
     QString error;
     QVERIFY(study->addParticipant(QStringLiteral("P01"), &error));
@@ -292,8 +293,8 @@ void TestStudyDatabase::theNewestAnswerCounts()
     for (double v : {3.0, 5.0, 4.0})
         QVERIFY(study->answer({QStringLiteral("P01"), 0, QStringLiteral("dexterity"), v, {}, {}},
                               &error));
-    QVERIFY(study->answer({QStringLiteral("P02"), 0, QStringLiteral("dexterity"), 6, {}, {}},
-                          &error));
+    QVERIFY(
+        study->answer({QStringLiteral("P02"), 0, QStringLiteral("dexterity"), 6, {}, {}}, &error));
     const std::vector<StudyDatabase::Answer> mine = study->answers(QStringLiteral("P01"));
     QCOMPARE(int(mine.size()), 1);
     QCOMPARE(mine[0].value, 4.0);
