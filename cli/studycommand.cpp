@@ -123,7 +123,7 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     options.cancelled = [] { return QuitSignal::requested(); };
     options.progress = [&](const StudyDatabase::Trial &trial) {
         const StudyProtocol::Condition &condition = protocol.conditions[size_t(trial.condition)];
-        m_out << QStringLiteral("%1 %2 %3: %4 s, %5 transferred\n")
+        m_out << tr("%1 %2 %3: %4 s, %5 transferred\n")
                      .arg(trial.participant, condition.id,
                           trial.practice ? QStringLiteral("practice")
                                          : QStringLiteral("trial %1").arg(trial.number))
@@ -133,11 +133,12 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     };
     if (!StudySimulation::run(*study, options, &error))
         return inputError(error);
-    m_out << tr("%1: %2 simulated participants, %3 runs (sessions in %4)\n")
+    m_out << tr("%1: %2 simulated %3, %4 runs (sessions in %5)\n")
                  .arg(out)
                  .arg(options.participants)
+                 .arg(options.participants == 1 ? tr("participant") : tr("participants"))
                  .arg(study->trials().size())
-                 .arg(QFileInfo(out).completeBaseName() + QStringLiteral(".sessions"));
+                 .arg(StudyDatabase::sessionsFolder(out).section(QLatin1Char('/'), -1));
     return ExitOk;
 }
 
@@ -153,7 +154,12 @@ int StudyCommand::exportCsv(const QString &path, const QString &dir)
     if (!measures)
         return ExitInvalidInput;
     measures->write(StudyTable::fromStudy(*study).toCsv());
-    return writeLogs(*study, dir) ? ExitOk : ExitInvalidInput;
+    if (!writeLogs(*study, dir))
+        return ExitInvalidInput;
+    // A damaged study reads short: nothing half is handed over as the export.
+    if (!study->readError().isEmpty())
+        return inputError(study->readError());
+    return ExitOk;
 }
 
 bool StudyCommand::writeLogs(const StudyDatabase &study, const QString &dir)
@@ -181,7 +187,7 @@ bool StudyCommand::writeLogs(const StudyDatabase &study, const QString &dir)
         csv += ',';
         CsvRow::appendText(csv, t.reason);
         csv += ',';
-        CsvRow::appendNumber(csv, t.seconds);
+        CsvRow::appendNumber(csv, std::round(t.seconds * 1000.0) / 1000.0); // to the ms
         for (const QString &field : {t.started.toString(Qt::ISODateWithMs),
                                      t.ended.toString(Qt::ISODateWithMs), t.session}) {
             csv += ',';
@@ -226,10 +232,13 @@ int StudyCommand::analyze(const QCommandLineParser &parser, const QString &input
         if (!study)
             return inputError(error);
         table = StudyTable::fromStudy(*study);
+        if (!study->readError().isEmpty())
+            return inputError(study->readError());
         name = study->protocol().name;
     }
     keepFromOutputs(input, Kept::Input);
-    const QStringList measures = parser.values(QStringLiteral("measure"));
+    QStringList measures = parser.values(QStringLiteral("measure"));
+    measures.removeDuplicates();
     const QStringList known = table.measures();
     for (const QString &measure : measures) {
         if (!known.contains(measure))
@@ -238,7 +247,7 @@ int StudyCommand::analyze(const QCommandLineParser &parser, const QString &input
     }
     StudyAnalysis analysis = StudyAnalysis::run(table, measures);
     analysis.source = QFileInfo(input).fileName();
-    analysis.name = tr("Analysis: %1").arg(name);
+    analysis.name = QStringLiteral("Analysis: %1").arg(name); // the report is in English
     if (parser.isSet(QStringLiteral("report"))) {
         const QString dir = parser.value(QStringLiteral("report"));
         QIODevice *report = openOutputIn(dir, QStringLiteral("report.md"));

@@ -182,6 +182,19 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
             k > 0 && std::all_of(m.conditions.begin(), m.conditions.end(), [](const Condition &c) {
                 return c.normality.tested && c.normality.p >= Alpha;
             });
+        // Each participant's values a permutation of 1..k: a ranking, which only rank tests
+        // may take, whatever Shapiro-Wilk says.
+        m.ranking = !matrix.rows.empty() && std::all_of(matrix.rows.begin(), matrix.rows.end(),
+                                                        [k](std::vector<double> r) {
+                                                            std::sort(r.begin(), r.end());
+                                                            for (size_t i = 0; i < k; ++i) {
+                                                                if (r[i] != double(i + 1))
+                                                                    return false;
+                                                            }
+                                                            return true;
+                                                        });
+        if (m.ranking)
+            m.normal = false;
         m.anova = repeatedMeasuresAnova(matrix.rows);
         if (cells.size() == k && k > 0) {
             m.twoWay = true;
@@ -253,6 +266,7 @@ QJsonObject StudyAnalysis::toJson() const
             {QStringLiteral("excluded"), QJsonArray::fromStringList(m.excluded)},
             {QStringLiteral("conditions"), conditionList},
             {QStringLiteral("normal"), m.normal},
+            {QStringLiteral("ranking"), m.ranking},
             {QStringLiteral("primary"),
              m.normal ? QStringLiteral("anova") : QStringLiteral("friedman")},
             {QStringLiteral("anova"), effectJson(m.anova)},
@@ -342,17 +356,23 @@ QByteArray StudyAnalysis::markdown() const
         md += QStringLiteral("| condition | mean | SD | median | IQR | Shapiro–Wilk |\n"
                              "|---|---|---|---|---|---|\n");
         for (const Condition &c : m.conditions) {
-            md += QStringLiteral("| %1 | %2 | %3 | %4 | %5–%6 | %7 |\n")
-                      .arg(cell(c.id), fixed(c.summary.mean), fixed(c.summary.sd),
-                           fixed(c.box.median), fixed(c.box.q1), fixed(c.box.q3),
+            const bool none = c.summary.n == 0;
+            md += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")
+                      .arg(cell(c.id), none ? QStringLiteral("–") : fixed(c.summary.mean),
+                           none ? QStringLiteral("–") : fixed(c.summary.sd), fixed(c.box.median),
+                           none ? QStringLiteral("–")
+                                : QStringLiteral("%1–%2").arg(fixed(c.box.q1), fixed(c.box.q3)),
                            c.normality.tested ? QStringLiteral("W = %1, %2")
                                                     .arg(unit(c.normality.w), pText(c.normality.p))
                                               : QStringLiteral("not tested"));
         }
         md += QStringLiteral("\n- Normality: %1.\n")
-                  .arg(m.normal ? QStringLiteral("every condition passes")
-                                : QStringLiteral("fails in a condition (or untestable): "
-                                                 "Friedman's test is primary"));
+                  .arg(m.ranking ? QStringLiteral("a ranking (each participant's values are 1 "
+                                                  "to %1): Friedman's test is primary")
+                                       .arg(m.conditions.size())
+                       : m.normal ? QStringLiteral("every condition passes")
+                                  : QStringLiteral("fails in a condition (or untestable): "
+                                                   "Friedman's test is primary"));
         md += QStringLiteral("- Repeated-measures ANOVA: %1.\n").arg(effectText(m.anova));
         if (m.twoWay) {
             md += QStringLiteral("- Two-way: %1: %2; %3: %4; %1 × %3: %5.\n")
@@ -402,13 +422,16 @@ QByteArray StudyAnalysis::boxPlotSvg(const Measure &m) const
         low = 0;
         high = 1;
     }
-    if (high - low < 1e-12) {
-        low -= 0.5;
-        high += 0.5;
+    // A span too small to split into steps at this magnitude is drawn as one value.
+    const double magnitude = std::max({1.0, std::abs(low), std::abs(high)});
+    if (high - low < 1e-9 * magnitude) {
+        low -= 0.5 * magnitude;
+        high += 0.5 * magnitude;
     }
     const double step = tickStep(high - low);
     low = std::floor(low / step) * step;
     high = std::ceil(high / step) * step;
+    const int ticks = std::min(20, int(std::lround((high - low) / step)));
     const auto y = [&](double v) { return top + plotHeight * (1.0 - (v - low) / (high - low)); };
     QString svg =
         QStringLiteral("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%1\" height=\"%2\" "
@@ -421,7 +444,8 @@ QByteArray StudyAnalysis::boxPlotSvg(const Measure &m) const
             .arg(left)
             .arg(xml(m.name))
             .arg(m.participants.size());
-    for (double v = low; v <= high + step / 2; v += step) {
+    for (int i = 0; i <= ticks; ++i) {
+        const double v = low + i * step;
         const double at = y(v);
         svg += QStringLiteral("<line x1=\"%1\" x2=\"%2\" y1=\"%3\" y2=\"%3\" stroke=\"#ddd\"/>"
                               "<text x=\"%4\" y=\"%5\" text-anchor=\"end\">%6</text>\n")

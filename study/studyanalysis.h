@@ -42,8 +42,10 @@ struct StudyAnalysis
         QStringList participants; ///< those in the analysis (a value in every condition)
         QStringList excluded;     ///< those left out: a condition missing
         std::vector<Condition> conditions;
-        /** Every condition's Shapiro–Wilk test ran and kept p >= Alpha. */
+        /** Every condition's Shapiro–Wilk test ran and kept p >= Alpha (never a ranking). */
         bool normal = false;
+        /** Each participant's values are a permutation of 1..k: rank tests only. */
+        bool ranking = false;
         bool twoWay = false;
         WithinEffect anova;              ///< one-way, over the conditions
         TwoWayWithinEffects twoWayAnova; ///< when twoWay

@@ -10,6 +10,7 @@
 #include <QRegularExpression>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QUrl>
 
 #include <atomic>
 #include <cmath>
@@ -98,6 +99,18 @@ std::unique_ptr<StudyDatabase> StudyDatabase::create(const QString &path,
                                               "open it to go on)"));
         return nullptr;
     }
+    // What a deleted study left would be taken for this one's: its journal, its sessions.
+    for (const QString &left : QStringList{path + QStringLiteral("-wal"),
+                                           path + QStringLiteral("-shm"), sessionsFolder(path)}) {
+        if (QFileInfo::exists(left) &&
+            !(QFileInfo(left).isDir() &&
+              QDir(left).isEmpty(QDir::NoDotAndDotDot | QDir::AllEntries))) {
+            *error = located(path, QStringLiteral("%1 is left from another study: move it away "
+                                                  "first")
+                                       .arg(QFileInfo(left).fileName()));
+            return nullptr;
+        }
+    }
     {
         const QString connection = newConnectionName();
         bool ok = true;
@@ -159,7 +172,9 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
     if (access == Access::Write) {
         // The lock file names the process holding it: a crashed one's lock is taken over,
         // a live one's never, however old (so no stale time).
-        study->m_lock = std::make_unique<QLockFile>(path + QStringLiteral(".lock"));
+        // One lock per file, however it is reached (a link, another mount path).
+        study->m_lock = std::make_unique<QLockFile>(QFileInfo(path).canonicalFilePath() +
+                                                    QStringLiteral(".lock"));
         study->m_lock->setStaleLockTime(0);
         if (!study->m_lock->tryLock(0)) {
             qint64 pid = 0;
@@ -200,10 +215,13 @@ std::unique_ptr<StudyDatabase> StudyDatabase::open(const QString &path, Access a
     }
     // The protocol the study began with, whatever became of its file since; routers and
     // scene files it names are found beside where it was.
+    // Reading results needs only the protocol's structure; running it, its routers and scene.
     LoadError protocolError;
     if (!StudyProtocol::parse(rows.value(QStringLiteral("protocol")).toUtf8(),
                               rows.value(QStringLiteral("protocol_file")), &study->m_protocol,
-                              &protocolError)) {
+                              &protocolError,
+                              access == Access::Write ? StudyProtocol::Checks::Full
+                                                      : StudyProtocol::Checks::Structure)) {
         *error = located(
             path,
             QStringLiteral("its protocol no longer loads: %1").arg(protocolError.toString()));
@@ -240,20 +258,38 @@ bool StudyDatabase::exec(const QString &sql, const QVariantList &values, QString
     return false;
 }
 
+bool StudyDatabase::readAll(QSqlQuery &query) const
+{
+    if (!query.exec()) {
+        noteReadError(query);
+        return false;
+    }
+    return true;
+}
+
+void StudyDatabase::noteReadError(const QSqlQuery &query) const
+{
+    if (m_readError.isEmpty() && query.lastError().isValid())
+        m_readError = located(
+            m_path, QStringLiteral("cannot read: %1").arg(query.lastError().databaseText()));
+}
+
 QStringList StudyDatabase::participants() const
 {
     QStringList ids;
     QSqlQuery query(m_db);
-    query.exec(QStringLiteral("SELECT id FROM participants ORDER BY position"));
+    query.prepare(QStringLiteral("SELECT id FROM participants ORDER BY position"));
+    if (!readAll(query))
+        return ids;
     while (query.next())
         ids.append(query.value(0).toString());
+    noteReadError(query);
     return ids;
 }
 
 bool StudyDatabase::addParticipant(const QString &id, QString *error)
 {
-    static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
-    if (!idPattern.match(id).hasMatch()) {
+    if (!StudyProtocol::isId(id)) {
         *error =
             QStringLiteral("a participant's id is 1 to 32 of A-Z a-z 0-9 _ . -, got '%1'").arg(id);
         return false;
@@ -293,7 +329,7 @@ std::vector<StudyDatabase::Trial> StudyDatabase::trials(const QString &participa
     query.addBindValue(text(participant));
     query.addBindValue(text(participant));
     std::vector<Trial> out;
-    if (!query.exec())
+    if (!readAll(query))
         return out;
     while (query.next()) {
         Trial t;
@@ -316,6 +352,7 @@ std::vector<StudyDatabase::Trial> StudyDatabase::trials(const QString &participa
         t.metrics = QJsonDocument::fromJson(query.value(11).toByteArray()).object();
         out.push_back(t);
     }
+    noteReadError(query);
     return out;
 }
 
@@ -331,7 +368,7 @@ std::vector<StudyDatabase::Answer> StudyDatabase::answers(const QString &partici
     query.addBindValue(text(participant));
     query.addBindValue(text(participant));
     std::vector<Answer> out;
-    if (!query.exec())
+    if (!readAll(query))
         return out;
     while (query.next()) {
         Answer a;
@@ -343,6 +380,7 @@ std::vector<StudyDatabase::Answer> StudyDatabase::answers(const QString &partici
         a.answered = QDateTime::fromString(query.value(5).toString(), Qt::ISODateWithMs);
         out.push_back(a);
     }
+    noteReadError(query);
     return out;
 }
 
@@ -395,12 +433,16 @@ StudyProtocol::Step StudyDatabase::nextStep(const QString &participant) const
     return {};
 }
 
+QString StudyDatabase::sessionsFolder(const QString &path)
+{
+    const QFileInfo file(path);
+    return file.absoluteDir().filePath(file.completeBaseName() + QStringLiteral(".sessions"));
+}
+
 QString StudyDatabase::newSessionPath(const QString &participant, const StudyProtocol::Step &step,
                                       QString *error) const
 {
-    const QFileInfo file(m_path);
-    const QString folder =
-        file.absoluteDir().filePath(file.completeBaseName() + QStringLiteral(".sessions"));
+    const QString folder = sessionsFolder(m_path);
     if (!QDir().mkpath(folder)) {
         *error = located(folder, QStringLiteral("cannot create the sessions folder"));
         return QString();

@@ -6,6 +6,7 @@
 #include <QDateTime>
 #include <QJsonObject>
 #include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QString>
 #include <QStringList>
 
@@ -89,6 +90,13 @@ public:
     static std::unique_ptr<StudyDatabase> open(const QString &path, Access access, QString *error);
 
     const QString &path() const { return m_path; }
+    /** The folder of a study's sessions: `STUDY.sessions` beside `STUDY.db`. */
+    static QString sessionsFolder(const QString &path);
+    /**
+     * The first read that failed since the study was opened (`FILE: cannot read: why`, a
+     * damaged file), empty when none did: what was read until then is incomplete.
+     */
+    const QString &readError() const { return m_readError; }
     const StudyProtocol &protocol() const { return m_protocol; }
 
     /** The participants, in the order they were added. */
@@ -139,6 +147,10 @@ public:
 private:
     StudyDatabase() = default;
     bool exec(const QString &sql, const QVariantList &values, QString *error);
+    /** Runs a prepared read; false (the error noted) when it failed. */
+    bool readAll(QSqlQuery &query) const;
+    /** Notes the query's error as readError() unless one is noted already. */
+    void noteReadError(const QSqlQuery &query) const;
     bool setStatus(qint64 id, Status from, Status to, double seconds, const QJsonObject *metrics,
                    const QString &reason, QString *error);
     /** The item of the step's questionnaire that asks `measure`, or null. */
@@ -149,6 +161,7 @@ private:
     QSqlDatabase m_db;
     StudyProtocol m_protocol;
     std::unique_ptr<QLockFile> m_lock;
+    mutable QString m_readError;
 };
 
 /** The name the database stores a status as (`running`, `done`, …). */

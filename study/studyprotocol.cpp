@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "studyprotocol.h"
 
+#include "gripperlibrary.h"
 #include "inputfile.h"
 #include "jsonreader.h"
 #include "router.h"
@@ -17,7 +18,6 @@ namespace semhap {
 
 namespace {
 
-constexpr int MaxConditions = 16;
 constexpr int MaxTrials = 20;
 constexpr int MaxTransfers = 1000;
 constexpr int MaxQuestions = 100;
@@ -176,15 +176,16 @@ bool readLevels(JsonReader &reader, const QJsonObject &condition, const QString 
                                QStringLiteral("no such factor"));
     }
     for (const StudyProtocol::Factor &factor : factors) {
-        QString level;
-        if (!reader.nonEmptyString(levels, pointer, QLatin1String(factor.id.toUtf8()), &level))
-            return false;
-        if (!factor.levels.contains(level))
-            return reader.fail(jsonPointerChild(pointer, factor.id),
-                               QStringLiteral("%1 is not a level of %2 (%3)")
-                                   .arg(quoted(level), quoted(factor.id),
-                                        factor.levels.join(QStringLiteral(", "))));
-        out->append(level);
+        const QJsonValue level = levels.value(factor.id);
+        if (level.isUndefined())
+            return reader.fail(pointer, QStringLiteral("missing key %1").arg(quoted(factor.id)));
+        if (!level.isString() || !factor.levels.contains(level.toString()))
+            return reader.fail(
+                jsonPointerChild(pointer, factor.id),
+                QStringLiteral("%1 is not a level of %2 (%3)")
+                    .arg(level.isString() ? quoted(level.toString()) : jsonTypeName(level),
+                         quoted(factor.id), factor.levels.join(QStringLiteral(", "))));
+        out->append(level.toString());
     }
     return true;
 }
@@ -223,6 +224,12 @@ double StudyProtocol::Question::highest() const
         break;
     }
     return 0.0;
+}
+
+bool StudyProtocol::isId(const QString &text)
+{
+    static const QRegularExpression pattern(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
+    return pattern.match(text).hasMatch();
 }
 
 int StudyProtocol::conditionIndex(const QString &id) const
@@ -279,8 +286,9 @@ bool StudyProtocol::read(const QString &path, StudyProtocol *out, LoadError *err
 }
 
 bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyProtocol *out,
-                          LoadError *error)
+                          LoadError *error, Checks checks)
 {
+    const bool full = checks == Checks::Full;
     QJsonObject json;
     if (!parseJsonObject(source, path, &json, error) ||
         !checkFormat(json, path, QLatin1String(Format), error))
@@ -337,13 +345,22 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
         bounded(reader, trials, QStringLiteral("/trials"), QLatin1String("break"), 0, MaxSeconds,
                 false, &p.breakSeconds);
     p.sceneOptions.cubes = int(cubes);
+    // A gripper adapter file is the protocol's neighbour; a name is the library's.
+    if (p.sceneOptions.gripper.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
+        p.sceneOptions.gripper = folder.absoluteFilePath(p.sceneOptions.gripper);
+    if (ok && full && !p.sceneOptions.gripper.isEmpty() &&
+        GripperLibrary::find(p.sceneOptions.gripper).isEmpty())
+        ok = reader.fail(QStringLiteral("/options/gripper"),
+                         QStringLiteral("no gripper adapter %1 (adapters: %2)")
+                             .arg(quoted(p.sceneOptions.gripper),
+                                  GripperLibrary::names().join(QStringLiteral(", "))));
     p.seed = std::uint64_t(seed);
     p.practiceTransfers = int(transfers);
     p.trials = int(count);
     // The scene: a bundled one, or a file beside the protocol.
     if (ok && !World::builtinScenes().contains(p.scene)) {
         const QString file = folder.absoluteFilePath(p.scene);
-        if (!QFileInfo(file).isFile())
+        if (full && !QFileInfo(file).isFile())
             ok = reader.fail(
                 QStringLiteral("/scene"),
                 QStringLiteral("no bundled scene %1 (%2) and no such file")
@@ -351,10 +368,10 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
         p.scene = file;
     }
     ok = ok && readFactors(reader, factors, &p.factors);
-    if (ok && (conditions.isEmpty() || conditions.size() > MaxConditions))
-        ok = reader.fail(QStringLiteral("/conditions"),
-                         QStringLiteral("must list 1 to %1 conditions").arg(MaxConditions));
-    static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
+    if (ok && (conditions.isEmpty() || conditions.size() > StudyProtocol::MaxConditions))
+        ok = reader.fail(
+            QStringLiteral("/conditions"),
+            QStringLiteral("must list 1 to %1 conditions").arg(StudyProtocol::MaxConditions));
     for (int i = 0; ok && i < conditions.size(); ++i) {
         const QString at = jsonPointerChild(QStringLiteral("/conditions"), i);
         if (!conditions[i].isObject()) {
@@ -372,7 +389,7 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
              readLevels(reader, c, at, p.factors, &condition.levels);
         if (!ok)
             break;
-        if (!idPattern.match(condition.id).hasMatch()) {
+        if (!isId(condition.id)) {
             ok = reader.fail(at + QStringLiteral("/id"),
                              QStringLiteral("must be 1 to 32 of A-Z a-z 0-9 _ . -"));
             break;
@@ -387,7 +404,7 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
         if (condition.router.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
             condition.router = folder.absoluteFilePath(condition.router);
         LoadError routerError;
-        if (ok && !loadRouter(condition.router, {}, &routerError)) {
+        if (ok && full && !loadRouter(condition.router, {}, &routerError)) {
             ok = reader.fail(at + QStringLiteral("/router"), routerError.toString());
             break;
         }
@@ -452,6 +469,32 @@ bool StudyProtocol::parse(const QByteArray &source, const QString &path, StudyPr
                                          int(i)),
                         QStringLiteral("%1 is already a measure").arg(quoted(measure)));
                 measures.append(measure);
+            }
+        }
+    }
+    // The run itself: the scene loads with its options, and no item takes a task metric's
+    // name (the export would mix answers with trials under it).
+    if (ok && full) {
+        QString reason;
+        const std::unique_ptr<SimRun> run = SimRun::create(p.runOptions(0), &reason);
+        if (!run) {
+            ok = reader.fail(QStringLiteral("/scene"), reason);
+        } else {
+            const QStringList metrics = run->metrics().keys();
+            for (const auto *list : {&p.afterCondition, &p.atTheEnd}) {
+                for (size_t i = 0; ok && i < list->size(); ++i) {
+                    for (const QString &measure : (*list)[i].measures()) {
+                        if (ok && metrics.contains(measure))
+                            ok = reader.fail(
+                                jsonPointerChild(
+                                    list == &p.atTheEnd
+                                        ? QStringLiteral("/questionnaires/atTheEnd")
+                                        : QStringLiteral("/questionnaires/afterCondition"),
+                                    int(i)),
+                                QStringLiteral("%1 is the name of a task metric")
+                                    .arg(quoted(measure)));
+                    }
+                }
             }
         }
     }

@@ -23,6 +23,8 @@ struct StudyProtocol
     static constexpr const char *Format = "semhap.study/1";
     /** The longest a practice, a trial or a break may last (s): a day. */
     static constexpr double MaxSeconds = 86400.0;
+    /** The most conditions a study may compare. */
+    static constexpr int MaxConditions = 16;
 
     /** One feedback condition: what the participant gets. */
     struct Condition
@@ -111,6 +113,8 @@ struct StudyProtocol
 
     /** The order scheme over this protocol's conditions. */
     ConditionOrder order() const { return ConditionOrder(scheme, int(conditions.size()), seed); }
+    /** Whether `text` may be a condition's or a participant's id: 1–32 of `A-Z a-z 0-9 _ . -`. */
+    static bool isId(const QString &text);
     /** The index of the condition `id`, or -1. */
     int conditionIndex(const QString &id) const;
 
@@ -125,9 +129,16 @@ struct StudyProtocol
     /** The run of `condition`: the scene, its options and the condition's router. */
     RunOptions runOptions(int condition) const;
 
+    /** How much parse() checks beyond the format. */
+    enum class Checks
+    {
+        Full,     ///< the routers compile, the scene and gripper load, measures are free
+        Structure ///< only the document: what reading a study's results needs
+    };
+
     /**
-     * Reads and checks a protocol (its routers compile, its scene exists); false with
-     * `FILE: /pointer: reason` in `error`.
+     * Reads and checks a protocol (its routers compile, its scene loads with its gripper,
+     * no item takes a task metric's name); false with `FILE: /pointer: reason` in `error`.
      */
     static bool read(const QString &path, StudyProtocol *out, LoadError *error);
     /**
@@ -135,7 +146,7 @@ struct StudyProtocol
      * name it; its folder holds the scene and router files it names).
      */
     static bool parse(const QByteArray &source, const QString &path, StudyProtocol *out,
-                      LoadError *error);
+                      LoadError *error, Checks checks = Checks::Full);
 };
 
 } // namespace semhap

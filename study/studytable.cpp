@@ -6,11 +6,13 @@
 #include "studydatabase.h"
 
 #include <QJsonObject>
-#include <QMap>
 #include <QRegularExpression>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace semhap {
 
@@ -99,6 +101,17 @@ bool splitCsv(const QByteArray &bytes, const QString &path,
 void StudyTable::add(const QString &participant, const QString &condition, int trial,
                      const QString &measure, double value)
 {
+    if (!m_conditionIndex.contains(condition)) {
+        m_conditionIndex.insert(condition, int(m_conditions.size()));
+        m_conditions.append(condition);
+    }
+    if (!m_participantIndex.contains(participant)) {
+        m_participantIndex.insert(participant, int(m_participants.size()));
+        m_participants.append(participant);
+    }
+    if (!m_rowsOfMeasure.contains(measure))
+        m_measures.append(measure);
+    m_rowsOfMeasure[measure].push_back(m_rows.size());
     m_rows.push_back({participant, condition, trial, measure, value});
 }
 
@@ -107,26 +120,33 @@ StudyTable StudyTable::fromStudy(const StudyDatabase &study)
     StudyTable table;
     const StudyProtocol &protocol = study.protocol();
     for (const StudyProtocol::Condition &condition : protocol.conditions) {
+        table.m_conditionIndex.insert(condition.id, int(table.m_conditions.size()));
         table.m_conditions.append(condition.id);
         table.m_levels.append(condition.levels);
     }
     table.m_factors = protocol.factors;
+    for (const QString &participant : study.participants()) {
+        table.m_participantIndex.insert(participant, int(table.m_participants.size()));
+        table.m_participants.append(participant);
+    }
+    std::vector<Row> rows;
     for (const StudyDatabase::Trial &trial : study.trials()) {
         if (trial.practice || trial.status != StudyDatabase::Status::Done)
             continue;
         for (auto it = trial.metrics.begin(); it != trial.metrics.end(); ++it) {
             if (it.value().isDouble())
-                table.add(trial.participant, protocol.conditions[size_t(trial.condition)].id,
-                          trial.number, it.key(), it.value().toDouble());
+                rows.push_back({trial.participant, protocol.conditions[size_t(trial.condition)].id,
+                                trial.number, it.key(), it.value().toDouble()});
         }
     }
-    // The answers; a complete NASA-TLX adds its raw score.
+    // The answers about a condition (a final item about none lives in answers.csv); a
+    // complete NASA-TLX adds its raw score.
     std::map<std::pair<QString, int>, std::vector<double>> tlx;
     for (const StudyDatabase::Answer &answer : study.answers()) {
         if (std::isnan(answer.value) || answer.condition < 0)
             continue;
-        table.add(answer.participant, protocol.conditions[size_t(answer.condition)].id, 0,
-                  answer.measure, answer.value);
+        rows.push_back({answer.participant, protocol.conditions[size_t(answer.condition)].id, 0,
+                        answer.measure, answer.value});
         if (StudyProtocol::tlxSubscales().contains(answer.measure))
             tlx[{answer.participant, answer.condition}].push_back(answer.value);
     }
@@ -136,9 +156,21 @@ StudyTable StudyTable::fromStudy(const StudyDatabase &study)
         double sum = 0;
         for (double v : values)
             sum += v;
-        table.add(key.first, protocol.conditions[size_t(key.second)].id, 0, QLatin1String(RawTlx),
-                  sum / double(values.size()));
+        rows.push_back({key.first, protocol.conditions[size_t(key.second)].id, 0,
+                        QLatin1String(RawTlx), sum / double(values.size())});
     }
+    // Participant by participant in the order added, conditions in the protocol's order,
+    // trials in theirs, a condition's answers after its trials: read back from the CSV, the
+    // conditions come in the protocol's order again.
+    const auto rank = [&](const Row &row) {
+        return std::make_tuple(table.m_participantIndex.value(row.participant),
+                               table.m_conditionIndex.value(row.condition),
+                               row.trial == 0 ? INT_MAX : row.trial);
+    };
+    std::stable_sort(rows.begin(), rows.end(),
+                     [&](const Row &a, const Row &b) { return rank(a) < rank(b); });
+    for (const Row &row : rows)
+        table.add(row.participant, row.condition, row.trial, row.measure, row.value);
     return table;
 }
 
@@ -177,6 +209,7 @@ bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out
                     QStringLiteral("the header must be exactly %1, got %2")
                         .arg(QLatin1String(Header), names.join(QLatin1Char(','))));
     StudyTable table;
+    QHash<QString, int> lineOf; // each observation's line, to name a repeated one
     // Names from other tools may hold spaces ("No feedback"); not line breaks or controls.
     static const QRegularExpression namePattern(QStringLiteral("^[^\\x00-\\x1f\\x7f]{1,200}$"));
     for (size_t r = 1; r < records.size(); ++r) {
@@ -195,9 +228,12 @@ bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out
         }
         int trial = 0;
         if (!f[2].text.isEmpty() && f[2].text != QLatin1String("NA")) {
+            // pandas writes a column with empty cells as floats: 1.0
             bool ok = false;
-            trial = f[2].text.toInt(&ok);
-            if (!ok || trial < 1 || trial > 1000)
+            const double number = f[2].text.toDouble(&ok);
+            ok = ok && number == std::floor(number) && number >= 1 && number <= 1000;
+            trial = ok ? int(number) : 0;
+            if (!ok)
                 return fail(r, f[2].column,
                             QStringLiteral("trial must be a whole number from 1 to 1000 or "
                                            "empty, got '%1'")
@@ -211,8 +247,26 @@ bool StudyTable::parseCsv(QByteArray bytes, const QString &path, StudyTable *out
         if (!ok || !std::isfinite(value))
             return fail(r, f[4].column,
                         QStringLiteral("value must be a number, empty or NA, got '%1'").arg(text));
-        if (!table.m_conditions.contains(f[1].text))
-            table.m_conditions.append(f[1].text);
+        const QString key =
+            QStringList{f[0].text, f[1].text, QString::number(trial), f[3].text}.join(QChar(0));
+        const auto seen = lineOf.constFind(key);
+        if (seen != lineOf.cend())
+            return fail(r, 1,
+                        QStringLiteral("the same participant, condition, trial and "
+                                       "measure as line %1")
+                            .arg(seen.value()));
+        lineOf.insert(key, lines[r]);
+        const auto over = [&](const QHash<QString, int> &index, const QString &name, int limit) {
+            return !index.contains(name) && index.size() >= limit;
+        };
+        if (over(table.m_conditionIndex, f[1].text, StudyProtocol::MaxConditions))
+            return fail(
+                r, f[1].column,
+                QStringLiteral("more than %1 conditions").arg(StudyProtocol::MaxConditions));
+        if (over(table.m_participantIndex, f[0].text, MaxParticipants))
+            return fail(r, 1, QStringLiteral("more than %1 participants").arg(MaxParticipants));
+        if (!table.m_rowsOfMeasure.contains(f[3].text) && table.m_measures.size() >= MaxMeasures)
+            return fail(r, f[3].column, QStringLiteral("more than %1 measures").arg(MaxMeasures));
         table.add(f[0].text, f[1].text, trial, f[3].text, value);
     }
     *out = table;
@@ -238,45 +292,31 @@ QByteArray StudyTable::toCsv() const
     return csv;
 }
 
-QStringList StudyTable::measures() const
-{
-    QStringList names;
-    for (const Row &row : m_rows) {
-        if (!names.contains(row.measure))
-            names.append(row.measure);
-    }
-    return names;
-}
-
 StudyTable::Matrix StudyTable::matrix(const QString &measure) const
 {
-    // Sum and count per participant and condition, participants in the order first seen.
-    QStringList participants;
-    QMap<QString, std::vector<std::pair<double, int>>> cells;
+    // Sum and count per participant and condition.
     const size_t k = size_t(m_conditions.size());
-    for (const Row &row : m_rows) {
-        if (row.measure != measure)
-            continue;
-        if (!cells.contains(row.participant)) {
-            participants.append(row.participant);
-            cells.insert(row.participant, std::vector<std::pair<double, int>>(k, {0.0, 0}));
-        }
-        auto &cell = cells[row.participant][size_t(m_conditions.indexOf(row.condition))];
+    std::vector<std::vector<std::pair<double, int>>> cells(
+        size_t(m_participants.size()), std::vector<std::pair<double, int>>(k, {0.0, 0}));
+    for (size_t i : m_rowsOfMeasure.value(measure)) {
+        const Row &row = m_rows[i];
+        auto &cell = cells[size_t(m_participantIndex.value(row.participant))]
+                          [size_t(m_conditionIndex.value(row.condition))];
         cell.first += row.value;
         ++cell.second;
     }
     Matrix matrix;
-    for (const QString &participant : participants) {
+    for (size_t p = 0; p < cells.size(); ++p) {
         std::vector<double> means;
-        for (const auto &[sum, count] : cells.value(participant)) {
+        for (const auto &[sum, count] : cells[p]) {
             if (count > 0)
                 means.push_back(sum / count);
         }
         if (means.size() == k) {
-            matrix.participants.append(participant);
+            matrix.participants.append(m_participants[int(p)]);
             matrix.rows.push_back(means);
         } else {
-            matrix.incomplete.append(participant);
+            matrix.incomplete.append(m_participants[int(p)]);
         }
     }
     return matrix;

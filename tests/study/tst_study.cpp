@@ -25,6 +25,7 @@ private slots:
     void exampleProtocolsRead();
     void badProtocolsAreRefused_data();
     void badProtocolsAreRefused();
+    void factorsMayBeNamedInAnyLanguage();
 };
 
 void TestStudy::williamsIsBalanced_data()
@@ -227,6 +228,17 @@ void TestStudy::badProtocolsAreRefused_data()
         << "{\"id\": \"break\", \"levels\": [\"vib\", \"air\"]}"
         << "{\"id\": \"break\", \"levels\": [\"vib\", \"air\", \"heat\"]}"
         << "/conditions: the factors cross into 6 cells, the protocol has 4 conditions";
+    QTest::newRow("no such gripper")
+        << "\"scene\": \"box_and_block\","
+        << "\"scene\": \"box_and_block\", \"options\": {\"gripper\": \"claw\"},"
+        << "/options/gripper: no gripper adapter 'claw'";
+    QTest::newRow("an item named as a task metric")
+        << "\"id\": \"real\""
+        << "\"id\": \"cubes_transferred\""
+        << "/questionnaires/afterCondition/1: 'cubes_transferred' is the name of a task metric";
+    QTest::newRow("a scene file that is no scene") << "\"box_and_block\""
+                                                   << "\"protocol.json\""
+                                                   << "/scene: ";
     QTest::newRow("no trials") << "\"trials\""
                                << "\"trial\""
                                << "unknown key 'trial'";
@@ -275,6 +287,26 @@ void TestStudy::badProtocolsAreRefused()
     QVERIFY2(loadError.toString().contains(path + ": " + error) ||
                  loadError.toString().contains(error),
              qPrintable(loadError.toString()));
+}
+
+void TestStudy::factorsMayBeNamedInAnyLanguage()
+{
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("stärke.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(
+        QStringLiteral(R"({"format": "semhap.study/1", "name": "Stärke", "scene": "box_and_block",
+        "factors": [{"id": "Stärke", "levels": ["schwach", "stark"]}],
+        "conditions": [{"id": "A", "label": "A", "router": "C1", "levels": {"Stärke": "schwach"}},
+                       {"id": "B", "label": "B", "router": "C2", "levels": {"Stärke": "stark"}}],
+        "trials": {"count": 1, "seconds": 10}})")
+            .toUtf8());
+    file.close();
+    StudyProtocol protocol;
+    LoadError error;
+    QVERIFY2(StudyProtocol::read(file.fileName(), &protocol, &error),
+             qPrintable(error.toString()));
+    QCOMPARE(protocol.conditions[1].levels, QStringList{QStringLiteral("stark")});
 }
 
 QTEST_GUILESS_MAIN(TestStudy)

@@ -47,6 +47,8 @@ private slots:
     void friedmanAsR();
     void nothingToTest();
     void namesFromOtherTools();
+    void aRankingTakesRankTests();
+    void hugeValuesPlotInBoundedWork();
     void badCsvIsLocated_data();
     void badCsvIsLocated();
 };
@@ -187,22 +189,25 @@ void TestStudyAnalysis::nothingToTest()
     QCOMPARE(int(analysis.measures.size()), 2);
     QVERIFY(!analysis.measures[0].tested());
     QCOMPARE(analysis.measures[1].participants.size(), 0);
-    QCOMPARE(analysis.measures[1].excluded, QStringList{"P3"});
+    // Everyone without every condition is named, even those without any value.
+    QCOMPARE(analysis.measures[1].excluded, (QStringList{"P1", "P2", "P3"}));
     const QString report = QString::fromUtf8(analysis.markdown());
     QVERIFY(report.contains(QStringLiteral("| zero | 3 | — | not tested")));
-    QVERIFY(report.contains(QLatin1String("left out for a missing condition: P3")));
+    QVERIFY(report.contains(QLatin1String("left out for a missing condition: P1, P2, P3")));
+    QVERIFY(report.contains(QStringLiteral("| B | – | – | – | – | not tested |")));
     QVERIFY(!report.contains(QLatin1String("nan")));
 }
 
 void TestStudyAnalysis::namesFromOtherTools()
 {
-    // R or a spreadsheet names conditions as people read them, even with a pipe.
+    // R or a spreadsheet names conditions as people read them, even with a pipe; pandas
+    // writes a trial column with empty cells as floats.
     QTemporaryDir dir;
     QFile file(dir.filePath(QStringLiteral("named.csv")));
     QVERIFY(file.open(QIODevice::WriteOnly));
     QByteArray csv = "participant,condition,trial,measure,value\n";
     for (int p = 1; p <= 6; ++p)
-        csv += QStringLiteral("P%1,No feedback,1,time on task,%2\nP%1,\"Haptic | visual\",1,"
+        csv += QStringLiteral("P%1,No feedback,1.0,time on task,%2\nP%1,\"Haptic | visual\",1,"
                               "time on task,%3\n")
                    .arg(p)
                    .arg(10 + p)
@@ -219,6 +224,50 @@ void TestStudyAnalysis::namesFromOtherTools()
     QVERIFY(plot != StudyAnalysis::plotFile(QStringLiteral("time_on task")));
     QCOMPARE(StudyAnalysis::plotFile(QStringLiteral("cubes_transferred")),
              QStringLiteral("cubes_transferred.svg"));
+}
+
+void TestStudyAnalysis::aRankingTakesRankTests()
+{
+    // Twelve participants rank three conditions; the ranks would pass Shapiro-Wilk in each
+    // condition often enough, but ranks are for rank tests.
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("rank.csv")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QByteArray csv = "participant,condition,trial,measure,value\n";
+    const int orders[6][3] = {{1, 2, 3}, {1, 3, 2}, {2, 1, 3}, {1, 2, 3}, {2, 3, 1}, {1, 2, 3}};
+    for (int p = 0; p < 12; ++p) {
+        for (int c = 0; c < 3; ++c)
+            csv += QStringLiteral("P%1,%2,,rank,%3\n")
+                       .arg(p)
+                       .arg(QChar('A' + c))
+                       .arg(orders[p % 6][c])
+                       .toUtf8();
+    }
+    file.write(csv);
+    file.close();
+    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const StudyAnalysis::Measure &m = analysis.measures.front();
+    QVERIFY(m.ranking);
+    QVERIFY(!m.normal);
+    QCOMPARE(m.pairedTest, PairedTest::SignedRank);
+    QVERIFY(analysis.markdown().contains("| rank | 12 | Friedman | "));
+}
+
+void TestStudyAnalysis::hugeValuesPlotInBoundedWork()
+{
+    // Values two doubles apart at 1e17: no step of the axis fits between them.
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("huge.csv")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("participant,condition,trial,measure,value\n"
+               "P1,A,1,big,1e17\nP1,B,1,big,100000000000000016\n"
+               "P2,A,1,big,1e17\nP2,B,1,big,1e17\nP3,A,1,big,100000000000000016\n"
+               "P3,B,1,big,1e17\n");
+    file.close();
+    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const QByteArray svg = analysis.boxPlotSvg(analysis.measures.front());
+    QVERIFY(svg.size() < 20000);
+    QVERIFY(svg.count("<line") < 40);
 }
 
 void TestStudyAnalysis::badCsvIsLocated_data()

@@ -52,6 +52,7 @@ private slots:
     void analysisOfTheStudyAndOfItsExportAgree();
     void reportHasAPlotPerMeasure();
     void aKillLosesAtMostTheRunningTrial();
+    void aDamagedStudyIsNeitherExportedNorAnalysed();
     void badCallsAreRefused_data();
     void badCallsAreRefused();
 
@@ -296,6 +297,31 @@ void TestStudyCli::aKillLosesAtMostTheRunningTrial()
     QSqlQuery check(db);
     QVERIFY(check.exec(QStringLiteral("PRAGMA integrity_check")) && check.next());
     QCOMPARE(check.value(0).toString(), QStringLiteral("ok"));
+}
+
+void TestStudyCli::aDamagedStudyIsNeitherExportedNorAnalysed()
+{
+    const QString copy = m_dir.filePath(QStringLiteral("damaged.db"));
+    QVERIFY(QFile::copy(m_study, copy));
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), "damage");
+        db.setDatabaseName(copy);
+        QVERIFY(db.open());
+        QVERIFY(QSqlQuery(db).exec(QStringLiteral("ALTER TABLE answers RENAME TO lost")));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(QStringLiteral("damage"));
+    const QString dir = m_dir.filePath(QStringLiteral("damaged-export"));
+    const CliResult exported = semhapRun(
+        {QStringLiteral("study"), QStringLiteral("export"), copy, QStringLiteral("--csv"), dir});
+    QCOMPARE(exported.code, 1);
+    QVERIFY2(exported.err.startsWith((copy + QStringLiteral(": cannot read: ")).toUtf8()),
+             exported.err.constData());
+    QVERIFY(!QFileInfo::exists(dir + QStringLiteral("/measures.csv"))); // nothing half
+    const CliResult analysed =
+        semhapRun({QStringLiteral("study"), QStringLiteral("analyze"), copy});
+    QCOMPARE(analysed.code, 1);
+    QVERIFY(analysed.out.isEmpty());
 }
 
 void TestStudyCli::badCallsAreRefused_data()

@@ -6,6 +6,8 @@
 
 #include <QDir>
 #include <QFile>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -49,6 +51,9 @@ private slots:
     void theNewestAnswerCounts();
     void theStudyKeepsItsProtocol();
     void sessionsAreTagged();
+    void resultsOutliveTheProtocolsFolder();
+    void whatAnotherStudyLeftIsRefused();
+    void aDamagedStudyReadsWithAnError();
 
 private:
     QTemporaryDir m_dir;
@@ -194,7 +199,7 @@ void TestStudyDatabase::aCrashLeavesTheTrialInterrupted()
         complete(*study, p, practice);
         const Step trial = study->nextStep(p);
         QVERIFY(study->beginTrial(p, trial, study->newSessionPath(p, trial, &error), &error));
-        // Closed without finishing: what a kill leaves (tests/cli kills a real process).
+        // Closed without finishing: what a kill leaves (tests/studycli kills a real process).
     }
     auto study = StudyDatabase::open(path, StudyDatabase::Access::Write, &error);
     QVERIFY2(study, qPrintable(error));
@@ -344,6 +349,83 @@ void TestStudyDatabase::sessionsAreTagged()
     QCOMPARE(info.extra.value("study"), study->protocol().name);
     const QString session = study->newSessionPath(QStringLiteral("P07"), step, &error);
     QCOMPARE(QFileInfo(session).absolutePath(), m_dir.filePath(QStringLiteral("tags.sessions")));
+}
+
+void TestStudyDatabase::resultsOutliveTheProtocolsFolder()
+{
+    // A protocol with a router file of its own; the study is copied to another machine
+    // where neither is: its results still read, running it says why it cannot.
+    QTemporaryDir protocolDir;
+    QVERIFY(QFile::copy(QStringLiteral(SEMHAP_RESOURCES "/routers/C3.json"),
+                        protocolDir.filePath(QStringLiteral("mine.json"))));
+    QFile file(protocolDir.filePath(QStringLiteral("protocol.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "semhap.study/1", "name": "Own router", "scene": "box_and_block",
+        "conditions": [{"id": "A", "label": "A", "router": "mine.json"},
+                       {"id": "B", "label": "B", "router": "C1"}],
+        "trials": {"count": 1, "seconds": 10}})");
+    file.close();
+    const QString path = m_dir.filePath(QStringLiteral("moved.db"));
+    QString error;
+    {
+        auto study = StudyDatabase::create(path, readProtocol(file.fileName()), &error);
+        QVERIFY2(study, qPrintable(error));
+        QVERIFY(study->addParticipant(QStringLiteral("P01"), &error));
+    }
+    QVERIFY(protocolDir.remove());
+    auto reader = StudyDatabase::open(path, StudyDatabase::Access::Read, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->participants(), QStringList{"P01"});
+    QCOMPARE(reader->protocol().conditions.size(), size_t(2));
+    reader.reset();
+    QVERIFY(!StudyDatabase::open(path, StudyDatabase::Access::Write, &error));
+    QVERIFY2(error.startsWith(path + QStringLiteral(": its protocol no longer loads: ")) &&
+                 error.contains(QLatin1String("/conditions/0/router")),
+             qPrintable(error));
+}
+
+void TestStudyDatabase::whatAnotherStudyLeftIsRefused()
+{
+    // A study deleted without its sessions: a new one of the same name would mix them in.
+    const QString path = m_dir.filePath(QStringLiteral("again.db"));
+    QVERIFY(QDir().mkpath(StudyDatabase::sessionsFolder(path)));
+    QString error;
+    const StudyProtocol protocol = readProtocol(examples() + QStringLiteral("unimanual.json"));
+    QVERIFY2(StudyDatabase::create(path, protocol, &error), qPrintable(error)); // empty: fine
+    QVERIFY(QFile::remove(path));
+    QFile session(StudyDatabase::sessionsFolder(path) + QStringLiteral("/P01-none-trial1.db"));
+    QVERIFY(session.open(QIODevice::WriteOnly));
+    session.close();
+    QVERIFY(!StudyDatabase::create(path, protocol, &error));
+    QVERIFY2(error.contains(QLatin1String("again.sessions is left from another study")),
+             qPrintable(error));
+    QVERIFY(!QFileInfo::exists(path));
+}
+
+void TestStudyDatabase::aDamagedStudyReadsWithAnError()
+{
+    const QString path = m_dir.filePath(QStringLiteral("damaged.db"));
+    {
+        auto study = create(QStringLiteral("damaged.db"));
+        QString error;
+        QVERIFY(study->addParticipant(QStringLiteral("P01"), &error));
+        complete(*study, QStringLiteral("P01"), study->nextStep(QStringLiteral("P01")));
+    }
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), "damage");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        QSqlQuery(db).exec(QStringLiteral("ALTER TABLE trials RENAME TO lost"));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(QStringLiteral("damage"));
+    QString error;
+    auto study = StudyDatabase::open(path, StudyDatabase::Access::Read, &error);
+    QVERIFY2(study, qPrintable(error));
+    QVERIFY(study->readError().isEmpty());
+    QVERIFY(study->trials().empty());
+    QVERIFY2(study->readError().startsWith(path + QStringLiteral(": cannot read: ")),
+             qPrintable(study->readError()));
 }
 
 QTEST_GUILESS_MAIN(TestStudyDatabase)
