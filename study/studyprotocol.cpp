@@ -257,12 +257,16 @@ std::vector<StudyProtocol::Step> StudyProtocol::steps(const std::vector<int> &or
     return out;
 }
 
+int StudyProtocol::transfers(const QJsonObject &metrics)
+{
+    return metrics.value(QLatin1String("cubes_transferred")).toInt();
+}
+
 bool StudyProtocol::practiceDone(const QJsonObject &metrics, double seconds) const
 {
     if (practiceSeconds > 0 && seconds >= practiceSeconds)
         return true;
-    return practiceTransfers > 0 &&
-           metrics.value(QLatin1String("cubes_transferred")).toInt() >= practiceTransfers;
+    return practiceTransfers > 0 && transfers(metrics) >= practiceTransfers;
 }
 
 RunOptions StudyProtocol::runOptions(int condition) const

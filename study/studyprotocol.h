@@ -124,6 +124,8 @@ struct StudyProtocol
      * items), then the final questionnaire (when it has items).
      */
     std::vector<Step> steps(const std::vector<int> &order) const;
+    /** The transfers a practice round's goal counts in a run's `metrics`. */
+    static int transfers(const QJsonObject &metrics);
     /** Whether a practice round that got `metrics` after `seconds` has reached its goal. */
     bool practiceDone(const QJsonObject &metrics, double seconds) const;
     /** The run of `condition`: the scene, its options and the condition's router. */

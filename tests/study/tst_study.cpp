@@ -4,6 +4,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -26,6 +27,8 @@ private slots:
     void badProtocolsAreRefused_data();
     void badProtocolsAreRefused();
     void factorsMayBeNamedInAnyLanguage();
+    void practiceEndsAtItsGoal_data();
+    void practiceEndsAtItsGoal();
 };
 
 void TestStudy::williamsIsBalanced_data()
@@ -307,6 +310,36 @@ void TestStudy::factorsMayBeNamedInAnyLanguage()
     QVERIFY2(StudyProtocol::read(file.fileName(), &protocol, &error),
              qPrintable(error.toString()));
     QCOMPARE(protocol.conditions[1].levels, QStringList{QStringLiteral("stark")});
+}
+
+void TestStudy::practiceEndsAtItsGoal_data()
+{
+    QTest::addColumn<int>("goal");       // transfers; 0: none
+    QTest::addColumn<double>("limit");   // seconds; 0: none
+    QTest::addColumn<int>("transfers");  // so far
+    QTest::addColumn<double>("seconds"); // so far
+    QTest::addColumn<bool>("done");
+    QTest::newRow("the transfers reached") << 10 << 300.0 << 10 << 42.0 << true;
+    QTest::newRow("short of both") << 10 << 300.0 << 9 << 299.9 << false;
+    QTest::newRow("the time is up") << 10 << 300.0 << 3 << 300.0 << true;
+    QTest::newRow("transfers only") << 10 << 0.0 << 9 << 5000.0 << false;
+    QTest::newRow("time only") << 0 << 300.0 << 50 << 120.0 << false;
+}
+
+void TestStudy::practiceEndsAtItsGoal()
+{
+    QFETCH(int, goal);
+    QFETCH(double, limit);
+    QFETCH(int, transfers);
+    QFETCH(double, seconds);
+    QFETCH(bool, done);
+    StudyProtocol protocol;
+    protocol.practiceTransfers = goal;
+    protocol.practiceSeconds = limit;
+    // The task's metrics name transfers as docs/metrics.md does.
+    const QJsonObject metrics{{"cubes_transferred", transfers}, {"cubes_broken", 1}};
+    QCOMPARE(StudyProtocol::transfers(metrics), transfers);
+    QCOMPARE(protocol.practiceDone(metrics, seconds), done);
 }
 
 QTEST_GUILESS_MAIN(TestStudy)
