@@ -37,6 +37,7 @@
 #include "virtualscreen.h"
 #include "waveformdesigner.h"
 #include "widgetchecks.h"
+#include "windowpictures.h"
 #include "workspace.h"
 #include "world.h"
 
@@ -185,16 +186,6 @@ void clickDesignerAction(MainWindow &window, const QString &name)
     QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action).center());
 }
 
-/** The window sizes and languages a picture of a new piece of the window is taken at. */
-void addWindowRows()
-{
-    QTest::addColumn<QSize>("size");
-    QTest::addColumn<QString>("language");
-    QTest::newRow("1280x800") << QSize(1280, 800) << "en";
-    QTest::newRow("1920x1080") << QSize(1920, 1080) << "en";
-    QTest::newRow("1280x800-de") << QSize(1280, 800) << "de";
-}
-
 /** A studio at the test row's size and language; its window is shown and active. */
 std::unique_ptr<Studio> startStudio(StudioOptions o)
 {
@@ -208,17 +199,6 @@ std::unique_ptr<Studio> startStudio(StudioOptions o)
     if (!openWindow(*studio->window()))
         qWarning("the window did not become active");
     return studio;
-}
-
-/** Saves `widget` as NAME-ROW.png in $SEMHAP_SCREENSHOTS, to be looked at, if it is set. */
-void savePicture(QWidget *widget, const QString &name)
-{
-    const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
-    QString error;
-    if (!folder.isEmpty() &&
-        !Studio::screenshot(
-            widget, QString("%1/%2-%3.png").arg(folder, name, QTest::currentDataTag()), &error))
-        qWarning("%s", qPrintable(error));
 }
 
 QVector3D vector(const std::array<double, 3> &point)
