@@ -170,6 +170,34 @@
         <source>gripper</source>
         <translation>Greifer</translation>
     </message>
+    <message>
+        <source>Open this study (a study database) in study mode.</source>
+        <translation>Diese Studie (eine Studiendatenbank) im Studienmodus öffnen.</translation>
+    </message>
+    <message>
+        <source>STUDY.db</source>
+        <translation>STUDIE.db</translation>
+    </message>
+    <message>
+        <source>With --study: the participant to work with.</source>
+        <translation>Mit --study: die Versuchsperson, mit der gearbeitet wird.</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>With --participant: start their next step at once (for scripts and tests).</source>
+        <translation>Mit --participant: ihren nächsten Schritt sofort starten (für Skripte und Tests).</translation>
+    </message>
+    <message>
+        <source>--start-step: name the participant with --participant</source>
+        <translation>--start-step: nennen Sie die Versuchsperson mit --participant</translation>
+    </message>
+    <message>
+        <source>--participant: name the study with --study</source>
+        <translation>--participant: nennen Sie die Studie mit --study</translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -1050,6 +1078,66 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>the scene&apos;s own</source>
         <translation>die eigenen der Szene</translation>
     </message>
+    <message>
+        <source>New study…</source>
+        <translation>Neue Studie…</translation>
+    </message>
+    <message>
+        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
+        <translation>Eine Studie nach einem Protokoll beginnen: Versuchspersonen, ihre Reihenfolgen der Bedingungen, zeitlich begrenzte Durchgänge und Fragebögen</translation>
+    </message>
+    <message>
+        <source>Open study…</source>
+        <translation>Studie öffnen…</translation>
+    </message>
+    <message>
+        <source>Close study</source>
+        <translation>Studie schließen</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>Studie</translation>
+    </message>
+    <message>
+        <source>Stud&amp;y</source>
+        <translation>Stud&amp;ie</translation>
+    </message>
+    <message>
+        <source>New study: its protocol</source>
+        <translation>Neue Studie: ihr Protokoll</translation>
+    </message>
+    <message>
+        <source>semhap study protocols (*.json)</source>
+        <translation>semhap-Studienprotokolle (*.json)</translation>
+    </message>
+    <message>
+        <source>New study: where to keep it</source>
+        <translation>Neue Studie: wo sie gespeichert wird</translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db)</source>
+        <translation>semhap-Studien (*.db)</translation>
+    </message>
+    <message>
+        <source>Could not create the study</source>
+        <translation>Die Studie konnte nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Open study</source>
+        <translation>Studie öffnen</translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db);;All files (*)</source>
+        <translation>semhap-Studien (*.db);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Could not open the study %1</source>
+        <translation>Die Studie %1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
+        <translation>„%1“ läuft. Wenn Sie die Studie schließen, wird das abgebrochen: Es zählt nicht und ist wieder an der Reihe, wenn die Studie wieder geöffnet wird.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1415,6 +1503,13 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::NotesPage</name>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
     </message>
 </context>
 <context>
@@ -1963,6 +2058,96 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     </message>
 </context>
 <context>
+    <name>semhap::QuestionnaireWindow</name>
+    <message>
+        <source>Questionnaire</source>
+        <translation>Fragebogen</translation>
+    </message>
+    <message>
+        <source>At the end of the study</source>
+        <translation>Zum Abschluss der Studie</translation>
+    </message>
+    <message>
+        <source>After: %1</source>
+        <translation>Nach: %1</translation>
+    </message>
+    <message>
+        <source>Thank you!
+
+Please tell the experimenter that you are done.</source>
+        <translation>Vielen Dank!
+
+Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Question %1 of %2</source>
+        <translation>Frage %1 von %2</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Abschließen</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Weiter</translation>
+    </message>
+    <message>
+        <source>Enter: close</source>
+        <translation>Enter: schließen</translation>
+    </message>
+    <message>
+        <source>Your answer could not be stored: %1</source>
+        <translation>Ihre Antwort konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>Please set each of the six scales.</source>
+        <translation>Bitte stellen Sie jede der sechs Skalen ein.</translation>
+    </message>
+    <message>
+        <source>Please choose one of the points.</source>
+        <translation>Bitte wählen Sie einen der Punkte.</translation>
+    </message>
+    <message>
+        <source>Tab: next scale · ← →: set it · Enter: next page · Backspace: back</source>
+        <translation>Tab: nächste Skala · ← →: einstellen · Enter: nächste Seite · Rücktaste: zurück</translation>
+    </message>
+    <message>
+        <source>1–%1: choose · ← →: move · Enter: next page · Backspace: back</source>
+        <translation>1–%1: wählen · ← →: verschieben · Enter: nächste Seite · Rücktaste: zurück</translation>
+    </message>
+    <message>
+        <source>↑ ↓: choose · Ctrl+↑ ↓: move it · Enter: next page · Backspace: back</source>
+        <translation>↑ ↓: wählen · Strg+↑ ↓: verschieben · Enter: nächste Seite · Rücktaste: zurück</translation>
+    </message>
+    <message>
+        <source>Ctrl+Enter: next page · Alt+←: back</source>
+        <translation>Strg+Enter: nächste Seite · Alt+←: zurück</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RankingPage</name>
+    <message>
+        <source>Put the conditions in order: the one you liked most at the top, the one you liked least at the bottom.</source>
+        <translation>Bringen Sie die Bedingungen in eine Reihenfolge: die, die Ihnen am besten gefallen hat, nach oben, die, die Ihnen am wenigsten gefallen hat, nach unten.</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation>Nach unten</translation>
+    </message>
+</context>
+<context>
     <name>semhap::ReplayBar</name>
     <message>
         <source>Play or pause the replay</source>
@@ -2415,6 +2600,378 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Your work is not being saved</source>
         <translation>Ihre Arbeit wird nicht gesichert</translation>
+    </message>
+    <message>
+        <source>%1: no participant &apos;%2&apos;</source>
+        <translation>%1: keine Versuchsperson &apos;%2&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyDocument</name>
+    <message>
+        <source>The break is over.</source>
+        <translation>Die Pause ist vorbei.</translation>
+    </message>
+    <message>
+        <source>The trial that ran could not be stored as aborted</source>
+        <translation>Der laufende Durchgang konnte nicht als abgebrochen gespeichert werden</translation>
+    </message>
+    <message>
+        <source>no study is open</source>
+        <translation>keine Studie ist geöffnet</translation>
+    </message>
+    <message>
+        <source>choose a participant first</source>
+        <translation>wählen Sie zuerst eine Versuchsperson</translation>
+    </message>
+    <message>
+        <source>a trial runs already</source>
+        <translation>es läuft bereits ein Durchgang</translation>
+    </message>
+    <message>
+        <source>the break is on: skip it to go on at once</source>
+        <translation>die Pause läuft: überspringen Sie sie, um sofort weiterzumachen</translation>
+    </message>
+    <message>
+        <source>the next step is no practice round or trial</source>
+        <translation>der nächste Schritt ist weder Übung noch Durchgang</translation>
+    </message>
+    <message>
+        <source>The end of %1 could not be stored</source>
+        <translation>Das Ende von „%1“ konnte nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>%1: done.</source>
+        <translation>%1: erledigt.</translation>
+    </message>
+    <message>
+        <source>no trial runs</source>
+        <translation>es läuft kein Durchgang</translation>
+    </message>
+    <message>
+        <source>%1 was aborted</source>
+        <translation>„%1“ wurde abgebrochen</translation>
+    </message>
+    <message>
+        <source>%1 could not be stored as aborted</source>
+        <translation>„%1“ konnte nicht als abgebrochen gespeichert werden</translation>
+    </message>
+    <message numerus="yes">
+        <source>until %n transfer(s) or %1 s</source>
+        <translation>
+            <numerusform>bis %n Würfel transportiert ist oder %1 s</numerusform>
+            <numerusform>bis %n Würfel transportiert sind oder %1 s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>until %n transfer(s)</source>
+        <translation>
+            <numerusform>bis %n Würfel transportiert ist</numerusform>
+            <numerusform>bis %n Würfel transportiert sind</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Practice — %1 (%2)</source>
+        <translation>Übung — %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Trial %1 of %2 — %3 (%4 s)</source>
+        <translation>Durchgang %1 von %2 — %3 (%4 s)</translation>
+    </message>
+    <message>
+        <source>Questionnaire after %1</source>
+        <translation>Fragebogen nach %1</translation>
+    </message>
+    <message>
+        <source>Final questionnaire</source>
+        <translation>Abschlussfragebogen</translation>
+    </message>
+    <message>
+        <source>All steps done</source>
+        <translation>Alle Schritte erledigt</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyPanel</name>
+    <message>
+        <source>running</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>erledigt</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>invalid</source>
+        <translation>ungültig</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>unterbrochen</translation>
+    </message>
+    <message>
+        <source>Practice</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <source>Trial %1</source>
+        <translation>Durchgang %1</translation>
+    </message>
+    <message>
+        <source>Questionnaire</source>
+        <translation>Fragebogen</translation>
+    </message>
+    <message>
+        <source>Final questionnaire</source>
+        <translation>Abschlussfragebogen</translation>
+    </message>
+    <message>
+        <source>No study is open. A study runs a protocol&apos;s conditions, trials and questionnaires with each participant and keeps everything in one file.</source>
+        <translation>Keine Studie ist geöffnet. Eine Studie führt jede Versuchsperson durch die Bedingungen, Durchgänge und Fragebögen eines Protokolls und hält alles in einer Datei fest.</translation>
+    </message>
+    <message>
+        <source>e.g. P01</source>
+        <translation>z. B. P01</translation>
+    </message>
+    <message>
+        <source>A participant&apos;s ID: 1 to 32 letters, digits, _ . or -. No names needed.</source>
+        <translation>Die Kennung einer Versuchsperson: 1 bis 32 Buchstaben, Ziffern, _ . oder -. Namen sind nicht nötig.</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Participants</source>
+        <translation>Versuchspersonen</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stand</translation>
+    </message>
+    <message>
+        <source>Skip break</source>
+        <translation>Pause überspringen</translation>
+    </message>
+    <message>
+        <source>Abort…</source>
+        <translation>Abbrechen…</translation>
+    </message>
+    <message>
+        <source>End the trial now; it does not count and is due again</source>
+        <translation>Den Durchgang jetzt beenden; er zählt nicht und ist wieder an der Reihe</translation>
+    </message>
+    <message>
+        <source>Mark invalid…</source>
+        <translation>Ungültig…</translation>
+    </message>
+    <message>
+        <source>The done trial chosen in the list does not count: it is due again</source>
+        <translation>Der in der Liste gewählte erledigte Durchgang zählt nicht: Er ist wieder an der Reihe</translation>
+    </message>
+    <message>
+        <source>Add a participant, or choose one.</source>
+        <translation>Fügen Sie eine Versuchsperson hinzu, oder wählen Sie eine.</translation>
+    </message>
+    <message>
+        <source>Order of %1: %2</source>
+        <translation>Reihenfolge für %1: %2</translation>
+    </message>
+    <message>
+        <source>Attempt %1</source>
+        <translation>Versuch %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>answered</source>
+        <translation>beantwortet</translation>
+    </message>
+    <message>
+        <source>next</source>
+        <translation>als Nächstes</translation>
+    </message>
+    <message>
+        <source>Now: %1</source>
+        <translation>Jetzt: %1</translation>
+    </message>
+    <message>
+        <source>Paused. </source>
+        <translation>Angehalten. </translation>
+    </message>
+    <message>
+        <source>Left of the trial</source>
+        <translation>Restzeit des Durchgangs</translation>
+    </message>
+    <message>
+        <source>at most %1</source>
+        <translation>höchstens %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 transfers</source>
+        <translation>%1 von %2 Würfeln transportiert</translation>
+    </message>
+    <message>
+        <source>Practice so far</source>
+        <translation>Übung bisher</translation>
+    </message>
+    <message>
+        <source>Next: %1</source>
+        <translation>Als Nächstes: %1</translation>
+    </message>
+    <message>
+        <source>Break before the next trial</source>
+        <translation>Pause vor dem nächsten Durchgang</translation>
+    </message>
+    <message>
+        <source>Choose a participant.</source>
+        <translation>Wählen Sie eine Versuchsperson.</translation>
+    </message>
+    <message>
+        <source>This participant has done every step.</source>
+        <translation>Diese Versuchsperson hat alle Schritte erledigt.</translation>
+    </message>
+    <message>
+        <source>Start when the participant is ready.</source>
+        <translation>Starten Sie, sobald die Versuchsperson bereit ist.</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Could not start %1</source>
+        <translation>„%1“ konnte nicht gestartet werden</translation>
+    </message>
+    <message>
+        <source>Abort the trial</source>
+        <translation>Durchgang abbrechen</translation>
+    </message>
+    <message>
+        <source>Why is %1 aborted? It will not count and is due again.</source>
+        <translation>Warum wird „%1“ abgebrochen? Es zählt nicht und ist wieder an der Reihe.</translation>
+    </message>
+    <message>
+        <source>Could not store %1 as aborted</source>
+        <translation>„%1“ konnte nicht als abgebrochen gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Mark the trial invalid</source>
+        <translation>Durchgang als ungültig markieren</translation>
+    </message>
+    <message>
+        <source>Why does this trial not count? It is kept, marked invalid, and is due again.</source>
+        <translation>Warum zählt dieser Durchgang nicht? Er bleibt erhalten, als ungültig markiert, und ist wieder an der Reihe.</translation>
+    </message>
+    <message>
+        <source>Could not mark the trial invalid</source>
+        <translation>Der Durchgang konnte nicht als ungültig markiert werden</translation>
+    </message>
+    <message>
+        <source>Questionnaire opens it for the participant, in a window of its own.</source>
+        <translation>„Fragebogen“ öffnet ihn für die Versuchsperson in einem eigenen Fenster.</translation>
+    </message>
+    <message>
+        <source>at %1× real time</source>
+        <translation>mit %1× Echtzeit</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::TlxPage</name>
+    <message>
+        <source>Mental demand</source>
+        <translation>Geistige Anforderung</translation>
+    </message>
+    <message>
+        <source>How mentally demanding was the task?</source>
+        <translation>Wie hoch waren die geistigen Anforderungen der Aufgabe?</translation>
+    </message>
+    <message>
+        <source>Very low</source>
+        <translation>Sehr gering</translation>
+    </message>
+    <message>
+        <source>Very high</source>
+        <translation>Sehr hoch</translation>
+    </message>
+    <message>
+        <source>Physical demand</source>
+        <translation>Körperliche Anforderung</translation>
+    </message>
+    <message>
+        <source>How physically demanding was the task?</source>
+        <translation>Wie hoch waren die körperlichen Anforderungen der Aufgabe?</translation>
+    </message>
+    <message>
+        <source>Temporal demand</source>
+        <translation>Zeitliche Anforderung</translation>
+    </message>
+    <message>
+        <source>How hurried or rushed was the pace of the task?</source>
+        <translation>Wie hoch war der Zeitdruck, unter dem Sie die Aufgabe erledigen mussten?</translation>
+    </message>
+    <message>
+        <source>Performance</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <source>How successful were you in accomplishing what you were asked to do?</source>
+        <translation>Wie erfolgreich haben Sie Ihrer Meinung nach die vorgegebene Aufgabe erfüllt?</translation>
+    </message>
+    <message>
+        <source>Perfect</source>
+        <translation>Perfekt</translation>
+    </message>
+    <message>
+        <source>Failure</source>
+        <translation>Misserfolg</translation>
+    </message>
+    <message>
+        <source>Effort</source>
+        <translation>Anstrengung</translation>
+    </message>
+    <message>
+        <source>How hard did you have to work to accomplish your level of performance?</source>
+        <translation>Wie sehr mussten Sie sich anstrengen, um Ihre Leistung zu erreichen?</translation>
+    </message>
+    <message>
+        <source>Frustration</source>
+        <translation>Frustration</translation>
+    </message>
+    <message>
+        <source>How insecure, discouraged, irritated, stressed, and annoyed were you?</source>
+        <translation>Wie unsicher, entmutigt, gereizt, gestresst und verärgert waren Sie?</translation>
+    </message>
+    <message>
+        <source>How was the task you just did? Set each of the six scales.</source>
+        <translation>Wie war die Aufgabe, die Sie gerade erledigt haben? Stellen Sie jede der sechs Skalen ein.</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <comment>a TLX scale not set yet</comment>
+        <translation>–</translation>
     </message>
 </context>
 <context>

@@ -170,6 +170,34 @@
         <source>gripper</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Open this study (a study database) in study mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STUDY.db</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --study: the participant to work with.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --participant: start their next step at once (for scripts and tests).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--start-step: name the participant with --participant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--participant: name the study with --study</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -1046,6 +1074,66 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>the scene&apos;s own</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New study…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open study…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stud&amp;y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New study: its protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap study protocols (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New study: where to keep it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not create the study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open the study %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -1410,6 +1498,13 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::NotesPage</name>
+    <message>
+        <source>Notes</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1959,6 +2054,94 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
 </context>
 <context>
+    <name>semhap::QuestionnaireWindow</name>
+    <message>
+        <source>Questionnaire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At the end of the study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Thank you!
+
+Please tell the experimenter that you are done.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Question %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter: close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Your answer could not be stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Please set each of the six scales.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Please choose one of the points.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tab: next scale · ← →: set it · Enter: next page · Backspace: back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1–%1: choose · ← →: move · Enter: next page · Backspace: back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>↑ ↓: choose · Ctrl+↑ ↓: move it · Enter: next page · Backspace: back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ctrl+Enter: next page · Alt+←: back</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RankingPage</name>
+    <message>
+        <source>Put the conditions in order: the one you liked most at the top, the one you liked least at the bottom.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::ReplayBar</name>
     <message>
         <source>Play or pause the replay</source>
@@ -2410,6 +2593,378 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Your work is not being saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no participant &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyDocument</name>
+    <message>
+        <source>The break is over.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The trial that ran could not be stored as aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no study is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>choose a participant first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a trial runs already</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the break is on: skip it to go on at once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the next step is no practice round or trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The end of %1 could not be stored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: done.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no trial runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 could not be stored as aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>until %n transfer(s) or %1 s</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>until %n transfer(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Practice — %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trial %1 of %2 — %3 (%4 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Questionnaire after %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Final questionnaire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All steps done</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyPanel</name>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invalid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Practice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trial %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Questionnaire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Final questionnaire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No study is open. A study runs a protocol&apos;s conditions, trials and questionnaires with each participant and keeps everything in one file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>e.g. P01</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A participant&apos;s ID: 1 to 32 letters, digits, _ . or -. No names needed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Participants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skip break</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End the trial now; it does not count and is due again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mark invalid…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The done trial chosen in the list does not count: it is due again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a participant, or choose one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order of %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>next</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Now: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paused. </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left of the trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at most %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 transfers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Practice so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Break before the next trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a participant.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This participant has done every step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start when the participant is ready.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not start %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort the trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Why is %1 aborted? It will not count and is due again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not store %1 as aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mark the trial invalid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Why does this trial not count? It is kept, marked invalid, and is due again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not mark the trial invalid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Questionnaire opens it for the participant, in a window of its own.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at %1× real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::TlxPage</name>
+    <message>
+        <source>Mental demand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How mentally demanding was the task?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Very low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Very high</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Physical demand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How physically demanding was the task?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Temporal demand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How hurried or rushed was the pace of the task?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Performance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How successful were you in accomplishing what you were asked to do?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Perfect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Failure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Effort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How hard did you have to work to accomplish your level of performance?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frustration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How insecure, discouraged, irritated, stressed, and annoyed were you?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How was the task you just did? Set each of the six scales.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>–</source>
+        <comment>a TLX scale not set yet</comment>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,6 +4,7 @@
 #include "preferencesdialog.h"
 #include "userpatterns.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -31,6 +32,10 @@ QString settingsKey(FileKind kind)
         return QStringLiteral("fileDialogs/hapticFiles");
     case FileKind::PlotExport:
         return QStringLiteral("fileDialogs/plotExports");
+    case FileKind::Protocol:
+        return QStringLiteral("fileDialogs/protocols");
+    case FileKind::Study:
+        return QStringLiteral("fileDialogs/studies");
     }
     return QString();
 }
@@ -51,8 +56,22 @@ QString FileDialogs::startFolder(FileKind kind)
     const QString last = QSettings().value(settingsKey(kind)).toString();
     if (!last.isEmpty() && QFileInfo(last).isDir())
         return last;
+    if (kind == FileKind::Protocol && !exampleStudies().isEmpty())
+        return exampleStudies();
     const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     return documents.isEmpty() ? QDir::homePath() : documents;
+}
+
+QString FileDialogs::exampleStudies()
+{
+    const QStringList places{QDir(QCoreApplication::applicationDirPath())
+                                 .filePath(QStringLiteral(SEMHAP_STUDIES_FROM_BINARY)),
+                             QStringLiteral(SEMHAP_SOURCE_STUDIES)};
+    for (const QString &place : places) {
+        if (QFileInfo(place).isDir())
+            return QFileInfo(place).canonicalFilePath();
+    }
+    return QString();
 }
 
 void FileDialogs::remember(FileKind kind, const QString &path)

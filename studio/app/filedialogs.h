@@ -17,18 +17,26 @@ enum class FileKind
     Gripper,    ///< gripper adapters (`semhap.gripper/1`) outside the gripper folders
     HapticFile, ///< AHAP and `.haptic` files, imported and exported
     PlotExport, ///< the plots as CSV or PNG
+    Protocol,   ///< study protocols (`semhap.study/1`): first the example studies
+    Study,      ///< study databases (STUDY.db)
 };
 
 /**
  * The studio's file dialogs, so each kind of file starts where that kind lives: sessions in
  * the sessions folder, patterns in the user pattern folder, every other kind in the folder
- * last used for it (kept in QSettings), else the user's documents folder.
+ * last used for it (kept in QSettings), else the example study protocols' folder for a
+ * protocol and the user's documents folder for the rest.
  */
 class FileDialogs
 {
 public:
     /** The folder a dialog for `kind` starts in now. */
     static QString startFolder(FileKind kind);
+    /**
+     * The example study protocols (resources/studies): installed with the programs
+     * (`share/semhap/studies`), else in the sources the build came from; empty when neither.
+     */
+    static QString exampleStudies();
     /** Remembers the folder of `path` for the next dialog of `kind` (empty: nothing). */
     static void remember(FileKind kind, const QString &path);
 

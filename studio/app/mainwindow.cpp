@@ -23,6 +23,8 @@
 #include "simviewport.h"
 #include "spacemouseinput.h"
 #include "studio.h"
+#include "studydocument.h"
+#include "studypanel.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
 #include "windowplacement.h"
@@ -163,6 +165,8 @@ MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidg
     m_defaultState = saveState(LayoutVersion);
     restoreLayout();
     updateMode(); // a layout saved during a replay does not bring its bar back
+    if (m_workspace.study().isOpen())
+        showStudy(); // reopened at the start, or the window built again in another language
     if (!options.size.isEmpty())
         resize(options.size);
     else
@@ -402,6 +406,14 @@ void MainWindow::createActions()
         if (dialog.exec() == QDialog::Accepted)
             openLiveRig(dialog.options());
     });
+    m_newStudyAction = action(tr("New study…"), QStringLiteral("newStudyAction"), {});
+    m_newStudyAction->setToolTip(tr("Start a study from a protocol: participants, their orders "
+                                    "of conditions, timed trials and questionnaires"));
+    connect(m_newStudyAction, &QAction::triggered, this, &MainWindow::newStudy);
+    m_openStudyAction = action(tr("Open study…"), QStringLiteral("openStudyAction"), {});
+    connect(m_openStudyAction, &QAction::triggered, this, &MainWindow::openStudy);
+    m_closeStudyAction = action(tr("Close study"), QStringLiteral("closeStudyAction"), {});
+    connect(m_closeStudyAction, &QAction::triggered, this, &MainWindow::closeStudy);
     m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
                                  QKeySequence(Qt::CTRL | Qt::Key_Comma));
     // Ctrl+, everywhere (Linux desktops define no standard key); the platform's own too.
@@ -562,6 +574,9 @@ void MainWindow::createDocks()
         makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
     QDockWidget *patterns =
         makeDock(tr("Patterns"), QStringLiteral("patternsDock"), m_designer, this);
+    m_studyPanel = new StudyPanel(m_workspace.study(), m_engine, this);
+    m_studyPanel->setStudyActions(m_newStudyAction, m_openStudyAction);
+    QDockWidget *study = makeDock(tr("Study"), QStringLiteral("studyDock"), m_studyPanel, this);
     // The plots run the full height on the right; the log, devices and metrics share the
     // space under the viewport.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -575,6 +590,8 @@ void MainWindow::createDocks()
     tabifyDockWidget(plots, router);
     addDockWidget(Qt::RightDockWidgetArea, patterns);
     tabifyDockWidget(router, patterns);
+    addDockWidget(Qt::RightDockWidgetArea, study);
+    tabifyDockWidget(patterns, study);
     plots->raise();
     addDockWidget(Qt::BottomDockWidgetArea, events);
     addDockWidget(Qt::BottomDockWidgetArea, devices);
@@ -607,6 +624,17 @@ void MainWindow::createDocks()
             &RouterEditor::followRenamedPattern);
     connect(m_designer, &WaveformDesigner::patternRenamed, &m_engine,
             &Engine::followRenamedPattern);
+    StudyDocument &studyDocument = m_workspace.study();
+    connect(&studyDocument, &StudyDocument::studyChanged, this, &MainWindow::showStudy);
+    connect(&studyDocument, &StudyDocument::trialChanged, this, [this] {
+        if (m_workspace.study().isTrialRunning())
+            m_routerEditor->forgetApplied(); // the trial loaded its condition's router
+        updateMode();
+    });
+    connect(&studyDocument, &StudyDocument::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    connect(&studyDocument, &StudyDocument::failed, this, &MainWindow::showError);
+    connect(m_studyPanel, &StudyPanel::problem, this, &MainWindow::showError);
 }
 
 void MainWindow::createMenus()
@@ -617,6 +645,12 @@ void MainWindow::createMenus()
     file->addAction(m_openRouterAction);
     file->addAction(m_openSessionAction);
     file->addAction(m_listenAction);
+    file->addSeparator();
+    QMenu *study = file->addMenu(tr("Stud&y"));
+    study->setObjectName(QStringLiteral("studyMenu"));
+    study->addAction(m_newStudyAction);
+    study->addAction(m_openStudyAction);
+    study->addAction(m_closeStudyAction);
     file->addSeparator();
     file->addAction(m_preferencesAction);
     file->addSeparator();
@@ -740,7 +774,9 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::drivingChanged, this, &MainWindow::showDriving);
     connect(&m_engine, &Engine::recordingChanged, this, &MainWindow::showRecording);
     connect(&m_engine, &Engine::finished, this, [this] {
-        statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
+        // In a study the run ends with its trial, and the study says so.
+        if (!m_workspace.study().isOpen())
+            statusBar()->showMessage(tr("The run reached its end. Reset to run it again."), 10000);
     });
     connect(&m_engine.history(), &RunHistory::metricsChanged, this, &MainWindow::showTaskDone);
     connect(&m_engine.history(), &RunHistory::reset, this, &MainWindow::showTaskDone);
@@ -868,16 +904,24 @@ void MainWindow::updateMode()
 {
     const bool replaying = m_engine.isReplaying();
     const bool simulating = m_engine.source() && m_engine.source()->isDrivable();
+    // A trial runs its condition's scene and router into its own recording until it ends.
+    const bool trial = m_workspace.study().isTrialRunning();
     m_replayToolBar->setVisible(replaying);
     m_routerEditor->setReplaying(replaying); // Apply re-routes a replay
-    for (QAction *action : {m_runAction, m_recordAction})
-        action->setEnabled(!replaying);
+    m_runAction->setEnabled(!replaying);
+    m_recordAction->setEnabled(!replaying && !trial);
+    for (QAction *action : {m_resetAction, m_openSceneAction, m_openRouterAction,
+                            m_openSessionAction, m_listenAction})
+        action->setEnabled(!trial);
+    m_scenePicker->setEnabled(!trial);
+    m_routerPicker->setEnabled(!trial);
+    m_closeStudyAction->setEnabled(m_workspace.study().isOpen());
     // A live rig keeps its own pace and drives its own grippers.
     for (QAction *action :
          {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
         action->setEnabled(simulating);
     m_speedPicker->setEnabled(simulating);
-    m_gripperAction->setEnabled(!m_engine.isLive()); // a rig's grippers are its own
+    m_gripperAction->setEnabled(!m_engine.isLive() && !trial); // a rig's grippers are its own
     m_stepAction->setEnabled(simulating && !m_engine.isRunning());
     updateStatus();
 }
@@ -1253,6 +1297,55 @@ void MainWindow::saveLayout()
     settings.setValue(QStringLiteral("view/plotWindow"), m_plots->windowSeconds());
     settings.setValue(QStringLiteral("view/cameraPreset"), int(m_viewport->cameraPreset()));
     settings.setValue(QStringLiteral("view/auditionDevice"), m_designer->auditionDevice());
+}
+
+void MainWindow::newStudy()
+{
+    const QString protocol =
+        FileDialogs::openFile(this, FileKind::Protocol, tr("New study: its protocol"),
+                              tr("semhap study protocols (*.json)"));
+    if (protocol.isEmpty())
+        return;
+    const QString path =
+        FileDialogs::saveFile(this, FileKind::Study, tr("New study: where to keep it"),
+                              QFileInfo(protocol).completeBaseName() + QStringLiteral(".db"),
+                              tr("semhap studies (*.db)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!m_workspace.study().create(protocol, path, &error))
+        showError(tr("Could not create the study"), error);
+}
+
+void MainWindow::openStudy()
+{
+    const QString path = FileDialogs::openFile(this, FileKind::Study, tr("Open study"),
+                                               tr("semhap studies (*.db);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!m_workspace.study().open(path, &error))
+        showError(tr("Could not open the study %1").arg(QFileInfo(path).fileName()), error);
+}
+
+void MainWindow::closeStudy()
+{
+    StudyDocument &study = m_workspace.study();
+    if (study.isTrialRunning() &&
+        QMessageBox::question(this, tr("Close study"),
+                              tr("%1 runs. Closing the study aborts it: it will not count and "
+                                 "is due again when the study is opened again.")
+                                  .arg(study.describe(study.runningStep())),
+                              QMessageBox::Ok | QMessageBox::Cancel) != QMessageBox::Ok)
+        return;
+    study.close();
+}
+
+void MainWindow::showStudy()
+{
+    if (m_workspace.study().isOpen())
+        findChild<QDockWidget *>(QStringLiteral("studyDock"))->raise();
+    updateMode();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -27,6 +27,7 @@ class ReplayBar;
 class RouterEditor;
 class SessionReplay;
 class SimViewport;
+class StudyPanel;
 class WaveformDesigner;
 class Workspace;
 
@@ -61,6 +62,8 @@ public:
     MetricsPanel *metricsPanel() const { return m_metricsPanel; }
     RouterEditor *routerEditor() const { return m_routerEditor; }
     WaveformDesigner *waveformDesigner() const { return m_designer; }
+    /** The experimenter's view of the open study (the Study dock). */
+    StudyPanel *studyPanel() const { return m_studyPanel; }
     QComboBox *scenePicker() const { return m_scenePicker; }
     QComboBox *routerPicker() const { return m_routerPicker; }
     QComboBox *speedPicker() const { return m_speedPicker; }
@@ -152,6 +155,14 @@ private:
     void showManual();
     /** Says over the viewport that the task is done, once its metrics say so; else nothing. */
     void showTaskDone();
+    /** File → Study → New study…: a protocol, then where the study is kept. */
+    void newStudy();
+    /** File → Study → Open study…; the study's refusal (another studio has it) is said. */
+    void openStudy();
+    /** File → Study → Close study; a trial that runs is aborted once the user agrees. */
+    void closeStudy();
+    /** The Study dock comes forward when a study opens; its actions follow. */
+    void showStudy();
 
     /** Shows what the engine holds when the window opens on a loaded workspace. */
     void showWorkspace();
@@ -173,6 +184,7 @@ private:
     MetricsPanel *m_metricsPanel = nullptr;
     RouterEditor *m_routerEditor = nullptr;
     WaveformDesigner *m_designer = nullptr;
+    StudyPanel *m_studyPanel = nullptr;
     QComboBox *m_scenePicker = nullptr;
     QMenu *m_gripperMenu = nullptr;
     QActionGroup *m_gripperChoices = nullptr; ///< the Gripper menu's entries, refilled on show
@@ -206,6 +218,9 @@ private:
     QAction *m_recordAction = nullptr;
     QAction *m_openSessionAction = nullptr;
     QAction *m_listenAction = nullptr;
+    QAction *m_newStudyAction = nullptr;
+    QAction *m_openStudyAction = nullptr;
+    QAction *m_closeStudyAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_resetCameraAction = nullptr;

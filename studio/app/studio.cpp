@@ -3,6 +3,8 @@
 
 #include "mainwindow.h"
 #include "preferencesdialog.h"
+#include "studydocument.h"
+#include "studypanel.h"
 
 #include <QApplication>
 #include <QDir>
@@ -64,6 +66,7 @@ void Studio::start()
     engine.setSpeed(m_options.speed);
     const bool restored = m_workspace.restore(Workspace::defaultFile(), m_options, &problems);
     m_workspace.autosaveTo(Workspace::defaultFile());
+    openStudy(&problems);
     buildWindow();
     m_workspace.restoreBindings(&problems); // to the run restored or the window opened
     if (restored && m_options.autoRun)
@@ -71,6 +74,8 @@ void Studio::start()
     if (!problems.isEmpty())
         m_window->showError(tr("Some of what you left open could not be opened again"),
                             problems.join(QLatin1Char('\n')));
+    if (m_options.startStep && m_workspace.study().participant() == m_options.participant)
+        m_window->studyPanel()->start();
     connect(&m_workspace, &Workspace::autosaveFailed, this, [this](const QString &error) {
         if (m_window)
             m_window->showError(tr("Your work is not being saved"), error);
@@ -91,6 +96,24 @@ void Studio::start()
         m_window->close();
         QCoreApplication::exit(code);
     });
+}
+
+void Studio::openStudy(QStringList *problems)
+{
+    if (m_options.study.isEmpty())
+        return;
+    StudyDocument &study = m_workspace.study();
+    QString error;
+    if (!study.open(m_options.study, &error)) {
+        problems->append(error);
+        return;
+    }
+    if (m_options.participant.isEmpty())
+        return;
+    study.setParticipant(m_options.participant);
+    if (study.participant() != m_options.participant)
+        problems->append(
+            tr("%1: no participant '%2'").arg(m_options.study, m_options.participant));
 }
 
 void Studio::setLanguage(const QString &language)

@@ -19,8 +19,8 @@ class MainWindow;
  * The studio as an application: installs the interface language (the command line's, the
  * saved setting's or the system's), holds the Workspace and shows the main window over it —
  * building the window again when the user switches language, over the same workspace, so
- * the run, the devices, the recording and the edits go on — and runs the testing hooks
- * (`--screenshot`, `--quit-after`).
+ * the run, the devices, the recording, the edits and a study's trial go on — and runs the
+ * testing hooks (`--screenshot`, `--quit-after`, `--start-step`).
  */
 class Studio : public QObject
 {
@@ -59,6 +59,8 @@ signals:
 private:
     void install(const QString &language);
     void buildWindow();
+    /** Opens the study the command line names (`--study`, `--participant`), or says why not. */
+    void openStudy(QStringList *problems);
 
     StudioOptions m_options;
     Workspace m_workspace;

@@ -73,8 +73,18 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                     tr("[address:]port"));
     const QCommandLineOption defaultLayout({QStringLiteral("default-layout")},
                                            tr("Ignore the saved window layout."));
+    const QCommandLineOption study({QStringLiteral("study")},
+                                   tr("Open this study (a study database) in study mode."),
+                                   tr("STUDY.db"));
+    const QCommandLineOption participant({QStringLiteral("participant")},
+                                         tr("With --study: the participant to work with."),
+                                         tr("id"));
+    const QCommandLineOption startStep({QStringLiteral("start-step")},
+                                       tr("With --participant: start their next step at once "
+                                          "(for scripts and tests)."));
     parser.addOptions({scene, router, op, seed, reactionTime, cubes, gripper, speed, paused,
-                       screenshot, quitAfter, size, language, posePort, listen, defaultLayout});
+                       screenshot, quitAfter, size, language, posePort, listen, defaultLayout,
+                       study, participant, startStep});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
         *message = parser.errorText();
         return false;
@@ -170,6 +180,16 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
         o.liveRig.router = o.run.router;
     }
     o.restoreLayout = !parser.isSet(defaultLayout);
+    o.study = parser.value(study);
+    o.participant = parser.value(participant);
+    o.startStep = parser.isSet(startStep);
+    if ((!o.participant.isEmpty() && o.study.isEmpty()) ||
+        (o.startStep && o.participant.isEmpty())) {
+        *message = o.startStep && o.participant.isEmpty()
+                       ? tr("--start-step: name the participant with --participant")
+                       : tr("--participant: name the study with --study");
+        return false;
+    }
     for (const QCommandLineOption *option :
          {&scene, &router, &op, &seed, &reactionTime, &cubes, &gripper, &listen})
         o.runGiven = o.runGiven || parser.isSet(*option);

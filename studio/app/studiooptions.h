@@ -27,6 +27,9 @@ public:
     bool live = false;         ///< `--listen`: start on a live rig instead of the scene
     LiveRigOptions liveRig;    ///< where `--listen` listens (router: `--router`)
     bool restoreLayout = true; ///< `--default-layout` ignores the saved one
+    QString study;             ///< `--study`: open this study (STUDY.db) in place of the last
+    QString participant;       ///< `--participant`: the study's participant to work with
+    bool startStep = false;    ///< `--start-step`: start the participant's next step (tests)
     /** The command line names a run (scene, router, …): it wins over the saved workspace's. */
     bool runGiven = false;
 

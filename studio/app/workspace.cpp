@@ -8,6 +8,7 @@
 #include "patterndocument.h"
 #include "routerdocument.h"
 #include "studiooptions.h"
+#include "studydocument.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -68,8 +69,8 @@ bool readGraphEntry(const QJsonObject &entry, const QString &path, const QString
 } // namespace
 
 Workspace::Workspace(QObject *parent)
-    : QObject(parent), m_routerDocument(new RouterDocument(this)),
-      m_patternDocument(new PatternDocument(this))
+    : QObject(parent), m_study(std::make_unique<StudyDocument>(m_engine)),
+      m_routerDocument(new RouterDocument(this)), m_patternDocument(new PatternDocument(this))
 {
     const QSettings settings;
     for (const QString &text : settings.value(AddressesKey).toStringList()) {
@@ -147,6 +148,11 @@ QJsonObject Workspace::toJson() const
                                 {QStringLiteral("modified"), m_patternDocument->isModified()}});
     json.insert(QStringLiteral("session"), QJsonObject{{QStringLiteral("name"), m_sessionName},
                                                        {QStringLiteral("notes"), m_sessionNotes}});
+    if (m_study->isOpen())
+        json.insert(QStringLiteral("study"),
+                    QJsonObject{{QStringLiteral("file"),
+                                 QFileInfo(m_study->database()->path()).absoluteFilePath()},
+                                {QStringLiteral("participant"), m_study->participant()}});
     return json;
 }
 
@@ -167,13 +173,15 @@ bool Workspace::restore(const QString &path, const StudioOptions &options, QStri
                                  {QLatin1String("format"), QLatin1String("simulation"),
                                   QLatin1String("live_rig"), QLatin1String("router"),
                                   QLatin1String("bindings"), QLatin1String("router_document"),
-                                  QLatin1String("pattern_document"), QLatin1String("session")})) {
+                                  QLatin1String("pattern_document"), QLatin1String("session"),
+                                  QLatin1String("study")})) {
         problems->append(reader.error().toString());
     } else {
         m_restored = json;
         if (!options.runGiven) // the command line's run wins
             restoreRun(json, path, options, problems);
         restoreDocuments(json, path, problems);
+        restoreStudy(json, path, problems);
     }
     if (!problems->isEmpty())
         keepCopy(path, problems);
@@ -371,6 +379,32 @@ void Workspace::restoreDocuments(const QJsonObject &json, const QString &path,
     if (!reader.string(session, at, QLatin1String("name"), &m_sessionName, false) ||
         !reader.string(session, at, QLatin1String("notes"), &m_sessionNotes, false))
         problems->append(reader.error().toString());
+}
+
+void Workspace::restoreStudy(const QJsonObject &json, const QString &path, QStringList *problems)
+{
+    const QString at = QStringLiteral("/study");
+    JsonReader reader(path);
+    QJsonObject study;
+    QString file;
+    QString participant;
+    if (!reader.object(json, QString(), QLatin1String("study"), &study, false) ||
+        !reader.checkKeys(study, at, {QLatin1String("file"), QLatin1String("participant")}) ||
+        !reader.string(study, at, QLatin1String("file"), &file, !study.isEmpty()) ||
+        !reader.string(study, at, QLatin1String("participant"), &participant, false)) {
+        problems->append(reader.error().toString());
+        return;
+    }
+    if (file.isEmpty())
+        return;
+    // Another studio holding it says so here, in the study's words.
+    QString error;
+    if (!m_study->open(file, &error)) {
+        problems->append(LoadError::at(path, at, error).toString());
+        return;
+    }
+    if (!participant.isEmpty())
+        m_study->setParticipant(participant);
 }
 
 void Workspace::autosaveTo(const QString &path)

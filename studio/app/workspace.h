@@ -8,18 +8,21 @@
 #include <QString>
 #include <QTimer>
 
+#include <memory>
+
 namespace semhap {
 
 class PatternDocument;
 class RouterDocument;
+class StudyDocument;
 struct StudioOptions;
 
 /**
  * What the user works on, apart from any window: the engine (the run with its scene and
  * running router, the devices with their addresses, bindings and armed state, the
- * recording), the router editor's document and the pattern designer's, and the next
- * recording's name and notes. The studio rebuilds its window around the same workspace
- * (another interface language), so none of it is lost.
+ * recording), the router editor's document and the pattern designer's, the study open
+ * (with its running trial), and the next recording's name and notes. The studio rebuilds its
+ * window around the same workspace (another interface language), so none of it is lost.
  *
  * It also outlives the studio: autosaveTo() keeps it in a `semhap.workspace/1` file, and
  * restore() opens it again at the next start — after a quit or a crash alike. The device
@@ -46,6 +49,7 @@ public:
     Engine &engine() { return m_engine; }
     RouterDocument &routerDocument() { return *m_routerDocument; }
     PatternDocument &patternDocument() { return *m_patternDocument; }
+    StudyDocument &study() { return *m_study; }
 
     /** Keeps the device addresses the user added (DeviceManager::configured) for next time. */
     void saveDeviceAddresses();
@@ -66,8 +70,9 @@ public:
      * The workspace as its file holds it: the run (a simulation's scene, cubes, gripper,
      * router, operator, seed and reaction time, or a live rig's address, port and router), the
      * running router's graph when it is an edit, the bindings to real devices (with their
-     * models), the two documents (content, file, read-only, modified) and the next
-     * recording's name and notes. A replay is not kept: the run it replaced is.
+     * models), the two documents (content, file, read-only, modified), the study open and its
+     * participant chosen, and the next recording's name and notes. A replay is not kept: the
+     * run it replaced is.
      */
     QJsonObject toJson() const;
 
@@ -105,10 +110,12 @@ private:
     void restoreRun(const QJsonObject &run, const QString &path, const StudioOptions &options,
                     QStringList *problems);
     void restoreDocuments(const QJsonObject &json, const QString &path, QStringList *problems);
+    void restoreStudy(const QJsonObject &json, const QString &path, QStringList *problems);
     /** Copies `path` to `PATH.bak` and says so (or why not) in `problems`. */
     void keepCopy(const QString &path, QStringList *problems);
 
     Engine m_engine;
+    std::unique_ptr<StudyDocument> m_study; ///< after the engine it drives: it goes first
     RouterDocument *m_routerDocument;
     PatternDocument *m_patternDocument;
     QString m_sessionName;

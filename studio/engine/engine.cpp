@@ -159,15 +159,8 @@ bool Engine::closeReplay(QString *error)
     m_keptHistory.start({}, {}, {});
     // What the bands were sent during the replay (an audition) is not the run's.
     m_sentFeed.start(deviceNames(), *m_devices);
-    if (m_simulation) {
-        // The paused run's own, fresher than the last it sent the GUI (a late one was dropped).
-        QJsonObject metrics;
-        {
-            std::lock_guard<std::mutex> lock(m_setupMutex);
-            metrics = m_simulation->run().metrics();
-        }
-        m_history.setMetrics(metrics);
-    }
+    if (m_simulation) // the paused run's own, fresher than the last it sent the GUI
+        m_history.setMetrics(metrics());
     m_runKept = false; // a rig that fell silent meanwhile ends its messages now
     emit sourceChanged();
     setDriving(m_keptDriving);
@@ -742,7 +735,16 @@ void Engine::stepOnce()
     }
 }
 
-bool Engine::startRecording(const QString &path, const QString &notes, QString *error)
+QJsonObject Engine::metrics()
+{
+    if (!m_simulation || isReplaying())
+        return QJsonObject();
+    std::lock_guard<std::mutex> lock(m_setupMutex);
+    return m_simulation->run().metrics();
+}
+
+bool Engine::startRecording(const QString &path, const QString &notes, QString *error,
+                            const QMap<QString, QString> &tags)
 {
     if (!isLoaded() || !m_source->isStreaming()) {
         *error = tr("nothing runs that could be recorded");
@@ -767,6 +769,8 @@ bool Engine::startRecording(const QString &path, const QString &notes, QString *
         info.bindings.insert(device.name, device.uri);
     info.semhapVersion = QCoreApplication::applicationVersion();
     info.notes = notes;
+    for (auto tag = tags.begin(); tag != tags.end(); ++tag)
+        info.extra.insert(tag.key(), tag.value());
     QDir().mkpath(QFileInfo(path).absolutePath());
     std::unique_ptr<SessionWriter> recorder;
     {

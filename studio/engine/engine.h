@@ -177,6 +177,11 @@ public:
     void stopAll();
 
     RunHistory &history() { return m_history; }
+    /**
+     * The simulation's task metrics now, read between two ticks: fresher than the history's,
+     * which come every quarter of a simulated second. Empty for a live rig or a replay.
+     */
+    QJsonObject metrics();
     /** The source's scene snapshots the viewport draws; null when it has no scene. */
     SceneFeed *sceneFeed() const { return m_source ? m_source->sceneFeed() : nullptr; }
     /**
@@ -201,9 +206,11 @@ public:
      * Records the running session from the next tick into a new session database at `path`
      * (never overwritten): contact frames, events, device frames and the user's input while
      * driving. Stops by itself on load, reset and a router swap (one router per session).
-     * False with a one-line `error`.
+     * `tags` go into the session's metadata beside the run's (a study's participant,
+     * condition, phase, trial). False with a one-line `error`.
      */
-    bool startRecording(const QString &path, const QString &notes, QString *error);
+    bool startRecording(const QString &path, const QString &notes, QString *error,
+                        const QMap<QString, QString> &tags = {});
     /** Closes the recording's database (its end time stamped); a no-op when not recording. */
     void stopRecording();
     bool isRecording() const { return m_recorder != nullptr; }

@@ -121,6 +121,14 @@ void TestStudioOptions::options()
     // A screenshot alone grabs once the studio has run a moment.
     QVERIFY(parse({"--screenshot", "b.png"}, &o, &message));
     QVERIFY(o.quitAfter > 0);
+
+    // A study with its participant, whose next step starts at once; no run of its own.
+    QVERIFY(parse({"--study", "lab/bimanual.db", "--participant", "P07", "--start-step"}, &o,
+                  &message));
+    QCOMPARE(o.study, QString("lab/bimanual.db"));
+    QCOMPARE(o.participant, QString("P07"));
+    QVERIFY(o.startStep);
+    QVERIFY(!o.runGiven);
 }
 
 void TestStudioOptions::rejects_data()
@@ -142,6 +150,10 @@ void TestStudioOptions::rejects_data()
     QTest::newRow("listen text") << QStringList{"--listen", "rig"} << "ADDRESS:PORT";
     QTest::newRow("listen no address") << QStringList{"--listen", ":9871"} << "--listen";
     QTest::newRow("positional") << QStringList{"scene.xml"} << "scene.xml";
+    QTest::newRow("participant without a study")
+        << QStringList{"--participant", "P01"} << "--participant: name the study";
+    QTest::newRow("start without a participant")
+        << QStringList{"--study", "s.db", "--start-step"} << "--start-step: name the participant";
 }
 
 void TestStudioOptions::rejects()
