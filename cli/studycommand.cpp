@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "studycommand.h"
 
-#include "csvrow.h"
 #include "quitsignal.h"
 #include "studyanalysis.h"
 #include "studydatabase.h"
+#include "studyexport.h"
 #include "studysimulation.h"
 #include "studytable.h"
 
@@ -150,69 +150,20 @@ int StudyCommand::exportCsv(const QString &path, const QString &dir)
     if (!study)
         return inputError(error);
     keepFromOutputs(path, Kept::Input);
-    QIODevice *measures = openOutputIn(dir, QStringLiteral("measures.csv"));
-    if (!measures)
-        return ExitInvalidInput;
-    measures->write(StudyTable::fromStudy(*study).toCsv());
-    if (!writeLogs(*study, dir))
-        return ExitInvalidInput;
-    // A damaged study reads short: nothing half is handed over as the export.
-    if (!study->readError().isEmpty())
-        return inputError(study->readError());
-    return ExitOk;
+    const std::vector<StudyExport::File> files = StudyExport::results(*study, &error);
+    if (files.empty())
+        return inputError(error);
+    return writeFiles(dir, files) ? ExitOk : ExitInvalidInput;
 }
 
-bool StudyCommand::writeLogs(const StudyDatabase &study, const QString &dir)
+bool StudyCommand::writeFiles(const QString &dir, const std::vector<StudyExport::File> &files)
 {
-    const StudyProtocol &protocol = study.protocol();
-    const auto conditionId = [&](int condition) {
-        return condition >= 0 ? protocol.conditions[size_t(condition)].id : QString();
-    };
-    QIODevice *trials = openOutputIn(dir, QStringLiteral("trials.csv"));
-    if (!trials)
-        return false;
-    QByteArray csv = "participant,condition,phase,trial,status,reason,seconds,started,ended,"
-                     "session\n";
-    for (const StudyDatabase::Trial &t : study.trials()) {
-        for (const QString &field :
-             {t.participant, conditionId(t.condition),
-              t.practice ? QStringLiteral("practice") : QStringLiteral("trial")}) {
-            CsvRow::appendText(csv, field);
-            csv += ',';
-        }
-        if (!t.practice)
-            csv += QByteArray::number(t.number);
-        csv += ',';
-        CsvRow::appendText(csv, statusName(t.status));
-        csv += ',';
-        CsvRow::appendText(csv, t.reason);
-        csv += ',';
-        CsvRow::appendNumber(csv, std::round(t.seconds * 1000.0) / 1000.0); // to the ms
-        for (const QString &field : {t.started.toString(Qt::ISODateWithMs),
-                                     t.ended.toString(Qt::ISODateWithMs), t.session}) {
-            csv += ',';
-            CsvRow::appendText(csv, field);
-        }
-        csv += '\n';
+    for (const StudyExport::File &file : files) {
+        QIODevice *out = openOutputIn(dir, file.name);
+        if (!out)
+            return false;
+        out->write(file.bytes);
     }
-    trials->write(csv);
-    QIODevice *answers = openOutputIn(dir, QStringLiteral("answers.csv"));
-    if (!answers)
-        return false;
-    csv = "participant,condition,measure,value,text,answered\n";
-    for (const StudyDatabase::Answer &a : study.answers()) {
-        for (const QString &field : {a.participant, conditionId(a.condition), a.measure}) {
-            CsvRow::appendText(csv, field);
-            csv += ',';
-        }
-        CsvRow::appendNumber(csv, a.value);
-        csv += ',';
-        CsvRow::appendText(csv, a.text);
-        csv += ',';
-        CsvRow::appendText(csv, a.answered.toString(Qt::ISODateWithMs));
-        csv += '\n';
-    }
-    answers->write(csv);
     return true;
 }
 
@@ -247,20 +198,10 @@ int StudyCommand::analyze(const QCommandLineParser &parser, const QString &input
     }
     StudyAnalysis analysis = StudyAnalysis::run(table, measures);
     analysis.source = QFileInfo(input).fileName();
-    analysis.name = QStringLiteral("Analysis: %1").arg(name); // the report is in English
-    if (parser.isSet(QStringLiteral("report"))) {
-        const QString dir = parser.value(QStringLiteral("report"));
-        QIODevice *report = openOutputIn(dir, QStringLiteral("report.md"));
-        if (!report)
-            return ExitInvalidInput;
-        report->write(analysis.markdown());
-        for (const StudyAnalysis::Measure &m : analysis.measures) {
-            QIODevice *plot = openOutputIn(dir, StudyAnalysis::plotFile(m.name));
-            if (!plot)
-                return ExitInvalidInput;
-            plot->write(analysis.boxPlotSvg(m));
-        }
-    }
+    analysis.name = name;
+    if (parser.isSet(QStringLiteral("report")) &&
+        !writeFiles(parser.value(QStringLiteral("report")), StudyExport::report(analysis)))
+        return ExitInvalidInput;
     if (parser.isSet(QStringLiteral("json")))
         m_out << QJsonDocument(analysis.toJson()).toJson(QJsonDocument::Indented);
     else if (!parser.isSet(QStringLiteral("report")))

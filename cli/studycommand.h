@@ -2,10 +2,9 @@
 #pragma once
 
 #include "command.h"
+#include "studyexport.h"
 
 namespace semhap {
-
-class StudyDatabase;
 
 /**
  * `semhap study`: a user study headless (docs/studies.md) — `simulate` runs a protocol with
@@ -29,8 +28,8 @@ private:
     int simulate(const QCommandLineParser &parser, const QString &protocol);
     int exportCsv(const QString &study, const QString &dir);
     int analyze(const QCommandLineParser &parser, const QString &input);
-    /** Writes the trials' log and every answer beside the tidy CSV. */
-    bool writeLogs(const StudyDatabase &study, const QString &dir);
+    /** Writes `files` into the folder `dir`; false after an error line. */
+    bool writeFiles(const QString &dir, const std::vector<StudyExport::File> &files);
 };
 
 } // namespace semhap

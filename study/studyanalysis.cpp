@@ -303,7 +303,7 @@ QJsonObject StudyAnalysis::toJson() const
 
 QByteArray StudyAnalysis::markdown() const
 {
-    QString md = QStringLiteral("# %1\n\n").arg(name);
+    QString md = QStringLiteral("# Analysis: %1\n\n").arg(name);
     md += QStringLiteral(
               "Source: `%1`. Conditions: %2. Each participant's mean over trials per condition; "
               "α = .05. Per measure: Shapiro–Wilk per condition; where every condition passes, "

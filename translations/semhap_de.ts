@@ -1138,6 +1138,26 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
         <translation>„%1“ läuft. Wenn Sie die Studie schließen, wird das abgebrochen: Es zählt nicht und ist wieder an der Reihe, wenn die Studie wieder geöffnet wird.</translation>
     </message>
+    <message>
+        <source>Export results…</source>
+        <translation>Ergebnisse exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
+        <translation>Die Ergebnisse der Studie in einen Ordner schreiben: measures.csv (tidy, für R oder pandas), trials.csv, answers.csv und den Bericht der Auswertung mit einem Boxplot je Messgröße</translation>
+    </message>
+    <message>
+        <source>Export the study&apos;s results into</source>
+        <translation>Ergebnisse der Studie exportieren nach</translation>
+    </message>
+    <message>
+        <source>Could not export the study&apos;s results</source>
+        <translation>Die Ergebnisse der Studie ließen sich nicht exportieren</translation>
+    </message>
+    <message>
+        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
+        <translation>%1 Dateien nach %2 exportiert: measures.csv, trials.csv, answers.csv und %3/report.md</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2693,6 +2713,10 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>All steps done</source>
         <translation>Alle Schritte erledigt</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the folder</source>
+        <translation>%1: Ordner kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>

@@ -1134,6 +1134,26 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Export results…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the study&apos;s results into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the study&apos;s results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
@@ -2686,6 +2706,10 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>All steps done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot create the folder</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

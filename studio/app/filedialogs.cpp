@@ -99,4 +99,12 @@ QString FileDialogs::saveFile(QWidget *parent, FileKind kind, const QString &cap
     return path;
 }
 
+QString FileDialogs::folder(QWidget *parent, FileKind kind, const QString &caption)
+{
+    const QString dir = QFileDialog::getExistingDirectory(parent, caption, startFolder(kind));
+    if (!dir.isEmpty())
+        remember(kind, QDir(dir).filePath(QStringLiteral("."))); // the folder itself
+    return dir;
+}
+
 } // namespace semhap

@@ -49,6 +49,8 @@ public:
      */
     static QString saveFile(QWidget *parent, FileKind kind, const QString &caption,
                             const QString &name, const QString &filter);
+    /** Asks for a folder to write files of `kind` into; empty when cancelled. */
+    static QString folder(QWidget *parent, FileKind kind, const QString &caption);
 };
 
 } // namespace semhap

@@ -24,6 +24,7 @@
 #include "spacemouseinput.h"
 #include "studio.h"
 #include "studydocument.h"
+#include "studyexport.h"
 #include "studypanel.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
@@ -37,6 +38,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QJsonValue>
@@ -414,6 +416,11 @@ void MainWindow::createActions()
     connect(m_openStudyAction, &QAction::triggered, this, &MainWindow::openStudy);
     m_closeStudyAction = action(tr("Close study"), QStringLiteral("closeStudyAction"), {});
     connect(m_closeStudyAction, &QAction::triggered, this, &MainWindow::closeStudy);
+    m_exportStudyAction = action(tr("Export results…"), QStringLiteral("exportStudyAction"), {});
+    m_exportStudyAction->setToolTip(
+        tr("Write the study's results into a folder: measures.csv (tidy, for R or pandas), "
+           "trials.csv, answers.csv, and the analysis' report with a box plot per measure"));
+    connect(m_exportStudyAction, &QAction::triggered, this, &MainWindow::exportStudy);
     m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
                                  QKeySequence(Qt::CTRL | Qt::Key_Comma));
     // Ctrl+, everywhere (Linux desktops define no standard key); the platform's own too.
@@ -650,6 +657,7 @@ void MainWindow::createMenus()
     study->setObjectName(QStringLiteral("studyMenu"));
     study->addAction(m_newStudyAction);
     study->addAction(m_openStudyAction);
+    study->addAction(m_exportStudyAction);
     study->addAction(m_closeStudyAction);
     file->addSeparator();
     file->addAction(m_preferencesAction);
@@ -916,6 +924,7 @@ void MainWindow::updateMode()
     m_scenePicker->setEnabled(!trial);
     m_routerPicker->setEnabled(!trial);
     m_closeStudyAction->setEnabled(m_workspace.study().isOpen());
+    m_exportStudyAction->setEnabled(m_workspace.study().isOpen());
     // A live rig keeps its own pace and drives its own grippers.
     for (QAction *action :
          {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
@@ -1326,6 +1335,26 @@ void MainWindow::openStudy()
     QString error;
     if (!m_workspace.study().open(path, &error))
         showError(tr("Could not open the study %1").arg(QFileInfo(path).fileName()), error);
+}
+
+void MainWindow::exportStudy()
+{
+    const QString dir =
+        FileDialogs::folder(this, FileKind::Study, tr("Export the study's results into"));
+    if (dir.isEmpty())
+        return;
+    QStringList written;
+    QString error;
+    if (!m_workspace.study().exportResults(dir, &written, &error)) {
+        showError(tr("Could not export the study's results"), error);
+        return;
+    }
+    statusBar()->showMessage(
+        tr("Exported %1 files into %2: measures.csv, trials.csv, "
+           "answers.csv and %3/report.md")
+            .arg(written.size())
+            .arg(QDir::toNativeSeparators(dir), QLatin1String(StudyExport::ReportFolder)),
+        10000);
 }
 
 void MainWindow::closeStudy()

@@ -161,6 +161,8 @@ private:
     void openStudy();
     /** File → Study → Close study; a trial that runs is aborted once the user agrees. */
     void closeStudy();
+    /** File → Study → Export results…: the CSVs and the analysis' report into a folder. */
+    void exportStudy();
     /** The Study dock comes forward when a study opens; its actions follow. */
     void showStudy();
 
@@ -221,6 +223,7 @@ private:
     QAction *m_newStudyAction = nullptr;
     QAction *m_openStudyAction = nullptr;
     QAction *m_closeStudyAction = nullptr;
+    QAction *m_exportStudyAction = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_resetCameraAction = nullptr;

@@ -2,8 +2,13 @@
 #include "studydocument.h"
 
 #include "engine.h"
+#include "outputfile.h"
 #include "sessioninfo.h"
+#include "studyanalysis.h"
+#include "studyexport.h"
+#include "studytable.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QLocale>
 
@@ -298,6 +303,39 @@ void StudyDocument::skipBreak()
         return;
     m_breakTimer.stop();
     emit breakChanged();
+}
+
+bool StudyDocument::exportResults(const QString &dir, QStringList *written, QString *error) const
+{
+    if (!m_study) {
+        *error = tr("no study is open");
+        return false;
+    }
+    std::vector<StudyExport::File> files = StudyExport::results(*m_study, error);
+    if (files.empty())
+        return false;
+    StudyAnalysis analysis = StudyAnalysis::run(StudyTable::fromStudy(*m_study));
+    analysis.name = m_study->protocol().name;
+    analysis.source = QFileInfo(m_study->path()).fileName();
+    for (StudyExport::File &file : StudyExport::report(analysis)) {
+        file.name = QLatin1String(StudyExport::ReportFolder) + QLatin1Char('/') + file.name;
+        files.push_back(file);
+    }
+    const QDir folder(dir);
+    for (const StudyExport::File &file : files) {
+        const QString path = folder.filePath(file.name);
+        LoadError writeError;
+        if (!QDir().mkpath(QFileInfo(path).absolutePath())) {
+            *error = tr("%1: cannot create the folder").arg(QFileInfo(path).absolutePath());
+            return false;
+        }
+        if (!OutputFile::write(path, file.bytes, &writeError)) {
+            *error = writeError.toString();
+            return false;
+        }
+        written->append(file.name);
+    }
+    return true;
 }
 
 bool StudyDocument::answer(const StudyDatabase::Answer &answer, QString *error)

@@ -95,6 +95,14 @@ public:
     /** Ends the break now. */
     void skipBreak();
 
+    /**
+     * Writes the study's results into the folder `dir` as `semhap study export` and
+     * `analyze --report` do: measures.csv, trials.csv, answers.csv, and report/report.md
+     * with a box plot per measure, each file the safe way. The files written in `written`;
+     * false with `FILE: reason` in `error` (nothing half: a file is whole or not there).
+     */
+    bool exportResults(const QString &dir, QStringList *written, QString *error) const;
+
     /** Stores `answer` at once (the database's checks); false with `error`. */
     bool answer(const StudyDatabase::Answer &answer, QString *error);
 

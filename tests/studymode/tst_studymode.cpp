@@ -40,6 +40,7 @@
 #include <QRadioButton>
 #include <QSettings>
 #include <QSlider>
+#include <QStatusBar>
 #include <QStyleOptionSlider>
 #include <QTemporaryDir>
 #include <QTest>
@@ -497,6 +498,30 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
         QCOMPARE(session->info().routerSource,
                  protocol.conditions[size_t(trial.condition)].router);
     }
+
+    // File → Study → Export results…: the CSVs and the report, as `semhap study` writes them.
+    const QString exported = m_dir.filePath("whole-results");
+    QVERIFY(QDir().mkpath(exported));
+    folders.clear();
+    answerFileDialogs({exported}, &folders);
+    window.findChild<QAction *>("exportStudyAction")->trigger();
+    QCOMPARE(folders.size(), 1);
+    QFile measures(exported + "/measures.csv");
+    QVERIFY(measures.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = measures.readAll().split('\n');
+    QCOMPARE(rows.first(), QByteArray("participant,condition,trial,measure,value"));
+    // P01's rows, conditions in the protocol's order: the first a trial's metric.
+    QVERIFY(rows[1].startsWith(QByteArray("P01," + protocol.conditions[0].id.toUtf8() + ",1,")));
+    QVERIFY(rows.contains(
+        QByteArray("P01," + protocol.conditions[size_t(order[0])].id.toUtf8() + ",,tlx.raw,55")));
+    for (const char *file :
+         {"trials.csv", "answers.csv", "report/report.md", "report/cubes_transferred.svg"})
+        QVERIFY2(QFileInfo::exists(exported + "/" + file), file);
+    QFile report(exported + "/report/report.md");
+    QVERIFY(report.open(QIODevice::ReadOnly));
+    QVERIFY(report.readAll().startsWith("# Analysis: Bimanual sorting: visual and haptic "
+                                        "feedback\n\nSource: `whole.db`."));
+    QVERIFY(window.statusBar()->currentMessage().startsWith("Exported "));
 }
 
 // A done trial chosen in the list is marked invalid with a reason (OK stays off until one is
