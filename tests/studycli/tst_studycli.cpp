@@ -2,7 +2,9 @@
 // `semhap study` (docs/studies.md): a protocol simulated with 20 participants into a study,
 // its tidy export, a kill in the middle, and the refusals.
 #include "clirun.h"
+#include "repeatedmeasures.h"
 #include "sessionreader.h"
+#include "statistics.h"
 #include "studydatabase.h"
 #include "studysimulation.h"
 #include "studytable.h"
@@ -185,6 +187,33 @@ void TestStudyCli::analysisOfTheStudyAndOfItsExportAgree()
     }
     QCOMPARE(transferred[QLatin1String("participants")].toInt(), 20);
     QCOMPARE(transferred[QLatin1String("pairwise")].toArray().size(), 6);
+    // The statistics are those of the participants' means computed here from the study's
+    // trials, by the tested functions (tests/statistics checks them on textbook data).
+    QString error;
+    auto study = StudyDatabase::open(m_study, StudyDatabase::Access::Read, &error);
+    QVERIFY2(study, qPrintable(error));
+    const QStringList ids = study->participants();
+    std::vector<std::vector<double>> means(20, std::vector<double>(4, 0.0));
+    for (const StudyDatabase::Trial &t : study->trials()) {
+        if (!t.practice)
+            means[size_t(ids.indexOf(t.participant))][size_t(t.condition)] +=
+                t.metrics[QLatin1String("cubes_transferred")].toDouble() / 2.0;
+    }
+    const WithinEffect anova = repeatedMeasuresAnova(means);
+    const FriedmanTest friedman = friedmanTest(means);
+    const QJsonObject anovaJson = transferred[QLatin1String("anova")].toObject();
+    QCOMPARE(anovaJson[QLatin1String("tested")].toBool(), anova.tested);
+    if (anova.tested) {
+        QCOMPARE(anovaJson[QLatin1String("f")].toDouble(), anova.f);
+        QCOMPARE(anovaJson[QLatin1String("p")].toDouble(), anova.p);
+    }
+    QCOMPARE(transferred[QLatin1String("friedman")][QLatin1String("chi_squared")].toDouble(),
+             friedman.chiSquared);
+    std::vector<double> first; // the protocol's first condition
+    for (const std::vector<double> &row : means)
+        first.push_back(row[0]);
+    QCOMPARE(transferred[QLatin1String("conditions")][0][QLatin1String("mean")].toDouble(),
+             summarise(first).mean);
     const QString primary = transferred[QLatin1String("primary")].toString();
     QVERIFY(primary == QLatin1String("anova") || primary == QLatin1String("friedman"));
     // The same analysis from the tidy export (collected elsewhere, say): the same numbers.
