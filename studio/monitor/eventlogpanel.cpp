@@ -147,8 +147,8 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
     header->setSectionResizeMode(EventLogModel::MessageColumn, QHeaderView::Interactive);
     connect(m_model, &QAbstractItemModel::rowsInserted, this,
             [this](const QModelIndex &, int first, int last) {
-                QHeaderView *header = m_view->horizontalHeader();
-                int wanted = header->sectionSize(EventLogModel::MessageColumn);
+                QHeaderView *columns = m_view->horizontalHeader();
+                int wanted = columns->sectionSize(EventLogModel::MessageColumn);
                 for (int row = first; row <= last; ++row) {
                     const QString text =
                         m_model->index(row, EventLogModel::MessageColumn).data().toString();
@@ -156,8 +156,8 @@ EventLogPanel::EventLogPanel(RunHistory &history, QWidget *parent)
                         wanted,
                         fontMetrics().horizontalAdvance(QStringLiteral("WW ") + text) + 16);
                 }
-                if (wanted > header->sectionSize(EventLogModel::MessageColumn))
-                    header->resizeSection(EventLogModel::MessageColumn, wanted);
+                if (wanted > columns->sectionSize(EventLogModel::MessageColumn))
+                    columns->resizeSection(EventLogModel::MessageColumn, wanted);
             });
 
     auto *top = new QHBoxLayout;

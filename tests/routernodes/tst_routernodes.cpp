@@ -341,7 +341,7 @@ void TestRouterNodes::activeMessagesKeepOrder()
     QCOMPARE(set.insert(3), set.find(3));
     set.remove(3);
     QCOMPARE(set.size(), ActiveMessages::Capacity - 1);
-    int previous = -1;
+    MessageKey previous = -1;
     for (const ActiveMessages::Entry &entry : set) {
         QVERIFY(entry.key > previous);
         QVERIFY(entry.key != 3);
