@@ -29,6 +29,16 @@ StudyTable readTable(const QString &path)
     return table;
 }
 
+/** The table of a tidy CSV's text. */
+StudyTable tableOf(const QByteArray &csv)
+{
+    StudyTable table;
+    LoadError error;
+    if (!StudyTable::parseCsv(csv, QStringLiteral("test.csv"), &table, &error))
+        qFatal("%s", qPrintable(error.toString()));
+    return table;
+}
+
 /** `actual` equals a published value to the digits it was printed with. */
 bool published(double actual, double value, double halfUnit)
 {
@@ -178,14 +188,10 @@ void TestStudyAnalysis::friedmanAsR()
 void TestStudyAnalysis::nothingToTest()
 {
     // A measure with no variance, and one a participant lacks in a condition.
-    QTemporaryDir dir;
-    QFile file(dir.filePath(QStringLiteral("flat.csv")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write("participant,condition,trial,measure,value\n"
-               "P1,A,1,zero,0\nP1,B,1,zero,0\nP2,A,1,zero,0\nP2,B,1,zero,0\n"
-               "P3,A,1,zero,0\nP3,B,1,zero,0\nP3,A,1,one,1\n");
-    file.close();
-    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const StudyAnalysis analysis =
+        StudyAnalysis::run(tableOf("participant,condition,trial,measure,value\n"
+                                   "P1,A,1,zero,0\nP1,B,1,zero,0\nP2,A,1,zero,0\nP2,B,1,zero,0\n"
+                                   "P3,A,1,zero,0\nP3,B,1,zero,0\nP3,A,1,one,1\n"));
     QCOMPARE(int(analysis.measures.size()), 2);
     QVERIFY(!analysis.measures[0].tested());
     QCOMPARE(analysis.measures[1].participants.size(), 0);
@@ -202,9 +208,6 @@ void TestStudyAnalysis::namesFromOtherTools()
 {
     // R or a spreadsheet names conditions as people read them, even with a pipe; pandas
     // writes a trial column with empty cells as floats.
-    QTemporaryDir dir;
-    QFile file(dir.filePath(QStringLiteral("named.csv")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
     QByteArray csv = "participant,condition,trial,measure,value\n";
     for (int p = 1; p <= 6; ++p)
         csv += QStringLiteral("P%1,No feedback,1.0,time on task,%2\nP%1,\"Haptic | visual\",1,"
@@ -213,9 +216,7 @@ void TestStudyAnalysis::namesFromOtherTools()
                    .arg(10 + p)
                    .arg(8 + p * p % 5)
                    .toUtf8();
-    file.write(csv);
-    file.close();
-    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const StudyAnalysis analysis = StudyAnalysis::run(tableOf(csv));
     QCOMPARE(analysis.conditions, (QStringList{"No feedback", "Haptic | visual"}));
     const QString report = QString::fromUtf8(analysis.markdown());
     QVERIFY(report.contains(QLatin1String("| Haptic \\| visual |")));
@@ -230,9 +231,6 @@ void TestStudyAnalysis::aRankingTakesRankTests()
 {
     // Twelve participants rank three conditions; the ranks would pass Shapiro-Wilk in each
     // condition often enough, but ranks are for rank tests.
-    QTemporaryDir dir;
-    QFile file(dir.filePath(QStringLiteral("rank.csv")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
     QByteArray csv = "participant,condition,trial,measure,value\n";
     const int orders[6][3] = {{1, 2, 3}, {1, 3, 2}, {2, 1, 3}, {1, 2, 3}, {2, 3, 1}, {1, 2, 3}};
     for (int p = 0; p < 12; ++p) {
@@ -243,9 +241,7 @@ void TestStudyAnalysis::aRankingTakesRankTests()
                        .arg(orders[p % 6][c])
                        .toUtf8();
     }
-    file.write(csv);
-    file.close();
-    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const StudyAnalysis analysis = StudyAnalysis::run(tableOf(csv));
     const StudyAnalysis::Measure &m = analysis.measures.front();
     QVERIFY(m.ranking);
     QVERIFY(!m.normal);
@@ -256,15 +252,11 @@ void TestStudyAnalysis::aRankingTakesRankTests()
 void TestStudyAnalysis::hugeValuesPlotInBoundedWork()
 {
     // Values two doubles apart at 1e17: no step of the axis fits between them.
-    QTemporaryDir dir;
-    QFile file(dir.filePath(QStringLiteral("huge.csv")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write("participant,condition,trial,measure,value\n"
-               "P1,A,1,big,1e17\nP1,B,1,big,100000000000000016\n"
-               "P2,A,1,big,1e17\nP2,B,1,big,1e17\nP3,A,1,big,100000000000000016\n"
-               "P3,B,1,big,1e17\n");
-    file.close();
-    const StudyAnalysis analysis = StudyAnalysis::run(readTable(file.fileName()));
+    const StudyAnalysis analysis = StudyAnalysis::run(
+        tableOf("participant,condition,trial,measure,value\n"
+                "P1,A,1,big,1e17\nP1,B,1,big,100000000000000016\n"
+                "P2,A,1,big,1e17\nP2,B,1,big,1e17\nP3,A,1,big,100000000000000016\n"
+                "P3,B,1,big,1e17\n"));
     const QByteArray svg = analysis.boxPlotSvg(analysis.measures.front());
     QVERIFY(svg.size() < 20000);
     QVERIFY(svg.count("<line") < 40);
@@ -298,16 +290,11 @@ void TestStudyAnalysis::badCsvIsLocated()
 {
     QFETCH(QByteArray, text);
     QFETCH(QString, error);
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.csv"));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(text);
-    file.close();
     StudyTable table;
     LoadError loadError;
-    QVERIFY(!StudyTable::readCsv(path, &table, &loadError));
-    QVERIFY2(loadError.toString().startsWith(path + error), qPrintable(loadError.toString()));
+    QVERIFY(!StudyTable::parseCsv(text, QStringLiteral("bad.csv"), &table, &loadError));
+    QVERIFY2(loadError.toString().startsWith(QStringLiteral("bad.csv") + error),
+             qPrintable(loadError.toString()));
 }
 
 QTEST_GUILESS_MAIN(TestStudyAnalysis)
