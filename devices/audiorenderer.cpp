@@ -85,7 +85,9 @@ void AudioRenderer::render(float *out, unsigned long frames, double outputDelay,
         const DeviceFrame rest = m_model->restFrame(m_lastT);
         rampTo(rest, m_fade);
         m_untilNext = 0;
-        record(rest, now - m_stopAt.load(std::memory_order_relaxed) + outputDelay);
+        // `now` was read as the callback began: a stop asked since plays at this buffer's
+        // start, no earlier (the difference would read negative).
+        record(rest, std::max(0.0, now - m_stopAt.load(std::memory_order_relaxed)) + outputDelay);
     }
     // What one buffer brings at the model's rate; more than that waiting is late.
     const std::size_t backlog = frames / unsigned(m_period) + 2;
@@ -131,7 +133,7 @@ void AudioRenderer::take(const Queued &queued, unsigned long offset, double outp
     m_lastT = frame.t;
     rampTo(frame, m_period);
     m_untilNext = m_period;
-    record(frame, now - queued.sentAt + outputDelay + double(offset) / m_rate);
+    record(frame, std::max(0.0, now - queued.sentAt) + outputDelay + double(offset) / m_rate);
 }
 
 void AudioRenderer::rampTo(const DeviceFrame &frame, int samples)
