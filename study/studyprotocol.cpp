@@ -269,6 +269,13 @@ bool StudyProtocol::practiceDone(const QJsonObject &metrics, double seconds) con
     return practiceTransfers > 0 && transfers(metrics) >= practiceTransfers;
 }
 
+double StudyProtocol::seconds(const Step &step) const
+{
+    if (step.kind == Step::Kind::Trial)
+        return trialSeconds;
+    return practiceSeconds > 0 ? practiceSeconds : MaxSeconds;
+}
+
 RunOptions StudyProtocol::runOptions(int condition) const
 {
     RunOptions options;

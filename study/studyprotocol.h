@@ -128,6 +128,11 @@ struct StudyProtocol
     static int transfers(const QJsonObject &metrics);
     /** Whether a practice round that got `metrics` after `seconds` has reached its goal. */
     bool practiceDone(const QJsonObject &metrics, double seconds) const;
+    /**
+     * How long `step` (Practice or Trial) may run (s): a trial's seconds, a practice round's,
+     * or MaxSeconds for a practice round with a transfer goal only.
+     */
+    double seconds(const Step &step) const;
     /** The run of `condition`: the scene, its options and the condition's router. */
     RunOptions runOptions(int condition) const;
 

@@ -41,9 +41,10 @@ bool runStep(StudyDatabase &study, const QString &participant, int number,
     RunOptions options = protocol.runOptions(step.condition);
     options.operatorName = QStringLiteral("reactive");
     options.seed = StudySimulation::seed(number, step.trial);
-    options.duration = practice ? (protocol.practiceSeconds > 0 ? protocol.practiceSeconds
-                                                                : StudySimulation::PracticeLimit)
-                                : protocol.trialSeconds;
+    // A simulated operator that never reaches a practice goal must not run for a day.
+    options.duration = protocol.seconds(step);
+    if (practice && protocol.practiceSeconds <= 0)
+        options.duration = StudySimulation::PracticeLimit;
     if (simulation.maxSeconds > 0)
         options.duration = std::min(options.duration, simulation.maxSeconds);
     QString reason;

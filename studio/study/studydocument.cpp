@@ -20,9 +20,6 @@ namespace {
 
 using Kind = StudyProtocol::Step::Kind;
 
-/** A practice round with a transfer goal only runs until it is reached: a day at most. */
-constexpr double PracticeWithoutTimeLimit = StudyProtocol::MaxSeconds;
-
 } // namespace
 
 StudyDocument::StudyDocument(Engine &engine, QObject *parent) : QObject(parent), m_engine(engine)
@@ -156,9 +153,7 @@ bool StudyDocument::startTrial(QString *error)
         return false;
     }
     RunOptions options = protocol().runOptions(step.condition);
-    options.duration = step.kind == Kind::Trial         ? protocol().trialSeconds
-                       : protocol().practiceSeconds > 0 ? protocol().practiceSeconds
-                                                        : PracticeWithoutTimeLimit;
+    options.duration = protocol().seconds(step);
     if (!m_engine.load(options, error))
         return false;
     const QString session = m_study->newSessionPath(m_participant, step, error);
@@ -191,11 +186,7 @@ double StudyDocument::elapsed() const
 
 double StudyDocument::limit() const
 {
-    if (!isTrialRunning())
-        return 0.0;
-    if (m_step.kind == Kind::Trial)
-        return protocol().trialSeconds;
-    return protocol().practiceSeconds > 0 ? protocol().practiceSeconds : PracticeWithoutTimeLimit;
+    return isTrialRunning() ? protocol().seconds(m_step) : 0.0;
 }
 
 void StudyDocument::pause()
