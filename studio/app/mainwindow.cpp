@@ -918,8 +918,10 @@ void MainWindow::updateMode()
     m_routerEditor->setReplaying(replaying); // Apply re-routes a replay
     m_runAction->setEnabled(!replaying);
     m_recordAction->setEnabled(!replaying && !trial);
-    for (QAction *action : {m_resetAction, m_openSceneAction, m_openRouterAction,
-                            m_openSessionAction, m_listenAction})
+    // Another study in place of this one would abort the trial without asking.
+    for (QAction *action :
+         {m_resetAction, m_openSceneAction, m_openRouterAction, m_openSessionAction,
+          m_listenAction, m_newStudyAction, m_openStudyAction})
         action->setEnabled(!trial);
     m_scenePicker->setEnabled(!trial);
     m_routerPicker->setEnabled(!trial);

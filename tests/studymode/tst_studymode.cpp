@@ -32,6 +32,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -956,6 +957,16 @@ void TestStudyMode::pictures()
     QVERIFY2(clippedTexts(panel).isEmpty(), qPrintable(clippedTexts(panel).join('\n')));
     savePicture(&window, "study-trial");
     savePicture(panel, "study-panel");
+    // File → Study, its actions as a trial runs (Export results… on, New study… off).
+    auto *studyMenu = window.findChild<QMenu *>("studyMenu");
+    QVERIFY(studyMenu);
+    QVERIFY(window.findChild<QAction *>("exportStudyAction")->isEnabled());
+    QVERIFY(!window.findChild<QAction *>("newStudyAction")->isEnabled());
+    QVERIFY(!window.findChild<QAction *>("openStudyAction")->isEnabled());
+    studyMenu->popup(window.mapToGlobal(QPoint(40, 40)));
+    QTRY_VERIFY(studyMenu->isVisible());
+    savePicture(studyMenu, "study-menu");
+    studyMenu->close();
     window.engine().setSpeed(8);
     QTRY_VERIFY_WITH_TIMEOUT(!studyOf(*studio).isTrialRunning(), 30000);
     skipBreak(*studio);
