@@ -254,8 +254,11 @@ bool OutputFile::sameFile(const QString &a, const QString &b)
     struct stat second = {};
     const bool firstExists = ::stat(QFile::encodeName(a).constData(), &first) == 0;
     const bool secondExists = ::stat(QFile::encodeName(b).constData(), &second) == 0;
+    // A character device (/dev/null, a terminal) keeps nothing that writing could lose:
+    // several outputs and inputs may share it.
     if (firstExists && secondExists)
-        return first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+        return !S_ISCHR(first.st_mode) && first.st_dev == second.st_dev &&
+               first.st_ino == second.st_ino;
     if (firstExists != secondExists)
         return false;
     return futurePath(a) == futurePath(b);

@@ -58,7 +58,8 @@ public:
 
     /**
      * True when `a` and `b` name the same file: the same inode once links are followed, or,
-     * for files not yet there, the same path in the same real folder.
+     * for files not yet there, the same path in the same real folder. Never for a character
+     * device such as /dev/null: nothing written there can overwrite what another reads.
      */
     static bool sameFile(const QString &a, const QString &b);
 

@@ -114,6 +114,7 @@ private slots:
     void fifoWithReader();
     void symlinkKeptTargetReplaced();
     void devicesAreNeverReplaced();
+    void outputsMayShareACharacterDevice();
     void inputsMustBeFiles_data();
     void inputsMustBeFiles();
     void sessionKilledAtOnceLeavesNothingBroken();
@@ -385,6 +386,20 @@ void TestOutputs::devicesAreNeverReplaced()
         runSemhap({"convert", SEMHAP_RESOURCES "/patterns/vib.geiger.json", "/dev/null"});
     QVERIFY(convert.code != 0 || isCharDevice("/dev/null"));
     QVERIFY(isCharDevice("/dev/null"));
+}
+
+void TestOutputs::outputsMayShareACharacterDevice()
+{
+    // How people discard what they don't need: /dev/null keeps nothing to lose.
+    const Result r = runSemhap({"route", "--router", "C3", "--frames", Trace, "--events",
+                                "/dev/null", "--device-frames", "/dev/null"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(isCharDevice("/dev/null"));
+    // A regular file stays one output's only.
+    const Result twice = runSemhap({"route", "--router", "C3", "--frames", Trace, "--events",
+                                    path("twice.jsonl"), "--device-frames", path("twice.jsonl")});
+    QCOMPARE(twice.code, 1);
+    QVERIFY(twice.err.contains("it is the same file as the output"));
 }
 
 void TestOutputs::inputsMustBeFiles_data()
