@@ -113,6 +113,12 @@ bool SimRun::isDone() const
     return m_steps >= m_totalSteps;
 }
 
+void SimRun::setDuration(double seconds)
+{
+    m_options.duration = seconds;
+    m_totalSteps = std::lround(seconds / m_world->timestep());
+}
+
 double SimRun::time() const
 {
     return m_world->time();

@@ -76,6 +76,11 @@ public:
     /** One physics step and the pipeline tick it makes; false once the duration is done. */
     bool step(RunSink &sink);
     bool isDone() const;
+    /**
+     * Runs for `seconds` (simulated, from the start) instead of options().duration: a study's
+     * trial in the studio. A run already past it is done.
+     */
+    void setDuration(double seconds);
     /** Simulated seconds so far. */
     double time() const;
 

@@ -58,8 +58,10 @@ QString FileDialogs::startFolder(FileKind kind)
         return last;
     if (kind == FileKind::Protocol && !exampleStudies().isEmpty())
         return exampleStudies();
+    // A folder that is not there would leave the dialog where the last one was: for a new
+    // study, among the example protocols it was just picked from.
     const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    return documents.isEmpty() ? QDir::homePath() : documents;
+    return QFileInfo(documents).isDir() ? documents : QDir::homePath();
 }
 
 QString FileDialogs::exampleStudies()

@@ -544,6 +544,14 @@ bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
     return true;
 }
 
+void Engine::setDuration(double seconds)
+{
+    if (!m_simulation)
+        return;
+    std::lock_guard<std::mutex> lock(m_setupMutex);
+    m_simulation->run().setDuration(seconds);
+}
+
 std::array<std::optional<HandCommand>, 2> Engine::handCommands()
 {
     if (!m_simulation)
@@ -638,7 +646,13 @@ void Engine::loop()
         } else {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
-        if (run.isDone() && m_running.exchange(false)) {
+        bool done = false;
+        {
+            // setDuration() changes it from the GUI thread.
+            std::lock_guard<std::mutex> lock(m_setupMutex);
+            done = run.isDone();
+        }
+        if (done && m_running.exchange(false)) {
             QMetaObject::invokeMethod(
                 this,
                 [this] {

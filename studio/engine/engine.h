@@ -131,6 +131,11 @@ public:
      * simulation or rig it replaced starts again from the start.
      */
     bool reset(QString *error);
+    /**
+     * Lets the loaded simulation run `seconds` from its start (a study's trial) without
+     * changing options(): the next load or reset runs options().duration again.
+     */
+    void setDuration(double seconds);
     /** The simulation's options; while live, `router` and `overrides` are the rig's. */
     const RunOptions &options() const { return m_options; }
     /**

@@ -152,10 +152,13 @@ bool StudyDocument::startTrial(QString *error)
         *error = tr("the next step is no practice round or trial");
         return false;
     }
+    // The step's seconds bound this run only: what the studio runs after the trial, even
+    // this run reset, lasts as long as the studio's runs do.
     RunOptions options = protocol().runOptions(step.condition);
-    options.duration = protocol().seconds(step);
+    options.duration = m_engine.options().duration;
     if (!m_engine.load(options, error))
         return false;
+    m_engine.setDuration(protocol().seconds(step));
     const QString session = m_study->newSessionPath(m_participant, step, error);
     if (session.isEmpty())
         return false;
@@ -215,6 +218,8 @@ qint64 StudyDocument::stopTrial(double *seconds)
     m_engine.stopAll();
     *seconds = m_engine.simTime();
     m_engine.stopRecording();
+    // The run left behind goes on as an ordinary one when Run is pressed.
+    m_engine.setDuration(m_engine.options().duration);
     return id;
 }
 

@@ -411,6 +411,10 @@ void StudyPanel::refreshTrial()
     const StudyProtocol &protocol = m_study.protocol();
     const StudyProtocol::Step &next = m_next;
     const bool questionnaire = next.kind == Kind::Questionnaire || next.kind == Kind::Final;
+    const bool chosen = !m_study.participant().isEmpty();
+    // A clock only where one runs: a practice round counts up, a trial and a break down.
+    m_countdown->setVisible(running || onBreak ||
+                            (chosen && (next.kind == Kind::Practice || next.kind == Kind::Trial)));
     if (running) {
         const StudyProtocol::Step step = m_study.runningStep();
         m_nextLabel->setText(tr("Now: %1").arg(m_study.describe(step)));
@@ -434,8 +438,9 @@ void StudyPanel::refreshTrial()
             parts.append(tr("at %1× real time").arg(QLocale().toString(m_engine.speed())));
         m_countdownCaption->setText(paused + parts.join(QStringLiteral(" · ")));
     } else {
-        m_nextLabel->setText(next.kind == Kind::Done ? m_study.describe(next)
-                                                     : tr("Next: %1").arg(m_study.describe(next)));
+        m_nextLabel->setText(!chosen                ? tr("No participant chosen")
+                             : next.kind == Kind::Done ? m_study.describe(next)
+                                                       : tr("Next: %1").arg(m_study.describe(next)));
         if (onBreak) {
             m_countdown->setText(clock(m_study.breakLeft()));
             m_countdownCaption->setText(tr("Break before the next trial"));
@@ -443,7 +448,7 @@ void StudyPanel::refreshTrial()
             m_countdown->setText(next.kind == Kind::Trial ? clock(protocol.trialSeconds)
                                                           : clock(0));
             m_countdownCaption->setText(
-                m_study.participant().isEmpty() ? tr("Choose a participant.")
+                !chosen                         ? tr("Choose a participant.")
                 : next.kind == Kind::Done       ? tr("This participant has done every step.")
                 : questionnaire
                     ? tr("Questionnaire opens it for the participant, in a window of its own.")

@@ -24,6 +24,8 @@
 #include "workspace.h"
 
 #include <QApplication>
+#include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QJsonArray>
@@ -41,6 +43,7 @@
 #include <QRadioButton>
 #include <QSettings>
 #include <QSlider>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyleOptionSlider>
 #include <QTemporaryDir>
@@ -66,6 +69,7 @@ private slots:
     void stopAllPausesATrial();
     void aTrialKeepsItsRun();
     void closingTheStudyAbortsItsTrial();
+    void ordinaryRunsOutliveTheStudy();
     void theWidgetsOfferOnlyTheScale();
     void aSecondStudioIsRefused();
     void theStudyComesBackWhereTheWindowWent();
@@ -404,12 +408,20 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
     window.findChild<QAction *>("newStudyAction")->trigger();
     QCOMPARE(folders.size(), 2);
     QCOMPARE(folders.first(), QFileInfo(SEMHAP_RESOURCES "/studies").canonicalFilePath());
+    // The study itself goes among the user's files, never beside the examples.
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QCOMPARE(folders.last(),
+             QFileInfo(QFileInfo(documents).isDir() ? documents : QDir::homePath())
+                 .canonicalFilePath());
     QVERIFY(studyOf(*studio).isOpen());
     QVERIFY(QFileInfo::exists(path));
     QVERIFY(!window.findChild<QDockWidget *>("studyDock")->visibleRegion().isEmpty());
     QCOMPARE(child<QLabel>(panel, "studyName")->text(),
              QString("Bimanual sorting: visual and haptic feedback"));
 
+    // No one chosen yet: nothing is done, and no clock shows.
+    QCOMPARE(child<QLabel>(panel, "nextStep")->text(), QString("No participant chosen"));
+    QVERIFY(!child<QLabel>(panel, "countdown")->isVisible());
     // P01 by the keys; the order shown is the Latin square's first row.
     auto *id = child<QLineEdit>(panel, "participantId");
     id->setFocus();
@@ -428,6 +440,7 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
     for (int i = 0; i < 4; ++i)
         QCOMPARE(tree->topLevelItem(i)->text(0), QString("%1. %2").arg(i + 1).arg(labels[i]));
     QCOMPARE(child<QLabel>(panel, "nextStep")->text(), "Next: Practice — " + labels[0] + " (2 s)");
+    QVERIFY(child<QLabel>(panel, "countdown")->isVisible());
     QCOMPARE(stepState(panel, 0, "Practice"), QString("next"));
 
     StudyDatabase &db = *studyOf(*studio).database();
@@ -448,6 +461,7 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
         // The questionnaire, with the keys: TLX scales 50 + 5 * position, Likert points.
         QCOMPARE(child<QLabel>(panel, "nextStep")->text(),
                  "Next: Questionnaire after " + labels[position]);
+        QVERIFY(!child<QLabel>(panel, "countdown")->isVisible()); // no clock runs for it
         QuestionnaireWindow *questions = openQuestionnaire(*studio);
         QVERIFY(questions);
         QCOMPARE(questions->pageCount(), 6);
@@ -718,6 +732,39 @@ void TestStudyMode::closingTheStudyAbortsItsTrial()
     auto db = StudyDatabase::open(path, StudyDatabase::Access::Read, &error);
     QCOMPARE(db->trials("P01").front().status, Status::Aborted);
     QCOMPARE(db->trials("P01").front().reason, QString("the study was closed"));
+}
+
+// A trial's seconds bound its run only: the run it leaves goes on when Run is pressed, after
+// the study is closed, reset, and in another scene (each ran 60 s at most, the trial's
+// limit kept, until the studio was restarted).
+void TestStudyMode::ordinaryRunsOutliveTheStudy()
+{
+    const QString path = makeStudy("outlive.db", {"P01"});
+    auto studio = startStudio(path, {"--participant", "P01"});
+    MainWindow &window = *studio->window();
+    Engine &engine = window.engine();
+    QVERIFY(runStep(*studio)); // the 2 s practice round
+    QVERIFY(std::abs(engine.simTime() - 2.0) < 0.01);
+    window.findChild<QAction *>("closeStudyAction")->trigger();
+    QVERIFY(!studyOf(*studio).isOpen());
+    const auto runsPast = [&](double seconds) {
+        press(Qt::Key_F5);
+        const bool ran = QTest::qWaitFor(
+            [&] { return engine.simTime() > seconds || !engine.isRunning(); }, 30000);
+        const bool past = ran && engine.simTime() > seconds && engine.isRunning();
+        press(Qt::Key_F5); // pause again
+        return past;
+    };
+    QVERIFY(runsPast(3.0));
+    press(Qt::Key_R, Qt::ControlModifier);
+    QVERIFY(runsPast(2.5));
+    auto *scenes = window.findChild<QComboBox *>("scenePicker");
+    const int other = scenes->findData("bimanual_sorting") == scenes->currentIndex()
+                          ? scenes->findData("box_and_block")
+                          : scenes->findData("bimanual_sorting");
+    QVERIFY(other >= 0);
+    scenes->setCurrentIndex(other);
+    QVERIFY(runsPast(2.5));
 }
 
 // What the participant can enter is the scale: TLX in steps of 5 from 0 to 100 (keys at the
