@@ -2174,8 +2174,8 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <translation>Wiedergabe abspielen oder anhalten</translation>
     </message>
     <message>
-        <source>Session time: drag to scrub</source>
-        <translation>Sitzungszeit: ziehen zum Durchsuchen</translation>
+        <source>Session time: click or drag to scrub</source>
+        <translation>Sitzungszeit: klicken oder ziehen zum Durchsuchen</translation>
     </message>
     <message>
         <source>Session seconds per real second</source>
@@ -2920,6 +2920,10 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>at %1× real time</source>
         <translation>mit %1× Echtzeit</translation>
+    </message>
+    <message>
+        <source>No participant chosen</source>
+        <translation>Keine Versuchsperson gewählt</translation>
     </message>
 </context>
 <context>

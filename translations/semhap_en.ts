@@ -2168,7 +2168,7 @@ Please tell the experimenter that you are done.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Session time: drag to scrub</source>
+        <source>Session time: click or drag to scrub</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2913,6 +2913,10 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>at %1× real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No participant chosen</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

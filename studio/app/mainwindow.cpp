@@ -459,6 +459,15 @@ void MainWindow::createToolBar()
         if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(action)))
             button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     }
+    // Run and Pause take the same room: the toolbar stands still as the run starts and stops.
+    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_runAction))) {
+        int widest = 0;
+        for (const QString &text : {tr("Run"), tr("Pause")}) {
+            m_runAction->setText(text);
+            widest = std::max(widest, button->sizeHint().width());
+        }
+        button->setMinimumWidth(widest);
+    }
     bar->addSeparator();
 
     m_speedPicker = new QComboBox(bar);
@@ -1290,6 +1299,11 @@ void MainWindow::restoreLayout()
         m_viewport->setCameraPreset(CameraPreset(preset));
     m_designer->setAuditionDevice(
         settings.value(QStringLiteral("view/auditionDevice")).toString());
+    WaveformDesigner::PlaySettings play = m_designer->playSettings();
+    play.intensity = settings.value(QStringLiteral("view/playIntensity"), play.intensity).toDouble();
+    play.endAt = settings.value(QStringLiteral("view/playEndAt"), play.endAt).toDouble();
+    play.hold = settings.value(QStringLiteral("view/playHold"), play.hold).toBool();
+    m_designer->setPlaySettings(play);
 }
 
 void MainWindow::resetLayout()
@@ -1308,6 +1322,10 @@ void MainWindow::saveLayout()
     settings.setValue(QStringLiteral("view/plotWindow"), m_plots->windowSeconds());
     settings.setValue(QStringLiteral("view/cameraPreset"), int(m_viewport->cameraPreset()));
     settings.setValue(QStringLiteral("view/auditionDevice"), m_designer->auditionDevice());
+    const WaveformDesigner::PlaySettings play = m_designer->playSettings();
+    settings.setValue(QStringLiteral("view/playIntensity"), play.intensity);
+    settings.setValue(QStringLiteral("view/playEndAt"), play.endAt);
+    settings.setValue(QStringLiteral("view/playHold"), play.hold);
 }
 
 void MainWindow::newStudy()

@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QProxyStyle>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -23,6 +24,20 @@ namespace {
 /** The scrubber's resolution: one step per millisecond of session time. */
 constexpr double StepsPerSecond = 1000.0;
 constexpr double Speeds[] = {0.25, 0.5, 1.0, 2.0, 4.0};
+
+/** A click on the scrubber's groove jumps there, as in a media player, instead of paging. */
+class JumpingSliderStyle : public QProxyStyle
+{
+public:
+    using QProxyStyle::QProxyStyle;
+    int styleHint(StyleHint hint, const QStyleOption *option, const QWidget *widget,
+                  QStyleHintReturn *returned) const override
+    {
+        if (hint == SH_Slider_AbsoluteSetButtons)
+            return int(Qt::LeftButton | Qt::MiddleButton);
+        return QProxyStyle::styleHint(hint, option, widget, returned);
+    }
+};
 
 } // namespace
 
@@ -40,7 +55,11 @@ ReplayBar::ReplayBar(SessionReplay &replay, QWidget *parent) : QWidget(parent), 
 
     m_slider = new QSlider(Qt::Horizontal, this);
     m_slider->setObjectName(QStringLiteral("replaySlider"));
-    m_slider->setToolTip(tr("Session time: drag to scrub"));
+    m_slider->setToolTip(tr("Session time: click or drag to scrub"));
+    // Owned by the slider; with no base given it follows the application's style.
+    auto *jumping = new JumpingSliderStyle;
+    jumping->setParent(m_slider);
+    m_slider->setStyle(jumping);
     connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
         m_replay.seek(m_replay.startTime() + double(value) / StepsPerSecond);
     });

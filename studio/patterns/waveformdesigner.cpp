@@ -540,6 +540,18 @@ void WaveformDesigner::setAuditionDevice(const QString &name)
     m_devicePicker->setCurrentIndex(std::max(0, m_devicePicker->findData(name)));
 }
 
+WaveformDesigner::PlaySettings WaveformDesigner::playSettings() const
+{
+    return {m_intensity->value() / 100.0, m_endAt->value(), m_hold->isChecked()};
+}
+
+void WaveformDesigner::setPlaySettings(const PlaySettings &settings)
+{
+    m_intensity->setValue(int(std::lround(settings.intensity * 100.0)));
+    m_endAt->setValue(settings.endAt);
+    m_hold->setChecked(settings.hold);
+}
+
 void WaveformDesigner::openLibraryItem()
 {
     QListWidgetItem *item = m_library->currentItem();

@@ -81,6 +81,15 @@ public:
      */
     QString auditionDevice() const { return m_auditionDevice; }
     void setAuditionDevice(const QString &name);
+    /** How the preview and auditions play the pattern: kept through a new window. */
+    struct PlaySettings
+    {
+        double intensity = 1.0; ///< 0..1, what the pattern begins with
+        double endAt = 1.5;     ///< s, when its release starts
+        bool hold = false;      ///< no end: the sustain goes on
+    };
+    PlaySettings playSettings() const;
+    void setPlaySettings(const PlaySettings &settings);
     /**
      * The time the run's readouts are at, read as an audition on a bound device begins: its
      * frames are stamped from there, so the plots draw it on after the run (none: from 0).

@@ -65,6 +65,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -1542,6 +1543,19 @@ void TestStudio::languageSwitchKeepsTheWork()
     const OrbitCamera top = window->viewport()->camera();
     window->findChild<QDockWidget *>("patternsDock")->raise();
     QVERIFY(choose(designer->findChild<QComboBox *>("auditionDevice"), "right.vibro — lra4"));
+    // How the pattern plays: ends at 3 s (typed), at intensity 0.7 (the keys).
+    auto *endAt = designer->findChild<QDoubleSpinBox *>("endAt");
+    endAt->setFocus();
+    endAt->selectAll();
+    QTest::keyClicks(endAt, "3");
+    QTest::keyClick(endAt, Qt::Key_Enter);
+    QCOMPARE(endAt->value(), 3.0);
+    auto *intensity = designer->findChild<QSlider *>("intensity");
+    intensity->setFocus();
+    QTest::keyClick(intensity, Qt::Key_End);
+    for (int k = 0; k < 30; ++k)
+        QTest::keyClick(intensity, Qt::Key_Left);
+    QCOMPARE(intensity->value(), 70);
 
     pickLanguage(studio, "de");
     window = studio.window();
@@ -1574,6 +1588,8 @@ void TestStudio::languageSwitchKeepsTheWork()
     QCOMPARE(window->viewport()->camera().elevation, top.elevation);
     QCOMPARE(window->findChild<QComboBox *>("auditionDevice")->currentData().toString(),
              QString("right.vibro"));
+    QCOMPARE(window->findChild<QDoubleSpinBox *>("endAt")->value(), 3.0);
+    QCOMPARE(window->findChild<QSlider *>("intensity")->value(), 70);
 
     // The address the user added is there at the next start, in the listing.
     Workspace next;
@@ -2110,6 +2126,20 @@ void TestStudio::toolbarsFitAt1280()
                      qPrintable(action->text() + " is not in sight in " + editor->objectName()));
         }
     }
+    // Run and Pause take the same room: what follows on the toolbar stands still (it moved
+    // by 13 px as the run started).
+    auto *speed = window.findChild<QWidget *>("speedPicker");
+    const int x = speed->mapTo(&window, QPoint()).x();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(window.engine().isRunning());
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QCOMPARE(speed->mapTo(&window, QPoint()).x(), x);
+    QTest::keyClick(&window, Qt::Key_F5);
+    QVERIFY(!window.engine().isRunning());
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QCOMPARE(speed->mapTo(&window, QPoint()).x(), x);
 }
 
 void TestStudio::screenshotsOfEveryPanel_data()

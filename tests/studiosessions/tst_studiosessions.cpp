@@ -354,9 +354,15 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
         window.grab().save(qEnvironmentVariable("SEMHAP_REPLAY_SCREENSHOT"));
     }
 
-    // Dragging the scrubber back shows less.
+    // A click on the groove jumps there (it paged 1 s), and a click near its left end
+    // shows less.
     const QPoint start = slider->rect().center();
+    const double span = replay->endTime() - replay->startTime();
+    const auto fraction = [&] { return (replay->time() - replay->startTime()) / span; };
+    QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(slider->width() / 4, start.y()));
+    QVERIFY2(std::abs(fraction() - 0.25) < 0.1, qPrintable(QString::number(fraction())));
     QTest::mouseClick(slider, Qt::LeftButton, {}, QPoint(4, start.y()));
+    QVERIFY2(fraction() < 0.05, qPrintable(QString::number(fraction())));
     QVERIFY(replay->time() < t);
     // ... in the plots too: nothing after the new time, whatever the run left behind.
     QTest::qWait(300);
