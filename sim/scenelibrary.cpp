@@ -188,6 +188,19 @@ MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &opt
                               .arg(nameOrPath, builtinNames().join(QStringLiteral(", ")));
         return nullptr;
     }
+    // Malformed XML is told where and why, as a text editor would; MuJoCo's parser says
+    // only its own error code and line.
+    QXmlStreamReader wellFormed(xml);
+    while (!wellFormed.atEnd())
+        wellFormed.readNext();
+    if (wellFormed.hasError()) {
+        *error = QStringLiteral("%1:%2:%3: %4")
+                     .arg(nameOrPath)
+                     .arg(wellFormed.lineNumber())
+                     .arg(wellFormed.columnNumber() + 1) // Qt counts from 0
+                     .arg(wellFormed.errorString());
+        return nullptr;
+    }
     const int count = options.cubes >= 0 ? options.cubes : declaredCubes(xml);
     const QByteArray file = isPath ? QFile::encodeName(QFileInfo(path).absoluteFilePath())
                                    : QByteArrayLiteral("scene.xml");

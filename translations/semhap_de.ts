@@ -1158,6 +1158,18 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
         <translation>%1 Dateien nach %2 exportiert: measures.csv, trials.csv, answers.csv und %3/report.md</translation>
     </message>
+    <message>
+        <source>Could not load router %1</source>
+        <translation>Router %1 konnte nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Could not load scene %1</source>
+        <translation>Szene %1 konnte nicht geladen werden</translation>
+    </message>
+    <message>
+        <source>Could not load gripper %1 into scene %2</source>
+        <translation>Greifer %1 konnte nicht in Szene %2 geladen werden</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

@@ -1154,6 +1154,18 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Could not load router %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not load scene %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not load gripper %1 into scene %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

@@ -251,13 +251,14 @@ void MainWindow::applyTeleopSettings()
     }
 }
 
-bool MainWindow::openRun(const RunOptions &options)
+bool MainWindow::openRun(const RunOptions &options, const QString &what)
 {
     QString error;
     if (!m_engine.load(options, &error)) {
         const QString &gripper = options.sceneOptions.gripper;
         showError(
-            gripper.isEmpty()
+            !what.isEmpty() ? what
+            : gripper.isEmpty()
                 ? tr("Could not load scene %1 with router %2").arg(options.scene, options.router)
                 : tr("Could not load scene %1 with gripper %2 and router %3")
                       .arg(options.scene, gripper, options.router),
@@ -959,7 +960,7 @@ void MainWindow::switchRouter(const QString &router)
     RunOptions options = m_engine.options();
     options.router = router;
     options.overrides.clear();
-    if (openRun(options) && running)
+    if (openRun(options, tr("Could not load router %1").arg(router)) && running)
         m_engine.run();
 }
 
@@ -1050,10 +1051,15 @@ void MainWindow::pickGripper(const QString &choice)
 void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOptions)
 {
     RunOptions options = m_engine.options();
+    // Name what changed: the scene, or the gripper put into it.
+    const QString what = scene != options.scene
+                             ? tr("Could not load scene %1").arg(scene)
+                             : tr("Could not load gripper %1 into scene %2")
+                                   .arg(sceneOptions.gripper, scene);
     options.scene = scene;
     options.sceneOptions = sceneOptions;
     const bool running = m_engine.isRunning();
-    if (openRun(options) && running)
+    if (openRun(options, what) && running)
         m_engine.run();
 }
 
@@ -1240,12 +1246,14 @@ void MainWindow::updateDevicesStatus()
 void MainWindow::showError(const QString &what, const QString &error)
 {
     statusBar()->showMessage(QStringLiteral("%1: %2").arg(what, error), 15000);
-    // Not modal: a running session keeps going while the message is read.
+    // Not modal: the window goes on taking keys and clicks (and the run its steps) while
+    // the message is read. open() would block the window.
     auto *box =
         new QMessageBox(QMessageBox::Warning, tr("semhap studio"), what, QMessageBox::Ok, this);
     box->setInformativeText(error);
     box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
+    box->setWindowModality(Qt::NonModal);
+    box->show();
 }
 
 bool MainWindow::eventFilter(QObject *watched, QEvent *event)

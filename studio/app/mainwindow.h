@@ -72,8 +72,11 @@ public:
     SessionReplay *replay() { return &m_engine.replay(); }
     ReplayBar *replayBar() const { return m_replayBar; }
 
-    /** Loads a run (scene, router, ...) and shows what went wrong, if anything. */
-    bool openRun(const RunOptions &options);
+    /**
+     * Loads a run (scene, router, ...) and shows what went wrong, if anything, as `what`
+     * (empty: naming the scene, the gripper and the router).
+     */
+    bool openRun(const RunOptions &options, const QString &what = QString());
     /**
      * Opens a recorded session read-only: the run pauses, the replay bar appears and the
      * plots and the event log follow its scrubber. Shows what went wrong, if anything.

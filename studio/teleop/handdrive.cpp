@@ -329,18 +329,19 @@ void HandDrive::startDrive()
     if (m_driving || !m_world)
         return;
     m_driving = true;
-    // Start driving where the hands are now, so nothing jumps.
+    // Start driving where the hands are now, so nothing jumps. A closed grip ramps from the
+    // operator's force to the user's setpoint (the scripted one may squeeze past the break
+    // line): the setpoint is the user's, 30 N until they change it.
     m_hands = m_startSource ? m_startSource() : currentCommands(*m_world);
     for (size_t hand = 0; hand < 2; ++hand) {
         if (!m_hands[hand])
             continue;
         m_closed[hand] = m_hands[hand]->grip > 0;
         m_analogueGrip[hand].reset();
-        if (m_closed[hand])
-            m_setpoint[hand] = std::clamp(m_hands[hand]->grip, GripStep, m_maxGrip[hand]);
         send(Gripper(hand));
     }
     m_clock.start();
+    updateTimer();
     emit driveStarted();
 }
 

@@ -132,8 +132,10 @@ void TestCli::errors_data()
                   "sim/README.md)";
     QTest::newRow("validate broken scene")
         << QStringList{"validate", Data + "/broken-scene.xml"} << 1
-        << Data + "/broken-scene.xml:3: XML parse error 6: Error=XML_ERROR_PARSING_ELEMENT "
-                  "ErrorID=6 (0x6): XMLElement name=bod";
+        << Data + "/broken-scene.xml:4:1: Premature end of document.";
+    QTest::newRow("validate a scene with a tag unclosed")
+        << QStringList{"validate", Data + "/unclosed-scene.xml"} << 1
+        << Data + "/unclosed-scene.xml:4:15: Opening and ending tag mismatch.";
     QTest::newRow("validate a scene stepping by 0.5 s")
         << QStringList{"validate", Data + "/slow-scene.xml"} << 1
         << Data + "/slow-scene.xml:2: timestep 0.5 s is outside 1e-05 to 0.05 s";

@@ -60,6 +60,7 @@ private slots:
     void workspaceHoldsTheWrist();
     void shiftSlowsDown();
     void takingOverStartsWhereTheHandsAre();
+    void takingOverGripsAtTheUsersForce();
     void unmappedKeysAreLeftAlone();
     void shortcutsAreLeftAlone_data();
     void shortcutsAreLeftAlone();
@@ -257,6 +258,26 @@ void TestHandDrive::takingOverStartsWhereTheHandsAre()
     m_handDrive->advance(0.0);
     steps(1);
     QCOMPARE(m_world->target(Gripper::Right).pos, start[1]->target.pos);
+}
+
+void TestHandDrive::takingOverGripsAtTheUsersForce()
+{
+    // The scripted operator squeezed at 83 N, past the 80 N break line: taken over, the grip
+    // ramps to the user's 30 N by itself (it stayed at 83 N, the break warning on, until "-").
+    std::array<std::optional<HandCommand>, 2> start{};
+    start[1] = HandCommand{};
+    start[1]->hand = Gripper::Right;
+    start[1]->target.pos = {0.1, -0.05, 0.2};
+    start[1]->grip = 83.0;
+    m_handDrive->setStartSource([&] { return start; });
+    QVERIFY(m_handDrive->press(Qt::Key_Up));
+    m_handDrive->release(Qt::Key_Up);
+    QVERIFY(m_handDrive->isClosed(Gripper::Right));
+    QCOMPARE(m_handDrive->gripSetpoint(Gripper::Right), HandDrive::DefaultGrip);
+    // Under the break line within 50 ms of the ramp, at the setpoint once it is through.
+    m_handDrive->advance(0.05);
+    QVERIFY(m_handDrive->command(Gripper::Right)->grip < 80.0);
+    QTRY_COMPARE(m_handDrive->command(Gripper::Right)->grip, HandDrive::DefaultGrip);
 }
 
 void TestHandDrive::unmappedKeysAreLeftAlone()

@@ -2854,8 +2854,10 @@ void TestStudio::aSceneThatDoesNotLoadLeavesTheRun()
 
     dialogFolder([&] { openDialog(window, "key:Ctrl+O"); }, file);
     QTRY_VERIFY(window.findChild<QMessageBox *>());
-    QCOMPARE(shownMessage(window),
-             QString("Could not load scene %1 with router C3\n%2").arg(file, error));
+    // The message leaves the window free: nothing modal stands between it and the user.
+    QVERIFY(!QApplication::activeModalWidget());
+    QCOMPARE(window.findChild<QMessageBox *>()->windowModality(), Qt::NonModal);
+    QCOMPARE(shownMessage(window), QString("Could not load scene %1\n%2").arg(file, error));
     QVERIFY2(window.statusBar()->currentMessage().endsWith(error),
              qPrintable(window.statusBar()->currentMessage()));
     QCOMPARE(engine.world(), world);
@@ -2868,6 +2870,14 @@ void TestStudio::aSceneThatDoesNotLoadLeavesTheRun()
     QTRY_VERIFY(engine.simTime() > time);
     QString why;
     QVERIFY2(looksDrawn(window.viewport()->grabFramebuffer(), &why), qPrintable(why));
+
+    // A router file that does not load is named as the router, not as the scene.
+    dialogFolder([&] { openDialog(window, "key:Ctrl+Shift+O"); }, "/etc/passwd");
+    QTRY_VERIFY(window.findChild<QMessageBox *>());
+    QVERIFY(!QApplication::activeModalWidget());
+    QVERIFY2(shownMessage(window).startsWith("Could not load router /etc/passwd\n/etc/passwd"),
+             qPrintable(window.statusBar()->currentMessage()));
+    QCOMPARE(engine.options().router, QString("C3"));
 
     // A scene file that loads takes over, and the run goes on with it, as a picked one does.
     QTemporaryDir dir;
@@ -3013,7 +3023,7 @@ void TestStudio::gripperMenuPicksAnAdapter()
     } else {
         QTRY_VERIFY(window.findChild<QMessageBox *>());
         QCOMPARE(shownMessage(window),
-                 QString("Could not load scene box_and_block with gripper %1 and router C3\n%2")
+                 QString("Could not load gripper %1 into scene box_and_block\n%2")
                      .arg(gripper, error));
         QVERIFY2(window.statusBar()->currentMessage().endsWith(error),
                  qPrintable(window.statusBar()->currentMessage()));
