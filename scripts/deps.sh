@@ -24,6 +24,8 @@ packages=(
     # GUI tests and screenshots without a display; a real window manager (openbox) and the
     # X tools that read windows' frames, for the studio's placement on small screens
     xvfb xauth libgl1-mesa-dri openbox x11-utils
+    # scripts/stress-tests.sh: the timing and kill tests with every core busy
+    stress-ng
     # the desktop package: man pages, metadata checks, .deb dependencies
     help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )

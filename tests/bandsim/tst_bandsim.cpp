@@ -110,9 +110,24 @@ std::vector<double> risesAt(const std::vector<double> &t, const std::vector<doub
     return rises;
 }
 
+/**
+ * The interval between pulses: the least-squares slope of their starts over their index.
+ * Each start weighs in, so one pulse the host sent late (a busy machine) moves it little.
+ */
 double meanInterval(const std::vector<double> &starts)
 {
-    return (starts.back() - starts.front()) / double(starts.size() - 1);
+    const double n = double(starts.size());
+    const double meanIndex = (n - 1.0) / 2.0;
+    double meanStart = 0.0;
+    for (const double t : starts)
+        meanStart += t / n;
+    double covariance = 0.0;
+    double variance = 0.0;
+    for (size_t k = 0; k < starts.size(); ++k) {
+        covariance += (double(k) - meanIndex) * (starts[k] - meanStart);
+        variance += (double(k) - meanIndex) * (double(k) - meanIndex);
+    }
+    return covariance / variance;
 }
 
 /** Each channel's first time at or above `level` after `from`, or -1. */
@@ -304,7 +319,9 @@ void TestBandSim::watchdogZeroesAfterTheHostIsKilled()
         log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("every valve closed %lld ms after the kill", ms);
-    QVERIFY2(ms >= 0 && ms <= 300, qPrintable(QString::number(ms)));
+    // The watchdog's 250 ms and what a busy machine adds to waking three processes; far
+    // below a reconnect's second. The flag says it was the watchdog.
+    QVERIFY2(ms >= 0 && ms <= 2 * BandWatchdogMs, qPrintable(QString::number(ms)));
     QVERIFY(probe(band.uri()).contains("flags: watchdog tripped"));
 }
 
@@ -320,8 +337,8 @@ void TestBandSim::stopAllZeroesAtOnce()
         log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("every valve closed %lld ms after SIGINT", ms);
-    // Far inside the 250 ms watchdog, and the watchdog did not trip: the stop-all did it.
-    QVERIFY2(ms >= 0 && ms <= 50, qPrintable(QString::number(ms)));
+    // Inside the 250 ms watchdog, and the watchdog did not trip: the stop-all did it.
+    QVERIFY2(ms >= 0 && ms < BandWatchdogMs, qPrintable(QString::number(ms)));
     QVERIFY(probe(band.uri()).contains("flags: none"));
 }
 

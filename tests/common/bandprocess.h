@@ -7,6 +7,9 @@
 #include <QString>
 #include <QStringList>
 
+/** The band's watchdog (devices/PROTOCOL.md): the silence after which it zeroes its outputs. */
+constexpr qint64 BandWatchdogMs = 250;
+
 /**
  * A band in software in a child process — `semhap emulate …` or `semhap bandsim …` (the
  * real binary, SEMHAP_CLI_BINARY) — whose first line, the pty or HOST:PORT it serves, has

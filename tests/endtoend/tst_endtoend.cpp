@@ -117,7 +117,9 @@ void TestEndToEnd::watchdogAfterHostKilled()
         log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("setpoints at 0 %lld ms after the kill", ms);
-    QVERIFY2(ms >= 0 && ms <= 300, qPrintable(QString::number(ms)));
+    // The watchdog's 250 ms and what a busy machine adds to waking the band and this test;
+    // far below a reconnect's second.
+    QVERIFY2(ms >= 0 && ms <= 2 * BandWatchdogMs, qPrintable(QString::number(ms)));
 }
 
 void TestEndToEnd::reconnectsAfterEmulatorRestart()
