@@ -1009,14 +1009,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Lesen Sie docs/studio.md in den Quellen von semhap.</translation>
     </message>
     <message>
-        <source>Could not open the manual</source>
-        <translation>Das Handbuch konnte nicht geöffnet werden</translation>
-    </message>
-    <message>
-        <source>No program opens %1.</source>
-        <translation>Kein Programm öffnet %1.</translation>
-    </message>
-    <message>
         <source>Task done
 The pile was finished after %1 s.
 Carry on with the refilled box, or reset (%2) to start over.</source>
@@ -1169,6 +1161,37 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Could not load gripper %1 into scene %2</source>
         <translation>Greifer %1 konnte nicht in Szene %2 geladen werden</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ManualWindow</name>
+    <message>
+        <source>semhap studio manual</source>
+        <translation>Handbuch von semhap studio</translation>
+    </message>
+    <message>
+        <source>Back (Alt+Left)</source>
+        <translation>Zurück (Alt+Links)</translation>
+    </message>
+    <message>
+        <source>Forward (Alt+Right)</source>
+        <translation>Vor (Alt+Rechts)</translation>
+    </message>
+    <message>
+        <source>The studio&apos;s manual</source>
+        <translation>Das Handbuch des Studios</translation>
+    </message>
+    <message>
+        <source>Search the page (Ctrl+F)</source>
+        <translation>Auf der Seite suchen (Strg+F)</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Nicht gefunden</translation>
+    </message>
+    <message>
+        <source>semhap studio manual — %1</source>
+        <translation>Handbuch von semhap studio — %1</translation>
     </message>
 </context>
 <context>

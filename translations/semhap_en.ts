@@ -1008,14 +1008,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Could not open the manual</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No program opens %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Task done
 The pile was finished after %1 s.
 Carry on with the refilled box, or reset (%2) to start over.</source>
@@ -1164,6 +1156,37 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Could not load gripper %1 into scene %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ManualWindow</name>
+    <message>
+        <source>semhap studio manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back (Alt+Left)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forward (Alt+Right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The studio&apos;s manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Search the page (Ctrl+F)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studio manual — %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -10,6 +10,7 @@
 #include "gripperlibrary.h"
 #include "handdrive.h"
 #include "keymapdialog.h"
+#include "manualwindow.h"
 #include "liverigdialog.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
@@ -37,7 +38,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -736,12 +736,20 @@ void MainWindow::addHelpActions(QMenu *help)
 void MainWindow::showManual()
 {
     const QUrl url = Studio::manualUrl();
-    if (url.isEmpty())
+    if (url.isEmpty()) {
         showError(tr("The manual is not installed"),
                   tr("Read docs/studio.md in semhap's sources."));
-    else if (!QDesktopServices::openUrl(url))
-        showError(tr("Could not open the manual"),
-                  tr("No program opens %1.").arg(url.toDisplayString()));
+        return;
+    }
+    // Read here: a desktop without a program for .md files opened nothing.
+    auto *window = findChild<ManualWindow *>();
+    if (!window) {
+        window = new ManualWindow(this, url);
+        window->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    window->show();
+    window->raise();
+    window->activateWindow();
 }
 
 void MainWindow::createStatusBar()

@@ -19,6 +19,7 @@
 #include "keymapdialog.h"
 #include "levelmeter.h"
 #include "mainwindow.h"
+#include "manualwindow.h"
 #include "metricspanel.h"
 #include "nodeinspector.h"
 #include "openwindow.h"
@@ -73,6 +74,8 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
 #include <QTimer>
 #include <QtMath>
 #include <QToolBar>
@@ -2409,15 +2412,79 @@ void TestStudio::keyMapAndManual()
     }
     map->close();
 
+    // F1: the manual, read in the studio (a desktop with no program for .md opened nothing).
     UrlCatcher catcher;
-    QDesktopServices::setUrlHandler("file", &catcher, "open");
+    QDesktopServices::setUrlHandler("https", &catcher, "open");
+    const auto unset = qScopeGuard([] { QDesktopServices::unsetUrlHandler("https"); });
     window.activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(&window));
     QTest::keyClick(&window, Qt::Key_F1);
-    QDesktopServices::unsetUrlHandler("file");
+    ManualWindow *manual = nullptr;
+    QTRY_VERIFY((manual = window.findChild<ManualWindow *>()) && manual->isVisible());
+    QVERIFY(QTest::qWaitForWindowExposed(manual));
+    QTextBrowser *page = manual->browser();
+    const QString file = page->source().toLocalFile();
+    QVERIFY2(file.endsWith("/studio.md") && QFileInfo(file).isFile(), qPrintable(file));
+    QVERIFY(page->toPlainText().contains("Help → Key map"));
+    QVERIFY(!QApplication::activeModalWidget()); // the window stays in reach
+    // The search field finds as it is typed, and Enter goes on to the next match.
+    QTest::keyClick(manual, Qt::Key_F, Qt::ControlModifier);
+    QVERIFY(manual->searchField()->hasFocus());
+    QTest::keyClicks(manual->searchField(), "stop all");
+    QCOMPARE(page->textCursor().selectedText().toLower(), QString("stop all"));
+    const int first = page->textCursor().position();
+    QTest::keyClick(manual->searchField(), Qt::Key_Return);
+    QVERIFY(page->textCursor().position() > first);
+    savePicture(manual, "manual");
+    QTest::keyClicks(manual->searchField(), "zzqx");
+    QCOMPARE(manual->findChild<QLabel *>("manualFound")->text(),
+             QString(de ? "Nicht gefunden" : "Not found"));
+    // A link to another page of the manual, clicked, opens it here; Back returns.
+    const auto clickLink = [&](const QString &ending) {
+        QTextCursor cursor(page->document());
+        for (QTextBlock block = page->document()->begin(); block.isValid();
+             block = block.next()) {
+            for (auto it = block.begin(); !it.atEnd(); ++it) {
+                const QTextFragment fragment = it.fragment();
+                if (fragment.charFormat().isAnchor() &&
+                    fragment.charFormat().anchorHref().endsWith(ending)) {
+                    cursor.setPosition(fragment.position() + 1);
+                    page->setTextCursor(cursor);
+                    page->ensureCursorVisible();
+                    QTest::mouseClick(page->viewport(), Qt::LeftButton, {},
+                                      page->cursorRect(cursor).center());
+                    return true;
+                }
+            }
+        }
+        return false;
+    };
+    QVERIFY(clickLink("studies.md"));
+    QTRY_VERIFY2(page->source().toLocalFile().endsWith("/studies.md"),
+                 qPrintable(page->source().toString()));
+    QVERIFY(page->toPlainText().contains("semhap.study/1"));
+    QTest::mouseClick(manual->findChild<QToolButton *>("manualBack"), Qt::LeftButton);
+    QTRY_VERIFY(page->source().toLocalFile().endsWith("/studio.md"));
+    // A link to a heading of the page scrolls to it.
+    const auto headingShown = [page](const QString &heading) {
+        for (QTextBlock block = page->document()->begin(); block.isValid();
+             block = block.next()) {
+            if (block.blockFormat().headingLevel() == 0 || block.text() != heading)
+                continue;
+            const int y = int(page->document()->documentLayout()->blockBoundingRect(block).y());
+            const int top = page->verticalScrollBar()->value();
+            return y >= top && y < top + page->viewport()->height();
+        }
+        return false;
+    };
+    page->verticalScrollBar()->setValue(0);
+    QVERIFY(!headingShown("Running a study"));
+    QVERIFY(clickLink("#running-a-study"));
+    QTRY_VERIFY(headingShown("Running a study"));
+    // The web goes to the desktop's browser.
+    QVERIFY(clickLink("https://spacenav.sourceforge.net/"));
     QCOMPARE(catcher.urls.size(), 1);
-    const QString manual = catcher.urls.first().toLocalFile();
-    QVERIFY2(manual.endsWith("/studio.md") && QFileInfo(manual).isFile(), qPrintable(manual));
+    manual->close();
 }
 
 void TestStudio::fileDialogsStartWhereTheirKindLives_data()
