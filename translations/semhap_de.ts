@@ -2501,6 +2501,34 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <source>Applied: the run waiting behind the replay uses this router.</source>
         <translation>Angewendet: Der Lauf, der hinter der Wiedergabe wartet, verwendet diesen Router.</translation>
     </message>
+    <message>
+        <source>New router.</source>
+        <translation>Neuer Router.</translation>
+    </message>
+    <message>
+        <source>New router from the preset %1.</source>
+        <translation>Neuer Router aus der Vorlage %1.</translation>
+    </message>
+    <message>
+        <source>%1 — not saved to a file</source>
+        <translation>%1 — nicht in einer Datei gespeichert</translation>
+    </message>
+    <message>
+        <source>%1 — changed since it was saved</source>
+        <translation>%1 — seit dem Speichern geändert</translation>
+    </message>
+    <message>
+        <source>Save or Save as… writes it to a file</source>
+        <translation>Speichern oder Speichern unter… schreibt ihn in eine Datei</translation>
+    </message>
+    <message>
+        <source>%1 — changed from the preset, not saved to a file</source>
+        <translation>%1 — gegenüber der Vorlage geändert, nicht in einer Datei gespeichert</translation>
+    </message>
+    <message>
+        <source>%1 — preset</source>
+        <translation>%1 — Vorlage</translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>

@@ -2495,6 +2495,34 @@ Please tell the experimenter that you are done.</source>
         <source>Applied: the run waiting behind the replay uses this router.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New router.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New router from the preset %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — not saved to a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — changed since it was saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save or Save as… writes it to a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — changed from the preset, not saved to a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — preset</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::RouterScene</name>

@@ -246,6 +246,12 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     for (QScrollBar *bar : {m_view->horizontalScrollBar(), m_view->verticalScrollBar()})
         connect(bar, &QScrollBar::actionTriggered, this, [this] { m_fitted = false; });
 
+    // What is edited, and whether it is saved: the run's router is the toolbar's to name.
+    m_documentLabel = new QLabel(this);
+    m_documentLabel->setObjectName(QStringLiteral("routerDocument"));
+    m_documentLabel->setTextFormat(Qt::PlainText);
+    connect(m_document, &RouterDocument::graphReset, this, &RouterEditor::showDocument);
+    connect(m_undo, &QUndoStack::cleanChanged, this, &RouterEditor::showDocument);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("routerStatus"));
     m_status->setWordWrap(true);
@@ -281,6 +287,7 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     auto *canvasLayout = new QVBoxLayout(canvas);
     canvasLayout->setContentsMargins(0, 0, 0, 0);
     canvasLayout->setSpacing(2);
+    canvasLayout->addWidget(m_documentLabel);
     canvasLayout->addWidget(m_view, 1);
     canvasLayout->addWidget(m_status);
     auto *split = new QSplitter(Qt::Vertical, this);
@@ -370,6 +377,7 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
         // An editor built again over a document shows it as it is, edits and undo kept.
         fitView();
         validate();
+        showDocument();
     } else {
         setGraph(RouterGraph());
     }
@@ -687,6 +695,7 @@ bool RouterEditor::saveFile(const QString &path, bool selfContained, QString *er
 {
     if (!m_document->save(path, selfContained, error))
         return false;
+    showDocument(); // saved under another name, it was clean already
     showStatus(tr("Saved %1").arg(QDir::toNativeSeparators(path)), false);
     return true;
 }
@@ -719,7 +728,32 @@ bool RouterEditor::newFromPreset(const QString &name, QString *error)
         graph.name = tr("untitled");
     }
     setGraph(graph);
+    // The line under the canvas no longer speaks of the file edited before.
+    showStatus(name.isEmpty() ? tr("New router.") : tr("New router from the preset %1.").arg(name),
+               false);
     return true;
+}
+
+void RouterEditor::showDocument()
+{
+    const QString &path = m_document->path();
+    const bool modified = m_document->isModified();
+    QString text;
+    if (path.isEmpty() && RouterPresets::names().contains(graph().name)) {
+        text = modified ? tr("%1 — changed from the preset, not saved to a file")
+                              .arg(graph().name)
+                        : tr("%1 — preset").arg(graph().name);
+    } else if (path.isEmpty()) {
+        const QString name = graph().name.isEmpty() ? tr("untitled") : graph().name;
+        text = tr("%1 — not saved to a file").arg(name);
+    } else if (modified) {
+        text = tr("%1 — changed since it was saved").arg(QFileInfo(path).fileName());
+    } else {
+        text = QFileInfo(path).fileName();
+    }
+    m_documentLabel->setText((modified ? QStringLiteral("* ") : QString()) + text);
+    m_documentLabel->setToolTip(path.isEmpty() ? tr("Save or Save as… writes it to a file")
+                                               : QDir::toNativeSeparators(path));
 }
 
 QStringList RouterEditor::validate()

@@ -170,6 +170,8 @@ private:
     /** The context the source compiles for (a default one without a context function). */
     RouterContext context() const;
     void showStatus(const QString &text, bool warning);
+    /** Names the document above the canvas: its file or name, and whether it is saved. */
+    void showDocument();
     /** Says what Apply did, the run's or the replay's router (`to`), as is true now. */
     enum class Applied
     {
@@ -188,6 +190,7 @@ private:
     QListWidget *m_palette = nullptr;
     QWidget *m_inspector = nullptr;
     QListWidget *m_errorList = nullptr;
+    QLabel *m_documentLabel = nullptr;
     QLabel *m_status = nullptr;
     QCheckBox *m_autoApply = nullptr;
     QUndoStack *m_undo = nullptr; ///< the document's

@@ -21,7 +21,9 @@
 #include "userpatterns.h"
 #include "workspace.h"
 
+#include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QGraphicsView>
@@ -30,11 +32,14 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
 
@@ -149,6 +154,7 @@ private slots:
     void marksValidationErrors();
     void presetsLaidOutInColumns();
     void saveOpenRoundTrip();
+    void namesItsDocument();
     void selfContainedEmbedsUserPatterns();
     void selfContainedKeepsPatternsOfOneName();
     void documentDrivesItsViews();
@@ -428,6 +434,58 @@ void TestRouterEditor::saveOpenRoundTrip()
     QCOMPARE(f.editor.graph().file, dir.filePath("mine.json"));
     QVERIFY(!f.editor.openFile(dir.filePath("missing.json"), &error));
     QVERIFY2(error.contains("missing.json"), qPrintable(error));
+}
+
+void TestRouterEditor::namesItsDocument()
+{
+    // The editor names what it edits and whether it is saved, above the canvas: after
+    // Router → New from preset → C1 the line under the canvas still named the file opened
+    // before, and nothing said the graph was not saved.
+    QTemporaryDir dir;
+    Fixture f;
+    auto *document = f.editor.findChild<QLabel *>("routerDocument");
+    auto *status = f.editor.findChild<QLabel *>("routerStatus");
+    f.editor.setGraph(preset("C2"));
+    QString error;
+    QVERIFY2(f.editor.saveFile(dir.filePath("mine.json"), false, &error), qPrintable(error));
+    QVERIFY2(f.editor.openFile(dir.filePath("mine.json"), &error), qPrintable(error));
+    QCOMPARE(document->text(), QString("mine.json"));
+    QCOMPARE(document->toolTip(), QDir::toNativeSeparators(dir.filePath("mine.json")));
+    // An edit marks it.
+    f.editor.setParam("right.force", "grasp", 25.0);
+    QCOMPARE(document->text(), QString("* mine.json — changed since it was saved"));
+    f.editor.undoStack()->undo();
+    QCOMPARE(document->text(), QString("mine.json"));
+
+    // Router → New from preset → C1, through the menus.
+    auto *bar = f.editor.findChild<QToolBar *>("routerToolBar");
+    auto *button = qobject_cast<QToolButton *>(
+        bar->widgetForAction(f.editor.findChild<QAction *>("routerMenuAction")));
+    QVERIFY(button);
+    QMenu *presets = f.editor.findChild<QMenu *>("presetMenu");
+    QVERIFY(presets);
+    QTimer::singleShot(0, [presets] {
+        QMenu *menu = qobject_cast<QMenu *>(QApplication::activePopupWidget());
+        QVERIFY(menu);
+        menu->setActiveAction(presets->menuAction());
+        QTest::keyClick(menu, Qt::Key_Right); // opens the submenu
+        QTRY_VERIFY(presets->isVisible());
+        for (QAction *action : presets->actions()) {
+            if (action->text() == "C1") {
+                presets->setActiveAction(action);
+                QTest::keyClick(presets, Qt::Key_Return);
+                return;
+            }
+        }
+        QFAIL("no C1 in the preset menu");
+    });
+    QTest::mouseClick(button, Qt::LeftButton);
+    QTRY_COMPARE(f.editor.graph().name, QString("C1"));
+    QCOMPARE(document->text(), QString("C1 — preset"));
+    f.editor.setParam("right.force", "grasp", 25.0);
+    QCOMPARE(document->text(), QString("* C1 — changed from the preset, not saved to a file"));
+    QCOMPARE(status->text(), QString("New router from the preset C1."));
+    QVERIFY(!status->text().contains("mine.json"));
 }
 
 void TestRouterEditor::selfContainedEmbedsUserPatterns()

@@ -1642,6 +1642,9 @@ void TestStudio::workComesBackAfterARestart()
              QJsonValue(25.0));
     QCOMPARE(window->routerEditor()->graph().toJson(), edited);
     QVERIFY(window->routerEditor()->document()->isModified());
+    // ... and says so, beside the toolbar's name of the run's router.
+    QCOMPARE(window->routerEditor()->findChild<QLabel *>("routerDocument")->text(),
+             QString("* C3 — changed from the preset, not saved to a file"));
     QCOMPARE(window->waveformDesigner()->document()->json(), pattern);
     QVERIFY(window->waveformDesigner()->document()->isModified());
     QVERIFY(
