@@ -42,12 +42,15 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <optional>
 
 namespace semhap {
 
 namespace {
 
 constexpr char RouterMime[] = "application/x-semhap-router";
+/** The room a new node is given: most nodes' height with their ports. */
+constexpr double NewNodeHeight = 100.0;
 
 /** The palette: node types that drag onto the canvas as their type name. */
 class NodePalette : public QListWidget
@@ -281,8 +284,10 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     auto *bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_palette);
     bottom->addWidget(m_inspector);
-    bottom->setStretchFactor(0, 2);
+    // The palette's two columns of names; the rest is the inspector's.
+    bottom->setStretchFactor(0, 1);
     bottom->setStretchFactor(1, 3);
+    bottom->setSizes({200, 600});
     auto *canvas = new QWidget(this);
     auto *canvasLayout = new QVBoxLayout(canvas);
     canvasLayout->setContentsMargins(0, 0, 0, 0);
@@ -290,15 +295,17 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     canvasLayout->addWidget(m_documentLabel);
     canvasLayout->addWidget(m_view, 1);
     canvasLayout->addWidget(m_status);
+    // The problems take room from the canvas, never from the palette and the inspector
+    // (the palette reflowed under the mouse as they came and went).
+    m_errorList->setMaximumHeight(5 * m_errorList->fontMetrics().lineSpacing());
+    canvasLayout->addWidget(m_errorList);
     auto *split = new QSplitter(Qt::Vertical, this);
     split->setObjectName(QStringLiteral("routerSplit"));
     split->addWidget(canvas);
-    split->addWidget(m_errorList);
     split->addWidget(bottom);
-    split->setStretchFactor(0, 6);
+    split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
-    split->setStretchFactor(2, 3);
-    split->setSizes({500, 60, 170});
+    split->setSizes({540, 190});
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
@@ -348,19 +355,12 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     connect(m_scene, &RouterScene::nodeDropped, this,
             [this](const QString &type, const QPointF &pos) { addNode(type, pos); });
     connect(m_palette, &QListWidget::itemDoubleClicked, this, [this](QListWidgetItem *item) {
-        // Beside the view's centre, stepping aside from nodes already there.
-        QPointF pos = m_view->mapToScene(m_view->viewport()->rect().center()) -
-                      QPointF(RouterNodeItem::Width / 2, 40);
-        const auto occupied = [this](const QPointF &p) {
-            for (const RouterNode &node : m_scene->graph().nodes) {
-                if ((RouterDocument::nodePos(node) - p).manhattanLength() < 8)
-                    return true;
-            }
-            return false;
-        };
-        while (occupied(pos))
-            pos += QPointF(28, 28);
-        addNode(item->data(Qt::UserRole).toString(), pos);
+        // In free space, as near the view's centre as there is any.
+        const QPointF centre = m_view->mapToScene(m_view->viewport()->rect().center()) -
+                               QPointF(RouterNodeItem::Width / 2, NewNodeHeight / 2);
+        const QString id = addNode(item->data(Qt::UserRole).toString(), freePlace(centre));
+        if (RouterNodeItem *node = m_scene->nodeItem(id))
+            m_view->ensureVisible(node);
     });
     connect(m_errorList, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
         const QString id = item->data(Qt::UserRole).toString();
@@ -396,6 +396,13 @@ void RouterEditor::createPalette()
         item->setIcon(QIcon(swatch));
     }
     m_palette->setToolTip(tr("Drag a node type onto the canvas, or double-click it"));
+    // Two columns of whole names, whatever the height: the splitter keeps it this wide.
+    int widest = 0;
+    for (int row = 0; row < m_palette->count(); ++row)
+        widest = std::max(widest,
+                          m_palette->fontMetrics().horizontalAdvance(m_palette->item(row)->text()));
+    const int entry = widest + m_palette->iconSize().width() + 24; // icon, gaps, spacing
+    m_palette->setMinimumWidth(2 * entry + 2 * m_palette->frameWidth());
 }
 
 QList<QAction *> RouterEditor::createActions()
@@ -488,6 +495,44 @@ void RouterEditor::setGraph(const RouterGraph &graph, const QString &path)
 const RouterGraph &RouterEditor::graph() const
 {
     return m_document->graph();
+}
+
+QPointF RouterEditor::freePlace(const QPointF &preferred) const
+{
+    constexpr double Gap = 16.0;
+    const QSizeF size(RouterNodeItem::Width, NewNodeHeight);
+    QList<QRectF> taken;
+    for (const RouterNode &node : graph().nodes) {
+        if (const RouterNodeItem *item = m_scene->nodeItem(node.id))
+            taken.append(item->sceneBoundingRect().adjusted(-Gap, -Gap, Gap, Gap));
+    }
+    const auto free = [&](const QPointF &at) {
+        const QRectF place(at, size);
+        return std::none_of(taken.begin(), taken.end(),
+                            [&](const QRectF &t) { return t.intersects(place); });
+    };
+    if (free(preferred))
+        return preferred;
+    // The free place nearest to the preferred one on a half-node grid over the view.
+    const QRectF view = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
+    const double stepX = size.width() / 2;
+    const double stepY = size.height() / 2;
+    std::optional<QPointF> best;
+    double nearest = 0.0;
+    for (double y = view.top(); y + size.height() <= view.bottom(); y += stepY) {
+        for (double x = view.left(); x + size.width() <= view.right(); x += stepX) {
+            const QPointF at(x, y);
+            const double distance = QLineF(at, preferred).length();
+            if ((!best || distance < nearest) && free(at)) {
+                best = at;
+                nearest = distance;
+            }
+        }
+    }
+    if (best)
+        return *best;
+    // Nothing free in sight: beside the graph, to its right.
+    return QPointF(m_scene->itemsBoundingRect().right() + 2 * Gap, preferred.y());
 }
 
 QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
@@ -657,10 +702,16 @@ void RouterEditor::fitView()
     }
     m_view->setSceneRect(bounds.united(m_view->sceneRect()));
     m_view->fitInView(bounds, Qt::KeepAspectRatio);
-    // Small graphs stay at their natural size rather than blown up.
-    if (m_view->transform().m11() > 1.0) {
+    // Small graphs stay at their natural size rather than blown up; large ones no smaller
+    // than their words can be read at, from their sources on the left (scroll for the rest).
+    const double scale = m_view->transform().m11();
+    if (scale > 1.0) {
         m_view->resetTransform();
         m_view->centerOn(bounds.center());
+    } else if (scale < MinReadableScale) {
+        m_view->setTransform(QTransform::fromScale(MinReadableScale, MinReadableScale));
+        const double halfWidth = m_view->viewport()->width() / MinReadableScale / 2;
+        m_view->centerOn(bounds.left() + halfWidth, bounds.center().y());
     }
     m_fitting = false;
 }
@@ -937,6 +988,23 @@ void RouterEditor::rebuildInspector()
     const QStringList ids = m_scene->selectedNodeIds();
     const int index = ids.size() == 1 ? graph().nodeIndex(ids.front()) : -1;
     auto *scroll = m_inspector->findChild<QScrollArea *>(QStringLiteral("inspectorScroll"));
+    // The same node edited: the new fields show where the old ones were scrolled to, with
+    // the focus in the field it was in (an edit jumped back to the top).
+    int keptScroll = 0;
+    QString keptFocus;
+    if (index >= 0 && m_inspected == graph().nodes[size_t(index)].id && scroll->widget()) {
+        keptScroll = scroll->verticalScrollBar()->value();
+        if (QWidget *focus = QApplication::focusWidget();
+            focus && scroll->widget()->isAncestorOf(focus)) {
+            for (QWidget *w = focus; w != scroll->widget(); w = w->parentWidget()) {
+                if (w->objectName().startsWith(QLatin1String("param:")) ||
+                    w->objectName() == QLatin1String("nodeId")) {
+                    keptFocus = w->objectName();
+                    break;
+                }
+            }
+        }
+    }
     if (index >= 0) {
         const RouterNode &node = graph().nodes[size_t(index)];
         // Unchanged: keep the fields, and the focus the user is typing in.
@@ -989,6 +1057,14 @@ void RouterEditor::rebuildInspector()
             addField(form, node, it.key(), nullptr); // unknown: shown so it can be cleared
     }
     scroll->setWidget(page);
+    if (keptScroll > 0) {
+        page->adjustSize(); // the scroll range follows the new page at once
+        scroll->verticalScrollBar()->setValue(keptScroll);
+    }
+    if (!keptFocus.isEmpty()) {
+        if (auto *field = page->findChild<QWidget *>(keptFocus))
+            field->setFocus(Qt::OtherFocusReason);
+    }
 }
 
 void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key,

@@ -134,6 +134,8 @@ public:
     RouterDocument *document() const { return m_document; }
     RouterScene *scene() const { return m_scene; }
     QGraphicsView *view() const { return m_view; }
+    /** The smallest zoom Fit goes to: node words at 8–9 px, read without leaning in. */
+    static constexpr double MinReadableScale = 0.7;
     QListWidget *palette() const { return m_palette; }
     QUndoStack *undoStack() const { return m_undo; }
     /** The form of the selected node's parameters. */
@@ -170,6 +172,11 @@ private:
     /** The context the source compiles for (a default one without a context function). */
     RouterContext context() const;
     void showStatus(const QString &text, bool warning);
+    /**
+     * Where a new node goes near `preferred` (its top left) without covering another: there
+     * if it is free, else the nearest free place in the view, else right of the graph.
+     */
+    QPointF freePlace(const QPointF &preferred) const;
     /** Names the document above the canvas: its file or name, and whether it is saved. */
     void showDocument();
     /** Says what Apply did, the run's or the replay's router (`to`), as is true now. */

@@ -33,6 +33,8 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -152,6 +154,7 @@ private slots:
     void undoRedoRestoresTheExactGraph();
     void deleteCopyPaste();
     void marksValidationErrors();
+    void comfortableInALaptopWindow();
     void presetsLaidOutInColumns();
     void saveOpenRoundTrip();
     void namesItsDocument();
@@ -393,6 +396,59 @@ void TestRouterEditor::marksValidationErrors()
     f.type("param:grasp", "20");
     QTRY_VERIFY(force->error().isEmpty());
     QCOMPARE(f.editor.errors().size(), 1);
+}
+
+void TestRouterEditor::comfortableInALaptopWindow()
+{
+    // The room the Router tab has in a 1280×800 window. C3p's words were 6 px high, new
+    // nodes landed on others, the inspector jumped to its top after each edit, and the
+    // palette reflowed under the mouse when the problem list came.
+    Fixture f;
+    f.editor.resize(665, 690);
+    QTest::qWait(50);
+    f.editor.setGraph(preset("C3p"));
+    QVERIFY2(f.editor.view()->transform().m11() >= RouterEditor::MinReadableScale - 1e-9,
+             qPrintable(QString::number(f.editor.view()->transform().m11())));
+
+    // New nodes, double-clicked in the palette, each in free space.
+    f.editor.setGraph(preset("C3"));
+    for (int k = 0; k < 3; ++k) {
+        const QString id = f.addFromPalette("threshold");
+        QVERIFY(!id.isEmpty());
+        const QRectF box = f.editor.scene()->nodeItem(id)->sceneBoundingRect();
+        for (const RouterNode &node : f.editor.graph().nodes) {
+            QVERIFY2(node.id == id ||
+                         !box.intersects(f.editor.scene()->nodeItem(node.id)->sceneBoundingRect()),
+                     qPrintable(id + " lands on " + node.id));
+        }
+    }
+    f.editor.setGraph(preset("C3"));
+
+    // The palette stays where it is when problems show.
+    QListWidget *palette = f.editor.palette();
+    QListWidgetItem *threshold = palette->findItems("threshold", Qt::MatchExactly).front();
+    const QRect before = palette->visualItemRect(threshold);
+    f.select("right.force");
+    f.type("param:grasp", "90");
+    QTRY_VERIFY(f.editor.findChild<QListWidget *>("routerErrors")->isVisible());
+    QTest::qWait(50);
+    QCOMPARE(palette->visualItemRect(threshold), before);
+
+    // The inspector keeps its place: scrolled to the last field, an edit there leaves it
+    // there, with the keyboard still in that field.
+    f.type("param:grasp", "20");
+    auto *scroll = f.editor.inspector()->findChild<QScrollArea *>("inspectorScroll");
+    QVERIFY(scroll->verticalScrollBar()->maximum() > 0); // more fields than room
+    scroll->verticalScrollBar()->setValue(scroll->verticalScrollBar()->maximum());
+    const int kept = scroll->verticalScrollBar()->value();
+    f.type("param:max", "110");
+    QCOMPARE(f.editor.graph().nodes[size_t(f.editor.graph().nodeIndex("right.force"))]
+                 .params.value("max")
+                 .toDouble(),
+             110.0);
+    QCOMPARE(scroll->verticalScrollBar()->value(), kept);
+    QVERIFY(QApplication::focusWidget());
+    QCOMPARE(QApplication::focusWidget()->objectName(), QString("param:max"));
 }
 
 void TestRouterEditor::presetsLaidOutInColumns()
