@@ -1396,6 +1396,210 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>Sponge stiffened at</source>
         <translation>Schwamm versteift bei</translation>
     </message>
+    <message>
+        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
+        <translation>Wann der Stapel zuerst abgearbeitet war: jeder Würfel übertragen oder zerbrochen (box_and_block).</translation>
+    </message>
+    <message>
+        <source>Cubes that arrived where the task wants them, once per trip.</source>
+        <translation>Würfel, die dort ankamen, wo die Aufgabe sie haben will, einmal je Weg.</translation>
+    </message>
+    <message>
+        <source>Cubes that fractured under the fingertips.</source>
+        <translation>Würfel, die unter den Fingerspitzen zerbrachen.</translation>
+    </message>
+    <message>
+        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
+        <translation>Griffe, die endeten, während die Hand noch zugriff, nach einem Anheben: Der Würfel rutschte heraus.</translation>
+    </message>
+    <message>
+        <source>Grasps begun.</source>
+        <translation>Begonnene Griffe.</translation>
+    </message>
+    <message>
+        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
+        <translation>Griffe je übertragenem Würfel: 1 ist ein Griff für jeden.</translation>
+    </message>
+    <message>
+        <source>The mean force of both fingertips over every moment of every grasp.</source>
+        <translation>Die mittlere Kraft beider Fingerspitzen über jeden Moment jedes Griffs.</translation>
+    </message>
+    <message>
+        <source>The mean over grasps of the highest force during each.</source>
+        <translation>Der Mittelwert über die Griffe der jeweils höchsten Kraft.</translation>
+    </message>
+    <message>
+        <source>How long before a break its warning was first felt, on average.</source>
+        <translation>Wie lange vor einem Bruch seine Warnung zuerst gespürt wurde, im Mittel.</translation>
+    </message>
+    <message>
+        <source>The share of breaks a felt warning came before.</source>
+        <translation>Der Anteil der Brüche, denen eine gespürte Warnung vorausging.</translation>
+    </message>
+    <message>
+        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
+        <translation>Der Anteil der Brüche, die mindestens eine Reaktionszeit vorher gewarnt wurden: die Warnungen, auf die ein Mensch handeln konnte.</translation>
+    </message>
+    <message>
+        <source>Times the held container left the left fingertips and fell (bimanual).</source>
+        <translation>Wie oft der gehaltene Behälter die linken Fingerspitzen verließ und fiel (beidhändig).</translation>
+    </message>
+    <message>
+        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
+        <translation>Wie lange vor einem Fall des Behälters seine Warnung zuerst gespürt wurde, im Mittel (beidhändig).</translation>
+    </message>
+    <message>
+        <source>The share of container drops a felt warning came before (bimanual).</source>
+        <translation>Der Anteil der Behälterfälle, denen eine gespürte Warnung vorausging (beidhändig).</translation>
+    </message>
+    <message>
+        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
+        <translation>Der Anteil der Behälterfälle, die mindestens eine Reaktionszeit vorher gewarnt wurden (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
+        <translation>Übertragene Würfel je Behälterzyklus, den ein Fallen oder Abstellen beendet (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
+        <translation>Gespürte Bestätigungen je echtem Griff: 1 ist eine je Griff, mehr ist Flattern, 0 ohne Rückmeldung.</translation>
+    </message>
+    <message>
+        <source>Times the container slid in the left fingertips (bimanual).</source>
+        <translation>Wie oft der Behälter in den linken Fingerspitzen rutschte (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
+        <translation>Gespürte Warnungen an der linken Hand je Rutschen: über 1 kamen Warnungen, denen kein Rutschen entsprach (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Times the cube box was refilled.</source>
+        <translation>Wie oft die Würfelkiste nachgefüllt wurde.</translation>
+    </message>
+    <message>
+        <source>Plugs seated in the port.</source>
+        <translation>In die Buchse gesteckte Stecker.</translation>
+    </message>
+    <message>
+        <source>The mean time from picking a plug up to seating it.</source>
+        <translation>Die mittlere Zeit vom Aufnehmen eines Steckers bis zum Stecken.</translation>
+    </message>
+    <message>
+        <source>Times the plug pushed on the port&apos;s face beside the opening.</source>
+        <translation>Wie oft der Stecker neben der Öffnung auf die Buchse drückte.</translation>
+    </message>
+    <message>
+        <source>The highest force on the port during the run.</source>
+        <translation>Die höchste Kraft auf die Buchse während des Laufs.</translation>
+    </message>
+    <message>
+        <source>Times a plug was lifted from where it was laid out.</source>
+        <translation>Wie oft ein Stecker von seinem Platz angehoben wurde.</translation>
+    </message>
+    <message>
+        <source>Plugs let go of after a pick-up without being seated.</source>
+        <translation>Stecker, die nach dem Aufnehmen losgelassen wurden, ohne zu stecken.</translation>
+    </message>
+    <message>
+        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
+        <translation>Gereinigte Felder, in Tellern gerechnet: über 1, wenn mehr als ein Teller gereinigt wurde.</translation>
+    </message>
+    <message>
+        <source>When every cell of the first plate was first clean.</source>
+        <translation>Wann jedes Feld des ersten Tellers zuerst sauber war.</translation>
+    </message>
+    <message>
+        <source>Times every cell of a plate was clean at once.</source>
+        <translation>Wie oft jedes Feld eines Tellers zugleich sauber war.</translation>
+    </message>
+    <message>
+        <source>Plates broken by pressing above 40 N.</source>
+        <translation>Teller, die durch Drücken über 40 N zerbrachen.</translation>
+    </message>
+    <message>
+        <source>The highest press of the sponge on the plate.</source>
+        <translation>Der stärkste Druck des Schwamms auf den Teller.</translation>
+    </message>
+    <message>
+        <source>The time the press was above the safe 25 N.</source>
+        <translation>Die Zeit, in der der Druck über den sicheren 25 N lag.</translation>
+    </message>
+    <message>
+        <source>The mean press while the sponge pressed on the plate.</source>
+        <translation>Der mittlere Druck, während der Schwamm auf den Teller drückte.</translation>
+    </message>
+    <message>
+        <source>Warnings felt on the wiping hand.</source>
+        <translation>An der wischenden Hand gespürte Warnungen.</translation>
+    </message>
+    <message>
+        <source>When the sponge&apos;s holder stiffened.</source>
+        <translation>Wann die Halterung des Schwamms steif wurde.</translation>
+    </message>
+    <message>
+        <source>Simulated time so far.</source>
+        <translation>Bisher simulierte Zeit.</translation>
+    </message>
+    <message>
+        <source>Real time so far.</source>
+        <translation>Bisher vergangene echte Zeit.</translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second.</source>
+        <translation>Simulierte Sekunden pro echter Sekunde.</translation>
+    </message>
+    <message>
+        <source>The task that runs.</source>
+        <translation>Die laufende Aufgabe.</translation>
+    </message>
+    <message>
+        <source>The router the run was loaded with.</source>
+        <translation>Der Router, mit dem der Lauf geladen wurde.</translation>
+    </message>
+    <message>
+        <source>Who drives the grippers when you do not.</source>
+        <translation>Wer die Greifer steuert, wenn Sie es nicht tun.</translation>
+    </message>
+    <message>
+        <source>The seed of the operator and of a laid-out scene.</source>
+        <translation>Der Startwert des Bedieners und einer ausgelegten Szene.</translation>
+    </message>
+    <message>
+        <source>a count</source>
+        <translation>einer Anzahl</translation>
+    </message>
+    <message>
+        <source>a ratio</source>
+        <translation>einem Verhältnis</translation>
+    </message>
+    <message>
+        <source>times real time</source>
+        <translation>Vielfachen der Echtzeit</translation>
+    </message>
+    <message>
+        <source>seconds of simulated time</source>
+        <translation>Sekunden simulierter Zeit</translation>
+    </message>
+    <message>
+        <source>newtons (N)</source>
+        <translation>Newton (N)</translation>
+    </message>
+    <message>
+        <source>a share, 0 to 100 %</source>
+        <translation>einem Anteil, 0 bis 100 %</translation>
+    </message>
+    <message>
+        <source>%1
+In exports: %2</source>
+        <translation>%1
+In Exporten: %2</translation>
+    </message>
+    <message>
+        <source>%1
+In %2; in exports: %3</source>
+        <translation>%1
+In %2; in Exporten: %3</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

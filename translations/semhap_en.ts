@@ -1392,6 +1392,208 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>Plugs dropped</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes that arrived where the task wants them, once per trip.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes that fractured under the fingertips.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps begun.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean force of both fingertips over every moment of every grasp.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean over grasps of the highest force during each.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How long before a break its warning was first felt, on average.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of breaks a felt warning came before.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the held container left the left fingertips and fell (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of container drops a felt warning came before (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the container slid in the left fingertips (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the cube box was refilled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plugs seated in the port.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean time from picking a plug up to seating it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the plug pushed on the port&apos;s face beside the opening.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The highest force on the port during the run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times a plug was lifted from where it was laid out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plugs let go of after a pick-up without being seated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When every cell of the first plate was first clean.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times every cell of a plate was clean at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plates broken by pressing above 40 N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The highest press of the sponge on the plate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The time the press was above the safe 25 N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean press while the sponge pressed on the plate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt on the wiping hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When the sponge&apos;s holder stiffened.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated time so far.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real time so far.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The task that runs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The router the run was loaded with.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who drives the grippers when you do not.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The seed of the operator and of a laid-out scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a ratio</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>times real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seconds of simulated time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>newtons (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a share, 0 to 100 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+In exports: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+In %2; in exports: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -25,6 +25,11 @@ public:
 
     /** The label shown for a (flattened) metrics key: a translated name, or the key. */
     static QString label(const QString &key);
+    /**
+     * What a metric means, in one sentence, its unit and its key in exports (docs/metrics.md
+     * in short); the key alone for one the studio does not know.
+     */
+    static QString tooltip(const QString &key);
     /** A metric's value as shown: counts as integers, rates to 2 decimals, units added. */
     static QString format(const QString &key, const QJsonValue &value);
 

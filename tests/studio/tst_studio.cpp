@@ -2277,6 +2277,7 @@ void TestStudio::saysWhenTheTaskIsDone()
     // A pile of one cube, which the scripted operator carries over the partition (seed 1,
     // in 5.3 s): the viewport says the task is done and stays saying so while the run goes
     // on, the metrics give the time, and a reset takes the notice away.
+    QFETCH(QString, language);
     StudioOptions o = options();
     o.speed = 8.0;
     o.run.sceneOptions.cubes = 1;
@@ -2290,6 +2291,12 @@ void TestStudio::saysWhenTheTaskIsDone()
     QTRY_VERIFY((time = window.metricsPanel()->findChild<QLabel *>("completion_time")));
     const QString notYet = MetricsPanel::format("completion_time", QJsonValue());
     QCOMPARE(time->text(), notYet);
+    // Hovered, a metric says what it means and its unit, not just its key.
+    const QString tip = time->toolTip();
+    QCOMPARE(tip, MetricsPanel::tooltip("completion_time"));
+    QVERIFY2(tip.size() > 40 && tip.endsWith("completion_time") &&
+                 tip.contains(language == "de" ? "Sekunden" : "seconds"),
+             qPrintable(tip));
     QCOMPARE(window.viewport()->notice(), QString());
     QTest::qWait(300);
     const int greenBefore = pixelsOfColour(window.viewport()->grabFramebuffer(), colors::Ok, 16);
@@ -2319,7 +2326,6 @@ void TestStudio::saysWhenTheTaskIsDone()
     QTRY_VERIFY(window.engine().simTime() > t + 2.0);
     QVERIFY(!window.viewport()->notice().isEmpty());
     window.engine().pause();
-    QFETCH(QString, language);
     studio->setLanguage(language == "en" ? "de" : "en");
     MainWindow &rebuilt = *studio->window();
     QVERIFY(openWindow(rebuilt));
