@@ -12,6 +12,7 @@ The grippers carry 4x4 taxel pads and follow semhap's naming convention (sim/REA
   site home                 where a dropped container respawns (bimanual_sorting)
   body container            the container the left hand holds (bimanual_sorting)
   semhap:task               a <text> naming the task when it is not found by the sites
+  semhap:router             a <text> naming the router preset made for the scene (else C3)
   signal:<hand>:<name>      a <text> declaring a signal of that hand's frames (sim/README.md)
 Run it after changing a dimension; the scenes are data, committed as generated.
 
@@ -311,6 +312,7 @@ def stains():
 def dish_wiping():
     custom = f"""    <numeric name="fragile:plate" data="{PLATE_BREAK}"/>
     <text name="semhap:task" data="dish_wiping"/>
+    <text name="semhap:router" data="wipe"/>
     <text name="signal:right:wrist.fz" data="sensor right.wrist.force z"/>
     <text name="signal:right:wrist.ft" data="sensor right.wrist.force x"/>
     <text name="signal:right:sponge.contact" data="sensor right.sponge.touch"/>"""
@@ -394,6 +396,7 @@ def usb_insertion():
     return HEADER.format(model="usb_insertion", nconmax=200, njmax=800, taxel=TAXEL_R) + f"""
   <custom>
     <text name="semhap:task" data="usb_insertion"/>
+    <text name="semhap:router" data="usb"/>
 {signals}
   </custom>
   <worldbody>

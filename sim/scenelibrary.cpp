@@ -168,6 +168,25 @@ QStringList SceneLibrary::builtinNames()
     return names;
 }
 
+QString SceneLibrary::routerPreset(const QString &nameOrPath)
+{
+    const bool isPath = InputFile::namesFile(nameOrPath, QLatin1String(".xml"));
+    QByteArray xml;
+    QString reason;
+    if (!InputFile::readDocument(isPath ? nameOrPath
+                                        : QStringLiteral(":/semhap/scenes/%1.xml").arg(nameOrPath),
+                                 &xml, &reason))
+        return QString();
+    QXmlStreamReader reader(xml);
+    while (!reader.atEnd()) {
+        if (reader.readNext() == QXmlStreamReader::StartElement &&
+            reader.name() == QLatin1String("text") &&
+            reader.attributes().value(QLatin1String("name")) == QLatin1String("semhap:router"))
+            return reader.attributes().value(QLatin1String("data")).toString();
+    }
+    return QString();
+}
+
 MjModelPtr SceneLibrary::load(const QString &nameOrPath, const SceneOptions &options,
                               const GripperAdapter *gripper, const GripperComposer::Mount &mount,
                               QString *error)

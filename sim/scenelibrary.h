@@ -24,6 +24,12 @@ public:
 
     static QStringList builtinNames();
     /**
+     * The router preset made for a scene: its `<text name="semhap:router" data="PRESET"/>`
+     * (in the scene file itself, not an include); empty when it names none or does not
+     * read.
+     */
+    static QString routerPreset(const QString &nameOrPath);
+    /**
      * Compiles a built-in scene or an MJCF file; null with a one-line `error`,
      * `FILE:LINE: reason` where MuJoCo or the check names a place.
      */

@@ -1162,6 +1162,14 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>Could not load gripper %1 into scene %2</source>
         <translation>Greifer %1 konnte nicht in Szene %2 geladen werden</translation>
     </message>
+    <message>
+        <source>%1 runs with its own router, %2</source>
+        <translation>%1 läuft mit seinem eigenen Router, %2</translation>
+    </message>
+    <message>
+        <source>%1 has a router of its own, %2: pick it under Router</source>
+        <translation>%1 hat einen eigenen Router, %2: wählen Sie ihn unter Router</translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>

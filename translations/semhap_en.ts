@@ -1158,6 +1158,14 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>Could not load gripper %1 into scene %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 runs with its own router, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has a router of its own, %2: pick it under Router</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>

@@ -31,6 +31,7 @@
 #include "waveformdesigner.h"
 #include "windowplacement.h"
 #include "workspace.h"
+#include "scenelibrary.h"
 #include "world.h"
 
 #include <QAction>
@@ -1064,10 +1065,32 @@ void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOption
                              ? tr("Could not load scene %1").arg(scene)
                              : tr("Could not load gripper %1 into scene %2")
                                    .arg(sceneOptions.gripper, scene);
+    // A scene may name the router made for it (dish_wiping's wipe): it comes with the scene
+    // when the router running is the one the scene before came with; one you picked stays.
+    const auto ownRouter = [](const QString &of) {
+        const QString preset = SceneLibrary::routerPreset(of);
+        return preset.isEmpty() ? RunOptions().router : preset;
+    };
+    const bool picked = options.router != ownRouter(options.scene) ||
+                        m_engine.isRunRouterEdited() || m_engine.isLive();
+    const QString own = ownRouter(scene);
+    const bool switched = !picked && own != options.router;
+    if (switched) {
+        options.router = own;
+        options.overrides.clear();
+    }
     options.scene = scene;
     options.sceneOptions = sceneOptions;
     const bool running = m_engine.isRunning();
-    if (openRun(options, what) && running)
+    if (!openRun(options, what))
+        return;
+    const QString name = QFileInfo(scene).completeBaseName();
+    if (switched)
+        statusBar()->showMessage(tr("%1 runs with its own router, %2").arg(name, own), 10000);
+    else if (own != options.router)
+        statusBar()->showMessage(
+            tr("%1 has a router of its own, %2: pick it under Router").arg(name, own), 15000);
+    if (running)
         m_engine.run();
 }
 

@@ -340,6 +340,7 @@ private slots:
     void buildsAnAlignmentConfirmationByMouse();
     void aSceneThatDoesNotLoadLeavesTheRun_data();
     void aSceneThatDoesNotLoadLeavesTheRun();
+    void eachSceneComesWithItsRouter();
     void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults_data();
     void aRunThatDoesNotLoadAtTheStartLeavesTheDefaults();
     void gripperMenuPicksAnAdapter_data();
@@ -2979,6 +2980,50 @@ void TestStudio::aSceneThatDoesNotLoadLeavesTheRun()
     QTRY_COMPARE(engine.options().scene, mine);
     QCOMPARE(scene->currentText(), QString("mine.xml"));
     QVERIFY(engine.isRunning());
+}
+
+// A scene made for its own router comes with it: dish_wiping with wipe (with C3 its
+// plate-holding hand chattered), and back on box_and_block with C3. A router you picked
+// stays, and the status bar says which the scene would take.
+void TestStudio::eachSceneComesWithItsRouter()
+{
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    Engine &engine = window.engine();
+    QComboBox *scene = window.scenePicker();
+    const auto pick = [&](const QString &name) {
+        scene->setFocus();
+        const int index = scene->findData(name);
+        QVERIFY(index >= 0);
+        for (int k = 0; k < 10 && scene->currentIndex() != index; ++k)
+            QTest::keyClick(scene, index > scene->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+        QTRY_COMPARE(engine.options().scene, name);
+    };
+    QCOMPARE(engine.options().router, QString("C3"));
+    pick("dish_wiping");
+    QTRY_COMPARE(engine.options().router, QString("wipe"));
+    QCOMPARE(window.routerPicker()->currentText(), QString("wipe"));
+    QVERIFY(engine.isRunning());
+    QVERIFY2(window.statusBar()->currentMessage().contains("wipe"),
+             qPrintable(window.statusBar()->currentMessage()));
+    pick("usb_insertion");
+    QTRY_COMPARE(engine.options().router, QString("usb"));
+    pick("box_and_block");
+    QTRY_COMPARE(engine.options().router, QString("C3"));
+
+    // C1 picked by hand stays with the next scene.
+    QComboBox *router = window.routerPicker();
+    router->setFocus();
+    const int c1 = router->findText("C1");
+    QVERIFY(c1 >= 0);
+    for (int k = 0; k < 20 && router->currentIndex() != c1; ++k)
+        QTest::keyClick(router, c1 > router->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
+    QTRY_COMPARE(engine.options().router, QString("C1"));
+    pick("dish_wiping");
+    QCOMPARE(engine.options().router, QString("C1"));
+    QVERIFY2(window.statusBar()->currentMessage().contains("router of its own, wipe"),
+             qPrintable(window.statusBar()->currentMessage()));
 }
 
 void TestStudio::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults_data()
