@@ -11,15 +11,18 @@
 #include <QKeyEvent>
 #include <QLocale>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
-#include <QOpenGLExtraFunctions>
-#include <QOpenGLPaintDevice>
+#include <QOpenGLFramebufferObject>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScreen>
+#include <QWindow>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <time.h>
 
 namespace semhap {
 
@@ -152,13 +155,11 @@ QStringList packHints(const QStringList &lines, const QFontMetrics &metrics, int
 } // namespace
 
 SimViewport::SimViewport(QWidget *parent)
-    : QOpenGLWidget(parent), m_resetCamera(new QAction(tr("Reset camera"), this)),
+    : QWidget(parent), m_resetCamera(new QAction(tr("Reset camera"), this)),
       m_showForcesAction(new QAction(tr("Show contact forces"), this))
 {
-    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
-    format.setProfile(QSurfaceFormat::CompatibilityProfile); // MuJoCo's fixed-function GL
-    format.setDepthBufferSize(24);
-    setFormat(format);
+    // Every pixel is the picture's: nothing of the parent to paint under it.
+    setAttribute(Qt::WA_OpaquePaintEvent);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(320, 240);
 
@@ -189,6 +190,7 @@ SimViewport::SimViewport(QWidget *parent)
 
     m_frameTimer.setInterval(FrameMs);
     connect(&m_frameTimer, &QTimer::timeout, this, &SimViewport::frame);
+    m_paceClock.start();
 }
 
 SimViewport::~SimViewport()
@@ -202,8 +204,7 @@ void SimViewport::setScene(const World *world, SceneFeed *feed)
     m_feed = world ? feed : nullptr;
     if (m_feed)
         m_feed->setShowForces(m_showForces);
-    if (isValid()) {
-        makeCurrent();
+    if (isValid() && makeCurrent()) {
         createRenderer();
         doneCurrent();
     }
@@ -428,13 +429,36 @@ void SimViewport::changeCamera(const OrbitCamera &camera)
     emit cameraChanged();
 }
 
-void SimViewport::initializeGL()
+bool SimViewport::isValid() const
 {
-    // A move to another top-level window brings a new context: free MuJoCo's GL resources
-    // while the old one lives, and make them again here.
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &SimViewport::releaseRenderer,
-            Qt::UniqueConnection);
-    createRenderer();
+    return m_context && m_context->isValid();
+}
+
+bool SimViewport::makeCurrent()
+{
+    if (!m_context) {
+        QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+        format.setProfile(QSurfaceFormat::CompatibilityProfile); // MuJoCo's fixed-function GL
+        format.setDepthBufferSize(24);
+        m_surface = std::make_unique<QOffscreenSurface>();
+        m_surface->setFormat(format);
+        m_surface->create();
+        m_context = std::make_unique<QOpenGLContext>();
+        m_context->setFormat(format);
+        if (!m_context->create() || !m_context->makeCurrent(m_surface.get())) {
+            m_context.reset();
+            return false;
+        }
+        createRenderer();
+        return true;
+    }
+    return m_context->makeCurrent(m_surface.get());
+}
+
+void SimViewport::doneCurrent()
+{
+    if (m_context)
+        m_context->doneCurrent();
 }
 
 void SimViewport::createRenderer()
@@ -448,57 +472,61 @@ void SimViewport::createRenderer()
 
 void SimViewport::releaseRenderer()
 {
-    if (!m_renderer)
+    if (!m_context)
         return;
-    makeCurrent();
+    // MuJoCo's GL resources and the framebuffer go while their context is current.
+    m_context->makeCurrent(m_surface.get());
     m_renderer.reset();
-    doneCurrent();
+    m_target.reset();
+    m_context->doneCurrent();
 }
 
-void SimViewport::paintGL()
+void SimViewport::paintEvent(QPaintEvent *)
 {
-    // MuJoCo's drawing is native GL inside the painter's frame: the painter then knows that
-    // every piece of GL state it cached (program, textures, arrays) must be set again.
-    // The painter paints the framebuffer, not the widget: while the window is grabbed
-    // (QWidget::grab, screenshots) a painter on the widget is redirected to the grab's
-    // pixmap, under the framebuffer's picture, and the overlay would be lost.
-    const qreal ratio = devicePixelRatioF();
-    QOpenGLPaintDevice device(size() * ratio);
-    device.setDevicePixelRatio(ratio);
-    QPainter painter(&device);
-    painter.beginNativePainting();
-    QOpenGLExtraFunctions *gl = context()->extraFunctions();
-    // MuJoCo draws fixed-function: no shader program or vertex arrays of the painter's.
-    gl->glUseProgram(0);
-    gl->glBindVertexArray(0);
-    gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
-    gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-    for (GLuint attribute = 0; attribute < 3; ++attribute)
-        gl->glDisableVertexAttribArray(attribute);
-    gl->glActiveTexture(GL_TEXTURE0);
+    // What the frame cost the process: rendering on every thread (software GL renders on
+    // several) and reading the picture back.
+    const double cpu = processCpuSeconds();
+    render();
+    if (m_pacedFrame) {
+        m_pacedFrame = false;
+        m_pace.frameDrawn(m_pacedStart, processCpuSeconds() - cpu);
+    }
+    QPainter painter(this);
+    painter.drawImage(QPointF(0, 0), m_picture);
+}
 
+QImage SimViewport::grabFramebuffer()
+{
+    render();
+    return m_picture;
+}
+
+void SimViewport::render()
+{
+    const qreal ratio = devicePixelRatioF();
+    const QSize pixels(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
     bool drawn = false;
-    if (m_renderer && m_feed) {
-        m_renderer->camera() = m_camera;
-        m_renderer->setMarkers(markers());
-        drawn = m_renderer->render(*m_feed, defaultFramebufferObject(),
-                                   int(std::lround(width() * ratio)),
-                                   int(std::lround(height() * ratio)));
+    if (m_feed && !pixels.isEmpty() && makeCurrent()) {
+        if (m_renderer) {
+            if (!m_target || m_target->size() != pixels)
+                m_target = std::make_unique<QOpenGLFramebufferObject>(pixels);
+            m_renderer->camera() = m_camera;
+            m_renderer->setMarkers(markers());
+            drawn =
+                m_renderer->render(*m_feed, m_target->handle(), pixels.width(), pixels.height());
+            if (drawn)
+                m_picture = m_target->toImage().convertToFormat(QImage::Format_RGB32);
+        }
+        doneCurrent();
     }
     if (drawn) {
         ++m_renderedFrames;
     } else {
-        gl->glClearColor(float(Background.redF()), float(Background.greenF()),
-                         float(Background.blueF()), 1.0f);
-        gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        m_picture = QImage(pixels, QImage::Format_RGB32);
+        m_picture.fill(Background);
     }
-    // What MuJoCo leaves that the painter does not reset: culling, depth, pixel unpacking
-    // (its glyph uploads).
-    gl->glDisable(GL_CULL_FACE);
-    gl->glDisable(GL_DEPTH_TEST);
-    gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    painter.endNativePainting();
+    m_picture.setDevicePixelRatio(ratio);
+    QPainter painter(&m_picture);
     const QRectF notice = m_notice.isEmpty() ? QRectF() : drawNotice(painter);
     drawOverlay(painter, drawn, notice);
 }
@@ -721,25 +749,48 @@ void SimViewport::frame()
 {
     if (!m_feed)
         return;
+    // A minimised or covered window shows nothing: nothing is drawn, nothing asked for.
+    const QWindow *shown = window()->windowHandle();
+    if (window()->isMinimized() || (shown && !shown->isExposed()))
+        return;
     m_feed->request();
-    // Redraw only when the simulation sent something new (a paused run costs nothing).
-    const bool fresh = m_feed->takeLatest();
+    // Redraw only when the simulation sent something new (a paused run costs nothing), and
+    // at the pace the frames' cost allows.
+    m_freshPicture = m_feed->takeLatest() || m_freshPicture;
     if (m_preset == CameraPreset::Follow)
         follow(); // where the hand is in the newest picture
-    if (fresh)
-        update();
+    const double now = double(m_paceClock.nsecsElapsed()) * 1e-9;
+    // A frame asked for and never shown (the window hid meanwhile) is not waited for long.
+    if (m_pacedFrame && now - m_pacedStart > FramePace::LongestInterval)
+        m_pacedFrame = false;
+    if (!m_freshPicture || m_pacedFrame || !m_pace.due(now))
+        return;
+    m_freshPicture = false;
+    m_pacedFrame = true;
+    m_pacedStart = now;
+    m_pacedCpu = processCpuSeconds();
+    update();
+}
+
+double SimViewport::processCpuSeconds()
+{
+    timespec cpu{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
+    return double(cpu.tv_sec) + double(cpu.tv_nsec) * 1e-9;
 }
 
 void SimViewport::showEvent(QShowEvent *event)
 {
-    QOpenGLWidget::showEvent(event);
+    QWidget::showEvent(event);
+    if (screen())
+        m_pace.setDisplayRate(screen()->refreshRate());
     m_frameTimer.start();
 }
 
 void SimViewport::hideEvent(QHideEvent *event)
 {
     m_frameTimer.stop();
-    QOpenGLWidget::hideEvent(event);
+    QWidget::hideEvent(event);
 }
 
 void SimViewport::mousePressEvent(QMouseEvent *event)
@@ -817,7 +868,7 @@ void SimViewport::keyPressEvent(QKeyEvent *event)
         (event->isAutoRepeat() || m_handDrive->press(event->key(), event->modifiers())))
         event->accept();
     else
-        QOpenGLWidget::keyPressEvent(event);
+        QWidget::keyPressEvent(event);
 }
 
 void SimViewport::keyReleaseEvent(QKeyEvent *event)
@@ -825,7 +876,7 @@ void SimViewport::keyReleaseEvent(QKeyEvent *event)
     if (m_handDrive && (event->isAutoRepeat() || m_handDrive->release(event->key())))
         event->accept();
     else
-        QOpenGLWidget::keyReleaseEvent(event);
+        QWidget::keyReleaseEvent(event);
 }
 
 void SimViewport::focusOutEvent(QFocusEvent *event)
@@ -833,7 +884,7 @@ void SimViewport::focusOutEvent(QFocusEvent *event)
     // A key released elsewhere never reaches us: stop, or the hand drifts on.
     if (m_handDrive)
         m_handDrive->releaseAll();
-    QOpenGLWidget::focusOutEvent(event);
+    QWidget::focusOutEvent(event);
 }
 
 bool SimViewport::focusNextPrevChild(bool next)
@@ -841,7 +892,7 @@ bool SimViewport::focusNextPrevChild(bool next)
     // With two hands, Tab switches between them instead of leaving the viewport.
     if (m_handDrive && m_handDrive->hasBothHands())
         return false;
-    return QOpenGLWidget::focusNextPrevChild(next);
+    return QWidget::focusNextPrevChild(next);
 }
 
 } // namespace semhap

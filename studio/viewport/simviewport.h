@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "framepace.h"
 #include "pose.h"
 #include "scenerenderer.h"
 
-#include <QOpenGLWidget>
+#include <QElapsedTimer>
+#include <QImage>
 #include <QPoint>
 #include <QRectF>
 #include <QTimer>
+#include <QWidget>
 
 #include <array>
 #include <memory>
@@ -15,8 +18,18 @@
 #include <vector>
 
 class QAction;
+class QFocusEvent;
+class QHideEvent;
+class QKeyEvent;
 class QLocale;
+class QMouseEvent;
+class QOffscreenSurface;
+class QOpenGLContext;
+class QOpenGLFramebufferObject;
+class QPaintEvent;
 class QPainter;
+class QShowEvent;
+class QWheelEvent;
 
 namespace semhap {
 
@@ -36,12 +49,16 @@ class SceneFeed;
 class World;
 
 /**
- * The simulation as a picture: draws a SceneFeed's newest capture at display rate with
- * MuJoCo's renderer, lets the mouse orbit, pan and zoom the camera, shows who drives the
- * grippers in a small overlay, and forwards drive keys to a HandDrive. It only
- * asks the feed for pictures; the simulation thread captures them.
+ * The simulation as a picture: draws a SceneFeed's newest capture with MuJoCo's renderer,
+ * at most at the display's rate and within a CPU budget (FramePace), lets the mouse orbit,
+ * pan and zoom the camera, shows who drives the grippers in a small overlay, and forwards
+ * drive keys to a HandDrive. It only asks the feed for pictures; the simulation thread
+ * captures them. MuJoCo renders into an offscreen framebuffer of the viewport's own GL
+ * context and the picture is painted as an image: the window stays a plain raster window,
+ * which a QOpenGLWidget would make the GL driver compose whole at every repaint of any
+ * widget (with software GL, most of the studio's CPU).
  */
-class SimViewport : public QOpenGLWidget
+class SimViewport : public QWidget
 {
     Q_OBJECT
 
@@ -117,15 +134,21 @@ public:
     /** What that box said, its heading and lines, one a line (empty: none drawn). */
     QString overlayText() const { return m_overlayText; }
 
+    /** Renders the view now and gives the picture as shown, overlay included. */
+    QImage grabFramebuffer();
+    /** Whether the viewport has a GL context to render with (made when first shown). */
+    bool isValid() const;
+
     /** Frames drawn from a picture so far (tests, a frame-rate readout). */
     quint64 renderedFrames() const { return m_renderedFrames; }
+    /** When frames are drawn: at most at the display's rate, within a CPU budget. */
+    const FramePace &pace() const { return m_pace; }
 
 signals:
     void cameraChanged();
 
 protected:
-    void initializeGL() override;
-    void paintGL() override;
+    void paintEvent(QPaintEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -139,11 +162,18 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
+    /** Makes the GL context and its offscreen surface current, made on first use. */
+    bool makeCurrent();
+    void doneCurrent();
+    /** Renders the scene and the overlay into m_picture. */
+    void render();
     /** Makes a renderer for the scene in the current context (MuJoCo's GL resources). */
     void createRenderer();
     /** Frees MuJoCo's GL resources while their context is still there. */
     void releaseRenderer();
     void frame();
+    /** The CPU time this process has used, all its threads (s). */
+    static double processCpuSeconds();
     void changeCamera(const OrbitCamera &camera);
     /** The corner box (who drives, the keys), placed clear of handAreas() and `notice`. */
     void drawOverlay(QPainter &painter, bool hasPicture, const QRectF &notice);
@@ -177,6 +207,16 @@ private:
     OrbitCamera m_camera;
     OrbitCamera m_home;
     QTimer m_frameTimer;
+    std::unique_ptr<QOpenGLContext> m_context;
+    std::unique_ptr<QOffscreenSurface> m_surface;
+    std::unique_ptr<QOpenGLFramebufferObject> m_target;
+    QImage m_picture; ///< the last frame, overlay included, at the device's pixel ratio
+    FramePace m_pace;
+    QElapsedTimer m_paceClock;
+    bool m_freshPicture = false; ///< a picture came that is not drawn yet
+    bool m_pacedFrame = false;   ///< a frame asked for, not shown yet
+    double m_pacedStart = 0.0;   ///< when it was asked for (m_paceClock s)
+    double m_pacedCpu = 0.0;     ///< the process's CPU time then
     QAction *m_resetCamera;
     QAction *m_showForcesAction;
     std::array<QAction *, CameraPresetCount> m_presetActions{};

@@ -3,6 +3,7 @@
 // scene, the mouse moves the camera, teleoperation keys move the active gripper's target
 // through a DriveOperator. Screenshots are saved beside the test binary to be looked at.
 #include "driveoperator.h"
+#include "framepace.h"
 #include "handdrive.h"
 #include "imagechecks.h"
 #include "scenefeed.h"
@@ -60,6 +61,9 @@ private slots:
     void initTestCase();
     void waitsForThePicture();
     void drawsTheScene();
+    void paceFollowsTheFramesCost_data();
+    void paceFollowsTheFramesCost();
+    void drawsNothingWhileMinimised();
     void survivesAMoveToAnotherWindow();
     void leftDragOrbits();
     void rightDragPans();
@@ -81,6 +85,8 @@ private slots:
 private:
     /** Runs the event loop for `ms`, capturing whenever the viewport asks (the sim thread). */
     void pump(int ms, const SceneOverlay &overlay = {});
+    /** Feeds the viewport until it has drawn a frame after `frames`; false after 10 s. */
+    bool pumpUntilDrawn(quint64 frames);
     QImage grab();
     /** Shows scene `name`, settled for a second, at 1280×800; the scene shown before. */
     std::unique_ptr<Scene> showSettled(const QString &name);
@@ -101,6 +107,15 @@ void TestViewport::pump(int ms, const SceneOverlay &overlay)
             m_scene->feed->capture(*m_scene->world, overlay);
         QTest::qWait(5);
     }
+}
+
+bool TestViewport::pumpUntilDrawn(quint64 frames)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (m_viewport.renderedFrames() <= frames && clock.elapsed() < 10000)
+        pump(20);
+    return m_viewport.renderedFrames() > frames;
 }
 
 QImage TestViewport::grab()
@@ -157,8 +172,7 @@ void TestViewport::waitsForThePicture()
 
 void TestViewport::drawsTheScene()
 {
-    pump(200);
-    QVERIFY(m_viewport.renderedFrames() > 0);
+    QVERIFY(pumpUntilDrawn(0));
     const QImage image = grab();
     QCOMPARE(image.size(), QSize(800, 600));
     QString why;
@@ -166,8 +180,7 @@ void TestViewport::drawsTheScene()
     // Frames keep coming: the painter's overlay does not break MuJoCo's next frame.
     const quint64 before = m_viewport.renderedFrames();
     m_scene->world->step();
-    pump(200);
-    QVERIFY(m_viewport.renderedFrames() > before);
+    QVERIFY(pumpUntilDrawn(before));
     const QImage again = grab();
     QSet<QRgb> colours2;
     for (int y = 0; y < again.height(); y += 4) {
@@ -182,6 +195,66 @@ void TestViewport::drawsTheScene()
     qInfo("%llu frames/s at 800x600", m_viewport.renderedFrames() - start);
 }
 
+void TestViewport::paceFollowsTheFramesCost_data()
+{
+    QTest::addColumn<double>("display"); // Hz
+    QTest::addColumn<double>("cost");    // CPU s a frame
+    QTest::addColumn<double>("interval");
+    // A GPU: the display's rate.
+    QTest::newRow("cheap, 60 Hz") << 60.0 << 0.001 << 1.0 / 60;
+    QTest::newRow("cheap, 144 Hz") << 144.0 << 0.001 << 1.0 / 144;
+    // Software GL: a third of a core at most.
+    QTest::newRow("30 ms") << 60.0 << 0.03 << 0.1;
+    QTest::newRow("60 ms") << 60.0 << 0.06 << 0.2;
+    // However dear, the picture still moves four times a second.
+    QTest::newRow("a second") << 60.0 << 1.0 << FramePace::LongestInterval;
+    // A screen that says no rate counts as 60 Hz.
+    QTest::newRow("no rate") << 0.0 << 0.0 << 1.0 / 60;
+}
+
+void TestViewport::paceFollowsTheFramesCost()
+{
+    QFETCH(double, display);
+    QFETCH(double, cost);
+    QFETCH(double, interval);
+    FramePace pace(display);
+    QVERIFY(pace.due(0.0)); // the first frame at once
+    for (int k = 0; k < 50; ++k)
+        pace.frameDrawn(k, cost); // smoothed: it settles on the cost
+    QVERIFY2(std::abs(pace.interval() - interval) < 1e-6,
+             qPrintable(QString::number(pace.interval())));
+    QVERIFY(!pace.due(49.0 + interval / 2));
+    QVERIFY(pace.due(49.0 + interval));
+}
+
+void TestViewport::drawsNothingWhileMinimised()
+{
+    // Minimised, the window shows nothing: nothing is drawn, nothing asked of the simulation.
+    QWidget window;
+    window.resize(820, 620);
+    m_viewport.setParent(&window);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    m_scene->world->step();
+    QVERIFY(pumpUntilDrawn(m_viewport.renderedFrames()));
+    window.showMinimized();
+    QTRY_VERIFY(window.isMinimized());
+    pump(100); // a frame asked for before goes
+    const quint64 minimised = m_viewport.renderedFrames();
+    for (int k = 0; k < 5; ++k) {
+        m_scene->world->step();
+        pump(100);
+    }
+    QCOMPARE(m_viewport.renderedFrames(), minimised);
+    window.showNormal();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    m_scene->world->step();
+    QVERIFY(pumpUntilDrawn(minimised));
+    m_viewport.setParent(nullptr);
+    m_viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&m_viewport));
+}
+
 void TestViewport::survivesAMoveToAnotherWindow()
 {
     // A floating dock: the viewport gets a new top-level window and a new GL context, and
@@ -192,9 +265,7 @@ void TestViewport::survivesAMoveToAnotherWindow()
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     m_scene->world->step();
-    const quint64 before = m_viewport.renderedFrames();
-    pump(300);
-    QVERIFY(m_viewport.renderedFrames() > before);
+    QVERIFY(pumpUntilDrawn(m_viewport.renderedFrames()));
     QSet<QRgb> colours;
     const QImage image = grab();
     for (int y = 0; y < image.height(); y += 4) {
@@ -210,9 +281,7 @@ void TestViewport::survivesAMoveToAnotherWindow()
     m_viewport.setFocus();
     QVERIFY(QTest::qWaitForWindowActive(&m_viewport));
     m_scene->world->step();
-    const quint64 back = m_viewport.renderedFrames();
-    pump(300);
-    QVERIFY(m_viewport.renderedFrames() > back);
+    QVERIFY(pumpUntilDrawn(m_viewport.renderedFrames()));
 }
 
 void TestViewport::leftDragOrbits()
