@@ -16,3 +16,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/build/tests/bench/bench_study"
 # The studio's plots draw in a virtual display, so the number is the same on any machine.
 xvfb-run -a -s '-screen 0 1920x1200x24' "$root/build/tests/bench/bench_plots"
+# The studio at real time in a virtual display with software GL (no GPU): CPU and memory
+# every minute for SEMHAP_STUDIO_SECONDS (600), at 1280x800 and 1920x1080.
+LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 1920x1200x24' \
+    "$root/build/tests/bench/bench_studio" "${SEMHAP_STUDIO_SECONDS:-600}" 1280x800 1920x1080

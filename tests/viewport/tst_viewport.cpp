@@ -87,6 +87,8 @@ private:
     void pump(int ms, const SceneOverlay &overlay = {});
     /** Feeds the viewport until it has drawn a frame after `frames`; false after 10 s. */
     bool pumpUntilDrawn(quint64 frames);
+    /** Puts the viewport into `window`, shown, and feeds it until it has drawn there. */
+    bool drawnIn(QWidget &window);
     QImage grab();
     /** Shows scene `name`, settled for a second, at 1280×800; the scene shown before. */
     std::unique_ptr<Scene> showSettled(const QString &name);
@@ -116,6 +118,17 @@ bool TestViewport::pumpUntilDrawn(quint64 frames)
     while (m_viewport.renderedFrames() <= frames && clock.elapsed() < 10000)
         pump(20);
     return m_viewport.renderedFrames() > frames;
+}
+
+bool TestViewport::drawnIn(QWidget &window)
+{
+    window.resize(820, 620);
+    m_viewport.setParent(&window);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return false;
+    m_scene->world->step();
+    return pumpUntilDrawn(m_viewport.renderedFrames());
 }
 
 QImage TestViewport::grab()
@@ -231,12 +244,7 @@ void TestViewport::drawsNothingWhileMinimised()
 {
     // Minimised, the window shows nothing: nothing is drawn, nothing asked of the simulation.
     QWidget window;
-    window.resize(820, 620);
-    m_viewport.setParent(&window);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    m_scene->world->step();
-    QVERIFY(pumpUntilDrawn(m_viewport.renderedFrames()));
+    QVERIFY(drawnIn(window));
     window.showMinimized();
     QTRY_VERIFY(window.isMinimized());
     pump(100); // a frame asked for before goes
@@ -260,12 +268,7 @@ void TestViewport::survivesAMoveToAnotherWindow()
     // A floating dock: the viewport gets a new top-level window and a new GL context, and
     // MuJoCo's resources must be made again in it.
     QWidget window;
-    window.resize(820, 620);
-    m_viewport.setParent(&window);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    m_scene->world->step();
-    QVERIFY(pumpUntilDrawn(m_viewport.renderedFrames()));
+    QVERIFY(drawnIn(window));
     QSet<QRgb> colours;
     const QImage image = grab();
     for (int y = 0; y < image.height(); y += 4) {
