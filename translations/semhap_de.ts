@@ -1926,18 +1926,6 @@ In %2; in Exporten: %3</translation>
         <translation>%1 %2 N</translation>
     </message>
     <message>
-        <source>grasp</source>
-        <translation>Griff</translation>
-    </message>
-    <message>
-        <source>break</source>
-        <translation>Bruch</translation>
-    </message>
-    <message>
-        <source>max</source>
-        <translation>max</translation>
-    </message>
-    <message>
         <source>%1: contacts</source>
         <translation>%1: Kontakte</translation>
     </message>
@@ -1954,24 +1942,12 @@ In %2; in Exporten: %3</translation>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>loss</source>
-        <translation>Verlust</translation>
-    </message>
-    <message>
-        <source>min</source>
-        <translation>min</translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>output</source>
         <translation>Ausgabe</translation>
-    </message>
-    <message>
-        <source>slip</source>
-        <translation>Rutschen</translation>
     </message>
     <message>
         <source>t = %1 s</source>

@@ -1920,18 +1920,6 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>grasp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>break</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1: contacts</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1948,23 +1936,11 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>loss</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>min</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>slip</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -491,13 +491,18 @@ void PlotPanel::addGripper(Gripper gripper)
                            tr("right.f (finger)"), Green, 1.0);
     plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 1.0);
     if (thresholds.hasForce) {
+        // Named as the force node's parameters, in every language: the event log and the
+        // router files say `grasp` too.
         const QString format = tr("%1 %2 N");
         addThreshold(plot->forceRect, id + QStringLiteral(".grasp"),
-                     format.arg(tr("grasp"), number(thresholds.grasp)), thresholds.grasp, Blue);
+                     format.arg(QStringLiteral("grasp"), number(thresholds.grasp)),
+                     thresholds.grasp, Blue);
         addThreshold(plot->forceRect, id + QStringLiteral(".break"),
-                     format.arg(tr("break"), number(thresholds.brk)), thresholds.brk, Orange);
+                     format.arg(QStringLiteral("break"), number(thresholds.brk)), thresholds.brk,
+                     Orange);
         addThreshold(plot->forceRect, id + QStringLiteral(".max"),
-                     format.arg(tr("max"), number(thresholds.max)), thresholds.max, Vermillion);
+                     format.arg(QStringLiteral("max"), number(thresholds.max)), thresholds.max,
+                     Vermillion);
         plot->thresholdTop = std::max({thresholds.grasp, thresholds.brk, thresholds.max});
     }
 
@@ -508,9 +513,11 @@ void PlotPanel::addGripper(Gripper gripper)
     if (thresholds.hasSlip) {
         const QString format = tr("%1 %2");
         addThreshold(plot->countRect, id + QStringLiteral(".loss"),
-                     format.arg(tr("loss"), number(thresholds.loss)), thresholds.loss, Vermillion);
+                     format.arg(QStringLiteral("loss"), number(thresholds.loss)), thresholds.loss,
+                     Vermillion);
         addThreshold(plot->countRect, id + QStringLiteral(".min"),
-                     format.arg(tr("min"), number(thresholds.min)), thresholds.min, Purple);
+                     format.arg(QStringLiteral("min"), number(thresholds.min)), thresholds.min,
+                     Purple);
         plot->countTop = std::max(thresholds.loss, thresholds.min);
     }
     plot->next = m_history.frames(gripper).begin();
@@ -700,19 +707,6 @@ void PlotPanel::appendNew()
         m_plot->graph(i)->data()->removeBefore(oldest);
 }
 
-/** The message as the plots label it. */
-static QString messageTitle(Message message)
-{
-    switch (message) {
-    case Message::Grasp:
-        return PlotPanel::tr("grasp");
-    case Message::Break:
-        return PlotPanel::tr("break");
-    case Message::Slip:
-        return PlotPanel::tr("slip");
-    }
-    return QString();
-}
 
 PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span,
                                             const std::vector<QCPAxisRect *> &rects,
@@ -763,7 +757,7 @@ PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span,
         view.beginLines.back()->setLayer(QStringLiteral("spans"));
         view.endLines.back()->setLayer(QStringLiteral("spans"));
     }
-    view.label = addText(m_plot, labelRect, threshold ? span.node : messageTitle(span.message),
+    view.label = addText(m_plot, labelRect, threshold ? span.node : messageName(span.message),
                          Qt::AlignLeft | Qt::AlignTop);
     view.label->setObjectName(id);
     view.label->setColor(color.darker(150));

@@ -2247,6 +2247,16 @@ void TestStudio::screenshotsOfEveryPanel()
         ++drawn;
     }
     QVERIFY2(drawn >= 2, qPrintable(QString("only %1 graph(s) drawn").arg(drawn)));
+    // Messages and levels are named as the log and the router files name them, in every
+    // language (the German plots said "Griff" where the log said "grasp").
+    QStringList texts;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        if (auto *text = qobject_cast<QCPItemText *>(plot->item(i)))
+            texts.append(text->text());
+    }
+    QVERIFY2(texts.contains("grasp") || texts.contains("grasp 20 N"), qPrintable(texts.join("|")));
+    for (const char *translated : {"Griff", "Bruch", "Rutschen"})
+        QVERIFY2(!texts.join("|").contains(translated), qPrintable(texts.join("|")));
 
     // The router fits its view, every node inside it, and shows what the running router
     // passes on: the detector of a hand that holds something is lit.
