@@ -21,6 +21,7 @@
 #include <QSplitter>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QBoxLayout>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -93,8 +94,16 @@ struct DevicesPanel::Row
     QLabel *state = nullptr;
     QLabel *details = nullptr;
     LevelMeter *meter = nullptr;
+    QBoxLayout *layout = nullptr; ///< the controls and the meter: side by side when wide
     QString boundUri; ///< as last read from the manager, so typing is not overwritten
 };
+
+namespace {
+
+/** The rows' width from which a device's meter goes beside its controls, not under them. */
+constexpr int SideBySideWidth = 440;
+
+} // namespace
 
 DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget *parent)
     : QWidget(parent), m_manager(manager), m_history(history), m_present(new QTreeWidget(this)),
@@ -148,6 +157,7 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     // A wheel notch moves one device's row (eventFilter): QScrollArea steps a twentieth of
     // the widget's height when it was set, before any row was there.
     rowsWidget->installEventFilter(this);
+    scroll->viewport()->installEventFilter(this); // its width lays the rows out
     m_rowsScroll = scroll;
     auto *arm = new QPushButton(tr("Arm all"), this);
     arm->setObjectName(QStringLiteral("armAll"));
@@ -216,8 +226,17 @@ void DevicesPanel::showEvent(QShowEvent *event)
     QWidget::showEvent(event);
 }
 
+void DevicesPanel::layOutRows()
+{
+    const bool wide = m_rowsScroll->viewport()->width() >= SideBySideWidth;
+    for (const auto &row : m_rows)
+        row->layout->setDirection(wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+}
+
 bool DevicesPanel::eventFilter(QObject *watched, QEvent *event)
 {
+    if (watched == m_rowsScroll->viewport() && event->type() == QEvent::Resize)
+        layOutRows();
     if (watched == m_rowsScroll->widget() && event->type() == QEvent::Resize &&
         m_rowsLayout->count() > 1) {
         // Laid out already (the layout hears of a resize first).
@@ -337,17 +356,22 @@ void DevicesPanel::rebuildRows()
         bindLine->addWidget(row->disconnect);
         bindLine->addWidget(row->state);
         bindLine->addStretch(1);
-        auto *boxLayout = new QVBoxLayout(box);
+        auto *controls = new QVBoxLayout;
         if (device.idle) {
             // Inside the box, wrapped: a title does not wrap and would widen every row.
             auto *idle = new QLabel(tr("Its hand is not in this scene."), box);
             idle->setWordWrap(true);
-            boxLayout->addWidget(idle);
+            controls->addWidget(idle);
         }
-        boxLayout->addWidget(row->uri);
-        boxLayout->addLayout(bindLine);
-        boxLayout->addWidget(row->details);
-        boxLayout->addWidget(row->meter);
+        controls->addWidget(row->uri);
+        controls->addLayout(bindLine);
+        controls->addWidget(row->details);
+        controls->addStretch(1);
+        // In a wide dock the meter goes beside the controls: a row half as tall, so several
+        // devices show at once (one did, even at 1920×1080).
+        row->layout = new QBoxLayout(QBoxLayout::TopToBottom, box);
+        row->layout->addLayout(controls, 1);
+        row->layout->addWidget(row->meter, 1);
         m_rowsLayout->insertWidget(m_rowsLayout->count() - 1, box);
 
         Row *raw = row.get();
@@ -357,6 +381,7 @@ void DevicesPanel::rebuildRows()
                 [this, raw] { requestBind(*raw, DeviceUri::virtualFor(raw->name)); });
         m_rows.push_back(std::move(row));
     }
+    layOutRows();
     rescan();
     refresh();
     showLevels();

@@ -62,6 +62,8 @@ private:
     struct Row;
 
     void rebuildRows();
+    /** Each device's meter beside its controls in a wide dock, under them in a narrow one. */
+    void layOutRows();
     void addAddress();
     void requestBind(Row &row, const QString &uri);
     void showLevels();

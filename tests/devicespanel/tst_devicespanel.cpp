@@ -97,6 +97,7 @@ private slots:
     void metersShowTheirOwnDevice();
     void wheelScrollsTheRows_data();
     void wheelScrollsTheRows();
+    void aWideDockShowsSeveralDevices();
     void screenshot();
 
 private:
@@ -334,6 +335,42 @@ void TestDevicesPanel::wheelScrollsTheRows()
     QVERIFY2(std::abs(bar->value() - row) < QApplication::wheelScrollLines(),
              qPrintable(QStringLiteral("%1 for %2").arg(bar->value()).arg(row)));
     QCOMPARE(address->currentText(), before);
+}
+
+void TestDevicesPanel::aWideDockShowsSeveralDevices()
+{
+    // The Devices dock under the viewport of a 1920×1080 window: wide and short. Each
+    // device's meter goes beside its controls, so two devices can be bound without
+    // scrolling (only the first one's address box was in sight).
+    RunHistory history;
+    DeviceManager manager;
+    std::vector<RunDevice> devices;
+    for (const char *model : {"pneumatic6", "lra4", "fingertips2"}) {
+        const DeviceModelPtr m = DeviceModelLibrary::builtin(model);
+        devices.push_back({QStringLiteral("right.") + model, m->name(), m->channelNames()});
+    }
+    history.start(devices, {}, {});
+    DevicesPanel panel(manager, history);
+    panel.resize(920, 340);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto *rows = panel.findChild<QScrollArea *>(QStringLiteral("rowsScroll"));
+    const auto inSight = [&](const QString &name) {
+        QWidget *widget = panel.findChild<QWidget *>(name);
+        const QRect at(widget->mapTo(rows->viewport(), QPoint()), widget->size());
+        return rows->viewport()->rect().contains(at);
+    };
+    for (const char *name : {"right.pneumatic6", "right.lra4"}) {
+        QTRY_VERIFY2(inSight(QStringLiteral("uri:") + name), name);
+        QVERIFY2(inSight(QStringLiteral("connect:") + name), name);
+    }
+    // Its meter beside the address, not under it.
+    QVERIFY(panel.findChild<LevelMeter *>("levels:right.lra4")->x() >
+            panel.findChild<QComboBox *>("uri:right.lra4")->x());
+    // Narrow again (the dock beside the plots): the meter under the controls, as before.
+    panel.resize(420, 600);
+    QTRY_VERIFY(panel.findChild<LevelMeter *>("levels:right.lra4")->y() >
+                panel.findChild<QComboBox *>("uri:right.lra4")->y());
 }
 
 /** With SEMHAP_SCREENSHOTS=DIR: the panel of a bimanual run, for docs/screenshots. */
