@@ -92,8 +92,11 @@ int PlayCommand::execute(const QCommandLineParser &parser)
     transport->stopAll();
     const TransportStatus status = transport->status();
     transport->close();
-    // A band answers heartbeats (a round trip); a sound card reports its output time.
+    // A band answers heartbeats (a round trip); a sound card reports its output time. Frames
+    // a busy machine sent too late to matter were replaced by newer ones: said, not hidden.
     QString timing;
+    if (status.framesSkipped > 0)
+        timing += tr(", %1 skipped").arg(status.framesSkipped);
     if (status.roundTripMs >= 0.0)
         timing += tr(", round trip %1 ms").arg(status.roundTripMs, 0, 'f', 2);
     if (status.latencyMs >= 0.0)

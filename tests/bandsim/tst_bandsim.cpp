@@ -395,6 +395,11 @@ void TestBandSim::garbageIsCountedAndSurvived()
     ::close(fd);
     QVERIFY(play.waitForFinished(10000));
     QCOMPARE(play.exitCode(), 0);
+    // A host too busy to send a frame in time sends the newest instead (it says so): a
+    // pulse may go with each frame it skipped, the band's doing none of it.
+    const QRegularExpressionMatch skipping =
+        QRegularExpression(", (\\d+) skipped").match(QString::fromUtf8(play.readAllStandardOutput()));
+    const int skipped = skipping.hasMatch() ? skipping.captured(1).toInt() : 0;
 
     // Every burst counted, by the same rule as the host's, and nothing else lost.
     const int after = garbled(probe(band.uri()));
@@ -407,11 +412,18 @@ void TestBandSim::garbageIsCountedAndSurvived()
     const RenderedPattern rendered = render("vib.geiger", 0.5, qInf(), duration);
     const std::vector<double> sent = risesAt(rendered.t, rendered.values[0]);
     const std::vector<double> driven = pulseStarts(readBandLog(log), 0);
-    QVERIFY2(std::abs(int(driven.size()) - int(sent.size())) <= 1,
-             qPrintable(QString("%1 of %2").arg(driven.size()).arg(sent.size())));
+    QVERIFY2(std::abs(int(driven.size()) - int(sent.size())) <= 1 + skipped,
+             qPrintable(QString("%1 of %2, %3 skipped by the host")
+                            .arg(driven.size())
+                            .arg(sent.size())
+                            .arg(skipped)));
+    int gaps = 0;
     for (size_t k = 1; k < driven.size(); ++k)
-        QVERIFY2(driven[k] - driven[k - 1] < 1.5 * meanInterval(sent),
-                 qPrintable(QString("a pulse missing at %1 s").arg(driven[k - 1])));
+        gaps += driven[k] - driven[k - 1] >= 1.5 * meanInterval(sent) ? 1 : 0;
+    QVERIFY2(gaps <= skipped, qPrintable(QString("%1 pulses missing, %2 frames skipped by the "
+                                                 "host")
+                                             .arg(gaps)
+                                             .arg(skipped)));
 }
 
 void TestBandSim::i2cFollowsTheDatasheet()
