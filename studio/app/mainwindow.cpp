@@ -10,8 +10,8 @@
 #include "gripperlibrary.h"
 #include "handdrive.h"
 #include "keymapdialog.h"
-#include "manualwindow.h"
 #include "liverigdialog.h"
+#include "manualwindow.h"
 #include "metricspanel.h"
 #include "plotpanel.h"
 #include "poseinput.h"
@@ -20,6 +20,7 @@
 #include "routerdocument.h"
 #include "routereditor.h"
 #include "routergraph.h"
+#include "scenelibrary.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
 #include "spacemouseinput.h"
@@ -31,7 +32,6 @@
 #include "waveformdesigner.h"
 #include "windowplacement.h"
 #include "workspace.h"
-#include "scenelibrary.h"
 #include "world.h"
 
 #include <QAction>
@@ -1061,10 +1061,10 @@ void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOption
 {
     RunOptions options = m_engine.options();
     // Name what changed: the scene, or the gripper put into it.
-    const QString what = scene != options.scene
-                             ? tr("Could not load scene %1").arg(scene)
-                             : tr("Could not load gripper %1 into scene %2")
-                                   .arg(sceneOptions.gripper, scene);
+    const QString what =
+        scene != options.scene
+            ? tr("Could not load scene %1").arg(scene)
+            : tr("Could not load gripper %1 into scene %2").arg(sceneOptions.gripper, scene);
     // A scene may name the router made for it (dish_wiping's wipe): it comes with the scene
     // when the router running is the one the scene before came with; one you picked stays.
     const auto ownRouter = [](const QString &of) {
@@ -1339,7 +1339,8 @@ void MainWindow::restoreLayout()
     m_designer->setAuditionDevice(
         settings.value(QStringLiteral("view/auditionDevice")).toString());
     WaveformDesigner::PlaySettings play = m_designer->playSettings();
-    play.intensity = settings.value(QStringLiteral("view/playIntensity"), play.intensity).toDouble();
+    play.intensity =
+        settings.value(QStringLiteral("view/playIntensity"), play.intensity).toDouble();
     play.endAt = settings.value(QStringLiteral("view/playEndAt"), play.endAt).toDouble();
     play.hold = settings.value(QStringLiteral("view/playHold"), play.hold).toBool();
     m_designer->setPlaySettings(play);

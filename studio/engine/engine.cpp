@@ -637,20 +637,18 @@ void Engine::loop()
         }
         wasRunning = running;
 
+        // A run ends in a batch of steps; read under the lock, as setDuration() (a study's
+        // trial, from the GUI thread) changes where it ends.
+        bool done = false;
         if (steps > 0) {
             std::lock_guard<std::mutex> lock(m_setupMutex);
             // A pause or a stop-all ends a running batch at the next step, also one that
             // came while this thread waited for the lock.
             for (long k = 0; k < steps && !run.isDone() && (!running || m_running.load()); ++k)
                 stepOnce();
+            done = run.isDone();
         } else {
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        }
-        bool done = false;
-        {
-            // setDuration() changes it from the GUI thread.
-            std::lock_guard<std::mutex> lock(m_setupMutex);
-            done = run.isDone();
         }
         if (done && m_running.exchange(false)) {
             QMetaObject::invokeMethod(

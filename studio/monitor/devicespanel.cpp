@@ -8,6 +8,7 @@
 #include "runhistory.h"
 
 #include <QApplication>
+#include <QBoxLayout>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -21,7 +22,6 @@
 #include <QSplitter>
 #include <QTimer>
 #include <QTreeWidget>
-#include <QBoxLayout>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -95,7 +95,7 @@ struct DevicesPanel::Row
     QLabel *details = nullptr;
     LevelMeter *meter = nullptr;
     QBoxLayout *layout = nullptr; ///< the controls and the meter: side by side when wide
-    QString boundUri; ///< as last read from the manager, so typing is not overwritten
+    QString boundUri;             ///< as last read from the manager, so typing is not overwritten
 };
 
 namespace {

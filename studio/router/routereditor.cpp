@@ -399,8 +399,8 @@ void RouterEditor::createPalette()
     // Two columns of whole names, whatever the height: the splitter keeps it this wide.
     int widest = 0;
     for (int row = 0; row < m_palette->count(); ++row)
-        widest = std::max(widest,
-                          m_palette->fontMetrics().horizontalAdvance(m_palette->item(row)->text()));
+        widest = std::max(
+            widest, m_palette->fontMetrics().horizontalAdvance(m_palette->item(row)->text()));
     const int entry = widest + m_palette->iconSize().width() + 24; // icon, gaps, spacing
     m_palette->setMinimumWidth(2 * entry + 2 * m_palette->frameWidth());
 }
@@ -791,8 +791,7 @@ void RouterEditor::showDocument()
     const bool modified = m_document->isModified();
     QString text;
     if (path.isEmpty() && RouterPresets::names().contains(graph().name)) {
-        text = modified ? tr("%1 — changed from the preset, not saved to a file")
-                              .arg(graph().name)
+        text = modified ? tr("%1 — changed from the preset, not saved to a file").arg(graph().name)
                         : tr("%1 — preset").arg(graph().name);
     } else if (path.isEmpty()) {
         const QString name = graph().name.isEmpty() ? tr("untitled") : graph().name;

@@ -438,9 +438,10 @@ void StudyPanel::refreshTrial()
             parts.append(tr("at %1× real time").arg(QLocale().toString(m_engine.speed())));
         m_countdownCaption->setText(paused + parts.join(QStringLiteral(" · ")));
     } else {
-        m_nextLabel->setText(!chosen                ? tr("No participant chosen")
-                             : next.kind == Kind::Done ? m_study.describe(next)
-                                                       : tr("Next: %1").arg(m_study.describe(next)));
+        m_nextLabel->setText(!chosen ? tr("No participant chosen")
+                             : next.kind == Kind::Done
+                                 ? m_study.describe(next)
+                                 : tr("Next: %1").arg(m_study.describe(next)));
         if (onBreak) {
             m_countdown->setText(clock(m_study.breakLeft()));
             m_countdownCaption->setText(tr("Break before the next trial"));
@@ -448,8 +449,8 @@ void StudyPanel::refreshTrial()
             m_countdown->setText(next.kind == Kind::Trial ? clock(protocol.trialSeconds)
                                                           : clock(0));
             m_countdownCaption->setText(
-                !chosen                         ? tr("Choose a participant.")
-                : next.kind == Kind::Done       ? tr("This participant has done every step.")
+                !chosen                   ? tr("Choose a participant.")
+                : next.kind == Kind::Done ? tr("This participant has done every step.")
                 : questionnaire
                     ? tr("Questionnaire opens it for the participant, in a window of its own.")
                     : tr("Start when the participant is ready."));

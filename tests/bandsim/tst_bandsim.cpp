@@ -398,7 +398,8 @@ void TestBandSim::garbageIsCountedAndSurvived()
     // A host too busy to send a frame in time sends the newest instead (it says so): a
     // pulse may go with each frame it skipped, the band's doing none of it.
     const QRegularExpressionMatch skipping =
-        QRegularExpression(", (\\d+) skipped").match(QString::fromUtf8(play.readAllStandardOutput()));
+        QRegularExpression(", (\\d+) skipped")
+            .match(QString::fromUtf8(play.readAllStandardOutput()));
     const int skipped = skipping.hasMatch() ? skipping.captured(1).toInt() : 0;
 
     // Every burst counted, by the same rule as the host's, and nothing else lost.

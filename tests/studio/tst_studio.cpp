@@ -2476,8 +2476,7 @@ void TestStudio::keyMapAndManual()
     // A link to another page of the manual, clicked, opens it here; Back returns.
     const auto clickLink = [&](const QString &ending) {
         QTextCursor cursor(page->document());
-        for (QTextBlock block = page->document()->begin(); block.isValid();
-             block = block.next()) {
+        for (QTextBlock block = page->document()->begin(); block.isValid(); block = block.next()) {
             for (auto it = block.begin(); !it.atEnd(); ++it) {
                 const QTextFragment fragment = it.fragment();
                 if (fragment.charFormat().isAnchor() &&
@@ -2501,8 +2500,7 @@ void TestStudio::keyMapAndManual()
     QTRY_VERIFY(page->source().toLocalFile().endsWith("/studio.md"));
     // A link to a heading of the page scrolls to it.
     const auto headingShown = [page](const QString &heading) {
-        for (QTextBlock block = page->document()->begin(); block.isValid();
-             block = block.next()) {
+        for (QTextBlock block = page->document()->begin(); block.isValid(); block = block.next()) {
             if (block.blockFormat().headingLevel() == 0 || block.text() != heading)
                 continue;
             const int y = int(page->document()->documentLayout()->blockBoundingRect(block).y());
@@ -3167,9 +3165,9 @@ void TestStudio::gripperMenuPicksAnAdapter()
         QVERIFY(blueJaws());
     } else {
         QTRY_VERIFY(window.findChild<QMessageBox *>());
-        QCOMPARE(shownMessage(window),
-                 QString("Could not load gripper %1 into scene box_and_block\n%2")
-                     .arg(gripper, error));
+        QCOMPARE(
+            shownMessage(window),
+            QString("Could not load gripper %1 into scene box_and_block\n%2").arg(gripper, error));
         QVERIFY2(window.statusBar()->currentMessage().endsWith(error),
                  qPrintable(window.statusBar()->currentMessage()));
         QCOMPARE(engine.world(), world);
