@@ -92,6 +92,19 @@ void DriveOperator::act(World &world)
     }
 }
 
+void DriveOperator::engage(const World &)
+{
+    // What the last drive left is stale: its command would pull a hand back to where the user
+    // left it, its floor would hold a target at a height the run's operator has since left. The
+    // input's next command (the studio sends where the hands are now) starts afresh.
+    m_current = {};
+    m_glide = {};
+    m_floor = {};
+    m_quiet = {};
+    m_squeezing = {};
+    m_liftedOff = {};
+}
+
 Pose DriveOperator::Glide::at(double t) const
 {
     const double f = span > 0 ? std::clamp((t - start) / span, 0.0, 1.0) : 1.0;

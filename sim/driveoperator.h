@@ -102,6 +102,8 @@ public:
 
     QString name() const override { return QStringLiteral("drive"); }
     void act(World &world) override;
+    /** Forgets the last drive: its glide, guard and grip state, and its last command. */
+    void engage(const World &world) override;
 
     /** Sets where `hand`'s wrist should be. Thread-safe. */
     void setTarget(Gripper hand, const Pose &target);

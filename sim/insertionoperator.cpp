@@ -197,6 +197,27 @@ void InsertionOperator::act(World &world)
     m_hand.apply(world);
 }
 
+void InsertionOperator::engage(const World &world)
+{
+    // The plan and the phase from before the hand-over are stale: resumed, the wrist would jump
+    // to where they left off.
+    m_hand.clear();
+    m_percepts.clear();
+    m_pending = {};
+    m_lostSince = -1.0;
+    const int plug = world.objectIndex(QStringLiteral("plug"));
+    // A plug the user seated is let go of, as after an insertion.
+    const bool held = world.isBetween(Gripper::Right, plug) &&
+                      !InsertionTask::isSeated(depthOf(world), lateralOf(world));
+    if (!held)
+        m_hand.grip(OpenGrip, 0.1);
+    const auto wrist = world.target(Gripper::Right).pos;
+    if (wrist[2] < CarryHeight)
+        m_hand.move({wrist[0], wrist[1], CarryHeight}, 0.8);
+    // Picking ends, once the hand is idle, by looking at the plug in hand and carrying it over.
+    m_phase = held ? Phase::Picking : Phase::Leaving;
+}
+
 void InsertionOperator::planPick(World &world)
 {
     // A plug standing on the table, at rest, not in the port: take it from above, the

@@ -28,6 +28,11 @@ public:
 
     QString name() const override;
     void act(World &world) override;
+    /**
+     * Starts over from where the hand is: it rises clear; a plug in hand is then looked at and
+     * carried to the port, else the hand opens and takes the plug again from the table.
+     */
+    void engage(const World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
 
 private:

@@ -41,6 +41,12 @@ public:
     virtual QString name() const = 0;
     /** Sets the targets and grips for the next physics step. */
     virtual void act(World &world) = 0;
+    /**
+     * Takes the hands over as they are now, after another operator drove them (the studio
+     * user handing back, or taking over): a plan made before is stale, and resuming it would
+     * jump the targets to where it left off. Called before the first act() after a hand-over.
+     */
+    virtual void engage(const World &world) = 0;
     /** What `hand` perceives now (the previous tick's device output); default: ignored. */
     virtual void feel(Gripper hand, const Feeling &feeling, double t);
 };

@@ -43,6 +43,8 @@ constexpr double RelaxTimeConstant = 20.0;
 // 2020).
 constexpr double DriftTimeConstant = 15.0;
 constexpr double DriftShare = 0.35;
+// How fast (m/s, on average) an empty hand rises clear after a hand-over.
+constexpr double RiseSpeed = 0.3;
 // The least a felt slip warning adds to the grip (N), when the grip already matches the load
 // the operator expects.
 constexpr double RegripStep = 5.0;
@@ -205,15 +207,59 @@ void ScriptedOperator::planGrasp(World &world)
     m_right.wait(0.1);
     m_right.grip(force, closing);
     m_right.wait(0.25);
+    planPlace(world, pos, pace);
+}
+
+void ScriptedOperator::planPlace(const World &world, const std::array<double, 3> &from,
+                                 double pace)
+{
     // Carry high enough to clear where it goes (a held container's rim may be higher).
     const auto place = placePoint(world);
     const double carry = std::max(CarryHeight, place[2] + 0.02);
-    m_right.move({pos[0], pos[1], carry}, 0.6 * pace);
+    m_right.move({from[0], from[1], carry}, 0.6 * pace);
     m_right.move({place[0], place[1], carry}, 1.0 * pace);
     m_right.move(place, 0.4 * pace);
     m_right.grip(OpenGrip, 0.15);
     m_right.wait(0.3);
     m_right.move({place[0], place[1], carry}, 0.3 * pace);
+}
+
+void ScriptedOperator::engage(const World &world)
+{
+    // Whatever was planned before the hand-over is stale: resumed, a move begun before it would
+    // jump the target to its end (into the pile, from over box B: 3850 N on the fingertips).
+    m_right.clear();
+    m_left.clear();
+    m_percepts.clear();
+    m_target = -1;
+    m_lastRightGrip = world.grip(Gripper::Right);
+    const auto wrist = world.target(Gripper::Right).pos;
+    const int held = world.objectBetween(Gripper::Right);
+    if (held >= 0 && world.objects()[size_t(held)].name.startsWith(QLatin1String("cube"))) {
+        m_carried = held;
+        planPlace(world, wrist, 1.0);
+    } else {
+        m_right.grip(OpenGrip, 0.1);
+        const double rise = CarryHeight - wrist[2];
+        if (rise > 0)
+            m_right.move({wrist[0], wrist[1], CarryHeight}, std::max(0.3, rise / RiseSpeed));
+    }
+    if (m_task != Task::BimanualSorting)
+        return;
+    const double t = world.time();
+    m_holdStart = t;
+    if (world.isBetween(Gripper::Left, world.objectIndex(QStringLiteral("container")))) {
+        // Held as the user held it: that grip is the one that now drifts.
+        m_hold = Hold::Holding;
+        m_holdPos = world.target(Gripper::Left).pos;
+        m_holdGrip = world.grip(Gripper::Left);
+    } else if (m_hold == Hold::Dropped) {
+        const auto hand = world.target(Gripper::Left).pos;
+        m_left.grip(OpenGrip, 0.15);
+        m_left.move({hand[0], hand[1], std::max(hand[2], 0.3)}, 0.6);
+    } else {
+        m_hold = Hold::Acquire;
+    }
 }
 
 double ScriptedOperator::graspYaw(const World &world, int cube) const

@@ -51,6 +51,12 @@ public:
 
     QString name() const override;
     void act(World &world) override;
+    /**
+     * Starts over from where the hands are: a cube in the picking hand is carried to where it
+     * goes, an empty one opens and rises clear before reaching for the next; a held container
+     * is held there, else taken again.
+     */
+    void engage(const World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
 
 private:
@@ -75,6 +81,9 @@ private:
 
     void planPick(World &world);
     void planGrasp(World &world);
+    /** Carries the cube in the right hand from above `from` (x, y) to where it goes, and lets go.
+     */
+    void planPlace(const World &world, const std::array<double, 3> &from, double pace);
     /** The wrist's yaw to grip `cube` by a pair of its faces, the roomier pair. */
     double graspYaw(const World &world, int cube) const;
     /** The room the fingers have around `cube` gripping at `yaw` (m; negative: none). */

@@ -129,6 +129,9 @@ bool SimRun::step(RunSink &sink)
     if (isDone())
         return false;
     Operator &driver = m_driveOperator ? *m_driveOperator : *m_operator;
+    if (m_acting && m_acting != &driver)
+        driver.engage(*m_world);
+    m_acting = &driver;
     driver.act(*m_world);
     m_world->step();
     // The operator feels what the bands deliver; the caller gets everything.

@@ -89,7 +89,8 @@ public:
 
     /**
      * Drives the grippers with `op` instead of the run's own operator while it is set (the
-     * studio user driving); null gives them back. Not owned.
+     * studio user driving); null gives them back. Not owned. Whichever takes the hands over
+     * at the next step is engaged first (Operator::engage), so no target jumps.
      */
     void setDriveOperator(Operator *op) { m_driveOperator = op; }
     /** What each hand perceives of the device output (the overlay is drawn from it). */
@@ -129,6 +130,8 @@ private:
     std::unique_ptr<Pipeline> m_pipeline;
     std::unique_ptr<Operator> m_operator;
     Operator *m_driveOperator = nullptr;
+    /** The operator that acted at the last step (null before the first). */
+    Operator *m_acting = nullptr;
     std::unique_ptr<Perception> m_perception;
     std::unique_ptr<Task> m_task;
     double m_nextSceneState = 0.0;

@@ -162,6 +162,23 @@ void WipingOperator::act(World &world)
     world.setTarget(Gripper::Right, target);
 }
 
+void WipingOperator::engage(const World &world)
+{
+    // The path and the plate's hold as planned before the hand-over are stale: resumed, the
+    // sponge would jump to where its stroke had got to.
+    m_path.clear();
+    m_segmentStarted = false;
+    m_percepts.clear();
+    m_pos = world.target(Gripper::Right).pos;
+    m_ease = 0.0;
+    m_easeTarget = 0.0;
+    const double face = world.homePosition(m_plate)[2] + world.objects()[size_t(m_plate)].upper[2];
+    m_path.push_back({{m_pos[0], m_pos[1], std::max(m_pos[2], face + WaitAbove + m_reach)}, 0.5});
+    m_left.clear();
+    if (!m_plateOut)
+        m_left.grip(m_holdGrip, 0.5);
+}
+
 void WipingOperator::react(const Percept &percept)
 {
     if (m_path.empty() || !m_path.front().pressing)

@@ -27,6 +27,11 @@ public:
 
     QString name() const override;
     void act(World &world) override;
+    /**
+     * Starts over from where the hands are: the sponge rises clear of the plate and the next
+     * lane is visited afresh; the left hand takes the plate again (unless it broke).
+     */
+    void engage(const World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
 
 private:

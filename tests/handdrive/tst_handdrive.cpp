@@ -606,8 +606,12 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     HandDrive &drive = pile.drive;
     TaskMonitor monitor(*world);
     op.setGrip(Gripper::Right, HandDrive::OpenGrip);
+    double peak = 0.0; // the fingertips' force, from the close on
     auto run = [&](double seconds) {
-        runDrive(*world, op, drive, seconds, 1.0 / 60, [&] { monitor.observe(*world); });
+        runDrive(*world, op, drive, seconds, 1.0 / 60, [&] {
+            monitor.observe(*world);
+            peak = std::max(peak, world->frame(Gripper::Right).totalForce());
+        });
     };
     auto hold = [&](Qt::Key key, double seconds) {
         QVERIFY(drive.press(key));
@@ -618,13 +622,23 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     hold(Qt::Key_F, 2.0);
     drive.toggleGrip();
     run(0.8);
+    const double closed = peak;
+    peak = 0.0;
     hold(Qt::Key_R, 1.2);
     hold(Qt::Key_D, 2.0); // 30 cm along +x: over box B
+    const double carried = peak;
+    peak = 0.0;
     hold(Qt::Key_F, 2.0);
     drive.toggleGrip();
     run(0.5);
+    const double setDown = peak;
     hold(Qt::Key_R, 1.0);
     run(0.5);
+    // The fingertips take what the grip commands, in the close, the carry and the set-down.
+    const double bound = 1.5 * drive.gripSetpoint(Gripper::Right);
+    QVERIFY2(closed <= bound, qPrintable(QString("close: %1 N").arg(closed)));
+    QVERIFY2(carried <= bound, qPrintable(QString("carry: %1 N").arg(carried)));
+    QVERIFY2(setDown <= bound, qPrintable(QString("set-down: %1 N").arg(setDown)));
     const QJsonObject metrics = monitor.metrics();
     QCOMPARE(metrics.value("grasps").toInt(), 1);
     QCOMPARE(metrics.value("cubes_dropped").toInt(), dropped);

@@ -3,6 +3,7 @@
 // the container's slip timing, and the `semhap run` command line.
 #include "clirun.h"
 #include "contactframereader.h"
+#include "driveoperator.h"
 #include "handplan.h"
 #include "simrun.h"
 #include "taskmonitor.h"
@@ -177,6 +178,8 @@ private slots:
     void usbInsertionReportsEveryMetric();
     void compareRunsOnUsbInsertion();
     void usbWarnsOfCollisionsOnlyOverThePort();
+    void handOversBoundTheForce_data();
+    void handOversBoundTheForce();
 };
 
 void TestSimRun::metricsOfKnownEpisodes_data()
@@ -807,3 +810,79 @@ void TestSimRun::usbWarnsOfCollisionsOnlyOverThePort()
 
 QTEST_GUILESS_MAIN(TestSimRun)
 #include "tst_simrun.moc"
+
+void TestSimRun::handOversBoundTheForce_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<double>("takeOver"); // s into the run; the user hands back 3 s later
+    // Box and block, taken over while reaching, going down to a cube, closing, carrying and
+    // after the release; the others while holding and working.
+    for (double t : {1.0, 1.6, 2.4, 3.2, 4.6})
+        QTest::addRow("box_and_block at %.1f s", t) << "box_and_block" << t;
+    for (double t : {2.0, 4.0})
+        QTest::addRow("bimanual_sorting at %.1f s", t) << "bimanual_sorting" << t;
+    QTest::newRow("dish_wiping at 2.4 s") << "dish_wiping" << 2.4;
+    QTest::newRow("usb_insertion at 2.4 s") << "usb_insertion" << 2.4;
+}
+
+void TestSimRun::handOversBoundTheForce()
+{
+    // D3 of issue 33: the user takes over (the drive starts where the hands are), drives
+    // the right hand away at 0.15 m/s (over box B in box_and_block), opens it and hands back.
+    // Each operator then starts from where the hands are. Before, the scripted one resumed
+    // the move it had begun before the take-over and jumped its target to that move's end:
+    // taken over on the way down to a cube and handed back over box B, the fingertips
+    // struck the pile with 3850 N.
+    QFETCH(QString, scene);
+    QFETCH(double, takeOver);
+    RunOptions options;
+    options.scene = scene;
+    options.seed = 1;
+    options.duration = takeOver + 5.0;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    QVERIFY2(run, qPrintable(error));
+    struct Peak : RunSink
+    {
+        double force = 0.0;
+        double at = 0.0;
+        void onContactFrame(const ContactFrame &frame) override
+        {
+            const double f = std::max(frame.left.f, frame.right.f);
+            if (f > force) {
+                force = f;
+                at = frame.t;
+            }
+        }
+    } before, taken, back;
+    while (run->time() < takeOver && run->step(before)) {
+    }
+    DriveOperator drive;
+    World &world = run->world();
+    HandCommand command = *currentCommands(world)[size_t(Gripper::Right)];
+    drive.setCommand(command);
+    run->setDriveOperator(&drive);
+    const auto &from = command.target.pos;
+    const std::array<double, 3> away =
+        scene == "box_and_block" ? std::array<double, 3>{0.15, 0.0, std::max(0.25, from[2])}
+                                 : std::array<double, 3>{from[0] + 0.05, from[1], from[2] + 0.08};
+    const double step = 0.15 / 60; // the studio's input at 60 Hz
+    int steps = 0;
+    while (run->time() < takeOver + 3.0 && run->step(taken)) {
+        if (++steps % 8)
+            continue;
+        for (size_t i = 0; i < 3; ++i)
+            command.target.pos[i] += std::clamp(away[i] - command.target.pos[i], -step, step);
+        if (command.target.pos == away)
+            command.grip = -20.0; // open, as the studio opens
+        drive.setCommand(command);
+    }
+    run->setDriveOperator(nullptr);
+    while (run->step(back)) {
+    }
+    // The forces a grip makes, never a strike: the scripted grips average 60 N (both fingers).
+    const double bound = 100.0;
+    for (const Peak *peak : {&before, &taken, &back})
+        QVERIFY2(peak->force < bound,
+                 qPrintable(QString("%1 N at %2 s").arg(peak->force).arg(peak->at)));
+}

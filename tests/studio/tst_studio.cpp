@@ -308,6 +308,8 @@ private slots:
     void drivingOverlayShowsTheAppliedGrip_data();
     void drivingOverlayShowsTheAppliedGrip();
     void drivingPreferencesApply();
+    void handingBackNeverStrikes_data();
+    void handingBackNeverStrikes();
     void eventLogMovesThePlotCursor();
     void layoutIsSavedAndRestored();
     void switchesToGerman();
@@ -1191,6 +1193,61 @@ void TestStudio::drivingOverlayShowsTheAppliedGrip()
     const QString held = gripLine();
     QVERIFY2(held.count(asked) == 1 && !held.contains(newtons(approach)), qPrintable(held));
     savePicture(&window, "driving-holding");
+}
+
+void TestStudio::handingBackNeverStrikes_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("1280x800") << QSize(1280, 800) << "en";
+}
+
+void TestStudio::handingBackNeverStrikes()
+{
+    // Issue 33, D3: taken over on the way down to a cube, driven over box B and handed back,
+    // the scripted operator resumed the move it had begun and jumped its target back to the
+    // cube: the fingertips struck the pile with about 2000 N, counted as a grasp. It starts
+    // from where the hand is now.
+    const std::unique_ptr<Studio> studio = startStudio(options());
+    MainWindow &window = *studio->window();
+    SimViewport *viewport = window.viewport();
+    auto *drive = window.findChild<HandDrive *>();
+    Engine &engine = window.engine();
+    QTRY_VERIFY_WITH_TIMEOUT(engine.simTime() > 1.6, 20000); // going down to the first cube
+    viewport->setFocus();
+    QTest::keyClick(viewport, Qt::Key_T, Qt::ControlModifier);
+    QVERIFY(engine.isDriving());
+    const double takenAt = engine.simTime();
+    const QString up = driveTo(viewport, drive, 2, 0.25);
+    QVERIFY2(up.isEmpty(), qPrintable(up));
+    const QString over = driveTo(viewport, drive, 0, 0.15);
+    QVERIFY2(over.isEmpty(), qPrintable(over));
+    if (drive->command(Gripper::Right)->grip > 0)
+        QTest::keyClick(viewport, Qt::Key_Space);
+    QTest::keyClick(viewport, Qt::Key_T, Qt::ControlModifier);
+    QVERIFY(!engine.isDriving());
+    const double backAt = engine.simTime();
+    QTRY_VERIFY_WITH_TIMEOUT(engine.simTime() > backAt + 3.0, 20000);
+    engine.pause();
+    const RunSeries<ContactFrame> &frames = engine.history().frames(Gripper::Right);
+    double peak = 0.0;
+    double peakAt = 0.0;
+    for (qint64 i = frames.begin(); i < frames.end(); ++i) {
+        const ContactFrame &frame = frames.at(i);
+        const double force = std::max(frame.left.f, frame.right.f);
+        if (frame.t >= takenAt && force > peak) {
+            peak = force;
+            peakAt = frame.t;
+        }
+    }
+    QVERIFY(frames.at(frames.begin()).t < takenAt);
+    // What a grip makes, never a strike: the scripted grips average 60 N (both fingers).
+    QVERIFY2(peak < 100.0, qPrintable(QString("%1 N at %2 s (taken over at %3 s, handed back at "
+                                              "%4 s)")
+                                          .arg(peak)
+                                          .arg(peakAt)
+                                          .arg(takenAt)
+                                          .arg(backAt)));
 }
 
 void TestStudio::drivingPreferencesApply()
