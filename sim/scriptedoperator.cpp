@@ -234,7 +234,7 @@ void ScriptedOperator::engage(const World &world)
     m_target = -1;
     m_lastRightGrip = world.grip(Gripper::Right);
     const auto wrist = world.target(Gripper::Right).pos;
-    const int held = world.objectBetween(Gripper::Right);
+    const int held = world.objectSqueezed(Gripper::Right);
     if (held >= 0 && world.objects()[size_t(held)].name.startsWith(QLatin1String("cube"))) {
         m_carried = held;
         planPlace(world, wrist, 1.0);

@@ -126,8 +126,9 @@ void TaskMonitor::observeGrasp(World &world)
     if (!world.hasGripper(Gripper::Right))
         return;
     const ContactFrame &frame = world.frame(Gripper::Right);
-    // Held: an object both fingertips touch, whatever else they touch harder (the table, the
-    // cube beside it: which one a fingertip presses most flickers), the one already held first.
+    // Held: an object both fingertips squeeze, whatever else they touch harder (the table, the
+    // cube beside it: which one a fingertip presses most flickers), the one already held first;
+    // not one the closed fingertips rest on. Once held, touching it with both is enough.
     // A grasp ends only once the object has been out of both fingertips for a moment: an
     // object shifting in the grip loses a fingertip for a step or two (also while another
     // object is between them).
@@ -138,7 +139,7 @@ void TaskMonitor::observeGrasp(World &world)
     } else if (m_grasped >= 0 && ++m_lostSteps < GraspLostSteps) {
         held = m_grasped;
     } else {
-        held = world.objectBetween(Gripper::Right);
+        held = world.objectSqueezed(Gripper::Right);
         m_lostSteps = 0;
     }
     if (held == m_container)

@@ -25,6 +25,11 @@ constexpr int FractureSteps = 3;
 constexpr double ParkingDepth = -2.0;
 // Distinct bodies one fingertip is tracked touching at once; more are not told apart.
 constexpr int MaxTouched = 8;
+// The least share of a pad's force from an object that must push it open for the object to be
+// between the pads (cos 60 degrees). A held cube's weight, borne by the pads' friction, tilts
+// that force from the closing axis, by less than 60 degrees while each pad presses with more
+// than 0.29 times the weight: any grip that holds it with a friction coefficient up to 1.7.
+constexpr double SqueezeShare = 0.5;
 // Steps a fingertip's force is held while its force contacts drop out but it still touches.
 constexpr int MaxForceHoldSteps = 2;
 // Resting objects sleep (sim/README.md, "Sleeping objects"): still for this many steps in a
@@ -139,6 +144,7 @@ struct World::Private
         int actor = -1;
         double force = 0.0;
         int contacts = 0;
+        std::array<double, 3> fworld{}; ///< the resultant force on the tip, world frame
     };
     struct Tip
     {
@@ -229,6 +235,11 @@ struct World::Private
     void fracture(World &world, size_t i, double t, double force);
     /** Whether a fingertip of `gripper` touched `object` at the last step. */
     bool touches(const World &world, Gripper gripper, int object) const;
+    /**
+     * Whether `touch` pushes `finger` (0 left, 1 right) of `gripper` open, as an object
+     * between the pads does: mostly across the jaws (SqueezeShare).
+     */
+    bool pushesApart(const World &world, Gripper gripper, int finger, const Touch &touch) const;
     /** The box around a geom and its margin, as placed at the last step's start. */
     Aabb geomBox(int geom) const;
     /**
@@ -559,7 +570,7 @@ void World::Private::extract(World &world, double t)
         }
         if (!touch && tip.touchedCount < MaxTouched) {
             touch = &tip.touched[size_t(tip.touchedCount++)];
-            *touch = Touch{actor, 0.0, 0};
+            *touch = Touch{actor, 0.0, 0, {}};
         }
         // A taxel counts once however many contact points it has. Contacts inside the
         // geoms' gap (efc_address < 0) count too: they keep n steady while an object slides.
@@ -584,8 +595,12 @@ void World::Private::extract(World &world, double t)
         // geom2 along them, so on geom1 it is the opposite.
         const double sign = tipIsFirst ? -1.0 : 1.0;
         for (int axis = 0; axis < 3; ++axis) {
-            for (int k = 0; k < 3; ++k)
-                tip.fworld[size_t(k)] += sign * local[axis] * contact.frame[3 * axis + k];
+            for (int k = 0; k < 3; ++k) {
+                const double component = sign * local[axis] * contact.frame[3 * axis + k];
+                tip.fworld[size_t(k)] += component;
+                if (touch)
+                    touch->fworld[size_t(k)] += component;
+            }
         }
     }
 
@@ -1127,7 +1142,33 @@ std::optional<double> World::clearanceBelow(Gripper gripper) const
     return clearance;
 }
 
+bool World::Private::pushesApart(const World &world, Gripper gripper, int finger,
+                                 const Touch &touch) const
+{
+    // The fingers close along the gripper frame's y axis, the left one towards -y: what is
+    // between them pushes the left pad towards +y and the right one towards -y. Resting on
+    // top of something (the closed fingertips lowered onto a cube) pushes both up instead.
+    const double magnitude = std::hypot(touch.fworld[0], touch.fworld[1], touch.fworld[2]);
+    if (magnitude < Fingertip::MinNormalForce)
+        return false; // touching without force (inside the contact margin, or a dropout)
+    const mjtNum *rotation = world.d->data->xmat + 9 * hands[size_t(gripper)].body;
+    double across = 0.0;
+    for (size_t k = 0; k < 3; ++k)
+        across += rotation[3 * k + 1] * touch.fworld[k];
+    return (finger == 0 ? across : -across) >= SqueezeShare * magnitude;
+}
+
 int World::objectBetween(Gripper gripper) const
+{
+    return hardestTouched(gripper, false);
+}
+
+int World::objectSqueezed(Gripper gripper) const
+{
+    return hardestTouched(gripper, true);
+}
+
+int World::hardestTouched(Gripper gripper, bool squeezed) const
 {
     const Private::Tip &left = d->tips[size_t(int(gripper) * 2)];
     const Private::Tip &right = d->tips[size_t(int(gripper) * 2 + 1)];
@@ -1137,7 +1178,9 @@ int World::objectBetween(Gripper gripper) const
         for (int j = 0; j < right.touchedCount; ++j) {
             const Private::Touch &a = left.touched[size_t(i)];
             const Private::Touch &b = right.touched[size_t(j)];
-            if (a.actor >= 0 && a.actor == b.actor && a.force + b.force > hardest) {
+            if (a.actor >= 0 && a.actor == b.actor && a.force + b.force > hardest &&
+                (!squeezed ||
+                 (d->pushesApart(*this, gripper, 0, a) && d->pushesApart(*this, gripper, 1, b)))) {
                 hardest = a.force + b.force;
                 actor = a.actor;
             }

@@ -151,9 +151,14 @@ public:
 
     /**
      * The object both fingertips of `gripper` touched at the last step (the one they pressed
-     * hardest, if several), or -1: what the fingers hold or are closing on.
+     * hardest, if several), or -1: what the fingers are closing on, or rest on.
      */
     int objectBetween(Gripper gripper) const;
+    /**
+     * As objectBetween(), but only an object that pushes both pads open: what the fingers
+     * hold. Closed fingertips resting on top of a cube touch it, but do not hold it.
+     */
+    int objectSqueezed(Gripper gripper) const;
     /** Whether both fingertips of `gripper` touched `object` at the last step. */
     bool isBetween(Gripper gripper, int object) const;
 
@@ -233,6 +238,9 @@ public:
 
 private:
     World();
+    /** The object both fingertips touched hardest; with `squeezed`, only one pushing them open. */
+    int hardestTouched(Gripper gripper, bool squeezed) const;
+
     struct Private;
     std::unique_ptr<Private> d;
 

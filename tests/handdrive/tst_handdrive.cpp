@@ -76,6 +76,8 @@ private slots:
     void drivenGraspStaysNearTheCommand();
     void drivenTransferCountsOneGrasp_data();
     void drivenTransferCountsOneGrasp();
+    void closedFingersOnACubeHoldNothing_data();
+    void closedFingersOnACubeHoldNothing();
 
 private:
     /** The drive's target after `key` was held for `seconds`. */
@@ -644,6 +646,50 @@ void TestHandDrive::drivenTransferCountsOneGrasp()
     QCOMPARE(metrics.value("cubes_dropped").toInt(), dropped);
     QVERIFY(metrics.value("cubes_transferred").toInt() >= 1);
     QCOMPARE(metrics.value("cubes_broken").toInt(), 0);
+}
+
+void TestHandDrive::closedFingersOnACubeHoldNothing_data()
+{
+    QTest::addColumn<double>("speed"); // m/s
+    QTest::newRow("slow") << 0.05;
+    QTest::newRow("default") << HandDrive::DefaultSpeed;
+    QTest::newRow("full") << HandDrive::MaxSpeed;
+}
+
+void TestHandDrive::closedFingersOnACubeHoldNothing()
+{
+    // Issue 33, D4: the grip closed in the air, "down" held at the pile's edge, where the
+    // closed fingertips come down on a cube's top. Both pads touched the cube, so it counted
+    // as held: a grasp of 30 ms (a touchdown's 25 N in its first step), and 6 grasps for 4
+    // transfers. An object is held only while it pushes the pads apart (World::objectSqueezed).
+    QFETCH(double, speed);
+    DrivenPile pile;
+    QVERIFY(pile.load(0.02, 0.0525));
+    World *world = pile.world.get();
+    pile.drive.setSpeed(speed);
+    TaskMonitor monitor(*world);
+    int held = 0;
+    int touching = 0;
+    auto run = [&](double seconds) {
+        runDrive(*world, pile.op, pile.drive, seconds, 1.0 / 60, [&] {
+            monitor.observe(*world);
+            held += world->objectSqueezed(Gripper::Right) >= 0 ? 1 : 0;
+            const ContactFrame &frame = world->frame(Gripper::Right);
+            touching += frame.left.n > 0 && frame.right.n > 0 ? 1 : 0;
+        });
+    };
+    pile.op.setGrip(Gripper::Right, HandDrive::OpenGrip);
+    run(0.5);
+    pile.drive.toggleGrip();
+    run(0.8);
+    QVERIFY(pile.drive.press(Qt::Key_F));
+    run(0.3 / speed + 1.0);
+    pile.drive.release(Qt::Key_F);
+    run(0.5);
+    QVERIFY(pile.drive.status(Gripper::Right).floor); // it came down on the cube
+    QVERIFY(touching > 0);
+    QCOMPARE(held, 0);
+    QCOMPARE(monitor.metrics().value("grasps").toInt(), 0);
 }
 
 QTEST_MAIN(TestHandDrive)
