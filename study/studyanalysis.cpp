@@ -145,7 +145,7 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
     StudyAnalysis analysis;
     analysis.conditions = table.conditions();
     analysis.factors = table.factors();
-    const size_t k = size_t(analysis.conditions.size());
+    const size_t conditionCount = size_t(analysis.conditions.size());
     // The two-way ANOVA takes the cells factor A first: condition of levels (a_i, b_j) at
     // column i * |B| + j.
     std::vector<int> cells;
@@ -154,7 +154,7 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
         const StudyProtocol::Factor &b = analysis.factors[1];
         for (const QString &levelA : a.levels) {
             for (const QString &levelB : b.levels) {
-                for (int c = 0; c < int(k); ++c) {
+                for (int c = 0; c < int(conditionCount); ++c) {
                     if (table.levels(c) == QStringList{levelA, levelB})
                         cells.push_back(c);
                 }
@@ -167,12 +167,14 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
         const StudyTable::Matrix matrix = table.matrix(name);
         m.participants = matrix.participants;
         m.excluded = matrix.incomplete;
+        // An item asked after some conditions only is compared over those.
+        const size_t k = matrix.conditions.size();
         for (size_t c = 0; c < k; ++c) {
             std::vector<double> column;
             for (const std::vector<double> &row : matrix.rows)
                 column.push_back(row[c]);
             Condition condition;
-            condition.id = analysis.conditions[int(c)];
+            condition.id = analysis.conditions[matrix.conditions[c]];
             condition.summary = summarise(column);
             condition.box = boxPlot(column);
             condition.normality = shapiroWilkTest(column);
@@ -196,7 +198,7 @@ StudyAnalysis StudyAnalysis::run(const StudyTable &table, const QStringList &mea
         if (m.ranking)
             m.normal = false;
         m.anova = repeatedMeasuresAnova(matrix.rows);
-        if (cells.size() == k && k > 0) {
+        if (cells.size() == k && k == size_t(analysis.conditions.size()) && k > 0) {
             m.twoWay = true;
             std::vector<std::vector<double>> ordered;
             for (const std::vector<double> &row : matrix.rows) {
@@ -252,8 +254,8 @@ QJsonObject StudyAnalysis::toJson() const
         }
         QJsonArray pairs;
         for (const PairwiseComparison &p : m.pairwise) {
-            pairs.append(QJsonObject{{QStringLiteral("first"), conditions[p.first]},
-                                     {QStringLiteral("second"), conditions[p.second]},
+            pairs.append(QJsonObject{{QStringLiteral("first"), m.conditions[p.first].id},
+                                     {QStringLiteral("second"), m.conditions[p.second].id},
                                      {QStringLiteral("tested"), p.tested},
                                      {QStringLiteral("mean_difference"), number(p.meanDifference)},
                                      {QStringLiteral("statistic"), number(p.statistic)},
@@ -320,8 +322,8 @@ QByteArray StudyAnalysis::markdown() const
         for (const PairwiseComparison &p : m.pairwise) {
             if (p.tested && p.pAdjusted < Alpha)
                 differing.append(QStringLiteral("%1–%2 (%3)")
-                                     .arg(cell(conditions[p.first]), cell(conditions[p.second]),
-                                          pText(p.pAdjusted)));
+                                     .arg(cell(m.conditions[p.first].id),
+                                          cell(m.conditions[p.second].id), pText(p.pAdjusted)));
         }
         QString test, result;
         if (!m.tested()) {
@@ -392,7 +394,7 @@ QByteArray StudyAnalysis::markdown() const
                   .arg(t ? QStringLiteral("t") : QStringLiteral("W+"));
         for (const PairwiseComparison &p : m.pairwise) {
             md += QStringLiteral("| %1 – %2 | %3 | %4 | %5 | %6 |\n")
-                      .arg(cell(conditions[p.second]), cell(conditions[p.first]),
+                      .arg(cell(m.conditions[p.second].id), cell(m.conditions[p.first].id),
                            fixed(p.meanDifference),
                            p.tested ? fixed(p.statistic) : QStringLiteral("—"),
                            p.tested ? pCell(p.p) : QStringLiteral("—"),

@@ -409,10 +409,10 @@ bool StudyDatabase::isDone(const QString &participant, const StudyProtocol::Step
     };
     const bool final = step.kind == Kind::Final;
     for (const StudyProtocol::Question &q :
-         final ? m_protocol.atTheEnd : m_protocol.afterCondition) {
+         final ? m_protocol.atTheEnd : m_protocol.questionsAfter(step.condition)) {
         for (const QString &measure : q.measures()) {
             if (q.kind == StudyProtocol::Question::Kind::Ranking) {
-                for (const QString &id : q.ranked) {
+                for (const QString &id : q.conditions) {
                     if (!answered(m_protocol.conditionIndex(id), measure))
                         return false;
                 }
@@ -548,7 +548,9 @@ const StudyProtocol::Question *StudyDatabase::question(int condition, const QStr
 {
     using Kind = StudyProtocol::Question::Kind;
     for (const StudyProtocol::Question &q : m_protocol.afterCondition) {
-        if (condition >= 0 && q.measures().contains(measure))
+        if (condition >= 0 && q.measures().contains(measure) &&
+            condition < int(m_protocol.conditions.size()) &&
+            q.asksAfter(m_protocol.conditions[size_t(condition)].id))
             return &q;
     }
     for (const StudyProtocol::Question &q : m_protocol.atTheEnd) {

@@ -67,7 +67,7 @@ bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &p
             !reader.string(q, item, QLatin1String("text"), &question.text, false) ||
             !reader.strings(q, item, QLatin1String("anchors"), &question.anchors, false) ||
             !bounded(reader, q, item, QLatin1String("points"), 2, 11, true, &points) ||
-            !reader.strings(q, item, QLatin1String("conditions"), &question.ranked, false))
+            !reader.strings(q, item, QLatin1String("conditions"), &question.conditions, false))
             return false;
         question.points = int(points);
         if (type == QLatin1String("nasa_tlx")) {
@@ -89,18 +89,18 @@ bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &p
                                                   "atTheEnd, once they are all done"));
             if (question.id.isEmpty())
                 question.id = QStringLiteral("rank");
-            if (question.ranked.isEmpty())
+            if (question.conditions.isEmpty())
                 for (const StudyProtocol::Condition &c : conditions)
-                    question.ranked.append(c.id);
+                    question.conditions.append(c.id);
             for (const StudyProtocol::Condition &c : conditions) {
-                if (question.ranked.count(c.id) != 1)
+                if (question.conditions.count(c.id) != 1)
                     return reader.fail(
                         item + QStringLiteral("/conditions"),
-                        question.ranked.contains(c.id)
+                        question.conditions.contains(c.id)
                             ? QStringLiteral("names condition %1 twice").arg(quoted(c.id))
                             : QStringLiteral("leaves out condition %1").arg(quoted(c.id)));
             }
-            if (question.ranked.size() != int(conditions.size()))
+            if (question.conditions.size() != int(conditions.size()))
                 return reader.fail(item + QStringLiteral("/conditions"),
                                    QStringLiteral("names a condition the protocol does not have"));
         } else if (type == QLatin1String("notes")) {
@@ -111,6 +111,31 @@ bool readQuestions(JsonReader &reader, const QJsonObject &json, const QString &p
             return reader.fail(item + QStringLiteral("/type"),
                                QStringLiteral("must be nasa_tlx, likert, ranking or notes, got %1")
                                    .arg(quoted(type)));
+        }
+        if (question.kind != StudyProtocol::Question::Kind::Ranking &&
+            q.contains(QLatin1String("conditions"))) {
+            // Asked after some conditions only: each named once, each the protocol's.
+            if (key != QLatin1String("afterCondition"))
+                return reader.fail(item + QStringLiteral("/conditions"),
+                                   QStringLiteral("only an afterCondition item is asked after "
+                                                  "some conditions"));
+            if (question.conditions.isEmpty())
+                return reader.fail(item + QStringLiteral("/conditions"),
+                                   QStringLiteral("names no condition: leave it out to ask "
+                                                  "after each"));
+            for (int c = 0; c < question.conditions.size(); ++c) {
+                const QString &id = question.conditions[c];
+                const bool known = std::any_of(conditions.begin(), conditions.end(),
+                                               [&id](const StudyProtocol::Condition &condition) {
+                                                   return condition.id == id;
+                                               });
+                if (!known || question.conditions.indexOf(id) != c)
+                    return reader.fail(
+                        jsonPointerChild(item + QStringLiteral("/conditions"), c),
+                        known ? QStringLiteral("names condition %1 twice").arg(quoted(id))
+                              : QStringLiteral("%1 is not a condition of the protocol")
+                                    .arg(quoted(id)));
+            }
         }
         out->push_back(question);
     }
@@ -219,7 +244,7 @@ double StudyProtocol::Question::highest() const
     case Kind::Likert:
         return points;
     case Kind::Ranking:
-        return double(ranked.size());
+        return double(conditions.size());
     case Kind::Notes:
         break;
     }
@@ -241,6 +266,16 @@ int StudyProtocol::conditionIndex(const QString &id) const
     return -1;
 }
 
+std::vector<StudyProtocol::Question> StudyProtocol::questionsAfter(int condition) const
+{
+    std::vector<Question> questions;
+    for (const Question &q : afterCondition) {
+        if (q.asksAfter(conditions[size_t(condition)].id))
+            questions.push_back(q);
+    }
+    return questions;
+}
+
 std::vector<StudyProtocol::Step> StudyProtocol::steps(const std::vector<int> &order) const
 {
     std::vector<Step> out;
@@ -249,7 +284,7 @@ std::vector<StudyProtocol::Step> StudyProtocol::steps(const std::vector<int> &or
             out.push_back({Step::Kind::Practice, condition, 0});
         for (int trial = 1; trial <= trials; ++trial)
             out.push_back({Step::Kind::Trial, condition, trial});
-        if (!afterCondition.empty())
+        if (!questionsAfter(condition).empty())
             out.push_back({Step::Kind::Questionnaire, condition, 0});
     }
     if (!atTheEnd.empty())

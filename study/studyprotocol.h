@@ -57,7 +57,18 @@ struct StudyProtocol
         QString text;        ///< the question (Likert, notes)
         QStringList anchors; ///< Likert: the two ends' words
         int points = 7;      ///< Likert: the scale's length
-        QStringList ranked;  ///< Ranking: the condition ids ranked (all of them)
+        /**
+         * The ids of the conditions the item is about: a ranking ranks them (all of them); an
+         * afterCondition item is asked after these only (empty: after each), so "the feedback
+         * was realistic" is not asked after a condition without feedback.
+         */
+        QStringList conditions;
+
+        /** Whether the item is asked after condition `id` (afterCondition items). */
+        bool asksAfter(const QString &id) const
+        {
+            return conditions.isEmpty() || conditions.contains(id);
+        }
 
         /**
          * The measures the item gives, as exports name them: the six `tlx.*` subscales for
@@ -81,7 +92,7 @@ struct StudyProtocol
         {
             Practice,      ///< the condition's practice round
             Trial,         ///< a timed trial (`trial` 1..trials)
-            Questionnaire, ///< the afterCondition items for `condition`
+            Questionnaire, ///< the afterCondition items asked after `condition`
             Final,         ///< the atTheEnd items
             Done           ///< nothing left
         };
@@ -111,6 +122,9 @@ struct StudyProtocol
     std::vector<Question> afterCondition;
     std::vector<Question> atTheEnd;
 
+    /** The afterCondition items asked after condition `condition` (an index), in order. */
+    std::vector<Question> questionsAfter(int condition) const;
+
     /** The order scheme over this protocol's conditions. */
     ConditionOrder order() const { return ConditionOrder(scheme, int(conditions.size()), seed); }
     /** Whether `text` may be a condition's or a participant's id: 1–32 of `A-Z a-z 0-9 _ . -`. */
@@ -120,8 +134,8 @@ struct StudyProtocol
 
     /**
      * The steps of a participant who meets the conditions in `order`: per condition its
-     * practice (when the protocol has one), its trials and its questionnaire (when it has
-     * items), then the final questionnaire (when it has items).
+     * practice (when the protocol has one), its trials and its questionnaire (when an item is
+     * asked after it), then the final questionnaire (when it has items).
      */
     std::vector<Step> steps(const std::vector<int> &order) const;
     /** The transfers a practice round's goal counts in a run's `metrics`. */

@@ -306,13 +306,19 @@ StudyTable::Matrix StudyTable::matrix(const QString &measure) const
         ++cell.second;
     }
     Matrix matrix;
+    for (size_t c = 0; c < k; ++c) {
+        if (std::any_of(cells.begin(), cells.end(),
+                        [c](const auto &row) { return row[c].second; }))
+            matrix.conditions.push_back(int(c));
+    }
     for (size_t p = 0; p < cells.size(); ++p) {
         std::vector<double> means;
-        for (const auto &[sum, count] : cells[p]) {
+        for (int c : matrix.conditions) {
+            const auto &[sum, count] = cells[p][size_t(c)];
             if (count > 0)
                 means.push_back(sum / count);
         }
-        if (means.size() == k) {
+        if (means.size() == matrix.conditions.size()) {
             matrix.participants.append(m_participants[int(p)]);
             matrix.rows.push_back(means);
         } else {

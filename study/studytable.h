@@ -33,11 +33,16 @@ public:
         double value = 0.0;
     };
 
-    /** One measure as the analysis takes it: each participant's mean per condition. */
+    /**
+     * One measure as the analysis takes it: each participant's mean per condition, over the
+     * measure's conditions — those anyone has a value in (an item asked after some conditions
+     * only is about those).
+     */
     struct Matrix
     {
-        QStringList participants;              ///< those with a value in every condition
-        std::vector<std::vector<double>> rows; ///< per participant, per condition
+        std::vector<int> conditions;           ///< indices into conditions(), in their order
+        QStringList participants;              ///< those with a value in each of them
+        std::vector<std::vector<double>> rows; ///< per participant, per condition of the measure
         QStringList incomplete;                ///< participants left out: a condition missing
     };
 

@@ -60,9 +60,9 @@ QuestionnaireWindow::QuestionnaireWindow(StudyDocument &study, const StudyProtoc
 
     const StudyProtocol &protocol = study.protocol();
     const bool final = step.kind == StudyProtocol::Step::Kind::Final;
-    const std::vector<StudyProtocol::Question> &items =
-        final ? protocol.atTheEnd : protocol.afterCondition;
     const int condition = final ? -1 : step.condition;
+    const std::vector<StudyProtocol::Question> items =
+        final ? protocol.atTheEnd : protocol.questionsAfter(condition);
 
     m_heading =
         new QLabel(final ? tr("At the end of the study")

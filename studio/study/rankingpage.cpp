@@ -26,7 +26,7 @@ RankingPage::RankingPage(const StudyProtocol &protocol, const StudyProtocol::Que
     m_list->setDefaultDropAction(Qt::MoveAction);
     m_list->setSelectionMode(QAbstractItemView::SingleSelection);
     m_list->setSpacing(4);
-    for (const QString &id : question.ranked) {
+    for (const QString &id : question.conditions) {
         auto *item = new QListWidgetItem(m_list);
         item->setData(Qt::UserRole, protocol.conditionIndex(id));
     }

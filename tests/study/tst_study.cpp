@@ -147,7 +147,19 @@ void TestStudy::exampleProtocolsRead()
         QCOMPARE(int(condition.levels.size()), factors);
     QCOMPARE(protocol.afterCondition.front().kind, StudyProtocol::Question::Kind::NasaTlx);
     QCOMPARE(protocol.atTheEnd.front().kind, StudyProtocol::Question::Kind::Ranking);
-    QCOMPARE(protocol.atTheEnd.front().ranked.size(), 4);
+    QCOMPARE(protocol.atTheEnd.front().conditions.size(), 4);
+    // Questions about the feedback are not asked after a condition without any (issue 33,
+    // D13); every condition still has its questionnaire.
+    for (int c = 0; c < int(protocol.conditions.size()); ++c) {
+        QStringList asked;
+        for (const StudyProtocol::Question &q : protocol.questionsAfter(c))
+            asked << q.id;
+        QVERIFY(asked.contains("tlx"));
+        QCOMPARE(asked.contains("realistic"), protocol.conditions[size_t(c)].router != "none");
+        const std::vector<StudyProtocol::Step> steps = protocol.steps({c});
+        QCOMPARE(steps.back().kind, StudyProtocol::Step::Kind::Final);
+        QCOMPARE(steps[steps.size() - 2].kind, StudyProtocol::Step::Kind::Questionnaire);
+    }
 }
 
 void TestStudy::badProtocolsAreRefused_data()
@@ -242,6 +254,24 @@ void TestStudy::badProtocolsAreRefused_data()
     QTest::newRow("a scene file that is no scene") << "\"box_and_block\""
                                                    << "\"protocol.json\""
                                                    << "/scene: ";
+    QTest::newRow("asked after a condition it does not have")
+        << "\"id\": \"real\","
+        << "\"id\": \"real\", \"conditions\": [\"B\", \"E\"],"
+        << "/questionnaires/afterCondition/1/conditions/1: 'E' is not a condition of the protocol";
+    QTest::newRow("asked after a condition twice")
+        << "\"id\": \"real\","
+        << "\"id\": \"real\", \"conditions\": [\"B\", \"B\"],"
+        << "/questionnaires/afterCondition/1/conditions/1: names condition 'B' twice";
+    QTest::newRow("asked after no condition")
+        << "\"id\": \"real\","
+        << "\"id\": \"real\", \"conditions\": [],"
+        << "/questionnaires/afterCondition/1/conditions: names no condition";
+    QTest::newRow("a final item after some conditions")
+        << "\"atTheEnd\": [{\"type\": \"ranking\"}"
+        << "\"atTheEnd\": [{\"type\": \"ranking\"}, {\"type\": \"notes\", \"conditions\": "
+           "[\"A\"]}"
+        << "/questionnaires/atTheEnd/1/conditions: only an afterCondition item is asked after "
+           "some conditions";
     QTest::newRow("no trials") << "\"trials\""
                                << "\"trial\""
                                << "unknown key 'trial'";

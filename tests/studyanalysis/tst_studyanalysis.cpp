@@ -56,6 +56,7 @@ private slots:
     void twoWayFromAFactorialStudy();
     void friedmanAsR();
     void nothingToTest();
+    void aMeasureOfSomeConditions();
     void namesFromOtherTools();
     void aRankingTakesRankTests();
     void hugeValuesPlotInBoundedWork();
@@ -187,11 +188,11 @@ void TestStudyAnalysis::friedmanAsR()
 
 void TestStudyAnalysis::nothingToTest()
 {
-    // A measure with no variance, and one a participant lacks in a condition.
+    // A measure with no variance, and one that each participant lacks in a condition.
     const StudyAnalysis analysis =
         StudyAnalysis::run(tableOf("participant,condition,trial,measure,value\n"
                                    "P1,A,1,zero,0\nP1,B,1,zero,0\nP2,A,1,zero,0\nP2,B,1,zero,0\n"
-                                   "P3,A,1,zero,0\nP3,B,1,zero,0\nP3,A,1,one,1\n"));
+                                   "P3,A,1,zero,0\nP3,B,1,zero,0\nP3,A,1,one,1\nP2,B,1,one,1\n"));
     QCOMPARE(int(analysis.measures.size()), 2);
     QVERIFY(!analysis.measures[0].tested());
     QCOMPARE(analysis.measures[1].participants.size(), 0);
@@ -202,6 +203,48 @@ void TestStudyAnalysis::nothingToTest()
     QVERIFY(report.contains(QLatin1String("left out for a missing condition: P1, P2, P3")));
     QVERIFY(report.contains(QStringLiteral("| B | – | – | – | – | not tested |")));
     QVERIFY(!report.contains(QLatin1String("nan")));
+}
+
+void TestStudyAnalysis::aMeasureOfSomeConditions()
+{
+    // Issue 33, D13: "the feedback was realistic" is asked after the conditions with feedback
+    // only. It is compared over those three, not left out for everyone for lacking "none".
+    QByteArray csv = "participant,condition,trial,measure,value\n";
+    for (int p = 1; p <= 8; ++p) {
+        for (const char *condition : {"none", "visual", "sensory", "semantic"})
+            csv += QStringLiteral("P%1,%2,,tlx,%3\n").arg(p).arg(condition).arg(40 + p).toUtf8();
+        csv += QStringLiteral("P%1,visual,,realistic,%2\nP%1,sensory,,realistic,%3\n"
+                              "P%1,semantic,,realistic,%4\n")
+                   .arg(p)
+                   .arg(2 + p % 2)
+                   .arg(4 + p % 3)
+                   .arg(6 + p % 2)
+                   .toUtf8();
+    }
+    const StudyAnalysis analysis = StudyAnalysis::run(tableOf(csv));
+    QCOMPARE(analysis.conditions.size(), 4);
+    const StudyAnalysis::Measure &realistic = analysis.measures[1];
+    QCOMPARE(realistic.name, QStringLiteral("realistic"));
+    QCOMPARE(realistic.participants.size(), 8);
+    QVERIFY(realistic.excluded.isEmpty());
+    QStringList ids;
+    for (const StudyAnalysis::Condition &c : realistic.conditions)
+        ids << c.id;
+    QCOMPARE(ids, (QStringList{"visual", "sensory", "semantic"}));
+    QCOMPARE(realistic.conditions[0].summary.mean, 2.5);
+    QVERIFY(realistic.tested());
+    QCOMPARE(int(realistic.pairwise.size()), 3);
+    // The pairs name the measure's conditions, in JSON and in the report.
+    const QJsonArray pairs =
+        analysis.toJson()[QLatin1String("measures")][1][QLatin1String("pairwise")].toArray();
+    QCOMPARE(pairs.size(), 3);
+    for (const QJsonValue &pair : pairs) {
+        QVERIFY(ids.contains(pair[QLatin1String("first")].toString()));
+        QVERIFY(ids.contains(pair[QLatin1String("second")].toString()));
+    }
+    const QString report = QString::fromUtf8(analysis.markdown());
+    QVERIFY2(report.contains(QStringLiteral("visual–semantic (p = ")), qPrintable(report));
+    QCOMPARE(int(analysis.measures[0].conditions.size()), 4);
 }
 
 void TestStudyAnalysis::namesFromOtherTools()

@@ -159,7 +159,7 @@ void TestStudyDatabase::stepsFollowTheProtocol()
     QCOMPARE(study->nextStep(p), steps[3]);
     // The questionnaire is done once each of its measures has an answer.
     const StudyProtocol &protocol = study->protocol();
-    for (const StudyProtocol::Question &q : protocol.afterCondition) {
+    for (const StudyProtocol::Question &q : protocol.questionsAfter(order[0])) {
         for (const QString &measure : q.measures()) {
             QCOMPARE(study->nextStep(p), steps[3]);
             QVERIFY2(study->answer({p, order[0], measure, q.lowest(), {}, {}}, &error),
@@ -169,7 +169,7 @@ void TestStudyDatabase::stepsFollowTheProtocol()
     QCOMPARE(study->nextStep(p), steps[4]);
     for (size_t i = 4; i + 1 < steps.size(); ++i) {
         if (steps[i].kind == Kind::Questionnaire) {
-            for (const StudyProtocol::Question &q : protocol.afterCondition)
+            for (const StudyProtocol::Question &q : protocol.questionsAfter(steps[i].condition))
                 for (const QString &measure : q.measures())
                     QVERIFY(study->answer({p, steps[i].condition, measure, 1, {}, {}}, &error));
         } else {
@@ -251,12 +251,15 @@ void TestStudyDatabase::answersStayWithinTheirScale_data()
     QTest::addColumn<QString>("measure");
     QTest::addColumn<double>("value");
     QTest::addColumn<bool>("accepted");
-    QTest::addRow("likert 1") << 0 << "realistic" << 1.0 << true;
-    QTest::addRow("likert 7") << 0 << "realistic" << 7.0 << true;
-    QTest::addRow("likert 0") << 0 << "realistic" << 0.0 << false;
-    QTest::addRow("likert 8 of 7") << 0 << "realistic" << 8.0 << false;
-    QTest::addRow("likert 3.5") << 0 << "realistic" << 3.5 << false;
-    QTest::addRow("likert NaN") << 0 << "realistic" << std::nan("") << false;
+    // Condition 0 is `none`: "the feedback was realistic" is asked after the others only.
+    QTest::addRow("likert 1") << 1 << "realistic" << 1.0 << true;
+    QTest::addRow("likert 7") << 1 << "realistic" << 7.0 << true;
+    QTest::addRow("likert 0") << 1 << "realistic" << 0.0 << false;
+    QTest::addRow("likert 8 of 7") << 1 << "realistic" << 8.0 << false;
+    QTest::addRow("likert 3.5") << 1 << "realistic" << 3.5 << false;
+    QTest::addRow("likert NaN") << 1 << "realistic" << std::nan("") << false;
+    QTest::addRow("likert not asked after none") << 0 << "realistic" << 4.0 << false;
+    QTest::addRow("likert asked after each") << 0 << "dexterity" << 4.0 << true;
     QTest::addRow("tlx 0") << 1 << "tlx.mental" << 0.0 << true;
     QTest::addRow("tlx 100") << 1 << "tlx.frustration" << 100.0 << true;
     QTest::addRow("tlx 105") << 1 << "tlx.effort" << 105.0 << false;

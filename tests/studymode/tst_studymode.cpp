@@ -410,9 +410,8 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
     QCOMPARE(folders.first(), QFileInfo(SEMHAP_RESOURCES "/studies").canonicalFilePath());
     // The study itself goes among the user's files, never beside the examples.
     const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    QCOMPARE(folders.last(),
-             QFileInfo(QFileInfo(documents).isDir() ? documents : QDir::homePath())
-                 .canonicalFilePath());
+    QCOMPARE(folders.last(), QFileInfo(QFileInfo(documents).isDir() ? documents : QDir::homePath())
+                                 .canonicalFilePath());
     QVERIFY(studyOf(*studio).isOpen());
     QVERIFY(QFileInfo::exists(path));
     QVERIFY(!window.findChild<QDockWidget *>("studyDock")->visibleRegion().isEmpty());
@@ -464,8 +463,12 @@ void TestStudyMode::aParticipantGoesThroughTheWholeStudy()
         QVERIFY(!child<QLabel>(panel, "countdown")->isVisible()); // no clock runs for it
         QuestionnaireWindow *questions = openQuestionnaire(*studio);
         QVERIFY(questions);
-        QCOMPARE(questions->pageCount(), 6);
+        // Nothing about the feedback after the condition without any (issue 33, D13): the
+        // TLX, awareness and dexterity only.
+        const bool feedback = protocol.conditions[size_t(condition)].router != "none";
+        QCOMPARE(questions->pageCount(), feedback ? 6 : 3);
         answerWithKeys(questions, position + 1, position + 2, QString());
+        QCOMPARE(std::isnan(answerOf(db, "P01", condition, "realistic")), !feedback);
         QCOMPARE(answerOf(db, "P01", condition, "tlx.mental"), 50.0 + 5.0 * (position + 1));
         QCOMPARE(answerOf(db, "P01", condition, "tlx.frustration"), 50.0 + 5.0 * (position + 1));
         QCOMPARE(answerOf(db, "P01", condition, "dexterity"), double(position + 2));
@@ -623,13 +626,15 @@ void TestStudyMode::aTrialIsAbortedWithAReason()
 // grippers back with Ctrl+T, grasps: C3 plays on the bands.)
 void TestStudyMode::stopAllPausesATrial()
 {
-    const QString protocol =
-        protocolWith("semantic-only",
-                     {{"conditions", QJsonArray{QJsonObject{{"id", "semantic"},
-                                                            {"label", "Semantic haptic feedback"},
-                                                            {"router", "C3"}}}},
-                      {"practice", QJsonObject{{"seconds", 60}}},
-                      {"trials", QJsonObject{{"count", 1}, {"seconds", 3}}}});
+    const QString protocol = protocolWith(
+        "semantic-only",
+        {{"conditions",
+          QJsonArray{QJsonObject{
+              {"id", "semantic"}, {"label", "Semantic haptic feedback"}, {"router", "C3"}}}},
+         {"practice", QJsonObject{{"seconds", 60}}},
+         {"trials", QJsonObject{{"count", 1}, {"seconds", 3}}},
+         {"questionnaires",
+          QJsonObject{{"afterCondition", QJsonArray{QJsonObject{{"type", "nasa_tlx"}}}}}}});
     const QString path = makeStudy("stop.db", {"P01"}, protocol);
     auto studio = startStudio(path, {"--participant", "P01", "--speed", "2"});
     MainWindow &window = *studio->window();
@@ -844,7 +849,7 @@ void TestStudyMode::theWidgetsOfferOnlyTheScale()
     const int condition = db.order("P01").front();
     QCOMPARE(answerOf(db, "P01", condition, "tlx.mental"), 0.0);
     QCOMPARE(answerOf(db, "P01", condition, "tlx.physical"), 50.0);
-    QCOMPARE(answerOf(db, "P01", condition, "realistic"), 3.0);
+    QCOMPARE(answerOf(db, "P01", condition, likert->question().id), 3.0);
 
     // Closed half-way and opened again: at the first page not answered.
     questions->close();
