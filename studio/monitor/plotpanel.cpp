@@ -304,6 +304,8 @@ void PlotPanel::clearPlots()
     m_devices.clear();
     m_spans.clear();
     m_cursorLines.clear();
+    m_levelNames.clear();
+    m_titles.clear();
 }
 
 /** The grippers worth a plot, right first: with a detector or with contact data. */
@@ -409,6 +411,7 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
         QFontMetrics(bold).height() + titleItem->padding().top() + titleItem->padding().bottom();
     titleItem->setBrush(colors::veil(200));
     titleItem->setLayer(QStringLiteral("legend"));
+    m_titles[rect] = titleItem;
     return rect;
 }
 
@@ -466,7 +469,59 @@ void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString
         names->setBasePen(Qt::NoPen);
     }
     if (!name.isEmpty()) // a line named in another's label
-        ticker->addTick(value, name);
+        m_levelNames.push_back({rect, value, name});
+}
+
+bool PlotPanel::nameLevels(QCPAxisRect *rect)
+{
+    QCPAxis *names = rect->axis(QCPAxis::atRight);
+    auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
+    if (!ticker)
+        return false;
+    std::vector<const LevelName *> levels;
+    for (const LevelName &level : m_levelNames) {
+        if (level.rect == rect)
+            levels.push_back(&level);
+    }
+    std::stable_sort(levels.begin(), levels.end(),
+                     [](const LevelName *a, const LevelName *b) { return a->value > b->value; });
+    // Each level's name a label; two labels that would overlap become one, a line per name,
+    // at their levels' mean, until none overlaps (two signal nodes' levels a thousandth apart
+    // on a metre scale were drawn over each other).
+    const double height = rect->rect().height();
+    const double pixelsPerUnit = height > 0 && names->range().size() > 0
+                                     ? height / names->range().size()
+                                     : std::numeric_limits<double>::infinity(); // not laid out
+    const double lineHeight = QFontMetrics(names->tickLabelFont()).height();
+    struct Label
+    {
+        QStringList lines;
+        double sum = 0.0; // of the levels' values
+        double value() const { return sum / double(lines.size()); }
+    };
+    std::vector<Label> labels;
+    for (const LevelName *level : levels)
+        labels.push_back({{level->name}, level->value});
+    for (size_t i = 0; i + 1 < labels.size();) {
+        const Label &above = labels[i];
+        const Label &below = labels[i + 1];
+        const double apart = (above.value() - below.value()) * pixelsPerUnit;
+        if (apart >= (above.lines.size() + below.lines.size()) * lineHeight / 2) {
+            ++i;
+            continue;
+        }
+        labels[i].lines += below.lines;
+        labels[i].sum += below.sum;
+        labels.erase(labels.begin() + std::ptrdiff_t(i) + 1);
+        i = i > 0 ? i - 1 : 0; // the grown label may now reach the one above
+    }
+    QMap<double, QString> ticks;
+    for (const Label &label : labels)
+        ticks.insert(label.value(), label.lines.join(QLatin1Char('\n')));
+    if (ticker->ticks() == ticks)
+        return false;
+    ticker->setTicks(ticks);
+    return true;
 }
 
 /** The gripper's name as shown (the data keep the untranslated one). */
@@ -707,7 +762,6 @@ void PlotPanel::appendNew()
         m_plot->graph(i)->data()->removeBefore(oldest);
 }
 
-
 PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span,
                                             const std::vector<QCPAxisRect *> &rects,
                                             QCPAxisRect *labelRect)
@@ -843,8 +897,12 @@ double PlotPanel::upperUnderHeader(QCPAxisRect *rect, double lower, double top,
 {
     // The title and the legend sit over the top of the rect: the range reaches so far above
     // the data that its top runs under them, never behind (a band's 1.0 went behind both).
-    const QCPLegend *legend = legendOf(rect);
-    const int header = std::max(m_titleHeight, legend ? legend->outerRect().height() : 0) + 2;
+    QCPLegend *legend = legendOf(rect);
+    const int legendHeight = legend ? legend->outerRect().height() : 0;
+    const bool stacked =
+        legend && rect->insetLayout()->insetPlacement(0) == QCPLayoutInset::ipFree;
+    const int header =
+        (stacked ? m_titleHeight + legendHeight : std::max(m_titleHeight, legendHeight)) + 2;
     const int height = rect->rect().height();
     const double span = top - lower;
     double upper = top + span * headroom;
@@ -879,8 +937,36 @@ bool PlotPanel::spaceValueTicks(QCPAxisRect *rect)
     return true;
 }
 
+void PlotPanel::placeLegend(QCPAxisRect *rect)
+{
+    QCPLegend *legend = legendOf(rect);
+    const auto title = m_titles.find(rect);
+    const int width = rect->rect().width();
+    if (!legend || title == m_titles.end() || width <= 0)
+        return;
+    // Beside the title while both fit the rect's width; else under it, at the right (in a
+    // narrow dock the legend of a signal's rect hid its title, "rechter Greifer: Kraft").
+    const QCPItemText *text = title->second;
+    const int titleWidth = QFontMetrics(text->font()).horizontalAdvance(text->text()) +
+                           text->padding().left() + text->padding().right();
+    const QSize size = legend->minimumOuterSizeHint();
+    QCPLayoutInset *inset = rect->insetLayout();
+    const bool beside = titleWidth + 8 + size.width() <= width;
+    const auto placement = beside ? QCPLayoutInset::ipBorderAligned : QCPLayoutInset::ipFree;
+    const QRectF under(std::max(0.0, 1.0 - double(size.width()) / width),
+                       double(m_titleHeight) / std::max(1, rect->rect().height()), 0.0, 0.0);
+    if (inset->insetPlacement(0) == placement && (beside || inset->insetRect(0) == under))
+        return;
+    inset->setInsetPlacement(0, placement);
+    if (!beside)
+        inset->setInsetRect(0, under);
+    requestReplot(); // the inset is laid out at the next replot
+}
+
 void PlotPanel::fitToLayout()
 {
+    for (QCPAxisRect *rect : m_rects)
+        placeLegend(rect);
     // The layout has set up the axes' ticks for the old ranges: they are set up again for
     // the drawing that follows (the margins follow at the next replot).
     if (!fitValueAxes())
@@ -937,8 +1023,10 @@ bool PlotPanel::fitValueAxes()
         changed |= setValueRange(plot->rect, lower,
                                  upperUnderHeader(plot->rect, lower, plot->high, 0.06));
     }
-    for (QCPAxisRect *rect : m_rects)
+    for (QCPAxisRect *rect : m_rects) {
         changed |= spaceValueTicks(rect);
+        changed |= nameLevels(rect);
+    }
     return changed;
 }
 
@@ -975,13 +1063,23 @@ void PlotPanel::layoutSpanLabels()
         // In rows as tall as a label under the rect's title, in the upper part where the
         // force curves leave room: each kind of message on its own row, so the labels read
         // as lanes; a label that would cover another waits until it would not (its span is
-        // shaded anyway). A rect too short for a kind's row lends it the first free row.
+        // shaded anyway). A rect too short for a kind's row lends it the first free row. The
+        // legend's box is taken (under the title in a narrow rect).
         std::vector<QRectF> taken;
+        if (const QCPLegend *legend = legendOf(plot->forceRect))
+            taken.push_back(QRectF(legend->outerRect()));
         for (SpanView *view : shown) {
-            const double x = std::max(view->begin, range.lower);
+            double x = std::max(view->begin, range.lower);
             view->label->position->setCoords(x, 0.0);
-            const QRectF box(view->label->topLeft->pixelPosition(),
+            QRectF box(view->label->topLeft->pixelPosition(),
+                       view->label->bottomRight->pixelPosition());
+            // A span begun near the right edge has its label end there, not cut off by it.
+            if (box.right() > area.right()) {
+                x = time->pixelToCoord(area.right() - box.width());
+                view->label->position->setCoords(x, 0.0);
+                box = QRectF(view->label->topLeft->pixelPosition(),
                              view->label->bottomRight->pixelPosition());
+            }
             const double rowHeight = box.height() + 1.0;
             // Less the title's row; a squeezed rect still has the one under its title.
             int rows = int(area.height() * 0.75 / rowHeight) - 1;

@@ -15,6 +15,7 @@ class QCPAbstractItem;
 class QCPAxisRect;
 class QCPGraph;
 class QCPItemStraightLine;
+class QCPItemText;
 class QCPMarginGroup;
 class QCPRange;
 class QCustomPlot;
@@ -110,6 +111,13 @@ private:
     double upperUnderHeader(QCPAxisRect *rect, double lower, double top, double headroom) const;
     /** As many value ticks on the rect as its height lets stand apart (true: changed). */
     static bool spaceValueTicks(QCPAxisRect *rect);
+    /**
+     * Names the levels beside the rect, on its right axis: levels closer than a label's
+     * height share one label, a line each, so no name is drawn over another (true: changed).
+     */
+    bool nameLevels(QCPAxisRect *rect);
+    /** Moves the legend under the title where the two do not fit side by side. */
+    void placeLegend(QCPAxisRect *rect);
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);
     void updateCursor();
@@ -132,6 +140,16 @@ private:
     QCPMarginGroup *m_marginGroup = nullptr;
 
     std::vector<QCPAxisRect *> m_rects;
+    /** A level's name beside its rect (nameLevels() lays them out). */
+    struct LevelName
+    {
+        QCPAxisRect *rect;
+        double value;
+        QString name;
+    };
+    std::vector<LevelName> m_levelNames;
+    /** Per rect: its title, whose width decides where the legend goes. */
+    std::map<QCPAxisRect *, QCPItemText *> m_titles;
     std::vector<std::unique_ptr<GripperPlot>> m_grippers;
     std::vector<std::unique_ptr<SignalPlot>> m_signals;
     std::vector<std::unique_ptr<DevicePlot>> m_devices;

@@ -181,6 +181,8 @@ private slots:
     void signalPlotsShowLevelsAndSpans();
     void dataAndLabelsStayClear_data();
     void dataAndLabelsStayClear();
+    void namesLegendsAndTitlesNeverOverlap_data();
+    void namesLegendsAndTitlesNeverOverlap();
 
 private:
     QCPAxis *timeAxis() const { return m_plot->axisRect(0)->axis(QCPAxis::atBottom); }
@@ -784,4 +786,123 @@ void TestPlots::signalPlotsShowLevelsAndSpans()
 }
 
 QTEST_MAIN(TestPlots)
+void TestPlots::namesLegendsAndTitlesNeverOverlap_data()
+{
+    QTest::addColumn<int>("width");
+    QTest::newRow("a narrow dock, 560 px") << 560;
+    QTest::newRow("1280 px") << 1280;
+}
+
+// Issue 33, D12. Two threshold nodes on plug.lateral at 1 cm and 0.3 mm, a scale of 20 cm:
+// their names stood over each other beside the plot; in a narrow dock each rect's legend hid
+// its title; a span begun near the right edge had its label cut there ("right.b").
+void TestPlots::namesLegendsAndTitlesNeverOverlap()
+{
+    QFETCH(int, width);
+    const char *json = R"({"format": "semhap.router/1", "nodes": [
+        {"id": "lateral", "type": "signal",
+         "params": {"gripper": "right", "quantity": "plug.lateral"}},
+        {"id": "right.over.port", "type": "threshold",
+         "params": {"gripper": "right", "message": "over", "category": "confirmation",
+                    "condition": "below", "begin": 0.01, "end": 0.015}},
+        {"id": "right.off.axis", "type": "threshold",
+         "params": {"gripper": "right", "message": "off", "category": "exception",
+                    "begin": 0.0003, "end": 0.00025}},
+        {"id": "right.centred", "type": "threshold",
+         "params": {"gripper": "right", "message": "centred", "category": "confirmation",
+                    "condition": "below", "begin": 0.0005}}
+      ], "links": [
+        {"from": "lateral", "to": "right.over.port"}, {"from": "lateral", "to": "right.off.axis"},
+        {"from": "lateral", "to": "right.centred"}
+      ]})";
+    RouterGraph graph;
+    LoadError error;
+    QVERIFY(
+        RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), "r.json", &graph, &error));
+    std::unique_ptr<Router> router = Router::compile(graph, &error);
+    QVERIFY2(router, qPrintable(error.toString()));
+    RunHistory history;
+    PlotPanel panel(history);
+    panel.resize(width, 800);
+    history.start({}, thresholdsOf(*router, Hands{false, true}), router->nodeIds());
+    const int lateral = signalNames().find("plug.lateral");
+    for (int k = 0; k <= Ticks; ++k) {
+        ContactFrame frame = frameAt(k / 10.0, Gripper::Right);
+        frame.signalValues.set(lateral, 0.2 - 0.04 * frame.t);
+        history.append(frame);
+    }
+    // A break warning in the last tenth of a second: its label would run past the edge.
+    SemanticEvent warning = eventAt(4.95, 0, Message::Break, EventPhase::Begin);
+    history.append(warning);
+    history.commit();
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto *plot = panel.findChild<QCustomPlot *>();
+    plot->replot();
+    QTest::qWait(100); // a legend moved under its title is laid out at the next replot
+    plot->replot();
+
+    // Every level's name is beside the plot once, and no two labels overlap.
+    for (int r = 0; r < plot->axisRectCount(); ++r) {
+        QCPAxis *names = plot->axisRect(r)->axis(QCPAxis::atRight);
+        auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
+        if (!ticker || ticker->ticks().isEmpty())
+            continue;
+        const double line = QFontMetrics(names->tickLabelFont()).height();
+        const QList<double> values = ticker->ticks().keys();
+        for (int i = 0; i + 1 < values.size(); ++i) {
+            const double apart =
+                std::abs(names->coordToPixel(values[i + 1]) - names->coordToPixel(values[i]));
+            const int lines = int(ticker->ticks()[values[i]].count('\n') +
+                                  ticker->ticks()[values[i + 1]].count('\n')) +
+                              2;
+            QVERIFY2(
+                apart >= lines * line / 2 - 0.5,
+                qPrintable(QString("%1 and %2: %3 px apart")
+                               .arg(ticker->ticks()[values[i]], ticker->ticks()[values[i + 1]])
+                               .arg(apart)));
+        }
+    }
+    bool named = false;
+    for (int r = 0; r < plot->axisRectCount(); ++r) {
+        auto ticker =
+            plot->axisRect(r)->axis(QCPAxis::atRight)->ticker().dynamicCast<QCPAxisTickerText>();
+        if (!ticker)
+            continue;
+        const QString all = QStringList(ticker->ticks().values()).join('\n');
+        if (all.contains("right.over.port")) {
+            named = true;
+            for (const char *node : {"right.over.port", "right.off.axis", "right.centred"})
+                QCOMPARE(all.count(node), 1);
+        }
+    }
+    QVERIFY(named);
+
+    // Each rect's title and legend stand clear of each other.
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        auto *title = qobject_cast<QCPItemText *>(plot->item(i));
+        if (!title || !title->objectName().isEmpty() || !title->clipAxisRect())
+            continue;
+        QCPAxisRect *rect = title->clipAxisRect();
+        if (rect->insetLayout()->elementCount() == 0 || title->position->coords() != QPointF(0, 0))
+            continue;
+        const QRectF box(title->topLeft->pixelPosition(), title->bottomRight->pixelPosition());
+        const QRect legend = rect->insetLayout()->elementAt(0)->outerRect();
+        QVERIFY2(!box.intersects(QRectF(legend).adjusted(1, 1, -1, -1)),
+                 qPrintable(QString("%1 under its legend").arg(title->text())));
+    }
+
+    // A span's label ends inside its rect.
+    const QList<std::pair<QString, QRectF>> labels = spanLabels(plot);
+    QVERIFY(!labels.isEmpty());
+    for (const auto &[name, box] : labels) {
+        const QRect area = plot->axisRect(0)->rect();
+        QVERIFY2(box.right() <= area.right() + 1.0,
+                 qPrintable(
+                     QString("%1 ends at %2 of %3").arg(name).arg(box.right()).arg(area.right())));
+    }
+    if (const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !dir.isEmpty())
+        panel.grab().save(QString("%1/plots-names-%2.png").arg(dir).arg(width));
+}
+
 #include "tst_plots.moc"
