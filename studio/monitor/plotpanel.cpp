@@ -373,8 +373,19 @@ void PlotPanel::keepReadableHeight()
     // the panel scrolls. A new height lays the plot out again, which then asks for the same.
     const QWidget *plot = m_plot; // QCustomPlot hides the hint QWidget makes public
     const int wanted = plot->minimumSizeHint().height();
-    if (wanted != m_plot->minimumHeight())
-        m_plot->setMinimumHeight(wanted);
+    if (wanted == m_plot->minimumHeight())
+        return;
+    m_plot->setMinimumHeight(wanted);
+    // The new height comes while the plot is replotting, which drops the replot its resize
+    // asks for: the rects stayed laid out for the old height, crushed to a third of their
+    // minimum (dish_wiping's seven devices at 1280x800). Lay out again once it is done.
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_plot->setViewport(m_plot->rect());
+            m_plot->replot(QCustomPlot::rpQueuedReplot);
+        },
+        Qt::QueuedConnection);
 }
 
 QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
@@ -383,8 +394,12 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     rect->setMarginGroup(QCP::msLeft | QCP::msRight, m_marginGroup);
     rect->setRangeDrag(Qt::Horizontal);
     rect->setRangeZoom(Qt::Horizontal);
-    // Each rect keeps room to read its curves and labels; past that the panel scrolls.
-    rect->setMinimumSize(0, stretch >= 5 ? 90 : stretch >= 3 ? 56 : 40);
+    // Each rect keeps room to read its curves and value labels under its title and legend
+    // (stacked, in a narrow dock); past that the panel scrolls. At 40 px a device's rect had
+    // room for one value label under its title (dish_wiping's seven devices at 1280x800).
+    const int line = QFontMetrics(rect->axis(QCPAxis::atLeft)->tickLabelFont()).height();
+    const double lines = stretch >= 5 ? 6.0 : stretch >= 3 ? 5.0 : 4.5;
+    rect->setMinimumSize(0, int(std::ceil(lines * line)));
     // Value ticks a step apart that spaceValueTicks() sets from the rect's pixels.
     auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
     ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);

@@ -2234,6 +2234,10 @@ void TestStudio::screenshotsOfEveryPanel_data()
     QTest::newRow("1280x800-de-usb") << QSize(1280, 800) << "usb_insertion"
                                      << "usb"
                                      << "de";
+    // Both hands, a signal plot and seven devices' plots in one dock.
+    QTest::newRow("1280x800-wipe") << QSize(1280, 800) << "dish_wiping"
+                                   << "wipe"
+                                   << "en";
     // The largest preset: its nodes must still read at 1280×800.
     QTest::newRow("1280x800-C3p") << QSize(1280, 800) << "bimanual_sorting"
                                   << "C3p"
@@ -2311,19 +2315,38 @@ void TestStudio::screenshotsOfEveryPanel()
         if (auto *text = qobject_cast<QCPItemText *>(plot->item(i)))
             texts.append(text->text());
     }
-    QVERIFY2(texts.contains("grasp") || texts.contains("grasp 20 N"), qPrintable(texts.join("|")));
+    QVERIFY2(texts.contains("grasp") || texts.contains("grasp 20 N") ||
+                 texts.contains("right.engaged"), // the wipe preset's confirmation
+             qPrintable(texts.join("|")));
     for (const char *translated : {"Griff", "Bruch", "Rutschen"})
         QVERIFY2(!texts.join("|").contains(translated), qPrintable(texts.join("|")));
+    // Each plot keeps room for two value labels at least: the panel scrolls instead (with
+    // both hands, a signal and seven devices at 1280x800 a device's plot showed only "0").
+    for (int i = 0; i < plot->axisRectCount(); ++i) {
+        QCPAxis *values = plot->axisRect(i)->axis(QCPAxis::atLeft);
+        int labels = 0;
+        for (double tick : values->tickVector())
+            labels += values->range().contains(tick) ? 1 : 0;
+        QVERIFY2(labels >= 2, qPrintable(QString("plot %1: %2 value label(s) in %3 px")
+                                             .arg(i)
+                                             .arg(labels)
+                                             .arg(plot->axisRect(i)->height())));
+    }
 
     // The router fits its view, every node inside it, and shows what the running router
     // passes on: the detector of a hand that holds something is lit.
     window.findChild<QDockWidget *>("routerDock")->raise();
     QTest::qWait(200);
     QVERIFY(!window.engine().history().activity().isEmpty());
-    QTRY_VERIFY_WITH_TIMEOUT(
-        !window.routerEditor()->scene()->nodeItem("right.force")->state().isEmpty() ||
-            !window.routerEditor()->scene()->nodeItem("left.slip")->state().isEmpty(),
-        20000);
+    const auto lit = [&window] {
+        for (const char *id : {"right.force", "left.slip", "right.engaged", "left.holding"}) {
+            const auto *node = window.routerEditor()->scene()->nodeItem(id);
+            if (node && !node->state().isEmpty())
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(lit(), 20000);
     const QStringList outside = nodesOutsideTheView(window.routerEditor());
     QVERIFY2(outside.isEmpty(), qPrintable(outside.join(", ") + " outside the router's view"));
     QString error;
