@@ -34,6 +34,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSlider>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -520,6 +521,16 @@ void WaveformDesigner::refreshLibrary()
         if (open)
             m_library->setCurrentItem(item);
     }
+    // As wide as its longest row, up to a third of the designer: a duplicate's "(not saved
+    // yet)" was cut at 130 px, in German after "air.squeeze.copy (noch".
+    int widest = 0;
+    for (int i = 0; i < m_library->count(); ++i) {
+        const QListWidgetItem *item = m_library->item(i);
+        widest = std::max(widest, QFontMetrics(item->font()).horizontalAdvance(item->text()));
+    }
+    const int chrome = m_library->iconSize().width() + 2 * m_library->frameWidth() + 24 +
+                       m_library->verticalScrollBar()->sizeHint().width();
+    m_library->setMinimumWidth(std::min(widest + chrome, std::max(130, width() / 3)));
 }
 
 void WaveformDesigner::refreshDevices()

@@ -285,6 +285,16 @@ void TestWaveformDesigner::duplicateSaveOpen()
     const QString path = f.folder.filePath(QStringLiteral("vib.geiger.copy.json"));
     QCOMPARE(f.designer.document()->path(), path);
     QVERIFY(!QFileInfo::exists(path)); // created on first save
+    // The library reads the duplicate's row whole, "(not saved yet)" and all.
+    const QList<QListWidgetItem *> unsaved =
+        library->findItems(QStringLiteral("vib.geiger.copy"), Qt::MatchStartsWith);
+    QCOMPARE(unsaved.size(), 1);
+    QTRY_VERIFY2(
+        library->visualItemRect(unsaved.first()).width() - library->iconSize().width() - 8 >=
+            QFontMetrics(unsaved.first()->font()).horizontalAdvance(unsaved.first()->text()),
+        qPrintable(QString("%1 in %2 px")
+                       .arg(unsaved.first()->text())
+                       .arg(library->visualItemRect(unsaved.first()).width())));
     f.clickTreeNode(QStringLiteral("/tracks/0/sustain"));
     f.typeNumber(QStringLiteral("width"), QStringLiteral("0.04"));
     f.trigger(QStringLiteral("savePattern"));
