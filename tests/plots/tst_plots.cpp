@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // PlotPanel fed from a RunHistory directly: the graphs, threshold lines and message spans
 // it draws, and its controls driven as a user would (spin box, clicks, buttons).
+#include "plotchecks.h"
 #include "plotpanel.h"
 #include "runhistory.h"
 
@@ -128,6 +129,19 @@ void startBimanual(RunHistory &history)
     for (int d = 0; d < 7; ++d)
         devices.push_back({QStringLiteral("band%1").arg(d), QStringLiteral("lra4"), {"m1", "m2"}});
     history.start(devices, thresholds, {"right.force", "right.slip"});
+}
+
+/** The router of a `semhap.router/1` text; null (and a warning) when it does not compile. */
+std::unique_ptr<Router> routerOf(const char *json)
+{
+    RouterGraph graph;
+    LoadError error;
+    std::unique_ptr<Router> router;
+    if (RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), "r.json", &graph, &error))
+        router = Router::compile(graph, &error);
+    if (!router)
+        qWarning("%s", qPrintable(error.toString()));
+    return router;
 }
 
 template<typename T> T *itemNamed(QCustomPlot *plot, const QString &name)
@@ -583,10 +597,7 @@ void TestPlots::manyDevicesScroll()
     // Each with at least two value labels under its title (a device's rect had one, "0", in
     // dish_wiping's dock at 1280x800: issue 33, D12).
     for (int i = 0; i < m_plot->axisRectCount(); ++i) {
-        QCPAxis *values = m_plot->axisRect(i)->axis(QCPAxis::atLeft);
-        int labels = 0;
-        for (double tick : values->tickVector())
-            labels += values->range().contains(tick) ? 1 : 0;
+        const int labels = valueLabelsInView(m_plot->axisRect(i));
         QVERIFY2(labels >= 2, qPrintable(QString("rect %1: %2 value label(s) in %3 px")
                                              .arg(i)
                                              .arg(labels)
@@ -693,12 +704,8 @@ void TestPlots::signalPlotsShowLevelsAndSpans()
         {"from": "rate", "to": "turning"}, {"from": "F", "to": "Fp"}, {"from": "Fp", "to": "soon"},
         {"from": "depth", "to": "speed"}, {"from": "speed", "to": "pushing"}
       ]})";
-    RouterGraph graph;
-    LoadError error;
-    QVERIFY(
-        RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), "r.json", &graph, &error));
-    std::unique_ptr<Router> router = Router::compile(graph, &error);
-    QVERIFY2(router, qPrintable(error.toString()));
+    const std::unique_ptr<Router> router = routerOf(json);
+    QVERIFY(router);
 
     RunHistory history;
     PlotPanel panel(history);
@@ -795,7 +802,6 @@ void TestPlots::signalPlotsShowLevelsAndSpans()
     }
 }
 
-QTEST_MAIN(TestPlots)
 void TestPlots::namesLegendsAndTitlesNeverOverlap_data()
 {
     QTest::addColumn<int>("width");
@@ -825,12 +831,8 @@ void TestPlots::namesLegendsAndTitlesNeverOverlap()
         {"from": "lateral", "to": "right.over.port"}, {"from": "lateral", "to": "right.off.axis"},
         {"from": "lateral", "to": "right.centred"}
       ]})";
-    RouterGraph graph;
-    LoadError error;
-    QVERIFY(
-        RouterGraph::fromJson(QJsonDocument::fromJson(json).object(), "r.json", &graph, &error));
-    std::unique_ptr<Router> router = Router::compile(graph, &error);
-    QVERIFY2(router, qPrintable(error.toString()));
+    const std::unique_ptr<Router> router = routerOf(json);
+    QVERIFY(router);
     RunHistory history;
     PlotPanel panel(history);
     panel.resize(width, 800);
@@ -915,4 +917,5 @@ void TestPlots::namesLegendsAndTitlesNeverOverlap()
         panel.grab().save(QString("%1/plots-names-%2.png").arg(dir).arg(width));
 }
 
+QTEST_MAIN(TestPlots)
 #include "tst_plots.moc"

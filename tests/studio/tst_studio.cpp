@@ -25,6 +25,7 @@
 #include "openwindow.h"
 #include "patternauditioner.h"
 #include "patterndocument.h"
+#include "plotchecks.h"
 #include "plotpanel.h"
 #include "preferencesdialog.h"
 #include "routerdocument.h"
@@ -2323,10 +2324,7 @@ void TestStudio::screenshotsOfEveryPanel()
     // Each plot keeps room for two value labels at least: the panel scrolls instead (with
     // both hands, a signal and seven devices at 1280x800 a device's plot showed only "0").
     for (int i = 0; i < plot->axisRectCount(); ++i) {
-        QCPAxis *values = plot->axisRect(i)->axis(QCPAxis::atLeft);
-        int labels = 0;
-        for (double tick : values->tickVector())
-            labels += values->range().contains(tick) ? 1 : 0;
+        const int labels = valueLabelsInView(plot->axisRect(i));
         QVERIFY2(labels >= 2, qPrintable(QString("plot %1: %2 value label(s) in %3 px")
                                              .arg(i)
                                              .arg(labels)
