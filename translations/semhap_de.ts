@@ -3474,10 +3474,6 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <translation>Eingebaut, schreibgeschützt: zum Bearbeiten duplizieren</translation>
     </message>
     <message>
-        <source>%1 (not saved yet)</source>
-        <translation>%1 (noch nicht gespeichert)</translation>
-    </message>
-    <message>
         <source>virtual (audition only)</source>
         <translation>virtuell (nur Vorhören)</translation>
     </message>
@@ -3612,6 +3608,10 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>New, open, save as, import and export</source>
         <translation>Neu, öffnen, speichern unter, importieren und exportieren</translation>
+    </message>
+    <message>
+        <source>Not saved yet: %1</source>
+        <translation>Noch nicht gespeichert: %1</translation>
     </message>
 </context>
 <context>

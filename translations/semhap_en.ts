@@ -3466,10 +3466,6 @@ Please tell the experimenter that you are done.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (not saved yet)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>virtual (audition only)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3603,6 +3599,10 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>New, open, save as, import and export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved yet: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -34,7 +34,6 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QScrollBar>
 #include <QSlider>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -282,6 +281,8 @@ QWidget *WaveformDesigner::createLibrary()
     layout->addWidget(new QLabel(tr("Library"), box));
     m_library = new QListWidget(box);
     m_library->setObjectName(QStringLiteral("library"));
+    // A long name keeps both ends (the copies of one pattern differ at the end).
+    m_library->setTextElideMode(Qt::ElideMiddle);
     m_library->setToolTip(
         tr("Built-in patterns (locked) and your own, from %1").arg(m_userFolder));
     connect(m_library, &QListWidget::itemActivated, this, &WaveformDesigner::openLibraryItem);
@@ -501,9 +502,12 @@ void WaveformDesigner::refreshLibrary()
         item->setToolTip(pattern.path);
     }
     if (!m_document->path().isEmpty() && !QFileInfo::exists(m_document->path())) {
+        // Marked as editors mark unsaved work, so the name keeps the narrow library's width
+        // ("air.squeeze.copy (noch nicht gespeichert)" was cut after "(noch").
         auto *item = new QListWidgetItem(
-            tr("%1 (not saved yet)").arg(QFileInfo(m_document->path()).completeBaseName()),
+            QStringLiteral("%1 *").arg(QFileInfo(m_document->path()).completeBaseName()),
             m_library);
+        item->setToolTip(tr("Not saved yet: %1").arg(m_document->path()));
         item->setData(PathRole, m_document->path());
         QFont italic = item->font();
         italic.setItalic(true);
@@ -521,16 +525,6 @@ void WaveformDesigner::refreshLibrary()
         if (open)
             m_library->setCurrentItem(item);
     }
-    // As wide as its longest row, up to a third of the designer: a duplicate's "(not saved
-    // yet)" was cut at 130 px, in German after "air.squeeze.copy (noch".
-    int widest = 0;
-    for (int i = 0; i < m_library->count(); ++i) {
-        const QListWidgetItem *item = m_library->item(i);
-        widest = std::max(widest, QFontMetrics(item->font()).horizontalAdvance(item->text()));
-    }
-    const int chrome = m_library->iconSize().width() + 2 * m_library->frameWidth() + 24 +
-                       m_library->verticalScrollBar()->sizeHint().width();
-    m_library->setMinimumWidth(std::min(widest + chrome, std::max(130, width() / 3)));
 }
 
 void WaveformDesigner::refreshDevices()
