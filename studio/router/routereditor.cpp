@@ -383,7 +383,14 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     }
 }
 
-RouterEditor::~RouterEditor() = default;
+RouterEditor::~RouterEditor()
+{
+    // Our own document dies with our children, after this editor's members: its undo stack,
+    // left not clean, says it is clean again as it is destroyed, and showDocument() then ran
+    // on a half-destroyed editor (free(): invalid pointer, once in a CI run).
+    m_undo->disconnect(this);
+    m_document->disconnect(this);
+}
 
 void RouterEditor::createPalette()
 {
