@@ -19,6 +19,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
+#include <algorithm>
 #include <csignal>
 #include <fcntl.h>
 #include <poll.h>
@@ -52,13 +53,27 @@ private:
  * Plays `pattern` on `band` with `semhap play` (`options` after its URI) to the end, then
  * stops the band so that its log is whole; false when either failed.
  */
-bool playThrough(SimulatedBand &band, const QString &pattern, const QStringList &options)
+/**
+ * The frames `semhap play` says it skipped: a host too busy to send a frame in time sends
+ * the newest instead, so a pulse may go with each, the band's doing none of it.
+ */
+int framesSkipped(const QByteArray &playOutput)
+{
+    const QRegularExpressionMatch skipping =
+        QRegularExpression(", (\\d+) skipped").match(QString::fromUtf8(playOutput));
+    return skipping.hasMatch() ? skipping.captured(1).toInt() : 0;
+}
+
+bool playThrough(SimulatedBand &band, const QString &pattern, const QStringList &options,
+                 int *skipped = nullptr)
 {
     QProcess play;
     play.start(Semhap, QStringList{"play", pattern, "--device", band.uri()} + options);
     if (!play.waitForFinished(10000) || play.exitStatus() != QProcess::NormalExit ||
         play.exitCode() != 0)
         return false;
+    if (skipped)
+        *skipped = framesSkipped(play.readAllStandardOutput());
     QTest::qSleep(50); // the band logs the stop-all's zeros
     return band.stop() == 0;
 }
@@ -111,23 +126,32 @@ std::vector<double> risesAt(const std::vector<double> &t, const std::vector<doub
 }
 
 /**
- * The interval between pulses: the least-squares slope of their starts over their index.
- * Each start weighs in, so one pulse the host sent late (a busy machine) moves it little.
+ * The interval between pulses: the median of the slopes between every two of their starts
+ * over their indices (Theil-Sen). Long spans average the frame quantization; a pulse the
+ * host sent late (a busy machine) moves it not at all. A least-squares slope gave 0.0889 s
+ * against 0.0909 s once in ten runs under stress-ng: a late first pulse weighs most there.
+ * `indices` number the pulses (by default 0, 1, 2, …): a pulse lost leaves a gap in them.
  */
-double meanInterval(const std::vector<double> &starts)
+double meanInterval(const std::vector<double> &starts, std::vector<int> indices = {})
 {
-    const double n = double(starts.size());
-    const double meanIndex = (n - 1.0) / 2.0;
-    double meanStart = 0.0;
-    for (const double t : starts)
-        meanStart += t / n;
-    double covariance = 0.0;
-    double variance = 0.0;
-    for (size_t k = 0; k < starts.size(); ++k) {
-        covariance += (double(k) - meanIndex) * (starts[k] - meanStart);
-        variance += (double(k) - meanIndex) * (double(k) - meanIndex);
+    if (indices.empty()) {
+        for (size_t k = 0; k < starts.size(); ++k)
+            indices.push_back(int(k));
     }
-    return covariance / variance;
+    std::vector<double> slopes;
+    for (size_t i = 0; i < starts.size(); ++i) {
+        for (size_t j = i + 1; j < starts.size(); ++j) {
+            if (indices[j] != indices[i])
+                slopes.push_back((starts[j] - starts[i]) / double(indices[j] - indices[i]));
+        }
+    }
+    if (slopes.empty())
+        return 0.0;
+    const auto middle = slopes.begin() + std::ptrdiff_t(slopes.size() / 2);
+    std::nth_element(slopes.begin(), middle, slopes.end());
+    if (slopes.size() % 2)
+        return *middle;
+    return (*middle + *std::max_element(slopes.begin(), middle)) / 2;
 }
 
 /** Each channel's first time at or above `level` after `from`, or -1. */
@@ -198,8 +222,10 @@ void TestBandSim::geigerPulsesReachTheDrivers()
     SimulatedBand band("lra4", m_dir.filePath("band"), log);
     QVERIFY(band.started());
     const double duration = 2.0;
+    int skipped = 0;
     QVERIFY(playThrough(band, "vib.geiger",
-                        {"--intensity", "0.5", "--duration", QString::number(duration)}));
+                        {"--intensity", "0.5", "--duration", QString::number(duration)},
+                        &skipped));
 
     // What the pattern library says the band is sent: its pulses and their width.
     const RenderedPattern rendered = render("vib.geiger", 0.5, qInf(), duration);
@@ -208,12 +234,22 @@ void TestBandSim::geigerPulsesReachTheDrivers()
     const std::vector<double> driven = pulseStarts(lines, 0);
     qInfo("%zu pulses sent, %zu driven; mean interval %.4f s sent, %.4f s driven", sent.size(),
           driven.size(), meanInterval(sent), meanInterval(driven));
-    QVERIFY2(std::abs(int(driven.size()) - int(sent.size())) <= 1,
-             qPrintable(QString("%1 of %2").arg(driven.size()).arg(sent.size())));
+    // A pulse may go with each frame the host skipped, none otherwise.
+    QVERIFY2(std::abs(int(driven.size()) - int(sent.size())) <= 1 + skipped,
+             qPrintable(QString("%1 of %2, %3 skipped by the host")
+                            .arg(driven.size())
+                            .arg(sent.size())
+                            .arg(skipped)));
     // The rate, to a frame period over the run: the drivers' RTP writes follow the pattern.
+    // Each driven pulse is numbered as the sent one nearest it, so a lost one leaves a gap.
+    QVERIFY(!driven.empty() && !sent.empty());
+    const double interval = meanInterval(sent);
+    std::vector<int> numbers;
+    for (double t : driven)
+        numbers.push_back(int(std::lround((t - driven.front()) / interval)));
     const double period = 1.0 / DeviceModelLibrary::builtin("lra4")->rate();
-    QVERIFY2(std::abs(meanInterval(driven) - meanInterval(sent)) < period / 4,
-             qPrintable(QString::number(meanInterval(driven))));
+    QVERIFY2(std::abs(meanInterval(driven, numbers) - interval) < period / 4,
+             qPrintable(QString::number(meanInterval(driven, numbers))));
     // Every driver pulses with the first (the pattern drives every channel).
     for (size_t c = 1; c < 4; ++c)
         QCOMPARE(pulseStarts(lines, c).size(), driven.size());
@@ -395,12 +431,7 @@ void TestBandSim::garbageIsCountedAndSurvived()
     ::close(fd);
     QVERIFY(play.waitForFinished(10000));
     QCOMPARE(play.exitCode(), 0);
-    // A host too busy to send a frame in time sends the newest instead (it says so): a
-    // pulse may go with each frame it skipped, the band's doing none of it.
-    const QRegularExpressionMatch skipping =
-        QRegularExpression(", (\\d+) skipped")
-            .match(QString::fromUtf8(play.readAllStandardOutput()));
-    const int skipped = skipping.hasMatch() ? skipping.captured(1).toInt() : 0;
+    const int skipped = framesSkipped(play.readAllStandardOutput());
 
     // Every burst counted, by the same rule as the host's, and nothing else lost.
     const int after = garbled(probe(band.uri()));
