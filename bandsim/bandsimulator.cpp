@@ -39,6 +39,8 @@ void BandSimObserver::hostBytes(double, const std::uint8_t *, size_t) {}
 
 void BandSimObserver::driverWrite(double, int, std::uint8_t, std::uint8_t) {}
 
+void BandSimObserver::fellBehind(double, double, double) {}
+
 QStringList BandSimulator::models()
 {
     return {Lra4, Pneumatic6};
@@ -142,8 +144,11 @@ bool BandSimulator::run(const std::function<bool()> &quit)
     const auto wall = [&start] { return monotonicSeconds() - start; };
     while (!quit() && m_error.isEmpty()) {
         const double behind = wall() - seconds();
-        if (behind > MaxLag)
+        if (behind > MaxLag) {
             start += behind - MaxLag;
+            if (m_observer)
+                m_observer->fellBehind(seconds(), behind, behind - MaxLag);
+        }
         // Up to now (a sleeping chip skips there), so that the host's bytes enter the UART
         // when they arrived; then a busy chip runs ahead by a slice at most, until it sleeps.
         const double now = wall();

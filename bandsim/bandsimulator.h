@@ -32,7 +32,10 @@ struct BandSimOptions
     QString logPath;      ///< JSON Lines state log, as `semhap emulate --log`; empty: none
 };
 
-/** What an in-process observer (a test, the benchmark) may watch; called on run()'s thread. */
+/**
+ * What an in-process observer (the command's report, a test, the benchmark) may watch;
+ * called on run()'s thread.
+ */
 class BandSimObserver
 {
 public:
@@ -41,6 +44,13 @@ public:
     virtual void hostBytes(double t, const std::uint8_t *bytes, size_t size);
     /** The firmware wrote `value` to register `reg` of channel `channel`'s DRV2605L. */
     virtual void driverWrite(double t, int channel, std::uint8_t reg, std::uint8_t value);
+    /**
+     * At simulated time `t` the chip was `behind` seconds behind the wall clock (its process
+     * did not run) and gave up catching up on `skipped` of them: that much wall time is
+     * missing from the simulated time line there, so host bytes around it arrive closer
+     * together in `t` than they were sent.
+     */
+    virtual void fellBehind(double t, double behind, double skipped);
 };
 
 /**

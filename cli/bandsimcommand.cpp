@@ -6,6 +6,29 @@
 
 namespace semhap {
 
+namespace {
+
+/** Passes each stretch the chip fell behind the wall clock on to a report line. */
+class LagReport : public BandSimObserver
+{
+public:
+    explicit LagReport(std::function<void(const QString &)> report) : m_report(std::move(report))
+    {}
+    void fellBehind(double t, double behind, double skipped) override
+    {
+        m_report(BandSimCommand::tr("at %1 s the chip was %2 s behind the wall clock; %3 s of "
+                                    "wall time is not simulated there")
+                     .arg(t, 0, 'f', 4)
+                     .arg(behind, 0, 'f', 4)
+                     .arg(skipped, 0, 'f', 4));
+    }
+
+private:
+    std::function<void(const QString &)> m_report;
+};
+
+} // namespace
+
 QString BandSimCommand::summary() const
 {
     return tr("Runs a reference band's firmware image on a simulated ATmega328P, its UART on "
@@ -60,6 +83,8 @@ int BandSimCommand::execute(const QCommandLineParser &parser)
     QString reason;
     if (!band.open(&reason))
         return inputError(reason);
+    LagReport lag([this](const QString &line) { report(line); });
+    band.setObserver(&lag);
     QuitSignal::install();
     m_out << band.address() << '\n';
     flushOutputs(); // whoever started it waits for this line

@@ -50,10 +50,6 @@ private:
 };
 
 /**
- * Plays `pattern` on `band` with `semhap play` (`options` after its URI) to the end, then
- * stops the band so that its log is whole; false when either failed.
- */
-/**
  * The frames `semhap play` says it skipped: a host too busy to send a frame in time sends
  * the newest instead, so a pulse may go with each, the band's doing none of it.
  */
@@ -64,6 +60,35 @@ int framesSkipped(const QByteArray &playOutput)
     return skipping.hasMatch() ? skipping.captured(1).toInt() : 0;
 }
 
+/**
+ * The log on the wall clock's time line: each line moved later by the wall time the band
+ * said (on its standard error) it did not simulate before it, when its process was kept
+ * from running.
+ */
+void onWallTime(std::vector<BandLogLine> &lines, const QByteArray &bandErrors)
+{
+    static const QRegularExpression lag(
+        "at ([0-9.]+) s the chip was [0-9.]+ s behind the wall clock; ([0-9.]+) s of wall time");
+    std::vector<std::pair<double, double>> skips; // simulated time, wall time skipped there
+    QRegularExpressionMatchIterator it = lag.globalMatch(QString::fromUtf8(bandErrors));
+    while (it.hasNext()) {
+        const QRegularExpressionMatch m = it.next();
+        skips.emplace_back(m.captured(1).toDouble(), m.captured(2).toDouble());
+        qInfo("the band skipped %.4f s of wall time at %.4f s", skips.back().second,
+              skips.back().first);
+    }
+    for (BandLogLine &line : lines) {
+        double skipped = 0.0;
+        for (const auto &[at, wall] : skips)
+            skipped += line.t > at ? wall : 0.0;
+        line.t += skipped;
+    }
+}
+
+/**
+ * Plays `pattern` on `band` with `semhap play` (`options` after its URI) to the end, then
+ * stops the band so that its log is whole; false when either failed.
+ */
 bool playThrough(SimulatedBand &band, const QString &pattern, const QStringList &options,
                  int *skipped = nullptr)
 {
@@ -230,7 +255,9 @@ void TestBandSim::geigerPulsesReachTheDrivers()
     // What the pattern library says the band is sent: its pulses and their width.
     const RenderedPattern rendered = render("vib.geiger", 0.5, qInf(), duration);
     const std::vector<double> sent = risesAt(rendered.t, rendered.values[0]);
-    const std::vector<BandLogLine> lines = readBandLog(log);
+    // Pulses keep their wall-clock spacing, also where the band's process did not run.
+    std::vector<BandLogLine> lines = readBandLog(log);
+    onWallTime(lines, band.errors());
     const std::vector<double> driven = pulseStarts(lines, 0);
     qInfo("%zu pulses sent, %zu driven; mean interval %.4f s sent, %.4f s driven", sent.size(),
           driven.size(), meanInterval(sent), meanInterval(driven));
