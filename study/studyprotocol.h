@@ -64,10 +64,10 @@ struct StudyProtocol
          */
         QStringList conditions;
 
-        /** Whether the item is asked after condition `id` (afterCondition items). */
-        bool asksAfter(const QString &id) const
+        /** Whether the item is asked after condition `condition` (afterCondition items). */
+        bool asksAfter(const QString &condition) const
         {
-            return conditions.isEmpty() || conditions.contains(id);
+            return conditions.isEmpty() || conditions.contains(condition);
         }
 
         /**

@@ -24,6 +24,7 @@
 #include "sessionreplay.h"
 #include "simviewport.h"
 #include "spacemouseinput.h"
+#include "statusbar.h"
 #include "studio.h"
 #include "studydocument.h"
 #include "studyexport.h"
@@ -755,6 +756,7 @@ void MainWindow::showManual()
 
 void MainWindow::createStatusBar()
 {
+    setStatusBar(new StatusBar(this));
     const auto label = [this](const QString &name) {
         auto *l = new QLabel(this);
         l->setObjectName(name);

@@ -17,6 +17,7 @@
 #include "sessionreader.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
+#include "statusbar.h"
 #include "widgetchecks.h"
 #include "workspace.h"
 #include "world.h"
@@ -28,6 +29,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
@@ -41,6 +43,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
+#include <QToolTip>
 #include <QToolButton>
 #include <QTranslator>
 #include <QUdpSocket>
@@ -70,6 +73,8 @@ private slots:
     void routerStatusTellsTheReplayFromTheRun();
     void replayWordsFitTheWindow_data();
     void replayWordsFitTheWindow();
+    void statusBarKeepsItsWordsApart_data();
+    void statusBarKeepsItsWordsApart();
     void routerStatusGoesWithAnotherRouter_data();
     void routerStatusGoesWithAnotherRouter();
     void routerPickerShowsTheWholeName_data();
@@ -778,6 +783,70 @@ void TestStudioSessions::routerStatusTellsTheReplayFromTheRun()
     openSessionWithKeys(window, path);
     QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
     QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
+}
+
+void TestStudioSessions::statusBarKeepsItsWordsApart_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("de-1280x800") << "de" << QSize(1280, 800);
+    QTest::newRow("en-1280x800") << "en" << QSize(1280, 800);
+    QTest::newRow("de-1920x1080") << "de" << QSize(1920, 1080);
+}
+
+// Issue 33, D12: while recording, the recording's readout leaves a message a third of the
+// bar, and a longer message ran into it, cut mid-letter against "Aufnahme nach …".
+void TestStudioSessions::statusBarKeepsItsWordsApart()
+{
+    QFETCH(QString, language);
+    QFETCH(QSize, size);
+    const Speaking speaking(language);
+    QVERIFY(speaking.loaded);
+    Workspace workspace;
+    StudioOptions options = studioOptions();
+    options.size = size;
+    MainWindow window(workspace, options);
+    QVERIFY(openWindow(window));
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(window.engine().isRecording());
+    auto *recording = window.findChild<QLabel *>("recordLabel");
+    QTRY_VERIFY(!recording->text().isEmpty());
+    auto *bar = qobject_cast<StatusBar *>(window.statusBar());
+    QVERIFY(bar);
+
+    // A short message whole; a long one (an error's, say) ends in "…" a space before the
+    // readouts, the whole of it in the tooltip.
+    QTest::keyClick(&window, Qt::Key_Escape); // Stop all says so in the bar
+    QVERIFY(bar->currentMessage().startsWith(language == "de" ? "Gestoppt" : "Stopped"));
+    QCOMPARE(bar->shownMessage(), bar->currentMessage());
+    const QString error = QString("/home/experimenter/studies/%1: cannot write: ").arg(
+                              QString(40, QChar('x'))) +
+                          "No space left on device";
+    bar->showMessage(error, 10000);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    const QRect room = bar->messageRect();
+    const QRect readout(recording->mapTo(bar, QPoint(0, 0)), recording->size());
+    const int space = bar->fontMetrics().horizontalAdvance("  ");
+    QVERIFY2(room.right() < readout.left() - space / 2,
+             qPrintable(QString("%1 %2").arg(room.right()).arg(readout.left())));
+    QCOMPARE(clippedTexts(bar), QStringList()); // and the readouts whole
+    const QString shown = bar->shownMessage();
+    QVERIFY(bar->fontMetrics().horizontalAdvance(shown) <= room.width());
+    if (bar->fontMetrics().horizontalAdvance(error) > room.width()) {
+        QVERIFY2(shown.endsWith(QChar(0x2026)), qPrintable(shown));
+        QHelpEvent help(QEvent::ToolTip, room.center(), bar->mapToGlobal(room.center()));
+        QCoreApplication::sendEvent(bar, &help);
+        QTRY_COMPARE(QToolTip::text(), error);
+    } else {
+        QCOMPARE(shown, error);
+    }
+    if (const QString shots = qEnvironmentVariable("SEMHAP_SCREENSHOTS"); !shots.isEmpty()) {
+        QTest::qWait(100); // painted, for the picture
+        window.grab().save(QString("%1/statusbar-%2.png").arg(shots, QTest::currentDataTag()));
+    }
+    QToolTip::hideText();
+    QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(!window.engine().isRecording());
 }
 
 void TestStudioSessions::replayWordsFitTheWindow_data()
