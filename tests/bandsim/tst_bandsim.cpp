@@ -280,18 +280,27 @@ void TestBandSim::geigerPulsesReachTheDrivers()
     // Every driver pulses with the first (the pattern drives every channel).
     for (size_t c = 1; c < 4; ++c)
         QCOMPARE(pulseStarts(lines, c).size(), driven.size());
-    // Each pulse lasts as long as the pattern's, to a frame period either way.
+    // Each pulse lasts as long as the pattern's, to a frame period either way: the median
+    // pulse, as a moment either process was kept from running (a loaded machine) moves an
+    // edge of the pulse it falls in by up to that long.
     size_t sentHigh = 0;
     for (double v : rendered.values[0])
         sentHigh += v > 0.5 ? 1 : 0;
     const double sentWidth = double(sentHigh) * period / double(sent.size());
-    double drivenHigh = 0.0;
-    for (size_t k = 1; k < lines.size(); ++k) {
-        if (lines[k - 1].setpoint[0] > 0.5)
-            drivenHigh += lines[k].t - lines[k - 1].t;
+    std::vector<double> widths;
+    double risen = -1.0;
+    for (const BandLogLine &line : lines) {
+        if (line.setpoint[0] > 0.5 && risen < 0)
+            risen = line.t;
+        else if (line.setpoint[0] <= 0.5 && risen >= 0) {
+            widths.push_back(line.t - risen);
+            risen = -1.0;
+        }
     }
-    const double drivenWidth = drivenHigh / double(driven.size());
-    qInfo("pulse width %.4f s sent, %.4f s driven", sentWidth, drivenWidth);
+    QCOMPARE(widths.size(), driven.size());
+    std::nth_element(widths.begin(), widths.begin() + long(widths.size() / 2), widths.end());
+    const double drivenWidth = widths[widths.size() / 2];
+    qInfo("pulse width %.4f s sent, %.4f s driven (the median)", sentWidth, drivenWidth);
     QVERIFY2(std::abs(drivenWidth - sentWidth) < period, qPrintable(QString::number(drivenWidth)));
     QVERIFY(allAt(lines.back(), 0.0)); // stop-all at the end
 }
