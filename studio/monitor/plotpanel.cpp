@@ -521,7 +521,7 @@ bool PlotPanel::nameLevels(QCPAxisRect *rect)
         const Label &above = labels[i];
         const Label &below = labels[i + 1];
         const double apart = (above.value() - below.value()) * pixelsPerUnit;
-        if (apart >= (above.lines.size() + below.lines.size()) * lineHeight / 2) {
+        if (apart >= double(above.lines.size() + below.lines.size()) * lineHeight / 2) {
             ++i;
             continue;
         }
