@@ -5,6 +5,7 @@
 #include "comparecommand.h"
 #include "convertcommand.h"
 #include "devicescommand.h"
+#include "distinctcommand.h"
 #include "emulatecommand.h"
 #include "exportcommand.h"
 #include "listencommand.h"
@@ -28,7 +29,7 @@ const QStringList &commandNames()
         QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
         QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("bandsim"),
         QStringLiteral("convert"), QStringLiteral("replay"),  QStringLiteral("export"),
-        QStringLiteral("listen"),  QStringLiteral("study")};
+        QStringLiteral("listen"),  QStringLiteral("study"),   QStringLiteral("distinct")};
     return names;
 }
 
@@ -64,6 +65,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<ListenCommand>(m_io);
     if (name == QLatin1String("study"))
         return std::make_unique<StudyCommand>(m_io);
+    if (name == QLatin1String("distinct"))
+        return std::make_unique<DistinctCommand>(m_io);
     return nullptr;
 }
 

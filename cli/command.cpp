@@ -328,24 +328,34 @@ bool Command::patternArguments(const QCommandLineParser &parser, QString *patter
     return true;
 }
 
-bool Command::renderNamedPattern(const QString &pattern, RenderOptions options,
-                                 RenderedPattern *rendered, DeviceModelPtr *model)
+bool Command::loadNamedPattern(const QString &pattern, PatternPtr *loaded,
+                               DeviceModelPtr *model)
 {
     LoadError error;
-    PatternPtr loaded = PatternLibrary::load(pattern, &error);
-    if (!loaded) {
+    *loaded = PatternLibrary::load(pattern, &error);
+    if (!*loaded) {
         inputError(error.toString());
         return false;
     }
-    *model = DeviceModelLibrary::builtin(loaded->model());
+    *model = DeviceModelLibrary::builtin((*loaded)->model());
     if (!*model) {
         inputError(LoadError::at(pattern, QStringLiteral("/model"),
                                  tr("unknown device model '%1' (built-in: %2)")
-                                     .arg(loaded->model(), DeviceModelLibrary::builtinNames().join(
-                                                               QStringLiteral(", "))))
+                                     .arg((*loaded)->model(),
+                                          DeviceModelLibrary::builtinNames().join(
+                                              QStringLiteral(", "))))
                        .toString());
         return false;
     }
+    return true;
+}
+
+bool Command::renderNamedPattern(const QString &pattern, RenderOptions options,
+                                 RenderedPattern *rendered, DeviceModelPtr *model)
+{
+    PatternPtr loaded;
+    if (!loadNamedPattern(pattern, &loaded, model))
+        return false;
     if (options.rate <= 0)
         options.rate = (*model)->rate();
     QString reason;

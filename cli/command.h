@@ -141,6 +141,11 @@ protected:
     bool patternArguments(const QCommandLineParser &parser, QString *pattern,
                           RenderOptions *options);
     /**
+     * Loads a pattern (a library name or a file) and its built-in model; false after an
+     * error line (exit code 1).
+     */
+    bool loadNamedPattern(const QString &pattern, PatternPtr *loaded, DeviceModelPtr *model);
+    /**
      * Loads a pattern and renders it on its built-in model (at the model's rate when
      * `options.rate` is 0); false after an error line (exit code 1).
      */

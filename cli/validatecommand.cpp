@@ -2,6 +2,7 @@
 #include "validatecommand.h"
 
 #include "devicemodel.h"
+#include "distinctiveness.h"
 #include "gripperadapter.h"
 #include "grippercheck.h"
 #include "gripperlibrary.h"
@@ -179,7 +180,10 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
                 graph.baseDir = QFileInfo(doc.path).absolutePath();
                 graph.models.insert(graph.models.end(), models.begin(), models.end());
                 reportWarnings(graph);
-                ok = Router::compile(graph, &error) != nullptr;
+                const std::unique_ptr<Router> router = Router::compile(graph, &error);
+                ok = router != nullptr;
+                if (ok)
+                    reportConfusable(doc.path, *router);
                 what = tr("router '%1'").arg(graph.name);
             }
         } else if (format == QLatin1String(GripperAdapter::Format)) {
@@ -233,6 +237,23 @@ int ValidateCommand::execute(const QCommandLineParser &parser)
         }
     }
     return invalid == 0 ? ExitOk : ExitInvalidInput;
+}
+
+void ValidateCommand::reportConfusable(const QString &path, const Router &router)
+{
+    std::vector<BandDistinctiveness> bands;
+    QString reason;
+    if (!Distinctiveness().bands(router, 0.5, &bands, &reason)) {
+        report(tr("%1: warning: its patterns cannot be compared: %2").arg(path, reason));
+        return;
+    }
+    for (const BandDistinctiveness &band : bands) {
+        for (const BandDistinctiveness::Pair &pair : band.confusable)
+            report(tr("%1: warning: on %2, %3 and %4 feel %5 JND apart: a person will confuse "
+                      "them (semhap distinct)")
+                       .arg(path, band.device, band.messages[pair.a], band.messages[pair.b])
+                       .arg(pair.distance, 0, 'f', 2));
+    }
 }
 
 } // namespace semhap

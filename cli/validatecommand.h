@@ -5,6 +5,8 @@
 
 namespace semhap {
 
+class Router;
+
 /** `semhap validate`: checks pattern, router, device model and scene files. */
 class ValidateCommand : public Command
 {
@@ -18,6 +20,10 @@ public:
 protected:
     void configure(QCommandLineParser &parser) override;
     int execute(const QCommandLineParser &parser) override;
+
+private:
+    /** Warns of the messages a router plays on one band that a person will confuse. */
+    void reportConfusable(const QString &path, const Router &router);
 };
 
 } // namespace semhap

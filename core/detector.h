@@ -9,6 +9,7 @@
 #include <QString>
 
 #include <memory>
+#include <vector>
 
 namespace semhap {
 
@@ -37,6 +38,8 @@ public:
     virtual bool isActive(Message message, double *intensity = nullptr) const = 0;
     /** Appends a begin at t for each message active now (MessageTracker::appendActive). */
     virtual void appendActive(double t, EventBuffer &out) const = 0;
+    /** A begin of each message it may send, at `intensity` (Router::messageRoutes). */
+    virtual std::vector<SemanticEvent> probes(double intensity) const = 0;
 
     int node() const { return m_node; }
     Gripper gripper() const { return m_gripper; }

@@ -76,12 +76,18 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
     const QString root;
     if (!reader.checkKeys(json, root,
                           {QLatin1String("format"), QLatin1String("name"),
-                           QLatin1String("description"), QLatin1String("rate"),
-                           QLatin1String("channels"), QLatin1String("response")}) ||
+                           QLatin1String("description"), QLatin1String("modality"),
+                           QLatin1String("rate"), QLatin1String("channels"),
+                           QLatin1String("response")}) ||
         !reader.string(json, root, QLatin1String("name"), &m_name) ||
         !reader.string(json, root, QLatin1String("description"), &m_description, false) ||
+        !reader.string(json, root, QLatin1String("modality"), &m_modality, false) ||
         !reader.number(json, root, QLatin1String("rate"), &m_rate))
         return false;
+    if (!m_modality.isEmpty() && !modalities().contains(m_modality))
+        return reader.fail(QStringLiteral("/modality"),
+                           QStringLiteral("unknown modality '%1' (modalities: %2)")
+                               .arg(m_modality, modalities().join(QStringLiteral(", "))));
     if (m_name.isEmpty() || m_name.contains(QLatin1Char('/')))
         return reader.fail(QStringLiteral("/name"),
                            QStringLiteral("must be a non-empty name without '/'"));
@@ -107,12 +113,17 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
         ChannelSpec spec;
         if (!reader.checkKeys(c, where,
                               {QLatin1String("name"), QLatin1String("unit"), QLatin1String("min"),
-                               QLatin1String("max")}) ||
+                               QLatin1String("max"), QLatin1String("angle")}) ||
             !reader.string(c, where, QLatin1String("name"), &spec.name) ||
             !reader.string(c, where, QLatin1String("unit"), &spec.unit, false) ||
             !reader.number(c, where, QLatin1String("min"), &spec.min, false) ||
-            !reader.number(c, where, QLatin1String("max"), &spec.max, false))
+            !reader.number(c, where, QLatin1String("max"), &spec.max, false) ||
+            !reader.number(c, where, QLatin1String("angle"), &spec.angle, false))
             return false;
+        if (c.contains(QLatin1String("angle")) && !(spec.angle >= 0 && spec.angle < 360))
+            return reader.fail(where + QStringLiteral("/angle"),
+                               QStringLiteral("must be at least 0 and below 360 degrees, got %1")
+                                   .arg(spec.angle));
         if (spec.name.isEmpty())
             return reader.fail(where + QStringLiteral("/name"), QStringLiteral("is empty"));
         if (channelIndex(spec.name) >= 0)
@@ -145,6 +156,8 @@ QJsonObject DeviceModel::toJson() const
                       {QStringLiteral("max"), c.max}};
         if (!c.unit.isEmpty())
             o.insert(QStringLiteral("unit"), c.unit);
+        if (!std::isnan(c.angle))
+            o.insert(QStringLiteral("angle"), c.angle);
         channels.append(o);
     }
     QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)},
@@ -153,9 +166,18 @@ QJsonObject DeviceModel::toJson() const
                      {QStringLiteral("channels"), channels}};
     if (!m_description.isEmpty())
         json.insert(QStringLiteral("description"), m_description);
+    if (!m_modality.isEmpty())
+        json.insert(QStringLiteral("modality"), m_modality);
     if (!m_response.isEmpty())
         json.insert(QStringLiteral("response"), m_response);
     return json;
+}
+
+const QStringList &DeviceModel::modalities()
+{
+    static const QStringList names{QStringLiteral("vibration"), QStringLiteral("pressure"),
+                                   QStringLiteral("sight")};
+    return names;
 }
 
 QStringList DeviceModel::channelNames() const

@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,11 @@ struct ChannelSpec
     QString unit;
     double min = 0.0;
     double max = 1.0;
+    /**
+     * Where the channel's actuator sits around the band, in degrees (0 on the back of the
+     * wrist, 90 towards the thumb, 180 on the palm side); NaN when the model does not say.
+     */
+    double angle = std::numeric_limits<double>::quiet_NaN();
 };
 
 /**
@@ -42,6 +48,13 @@ public:
 
     const QString &name() const { return m_name; }
     const QString &description() const { return m_description; }
+    /**
+     * The sense its output reaches: `vibration`, `pressure` or `sight` (Modalities); empty
+     * when the model does not say, and then it cannot be compared by perception.
+     */
+    const QString &modality() const { return m_modality; }
+    /** The modalities a model may name, in the order docs list them. */
+    static const QStringList &modalities();
     const std::vector<ChannelSpec> &channels() const { return m_channels; }
     int channelCount() const { return int(m_channels.size()); }
     QStringList channelNames() const;
@@ -78,6 +91,7 @@ private:
 
     QString m_name;
     QString m_description;
+    QString m_modality;
     std::vector<ChannelSpec> m_channels;
     double m_rate = 100.0;
     double m_latency = 0.0;

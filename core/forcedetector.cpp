@@ -133,4 +133,9 @@ void ForceDetector::appendActive(double t, EventBuffer &out) const
     m_break.appendActive(t, out);
 }
 
+std::vector<SemanticEvent> ForceDetector::probes(double intensity) const
+{
+    return {m_grasp.probe(intensity), m_break.probe(intensity)};
+}
+
 } // namespace semhap

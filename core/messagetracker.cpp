@@ -68,6 +68,15 @@ void MessageTracker::appendActive(double t, EventBuffer &out) const
         append(t, EventPhase::Begin, out);
 }
 
+SemanticEvent MessageTracker::probe(double intensity) const
+{
+    SemanticEvent event = m_template;
+    event.t = 0.0;
+    event.phase = EventPhase::Begin;
+    event.intensity = intensity;
+    return event;
+}
+
 void MessageTracker::append(double t, EventPhase phase, EventBuffer &out) const
 {
     SemanticEvent event = m_template;

@@ -36,6 +36,8 @@ public:
      * that starts now (a recording started mid-grasp) learns it is open.
      */
     void appendActive(double t, EventBuffer &out) const;
+    /** A begin of this message at t = 0 with `intensity`: what Router::messageRoutes sends. */
+    SemanticEvent probe(double intensity) const;
 
     bool isActive() const { return m_active; }
     /** Whether the condition holds but has not yet held for minDuration. */

@@ -61,6 +61,14 @@ bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
     std::vector<PlayerInput::Route> routes;
     if (!resolvePatternRoutes(*pattern, model, {}, &routes, reason))
         return false;
+    renderRoutedPattern(pattern, routes, model, options, result);
+    return true;
+}
+
+void renderRoutedPattern(const PatternPtr &pattern, const std::vector<PlayerInput::Route> &routes,
+                         const DeviceModel &model, const RenderOptions &options,
+                         RenderedPattern *result)
+{
     const auto samples = size_t(std::max(0.0, std::round(options.duration * options.rate)));
     result->channels = model.channelNames();
     result->t.resize(samples);
@@ -83,7 +91,6 @@ bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
         for (int c = 0; c < model.channelCount(); ++c)
             result->values[size_t(c)][k] = frame[size_t(c)];
     }
-    return true;
 }
 
 } // namespace semhap

@@ -56,5 +56,9 @@ struct RenderedPattern
  */
 bool renderPattern(const PatternPtr &pattern, const DeviceModel &model,
                    const RenderOptions &options, RenderedPattern *result, QString *reason);
+/** As renderPattern, through `routes` resolved already (a router's pattern node's). */
+void renderRoutedPattern(const PatternPtr &pattern, const std::vector<PlayerInput::Route> &routes,
+                         const DeviceModel &model, const RenderOptions &options,
+                         RenderedPattern *result);
 
 } // namespace semhap

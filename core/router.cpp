@@ -756,7 +756,7 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
     if (!problem.isEmpty())
         return fail(where, problem);
     if (auto *pattern = dynamic_cast<PatternNode *>(runtime)) {
-        auto input = std::make_unique<VoiceInput>(source.pattern);
+        auto input = std::make_unique<VoiceInput>(source.pattern, device);
         input->routes = std::move(routes);
         m_router->m_player.addInput(device, input.get());
         pattern->voices.push_back(std::move(input));
@@ -942,6 +942,39 @@ std::vector<ThresholdLevels> Router::thresholds() const
         list.push_back(t);
     }
     return list;
+}
+
+std::vector<MessageRoute> Router::messageRoutes(double intensity) const
+{
+    std::vector<MessageRoute> routes;
+    for (size_t source = 0; source < m_nodes.size(); ++source) {
+        const RuntimeNode *node = m_nodes[source].get();
+        std::vector<SemanticEvent> messages;
+        if (const auto *detector = dynamic_cast<const DetectorNode *>(node))
+            messages = detector->detector().probes(intensity);
+        else if (const auto *sender = dynamic_cast<const MessageSourceNode *>(node))
+            messages.push_back(sender->probeMessage(intensity));
+        for (const SemanticEvent &message : messages) {
+            ProbeWalk walk;
+            node->probeTargets(message, &walk);
+            for (const auto &[patternNode, arrived] : walk.hits) {
+                const auto at = std::find_if(m_nodes.begin(), m_nodes.end(),
+                                             [&](const auto &n) { return n.get() == patternNode; });
+                for (const std::unique_ptr<VoiceInput> &voice : patternNode->voices) {
+                    MessageRoute route;
+                    route.source = int(source);
+                    route.message = message;
+                    route.intensity = arrived.intensity;
+                    route.pattern = int(at - m_nodes.begin());
+                    route.played = voice->pattern;
+                    route.device = voice->device;
+                    route.routes = voice->routes;
+                    routes.push_back(std::move(route));
+                }
+            }
+        }
+    }
+    return routes;
 }
 
 RouterGraph Router::selfContained() const

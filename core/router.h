@@ -50,6 +50,18 @@ struct ThresholdLevels
     bool levelsInSignalUnits = false;
 };
 
+/** A message that plays a pattern on a device: what Router::messageRoutes finds. */
+struct MessageRoute
+{
+    int source = -1;        ///< the node that sends the message (graph order)
+    SemanticEvent message;  ///< a begin of it, as sent: gripper, message, category
+    double intensity = 0.0; ///< as it reaches the pattern (curves on the way map it)
+    int pattern = -1;       ///< the pattern node (graph order)
+    PatternPtr played;      ///< the pattern it plays, its node's parameters baked in
+    int device = -1;        ///< the player's index of the device
+    std::vector<PlayerInput::Route> routes; ///< which device channel each track drives
+};
+
 /**
  * A router graph compiled to run: detectors, logic, pattern voices and the player with its
  * devices. Compiling checks everything (types, ports, cycles, patterns, models, channels)
@@ -109,6 +121,13 @@ public:
     std::vector<const Detector *> detectors() const;
     /** The threshold nodes, in graph order: the signals they read and their levels. */
     std::vector<ThresholdLevels> thresholds() const;
+    /**
+     * Every message a detector, threshold or compose node may send, followed through the
+     * graph at `intensity` to each pattern it plays on each device: filters match it, curves
+     * map its intensity, gates are taken as open. In graph order of the sources, then of the
+     * patterns, then of the devices. What `semhap distinct` compares per band.
+     */
+    std::vector<MessageRoute> messageRoutes(double intensity) const;
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
     const QStringList &nodeIds() const { return m_nodeIds; }
     const RouterGraph &graph() const { return m_graph; }

@@ -63,6 +63,18 @@ void RuntimeNode::emitEvent(const SemanticEvent &event)
         target.node->onEvent(target.port, event);
 }
 
+void RuntimeNode::probe(int port, const SemanticEvent &event, ProbeWalk *walk) const
+{
+    if (walk->visited.insert({this, port}).second)
+        probeTargets(event, walk);
+}
+
+void RuntimeNode::probeTargets(const SemanticEvent &event, ProbeWalk *walk) const
+{
+    for (const RouteTarget &target : eventTargets)
+        target.node->probe(target.port, event, walk);
+}
+
 void RuntimeNode::reportActivity(const SemanticEvent &event)
 {
     const MessageKey key = PassedMessages::keyOf(event);
@@ -322,17 +334,31 @@ void ComposeNode::onEvent(int port, const SemanticEvent &event)
     update(event.t, condition, intensity);
 }
 
-void FilterNode::onEvent(int, const SemanticEvent &event)
+bool FilterNode::passes(const SemanticEvent &event) const
 {
     const auto bit = [](auto value) { return 1u << unsigned(value); };
-    if (!m_messages.empty() &&
-        std::find(m_messages.begin(), m_messages.end(), event.message) == m_messages.end())
-        return;
-    if (m_categories && !(m_categories & bit(event.category)))
-        return;
-    if (m_grippers && !(m_grippers & bit(event.gripper)))
-        return;
-    emitEvent(event);
+    return (m_messages.empty() ||
+            std::find(m_messages.begin(), m_messages.end(), event.message) != m_messages.end()) &&
+           (!m_categories || (m_categories & bit(event.category))) &&
+           (!m_grippers || (m_grippers & bit(event.gripper)));
+}
+
+void FilterNode::onEvent(int, const SemanticEvent &event)
+{
+    if (passes(event))
+        emitEvent(event);
+}
+
+void FilterNode::probe(int port, const SemanticEvent &event, ProbeWalk *walk) const
+{
+    if (passes(event))
+        RuntimeNode::probe(port, event, walk);
+}
+
+void GateNode::probe(int port, const SemanticEvent &event, ProbeWalk *walk) const
+{
+    if (port == 0)
+        RuntimeNode::probe(port, event, walk);
 }
 
 void GateNode::onEvent(int port, const SemanticEvent &event)
@@ -443,6 +469,13 @@ void DebounceNode::fireTimers(double t)
     }
 }
 
+void CurveNode::probe(int port, const SemanticEvent &event, ProbeWalk *walk) const
+{
+    SemanticEvent mapped = event;
+    mapped.intensity = std::clamp(m_curve.map(event.intensity), 0.0, 1.0);
+    RuntimeNode::probe(port, mapped, walk);
+}
+
 void CurveNode::onEvent(int, const SemanticEvent &event)
 {
     const MessageKey key = ActiveMessages::keyOf(event);
@@ -462,6 +495,12 @@ void CurveNode::onEvent(int, const SemanticEvent &event)
         return;
     entry->last = mapped;
     emitEvent(mapped);
+}
+
+void PatternNode::probe(int port, const SemanticEvent &event, ProbeWalk *walk) const
+{
+    if (walk->visited.insert({this, port}).second)
+        walk->hits.emplace_back(this, event);
 }
 
 void PatternNode::onEvent(int, const SemanticEvent &event)

@@ -15,11 +15,24 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace semhap {
 
 class RuntimeNode;
+class PatternNode;
+
+/**
+ * A probe's walk through the graph (Router::messageRoutes): the pattern nodes it reached,
+ * each with the message as it arrived there, and the inputs already visited, so each is
+ * walked once however many ways lead to it.
+ */
+struct ProbeWalk
+{
+    std::vector<std::pair<const PatternNode *, SemanticEvent>> hits;
+    std::set<std::pair<const RuntimeNode *, int>> visited; ///< node and input port
+};
 
 /** Where a node's output goes: a node and its input port index. */
 struct RouteTarget
@@ -164,6 +177,15 @@ public:
     virtual double nextTimer() const;
     virtual void fireTimers(double t);
 
+    /**
+     * Follows a begin of `event` arriving at input `port` to the pattern nodes it can reach,
+     * as it would flow: filters match it, curves map its intensity, a gate is taken as open,
+     * a compose node makes a message of its own (its own probe).
+     */
+    virtual void probe(int port, const SemanticEvent &event, ProbeWalk *walk) const;
+    /** Follows `event` from this node's event output. */
+    void probeTargets(const SemanticEvent &event, ProbeWalk *walk) const;
+
     std::vector<RouteTarget> eventTargets;
     std::vector<RouteTarget> signalTargets;
 
@@ -295,6 +317,10 @@ public:
     void endAll(double t, EventBuffer &events);
     /** Appends a begin at t if the message is active (MessageTracker::appendActive). */
     void appendActive(double t, EventBuffer &events) const { m_tracker.appendActive(t, events); }
+    /** A begin of its message at `intensity` (MessageTracker::probe). */
+    SemanticEvent probeMessage(double intensity) const { return m_tracker.probe(intensity); }
+    /** Its inputs make a message of its own: a probe stops here. */
+    void probe(int, const SemanticEvent &, ProbeWalk *) const override {}
 
 protected:
     /** Feeds the tracker one step and routes what it emits. */
@@ -392,8 +418,11 @@ public:
         : m_messages(std::move(messages)), m_categories(categories), m_grippers(grippers)
     {}
     void onEvent(int port, const SemanticEvent &event) override;
+    void probe(int port, const SemanticEvent &event, ProbeWalk *walk) const override;
 
 private:
+    bool passes(const SemanticEvent &event) const;
+
     std::vector<Message> m_messages;
     unsigned m_categories;
     unsigned m_grippers;
@@ -405,6 +434,8 @@ class GateNode : public RuntimeNode
 public:
     explicit GateNode(bool openWhenControlActive) : m_openOnControl(openWhenControlActive) {}
     void onEvent(int port, const SemanticEvent &event) override;
+    /** Its input passes on (the gate taken as open); its control goes nowhere. */
+    void probe(int port, const SemanticEvent &event, ProbeWalk *walk) const override;
 
 private:
     bool isOpen() const { return m_control.isEmpty() == !m_openOnControl; }
@@ -434,6 +465,7 @@ class CurveNode : public RuntimeNode
 public:
     explicit CurveNode(Curve curve) : m_curve(std::move(curve)) {}
     void onEvent(int port, const SemanticEvent &event) override;
+    void probe(int port, const SemanticEvent &event, ProbeWalk *walk) const override;
 
 private:
     Curve m_curve;
@@ -444,13 +476,16 @@ private:
 class VoiceInput : public PlayerInput
 {
 public:
-    explicit VoiceInput(PatternPtr pattern) : voice(std::move(pattern)) {}
+    VoiceInput(PatternPtr played, int on) : voice(played), pattern(std::move(played)), device(on)
+    {}
     void advance(double t) override { voice.advance(t); }
     bool isSounding() const override { return !voice.isIdle(); }
     Priority priority() const override { return currentPriority; }
     double value(int slot) const override { return voice.value(slot); }
 
     Voice voice;
+    PatternPtr pattern; ///< what the voice plays
+    int device;         ///< the player's index of the device it plays on
     Priority currentPriority = Confirmation;
 };
 
@@ -468,6 +503,8 @@ public:
     void onEvent(int port, const SemanticEvent &event) override;
     void onSignal(int port, double value, double t) override;
     void start(double t) override;
+    /** A probe ends here: what it reached. */
+    void probe(int port, const SemanticEvent &event, ProbeWalk *walk) const override;
 
     /** Port index -> pattern parameter index, for the signal inputs. */
     std::vector<int> signalParams;

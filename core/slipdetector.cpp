@@ -159,4 +159,9 @@ void SlipDetector::appendActive(double t, EventBuffer &out) const
     m_slip.appendActive(t, out);
 }
 
+std::vector<SemanticEvent> SlipDetector::probes(double intensity) const
+{
+    return {m_grasp.probe(intensity), m_slip.probe(intensity)};
+}
+
 } // namespace semhap

@@ -362,6 +362,52 @@
     </message>
 </context>
 <context>
+    <name>semhap::DistinctivenessView</name>
+    <message>
+        <source>The band whose messages are compared</source>
+        <translation>Das Band, dessen Nachrichten verglichen werden</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%2): %n message(s)</source>
+        <translation>
+            <numerusform>%1 (%2): %n Nachricht</numerusform>
+            <numerusform>%1 (%2): %n Nachrichten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The router has problems: once it compiles, this shows how far apart its messages feel on each band.</source>
+        <translation>Der Router hat Fehler: Sobald er sich übersetzen lässt, steht hier, wie weit seine Nachrichten auf jedem Band auseinanderliegen.</translation>
+    </message>
+    <message>
+        <source>Its patterns cannot be compared: %1</source>
+        <translation>Seine Muster lassen sich nicht vergleichen: %1</translation>
+    </message>
+    <message>
+        <source>No message plays on a band.</source>
+        <translation>Keine Nachricht spielt auf einem Band.</translation>
+    </message>
+    <message>
+        <source>%1 and %2: %3 JND apart</source>
+        <translation>%1 und %2: %3 JND auseinander</translation>
+    </message>
+    <message>
+        <source>Only %1 plays on this band: there is nothing here to take it for.</source>
+        <translation>Nur %1 spielt auf diesem Band: Hier gibt es nichts, womit man sie verwechseln könnte.</translation>
+    </message>
+    <message>
+        <source>At intensity %1 no two of these messages are closer than 1 JND: a person tells them apart.</source>
+        <translation>Bei Intensität %1 liegen keine zwei dieser Nachrichten näher als 1 JND beieinander: Ein Mensch unterscheidet sie.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 (%3 JND)</source>
+        <translation>%1 und %2 (%3 JND)</translation>
+    </message>
+    <message>
+        <source>Confusable, under 1 JND: %1. A person will take one for the other.</source>
+        <translation>Verwechselbar, unter 1 JND: %1. Ein Mensch wird die eine für die andere halten.</translation>
+    </message>
+</context>
+<context>
     <name>semhap::Engine</name>
     <message>
         <source>nothing is loaded</source>
@@ -2716,6 +2762,18 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>%1 — preset</source>
         <translation>%1 — Vorlage</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Distinctiveness</source>
+        <translation>Unterscheidbarkeit</translation>
+    </message>
+    <message>
+        <source>How far apart the messages on each band feel, in just-noticeable differences</source>
+        <translation>Wie weit die Nachrichten auf jedem Band spürbar auseinanderliegen, in eben merklichen Unterschieden (JND)</translation>
     </message>
 </context>
 <context>

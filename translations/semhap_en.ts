@@ -362,6 +362,52 @@
     </message>
 </context>
 <context>
+    <name>semhap::DistinctivenessView</name>
+    <message>
+        <source>The band whose messages are compared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%2): %n message(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The router has problems: once it compiles, this shows how far apart its messages feel on each band.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its patterns cannot be compared: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No message plays on a band.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 and %2: %3 JND apart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only %1 plays on this band: there is nothing here to take it for.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At intensity %1 no two of these messages are closer than 1 JND: a person tells them apart.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 and %2 (%3 JND)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confusable, under 1 JND: %1. A person will take one for the other.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::Engine</name>
     <message>
         <source>nothing is loaded</source>
@@ -2707,6 +2753,18 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>%1 — preset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distinctiveness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far apart the messages on each band feel, in just-noticeable differences</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

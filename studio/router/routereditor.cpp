@@ -2,6 +2,7 @@
 #include "routereditor.h"
 
 #include "colors.h"
+#include "distinctivenessview.h"
 #include "filedialogs.h"
 #include "patternlibrary.h"
 #include "router.h"
@@ -34,6 +35,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -281,9 +283,19 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     auto *toolbar = new QToolBar(this);
     toolbar->setObjectName(QStringLiteral("routerToolBar"));
     toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    // The selected node's parameters, and how far apart the router's messages feel.
+    m_distinct = new DistinctivenessView(this);
+    m_distinct->setObjectName(QStringLiteral("routerDistinct"));
+    m_sideTabs = new QTabWidget(this);
+    m_sideTabs->setObjectName(QStringLiteral("routerSideTabs"));
+    m_sideTabs->setDocumentMode(true);
+    m_sideTabs->addTab(m_inspector, tr("Node"));
+    m_sideTabs->addTab(m_distinct, tr("Distinctiveness"));
+    m_sideTabs->setTabToolTip(1, tr("How far apart the messages on each band feel, in "
+                                    "just-noticeable differences"));
     auto *bottom = new QSplitter(Qt::Horizontal, this);
     bottom->addWidget(m_palette);
-    bottom->addWidget(m_inspector);
+    bottom->addWidget(m_sideTabs);
     // The palette's two columns of names; the rest is the inspector's.
     bottom->setStretchFactor(0, 1);
     bottom->setStretchFactor(1, 3);
@@ -338,6 +350,11 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
 
     connect(m_document, &RouterDocument::changed, this, &RouterEditor::onGraphChanged);
     connect(m_scene, &QGraphicsScene::selectionChanged, this, &RouterEditor::scheduleInspector);
+    // A node picked on the canvas shows its parameters, wherever the side was.
+    connect(m_scene, &QGraphicsScene::selectionChanged, this, [this] {
+        if (!m_scene->selectedNodeIds().isEmpty())
+            m_sideTabs->setCurrentWidget(m_inspector);
+    });
     connect(m_scene, &RouterScene::connectRequested, this, [this](const RouterLink &link) {
         QString reason;
         connectPorts(link, &reason);
@@ -390,6 +407,8 @@ RouterEditor::~RouterEditor()
     // on a half-destroyed editor (free(): invalid pointer, once in a CI run).
     m_undo->disconnect(this);
     m_document->disconnect(this);
+    // And the scene, whose items say the selection changed as they go.
+    m_scene->disconnect(this);
 }
 
 void RouterEditor::createPalette()
@@ -826,9 +845,11 @@ QStringList RouterEditor::validate()
     const RouterContext source = context();
     m_errors.clear();
     m_errorList->clear();
+    std::unique_ptr<Router> compiled;
     for (int round = 0; round < 32; ++round) {
         LoadError error;
-        if (Router::compile(graph, &error, source))
+        compiled = Router::compile(graph, &error, source);
+        if (compiled)
             break;
         const QStringList tokens = error.pointer.split(QLatin1Char('/'));
         const int index = tokens.size() > 2 ? tokens[2].toInt() : -1;
@@ -859,6 +880,7 @@ QStringList RouterEditor::validate()
     }
     m_scene->setErrors(nodeErrors, linkErrors);
     m_errorList->setVisible(!m_errors.isEmpty());
+    m_distinct->setRouter(m_errors.isEmpty() ? compiled.get() : nullptr);
     m_applyAction->setEnabled(m_apply && m_errors.isEmpty());
     return m_errors;
 }

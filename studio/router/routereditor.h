@@ -16,12 +16,14 @@ class QGraphicsView;
 class QLabel;
 class QListWidget;
 class QListWidgetItem;
+class QTabWidget;
 class QTimer;
 class QUndoStack;
 class QWidget;
 
 namespace semhap {
 
+class DistinctivenessView;
 class RunHistory;
 class RouterDocument;
 class RouterScene;
@@ -195,6 +197,8 @@ private:
     RouterScene *m_scene = nullptr;
     QGraphicsView *m_view = nullptr;
     QListWidget *m_palette = nullptr;
+    QTabWidget *m_sideTabs = nullptr;
+    DistinctivenessView *m_distinct = nullptr;
     QWidget *m_inspector = nullptr;
     QListWidget *m_errorList = nullptr;
     QLabel *m_documentLabel = nullptr;

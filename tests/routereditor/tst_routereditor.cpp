@@ -5,6 +5,7 @@
 // restore the exact graph, files round-trip, and the engine swaps routers while running.
 #include "contactframereader.h"
 #include "devicemanager.h"
+#include "distinctivenessview.h"
 #include "editordriver.h"
 #include "engine.h"
 #include "gatedrouter.h"
@@ -38,6 +39,9 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -172,6 +176,7 @@ private slots:
     void messageFieldsOfferNewMessages();
     void levelsAreTypedAsNumbersOrRanges_data();
     void levelsAreTypedAsNumbersOrRanges();
+    void distinctivenessFollowsTheRouter();
     void screenshot();
 };
 
@@ -1110,6 +1115,46 @@ void TestRouterEditor::levelsAreTypedAsNumbersOrRanges()
     QCOMPARE(f.editor.inspector()->findChild<QLineEdit *>("param:begin")->text(), shown);
 }
 
+// Issue 34: the open router's messages on each band, as far apart as a person feels them;
+// an edit that puts two messages on one pattern shows them confusable at once.
+void TestRouterEditor::distinctivenessFollowsTheRouter()
+{
+    Fixture f;
+    f.editor.setGraph(preset("C4"));
+    auto *tabs = f.editor.findChild<QTabWidget *>("routerSideTabs");
+    QVERIFY(tabs);
+    QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, {},
+                      tabs->tabBar()->tabRect(1).center());
+    auto *view = f.editor.findChild<DistinctivenessView *>("routerDistinct");
+    QCOMPARE(tabs->currentWidget(), view);
+    auto *band = view->findChild<QComboBox *>("distinctBand");
+    auto *matrix = view->findChild<QTableWidget *>("distinctMatrix");
+    auto *summary = view->findChild<QLabel *>("distinctSummary");
+    QCOMPARE(band->count(), 2); // left.air and right.air: C4 is all pneumatic
+    band->setCurrentIndex(band->findData("right.air"));
+    QCOMPARE(matrix->rowCount(), 2);
+    QCOMPARE(matrix->verticalHeaderItem(0)->text(), QString("right.force:grasp"));
+    QCOMPARE(matrix->verticalHeaderItem(1)->text(), QString("right.force:break"));
+    QVERIFY(matrix->item(0, 1)->text().toDouble() > 3.0);
+    QVERIFY2(summary->text().contains("no two of these messages are closer than 1 JND"),
+             qPrintable(summary->text()));
+
+    // The break warning's pulses become the grasp's squeeze: one pattern for both.
+    f.select("right.pulse5hz");
+    QCOMPARE(tabs->currentWidget(), f.editor.inspector()); // a node picked shows its fields
+    f.type("param:pattern", "air.squeeze");
+    QTRY_COMPARE(matrix->item(0, 1)->text(), QString("0.00"));
+    QCOMPARE(band->currentData().toString(), QString("right.air")); // the band looked at stays
+    QVERIFY(matrix->item(0, 1)->font().bold());
+    QVERIFY2(summary->text().contains("right.force:grasp and right.force:break (0.00 JND)"),
+             qPrintable(summary->text()));
+
+    // A router that does not compile says so instead.
+    f.type("param:pattern", "no.such");
+    QTRY_VERIFY(summary->text().contains("has problems"));
+    QCOMPARE(matrix->rowCount(), 0);
+}
+
 void TestRouterEditor::screenshot()
 {
     const QString dir = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
@@ -1156,6 +1201,22 @@ void TestRouterEditor::screenshot()
             QString error;
             QVERIFY2(Studio::screenshot(studio.window(),
                                         QStringLiteral("%1/router-c3p-%2-%3x%4.png")
+                                            .arg(dir, language)
+                                            .arg(size.width())
+                                            .arg(size.height()),
+                                        &error),
+                     qPrintable(error));
+            // And how far apart C1's messages feel on its right vibration band (C3p plays
+            // one message per band).
+            studio.window()->routerEditor()->setGraph(preset("C1"));
+            auto *tabs = studio.window()->routerEditor()->findChild<QTabWidget *>("routerSideTabs");
+            tabs->setCurrentIndex(1);
+            auto *band = tabs->findChild<QComboBox *>("distinctBand");
+            QTRY_VERIFY(band->findData("right.vibro") >= 0);
+            band->setCurrentIndex(band->findData("right.vibro"));
+            QTest::qWait(300);
+            QVERIFY2(Studio::screenshot(studio.window(),
+                                        QStringLiteral("%1/router-distinct-%2-%3x%4.png")
                                             .arg(dir, language)
                                             .arg(size.width())
                                             .arg(size.height()),

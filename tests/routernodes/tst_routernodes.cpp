@@ -297,7 +297,7 @@ void TestRouterNodes::curve()
 void TestRouterNodes::patternNodeMergesMessages()
 {
     PatternNode node(PatternLibrary::builtin("vib.geiger"), false);
-    node.voices.push_back(std::make_unique<VoiceInput>(PatternLibrary::builtin("vib.geiger")));
+    node.voices.push_back(std::make_unique<VoiceInput>(PatternLibrary::builtin("vib.geiger"), 0));
     Voice &voice = node.voices.front()->voice;
     node.start(0.0);
     QVERIFY(voice.isIdle());
@@ -321,7 +321,7 @@ void TestRouterNodes::continuousPatternStartsAtStart()
 {
     const PatternPtr pattern = PatternLibrary::builtin("air.proportional");
     PatternNode node(pattern, true);
-    node.voices.push_back(std::make_unique<VoiceInput>(pattern));
+    node.voices.push_back(std::make_unique<VoiceInput>(pattern, 0));
     node.signalParams = {-1, pattern->params().indexOf("left")};
     Voice &voice = node.voices.front()->voice;
     node.start(2.0);
