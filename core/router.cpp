@@ -957,7 +957,9 @@ std::vector<MessageRoute> Router::messageRoutes(double intensity) const
         for (const SemanticEvent &message : messages) {
             ProbeWalk walk;
             node->probeTargets(message, &walk);
-            for (const auto &[patternNode, arrived] : walk.hits) {
+            for (const auto &hit : walk.hits) {
+                const PatternNode *patternNode = hit.first;
+                const SemanticEvent &arrived = hit.second;
                 const auto at = std::find_if(m_nodes.begin(), m_nodes.end(),
                                              [&](const auto &n) { return n.get() == patternNode; });
                 for (const std::unique_ptr<VoiceInput> &voice : patternNode->voices) {
