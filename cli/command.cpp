@@ -208,13 +208,19 @@ void Command::addRoutingOptions(QCommandLineParser &parser)
                       tr("S")});
 }
 
-bool Command::simulationOptions(const QCommandLineParser &parser, double *duration,
-                                SceneOptions *scene)
+bool Command::simulationOptions(const QCommandLineParser &parser, RunOptions *options)
 {
     double count = -1;
+    double *duration = &options->duration;
+    SceneOptions *scene = &options->sceneOptions;
     if (!numberOption(parser, QStringLiteral("duration"), duration) ||
-        !numberOption(parser, QStringLiteral("cubes"), &count))
+        !numberOption(parser, QStringLiteral("cubes"), &count) ||
+        !numberOption(parser, QStringLiteral("horizon"), &options->horizon))
         return false;
+    if (!(options->horizon > 0 && options->horizon <= RunOptions::MaxHorizon)) {
+        usageError(tr("--horizon must be above 0 and at most %1 s").arg(RunOptions::MaxHorizon));
+        return false;
+    }
     if (!(*duration > 0 && *duration <= MaxDuration)) {
         usageError(tr("--duration must be between 0 and %1 s").arg(MaxDuration, 0, 'f', 0));
         return false;
@@ -238,6 +244,10 @@ void Command::addSceneOptions(QCommandLineParser &parser)
                          "scene's grippers: %1, or a file.")
                           .arg(GripperLibrary::names().join(QStringLiteral(", "))),
                       tr("NAME|FILE")});
+    parser.addOption({QStringLiteral("horizon"),
+                      tr("How long before a failure a warning's onset may lie and still count "
+                         "as its warning, in seconds (default 3; docs/metrics.md)."),
+                      tr("S")});
 }
 
 void Command::reportWarnings(const RouterGraph &graph)

@@ -21,6 +21,8 @@
 
 namespace semhap {
 
+struct RunOptions;
+
 class Pipeline;
 class RouterGraph;
 class SessionReader;
@@ -118,13 +120,12 @@ protected:
      */
     bool routerContextOption(const QCommandLineParser &parser, RouterContext *context);
     /**
-     * Reads --duration (more than 0, at most MaxDuration s) and --cubes (a whole number
-     * >= 0; absent: -1, the scene's own): what run and compare share. False after a usage
-     * message.
+     * Reads --duration (more than 0, at most MaxDuration s), --cubes (a whole number >= 0;
+     * absent: -1, the scene's own), --gripper and --horizon into `options`: what run and
+     * compare share. False after a usage message.
      */
-    bool simulationOptions(const QCommandLineParser &parser, double *duration,
-                           SceneOptions *scene);
-    /** Adds --cubes and --gripper, which simulationOptions() reads. */
+    bool simulationOptions(const QCommandLineParser &parser, RunOptions *options);
+    /** Adds --cubes, --gripper and --horizon, which simulationOptions() reads. */
     static void addSceneOptions(QCommandLineParser &parser);
     /** The longest simulated run (s): about eleven days. */
     static constexpr double MaxDuration = 1e6;

@@ -41,6 +41,12 @@ const QStringList &metricKeys()
                                   QStringLiteral("confirmations_per_grasp"),
                                   QStringLiteral("slip_episodes"),
                                   QStringLiteral("warnings_per_slip_episode"),
+                                  QStringLiteral("breaks_warned_by_onset_share"),
+                                  QStringLiteral("right_warning_precision"),
+                                  QStringLiteral("right_warning_duty"),
+                                  QStringLiteral("drops_warned_by_onset_share"),
+                                  QStringLiteral("left_warning_precision"),
+                                  QStringLiteral("left_warning_duty"),
                                   QStringLiteral("box_refills"),
                                   QStringLiteral("insertions"),
                                   QStringLiteral("time_to_insert"),
@@ -302,11 +308,10 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             return usageError(tr("--%1 is required").arg(required));
     }
     double seeds = 0;
-    double duration = 0;
-    SceneOptions scene;
+    RunOptions common;
     double jobs = std::max(1u, std::thread::hardware_concurrency());
     if (!numberOption(parser, QStringLiteral("seeds"), &seeds) ||
-        !simulationOptions(parser, &duration, &scene) ||
+        !simulationOptions(parser, &common) ||
         !numberOption(parser, QStringLiteral("jobs"), &jobs))
         return ExitUsage;
     if (seeds < 1 || seeds != std::floor(seeds) || seeds > 100000)
@@ -338,13 +343,11 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         for (int seed = 1; seed <= int(seeds); ++seed) {
             if (index++ % shards != shard - 1)
                 continue;
-            RunOptions options;
+            RunOptions options = common;
             options.scene = parser.value(QStringLiteral("scene"));
             options.router = router;
             options.operatorName = parser.value(QStringLiteral("operator"));
             options.seed = std::uint64_t(seed);
-            options.duration = duration;
-            options.sceneOptions = scene;
             grid.push_back(options);
         }
     }

@@ -154,7 +154,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     options.operatorName = parser.value(QStringLiteral("operator"));
     options.overrides = parser.values(QStringLiteral("set"));
     double seed = 1;
-    if (!simulationOptions(parser, &options.duration, &options.sceneOptions) ||
+    if (!simulationOptions(parser, &options) ||
         !numberOption(parser, QStringLiteral("seed"), &seed))
         return ExitUsage;
     RouterContext context;

@@ -21,6 +21,8 @@ QJsonObject RunOptions::toJson() const
                      {QStringLiteral("reaction_time"), reactionTime}};
     if (sceneOptions.cubes >= 0)
         json.insert(QStringLiteral("cubes"), sceneOptions.cubes);
+    if (horizon != DefaultHorizon)
+        json.insert(QStringLiteral("horizon"), horizon);
     if (!sceneOptions.gripper.isEmpty())
         json.insert(QStringLiteral("gripper"), sceneOptions.gripper);
     return json;
@@ -36,7 +38,8 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
                           {QLatin1String("scene"), QLatin1String("cubes"),
                            QLatin1String("gripper"), QLatin1String("router"),
                            QLatin1String("overrides"), QLatin1String("operator"),
-                           QLatin1String("seed"), QLatin1String("reaction_time")}) ||
+                           QLatin1String("seed"), QLatin1String("reaction_time"),
+                           QLatin1String("horizon")}) ||
         !reader.string(json, pointer, QLatin1String("scene"), &o.scene, false) ||
         !reader.string(json, pointer, QLatin1String("gripper"), &o.sceneOptions.gripper, false) ||
         !reader.number(json, pointer, QLatin1String("cubes"), &cubes, false) ||
@@ -44,7 +47,8 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
         !reader.strings(json, pointer, QLatin1String("overrides"), &o.overrides, false) ||
         !reader.string(json, pointer, QLatin1String("operator"), &o.operatorName, false) ||
         !reader.number(json, pointer, QLatin1String("seed"), &seed, false) ||
-        !reader.number(json, pointer, QLatin1String("reaction_time"), &o.reactionTime, false))
+        !reader.number(json, pointer, QLatin1String("reaction_time"), &o.reactionTime, false) ||
+        !reader.number(json, pointer, QLatin1String("horizon"), &o.horizon, false))
         return false;
     const auto whole = [](double v, double low, double high) {
         return v >= low && v <= high && v == std::floor(v);
@@ -60,6 +64,9 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
         return reader.fail(
             jsonPointerChild(pointer, QStringLiteral("reaction_time")),
             QStringLiteral("expected seconds from 0 to %1").arg(SessionInfo::MaxReactionTime));
+    if (!(o.horizon > 0 && o.horizon <= MaxHorizon))
+        return reader.fail(jsonPointerChild(pointer, QStringLiteral("horizon")),
+                           QStringLiteral("expected seconds above 0, at most %1").arg(MaxHorizon));
     o.seed = std::uint64_t(seed);
     o.sceneOptions.cubes = int(cubes);
     *options = o;
@@ -82,7 +89,8 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
         return nullptr;
     }
     // The task first: it may lay the scene out (seeded) before the operator looks at it.
-    run->m_task = makeTask(*run->m_world, options.seed, options.reactionTime, error);
+    run->m_task =
+        makeTask(*run->m_world, options.seed, options.reactionTime, options.horizon, error);
     if (!run->m_task)
         return nullptr;
     run->m_operator = makeOperator(options.operatorName, *run->m_world, options.seed,

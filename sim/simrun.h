@@ -31,15 +31,19 @@ struct RunOptions
     std::uint64_t seed = 1;
     double duration = 60.0;                    ///< simulated seconds
     double reactionTime = DefaultReactionTime; ///< the reactive operator's delay (s)
+    double horizon = DefaultHorizon; ///< how early a warning's onset may be and count (s)
 
     /** The largest seed: whole numbers above 2^53 do not survive a JSON number. */
     static constexpr double MaxSeed = 9e15;
     /** The most cubes a scene may be asked to keep in play. */
     static constexpr int MaxCubes = 1000;
+    /** The longest horizon (s): a minute before a failure is no warning of it. */
+    static constexpr double MaxHorizon = 60.0;
 
     /**
      * What makes the run, as JSON: `scene`, `cubes` (when not the scene's default),
-     * `router`, `overrides`, `operator`, `seed`, `reaction_time`; not the duration.
+     * `router`, `overrides`, `operator`, `seed`, `reaction_time`, `horizon` (when not
+     * DefaultHorizon); not the duration.
      */
     QJsonObject toJson() const;
     /**

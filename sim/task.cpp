@@ -9,11 +9,11 @@
 namespace semhap {
 
 std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
-                               QString *error)
+                               double horizon, QString *error)
 {
     const QString &name = world.taskName();
     if (name.isEmpty())
-        return std::make_unique<TaskMonitor>(world, reactionTime);
+        return std::make_unique<TaskMonitor>(world, reactionTime, horizon);
     if (name == QLatin1String(InsertionTask::Name))
         return InsertionTask::create(world, seed, error);
     if (name == QLatin1String(WipingTask::Name))

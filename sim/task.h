@@ -14,6 +14,12 @@ namespace semhap {
 class World;
 
 /**
+ * How long before a failure a warning's onset may lie and still count as its warning (s):
+ * the metrics by onset and the warnings' precision (docs/metrics.md).
+ */
+constexpr double DefaultHorizon = 3.0;
+
+/**
  * A scene's task: its rules (what it puts back, and when) and its metrics
  * (docs/metrics.md). SimRun calls observe() after every physics step and feel() with what
  * each hand perceives.
@@ -34,9 +40,10 @@ public:
  * The task of `world`'s scene, by its `semhap:task` text (sim/README.md): `usb_insertion`,
  * `dish_wiping`, or without one the cube tasks (box_and_block, bimanual_sorting). It may lay
  * the scene out, or draw what it varies unseen, from `seed` now. Null with `error` for a task
- * semhap does not know or a scene it cannot do.
+ * semhap does not know or a scene it cannot do. `reactionTime` and `horizon` judge the
+ * warnings (docs/metrics.md).
  */
 std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
-                               QString *error);
+                               double horizon, QString *error);
 
 } // namespace semhap

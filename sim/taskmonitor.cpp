@@ -87,8 +87,43 @@ void TaskMonitor::Failures::add(double t, const Cue &warning, double reactionTim
         ++inTime;
 }
 
-TaskMonitor::TaskMonitor(const World &world, double reactionTime)
-    : m_reactionTime(reactionTime), m_inGrasp(world.objects().size(), false),
+QJsonValue TaskMonitor::Alarms::warnedByOnsetShare(double reactionTime, double horizon) const
+{
+    if (failures.empty())
+        return QJsonValue();
+    int warned = 0;
+    for (double failure : failures) {
+        // A new warning: one that began in the window, not one already on before it.
+        warned += std::any_of(onsets.begin(), onsets.end(), [&](double onset) {
+            return onset >= failure - horizon && onset <= failure - reactionTime;
+        });
+    }
+    return double(warned) / double(failures.size());
+}
+
+QJsonValue TaskMonitor::Alarms::precision(double horizon, double end) const
+{
+    // An onset within the horizon of the run's end cannot be judged yet.
+    int judged = 0;
+    int answered = 0;
+    for (double onset : onsets) {
+        if (onset > end - horizon)
+            continue;
+        ++judged;
+        const auto follows = [&](double t) { return t >= onset && t <= onset + horizon; };
+        answered += std::any_of(failures.begin(), failures.end(), follows) ||
+                    std::any_of(episodes.begin(), episodes.end(), follows);
+    }
+    return judged ? QJsonValue(double(answered) / judged) : QJsonValue();
+}
+
+QJsonValue TaskMonitor::Alarms::duty() const
+{
+    return held > 0 ? QJsonValue(warnedHeld / held) : QJsonValue();
+}
+
+TaskMonitor::TaskMonitor(const World &world, double reactionTime, double horizon)
+    : m_reactionTime(reactionTime), m_horizon(horizon), m_inGrasp(world.objects().size(), false),
       m_transferred(world.objects().size(), false)
 {
     m_hasPlace = world.region(QStringLiteral("place"), &m_place);
@@ -101,8 +136,11 @@ TaskMonitor::TaskMonitor(const World &world, double reactionTime)
 void TaskMonitor::observe(World &world)
 {
     // Breaks happen in the picking (right) hand; its warnings are the ones that count.
-    for (const Fracture &fracture : world.fractures())
+    for (const Fracture &fracture : world.fractures()) {
         m_breaks.add(fracture.t, m_warnings[size_t(Gripper::Right)], m_reactionTime);
+        m_alarms[size_t(Gripper::Right)].failures.push_back(fracture.t);
+    }
+    m_time = world.time();
     observeGrasp(world);
     observeTransfers(world);
     // Before the refill, which puts the finished pile back in the box.
@@ -117,7 +155,11 @@ void TaskMonitor::feel(Gripper hand, const Feeling &feeling, double t)
     const auto felt = [](double band, double shown) {
         return std::max(band, shown) >= Perception::Noticeable;
     };
-    m_warnings[size_t(hand)].feel(felt(feeling.warning, feeling.shownWarning), t);
+    Cue &warning = m_warnings[size_t(hand)];
+    const int onsets = warning.onsets;
+    warning.feel(felt(feeling.warning, feeling.shownWarning), t);
+    if (warning.onsets > onsets)
+        m_alarms[size_t(hand)].onsets.push_back(t);
     m_confirmations[size_t(hand)].feel(felt(feeling.confirmation, feeling.shownConfirmation), t);
 }
 
@@ -180,6 +222,16 @@ void TaskMonitor::observeGrasp(World &world)
         m_liftedBy =
             std::max(m_liftedBy, world.gripperPose(Gripper::Right).pos[2] - m_graspHeight);
     }
+    // A break warning is warranted each time the grip crosses the force that breaks what it
+    // holds, whether or not it breaks (that needs the force held: sim/README.md).
+    const double breakLine = held >= 0 ? world.objects()[size_t(held)].fragileForce : 0.0;
+    const bool over = breakLine > 0 && frame.totalForce() >= breakLine;
+    if (over && !m_overBreakLine)
+        m_alarms[size_t(Gripper::Right)].episodes.push_back(world.time());
+    m_overBreakLine = over;
+    if (held >= 0)
+        m_alarms[size_t(Gripper::Right)].hold(
+            world.timestep(), m_warnings[size_t(Gripper::Right)].feltAt(world.time()));
     m_grasped = held;
 }
 
@@ -249,6 +301,8 @@ void TaskMonitor::observeContainer(World &world)
         return;
     }
     if (held) {
+        m_alarms[size_t(Gripper::Left)].hold(world.timestep(),
+                                             m_warnings[size_t(Gripper::Left)].feltAt(world.time()));
         // The highest it was held: a slipping container slides down between the fingertips
         // before it leaves them.
         m_heldHeight = m_containerHeld ? std::max(m_heldHeight, z) : z;
@@ -284,6 +338,7 @@ void TaskMonitor::observeContainer(World &world)
     }
     if (t - m_containerLostAt >= LostAfter && z < m_heldHeight - FallenBy) {
         m_drops.add(m_containerLostAt, m_warningAtLoss, m_reactionTime);
+        m_alarms[size_t(Gripper::Left)].failures.push_back(m_containerLostAt);
         m_containerHeld = false;
         m_containerDown = true;
         m_containerDroppedAt = t;
@@ -312,8 +367,10 @@ void TaskMonitor::observeContainerSlip(const World &world, bool held)
     m_relative = relative;
     m_hasRelative = true;
     if (m_slipSpeed > SlipSpeed) {
-        if (!m_slipping)
+        if (!m_slipping) {
             ++m_slipEpisodes;
+            m_alarms[size_t(Gripper::Left)].episodes.push_back(t);
+        }
         m_slipping = true;
         m_slipQuietSince = t;
     } else if (m_slipping && t - m_slipQuietSince >= SlipQuiet) {
@@ -451,6 +508,20 @@ QJsonObject TaskMonitor::metrics() const
         grasps += m_holds;
     }
     metrics.insert(QStringLiteral("confirmations_per_grasp"), mean(confirmations, grasps));
+
+    // The warnings judged as alarms are: by onset, precision and duty.
+    const Alarms &right = m_alarms[size_t(Gripper::Right)];
+    metrics.insert(QStringLiteral("breaks_warned_by_onset_share"),
+                   right.warnedByOnsetShare(m_reactionTime, m_horizon));
+    metrics.insert(QStringLiteral("right_warning_precision"), right.precision(m_horizon, m_time));
+    metrics.insert(QStringLiteral("right_warning_duty"), right.duty());
+    if (m_container >= 0) {
+        const Alarms &left = m_alarms[size_t(Gripper::Left)];
+        metrics.insert(QStringLiteral("drops_warned_by_onset_share"),
+                       left.warnedByOnsetShare(m_reactionTime, m_horizon));
+        metrics.insert(QStringLiteral("left_warning_precision"), left.precision(m_horizon, m_time));
+        metrics.insert(QStringLiteral("left_warning_duty"), left.duty());
+    }
     return metrics;
 }
 

@@ -6,6 +6,7 @@
 
 #include <QJsonObject>
 
+#include <array>
 #include <vector>
 
 namespace semhap {
@@ -20,8 +21,12 @@ namespace semhap {
 class TaskMonitor : public Task
 {
 public:
-    /** `reactionTime`: how long before a failure a warning must be felt to count in time. */
-    explicit TaskMonitor(const World &world, double reactionTime = DefaultReactionTime);
+    /**
+     * `reactionTime`: how long before a failure a warning must be felt to count in time;
+     * `horizon`: how long before it a warning's onset may lie and still count.
+     */
+    explicit TaskMonitor(const World &world, double reactionTime = DefaultReactionTime,
+                         double horizon = DefaultHorizon);
 
     void observe(World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
@@ -47,6 +52,32 @@ private:
         void feel(bool felt, double t);
         /** Whether it was felt at `t` (its pulses had not stopped). */
         bool feltAt(double t) const;
+    };
+    /**
+     * One hand's warnings judged as a detector's alarms are (docs/metrics.md): when each felt
+     * warning began, the failures and the episodes that warrant one, and how much of the
+     * holding time a warning was felt.
+     */
+    struct Alarms
+    {
+        std::vector<double> onsets;   ///< when each felt warning began
+        std::vector<double> failures; ///< drops (left) or breaks (right)
+        std::vector<double> episodes; ///< slip episodes (left), break-line crossings (right)
+        double held = 0.0;            ///< holding time, s
+        double warnedHeld = 0.0;      ///< of it, with a warning felt, s
+
+        /** Counts `dt` of holding, with a warning felt or not. */
+        void hold(double dt, bool warned)
+        {
+            held += dt;
+            warnedHeld += warned ? dt : 0.0;
+        }
+
+        /** The share of failures with an onset from `horizon` to `reactionTime` before. */
+        QJsonValue warnedByOnsetShare(double reactionTime, double horizon) const;
+        /** The share of onsets up to `end - horizon` a failure or an episode followed. */
+        QJsonValue precision(double horizon, double end) const;
+        QJsonValue duty() const;
     };
     /** Warnings before one kind of failure. */
     struct Failures
@@ -76,6 +107,10 @@ private:
     void returnToBox(World &world, int object);
 
     double m_reactionTime;
+    double m_horizon;
+    double m_time = 0.0; ///< the last step observed
+    std::array<Alarms, 2> m_alarms;
+    bool m_overBreakLine = false; ///< the held object's force is above the force that breaks it
     Region m_place;
     bool m_hasPlace = false;
     Region m_pick;

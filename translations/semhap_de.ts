@@ -1654,6 +1654,54 @@ In %2; in exports: %3</source>
         <translation>%1
 In %2; in Exporten: %3</translation>
     </message>
+    <message>
+        <source>Breaks warned by onset</source>
+        <translation>Brüche mit rechtzeitig begonnener Warnung</translation>
+    </message>
+    <message>
+        <source>The share of breaks whose warning began within the horizon before, in time to act: a warning on all along does not count.</source>
+        <translation>Der Anteil der Brüche, deren Warnung innerhalb des Horizonts davor begann, rechtzeitig zum Handeln: Eine Warnung, die schon die ganze Zeit lief, zählt nicht.</translation>
+    </message>
+    <message>
+        <source>Right warnings borne out</source>
+        <translation>Bestätigte Warnungen rechts</translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings a break, or the grip crossing the break line, followed within the horizon: the rest were false alarms.</source>
+        <translation>Der Anteil der Warnungen der rechten Hand, denen innerhalb des Horizonts ein Bruch oder ein Überschreiten der Bruchgrenze folgte: Die übrigen waren Fehlalarme.</translation>
+    </message>
+    <message>
+        <source>Right warning duty</source>
+        <translation>Warnungsanteil rechts</translation>
+    </message>
+    <message>
+        <source>The share of grasping time a warning was felt on the right hand.</source>
+        <translation>Der Anteil der Greifzeit, in dem an der rechten Hand eine Warnung zu spüren war.</translation>
+    </message>
+    <message>
+        <source>Drops warned by onset</source>
+        <translation>Stürze mit rechtzeitig begonnener Warnung</translation>
+    </message>
+    <message>
+        <source>The share of container drops whose warning began within the horizon before, in time to act (bimanual).</source>
+        <translation>Der Anteil der Behälterstürze, deren Warnung innerhalb des Horizonts davor begann, rechtzeitig zum Handeln (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Left warnings borne out</source>
+        <translation>Bestätigte Warnungen links</translation>
+    </message>
+    <message>
+        <source>The share of the left hand&apos;s warnings a drop or a slip followed within the horizon: the rest were false alarms (bimanual).</source>
+        <translation>Der Anteil der Warnungen der linken Hand, denen innerhalb des Horizonts ein Sturz oder ein Rutschen folgte: Die übrigen waren Fehlalarme (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Left warning duty</source>
+        <translation>Warnungsanteil links</translation>
+    </message>
+    <message>
+        <source>The share of the time the container was held that a warning was felt (bimanual).</source>
+        <translation>Der Anteil der Haltezeit des Behälters, in dem eine Warnung zu spüren war (beidhändig).</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

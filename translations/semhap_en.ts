@@ -1648,6 +1648,54 @@ In exports: %2</source>
 In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Breaks warned by onset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of breaks whose warning began within the horizon before, in time to act: a warning on all along does not count.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right warnings borne out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings a break, or the grip crossing the break line, followed within the horizon: the rest were false alarms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right warning duty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of grasping time a warning was felt on the right hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drops warned by onset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of container drops whose warning began within the horizon before, in time to act (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left warnings borne out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the left hand&apos;s warnings a drop or a slip followed within the horizon: the rest were false alarms (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left warning duty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the time the container was held that a warning was felt (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -123,6 +123,37 @@ const KnownMetric Known[] = {
      QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Warnings felt on the left hand per slip: above 1, "
                                                "warnings came that no slip answered (bimanual)."),
      Kind::Ratio},
+    {"breaks_warned_by_onset_share",
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Breaks warned by onset"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of breaks whose warning began within the horizon before, in "
+                       "time to act: a warning on all along does not count."),
+     Kind::Share},
+    {"right_warning_precision", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Right warnings borne out"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of the right hand's warnings a break, or the grip crossing the "
+                       "break line, followed within the horizon: the rest were false alarms."),
+     Kind::Share},
+    {"right_warning_duty", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Right warning duty"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of grasping time a warning was felt on the right hand."),
+     Kind::Share},
+    {"drops_warned_by_onset_share",
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Drops warned by onset"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of container drops whose warning began within the horizon "
+                       "before, in time to act (bimanual)."),
+     Kind::Share},
+    {"left_warning_precision", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Left warnings borne out"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of the left hand's warnings a drop or a slip followed within "
+                       "the horizon: the rest were false alarms (bimanual)."),
+     Kind::Share},
+    {"left_warning_duty", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Left warning duty"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "The share of the time the container was held that a warning was felt "
+                       "(bimanual)."),
+     Kind::Share},
     {"box_refills", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Cube box refills"),
      QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Times the cube box was refilled."), Kind::Count},
     {"insertions", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Plugs inserted"),

@@ -107,7 +107,7 @@ void TestInsertion::seedLaysTheSceneOut()
     const auto layout = [](std::uint64_t seed) {
         std::unique_ptr<World> world = loadScene();
         QString error;
-        const std::unique_ptr<Task> task = makeTask(*world, seed, 0.25, &error);
+        const std::unique_ptr<Task> task = makeTask(*world, seed, 0.25, DefaultHorizon, &error);
         if (!task)
             qFatal("%s", qPrintable(error));
         const Pose mouth = *world->sitePose("port.mouth");
@@ -129,7 +129,7 @@ void TestInsertion::taskCountsACollisionAndAnInsertion()
 {
     std::unique_ptr<World> world = loadScene();
     QString error;
-    const std::unique_ptr<Task> task = makeTask(*world, 3, 0.25, &error);
+    const std::unique_ptr<Task> task = makeTask(*world, 3, 0.25, DefaultHorizon, &error);
     QVERIFY2(task, qPrintable(error));
     const int plug = world->objectIndex("plug");
     const Pose start = world->objectPose(plug);
@@ -219,7 +219,7 @@ void TestInsertion::unknownTask()
     QString error;
     std::unique_ptr<World> world = World::load(path, SceneOptions{}, &error);
     QVERIFY2(world, qPrintable(error));
-    QVERIFY(!makeTask(*world, 1, 0.25, &error));
+    QVERIFY(!makeTask(*world, 1, 0.25, DefaultHorizon, &error));
     QCOMPARE(error, path + ": unknown task 'juggling' (tasks: usb_insertion, dish_wiping)");
 }
 

@@ -101,11 +101,12 @@ QJsonObject pickAndPlace(double force, const Told &told = {}, double *fractureAt
  * to `force` (N): too little to hold it, it slips out; `lostAt` gets the time it left the
  * fingertips.
  */
-QJsonObject holdTooLightly(double force, const Told &told = {}, double *lostAt = nullptr)
+QJsonObject holdTooLightly(double force, const Told &told = {}, double *lostAt = nullptr,
+                           double horizon = DefaultHorizon)
 {
     QString error;
     std::unique_ptr<World> world = World::load("bimanual_sorting", SceneOptions{0, {}}, &error);
-    TaskMonitor monitor(*world);
+    TaskMonitor monitor(*world, DefaultReactionTime, horizon);
     HandPlan plan(Gripper::Left);
     const int container = world->objectIndex("container");
     const int actor = world->objects()[size_t(container)].actor;
@@ -167,6 +168,9 @@ private slots:
     void breakWarningLeadTime();
     void dropWarningLeadTime_data();
     void dropWarningLeadTime();
+    void dropWarningsJudgedAsAlarms_data();
+    void breakWarningsJudgedAsAlarms();
+    void dropWarningsJudgedAsAlarms();
     void emptiedBoxIsRefilled();
     void pileFinished_data();
     void pileFinished();
@@ -402,6 +406,12 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("compare: endless duration")
         << compare + QStringList{"--duration", "1e7"} << 2
         << "semhap compare: --duration must be between 0 and 1000000 s";
+    QTest::newRow("compare: no horizon")
+        << compare + QStringList{"--duration", "1", "--horizon", "0"} << 2
+        << "semhap compare: --horizon must be above 0 and at most 60 s";
+    QTest::newRow("run: a horizon of minutes")
+        << base + QStringList{"--scene", "box_and_block", "--horizon", "120"} << 2
+        << "semhap run: --horizon must be above 0 and at most 60 s";
 }
 
 void TestSimRun::commandLineErrors()
@@ -580,6 +590,65 @@ void TestSimRun::dropWarningLeadTime()
         QVERIFY(std::abs(m.value("drop_warning_lead_time").toDouble() - lead) < 0.003);
     else
         QVERIFY(m.value("drop_warning_lead_time").isNull());
+}
+
+void TestSimRun::dropWarningsJudgedAsAlarms_data()
+{
+    QTest::addColumn<double>("lead");      // s before the drop the warning begins, and stays
+    QTest::addColumn<bool>("inTime");      // the old measure: still felt, begun in time
+    QTest::addColumn<bool>("byOnset");     // begun within the horizon, in time
+    QTest::addColumn<double>("precision"); // its onset followed by a drop or a slip
+    // A 1.5 s horizon, for the few seconds this hold lasts.
+    QTest::newRow("begun 0.5 s before") << 0.5 << true << true << 1.0;
+    QTest::newRow("on since the start: the alarm that never stops")
+        << 1000.0 << true << false << 0.0;
+}
+
+void TestSimRun::dropWarningsJudgedAsAlarms()
+{
+    QFETCH(double, lead);
+    QFETCH(bool, inTime);
+    QFETCH(bool, byOnset);
+    QFETCH(double, precision);
+    const double horizon = 1.5;
+    double lost = -1.0;
+    QCOMPARE(holdTooLightly(20.0, {}, &lost, horizon).value("containers_dropped").toInt(), 1);
+    QVERIFY2(lost > 2 * horizon, qPrintable(QString::number(lost)));
+    const double from = std::max(0.0, lost - lead);
+    const QJsonObject m = holdTooLightly(20.0, Told{Gripper::Left, from, 0.0, {}}, nullptr, horizon);
+    QCOMPARE(m.value("containers_dropped").toInt(), 1);
+    QCOMPARE(m.value("drops_warned_in_time_share").toDouble(), inTime ? 1.0 : 0.0);
+    QCOMPARE(m.value("drops_warned_by_onset_share").toDouble(), byOnset ? 1.0 : 0.0);
+    QCOMPARE(m.value("left_warning_precision").toDouble(), precision);
+    // Felt from `from` on: all of the hold after it.
+    const double duty = m.value("left_warning_duty").toDouble();
+    if (from == 0.0)
+        QCOMPARE(duty, 1.0);
+    else
+        QVERIFY2(duty > 0.0 && duty < 1.0, qPrintable(QString::number(duty)));
+    // No warning at all: nothing to judge, nothing felt.
+    const QJsonObject none = holdTooLightly(20.0, {}, nullptr, horizon);
+    QVERIFY(none.value("left_warning_precision").isNull());
+    QCOMPARE(none.value("left_warning_duty").toDouble(), 0.0);
+    QCOMPARE(none.value("drops_warned_by_onset_share").toDouble(), 0.0);
+}
+
+void TestSimRun::breakWarningsJudgedAsAlarms()
+{
+    // A squeeze past the cubes' 120 N breaks one: a warning begun 1 s before warned of it by
+    // onset, and the break followed it.
+    double fracture = -1.0;
+    QCOMPARE(pickAndPlace(140.0, {}, &fracture).value("cubes_broken").toInt(), 1);
+    const QJsonObject warned = pickAndPlace(140.0, Told{Gripper::Right, fracture - 1.0, 0.0, {}});
+    QCOMPARE(warned.value("breaks_warned_by_onset_share").toDouble(), 1.0);
+    QCOMPARE(warned.value("right_warning_precision").toDouble(), 1.0);
+    // A firm 40 N carry breaks nothing and never reaches the break line: a warning all along
+    // is a false alarm felt the whole grasp.
+    const QJsonObject carried = pickAndPlace(40.0, Told{Gripper::Right, 0.0, 0.0, {}});
+    QCOMPARE(carried.value("cubes_broken").toInt(), 0);
+    QVERIFY(carried.value("breaks_warned_by_onset_share").isNull()); // no break to warn of
+    QCOMPARE(carried.value("right_warning_precision").toDouble(), 0.0);
+    QCOMPARE(carried.value("right_warning_duty").toDouble(), 1.0);
 }
 
 void TestSimRun::emptiedBoxIsRefilled()
