@@ -173,17 +173,18 @@ PerceptDistance Distinctiveness::distance(const Percept &a, const Percept &b) co
     PerceptDistance d;
     if (!a.felt() && !b.felt())
         return d;
+    if (a.felt() && b.felt()) {
+        // Rhythm and shape compare across senses too.
+        d.rate = a.pulseRate > 0 && b.pulseRate > 0
+                     ? weberSteps(a.pulseRate, b.pulseRate, k.rateWeber)
+                     : 0.0;
+        d.duty = weberSteps(std::max(a.duty, ShortestDuty), std::max(b.duty, ShortestDuty),
+                            k.durationWeber);
+        d.rise = weberSteps(std::max(a.rise, k.shortestRise), std::max(b.rise, k.shortestRise),
+                            k.durationWeber);
+    }
     if (a.modality != b.modality) {
-        // Levels and places of two senses do not compare; their rhythms still differ.
-        if (a.felt() && b.felt()) {
-            d.rate = a.pulseRate > 0 && b.pulseRate > 0
-                         ? weberSteps(a.pulseRate, b.pulseRate, k.rateWeber)
-                         : 0.0;
-            d.duty = weberSteps(std::max(a.duty, ShortestDuty), std::max(b.duty, ShortestDuty),
-                                k.durationWeber);
-            d.rise = weberSteps(std::max(a.rise, k.shortestRise), std::max(b.rise, k.shortestRise),
-                                k.durationWeber);
-        }
+        // Levels and places of two senses do not compare.
         d.total = std::max(k.otherModality, std::hypot(d.rate, d.duty, d.rise));
         return d;
     }
@@ -198,42 +199,37 @@ PerceptDistance Distinctiveness::distance(const Percept &a, const Percept &b) co
         d.level = weberSteps(levelA, levelB,
                              a.modality == QLatin1String("pressure") ? k.pressureLevelWeber
                                                                      : k.sightLevelWeber);
-    if (a.felt() && b.felt()) {
-        d.rate = a.pulseRate > 0 && b.pulseRate > 0
-                     ? weberSteps(a.pulseRate, b.pulseRate, k.rateWeber)
-                     : 0.0;
-        d.duty = weberSteps(std::max(a.duty, ShortestDuty), std::max(b.duty, ShortestDuty),
-                            k.durationWeber);
-        d.rise = weberSteps(std::max(a.rise, k.shortestRise), std::max(b.rise, k.shortestRise),
-                            k.durationWeber);
-
-        // Place: how far the stimulation moves around the wrist, in places told apart.
-        const double placeJnd = 360.0 / k.wristPlaces;
-        const auto known = [](const Percept &p) {
-            return std::none_of(p.angle.begin(), p.angle.end(),
-                                [](double angle) { return std::isnan(angle); });
-        };
-        if (known(a) && known(b)) {
-            std::vector<std::pair<double, double>> surplus;
-            for (size_t c = 0; c < a.place.size(); ++c)
-                surplus.emplace_back(a.angle[c], a.place[c]);
-            for (size_t c = 0; c < b.place.size(); ++c)
-                surplus.emplace_back(b.angle[c], -b.place[c]);
-            d.place = circularEarthMover(surplus) / placeJnd;
-        } else {
-            // Channels without a place: two of them are as far apart as opposite sides of
-            // the wrist; the shares that differ move that far.
-            double moved = a.place.size() == b.place.size() ? 0.0 : 1.0;
-            if (a.place.size() == b.place.size()) {
-                for (size_t c = 0; c < a.place.size(); ++c)
-                    moved += std::abs(a.place[c] - b.place[c]) / 2.0;
-            }
-            d.place = moved * 180.0 / placeJnd;
-        }
-    }
+    if (a.felt() && b.felt())
+        d.place = placeDistance(a, b);
     d.total = std::sqrt(d.level * d.level + d.rate * d.rate + d.duty * d.duty + d.rise * d.rise +
                         d.place * d.place);
     return d;
+}
+
+double Distinctiveness::placeDistance(const Percept &a, const Percept &b) const
+{
+    // How far the stimulation moves around the wrist, in places told apart.
+    const double placeJnd = 360.0 / m_constants.wristPlaces;
+    const auto known = [](const Percept &p) {
+        return std::none_of(p.angle.begin(), p.angle.end(),
+                            [](double angle) { return std::isnan(angle); });
+    };
+    if (known(a) && known(b)) {
+        std::vector<std::pair<double, double>> surplus;
+        for (size_t c = 0; c < a.place.size(); ++c)
+            surplus.emplace_back(a.angle[c], a.place[c]);
+        for (size_t c = 0; c < b.place.size(); ++c)
+            surplus.emplace_back(b.angle[c], -b.place[c]);
+        return circularEarthMover(surplus) / placeJnd;
+    }
+    // Channels without a place: two of them are as far apart as opposite sides of the wrist;
+    // the shares that differ move that far.
+    double moved = a.place.size() == b.place.size() ? 0.0 : 1.0;
+    if (a.place.size() == b.place.size()) {
+        for (size_t c = 0; c < a.place.size(); ++c)
+            moved += std::abs(a.place[c] - b.place[c]) / 2.0;
+    }
+    return moved * 180.0 / placeJnd;
 }
 
 bool Distinctiveness::bands(const Router &router, double intensity,

@@ -122,6 +122,9 @@ public:
     const PerceptionConstants &constants() const { return m_constants; }
 
 private:
+    /** How far the stimulation moves round the band between two felt percepts, in JND. */
+    double placeDistance(const Percept &a, const Percept &b) const;
+
     PerceptionConstants m_constants;
 };
 

@@ -187,10 +187,13 @@ void TestEngine::runsAtTheAskedSpeed()
     wall.start();
     QTest::qWait(1500);
     const double ratio = engine.simTime() / (double(wall.elapsed()) / 1000.0);
+    // While running: once paused, the engine's next half-second window reports 0, and on a
+    // loaded machine that window can close before this thread reads it.
+    const double factor = engine.realtimeFactor();
     engine.pause();
     // Generous: the machine is shared; what matters is that the pacing follows the speed.
     QVERIFY2(ratio > 0.5 * speed && ratio < 1.3 * speed, qPrintable(QString::number(ratio)));
-    QVERIFY(engine.realtimeFactor() > 0.0);
+    QVERIFY2(factor > 0.0, qPrintable(QString::number(factor)));
 }
 
 void TestEngine::streamsReachTheHistory()
