@@ -42,6 +42,22 @@ void add(Totals &totals, const QJsonObject &metrics, const char *count, const ch
     }
 }
 
+/** Runs `options` to its end; its metrics, or false after printing why it did not load. */
+bool runToEnd(const RunOptions &options, QJsonObject *metrics)
+{
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    if (!run) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        return false;
+    }
+    RunSink sink;
+    while (run->step(sink)) {
+    }
+    *metrics = run->metrics();
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -78,17 +94,10 @@ int main(int argc, char *argv[])
                 options.router = router;
                 options.seed = std::uint64_t(seed);
                 options.duration = stress.duration;
-                QString error;
-                std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-                if (!run) {
-                    std::fprintf(stderr, "%s\n", qPrintable(error));
+                QJsonObject metrics;
+                if (!runToEnd(options, &metrics))
                     return 1;
-                }
-                RunSink sink;
-                while (run->step(sink)) {
-                }
-                add(totals, run->metrics(), stress.count, stress.warned, stress.inTime,
-                    stress.lead);
+                add(totals, metrics, stress.count, stress.warned, stress.inTime, stress.lead);
             }
             const double n = std::max(1, totals.failures);
             const QString label = QStringLiteral("%1 on %2")
@@ -116,16 +125,9 @@ int main(int argc, char *argv[])
             options.router = router;
             options.seed = std::uint64_t(seed);
             options.duration = 120.0;
-            QString error;
-            std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-            if (!run) {
-                std::fprintf(stderr, "%s\n", qPrintable(error));
+            QJsonObject m;
+            if (!runToEnd(options, &m))
                 return 1;
-            }
-            RunSink sink;
-            while (run->step(sink)) {
-            }
-            const QJsonObject m = run->metrics();
             const int n = m.value(QLatin1String("containers_dropped")).toInt();
             drops += n;
             inTime += n * m.value(QLatin1String("drops_warned_in_time_share")).toDouble();
