@@ -409,8 +409,10 @@ void TestBandSim::stopAllZeroesAtOnce()
         log, [](const BandLogLine &l) { return allAt(l, 0.0); }, 2000);
     play.waitForFinished(1000);
     qInfo("every valve closed %lld ms after SIGINT", ms);
-    // Inside the 250 ms watchdog, and the watchdog did not trip: the stop-all did it.
-    QVERIFY2(ms >= 0 && ms < BandWatchdogMs, qPrintable(QString::number(ms)));
+    // The flag is what says the stop-all did it and not the watchdog. The time we read here
+    // also holds how late a busy machine wakes play, the band and this test, so it gets the
+    // watchdog test's bound; a host that missed its stop-all would show "watchdog tripped".
+    QVERIFY2(ms >= 0 && ms <= 2 * BandWatchdogMs, qPrintable(QString::number(ms)));
     QVERIFY(probe(band.uri()).contains("flags: none"));
 }
 
