@@ -232,6 +232,13 @@ bool Command::simulationOptions(const QCommandLineParser &parser, RunOptions *op
     }
     scene->cubes = int(count);
     scene->gripper = parser.value(QStringLiteral("gripper"));
+    for (const QString &assignment : parser.values(QStringLiteral("person"))) {
+        QString reason;
+        if (!options->person.set(assignment, &reason)) {
+            usageError(QStringLiteral("--person ") + reason);
+            return false;
+        }
+    }
     return true;
 }
 
@@ -248,6 +255,10 @@ void Command::addSceneOptions(QCommandLineParser &parser)
                       tr("How long before a failure a warning's onset may lie and still count "
                          "as its warning, in seconds (default 3; docs/metrics.md)."),
                       tr("S")});
+    parser.addOption({QStringLiteral("person"),
+                      tr("Set a parameter of the perceiving operator's person, within its "
+                         "range (repeatable; docs/operator.md)."),
+                      tr("NAME=VALUE")});
 }
 
 void Command::reportWarnings(const RouterGraph &graph)

@@ -33,10 +33,12 @@ void StudyCommand::configure(QCommandLineParser &parser)
 {
     parser.setApplicationDescription(tr(
         "semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
+        "                      [--operator reactive|perceiving] [--person NAME=VALUE]...\n"
         "semhap study export STUDY.db --csv DIR\n"
         "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
-        "simulate: runs the protocol with simulated participants (the reactive operator, a\n"
-        "seed each) into a new study, the questionnaires left unanswered.\n"
+        "simulate: runs the protocol with simulated participants (the reactive or the\n"
+        "perceiving operator, a seed each) into a new study, the questionnaires left\n"
+        "unanswered.\n"
         "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
         "DIR/trials.csv and DIR/answers.csv.\n"
         "analyze: the analysis of each measure (docs/studies.md) as Markdown on standard\n"
@@ -52,6 +54,14 @@ void StudyCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("trial-seconds"),
                       tr("simulate: cap every practice round and trial at S simulated seconds."),
                       tr("S")});
+    parser.addOption({QStringLiteral("operator"),
+                      tr("simulate: the participants' operator, reactive (the default) or "
+                         "perceiving (docs/operator.md)."),
+                      tr("NAME")});
+    parser.addOption({QStringLiteral("person"),
+                      tr("simulate: set a parameter of the perceiving operator's person "
+                         "(repeatable; docs/operator.md)."),
+                      tr("NAME=VALUE")});
     parser.addOption(
         {QStringLiteral("csv"), tr("export: the folder of the CSV files."), tr("DIR")});
     parser.addOption({QStringLiteral("report"),
@@ -106,6 +116,17 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
         if (!(options.maxSeconds > 0) || options.maxSeconds > StudyProtocol::MaxSeconds)
             return usageError(tr("--trial-seconds must be more than 0 and at most %1")
                                   .arg(StudyProtocol::MaxSeconds));
+    }
+    options.operatorName = parser.value(QStringLiteral("operator"));
+    if (options.operatorName.isEmpty())
+        options.operatorName = QStringLiteral("reactive");
+    if (!StudySimulation::operatorNames().contains(options.operatorName))
+        return usageError(tr("--operator must be one of %1")
+                              .arg(StudySimulation::operatorNames().join(QStringLiteral(", "))));
+    for (const QString &assignment : parser.values(QStringLiteral("person"))) {
+        QString reason;
+        if (!options.person.set(assignment, &reason))
+            return usageError(QStringLiteral("--person ") + reason);
     }
     const QString out = parser.value(QStringLiteral("out"));
     keepFromOutputs(protocolPath, Kept::Input);

@@ -759,6 +759,7 @@ bool RouterCompiler::connectVoice(int linkIndex, const ResolvedLink &link)
         auto input = std::make_unique<VoiceInput>(source.pattern, device);
         input->routes = std::move(routes);
         m_router->m_player.addInput(device, input.get());
+        m_router->m_voices.push_back({link.from, input.get()});
         pattern->voices.push_back(std::move(input));
         return true;
     }
@@ -942,6 +943,19 @@ std::vector<ThresholdLevels> Router::thresholds() const
         list.push_back(t);
     }
     return list;
+}
+
+int Router::soundingPattern(int device) const
+{
+    int pattern = -1;
+    int priority = -1;
+    for (const auto &[node, voice] : m_voices) {
+        if (voice->device == device && voice->isSounding() && int(voice->priority()) > priority) {
+            pattern = node;
+            priority = int(voice->priority());
+        }
+    }
+    return pattern;
 }
 
 std::vector<MessageRoute> Router::messageRoutes(double intensity) const

@@ -22,6 +22,7 @@ class RouterActivity;
 class RuntimeNode;
 class MessageSourceNode;
 class SignalNode;
+class VoiceInput;
 
 /**
  * What a threshold node watches and at which levels, as compiled: what plots draw a
@@ -128,6 +129,12 @@ public:
      * patterns, then of the devices. What `semhap distinct` compares per band.
      */
     std::vector<MessageRoute> messageRoutes(double intensity) const;
+    /**
+     * The pattern node (graph order) whose voice sounds on `device` (a player index) in the
+     * highest priority class, the first in link order among equals; -1 when none sounds. What
+     * a person feeling that band is feeling, to be told from the band's other patterns.
+     */
+    int soundingPattern(int device) const;
     /** Node ids in graph order: SemanticEvent::node indexes this list. */
     const QStringList &nodeIds() const { return m_nodeIds; }
     const RouterGraph &graph() const { return m_graph; }
@@ -148,6 +155,8 @@ private:
     std::vector<SignalNode *> m_signals;
     std::vector<MessageSourceNode *> m_messageSources; ///< threshold and compose nodes
     std::vector<RuntimeNode *> m_timed;                ///< nodes that may hold timers
+    /** Every pattern voice with its node (graph order), in link order. */
+    std::vector<std::pair<int, const VoiceInput *>> m_voices;
     /** What a node's pattern or model parameter resolved to, for selfContained(). */
     struct Sources
     {

@@ -11,6 +11,9 @@
 
 namespace semhap {
 
+class Perception;
+struct PersonParameters;
+class Task;
 class World;
 
 /**
@@ -49,6 +52,11 @@ public:
     virtual void engage(const World &world) = 0;
     /** What `hand` perceives now (the previous tick's device output); default: ignored. */
     virtual void feel(Gripper hand, const Feeling &feeling, double t);
+    /**
+     * Before feel(): the whole of this tick's output band by band, and the task that judges
+     * warnings, for an operator that perceives more than a hand's Feeling; default: ignored.
+     */
+    virtual void sense(const Perception &perception, const Task &task, double t);
 };
 
 /** Operator names `makeOperator` knows. */
@@ -56,10 +64,12 @@ QStringList operatorNames();
 
 /**
  * The named operator for `world`: `scripted` (performs the task with seeded human
- * variation, ignoring feedback) or `reactive` (the same, reacting to what it feels after
- * `reactionTime` seconds). Null with `error` for an unknown name or a scene it cannot do.
+ * variation, ignoring feedback), `reactive` (the same, reacting to what it feels after
+ * `reactionTime` seconds) or `perceiving` (the reactive hands with `person`'s senses,
+ * docs/operator.md). Null with `error` for an unknown name or a scene it cannot do.
  */
 std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
-                                       double reactionTime, QString *error);
+                                       double reactionTime, const PersonParameters &person,
+                                       QString *error);
 
 } // namespace semhap

@@ -7,14 +7,15 @@
 
 namespace semhap {
 
-Perception::Perception(const Router &router) : m_player(router.player())
+Perception::Perception(const Router &router) : m_router(router), m_player(router.player())
 {
     for (int d = 0; d < m_player.deviceCount(); ++d) {
         const DeviceModel &model = m_player.deviceModel(d);
         Device device;
+        Band band;
         Gripper hand = Gripper::Right;
         if (router.deviceHand(d, &hand))
-            device.hand = int(hand);
+            band.hand = int(hand);
         for (int c = 0; c < model.channelCount(); ++c) {
             device.filters.emplace_back(model, model.rate());
             const QString channel = model.channels()[size_t(c)].name;
@@ -26,19 +27,22 @@ Perception::Perception(const Router &router) : m_player(router.player())
             device.shownHand.push_back(int(hand));
         }
         m_devices.push_back(std::move(device));
+        m_bands.push_back(band);
     }
 }
 
 void Perception::onDeviceFrame(const DeviceFrame &frame)
 {
     Device &device = m_devices[size_t(frame.device)];
-    device.level = 0.0;
+    Band &band = m_bands[size_t(frame.device)];
+    band.level = 0.0;
     for (int c = 0; c < frame.channelCount; ++c) {
         const double delivered = device.filters[size_t(c)].step(frame.values[size_t(c)]);
         if (device.shown[size_t(c)] < 0)
-            device.level = std::max(device.level, delivered);
+            band.level = std::max(band.level, delivered);
     }
-    device.priority = m_player.soundingPriority(frame.device);
+    band.priority = m_player.soundingPriority(frame.device);
+    band.pattern = m_router.soundingPattern(frame.device);
     update();
     // The overlay is seen as commanded: a screen has no lag worth modelling.
     for (int c = 0; c < frame.channelCount; ++c) {
@@ -57,18 +61,18 @@ void Perception::update()
         feeling.warning = 0.0;
         feeling.pressure = 0.0;
     }
-    for (const Device &device : m_devices) {
-        if (device.hand < 0)
+    for (const Band &band : m_bands) {
+        if (band.hand < 0)
             continue;
-        Feeling &feeling = m_feelings[size_t(device.hand)];
+        Feeling &feeling = m_feelings[size_t(band.hand)];
         double *target = &feeling.pressure;
-        if (device.priority == PlayerInput::Exception)
+        if (band.priority == PlayerInput::Exception)
             target = &feeling.warning;
-        else if (device.priority == PlayerInput::Confirmation)
+        else if (band.priority == PlayerInput::Confirmation)
             target = &feeling.confirmation;
-        else if (device.priority < 0)
+        else if (band.priority < 0)
             continue; // a fading output whose message is gone still moves the band a little
-        *target = std::max(*target, device.level);
+        *target = std::max(*target, band.level);
     }
 }
 

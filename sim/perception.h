@@ -28,26 +28,38 @@ public:
      */
     static constexpr double PulseGap = 0.6;
 
+    /** One band as it is felt now, for a person who tells its patterns apart. */
+    struct Band
+    {
+        int hand = -1;      ///< Gripper, or -1 for the overlay or others
+        double level = 0.0; ///< delivered (after the response), max over its felt channels
+        int priority = -1;  ///< Player::soundingPriority
+        int pattern = -1;   ///< Router::soundingPattern
+    };
+
     explicit Perception(const Router &router);
 
     void onDeviceFrame(const DeviceFrame &frame) override;
     Feeling feeling(Gripper hand) const { return m_feelings[size_t(hand)]; }
+    /** Each device of the router's player, in its order. */
+    const std::vector<Band> &bands() const { return m_bands; }
+    /** The router whose output this perceives. */
+    const Router &router() const { return m_router; }
 
 private:
     struct Device
     {
-        int hand = -1;                       ///< Gripper, or -1 for the overlay or others
         std::vector<ResponseFilter> filters; ///< per channel
         std::vector<int> shown;              ///< overlay: per channel, 0 confirm, 1 warn, -1
         std::vector<int> shownHand;
-        double level = 0.0; ///< delivered, max over channels
-        int priority = -1;
     };
 
     void update();
 
+    const Router &m_router;
     const Player &m_player;
     std::vector<Device> m_devices;
+    std::vector<Band> m_bands;
     std::array<Feeling, 2> m_feelings{};
 };
 

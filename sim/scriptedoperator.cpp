@@ -3,6 +3,7 @@
 
 #include "insertionoperator.h"
 #include "insertiontask.h"
+#include "perceivingoperator.h"
 #include "perception.h"
 #include "taskmonitor.h"
 #include "wipingoperator.h"
@@ -52,6 +53,8 @@ constexpr double RegripStep = 5.0;
 } // namespace
 
 void Operator::feel(Gripper, const Feeling &, double) {}
+
+void Operator::sense(const Perception &, const Task &, double) {}
 
 ScriptedOperator::ScriptedOperator(Task task, std::uint64_t seed, bool reactive,
                                    double reactionTime, Variant variant)
@@ -486,13 +489,22 @@ void ScriptedOperator::react(World &world, const Percept &percept)
 
 QStringList operatorNames()
 {
-    return {QStringLiteral("scripted"), QStringLiteral("reactive"), QStringLiteral("fast_squeeze"),
-            QStringLiteral("drifting_hold")};
+    return {QStringLiteral("scripted"), QStringLiteral("reactive"), QStringLiteral("perceiving"),
+            QStringLiteral("fast_squeeze"), QStringLiteral("drifting_hold")};
 }
 
 std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
-                                       double reactionTime, QString *error)
+                                       double reactionTime, const PersonParameters &person,
+                                       QString *error)
 {
+    if (name == QLatin1String("perceiving")) {
+        // The reactive hands, with no delay of their own: the person's senses supply it.
+        std::unique_ptr<Operator> hands =
+            makeOperator(QStringLiteral("reactive"), world, seed, 0.0, person, error);
+        if (!hands)
+            return nullptr;
+        return std::make_unique<PerceivingOperator>(std::move(hands), person, seed);
+    }
     if (!operatorNames().contains(name)) {
         *error = QStringLiteral("unknown operator '%1' (operators: %2)")
                      .arg(name, operatorNames().join(QStringLiteral(", ")));
@@ -502,7 +514,7 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, 
     if (insertion || world.taskName() == QLatin1String(WipingTask::Name)) {
         if (name != QLatin1String("scripted") && name != QLatin1String("reactive")) {
             *error = QStringLiteral("%1: the %2 operator cannot do %3 (operators: scripted, "
-                                    "reactive)")
+                                    "reactive, perceiving)")
                          .arg(world.sceneName(), name, world.taskName());
             return nullptr;
         }

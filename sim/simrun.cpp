@@ -6,6 +6,7 @@
 #include "sinklist.h"
 
 #include <QJsonArray>
+#include <QJsonDocument>
 
 #include <cmath>
 
@@ -25,6 +26,8 @@ QJsonObject RunOptions::toJson() const
         json.insert(QStringLiteral("horizon"), horizon);
     if (!sceneOptions.gripper.isEmpty())
         json.insert(QStringLiteral("gripper"), sceneOptions.gripper);
+    if (!person.toJson().isEmpty())
+        json.insert(QStringLiteral("person"), person.toJson());
     return json;
 }
 
@@ -39,7 +42,7 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
                            QLatin1String("gripper"), QLatin1String("router"),
                            QLatin1String("overrides"), QLatin1String("operator"),
                            QLatin1String("seed"), QLatin1String("reaction_time"),
-                           QLatin1String("horizon")}) ||
+                           QLatin1String("horizon"), QLatin1String("person")}) ||
         !reader.string(json, pointer, QLatin1String("scene"), &o.scene, false) ||
         !reader.string(json, pointer, QLatin1String("gripper"), &o.sceneOptions.gripper, false) ||
         !reader.number(json, pointer, QLatin1String("cubes"), &cubes, false) ||
@@ -49,6 +52,12 @@ bool RunOptions::fromJson(JsonReader &reader, const QJsonObject &json, const QSt
         !reader.number(json, pointer, QLatin1String("seed"), &seed, false) ||
         !reader.number(json, pointer, QLatin1String("reaction_time"), &o.reactionTime, false) ||
         !reader.number(json, pointer, QLatin1String("horizon"), &o.horizon, false))
+        return false;
+    QJsonObject person;
+    if (!reader.object(json, pointer, QLatin1String("person"), &person, false) ||
+        (json.contains(QLatin1String("person")) &&
+         !PersonParameters::fromJson(
+             reader, person, jsonPointerChild(pointer, QStringLiteral("person")), &o.person)))
         return false;
     const auto whole = [](double v, double low, double high) {
         return v >= low && v <= high && v == std::floor(v);
@@ -94,7 +103,7 @@ std::unique_ptr<SimRun> SimRun::create(const RunOptions &options, QString *error
     if (!run->m_task)
         return nullptr;
     run->m_operator = makeOperator(options.operatorName, *run->m_world, options.seed,
-                                   options.reactionTime, error);
+                                   options.reactionTime, options.person, error);
     if (!run->m_operator)
         return nullptr;
     run->m_perception = std::make_unique<Perception>(*router);
@@ -155,6 +164,7 @@ bool SimRun::step(RunSink &sink)
     m_task->observe(*m_world);
     // What the operator acts on next step: this tick's output, as the hands perceive it.
     const double t = m_world->frame(Gripper::Right).t;
+    driver.sense(*m_perception, *m_task, t);
     for (Gripper g : {Gripper::Left, Gripper::Right}) {
         const Feeling feeling = m_perception->feeling(g);
         driver.feel(g, feeling, t);
@@ -213,6 +223,11 @@ SessionInfo SimRun::sessionInfo() const
         info.extra.insert(QStringLiteral("gripper"), m_options.sceneOptions.gripper);
     if (m_options.sceneOptions.cubes >= 0)
         info.extra.insert(QStringLiteral("cubes"), QString::number(m_options.sceneOptions.cubes));
+    if (!m_options.person.toJson().isEmpty())
+        info.extra.insert(
+            QStringLiteral("person"),
+            QString::fromUtf8(
+                QJsonDocument(m_options.person.toJson()).toJson(QJsonDocument::Compact)));
     return info;
 }
 

@@ -3,6 +3,7 @@
 
 #include "operator.h"
 #include "perception.h"
+#include "personparameters.h"
 #include "pipeline.h"
 #include "scenestate.h"
 #include "sessioninfo.h"
@@ -32,6 +33,7 @@ struct RunOptions
     double duration = 60.0;                    ///< simulated seconds
     double reactionTime = DefaultReactionTime; ///< the reactive operator's delay (s)
     double horizon = DefaultHorizon; ///< how early a warning's onset may be and count (s)
+    PersonParameters person;         ///< the perceiving operator's senses
 
     /** The largest seed: whole numbers above 2^53 do not survive a JSON number. */
     static constexpr double MaxSeed = 9e15;
@@ -43,7 +45,8 @@ struct RunOptions
     /**
      * What makes the run, as JSON: `scene`, `cubes` (when not the scene's default),
      * `router`, `overrides`, `operator`, `seed`, `reaction_time`, `horizon` (when not
-     * DefaultHorizon); not the duration.
+     * DefaultHorizon), `person` (the parameters not at their defaults, when any); not the
+     * duration.
      */
     QJsonObject toJson() const;
     /**

@@ -8,6 +8,11 @@
 
 namespace semhap {
 
+std::optional<bool> Task::warranted(Gripper, double, double) const
+{
+    return std::nullopt;
+}
+
 std::unique_ptr<Task> makeTask(World &world, std::uint64_t seed, double reactionTime,
                                double horizon, QString *error)
 {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace semhap {
 
@@ -34,6 +35,12 @@ public:
     virtual void feel(Gripper hand, const Feeling &feeling, double t) = 0;
     /** The metrics so far, snake_case keys; averages over nothing are null. */
     virtual QJsonObject metrics() const = 0;
+    /**
+     * Whether a warning felt on `hand` from `onset` on was borne out, as a warning's
+     * precision counts it (docs/metrics.md); empty until `t` is a horizon past the onset,
+     * and always for a task that does not judge its warnings.
+     */
+    virtual std::optional<bool> warranted(Gripper hand, double onset, double t) const;
 };
 
 /**

@@ -110,11 +110,23 @@ QJsonValue TaskMonitor::Alarms::precision(double horizon, double end) const
         if (onset > end - horizon)
             continue;
         ++judged;
-        const auto follows = [&](double t) { return t >= onset && t <= onset + horizon; };
-        answered += std::any_of(failures.begin(), failures.end(), follows) ||
-                    std::any_of(episodes.begin(), episodes.end(), follows);
+        answered += borneOut(onset, horizon) ? 1 : 0;
     }
     return judged ? QJsonValue(double(answered) / judged) : QJsonValue();
+}
+
+bool TaskMonitor::Alarms::borneOut(double onset, double horizon) const
+{
+    const auto follows = [&](double t) { return t >= onset && t <= onset + horizon; };
+    return std::any_of(failures.begin(), failures.end(), follows) ||
+           std::any_of(episodes.begin(), episodes.end(), follows);
+}
+
+std::optional<bool> TaskMonitor::warranted(Gripper hand, double onset, double t) const
+{
+    if (t < onset + m_horizon)
+        return std::nullopt;
+    return m_alarms[size_t(hand)].borneOut(onset, m_horizon);
 }
 
 QJsonValue TaskMonitor::Alarms::duty() const

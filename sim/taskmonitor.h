@@ -31,6 +31,7 @@ public:
     void observe(World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
     QJsonObject metrics() const override;
+    std::optional<bool> warranted(Gripper hand, double onset, double t) const override;
 
     static constexpr double RespawnPenalty = 2.0;
     /** How far from its home site (m) a container still stands on its base. */
@@ -75,6 +76,8 @@ private:
 
         /** The share of failures with an onset from `horizon` to `reactionTime` before. */
         QJsonValue warnedByOnsetShare(double reactionTime, double horizon) const;
+        /** Whether a failure or an episode followed `onset` within `horizon`. */
+        bool borneOut(double onset, double horizon) const;
         /** The share of onsets up to `end - horizon` a failure or an episode followed. */
         QJsonValue precision(double horizon, double end) const;
         QJsonValue duty() const;

@@ -39,7 +39,8 @@ bool runStep(StudyDatabase &study, const QString &participant, int number,
     const StudyProtocol &protocol = study.protocol();
     const bool practice = step.kind == Kind::Practice;
     RunOptions options = protocol.runOptions(step.condition);
-    options.operatorName = QStringLiteral("reactive");
+    options.operatorName = simulation.operatorName;
+    options.person = simulation.person;
     options.seed = StudySimulation::seed(number, step.trial);
     // A simulated operator that never reaches a practice goal must not run for a day.
     options.duration = protocol.seconds(step);
@@ -113,6 +114,11 @@ bool runStep(StudyDatabase &study, const QString &participant, int number,
 std::uint64_t StudySimulation::seed(int participant, int trial)
 {
     return std::uint64_t(participant) * 100u + std::uint64_t(trial);
+}
+
+QStringList StudySimulation::operatorNames()
+{
+    return {QStringLiteral("reactive"), QStringLiteral("perceiving")};
 }
 
 bool StudySimulation::run(StudyDatabase &study, const Options &options, QString *error)

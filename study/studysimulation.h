@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "personparameters.h"
 #include "studydatabase.h"
 
 #include <QString>
@@ -13,7 +14,8 @@ namespace semhap {
 /**
  * A study run headless with simulated participants (`semhap study simulate`,
  * docs/studies.md): each participant, added in turn, takes their order of conditions and
- * does every practice round and trial the protocol asks with the reactive operator, each
+ * does every practice round and trial the protocol asks with the reactive (or the
+ * perceiving) operator, each
  * recorded into a session and entered into the study as a real one would be. The
  * questionnaires are left unanswered: nothing simulates what a person thinks.
  */
@@ -25,6 +27,10 @@ public:
         int participants = 20;
         /** Caps every practice round and trial (simulated s); 0: the protocol's lengths. */
         double maxSeconds = 0.0;
+        /** The participants' operator: one of operatorNames(). */
+        QString operatorName = QStringLiteral("reactive");
+        /** The perceiving operator's person. */
+        PersonParameters person;
         /** Asked between physics steps; true ends the simulation (the trial aborted). */
         std::function<bool()> cancelled;
         /** Told of each practice round and trial once it is entered into the study. */
@@ -37,6 +43,8 @@ public:
      * the same operator noise, as the seeds of `semhap compare` do.
      */
     static std::uint64_t seed(int participant, int trial);
+    /** The operators a study simulates participants with: those that heed feedback. */
+    static QStringList operatorNames();
     /** The longest a practice round runs when its goal is a number of transfers only (s). */
     static constexpr double PracticeLimit = 600.0;
 

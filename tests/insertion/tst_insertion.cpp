@@ -5,6 +5,7 @@
 #include "insertiontask.h"
 #include "nametable.h"
 #include "operator.h"
+#include "personparameters.h"
 #include "task.h"
 #include "world.h"
 
@@ -198,9 +199,9 @@ void TestInsertion::onlyItsOperators()
 {
     std::unique_ptr<World> world = loadScene();
     QString error;
-    QVERIFY(makeOperator("scripted", *world, 1, 0.25, &error));
-    QVERIFY(makeOperator("reactive", *world, 1, 0.25, &error));
-    QVERIFY(!makeOperator("fast_squeeze", *world, 1, 0.25, &error));
+    QVERIFY(makeOperator("scripted", *world, 1, 0.25, {}, &error));
+    QVERIFY(makeOperator("reactive", *world, 1, 0.25, {}, &error));
+    QVERIFY(!makeOperator("fast_squeeze", *world, 1, 0.25, {}, &error));
     QCOMPARE(error, QString("usb_insertion: the fast_squeeze operator cannot do usb_insertion "
                             "(operators: scripted, reactive)"));
 }

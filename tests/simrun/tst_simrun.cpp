@@ -5,6 +5,7 @@
 #include "contactframereader.h"
 #include "driveoperator.h"
 #include "handplan.h"
+#include "jsonreader.h"
 #include "simrun.h"
 #include "taskmonitor.h"
 
@@ -155,7 +156,9 @@ class TestSimRun : public QObject
 private slots:
     void metricsOfKnownEpisodes_data();
     void metricsOfKnownEpisodes();
+    void runIsDeterministic_data();
     void runIsDeterministic();
+    void runOptionsKeepThePerson();
     void holdingHandDrifts_data();
     void holdingHandDrifts();
     void holdingHandAnticipatesACube();
@@ -230,17 +233,24 @@ void TestSimRun::metricsOfKnownEpisodes()
                                 .arg(fractureAt)));
 }
 
+void TestSimRun::runIsDeterministic_data()
+{
+    QTest::addColumn<QString>("op");
+    QTest::newRow("reactive") << "reactive";
+    QTest::newRow("perceiving") << "perceiving";
+}
+
 void TestSimRun::runIsDeterministic()
 {
+    QFETCH(QString, op);
     QTemporaryDir dir;
     QList<QByteArray> outputs[2];
     for (int i = 0; i < 2; ++i) {
         const QString prefix = dir.filePath(QString::number(i));
-        const CliResult r =
-            semhapRun({"run", "--scene", "box_and_block", "--router", "C3", "--operator",
-                       "reactive", "--seed", "7", "--duration", "8", "--frames",
-                       prefix + ".frames", "--events", prefix + ".events", "--device-frames",
-                       prefix + ".devices", "--metrics", prefix + ".json"});
+        const CliResult r = semhapRun(
+            {"run", "--scene", "box_and_block", "--router", "C3", "--operator", op, "--seed", "7",
+             "--duration", "8", "--frames", prefix + ".frames", "--events", prefix + ".events",
+             "--device-frames", prefix + ".devices", "--metrics", prefix + ".json"});
         QCOMPARE(r.code, 0);
         for (const char *stream : {".frames", ".events", ".devices"})
             outputs[i].append(readAll(prefix + stream));
@@ -264,6 +274,31 @@ void TestSimRun::runIsDeterministic()
         ++count;
     QCOMPARE(reader.rejectedCount(), 0);
     QCOMPARE(count, 4000); // 8 s at 2 ms, the right gripper only
+}
+
+void TestSimRun::runOptionsKeepThePerson()
+{
+    // The perceiving operator's parameters are part of what makes a run: kept when they
+    // differ from the defaults, read back within their ranges, refused at their place.
+    RunOptions options;
+    options.operatorName = QStringLiteral("perceiving");
+    QVERIFY(!options.toJson().contains("person"));
+    QString reason;
+    QVERIFY(options.person.set(QStringLiteral("adaptation_rate=0.3"), &reason));
+    const QJsonObject json = options.toJson();
+    QCOMPARE(json.value("person").toObject(), (QJsonObject{{"adaptation_rate", 0.3}}));
+    JsonReader reader(QStringLiteral("run.json"));
+    RunOptions back;
+    QVERIFY(RunOptions::fromJson(reader, json, QString(), &back));
+    QVERIFY(back.person == options.person);
+
+    QJsonObject bad = json;
+    bad.insert("person", QJsonObject{{"adaptation_rate", 2}});
+    JsonReader badReader(QStringLiteral("run.json"));
+    QVERIFY(!RunOptions::fromJson(badReader, bad, QString(), &back));
+    QCOMPARE(badReader.error().toString(),
+             QStringLiteral("run.json: /person/adaptation_rate: expected a number from 0.02 to "
+                            "0.3"));
 }
 
 void TestSimRun::holdingHandDrifts_data()
@@ -364,6 +399,8 @@ void TestSimRun::commandLineErrors_data()
     QTest::addColumn<int>("code");
     QTest::addColumn<QString>("error");
     const QStringList base{"run", "--router", "C3", "--operator", "scripted", "--duration", "1"};
+    const QStringList compare{"compare",    "--scene",  "box_and_block", "--routers", "none",
+                              "--operator", "scripted", "--seeds",       "1"};
     QTest::newRow("no scene") << base << 2 << "semhap run: --scene is required";
     QTest::newRow("unknown scene")
         << base + QStringList{"--scene", "kitchen"} << 1
@@ -373,8 +410,19 @@ void TestSimRun::commandLineErrors_data()
         << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
                        "--operator", "robot",   "--duration",    "1"}
         << 1
-        << "unknown operator 'robot' (operators: scripted, reactive, fast_squeeze, "
+        << "unknown operator 'robot' (operators: scripted, reactive, perceiving, fast_squeeze, "
            "drifting_hold)";
+    QTest::newRow("a person's parameter out of its range")
+        << base + QStringList{"--scene", "box_and_block", "--person", "saccade=0.5"} << 2
+        << "semhap run: --person saccade=0.5: expected a number from 0.15 to 0.25 s";
+    QTest::newRow("a person's parameter of no name")
+        << compare + QStringList{"--duration", "1", "--person", "0.2"} << 2
+        << "semhap compare: --person 0.2: expected NAME=VALUE, NAME one of "
+           "vibration_level_jnd, pressure_level_weber, sight_level_weber, rate_weber, "
+           "duration_weber, shortest_rise, wrist_places, vibration_detection, "
+           "pressure_detection, sight_detection, touch_reaction, sight_reaction, reaction_sd, "
+           "reaction_tail, dual_task_cost, location_cost, saccade, pressure_adaptation, "
+           "first_reliance, adaptation_rate";
     QTest::newRow("bad seed") << base + QStringList{"--scene", "box_and_block", "--seed", "1.5"}
                               << 2 << "semhap run: --seed must be a whole number >= 0";
     QTest::newRow("malformed binding")
@@ -395,8 +443,6 @@ void TestSimRun::commandLineErrors_data()
         << "--set right.F.quantity=wrist.fz: node 'right.F' (signal): the right gripper's "
            "frames carry no signal 'wrist.fz' (they carry none)";
     // compare reads --duration and --cubes by the same rules as run.
-    const QStringList compare{"compare",    "--scene",  "box_and_block", "--routers", "none",
-                              "--operator", "scripted", "--seeds",       "1"};
     QTest::newRow("compare: negative cubes")
         << compare + QStringList{"--duration", "1", "--cubes", "-2"} << 2
         << "semhap compare: --cubes must be a whole number from 0 to 1000";

@@ -58,6 +58,7 @@ private slots:
     void aDamagedStudyIsNeitherExportedNorAnalysed();
     void badCallsAreRefused_data();
     void badCallsAreRefused();
+    void perceivingParticipants();
 
 private:
     /**
@@ -418,6 +419,19 @@ void TestStudyCli::badCallsAreRefused_data()
                        "--participants", "2",
                        "--out",          out}
         << 1 << "bad.json: /conditions/0/router: C9: no such router preset";
+    QTest::newRow("an operator that ignores feedback")
+        << QStringList{"simulate",       example("unimanual.json"),
+                       "--participants", "2",
+                       "--out",          out,
+                       "--operator",     "scripted"}
+        << 2 << "--operator must be one of reactive, perceiving";
+    QTest::newRow("a person out of range")
+        << QStringList{"simulate",       example("unimanual.json"),
+                       "--participants", "2",
+                       "--out",          out,
+                       "--operator",     "perceiving",
+                       "--person",       "first_reliance=0.2"}
+        << 2 << "--person first_reliance=0.2: expected a number from 0.5 to 1";
     QTest::newRow("export of no study")
         << QStringList{"export", example("unimanual.json"), "--csv", "OUT"} << 1
         << "not a semhap study";
@@ -447,6 +461,26 @@ void TestStudyCli::badCallsAreRefused()
     QVERIFY2(QString::fromUtf8(r.err).contains(error), r.err.constData());
     QCOMPARE(readAll(m_study), before); // nothing written over
     QVERIFY(!QFileInfo::exists(out + QStringLiteral("/new.db")));
+}
+
+void TestStudyCli::perceivingParticipants()
+{
+    // The perceiving operator's participants, with a parameter of their person set: each
+    // session says who drove and with what senses.
+    const QString study = m_dir.filePath(QStringLiteral("perceiving.db"));
+    const CliResult r = semhapRun({"study", "simulate", example("unimanual.json"),
+                                   "--participants", "2", "--out", study, "--trial-seconds", "2",
+                                   "--operator", "perceiving", "--person", "saccade=0.15"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(r.out.contains("2 simulated participants, 24 runs"));
+    QString error;
+    auto opened = StudyDatabase::open(study, StudyDatabase::Access::Read, &error);
+    QVERIFY2(opened, qPrintable(error));
+    const StudyDatabase::Trial trial = opened->trials().front();
+    auto session = SessionReader::open(QFileInfo(study).dir().filePath(trial.session), &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->info().operatorName, QStringLiteral("perceiving"));
+    QCOMPARE(session->info().extra.value("person"), QStringLiteral("{\"saccade\":0.15}"));
 }
 
 QTEST_GUILESS_MAIN(TestStudyCli)

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#include "perceivingoperator.h"
+
+#include "world.h"
+
+#include <cmath>
+
+namespace semhap {
+
+namespace {
+
+/** The person's draws are a stream of their own, so the hands vary as the reactive ones do. */
+constexpr std::uint64_t PersonStream = 0x9e3779b97f4a7c15ull;
+
+} // namespace
+
+PerceivingOperator::PerceivingOperator(std::unique_ptr<Operator> hands,
+                                       const PersonParameters &parameters, std::uint64_t seed)
+    : m_hands(std::move(hands)), m_person(parameters, seed ^ PersonStream)
+{}
+
+QString PerceivingOperator::name() const
+{
+    return QStringLiteral("perceiving");
+}
+
+Gripper PerceivingOperator::gaze(const World &world, const std::array<double, 3> &leftBefore)
+{
+    if (!world.hasGripper(Gripper::Left))
+        return Gripper::Right;
+    if (!world.hasGripper(Gripper::Right))
+        return Gripper::Left;
+    const auto left = world.target(Gripper::Left).pos;
+    const double moved =
+        std::hypot(left[0] - leftBefore[0], left[1] - leftBefore[1], left[2] - leftBefore[2]);
+    if (moved > Moving * world.timestep())
+        return Gripper::Left;
+    // The eyes go where the picking hand is going (its target), ahead of the hand.
+    const auto right = world.target(Gripper::Right).pos;
+    const auto holding = world.gripperPose(Gripper::Left).pos;
+    return std::hypot(right[0] - holding[0], right[1] - holding[1]) < AtHand ? Gripper::Left
+                                                                             : Gripper::Right;
+}
+
+void PerceivingOperator::act(World &world)
+{
+    m_hands->act(world);
+    // Where the hands go next is where the eyes go: after they are given their targets.
+    m_person.look(gaze(world, m_leftBefore), world.time());
+    if (world.hasGripper(Gripper::Left))
+        m_leftBefore = world.target(Gripper::Left).pos;
+}
+
+void PerceivingOperator::engage(const World &world)
+{
+    m_hands->engage(world);
+    m_person.forget();
+    if (world.hasGripper(Gripper::Left))
+        m_leftBefore = world.target(Gripper::Left).pos;
+}
+
+void PerceivingOperator::sense(const Perception &perception, const Task &task, double t)
+{
+    m_person.sense(perception, task, t);
+}
+
+void PerceivingOperator::feel(Gripper hand, const Feeling &, double t)
+{
+    // What the hands act on is what the person has taken in, not what the bands meant.
+    m_hands->feel(hand, m_person.feeling(hand), t);
+}
+
+} // namespace semhap
