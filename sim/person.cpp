@@ -175,6 +175,10 @@ void Person::readPressure(Gripper hand, double pressure, bool watched, double t,
     const double detection = m_parameters.senses.pressureDetection;
     if (pressure < detection)
         pressure = 0.0;
+    if (pressure == 0.0 && h.pressure == 0.0 && h.readings.empty()) {
+        h.adapted = 0.0; // nothing felt, nothing on its way: the common case, kept cheap
+        return;
+    }
     h.adapted += (pressure - h.adapted) * std::min(1.0, dt / m_parameters.pressureAdaptation);
     const double jnd = std::log1p(m_parameters.senses.pressureLevelWeber);
     const auto steps = [&](double a, double b) {
