@@ -159,10 +159,6 @@
         <translation>Reaktionszeit in Sekunden des Bedieners und der Person, die die Predict-Knoten des Routers warnen.</translation>
     </message>
     <message>
-        <source>Who drives until you do: scripted or reactive.</source>
-        <translation>Wer steuert, bis Sie es tun: scripted oder reactive.</translation>
-    </message>
-    <message>
         <source>A gripper adapter, by name or as a semhap.gripper/1 file, whose model takes the place of the scene&apos;s grippers (default: the scene&apos;s own).</source>
         <translation>Ein Greifer-Adapter, als Name oder als semhap.gripper/1-Datei, dessen Modell an die Stelle der Greifer der Szene tritt (Standard: die eigenen der Szene).</translation>
     </message>
@@ -197,6 +193,10 @@
     <message>
         <source>--participant: name the study with --study</source>
         <translation>--participant: nennen Sie die Studie mit --study</translation>
+    </message>
+    <message>
+        <source>Who drives until you do: scripted, reactive or perceiving.</source>
+        <translation>Wer steuert, bis Sie es tun: scripted, reactive oder perceiving.</translation>
     </message>
 </context>
 <context>

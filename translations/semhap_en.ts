@@ -159,10 +159,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Who drives until you do: scripted or reactive.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>A gripper adapter, by name or as a semhap.gripper/1 file, whose model takes the place of the scene&apos;s grippers (default: the scene&apos;s own).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -196,6 +192,10 @@
     </message>
     <message>
         <source>--participant: name the study with --study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who drives until you do: scripted, reactive or perceiving.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -33,7 +33,8 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                     tr("Router: a preset name or a semhap.router/1 file."),
                                     tr("router"), o.run.router);
     const QCommandLineOption op({QStringLiteral("operator")},
-                                tr("Who drives until you do: scripted or reactive."), tr("name"),
+                                tr("Who drives until you do: scripted, reactive or perceiving."),
+                                tr("name"),
                                 o.run.operatorName);
     const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."), tr("n"),
                                   QString::number(o.run.seed));
