@@ -232,9 +232,14 @@ bool Command::simulationOptions(const QCommandLineParser &parser, RunOptions *op
     }
     scene->cubes = int(count);
     scene->gripper = parser.value(QStringLiteral("gripper"));
+    return personOptions(parser, &options->person);
+}
+
+bool Command::personOptions(const QCommandLineParser &parser, PersonParameters *person)
+{
     for (const QString &assignment : parser.values(QStringLiteral("person"))) {
         QString reason;
-        if (!options->person.set(assignment, &reason)) {
+        if (!person->set(assignment, &reason)) {
             usageError(QStringLiteral("--person ") + reason);
             return false;
         }

@@ -21,6 +21,7 @@
 
 namespace semhap {
 
+struct PersonParameters;
 struct RunOptions;
 
 class Pipeline;
@@ -125,6 +126,11 @@ protected:
      * compare share. False after a usage message.
      */
     bool simulationOptions(const QCommandLineParser &parser, RunOptions *options);
+    /**
+     * Applies each --person NAME=VALUE to `person`; false after a usage error naming the
+     * parameter or its range.
+     */
+    bool personOptions(const QCommandLineParser &parser, PersonParameters *person);
     /** Adds --cubes, --gripper and --horizon, which simulationOptions() reads. */
     static void addSceneOptions(QCommandLineParser &parser);
     /** The longest simulated run (s): about eleven days. */

@@ -123,11 +123,8 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     if (!StudySimulation::operatorNames().contains(options.operatorName))
         return usageError(tr("--operator must be one of %1")
                               .arg(StudySimulation::operatorNames().join(QStringLiteral(", "))));
-    for (const QString &assignment : parser.values(QStringLiteral("person"))) {
-        QString reason;
-        if (!options.person.set(assignment, &reason))
-            return usageError(QStringLiteral("--person ") + reason);
-    }
+    if (!personOptions(parser, &options.person))
+        return ExitUsage;
     const QString out = parser.value(QStringLiteral("out"));
     keepFromOutputs(protocolPath, Kept::Input);
     if (!checkOutputPath(out))

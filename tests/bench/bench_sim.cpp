@@ -11,8 +11,29 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 using namespace semhap;
+
+namespace {
+
+/** A run of `seconds` on `scene` with C3, seed 1; exits the benchmark when it cannot load. */
+std::unique_ptr<SimRun> load(const char *scene, const QString &operatorName, double seconds)
+{
+    RunOptions options;
+    options.scene = QString::fromLatin1(scene);
+    options.operatorName = operatorName;
+    options.duration = seconds;
+    QString error;
+    std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+    if (!run) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        std::exit(1);
+    }
+    return run;
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -21,15 +42,7 @@ int main(int argc, char *argv[])
     const double seconds = args.size() > 1 ? args[1].toDouble() : 60.0;
     std::printf("bench_sim: %g simulated s per scene, C3, scripted operator, seed 1\n", seconds);
     for (const char *scene : {"box_and_block", "bimanual_sorting"}) {
-        RunOptions options;
-        options.scene = QString::fromLatin1(scene);
-        options.duration = seconds;
-        QString error;
-        std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-        if (!run) {
-            std::fprintf(stderr, "%s\n", qPrintable(error));
-            return 1;
-        }
+        std::unique_ptr<SimRun> run = load(scene, QStringLiteral("scripted"), seconds);
         RunSink sink;
         const auto start = std::chrono::steady_clock::now();
         while (run->step(sink)) {
@@ -46,16 +59,7 @@ int main(int argc, char *argv[])
     // <= 10 %). Timed on one run, so the two are of the same ticks.
     std::printf("bench_sim: the perceiving operator's person per tick, C3, reactive run, seed 1\n");
     for (const char *scene : {"box_and_block", "bimanual_sorting"}) {
-        RunOptions options;
-        options.scene = QString::fromLatin1(scene);
-        options.operatorName = QStringLiteral("reactive");
-        options.duration = seconds;
-        QString error;
-        std::unique_ptr<SimRun> run = SimRun::create(options, &error);
-        if (!run) {
-            std::fprintf(stderr, "%s\n", qPrintable(error));
-            return 1;
-        }
+        std::unique_ptr<SimRun> run = load(scene, QStringLiteral("reactive"), seconds);
         struct Unjudged : Task
         {
             void observe(World &) override {}

@@ -201,9 +201,10 @@ void TestInsertion::onlyItsOperators()
     QString error;
     QVERIFY(makeOperator("scripted", *world, 1, 0.25, {}, &error));
     QVERIFY(makeOperator("reactive", *world, 1, 0.25, {}, &error));
+    QVERIFY(makeOperator("perceiving", *world, 1, 0.25, {}, &error));
     QVERIFY(!makeOperator("fast_squeeze", *world, 1, 0.25, {}, &error));
     QCOMPARE(error, QString("usb_insertion: the fast_squeeze operator cannot do usb_insertion "
-                            "(operators: scripted, reactive)"));
+                            "(operators: scripted, reactive, perceiving)"));
 }
 
 void TestInsertion::unknownTask()

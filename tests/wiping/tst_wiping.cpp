@@ -429,10 +429,11 @@ void TestWiping::operatorsOfTheScene_data()
     QTest::addColumn<QString>("error");
     QTest::newRow("scripted") << "scripted" << 0 << "";
     QTest::newRow("reactive") << "reactive" << 0 << "";
+    QTest::newRow("perceiving") << "perceiving" << 0 << "";
     QTest::newRow("fast_squeeze")
         << "fast_squeeze" << 1
         << "dish_wiping: the fast_squeeze operator cannot do dish_wiping (operators: scripted, "
-           "reactive)";
+           "reactive, perceiving)";
 }
 
 void TestWiping::operatorsOfTheScene()
