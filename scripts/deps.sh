@@ -26,6 +26,8 @@ packages=(
     xvfb xauth libgl1-mesa-dri openbox x11-utils
     # scripts/stress-tests.sh: the timing and kill tests with every core busy
     stress-ng
+    # scripts/replicate.py (the paper's studies simulated) and scripts/make-scenes.py
+    python3
     # the desktop package: man pages, metadata checks, .deb dependencies
     help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )
