@@ -4,6 +4,7 @@
 #include "contactframe.h"
 #include "routercontext.h"
 
+#include <QJsonObject>
 #include <QString>
 
 #include <cstdint>
@@ -57,6 +58,8 @@ public:
      * warnings, for an operator that perceives more than a hand's Feeling; default: ignored.
      */
     virtual void sense(const Perception &perception, const Task &task, double t);
+    /** Adds what the operator itself counted to a run's metrics; default: nothing. */
+    virtual void addMetrics(QJsonObject *metrics) const;
 };
 
 /** Operator names `makeOperator` knows. */

@@ -3,6 +3,8 @@
 
 #include "world.h"
 
+#include <QJsonObject>
+
 #include <cmath>
 
 namespace semhap {
@@ -44,6 +46,7 @@ Gripper PerceivingOperator::gaze(const World &world, const std::array<double, 3>
 
 void PerceivingOperator::act(World &world)
 {
+    m_hasHand = {world.hasGripper(Gripper::Left), world.hasGripper(Gripper::Right)};
     m_hands->act(world);
     // Where the hands go next is where the eyes go: after they are given their targets.
     m_person.look(gaze(world, m_leftBefore), world.time());
@@ -68,6 +71,26 @@ void PerceivingOperator::feel(Gripper hand, const Feeling &, double t)
 {
     // What the hands act on is what the person has taken in, not what the bands meant.
     m_hands->feel(hand, m_person.feeling(hand), t);
+}
+
+void PerceivingOperator::addMetrics(QJsonObject *metrics) const
+{
+    int cues = 0;
+    int misread = 0;
+    int ignored = 0;
+    for (Gripper hand : {Gripper::Left, Gripper::Right}) {
+        const Person::Record &record = m_person.record(hand);
+        cues += record.cues;
+        misread += record.misread;
+        ignored += record.ignored;
+        if (m_hasHand[size_t(hand)])
+            metrics->insert(hand == Gripper::Left ? QStringLiteral("left_reliance")
+                                                  : QStringLiteral("right_reliance"),
+                            m_person.reliance(hand));
+    }
+    metrics->insert(QStringLiteral("cues_taken_in"), cues);
+    metrics->insert(QStringLiteral("cues_misread"), misread);
+    metrics->insert(QStringLiteral("warnings_ignored"), ignored);
 }
 
 } // namespace semhap

@@ -28,6 +28,11 @@ public:
     void engage(const World &world) override;
     void sense(const Perception &perception, const Task &task, double t) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
+    /**
+     * `cues_taken_in`, `cues_misread`, `warnings_ignored` (both hands), and per hand of the
+     * scene `left_reliance`, `right_reliance` (docs/metrics.md).
+     */
+    void addMetrics(QJsonObject *metrics) const override;
 
     const Person &person() const { return m_person; }
     /**
@@ -45,6 +50,7 @@ private:
     std::unique_ptr<Operator> m_hands;
     Person m_person;
     std::array<double, 3> m_leftBefore{};
+    std::array<bool, 2> m_hasHand{}; ///< the scene's grippers, as act() found them
 };
 
 } // namespace semhap

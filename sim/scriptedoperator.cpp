@@ -56,6 +56,8 @@ void Operator::feel(Gripper, const Feeling &, double) {}
 
 void Operator::sense(const Perception &, const Task &, double) {}
 
+void Operator::addMetrics(QJsonObject *) const {}
+
 ScriptedOperator::ScriptedOperator(Task task, std::uint64_t seed, bool reactive,
                                    double reactionTime, Variant variant)
     : m_task(task), m_random(seed), m_reactive(reactive), m_variant(variant),

@@ -125,6 +125,13 @@ RouterContext SimRun::routerContext(const World &world, double reactionTime)
     return context;
 }
 
+QJsonObject SimRun::metrics() const
+{
+    QJsonObject metrics = m_task->metrics();
+    m_operator->addMetrics(&metrics);
+    return metrics;
+}
+
 bool SimRun::isDone() const
 {
     return m_steps >= m_totalSteps;

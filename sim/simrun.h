@@ -91,8 +91,8 @@ public:
     /** Simulated seconds so far. */
     double time() const;
 
-    /** The task metrics so far. */
-    QJsonObject metrics() const { return m_task->metrics(); }
+    /** The task metrics so far, and the run's own operator's (Operator::addMetrics). */
+    QJsonObject metrics() const;
 
     /**
      * Drives the grippers with `op` instead of the run's own operator while it is set (the

@@ -1702,6 +1702,46 @@ In %2; in Exporten: %3</translation>
         <source>The share of the time the container was held that a warning was felt (bimanual).</source>
         <translation>Der Anteil der Haltezeit des Behälters, in dem eine Warnung zu spüren war (beidhändig).</translation>
     </message>
+    <message>
+        <source>Cues taken in</source>
+        <translation>Wahrgenommene Signale</translation>
+    </message>
+    <message>
+        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
+        <translation>Signale, die der wahrnehmende Bediener an einem Armband gespürt oder in der Einblendung gesehen hat.</translation>
+    </message>
+    <message>
+        <source>Cues misread</source>
+        <translation>Verwechselte Signale</translation>
+    </message>
+    <message>
+        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
+        <translation>Signale, die der wahrnehmende Bediener für eine Nachricht der anderen Bedeutung hielt: eine Warnung für eine Bestätigung oder umgekehrt.</translation>
+    </message>
+    <message>
+        <source>Warnings ignored</source>
+        <translation>Übergangene Warnungen</translation>
+    </message>
+    <message>
+        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
+        <translation>Warnungen, die der wahrnehmende Bediener spürte und nicht beantwortete, weil die Warnungen dieser Hand selten gestimmt hatten.</translation>
+    </message>
+    <message>
+        <source>Left reliance</source>
+        <translation>Vertrauen links</translation>
+    </message>
+    <message>
+        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation>Der Anteil der Warnungen der linken Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+    </message>
+    <message>
+        <source>Right reliance</source>
+        <translation>Vertrauen rechts</translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation>Der Anteil der Warnungen der rechten Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -1696,6 +1696,46 @@ In %2; in exports: %3</source>
         <source>The share of the time the container was held that a warning was felt (bimanual).</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Cues taken in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cues misread</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left reliance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right reliance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>

@@ -159,6 +159,7 @@ private slots:
     void runIsDeterministic_data();
     void runIsDeterministic();
     void runOptionsKeepThePerson();
+    void perceivingOperatorCountsItsCues();
     void holdingHandDrifts_data();
     void holdingHandDrifts();
     void holdingHandAnticipatesACube();
@@ -299,6 +300,35 @@ void TestSimRun::runOptionsKeepThePerson()
     QCOMPARE(badReader.error().toString(),
              QStringLiteral("run.json: /person/adaptation_rate: expected a number from 0.02 to "
                             "0.3"));
+}
+
+void TestSimRun::perceivingOperatorCountsItsCues()
+{
+    // The perceiving operator adds what its person took in to the metrics, and a reliance
+    // for each hand the scene has; the reactive operator adds nothing.
+    const auto metricsOf = [](const QString &scene, const QString &op) {
+        RunOptions options;
+        options.scene = scene;
+        options.operatorName = op;
+        options.duration = 20;
+        QString error;
+        std::unique_ptr<SimRun> run = SimRun::create(options, &error);
+        RunSink sink;
+        while (run && run->step(sink)) {
+        }
+        return run ? run->metrics() : QJsonObject();
+    };
+    const QJsonObject bimanual = metricsOf("bimanual_sorting", "perceiving");
+    QVERIFY(bimanual.value("cues_taken_in").toInt() > 0);
+    QVERIFY(bimanual.value("cues_misread").isDouble());
+    QVERIFY(bimanual.value("warnings_ignored").toInt() <= bimanual.value("cues_taken_in").toInt());
+    for (const char *key : {"left_reliance", "right_reliance"}) {
+        const double reliance = bimanual.value(key).toDouble(-1);
+        QVERIFY2(reliance >= 0 && reliance <= 1, key);
+    }
+    const QJsonObject unimanual = metricsOf("box_and_block", "perceiving");
+    QVERIFY(unimanual.contains("right_reliance") && !unimanual.contains("left_reliance"));
+    QVERIFY(!metricsOf("box_and_block", "reactive").contains("cues_taken_in"));
 }
 
 void TestSimRun::holdingHandDrifts_data()
