@@ -397,6 +397,11 @@ void TestEventLog::metrics_data()
         << "17.57 s";
     QTest::newRow("plates broken") << "plates_broken" << QJsonValue(2) << "Plates broken"
                                    << "2";
+    // The perceiving operator's own counts.
+    QTest::newRow("cues misread") << "cues_misread" << QJsonValue(3) << "Cues misread"
+                                  << "3";
+    QTest::newRow("reliance") << "left_reliance" << QJsonValue(0.729) << "Left reliance"
+                              << "73 %";
     QTest::newRow("unknown count") << "retries" << QJsonValue(4) << "retries"
                                    << "4";
     QTest::newRow("unknown rate") << "transfers_per_minute" << QJsonValue(2.456)
@@ -503,7 +508,11 @@ void TestEventLog::screenshot()
                                    {"realtime_factor", 0.988},
                                    {"scene", "box_and_block"},
                                    {"router", "C3"},
-                                   {"operator", "scripted"},
+                                   {"cues_taken_in", 31},
+                                   {"cues_misread", 2},
+                                   {"warnings_ignored", 4},
+                                   {"right_reliance", 0.81},
+                                   {"operator", "perceiving"},
                                    {"seed", 7}});
     // The metrics' labels in German too: they are the longest strings of the panel.
     QTranslator german;
