@@ -27,8 +27,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STUDIES = ("comparison", "unimanual", "bimanual")
 
 # The task-performance effects the paper reports as significant (its sections 5-7), each
-# with the direction it reports. `lower` and `higher` list pairs (a, b): the paper's mean of
-# a is below (above) b's. An interaction has no direction in the paper: only its test counts.
+# with the direction it reports, whole: "semantic fewest" is fewer than each of the other
+# three. `lower` and `higher` list pairs (a, b): the paper's mean of a is below (above) b's.
+# An interaction has no direction in the paper: only its test counts.
 EFFECTS = [
     {"study": "comparison", "measure": "average_grasp_force", "effect": "grasp:break",
      "paper": "Grasp × Break interaction, F(1, 11) = 5.65, p = .037 (no pair differs)"},
@@ -37,11 +38,12 @@ EFFECTS = [
      "paper": "none (46.6 N) above visual (42.7 N) and sensory (41.6 N); "
               "F(3, 33) = 11.67, p < .001"},
     {"study": "bimanual", "measure": "cubes_broken",
-     "lower": [("semantic", "none"), ("semantic", "sensory")],
+     "lower": [("semantic", "none"), ("semantic", "visual"), ("semantic", "sensory")],
      "paper": "semantic fewest (7.40), none (10.70) and sensory (10.35) most; "
               "χ²(3) = 12.17, p = .007"},
     {"study": "bimanual", "measure": "containers_dropped",
-     "lower": [("semantic", "sensory")],
+     "lower": [("semantic", "none"), ("semantic", "visual"), ("semantic", "sensory")],
+     "higher": [("sensory", "none"), ("sensory", "visual")],
      "paper": "semantic fewest (3.35), sensory most (5.80); χ²(3) = 10.27, p = .016"},
 ]
 ALPHA = 0.05
@@ -70,20 +72,24 @@ def analyze(semhap, db):
     return {m["measure"]: m for m in json.loads(done.stdout)["measures"]}
 
 
+def p_text(p):
+    return "p < .001" if p < 0.001 else f"p = {p:.3f}".replace("0.", ".", 1)
+
+
 def test_text(measure, effect=None):
     if effect:
         a = measure["two_way_anova"][effect]
-        return a["p"], f"F({a['df1']:g}, {a['df2']:g}) = {a['f']:.2f}, p = {a['p']:.3f}"
+        return a["p"], f"F({a['df1']:g}, {a['df2']:g}) = {a['f']:.2f}, {p_text(a['p'])}"
     if measure["primary"] == "anova":
         a = measure["anova"]
         if a["mauchly"]["tested"] and a["mauchly"]["p"] < ALPHA:
             # Sphericity rejected: the Greenhouse-Geisser correction is the test, as in the report.
             g = a["greenhouse_geisser"]
             return g["p"], (f"RM-ANOVA F({g['df1']:.2f}, {g['df2']:.2f}) = {a['f']:.2f}, "
-                            f"p = {g['p']:.3f} (Greenhouse–Geisser)")
-        return a["p"], f"RM-ANOVA F({a['df1']:g}, {a['df2']:g}) = {a['f']:.2f}, p = {a['p']:.3f}"
+                            f"{p_text(g['p'])} (Greenhouse–Geisser)")
+        return a["p"], f"RM-ANOVA F({a['df1']:g}, {a['df2']:g}) = {a['f']:.2f}, {p_text(a['p'])}"
     f = measure["friedman"]
-    return f["p"], f"Friedman χ²({f['df']:g}) = {f['chi_squared']:.2f}, p = {f['p']:.3f}"
+    return f["p"], f"Friedman χ²({f['df']:g}) = {f['chi_squared']:.2f}, {p_text(f['p'])}"
 
 
 def judge(effect, measures):
