@@ -34,8 +34,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
                                     tr("router"), o.run.router);
     const QCommandLineOption op({QStringLiteral("operator")},
                                 tr("Who drives until you do: scripted, reactive or perceiving."),
-                                tr("name"),
-                                o.run.operatorName);
+                                tr("name"), o.run.operatorName);
     const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."), tr("n"),
                                   QString::number(o.run.seed));
     const QCommandLineOption reactionTime(

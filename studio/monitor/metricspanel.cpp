@@ -129,7 +129,8 @@ const KnownMetric Known[] = {
                        "The share of breaks whose warning began within the horizon before, in "
                        "time to act: a warning on all along does not count."),
      Kind::Share},
-    {"right_warning_precision", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Right warnings borne out"),
+    {"right_warning_precision",
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Right warnings borne out"),
      QT_TRANSLATE_NOOP("semhap::MetricsPanel",
                        "The share of the right hand's warnings a break, or the grip crossing the "
                        "break line, followed within the horizon: the rest were false alarms."),
@@ -144,7 +145,8 @@ const KnownMetric Known[] = {
                        "The share of container drops whose warning began within the horizon "
                        "before, in time to act (bimanual)."),
      Kind::Share},
-    {"left_warning_precision", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Left warnings borne out"),
+    {"left_warning_precision",
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Left warnings borne out"),
      QT_TRANSLATE_NOOP("semhap::MetricsPanel",
                        "The share of the left hand's warnings a drop or a slip followed within "
                        "the horizon: the rest were false alarms (bimanual)."),

@@ -57,7 +57,8 @@ int main(int argc, char *argv[])
     // What the perceiving operator adds: its person (senses and gaze) timed on the reactive
     // operator's run, tick by tick, against the rest of the tick without physics (target:
     // <= 10 %). Timed on one run, so the two are of the same ticks.
-    std::printf("bench_sim: the perceiving operator's person per tick, C3, reactive run, seed 1\n");
+    std::printf(
+        "bench_sim: the perceiving operator's person per tick, C3, reactive run, seed 1\n");
     for (const char *scene : {"box_and_block", "bimanual_sorting"}) {
         std::unique_ptr<SimRun> run = load(scene, QStringLiteral("reactive"), seconds);
         struct Unjudged : Task
