@@ -92,6 +92,15 @@ def test_text(measure, effect=None):
     return f["p"], f"Friedman χ²({f['df']:g}) = {f['chi_squared']:.2f}, {p_text(f['p'])}"
 
 
+def order(means):
+    """The conditions from the lowest mean to the highest: `visual < semantic = none`."""
+    ranked = sorted(means, key=lambda c: means[c])
+    text = ranked[0]
+    for before, after in zip(ranked, ranked[1:]):
+        text += (" = " if means[after] == means[before] else " < ") + after
+    return text
+
+
 def judge(effect, measures):
     """The simulated direction and test of one effect, and whether it agrees."""
     m = measures[effect["measure"]]
@@ -185,9 +194,13 @@ def main():
         for label, _ in settings:
             rows = agreement(options.semhap, {s: dbs[(label, s)] for s in studies}, effects)
             cells = []
+            measures = {s: analyze(options.semhap, dbs[(label, s)]) for s in studies}
             for (effect, _, text, agrees), (_, _, _, was) in zip(rows, base):
                 verdict = "agrees" if agrees else "no"
-                cells.append(verdict + (" (flips)" if agrees != was else ""))
+                means = {c["condition"]: c["mean"]
+                         for c in measures[effect["study"]][effect["measure"]]["conditions"]}
+                cells.append(verdict + (" (flips)" if agrees != was else "") +
+                             f": {order(means)}; {text}")
             print(f"| {label} | " + " | ".join(cells) + f" | {sum(r[3] for r in rows)} |")
     print(f"\nWall time: {time.monotonic() - start:.0f} s with {options.jobs} jobs.")
 
