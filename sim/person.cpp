@@ -165,7 +165,10 @@ void Person::track(std::deque<Cue> &cues, bool present, int truth, double t, con
         cue.live = true;
         cues.push_back(cue);
     }
-    while (!cues.empty() && !cues.front().live && cues.front().last + cues.front().delay < t)
+    // Gone once it has ended and reached the hands (or was let pass).
+    while (!cues.empty() && !cues.front().live &&
+           (cues.front().actedOn || !cues.front().answered) &&
+           cues.front().last + cues.front().delay < t)
         cues.pop_front();
 }
 
@@ -303,17 +306,22 @@ void Person::updateOut(double t)
 {
     for (size_t hand = 0; hand < 2; ++hand) {
         Feeling out;
-        const auto takeIn = [&](const std::deque<Cue> &cues) {
-            for (const Cue &cue : cues) {
-                if (cue.answered && t >= cue.onset + cue.delay && t <= cue.last + cue.delay)
+        const auto takeIn = [&](std::deque<Cue> &cues) {
+            for (Cue &cue : cues) {
+                // Acted on from its reaction time while it lasts, and once at least: a cue
+                // felt for one tick would otherwise fall between two.
+                if (cue.answered && t >= cue.onset + cue.delay &&
+                    (t <= cue.last + cue.delay || !cue.actedOn)) {
                     (cue.meaning == PlayerInput::Exception ? out.warning : out.confirmation) = 1.0;
+                    cue.actedOn = true;
+                }
             }
         };
-        for (const Band &band : m_bands) {
+        for (Band &band : m_bands) {
             if (band.hand == int(hand))
                 takeIn(band.cues);
         }
-        for (const auto &cues : m_hands[hand].shown)
+        for (auto &cues : m_hands[hand].shown)
             takeIn(cues);
         out.pressure = m_hands[hand].reading;
         m_out[hand] = out;
@@ -327,7 +335,10 @@ void Person::forget()
     for (Hand &hand : m_hands) {
         for (auto &cues : hand.shown)
             cues.clear();
+        // The squeeze is read afresh: a reading kept would be acted on for as long as the
+        // squeeze holds still.
         hand.readings.clear();
+        hand.pressure = hand.adapted = hand.reading = 0.0;
     }
 }
 

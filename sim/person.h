@@ -96,8 +96,9 @@ private:
         double delay = 0.0; ///< its reaction time: it is acted on from onset + delay
         int meaning = -1;   ///< as recognised
         bool answered = true;
-        int truth = -1;    ///< the template (pattern) that played; -1 for the overlay
-        bool live = false; ///< still present (its pulses have not stopped)
+        int truth = -1;       ///< the template (pattern) that played; -1 for the overlay
+        bool live = false;    ///< still present (its pulses have not stopped)
+        bool actedOn = false; ///< given to the hands at least once
     };
     struct Band
     {

@@ -88,6 +88,8 @@ private slots:
     void unwatchedOverlayIsSeenLate();
     void squeezeIsReadToAJnd();
     void relianceFollowsTheTrackRecord();
+    void aCueOfOneTickIsActedOn();
+    void forgettingDropsTheSqueeze();
     void parametersStayInTheirRanges();
 };
 
@@ -278,6 +280,44 @@ void TestPerson::relianceFollowsTheTrackRecord()
               answered[r], person.reliance(Gripper::Right));
     }
     QVERIFY(answered[1] > answered[0] + 0.5);
+}
+
+void TestPerson::aCueOfOneTickIsActedOn()
+{
+    // Felt for a single tick, a cue still reaches the hands once, its reaction time later.
+    Rig rig;
+    QVERIFY(rig.load(QStringLiteral("C1"), QStringLiteral("right.vibro"),
+                     QStringLiteral("right.rampup")));
+    const Judge judge(10);
+    Person person({}, 23);
+    person.learn(*rig.router);
+    int ticksActedOn = 0;
+    for (double t = 0.0; t < 2.0; t += Tick) {
+        rig.play(std::abs(t - 0.5) < Tick / 2 ? 0.8 : 0.0, PlayerInput::Confirmation);
+        person.take(rig.bands, {}, judge, t);
+        ticksActedOn += person.feeling(Gripper::Right).confirmation > 0 ? 1 : 0;
+    }
+    QCOMPARE(ticksActedOn, 1);
+}
+
+void TestPerson::forgettingDropsTheSqueeze()
+{
+    // After a hand-over the squeeze is read afresh, not acted on as it was last read.
+    Rig rig;
+    QVERIFY(rig.load(QStringLiteral("sensory"), QStringLiteral("right.air"),
+                     QStringLiteral("right.proportional")));
+    const Judge judge(10);
+    Person person({}, 29);
+    person.learn(*rig.router);
+    double t = 0.0;
+    for (; t < 2.0; t += Tick) {
+        rig.play(0.6, PlayerInput::Continuous);
+        person.take(rig.bands, {}, judge, t);
+    }
+    QVERIFY(person.feeling(Gripper::Right).pressure > 0.5);
+    person.forget();
+    person.take(rig.bands, {}, judge, t);
+    QCOMPARE(person.feeling(Gripper::Right).pressure, 0.0);
 }
 
 void TestPerson::parametersStayInTheirRanges()
