@@ -11,7 +11,9 @@ OUTDIR (a study already there is kept: a run cut off is resumed by deleting only
 then prints, as Markdown, each task-performance effect the paper reports as significant
 beside the simulated direction and test, and the count of agreements. With --sensitivity,
 it does the same with each of the person's parameters at both ends of its range, one at a
-time, and prints which verdicts hold and which flip. It prints the wall time it took.
+time (an end that is the default reuses the defaults' studies; only the studies' measures are
+kept, not their sessions), and prints which verdicts hold and which flip, in the order of
+--parameters. It prints the wall time it took.
 """
 
 import argparse
@@ -49,7 +51,7 @@ EFFECTS = [
 ALPHA = 0.05
 
 
-def simulate(semhap, study, out, participants, seconds, person):
+def simulate(semhap, study, out, participants, seconds, person, only_measures):
     if os.path.exists(out):
         return out
     args = [semhap, "study", "simulate", os.path.join(ROOT, "resources", "studies", study + ".json"),
@@ -63,6 +65,10 @@ def simulate(semhap, study, out, participants, seconds, person):
         for path in (out, out[:-3] + ".sessions"):
             subprocess.run(["rm", "-rf", path])
         sys.exit(f"{out}: {done.stderr.strip()}")
+    if only_measures:
+        # A sensitivity run needs the measures only; its sessions (1.4 GB for a bimanual
+        # study of 8) would fill a disk over forty runs.
+        subprocess.run(["rm", "-rf", out[:-3] + ".sessions"])
     return out
 
 
@@ -128,7 +134,7 @@ def agreement(semhap, dbs, effects):
 
 
 def parameters(semhap):
-    """The person's parameters and their ranges, as semhap states them."""
+    """The person's parameters, each with its range and its default, as semhap states them."""
     base = [semhap, "run", "--scene", "box_and_block", "--router", "none", "--operator",
             "perceiving", "--duration", "1", "--person"]
     probe = subprocess.run(base + ["?"], capture_output=True, text=True)
@@ -137,8 +143,8 @@ def parameters(semhap):
     for name in names:
         probe = subprocess.run(base + [f"{name}=1e300"], capture_output=True,
                                text=True)
-        low, high = re.search(r"from (\S+) to ([0-9.e+-]+)", probe.stderr).groups()
-        ranges[name] = (low, high)
+        ranges[name] = re.search(r"from (\S+) to ([0-9.e+-]+).*\(default (\S+)\)",
+                                 probe.stderr).groups()
     return ranges
 
 
@@ -161,20 +167,33 @@ def main():
     studies = [s for s in STUDIES if s in options.studies.split(",")]
     effects = [e for e in EFFECTS if e["study"] in studies]
     settings = [("defaults", [])]
+    same = {}  # a range end that is the default: its studies are the defaults' own
     if options.sensitivity:
-        for name, (low, high) in parameters(options.semhap).items():
-            if options.parameters and name not in options.parameters.split(","):
-                continue
-            settings += [(f"{name}={low}", [f"{name}={low}"]), (f"{name}={high}", [f"{name}={high}"])]
+        ranges = parameters(options.semhap)
+        names = options.parameters.split(",") if options.parameters else list(ranges)
+        for name in names:
+            if name not in ranges:
+                sys.exit(f"--parameters: {name}: not a parameter; one of {', '.join(ranges)}")
+            low, high, default = ranges[name]
+            for end in (low, high):
+                settings.append((f"{name}={end}", [f"{name}={end}"]))
+                if float(end) == float(default):
+                    same[settings[-1][0]] = "defaults"
     jobs = {}
     with concurrent.futures.ThreadPoolExecutor(options.jobs) as pool:
         for label, person in settings:
+            if label in same:
+                continue
             tag = re.sub(r"[^a-z0-9_.]+", "-", label)
             for study in studies:
                 db = os.path.join(options.out, f"{study}-{participants}-{tag}.db")
                 jobs[(label, study)] = pool.submit(simulate, options.semhap, study, db,
-                                                   participants, options.seconds, person)
+                                                   participants, options.seconds, person,
+                                                   options.sensitivity)
         dbs = {key: job.result() for key, job in jobs.items()}
+    for label, twin in same.items():
+        for study in studies:
+            dbs[(label, study)] = dbs[(twin, study)]
 
     base = agreement(options.semhap, {s: dbs[("defaults", s)] for s in studies}, effects)
     print(f"## Agreement: {participants} participants, trials capped at {options.seconds:g} s\n")
@@ -201,7 +220,8 @@ def main():
                          for c in measures[effect["study"]][effect["measure"]]["conditions"]}
                 cells.append(verdict + (" (flips)" if agrees != was else "") +
                              f": {order(means)}; {text}")
-            print(f"| {label} | " + " | ".join(cells) + f" | {sum(r[3] for r in rows)} |")
+            shown = label + (" (the default)" if label in same else "")
+            print(f"| {shown} | " + " | ".join(cells) + f" | {sum(r[3] for r in rows)} |")
     print(f"\nWall time: {time.monotonic() - start:.0f} s with {options.jobs} jobs.")
 
 

@@ -55,12 +55,14 @@ bool PersonParameters::set(const QString &assignment, QString *reason)
         bool ok = false;
         const double value = assignment.mid(equals + 1).toDouble(&ok);
         if (!ok || !(value >= row.low && value <= row.high)) {
-            *reason =
-                QStringLiteral("%1: expected a number from %2 to %3%4")
-                    .arg(assignment)
-                    .arg(row.low)
-                    .arg(row.high)
-                    .arg(*row.unit ? QStringLiteral(" ") + QLatin1String(row.unit) : QString());
+            // The default is stated so that a sweep over the range knows which end it already has.
+            *reason = QStringLiteral("%1: expected a number from %2 to %3%4 (default %5)")
+                          .arg(assignment)
+                          .arg(row.low)
+                          .arg(row.high)
+                          .arg(*row.unit ? QStringLiteral(" ") + QLatin1String(row.unit)
+                                         : QString())
+                          .arg(PersonParameters().value(row));
             return false;
         }
         row.field(*this) = value;

@@ -327,7 +327,7 @@ void TestPerson::parametersStayInTheirRanges()
     QVERIFY(p.set(QStringLiteral("saccade=0.15"), &reason));
     QCOMPARE(p.saccade, 0.15);
     QVERIFY(!p.set(QStringLiteral("saccade=0.5"), &reason));
-    QCOMPARE(reason, QStringLiteral("saccade=0.5: expected a number from 0.15 to 0.25 s"));
+    QCOMPARE(reason, QStringLiteral("saccade=0.5: expected a number from 0.15 to 0.25 s (default 0.2)"));
     QVERIFY(!p.set(QStringLiteral("sacade=0.2"), &reason));
     QVERIFY(reason.startsWith(QStringLiteral("sacade=0.2: expected NAME=VALUE, NAME one of")));
     // Every default lies in its range.

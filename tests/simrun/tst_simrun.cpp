@@ -299,7 +299,7 @@ void TestSimRun::runOptionsKeepThePerson()
     QVERIFY(!RunOptions::fromJson(badReader, bad, QString(), &back));
     QCOMPARE(badReader.error().toString(),
              QStringLiteral("run.json: /person/adaptation_rate: expected a number from 0.02 to "
-                            "0.3"));
+                            "0.3 (default 0.1)"));
 }
 
 void TestSimRun::perceivingOperatorCountsItsCues()
@@ -444,7 +444,7 @@ void TestSimRun::commandLineErrors_data()
            "drifting_hold)";
     QTest::newRow("a person's parameter out of its range")
         << base + QStringList{"--scene", "box_and_block", "--person", "saccade=0.5"} << 2
-        << "semhap run: --person saccade=0.5: expected a number from 0.15 to 0.25 s";
+        << "semhap run: --person saccade=0.5: expected a number from 0.15 to 0.25 s (default 0.2)";
     QTest::newRow("a person's parameter of no name")
         << compare + QStringList{"--duration", "1", "--person", "0.2"} << 2
         << "semhap compare: --person 0.2: expected NAME=VALUE, NAME one of "

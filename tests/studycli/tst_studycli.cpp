@@ -431,7 +431,7 @@ void TestStudyCli::badCallsAreRefused_data()
                        "--out",          out,
                        "--operator",     "perceiving",
                        "--person",       "first_reliance=0.2"}
-        << 2 << "--person first_reliance=0.2: expected a number from 0.5 to 1";
+        << 2 << "--person first_reliance=0.2: expected a number from 0.5 to 1 (default 1)";
     QTest::newRow("export of no study")
         << QStringList{"export", example("unimanual.json"), "--csv", "OUT"} << 1
         << "not a semhap study";
