@@ -103,6 +103,11 @@ const KnownMetric Known[] = {
          "semhap::MetricsPanel",
          "The share of container drops warned at least a reaction time before (bimanual)."),
      Kind::Share},
+    {"containers_set_down", QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Containers set down"),
+     QT_TRANSLATE_NOOP("semhap::MetricsPanel",
+                       "Times the holding hand set the full container down on its base to be "
+                       "emptied (bimanual)."),
+     Kind::Count},
     {"transfers_per_container_cycle",
      QT_TRANSLATE_NOOP("semhap::MetricsPanel", "Transfers per container cycle"),
      QT_TRANSLATE_NOOP(
