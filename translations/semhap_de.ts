@@ -198,6 +198,14 @@
         <source>Who drives until you do: scripted, reactive or perceiving.</source>
         <translation>Wer steuert, bis Sie es tun: scripted, reactive oder perceiving.</translation>
     </message>
+    <message>
+        <source>Set a parameter of the perceiving operator&apos;s person (repeatable).</source>
+        <translation>Einen Parameter der Person des wahrnehmenden Operators setzen (wiederholbar).</translation>
+    </message>
+    <message>
+        <source>NAME=VALUE</source>
+        <translation>NAME=WERT</translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -1741,6 +1749,14 @@ In %2; in Exporten: %3</translation>
     <message>
         <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
         <translation>Der Anteil der Warnungen der rechten Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+    </message>
+    <message>
+        <source>Containers set down</source>
+        <translation>Abgestellte Behälter</translation>
+    </message>
+    <message>
+        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
+        <translation>Wie oft die haltende Hand den vollen Behälter zum Leeren auf seinen Sockel stellte (beidhändig).</translation>
     </message>
 </context>
 <context>

@@ -198,6 +198,14 @@
         <source>Who drives until you do: scripted, reactive or perceiving.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Set a parameter of the perceiving operator&apos;s person (repeatable).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NAME=VALUE</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>UndoActions</name>
@@ -1734,6 +1742,14 @@ In %2; in exports: %3</source>
     </message>
     <message>
         <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Containers set down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

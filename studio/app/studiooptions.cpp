@@ -35,6 +35,10 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     const QCommandLineOption op({QStringLiteral("operator")},
                                 tr("Who drives until you do: scripted, reactive or perceiving."),
                                 tr("name"), o.run.operatorName);
+    const QCommandLineOption person(
+        {QStringLiteral("person")},
+        tr("Set a parameter of the perceiving operator's person (repeatable)."),
+        tr("NAME=VALUE"));
     const QCommandLineOption seed({QStringLiteral("seed")}, tr("The operator's seed."), tr("n"),
                                   QString::number(o.run.seed));
     const QCommandLineOption reactionTime(
@@ -82,7 +86,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     const QCommandLineOption startStep({QStringLiteral("start-step")},
                                        tr("With --participant: start their next step at once "
                                           "(for scripts and tests)."));
-    parser.addOptions({scene, router, op, seed, reactionTime, cubes, gripper, speed, paused,
+    parser.addOptions({scene, router, op, person, seed, reactionTime, cubes, gripper, speed, paused,
                        screenshot, quitAfter, size, language, posePort, listen, defaultLayout,
                        study, participant, startStep});
     if (!parser.parse(QStringList(QCoreApplication::applicationFilePath()) + args)) {
@@ -122,6 +126,13 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
     o.run.scene = parser.value(scene);
     o.run.router = parser.value(router);
     o.run.operatorName = parser.value(op);
+    for (const QString &assignment : parser.values(person)) {
+        QString reason;
+        if (!o.run.person.set(assignment, &reason)) {
+            *message = QStringLiteral("--person ") + reason;
+            return false;
+        }
+    }
     double value = 0.0;
     if (!number(seed, 0, RunOptions::MaxSeed, &value))
         return false;
@@ -191,7 +202,7 @@ bool StudioOptions::parse(const QStringList &args, StudioOptions *options, QStri
         return false;
     }
     for (const QCommandLineOption *option :
-         {&scene, &router, &op, &seed, &reactionTime, &cubes, &gripper, &listen})
+         {&scene, &router, &op, &person, &seed, &reactionTime, &cubes, &gripper, &listen})
         o.runGiven = o.runGiven || parser.isSet(*option);
     *options = o;
     return true;

@@ -108,6 +108,15 @@ void TestStudioOptions::options()
     QCOMPARE(o.run.scene, QString("box_and_block"));
     QVERIFY(o.runGiven);
 
+    // The perceiving operator with its person's parameters.
+    QVERIFY(parse({"--operator", "perceiving", "--person", "saccade=0.25", "--person",
+                   "first_reliance=0.5"},
+                  &o, &message));
+    QCOMPARE(o.run.operatorName, QString("perceiving"));
+    QCOMPARE(o.run.person.saccade, 0.25);
+    QCOMPARE(o.run.person.firstReliance, 0.5);
+    QVERIFY(o.runGiven);
+
     // A live rig: on this machine unless an address is given; the router is --router's.
     QVERIFY(parse({"--listen", "9900", "--router", "C2"}, &o, &message));
     QVERIFY(o.live);
@@ -149,6 +158,9 @@ void TestStudioOptions::rejects_data()
     QTest::newRow("listen port") << QStringList{"--listen", "70000"} << "--listen";
     QTest::newRow("listen text") << QStringList{"--listen", "rig"} << "ADDRESS:PORT";
     QTest::newRow("listen no address") << QStringList{"--listen", ":9871"} << "--listen";
+    QTest::newRow("person out of range")
+        << QStringList{"--person", "saccade=2"} << "--person saccade=2: expected a number from";
+    QTest::newRow("person unknown") << QStringList{"--person", "mood=1"} << "NAME one of";
     QTest::newRow("positional") << QStringList{"scene.xml"} << "scene.xml";
     QTest::newRow("participant without a study")
         << QStringList{"--participant", "P01"} << "--participant: name the study";
