@@ -28,6 +28,8 @@ packages=(
     stress-ng
     # scripts/replicate.py (the paper's studies simulated) and scripts/make-scenes.py
     python3
+    # ROS 2 recordings: MCAP's chunk compressions and CRC-32
+    libzstd-dev liblz4-dev zlib1g-dev
     # the desktop package: man pages, metadata checks, .deb dependencies
     help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )
@@ -37,6 +39,14 @@ for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
         || missing+=("$p")
 done
+# The interop tests' reference libraries (tests/interop) run on Node.js and install with npm.
+# A Node already on the PATH is kept: NodeSource's nodejs conflicts with Debian's npm.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    for p in nodejs npm; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+            || missing+=("$p")
+    done
+fi
 [ ${#missing[@]} -eq 0 ] && exit 0
 
 echo "Installing: ${missing[*]}"

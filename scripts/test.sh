@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Installs what is missing, builds, and runs every test:
 #  1. the normal build (gcc): every Qt Test, under Xvfb; timing-sensitive ones (label
-#     "timing") serially;
+#     "timing") serially; the interop tests against the reference libraries that
+#     `npm ci` installs into tests/interop;
 #  2. the sanitizer build (clang, ASan + UBSan) of the core, patterns and devices tests, and
 #     each libFuzzer target for a capped number of runs on its seed corpus, each input
 #     within 10 s;
@@ -20,6 +21,9 @@ fuzz_runs=${SEMHAP_FUZZ_RUNS:-20000}
 
 echo "== documentation links"
 "$root/scripts/checklinks.sh"
+
+echo "== interop tests' reference libraries (tests/interop/package-lock.json)"
+(cd "$root/tests/interop" && npm ci --no-audit --no-fund --loglevel=error)
 
 echo "== normal build"
 "$root/scripts/build.sh" "$root/build"
