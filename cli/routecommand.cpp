@@ -8,6 +8,7 @@
 #include "emergencystop.h"
 #include "pipeline.h"
 #include "quitsignal.h"
+#include "recordingreader.h"
 #include "routergraph.h"
 #include "sinklist.h"
 #include "streamsink.h"
@@ -30,8 +31,13 @@ void RouteCommand::configure(QCommandLineParser &parser)
                           .arg(RouterPresets::names().join(QStringLiteral(", "))),
                       tr("PRESET|FILE")});
     parser.addOption({QStringLiteral("frames"),
-                      tr("Contact frames to read (JSON Lines), or - for standard input."),
-                      tr("FILE|-")});
+                      tr("Contact frames to read (JSON Lines), - for standard input, or a "
+                         "robot's recording (rosbag2 in MCAP) with --topics."),
+                      tr("FILE|-|REC.mcap")});
+    parser.addOption({QStringLiteral("topics"),
+                      tr("With an MCAP recording: the semhap.topics/1 map of its topics to "
+                         "contact frames (docs/ros.md)."),
+                      tr("MAP.json")});
     addRoutingOptions(parser);
     addMaxGapOption(parser);
     parser.addOption({QStringLiteral("bind"),
@@ -68,9 +74,30 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
 
     const QString framesPath = parser.value(QStringLiteral("frames"));
-    QIODevice *frames = openInput(framesPath);
-    if (!frames)
-        return ExitInvalidInput;
+    const QString topicsPath = parser.value(QStringLiteral("topics"));
+    const bool recording = framesPath.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive);
+    if (recording && topicsPath.isEmpty())
+        return usageError(
+            tr("--frames %1: a recording needs its topic map: --topics MAP.json").arg(framesPath));
+    if (!recording && !topicsPath.isEmpty())
+        return usageError(tr("--topics: only with a recording (--frames FILE.mcap)"));
+    // A recording is checked whole (records, CRCs, topics, fields) before any output.
+    std::unique_ptr<RecordingReader> recordingReader;
+    QIODevice *frames = nullptr;
+    if (recording) {
+        TopicMap map;
+        if (!TopicMap::load(topicsPath, &map, &error))
+            return inputError(error.toString());
+        keepFromOutputs(topicsPath, Kept::Input);
+        keepFromOutputs(framesPath, Kept::Input);
+        recordingReader = std::make_unique<RecordingReader>(framesPath, map, topicsPath);
+        if (!recordingReader->open())
+            return inputError(recordingReader->error());
+    } else {
+        frames = openInput(framesPath);
+        if (!frames)
+            return ExitInvalidInput;
+    }
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
     QIODevice *deviceFrames = framesOutPath.isEmpty() ? nullptr : openOutput(framesOutPath);
     if ((!eventsPath.isEmpty() && !events) || (!framesOutPath.isEmpty() && !deviceFrames))
@@ -89,10 +116,16 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     if (realTime)
         devices.armAll(true);
 
-    ContactFrameReader reader(frames, framesPath);
-    if (!maxGapOption(parser, &reader.parser()))
-        return ExitUsage;
-    reader.setErrorHandler([this](const LoadError &e) { report(e.toString()); });
+    std::unique_ptr<ContactFrameReader> reader;
+    if (!recording) {
+        reader = std::make_unique<ContactFrameReader>(frames, framesPath);
+        if (!maxGapOption(parser, &reader->parser()))
+            return ExitUsage;
+        reader->setErrorHandler([this](const LoadError &e) { report(e.toString()); });
+    }
+    const auto nextFrame = [&](ContactFrame *frame) {
+        return recording ? recordingReader->next(frame) : reader->next(frame);
+    };
     Pipeline pipeline(std::move(router));
     StreamSink streams(pipeline.router(), events, deviceFrames);
     DeviceOutputSink output(pipeline.router().player(), devices);
@@ -102,7 +135,7 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     double t0 = 0.0;
     bool first = true;
     ContactFrame frame;
-    while (!QuitSignal::requested() && reader.next(&frame)) {
+    while (!QuitSignal::requested() && nextFrame(&frame)) {
         // Bound bands feel the session as it happened: wait for each frame's time.
         if (realTime) {
             if (first) {
@@ -120,14 +153,20 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     }
     pipeline.flush(sink);
     devices.stopAll();
+    if (recordingReader && !recordingReader->error().isEmpty())
+        return inputError(recordingReader->error()); // the file changed since it was checked
     reportDroppedEvents(pipeline);
     if (QuitSignal::requested())
         report(tr("%1: interrupted after t = %2 s; the outputs hold what was routed")
                    .arg(framesPath)
                    .arg(pipeline.now()));
 
-    if (reader.rejectedCount() > 0)
-        report(tr("%1: %n line(s) rejected", nullptr, reader.rejectedCount()).arg(framesPath));
+    if (reader && reader->rejectedCount() > 0)
+        report(tr("%1: %n line(s) rejected", nullptr, reader->rejectedCount()).arg(framesPath));
+    if (recordingReader && recordingReader->skippedCount() > 0)
+        report(tr("%1: %n message(s) without a header stamp skipped", nullptr,
+                  int(recordingReader->skippedCount()))
+                   .arg(framesPath));
     return ExitOk;
 }
 

@@ -60,7 +60,7 @@ install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL
     FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
 foreach(readme README.md bandsim/README.md cli/README.md core/README.md devices/PROTOCOL.md
         devices/README.md firmware/README.md patterns/README.md resources/README.md
-        sim/README.md studio/README.md tests/bench/README.md)
+        ros/README.md sim/README.md studio/README.md tests/bench/README.md)
     get_filename_component(folder ${readme} DIRECTORY)
     install(FILES ${CMAKE_CURRENT_LIST_DIR}/../${readme}
         DESTINATION ${CMAKE_INSTALL_DOCDIR}/${folder})

@@ -290,8 +290,8 @@ bool CdrDecoder::decode(const char *data, std::size_t size, double *values, QStr
     }
     for (const Path &p : m_paths) {
         if (p.time) {
-            values[p.offset] =
-                m_leaves[size_t(p.leaves[0])] + m_leaves[size_t(p.leaves[1])] * 1e-9;
+            values[p.offset] = (m_leaves[size_t(p.leaves[0])] - double(m_epoch)) +
+                               m_leaves[size_t(p.leaves[1])] * 1e-9;
             continue;
         }
         for (size_t i = 0; i < p.leaves.size(); ++i)

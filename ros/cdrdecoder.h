@@ -6,6 +6,7 @@
 #include <QStringList>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace semhap {
@@ -31,6 +32,12 @@ public:
     int width(int i) const { return m_paths[size_t(i)].width; }
     /** Where path `i`'s numbers begin in decode()'s values. */
     int offset(int i) const { return m_paths[size_t(i)].offset; }
+    /**
+     * Times are read as seconds since `seconds` (e.g. a recording's first whole second), so
+     * that Unix times keep their nanoseconds in a double. 0 by default.
+     */
+    void setEpoch(std::int64_t seconds) { m_epoch = seconds; }
+
     /** How many numbers decode() writes: the paths' widths summed. */
     int valueCount() const { return m_valueCount; }
 
@@ -71,6 +78,7 @@ private:
     std::vector<double> m_leaves;
     std::vector<int> m_minSize; ///< per type: the fewest bytes one takes
     int m_valueCount = 0;
+    std::int64_t m_epoch = 0;
 };
 
 } // namespace semhap

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Checks the relative links of every Markdown file in the repository, except in the build
-# folders at its top (build*/): each `](target)`, with an optional #anchor, must name a
+# folders at its top (build*/) and the test tools npm installs (node_modules/): each `](target)`, with an optional #anchor, must name a
 # file or folder inside the repository. http(s) and mailto links are not checked; links
 # inside code (fenced blocks, `inline spans`) are not links. Prints
 # `FILE:LINE: broken link TARGET` for each one that does not resolve and exits 1; exits 0
@@ -58,7 +58,7 @@ while IFS= read -r -d '' file; do
             rest=${rest#*"${BASH_REMATCH[0]}"}
         done
     done <"$file"
-done < <(find . \( -path ./.git -o -type d -path './build*' \) -prune -o \
+done < <(find . \( -path ./.git -o -type d -path './build*' -o -type d -name node_modules \) -prune -o \
     -type f -name '*.md' -print0 | sort -z)
 
 exit $broken

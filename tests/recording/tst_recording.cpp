@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// `semhap route --frames REC.mcap --topics MAP.json`: a robot's recording, written by the
+// reference libraries in each compression and as a plain stream (tests/interop), routes to
+// the events and device frames of the same grasp given as JSON Lines contact frames, which
+// the fixture works out from the map's rules on its own. A bad map or recording is a located
+// error, and nothing is written.
+#include "clirun.h"
+#include "jsonlines.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtEndian>
+#include <QTest>
+
+namespace {
+
+QString recording(const QString &name)
+{
+    return QStringLiteral(SEMHAP_INTEROP_DIR "/") + name;
+}
+
+QJsonObject graspMap()
+{
+    QFile file(recording("grasp.topics.json"));
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("no grasp.topics.json");
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+void write(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+}
+
+/** The map with one value changed, at a path of keys. */
+QJsonObject changed(QJsonObject map, const QStringList &keys, const QJsonValue &value)
+{
+    if (keys.size() == 1) {
+        map.insert(keys[0], value);
+        return map;
+    }
+    map.insert(keys[0], changed(map.value(keys[0]).toObject(), keys.mid(1), value));
+    return map;
+}
+
+} // namespace
+
+class TestRecording : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void routesAsItsFrames_data();
+    void routesAsItsFrames();
+    void badMapOrRecording_data();
+    void badMapOrRecording();
+    void usage_data();
+    void usage();
+};
+
+void TestRecording::routesAsItsFrames_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::newRow("zstd") << "grasp-zstd.mcap";
+    QTest::newRow("lz4") << "grasp-lz4.mcap";
+    QTest::newRow("uncompressed") << "grasp-none.mcap";
+    QTest::newRow("no chunks, summary or index") << "grasp-stream.mcap";
+}
+
+void TestRecording::routesAsItsFrames()
+{
+    QFETCH(QString, file);
+    QTemporaryDir dir;
+    const CliResult fromJson = semhapRun(
+        {"route", "--router", "C3", "--frames", recording("grasp.frames.jsonl"), "--events",
+         dir.filePath("want.events"), "--device-frames", dir.filePath("want.frames")});
+    QCOMPARE(fromJson.code, 0);
+    const CliResult fromMcap =
+        semhapRun({"route", "--router", "C3", "--frames", recording(file), "--topics",
+                   recording("grasp.topics.json"), "--events", dir.filePath("got.events"),
+                   "--device-frames", dir.filePath("got.frames")});
+    QVERIFY2(fromMcap.code == 0, fromMcap.err.constData());
+    QCOMPARE(fromMcap.err, QByteArray());
+    const QList<QJsonObject> events = readLines(dir.filePath("got.events"));
+    // The grasp, its squeeze past the break line, and its end: not an empty agreement.
+    QVERIFY(events.size() > 10);
+    compareLines(events, readLines(dir.filePath("want.events")));
+    compareLines(readLines(dir.filePath("got.frames")), readLines(dir.filePath("want.frames")));
+}
+
+void TestRecording::badMapOrRecording_data()
+{
+    QTest::addColumn<QJsonObject>("map");
+    QTest::addColumn<QByteArray>("mcap"); // empty: the zstd recording as it is
+    QTest::addColumn<QString>("error");   // MAP and REC stand for the files' paths
+
+    const QJsonObject map = graspMap();
+    QTest::newRow("no such topic")
+        << changed(map, {"grippers", "right", "left", "topic"}, "/right/left_tip/force")
+        << QByteArray()
+        << "MAP: /grippers/right/left/topic: REC has no topic '/right/left_tip/force'; its "
+           "topics: /operator/note, /right/left_tip/wrench, /right/right_tip/contacts, "
+           "/right/right_tip/wrench";
+    QTest::newRow("no such field")
+        << changed(map, {"grippers", "right", "left", "force"}, "wrench.forc") << QByteArray()
+        << "MAP: /grippers/right/left/force: in REC: '/right/left_tip/wrench' "
+           "(geometry_msgs/msg/WrenchStamped): 'wrench.forc': geometry_msgs/Wrench has no field "
+           "'forc'; its fields: force, torque";
+    QTest::newRow("a number for a vector")
+        << changed(map, {"grippers", "right", "right", "force"}, "wrench.force.y") << QByteArray()
+        << "MAP: /grippers/right/right/force: in REC: '/right/right_tip/wrench' "
+           "(geometry_msgs/msg/WrenchStamped): 'wrench.force.y' gives 1 number(s), not the 3 "
+           "wanted";
+    QTest::newRow("a string for a signal")
+        << changed(map, {"grippers", "right", "signals", "left.torque_z", "field"},
+                   "header.frame_id")
+        << QByteArray()
+        << "MAP: /grippers/right/signals/left.torque_z/field: in REC: '/right/left_tip/wrench' "
+           "(geometry_msgs/msg/WrenchStamped): 'header.frame_id': 'frame_id' is a string, not a "
+           "number";
+    QTest::newRow("bad axis") << changed(map, {"grippers", "right", "left", "normal_axis"}, "w")
+                              << QByteArray()
+                              << "MAP: /grippers/right/left/normal_axis: expected one of x, -x, "
+                                 "y, -y, z, -z, got 'w'";
+    QTest::newRow("bad time") << changed(map, {"time"}, "receive") << QByteArray()
+                              << "MAP: /time: expected 'header' or 'log', got 'receive'";
+    QTest::newRow("clock not its own")
+        << changed(map, {"grippers", "right", "clock"}, "/operator/note") << QByteArray()
+        << "MAP: /grippers/right/clock: '/operator/note' is none of this gripper's topics";
+
+    // The recording damaged: its first chunk's CRC fails, located at the chunk.
+    QFile file(recording("grasp-none.mcap"));
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("no grasp-none.mcap");
+    QByteArray damaged = file.readAll();
+    qsizetype at = 8;
+    while (quint8(damaged[at]) != 0x06)
+        at += 9 + qsizetype(qFromLittleEndian<quint64>(damaged.constData() + at + 1));
+    const auto length = qsizetype(qFromLittleEndian<quint64>(damaged.constData() + at + 1));
+    damaged[at + 9 + length - 1] ^= 0x5a;
+    QTest::newRow("damaged recording")
+        << map << damaged << QStringLiteral("REC: offset %1: chunk CRC mismatch").arg(at);
+}
+
+void TestRecording::badMapOrRecording()
+{
+    QFETCH(QJsonObject, map);
+    QFETCH(QByteArray, mcap);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString mapPath = dir.filePath("map.json");
+    write(mapPath, QJsonDocument(map).toJson());
+    QString mcapPath = recording("grasp-zstd.mcap");
+    if (!mcap.isEmpty()) {
+        mcapPath = dir.filePath("robot.mcap");
+        write(mcapPath, mcap);
+    }
+    const QString events = dir.filePath("events.jsonl");
+    const CliResult r = semhapRun({"route", "--router", "C3", "--frames", mcapPath, "--topics",
+                                   mapPath, "--events", events});
+    QCOMPARE(r.code, 1);
+    error.replace(QLatin1String("MAP"), mapPath).replace(QLatin1String("REC"), mcapPath);
+    QCOMPARE(QString::fromUtf8(r.err).trimmed(), error);
+    QVERIFY2(!QFile::exists(events), "nothing is written");
+}
+
+void TestRecording::usage_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("a recording without its map")
+        << QStringList{"--frames", recording("grasp-zstd.mcap")}
+        << "--frames " + recording("grasp-zstd.mcap") +
+               ": a recording needs its topic map: --topics MAP.json";
+    QTest::newRow("a map without a recording")
+        << QStringList{"--frames", recording("grasp.frames.jsonl"), "--topics",
+                       recording("grasp.topics.json")}
+        << "--topics: only with a recording (--frames FILE.mcap)";
+}
+
+void TestRecording::usage()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, error);
+    const CliResult r = semhapRun(QStringList{"route", "--router", "C3"} + args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(QString::fromUtf8(r.err).contains(error), r.err.constData());
+}
+
+QTEST_GUILESS_MAIN(TestRecording)
+#include "tst_recording.moc"
