@@ -8,6 +8,7 @@
 #include "distinctcommand.h"
 #include "emulatecommand.h"
 #include "exportcommand.h"
+#include "importcommand.h"
 #include "listencommand.h"
 #include "playcommand.h"
 #include "rendercommand.h"
@@ -29,7 +30,8 @@ const QStringList &commandNames()
         QStringLiteral("run"),     QStringLiteral("compare"), QStringLiteral("play"),
         QStringLiteral("devices"), QStringLiteral("emulate"), QStringLiteral("bandsim"),
         QStringLiteral("convert"), QStringLiteral("replay"),  QStringLiteral("export"),
-        QStringLiteral("listen"),  QStringLiteral("study"),   QStringLiteral("distinct")};
+        QStringLiteral("listen"),  QStringLiteral("import"),  QStringLiteral("study"),
+        QStringLiteral("distinct")};
     return names;
 }
 
@@ -63,6 +65,8 @@ std::unique_ptr<Command> CliTool::makeCommand(const QString &name) const
         return std::make_unique<ExportCommand>(m_io);
     if (name == QLatin1String("listen"))
         return std::make_unique<ListenCommand>(m_io);
+    if (name == QLatin1String("import"))
+        return std::make_unique<ImportCommand>(m_io);
     if (name == QLatin1String("study"))
         return std::make_unique<StudyCommand>(m_io);
     if (name == QLatin1String("distinct"))

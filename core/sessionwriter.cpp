@@ -95,12 +95,20 @@ public:
         return false;
     }
 
-    /** Producer side: copies `record` into the batch; false when it is full. */
+    /**
+     * Producer side: copies `record` into the batch; false when it is full, unless the
+     * options say to wait for the writer to take the batch.
+     */
     bool push(const Record &record)
     {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        if (m_front.size() >= size_t(m_options.capacity))
-            return false;
+        std::unique_lock<std::mutex> lock(m_mutex);
+        while (m_front.size() >= size_t(m_options.capacity)) {
+            if (!m_options.waitWhenFull)
+                return false;
+            m_full = true;
+            m_wake.notify_one();
+            m_room.wait(lock);
+        }
         m_front.push_back(record);
         return true;
     }
@@ -326,9 +334,11 @@ private:
         std::unique_lock<std::mutex> lock(m_mutex);
         for (;;) {
             m_wake.wait_for(lock, std::chrono::milliseconds(m_options.commitMs),
-                            [this] { return m_stopping; });
+                            [this] { return m_stopping || m_full; });
             std::swap(m_front, m_back);
             std::swap(m_frontActors, m_backActors);
+            m_full = false;
+            m_room.notify_all();
             const bool stopping = m_stopping;
             lock.unlock();
             write(db);
@@ -462,6 +472,8 @@ private:
 
     std::mutex m_mutex; ///< guards the front batch and m_stopping; held only to copy
     std::condition_variable m_wake;
+    std::condition_variable m_room; ///< a waiting producer's: the batch was taken
+    bool m_full = false;            ///< a producer waits for room (Options::waitWhenFull)
     bool m_stopping = false;
     std::vector<Record> m_front;
     QStringList m_frontActors;

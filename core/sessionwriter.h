@@ -25,7 +25,7 @@ class Router;
  * commits it every ~50 ms in one transaction (WAL, synchronous=NORMAL), so the pipeline
  * never waits for the disk and a crash or kill loses at most the last batch. When the
  * batch is full (the disk stalled for seconds) values are dropped and counted, never
- * waited for.
+ * waited for; unless Options::waitWhenFull, for a producer that keeps no clock.
  *
  * Use it as the pipeline's sink (events, device frames) and call recordContactFrame() for
  * each frame before the pipeline processes it; recordHandCommand() may come from any
@@ -40,6 +40,9 @@ public:
     {
         int capacity = 1 << 15; ///< values one batch holds (≈ 8 s of a busy bimanual run)
         int commitMs = 50;      ///< how often the writer thread commits
+        /// Wait for the writer when the batch is full instead of dropping: for producers
+        /// with no clock to keep, such as an import from a file.
+        bool waitWhenFull = false;
     };
 
     /**

@@ -60,6 +60,8 @@ private slots:
     void badMapOrRecording();
     void usage_data();
     void usage();
+    void importMakesASession();
+    void importOfABadRecordingMakesNothing();
 };
 
 void TestRecording::routesAsItsFrames_data()
@@ -189,6 +191,53 @@ void TestRecording::usage()
     const CliResult r = semhapRun(QStringList{"route", "--router", "C3"} + args);
     QCOMPARE(r.code, 2);
     QVERIFY2(QString::fromUtf8(r.err).contains(error), r.err.constData());
+}
+
+void TestRecording::importMakesASession()
+{
+    // The session replays to the events route gives, and exports the frames it was made of.
+    QTemporaryDir dir;
+    const QString session = dir.filePath("grasp.db");
+    const CliResult imported =
+        semhapRun({"import", recording("grasp-lz4.mcap"), "--topics",
+                   recording("grasp.topics.json"), "--session", session, "--notes", "bench 3"});
+    QVERIFY2(imported.code == 0, imported.err.constData());
+    QVERIFY2(imported.err.contains(": 1000 frame(s) from "), imported.err.constData());
+    const CliResult replayed =
+        semhapRun({"replay", session, "--events", dir.filePath("replayed.events")});
+    QVERIFY2(replayed.code == 0, replayed.err.constData());
+    const CliResult routed =
+        semhapRun({"route", "--router", "C3", "--frames", recording("grasp.frames.jsonl"),
+                   "--events", dir.filePath("routed.events")});
+    QCOMPARE(routed.code, 0);
+    compareLines(readLines(dir.filePath("replayed.events")),
+                 readLines(dir.filePath("routed.events")));
+    const CliResult exported = semhapRun({"export", session, "--jsonl", dir.filePath("out")});
+    QVERIFY2(exported.code == 0, exported.err.constData());
+    QCOMPARE(readLines(dir.filePath("out/frames.jsonl")).size(), 1000);
+    const QList<QJsonObject> events = readLines(dir.filePath("out/events.jsonl"));
+    compareLines(events, readLines(dir.filePath("routed.events")));
+}
+
+void TestRecording::importOfABadRecordingMakesNothing()
+{
+    QTemporaryDir dir;
+    const QString session = dir.filePath("none.db");
+    QJsonObject map = changed(graspMap(), {"grippers", "right", "left", "topic"}, "/nope");
+    write(dir.filePath("map.json"), QJsonDocument(map).toJson());
+    const CliResult r = semhapRun({"import", recording("grasp-zstd.mcap"), "--topics",
+                                   dir.filePath("map.json"), "--session", session});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("has no topic '/nope'"), r.err.constData());
+    QVERIFY(!QFile::exists(session));
+    // And a session is never overwritten.
+    write(session, "precious");
+    const CliResult again = semhapRun({"import", recording("grasp-zstd.mcap"), "--topics",
+                                       recording("grasp.topics.json"), "--session", session});
+    QCOMPARE(again.code, 1);
+    QFile kept(session);
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    QCOMPARE(kept.readAll(), QByteArray("precious"));
 }
 
 QTEST_GUILESS_MAIN(TestRecording)

@@ -169,6 +169,7 @@ private slots:
     void recordingMidGraspBeginsWhatIsOpen();
     void timeWindow();
     void neverOverwrites();
+    void anOfflineProducerWaitsInsteadOfDropping();
     void finishedSessionIsOneFile();
     void sceneStates();
     void schemaOneStillOpens();
@@ -458,6 +459,43 @@ void TestSessions::neverOverwrites()
     QCOMPARE(error, path + ": already exists (a session is never overwritten)");
     QVERIFY(file.open(QIODevice::ReadOnly));
     QCOMPARE(file.readAll(), QByteArray("precious"));
+}
+
+void TestSessions::anOfflineProducerWaitsInsteadOfDropping()
+{
+    // A batch of 16 that the writer would commit only once a minute: every frame past the
+    // 16th finds it full. With waitWhenFull the producer waits for the writer each time.
+    const auto router = c3();
+    const QString path = m_dir.filePath("import.db");
+    SessionWriter::Options options;
+    options.capacity = 16;
+    options.commitMs = 60000;
+    options.waitWhenFull = true;
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, options, &error);
+    QVERIFY2(writer, qPrintable(error));
+    const int frames = 2000;
+    for (int k = 0; k < frames; ++k) {
+        ContactFrame frame;
+        frame.t = k * 0.001;
+        frame.left.f = k;
+        writer->recordContactFrame(frame, qQNaN());
+    }
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+    QCOMPARE(writer->dropped(), quint64(0));
+    auto session = SessionReader::open(path, &error);
+    QVERIFY2(session, qPrintable(error));
+    int read = 0;
+    QVERIFY(session->readContactFrames(
+        [&](const ContactFrame &frame, double) {
+            if (frame.left.f != read)
+                return false;
+            ++read;
+            return true;
+        },
+        &error));
+    QCOMPARE(read, frames);
 }
 
 void TestSessions::finishedSessionIsOneFile()
