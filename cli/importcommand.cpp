@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "importcommand.h"
 
-#include "pipeline.h"
 #include "quitsignal.h"
-#include "recordingreader.h"
-#include "sessionwriter.h"
+#include "recordingimport.h"
+#include "router.h"
+#include "routergraph.h"
+
+#include <climits>
 
 namespace semhap {
 
@@ -64,58 +66,26 @@ int ImportCommand::execute(const QCommandLineParser &parser)
     keepFromOutputs(recordingPath, Kept::Input);
     keepFromOutputs(sessionPath, Kept::Session);
 
-    // The recording is checked whole before the session is made.
-    TopicMap map;
-    if (!TopicMap::load(topicsPath, &map, &error))
-        return inputError(error.toString());
-    RecordingReader recording(recordingPath, map, topicsPath);
-    if (!recording.open())
-        return inputError(recording.error());
-
     SessionInfo info;
-    info.source = QStringLiteral("import");
     info.routerSource = routerName;
     info.overrides = overrides;
     info.routerContext = context;
     info.notes = parser.value(QStringLiteral("notes"));
-    info.extra.insert(QStringLiteral("recording"), recordingPath);
-    info.extra.insert(QStringLiteral("topics"), topicsPath);
-    SessionWriter::Options options;
-    options.waitWhenFull = true; // a file keeps no clock: nothing may be dropped
-    QString message;
-    std::unique_ptr<SessionWriter> session =
-        SessionWriter::create(sessionPath, info, *router, options, &message);
-    if (!session)
-        return inputError(message);
-    session->setActorTable(&recording.actors());
-
-    Pipeline pipeline(std::move(router));
-    ContactFrame frame;
-    long long frames = 0;
-    while (!QuitSignal::requested() && recording.next(&frame)) {
-        session->recordContactFrame(frame, qQNaN());
-        pipeline.process(frame, *session);
-        ++frames;
-    }
-    if (frames > 0)
-        pipeline.flush(*session);
-    reportDroppedEvents(pipeline);
-    if (!finishSession(*session))
-        return ExitInvalidInput;
-    if (!recording.error().isEmpty())
-        return inputError(recording.error()); // the file changed since it was checked
-    if (QuitSignal::requested())
-        report(tr("%1: interrupted after t = %2 s; the session holds what was imported")
-                   .arg(recordingPath)
-                   .arg(pipeline.now()));
-    if (recording.skippedCount() > 0)
+    RecordingImport::Result result;
+    if (!RecordingImport::run(
+            recordingPath, topicsPath, std::move(router), info, sessionPath,
+            [](double) { return !QuitSignal::requested(); }, &result))
+        return inputError(result.error);
+    if (result.cancelled)
+        report(tr("%1: interrupted; the session holds what was imported").arg(recordingPath));
+    if (result.skipped > 0)
         report(tr("%1: %n message(s) without a header stamp skipped", nullptr,
-                  int(recording.skippedCount()))
+                  int(std::min<long long>(result.skipped, INT_MAX)))
                    .arg(recordingPath));
     report(tr("%1: %2 frame(s) from %3 s (the recording's time) into %4")
                .arg(recordingPath)
-               .arg(frames)
-               .arg(recording.startTime(), 0, 'f', 3)
+               .arg(result.frames)
+               .arg(result.startTime, 0, 'f', 3)
                .arg(sessionPath));
     return ExitOk;
 }

@@ -84,6 +84,9 @@ public:
     bool hasSummary() const { return m_hasSummary; }
     /** True once the footer and closing magic have been read. */
     bool atEnd() const { return m_state == State::Done; }
+    /** How far the reading is: the offset of the next record, of size() bytes. */
+    std::uint64_t position() const { return m_pos; }
+    std::uint64_t size() const { return m_size; }
     /** `FILE: offset N: reason`, or empty. */
     QString error() const { return m_error; }
 

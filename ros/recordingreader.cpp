@@ -120,6 +120,13 @@ bool RecordingReader::decode(const McapReader &reader, const McapMessage &messag
     return true;
 }
 
+double RecordingReader::progress() const
+{
+    if (!m_reader || m_reader->size() == 0)
+        return m_done ? 1.0 : 0.0;
+    return m_done ? 1.0 : double(m_reader->position()) / double(m_reader->size());
+}
+
 bool RecordingReader::next(ContactFrame *frame)
 {
     McapMessage message;

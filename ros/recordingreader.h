@@ -35,6 +35,8 @@ public:
 
     /** `FILE: offset N: reason`, `MAP: /pointer: reason` or `FILE: TOPIC message N: reason`. */
     QString error() const { return m_error; }
+    /** How much of the file next() has read, from 0 to 1. */
+    double progress() const;
     /** The actors the frames name (the map's). */
     ActorTable &actors() { return m_actors; }
     /** How many messages were skipped for lacking a time (a header stamp). */

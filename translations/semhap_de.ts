@@ -884,10 +884,6 @@
         <translation>Sitzung öffnen</translation>
     </message>
     <message>
-        <source>semhap sessions (*.db);;All files (*)</source>
-        <translation>semhap-Sitzungen (*.db);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>Session notes</source>
         <translation>Notizen</translation>
     </message>
@@ -1223,6 +1219,41 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>%1 has a router of its own, %2: pick it under Router</source>
         <translation>%1 hat einen eigenen Router, %2: wählen Sie ihn unter Router</translation>
+    </message>
+    <message>
+        <source>semhap sessions and robot recordings (*.db *.mcap);;semhap sessions (*.db);;Robot recordings, rosbag2 in MCAP (*.mcap);;All files (*)</source>
+        <translation>semhap-Sitzungen und Roboteraufzeichnungen (*.db *.mcap);;semhap-Sitzungen (*.db);;Roboteraufzeichnungen, rosbag2 in MCAP (*.mcap);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Topic map of %1</source>
+        <translation>Topic-Zuordnung für %1</translation>
+    </message>
+    <message>
+        <source>Topic maps (*.json);;All files (*)</source>
+        <translation>Topic-Zuordnungen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Could not import %1</source>
+        <translation>%1 konnte nicht importiert werden</translation>
+    </message>
+    <message>
+        <source>Importing %1 into %2…</source>
+        <translation>%1 wird nach %2 importiert …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Import von %1 abgebrochen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %1: %n frame(s) into %2</source>
+        <translation>
+            <numerusform>%1 importiert: %n Frame nach %2</numerusform>
+            <numerusform>%1 importiert: %n Frames nach %2</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2916,6 +2947,10 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>Replay: the scene cannot be shown (%1)</source>
         <translation>Wiedergabe: Die Szene kann nicht gezeigt werden (%1)</translation>
+    </message>
+    <message>
+        <source>Replay: a robot&apos;s recording has no scene</source>
+        <translation>Wiedergabe: Eine Roboteraufzeichnung hat keine Szene</translation>
     </message>
 </context>
 <context>

@@ -884,10 +884,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>semhap sessions (*.db);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Session notes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1219,6 +1215,41 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     <message>
         <source>%1 has a router of its own, %2: pick it under Router</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap sessions and robot recordings (*.db *.mcap);;semhap sessions (*.db);;Robot recordings, rosbag2 in MCAP (*.mcap);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topic map of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topic maps (*.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not import %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Importing %1 into %2…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %1: %n frame(s) into %2</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2907,6 +2938,10 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>Replay: the scene cannot be shown (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay: a robot&apos;s recording has no scene</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -36,6 +36,8 @@ QString settingsKey(FileKind kind)
         return QStringLiteral("fileDialogs/protocols");
     case FileKind::Study:
         return QStringLiteral("fileDialogs/studies");
+    case FileKind::TopicMap:
+        return QStringLiteral("fileDialogs/topicMaps");
     }
     return QString();
 }
@@ -74,6 +76,12 @@ QString FileDialogs::exampleStudies()
             return QFileInfo(place).canonicalFilePath();
     }
     return QString();
+}
+
+bool FileDialogs::hasRemembered(FileKind kind)
+{
+    const QString key = settingsKey(kind);
+    return !key.isEmpty() && QSettings().contains(key);
 }
 
 void FileDialogs::remember(FileKind kind, const QString &path)

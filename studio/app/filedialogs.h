@@ -19,6 +19,7 @@ enum class FileKind
     PlotExport, ///< the plots as CSV or PNG
     Protocol,   ///< study protocols (`semhap.study/1`): first the example studies
     Study,      ///< study databases (STUDY.db)
+    TopicMap,   ///< a robot recording's topic maps (`semhap.topics/1`)
 };
 
 /**
@@ -37,6 +38,8 @@ public:
      * (`share/semhap/studies`), else in the sources the build came from; empty when neither.
      */
     static QString exampleStudies();
+    /** Whether a folder was remembered for `kind`. */
+    static bool hasRemembered(FileKind kind);
     /** Remembers the folder of `path` for the next dialog of `kind` (empty: nothing). */
     static void remember(FileKind kind, const QString &path);
 

@@ -16,7 +16,9 @@
 #include "plotpanel.h"
 #include "poseinput.h"
 #include "preferencesdialog.h"
+#include "recordingimport.h"
 #include "replaybar.h"
+#include "router.h"
 #include "routerdocument.h"
 #include "routereditor.h"
 #include "routergraph.h"
@@ -42,6 +44,8 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QEventLoop>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonValue>
 #include <QKeyEvent>
@@ -50,16 +54,20 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QProgressDialog>
 #include <QSettings>
 #include <QStandardItemModel>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 
 #include <algorithm>
+#include <atomic>
 #include <climits>
 #include <functional>
 #include <map>
+#include <thread>
 
 namespace semhap {
 
@@ -397,9 +405,13 @@ void MainWindow::createActions()
     m_openSessionAction = action(tr("Open session…"), QStringLiteral("openSessionAction"),
                                  QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_O));
     connect(m_openSessionAction, &QAction::triggered, this, [this] {
-        const QString file = FileDialogs::openFile(this, FileKind::Session, tr("Open session"),
-                                                   tr("semhap sessions (*.db);;All files (*)"));
-        if (!file.isEmpty())
+        const QString file = FileDialogs::openFile(
+            this, FileKind::Session, tr("Open session"),
+            tr("semhap sessions and robot recordings (*.db *.mcap);;semhap sessions "
+               "(*.db);;Robot recordings, rosbag2 in MCAP (*.mcap);;All files (*)"));
+        if (file.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive))
+            importRecording(file);
+        else if (!file.isEmpty())
             openSession(file);
     });
     m_listenAction = action(tr("Listen for a live rig…"), QStringLiteral("listenAction"),
@@ -910,6 +922,83 @@ bool MainWindow::openSession(const QString &path)
         return true;
     showError(tr("Could not open session %1").arg(QFileInfo(path).fileName()), error);
     return false;
+}
+
+bool MainWindow::importRecording(const QString &recording)
+{
+    const QString name = QFileInfo(recording).fileName();
+    if (!FileDialogs::hasRemembered(FileKind::TopicMap))
+        FileDialogs::remember(FileKind::TopicMap, recording); // maps live beside recordings
+    const QString topics =
+        FileDialogs::openFile(this, FileKind::TopicMap, tr("Topic map of %1").arg(name),
+                              tr("Topic maps (*.json);;All files (*)"));
+    if (topics.isEmpty())
+        return false;
+    // A new session beside the recorded ones, never over one.
+    const QDir folder(PreferencesDialog::sessionsFolder());
+    folder.mkpath(QStringLiteral("."));
+    const QString base = QFileInfo(recording).completeBaseName();
+    QString session = folder.filePath(base + QStringLiteral(".db"));
+    for (int k = 2; QFileInfo::exists(session); ++k)
+        session = folder.filePath(QStringLiteral("%1-%2.db").arg(base).arg(k));
+    LoadError loadError;
+    const QString routerName = m_engine.options().router;
+    std::unique_ptr<Router> router = loadRouter(routerName, {}, &loadError);
+    if (!router) {
+        showError(tr("Could not import %1").arg(name), loadError.toString());
+        return false;
+    }
+    SessionInfo info;
+    info.routerSource = routerName;
+
+    // The import runs beside the window, which shows how far it is and can cancel it.
+    QProgressDialog progress(tr("Importing %1 into %2…").arg(name, QFileInfo(session).fileName()),
+                             tr("Cancel"), 0, 1000, this);
+    progress.setObjectName(QStringLiteral("importProgress"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(300);
+    std::atomic<int> done{0};
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> finished{false};
+    RecordingImport::Result result;
+    bool imported = false;
+    std::thread worker([&, router = std::move(router)]() mutable {
+        imported = RecordingImport::run(
+            recording, topics, std::move(router), info, session,
+            [&](double share) {
+                done = int(share * 1000);
+                return !cancel.load();
+            },
+            &result);
+        finished = true;
+    });
+    QEventLoop loop;
+    QTimer poll;
+    connect(&poll, &QTimer::timeout, &loop, [&] {
+        progress.setValue(std::min(done.load(), 999));
+        if (progress.wasCanceled())
+            cancel = true;
+        if (finished)
+            loop.quit();
+    });
+    poll.start(50);
+    loop.exec();
+    worker.join();
+    progress.reset();
+    if (!imported) {
+        showError(tr("Could not import %1").arg(name), result.error);
+        return false;
+    }
+    if (result.cancelled) {
+        QFile::remove(session); // the user stopped it: no half session left behind
+        statusBar()->showMessage(tr("Import of %1 cancelled").arg(name), 5000);
+        return false;
+    }
+    statusBar()->showMessage(tr("Imported %1: %n frame(s) into %2", nullptr,
+                                int(std::min<long long>(result.frames, INT_MAX)))
+                                 .arg(name, QDir::toNativeSeparators(session)),
+                             10000);
+    return openSession(session);
 }
 
 void MainWindow::closeReplay()

@@ -82,6 +82,12 @@ public:
      * plots and the event log follow its scrubber. Shows what went wrong, if anything.
      */
     bool openSession(const QString &path);
+    /**
+     * Asks for the topic map of a robot's recording (REC.mcap), imports it into a new
+     * session in the sessions folder, routed by the run's router, with a progress dialog
+     * that can cancel, then opens that session; false when it did not.
+     */
+    bool importRecording(const QString &recording);
     /** Back from a replay to the simulation (or live rig) it replaced, where it was. */
     void closeReplay();
     /**

@@ -251,8 +251,10 @@ void SessionReplay::loadScene()
     m_sceneTime = qQNaN();
     const SessionInfo &info = m_reader->info();
     if (m_reader->sceneStateCount() == 0) {
-        m_sceneNote = info.scene.isEmpty() ? tr("Replay: a live rig's session has no scene")
-                                           : tr("Replay: no scene state recorded");
+        const bool imported = info.source == QLatin1String("import");
+        m_sceneNote = !info.scene.isEmpty() ? tr("Replay: no scene state recorded")
+                      : imported            ? tr("Replay: a robot's recording has no scene")
+                                            : tr("Replay: a live rig's session has no scene");
         return;
     }
     SceneOptions options;

@@ -144,8 +144,11 @@ void ReplayBar::sessionOpened()
     const QString started = info.started.isValid()
                                 ? locale.toString(info.started.toLocalTime(), QLocale::ShortFormat)
                                 : tr("unknown date");
-    const QString what =
-        info.scene.isEmpty() ? tr("live rig") : QFileInfo(info.scene).completeBaseName();
+    // A robot's recording is named by its file (`semhap import`, File → Open).
+    const QString recording = info.extra.value(QStringLiteral("recording"));
+    const QString what = !info.scene.isEmpty() ? QFileInfo(info.scene).completeBaseName()
+                         : info.source == QLatin1String("import") ? QFileInfo(recording).fileName()
+                                                                  : tr("live rig");
     m_about->setText(what);
     QStringList details;
     if (!info.notes.isEmpty())

@@ -67,6 +67,7 @@ private slots:
     void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
     void closingAReplayBringsTheRunBack();
+    void opensARobotRecording();
     void replayNamesAnEditedRouter();
     void recordingMidGraspShowsTheGraspFromItsStart();
     void untitledRerouteLeavesNoPickerEntry();
@@ -648,6 +649,56 @@ void TestStudioSessions::closingAReplayBringsTheRunBack()
     QTRY_VERIFY(window.engine().simTime() > t + 0.1);
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
     QVERIFY(window.engine().simTime() < t);
+}
+
+void TestStudioSessions::opensARobotRecording()
+{
+    // File → Open session (Ctrl+Alt+O) on a rosbag2 recording: a second dialog asks for its
+    // topic map; the recording becomes a session in the sessions folder and opens for replay.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    const QString recording = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp-zstd.mcap");
+    const QString map = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json");
+    const QString session = QDir(PreferencesDialog::sessionsFolder()).filePath("grasp-zstd.db");
+    QFile::remove(session);
+    bool askedForTheMap = false;
+    QTimer::singleShot(0, [&] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        QTimer::singleShot(0, [&] {
+            // The map's dialog follows once the recording's has closed.
+            QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()) &&
+                        QApplication::activeModalWidget()->windowTitle().startsWith("Topic map"));
+            auto *mapDialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            QCOMPARE(mapDialog->windowTitle(), QString("Topic map of grasp-zstd.mcap"));
+            askedForTheMap = true;
+            mapDialog->selectFile(map);
+            QTest::keyClick(mapDialog->focusWidget() ? mapDialog->focusWidget() : mapDialog,
+                            Qt::Key_Return);
+        });
+        dialog->selectFile(recording);
+        QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog, Qt::Key_Return);
+    });
+    QTest::keyClick(&window, Qt::Key_O, Qt::ControlModifier | Qt::AltModifier);
+    QVERIFY(askedForTheMap);
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().isReplaying(), 30000);
+    QCOMPARE(window.replay()->path(), session);
+    QVERIFY(window.statusBar()->currentMessage().contains("1000 frame(s)"));
+    // The session is the recording routed: the grasp and its break warning, as route gives.
+    QString error;
+    auto reader = SessionReader::open(session, &error);
+    QVERIFY2(reader, qPrintable(error));
+    QCOMPARE(reader->info().source, QString("import"));
+    int events = 0;
+    QVERIFY(reader->readEvents(
+        [&](const SemanticEvent &) {
+            ++events;
+            return true;
+        },
+        &error));
+    QCOMPARE(events, 38);
+    QFile::remove(session);
 }
 
 void TestStudioSessions::replayNamesAnEditedRouter()
