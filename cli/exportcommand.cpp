@@ -3,6 +3,7 @@
 
 #include "csvrow.h"
 #include "jsonlineswriter.h"
+#include "mcapexport.h"
 #include "nametable.h"
 #include "sessionreader.h"
 
@@ -55,6 +56,10 @@ void ExportCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("jsonl"),
                       tr("Write frames.jsonl, events.jsonl and device_frames.jsonl into DIR."),
                       tr("DIR")});
+    parser.addOption({QStringLiteral("mcap"),
+                      tr("Write FILE.mcap, which Foxglove, PlotJuggler, Rerun and ros2 bag open: "
+                         "every frame as ROS 2 messages (docs/ros.md)."),
+                      tr("FILE.mcap")});
 }
 
 int ExportCommand::execute(const QCommandLineParser &parser)
@@ -64,8 +69,9 @@ int ExportCommand::execute(const QCommandLineParser &parser)
         return usageError(tr("a session file is required"));
     if (positional.size() > 1)
         return usageError(tr("unexpected argument '%1'").arg(positional.at(1)));
-    if (!parser.isSet(QStringLiteral("csv")) && !parser.isSet(QStringLiteral("jsonl")))
-        return usageError(tr("--csv DIR or --jsonl DIR is required"));
+    if (!parser.isSet(QStringLiteral("csv")) && !parser.isSet(QStringLiteral("jsonl")) &&
+        !parser.isSet(QStringLiteral("mcap")))
+        return usageError(tr("--csv DIR, --jsonl DIR or --mcap FILE is required"));
     QString error;
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &error);
     if (!session)
@@ -78,6 +84,15 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     if (parser.isSet(QStringLiteral("jsonl")) &&
         !exportJsonLines(*session, parser.value(QStringLiteral("jsonl"))))
         return ExitInvalidInput;
+    if (parser.isSet(QStringLiteral("mcap"))) {
+        QIODevice *out = openOutput(parser.value(QStringLiteral("mcap")));
+        if (!out)
+            return ExitInvalidInput;
+        if (!McapExport::write(*session, out, &error)) {
+            const OutputFile *failed = failedOutput();
+            return inputError(failed ? failed->writeError().toString() : error);
+        }
+    }
     reportSkippedRows(*session);
     return ExitOk;
 }

@@ -21,7 +21,7 @@ void ImportCommand::configure(QCommandLineParser &parser)
     parser.addPositionalArgument(QStringLiteral("recording"), tr("The recording (REC.mcap)."));
     parser.addOption({QStringLiteral("topics"),
                       tr("The semhap.topics/1 map of the recording's topics to contact frames "
-                         "(docs/ros.md)."),
+                         "(docs/ros.md), or semhap for a recording semhap exported."),
                       tr("MAP.json")});
     parser.addOption({QStringLiteral("session"), tr("The new session database."), tr("OUT.db")});
     parser.addOption({QStringLiteral("router"),

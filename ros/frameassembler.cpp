@@ -86,6 +86,17 @@ FrameAssembler::Part FrameAssembler::want(int gripper, const QString &topic, con
     return part;
 }
 
+bool FrameAssembler::isOptional(int i) const
+{
+    for (size_t g = 0; g < m_hands.size(); ++g) {
+        const Hand &hand = m_hands[g];
+        if (hand.present && !m_map.grippers[g].optional &&
+            std::find(hand.topicsUsed.begin(), hand.topicsUsed.end(), i) != hand.topicsUsed.end())
+            return false;
+    }
+    return true;
+}
+
 bool FrameAssembler::take(int i, double logTime, const double *values, bool stamped)
 {
     const double t = m_map.time == TopicMap::Time::Header && stamped ? values[0] : logTime;

@@ -40,6 +40,8 @@ public:
     const std::vector<TopicDecoder::Want> &wants(int i) const { return m_wants[size_t(i)]; }
     /** The map's JSON pointer that asked for each of topic `i`'s wants, for errors. */
     const QStringList &pointers(int i) const { return m_pointers[size_t(i)]; }
+    /** Whether a recording may lack topic `i`: only optional grippers read it. */
+    bool isOptional(int i) const;
     /** The map's JSON pointer that first names topic `i`, for errors. */
     QString topicPointer(int i) const { return m_topicPointers[i]; }
 
@@ -59,6 +61,12 @@ public:
     void finish();
     /** The time (s, in the messages' clock) that frames count from: the first clock message's. */
     double start() const { return m_start; }
+    /** Frames count from `t` (s, in the messages' clock) instead. */
+    void setStart(double t)
+    {
+        m_start = t;
+        m_started = true;
+    }
 
 private:
     struct Sample

@@ -230,6 +230,15 @@ const MsgSchema::Field *MsgSchema::field(const Type &type, const QString &name)
     return nullptr;
 }
 
+bool MsgSchema::isBuiltin(const QString &name)
+{
+    for (const Builtin &b : Builtins) {
+        if (name == QLatin1String(b.name))
+            return true;
+    }
+    return false;
+}
+
 bool MsgSchema::isNumber(Primitive primitive)
 {
     return primitive != Primitive::String && primitive != Primitive::WString &&

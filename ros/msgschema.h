@@ -73,6 +73,8 @@ public:
 
     /** A type's field, by name, or nullptr. */
     static const Field *field(const Type &type, const QString &name);
+    /** Whether `name` is a built-in type (int32, string, …) rather than a message type. */
+    static bool isBuiltin(const QString &name);
     /** Whether a field's primitive is a number (bool, byte and char included). */
     static bool isNumber(Primitive primitive);
     /** A field's type as the .msg text writes it, for messages: `float64[3]`, `Vector3`. */

@@ -34,15 +34,27 @@ bool RecordingReader::open()
     for (const auto &[id, channel] : check.channels())
         recorded << channel.topic;
     recorded.sort();
+    // An export of semhap's own says where its t = 0 was (McapExport).
+    for (const McapMetadata &m : check.metadata()) {
+        const auto origin = m.values.find(QStringLiteral("time_origin"));
+        if (m.name == QLatin1String("semhap") && origin != m.values.end())
+            m_origin = origin->second.toLongLong();
+    }
     const QStringList &topics = m_assembler.topics();
+    QStringList channelled; // a mapped topic with a channel and no message is only quiet
+    for (const auto &[id, channel] : check.channels())
+        channelled << channel.topic;
     for (int t = 0; t < topics.size(); ++t) {
-        if (!m_decoders[size_t(t)])
+        if (!m_decoders[size_t(t)] && !channelled.contains(topics[t]) &&
+            !m_assembler.isOptional(t))
             return fail(QStringLiteral("%1: %2: %3 has no topic %4; its topics: %5")
                             .arg(m_mapPath, m_assembler.topicPointer(t), m_path, quoted(topics[t]),
                                  recorded.isEmpty() ? QStringLiteral("none")
                                                     : recorded.join(QStringLiteral(", "))));
     }
     std::fill(m_messageCount.begin(), m_messageCount.end(), 0);
+    if (m_origin >= 0 && m_epoch >= 0)
+        m_assembler.setStart(double(m_origin - m_epoch * 1000000000) * 1e-9);
     m_reader = std::make_unique<McapReader>(m_path);
     if (!m_reader->open())
         return fail(m_reader->error());

@@ -69,6 +69,8 @@ private:
     long long m_skipped = 0;
     /// The recording's first whole second: times are read from it, to keep nanoseconds.
     std::int64_t m_epoch = -1;
+    /// From an export's `semhap` metadata: the Unix time (ns) of its t = 0, or -1.
+    std::int64_t m_origin = -1;
     bool m_done = false;
 };
 

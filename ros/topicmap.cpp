@@ -2,6 +2,7 @@
 #include "topicmap.h"
 
 #include "jsonreader.h"
+#include "mcapexport.h"
 
 namespace semhap {
 
@@ -86,6 +87,10 @@ bool readTip(JsonReader &reader, const QJsonObject &json, const QString &pointer
 
 bool TopicMap::load(const QString &path, TopicMap *map, LoadError *error)
 {
+    if (path == QLatin1String("semhap")) {
+        *map = McapExport::topicMap();
+        return true;
+    }
     QJsonObject json;
     if (!readJsonObjectFile(path, &json, error) || !checkFormat(json, path, Format, error))
         return false;

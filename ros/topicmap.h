@@ -70,6 +70,9 @@ struct TopicMap
     struct GripperTopics
     {
         bool present = false;
+        /// A gripper a recording may lack (the built-in map's, for one-handed sessions):
+        /// its topics may be missing, and then it makes no frames.
+        bool optional = false;
         QString clock; ///< the topic whose messages make frames; default: the left tip's
         Tip left;
         Tip right;
@@ -79,7 +82,10 @@ struct TopicMap
     Time time = Time::Header;
     std::array<GripperTopics, 2> grippers; ///< by Gripper
 
-    /** Reads a map file; false with `FILE: /pointer: reason` in `error`. */
+    /**
+     * Reads a map file, or the built-in map `semhap` of semhap's own exports
+     * (McapExport::topicMap()); false with `FILE: /pointer: reason` in `error`.
+     */
     static bool load(const QString &path, TopicMap *map, LoadError *error);
     /** Reads a map from its JSON (pointer errors through `reader`). */
     static bool fromJson(JsonReader &reader, const QJsonObject &json, TopicMap *map);

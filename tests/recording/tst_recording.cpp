@@ -8,8 +8,10 @@
 #include "jsonlines.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtEndian>
 #include <QTest>
@@ -47,6 +49,17 @@ QJsonObject changed(QJsonObject map, const QStringList &keys, const QJsonValue &
     return map;
 }
 
+/** What the reference libraries read of an MCAP file (tests/interop/mcap-check.mjs). */
+QJsonObject referenceRead(const QString &mcap)
+{
+    QProcess node;
+    node.start(QStringLiteral(SEMHAP_NODE),
+               {QStringLiteral(SEMHAP_INTEROP_TOOLS "/mcap-check.mjs"), mcap});
+    if (!node.waitForFinished(120000) || node.exitCode() != 0)
+        qFatal("mcap-check.mjs: %s", node.readAllStandardError().constData());
+    return QJsonDocument::fromJson(node.readAllStandardOutput()).object();
+}
+
 } // namespace
 
 class TestRecording : public QObject
@@ -62,6 +75,9 @@ private slots:
     void usage();
     void importMakesASession();
     void importOfABadRecordingMakesNothing();
+    void exportOpensInTheReferenceReader_data();
+    void exportOpensInTheReferenceReader();
+    void exportImportsBackToTheSameEvents();
 };
 
 void TestRecording::routesAsItsFrames_data()
@@ -238,6 +254,117 @@ void TestRecording::importOfABadRecordingMakesNothing()
     QFile kept(session);
     QVERIFY(kept.open(QIODevice::ReadOnly));
     QCOMPARE(kept.readAll(), QByteArray("precious"));
+}
+
+void TestRecording::exportOpensInTheReferenceReader_data()
+{
+    QTest::addColumn<QStringList>("make"); // the command that makes the session, then its path
+    QTest::newRow("an imported recording")
+        << QStringList{"import", recording("grasp-zstd.mcap"), "--topics",
+                       recording("grasp.topics.json"), "--session"};
+    QTest::newRow("a simulated run, both grippers")
+        << QStringList{"run",        "--scene",  "bimanual_sorting", "--router", "C3",
+                       "--operator", "scripted", "--duration",       "1",        "--session"};
+}
+
+void TestRecording::exportOpensInTheReferenceReader()
+{
+    QFETCH(QStringList, make);
+    QTemporaryDir dir;
+    const QString session = dir.filePath("s.db");
+    const CliResult made = semhapRun(make << session);
+    QVERIFY2(made.code == 0, made.err.constData());
+    const QString mcap = dir.filePath("s.mcap");
+    const CliResult exported = semhapRun({"export", session, "--mcap", mcap});
+    QVERIFY2(exported.code == 0, exported.err.constData());
+    QCOMPARE(exported.err, QByteArray());
+    const CliResult jsonl = semhapRun({"export", session, "--jsonl", dir.filePath("j")});
+    QCOMPARE(jsonl.code, 0);
+    const QList<QJsonObject> frames = readLines(dir.filePath("j/frames.jsonl"));
+    const QList<QJsonObject> events = readLines(dir.filePath("j/events.jsonl"));
+    const QList<QJsonObject> deviceFrames = readLines(dir.filePath("j/device_frames.jsonl"));
+
+    const QJsonObject read = referenceRead(mcap);
+    QCOMPARE(read["profile"].toString(), QString("ros2"));
+    QVERIFY(read["chunks"].toInt() >= 1);
+    QVERIFY(read["streamDone"].toBool()); // every CRC checked, start to end
+    QCOMPARE(read["undecoded"].toArray(), QJsonArray());
+    // Every frame, none decimated: each gripper's contact and tips, each event, each band's.
+    const QJsonObject counts = read["counts"].toObject();
+    int total = 0;
+    for (const QJsonValue &count : counts)
+        total += count.toInt();
+    QCOMPARE(read["statisticsMessageCount"].toString(), QString::number(total));
+    QHash<QString, int> perGripper;
+    for (const QJsonObject &f : frames)
+        ++perGripper[f["gripper"].toString()];
+    for (auto it = perGripper.begin(); it != perGripper.end(); ++it) {
+        QCOMPARE(counts[QStringLiteral("/semhap/%1/contact").arg(it.key())].toInt(), it.value());
+        QCOMPARE(counts[QStringLiteral("/semhap/%1/left/wrench").arg(it.key())].toInt(),
+                 it.value());
+    }
+    QCOMPARE(counts["/semhap/events"].toInt(), events.size());
+    QHash<QString, int> perDevice;
+    for (const QJsonObject &f : deviceFrames)
+        ++perDevice[f["device"].toString()];
+    for (auto it = perDevice.begin(); it != perDevice.end(); ++it)
+        QCOMPARE(counts["/semhap/devices/" + it.key()].toInt(), it.value());
+    QCOMPARE(read["schemas"]
+                 .toObject()[QStringLiteral("/semhap/%1/contact")
+                                 .arg(frames.first()["gripper"].toString())]
+                 .toString(),
+             QString("semhap_msgs/msg/ContactFrame"));
+    if (!events.isEmpty())
+        QCOMPARE(read["schemas"].toObject()["/semhap/events"].toString(),
+                 QString("semhap_msgs/msg/SemanticEvent"));
+    QVERIFY(read["metadata"].toObject()["semhap"].toObject().contains("time_origin"));
+    QVERIFY(read["metadata"].toObject()["router"].toObject()["json"].toString().contains(
+        "semhap.router/1"));
+
+    // The last frame of the first gripper, as the reference decoder reads it.
+    const QString gripper = frames.last()["gripper"].toString();
+    QJsonObject lastFrame;
+    for (const QJsonObject &f : frames) {
+        if (f["gripper"].toString() == gripper)
+            lastFrame = f;
+    }
+    const QJsonObject decoded =
+        read["last"].toObject()[QStringLiteral("/semhap/%1/contact").arg(gripper)].toObject();
+    QCOMPARE(decoded["header"].toObject()["frame_id"].toString(), gripper);
+    for (const char *tip : {"left", "right"}) {
+        const QJsonObject want = lastFrame[tip].toObject();
+        const QJsonObject got = decoded[tip].toObject();
+        QCOMPARE(got["f"].toDouble(), want["f"].toDouble());
+        QCOMPARE(got["n"].toInt(), want["n"].toInt());
+        QCOMPARE(got["actor"].toString(), want["actor"].toString());
+    }
+    const QJsonObject wrench =
+        read["last"].toObject()[QStringLiteral("/semhap/%1/left/wrench").arg(gripper)].toObject();
+    const QJsonArray fxyz = lastFrame["left"].toObject()["fxyz"].toArray();
+    if (!fxyz.isEmpty())
+        QCOMPARE(wrench["wrench"].toObject()["force"].toObject()["y"].toDouble(),
+                 fxyz[1].toDouble());
+}
+
+void TestRecording::exportImportsBackToTheSameEvents()
+{
+    // Export and import are one mapping read two ways: `--topics semhap` reads an export.
+    QTemporaryDir dir;
+    const QString first = dir.filePath("first.db");
+    QCOMPARE(semhapRun({"import", recording("grasp-none.mcap"), "--topics",
+                        recording("grasp.topics.json"), "--session", first})
+                 .code,
+             0);
+    QCOMPARE(semhapRun({"export", first, "--mcap", dir.filePath("first.mcap")}).code, 0);
+    const QString second = dir.filePath("second.db");
+    const CliResult back = semhapRun(
+        {"import", dir.filePath("first.mcap"), "--topics", "semhap", "--session", second});
+    QVERIFY2(back.code == 0, back.err.constData());
+    QCOMPARE(semhapRun({"replay", first, "--events", dir.filePath("first.events")}).code, 0);
+    QCOMPARE(semhapRun({"replay", second, "--events", dir.filePath("second.events")}).code, 0);
+    const QList<QJsonObject> events = readLines(dir.filePath("second.events"));
+    QVERIFY(events.size() > 10);
+    compareLines(events, readLines(dir.filePath("first.events")));
 }
 
 QTEST_GUILESS_MAIN(TestRecording)
