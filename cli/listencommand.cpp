@@ -5,6 +5,7 @@
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
+#include "foxglovesource.h"
 #include "quitsignal.h"
 #include "sessionwriter.h"
 #include "sinklist.h"
@@ -76,6 +77,14 @@ void ListenCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("udp"),
                       tr("UDP port to listen on (0: any free port, printed at start)."),
                       tr("PORT")});
+    parser.addOption({QStringLiteral("foxglove"),
+                      tr("Follow a robot's Foxglove WebSocket server (foxglove_bridge) instead: "
+                         "its topics through --topics (docs/ros.md)."),
+                      tr("ws://HOST:PORT")});
+    parser.addOption({QStringLiteral("topics"),
+                      tr("With --foxglove: the semhap.topics/1 map of the robot's topics to "
+                         "contact frames."),
+                      tr("MAP.json")});
     parser.addOption({QStringLiteral("address"),
                       tr("Address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 "
                          "for every network)."),
@@ -110,8 +119,18 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (!parser.positionalArguments().isEmpty())
         return usageError(
             tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
-    if (!parser.isSet(QStringLiteral("udp")))
-        return usageError(tr("--udp is required"));
+    const bool foxglove = parser.isSet(QStringLiteral("foxglove"));
+    if (foxglove == parser.isSet(QStringLiteral("udp")))
+        return usageError(tr("give one source: --udp PORT or --foxglove ws://HOST:PORT"));
+    if (foxglove != parser.isSet(QStringLiteral("topics")))
+        return usageError(foxglove ? tr("--foxglove needs the map of its topics: --topics "
+                                        "MAP.json")
+                                   : tr("--topics: only with --foxglove"));
+    const QUrl url(parser.value(QStringLiteral("foxglove")));
+    if (foxglove && (!url.isValid() || (url.scheme() != QLatin1String("ws") &&
+                                        url.scheme() != QLatin1String("wss"))))
+        return usageError(tr("--foxglove: expected ws://HOST:PORT, got '%1'")
+                              .arg(parser.value(QStringLiteral("foxglove"))));
     double port = 0;
     double duration = 0;
     double silence = UdpFrameSource::DefaultSilence;
@@ -122,7 +141,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (!(silence > 0.0 && silence <= 3600.0))
         return usageError(tr("--silence must be between 0 and 3600 s"));
 
-    if (port < 0 || port > 65535 || port != std::floor(port))
+    if (!foxglove && (port < 0 || port > 65535 || port != std::floor(port)))
         return usageError(tr("--udp must be a port number (0 to 65535)"));
     if (duration < 0)
         return usageError(tr("--duration must not be negative"));
@@ -175,12 +194,44 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     }
     if (!bindDevices(bindings, router->player(), devices, &message, &usage))
         return usage ? usageError(message) : inputError(message);
-    UdpFrameSource source;
-    if (!maxGapOption(parser, &source.parser()))
-        return ExitUsage;
-    source.setSilence(silence);
-    if (!source.bind(address, int(port), &message))
-        return inputError(message);
+    // The source: a sender's UDP datagrams, or a robot's Foxglove WebSocket server. The loop
+    // below asks it the same few things either way.
+    UdpFrameSource udp;
+    std::unique_ptr<FoxgloveSource> robot;
+    std::function<int(const std::function<void(const ContactFrame &, double)> &, int)> poll;
+    std::function<qint64()> msecsToSilence;
+    std::function<bool()> fellSilent;
+    std::function<QString()> fatal = [] { return QString(); };
+    QString name;
+    const ActorTable *actors = nullptr;
+    if (foxglove) {
+        TopicMap map;
+        LoadError mapError;
+        const QString mapPath = parser.value(QStringLiteral("topics"));
+        if (!TopicMap::load(mapPath, &map, &mapError))
+            return inputError(mapError.toString());
+        robot = std::make_unique<FoxgloveSource>(url, map, mapPath);
+        robot->setSilence(silence);
+        name = robot->describe();
+        actors = &robot->actors();
+        poll = [&](const auto &process, int ms) { return robot->poll(process, ms); };
+        msecsToSilence = [&] { return robot->msecsToSilence(); };
+        fellSilent = [&] { return robot->fellSilent(); };
+        fatal = [&] { return robot->fatalError(); };
+    } else {
+        if (!maxGapOption(parser, &udp.parser()))
+            return ExitUsage;
+        udp.setSilence(silence);
+        if (!udp.bind(address, int(port), &message))
+            return inputError(message);
+        name = QStringLiteral("udp:%1").arg(udp.port());
+        actors = &udp.actors();
+        poll = [&](const auto &process, int ms) {
+            return udp.waitForDatagrams(ms) ? udp.poll(process) : 0;
+        };
+        msecsToSilence = [&] { return udp.msecsToSilence(); };
+        fellSilent = [&] { return udp.fellSilent(); };
+    }
 
     std::unique_ptr<SessionWriter> session;
     if (parser.isSet(QStringLiteral("session"))) {
@@ -191,13 +242,18 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         info.routerContext = context;
         info.addBindings(bindings);
         info.notes = parser.value(QStringLiteral("notes"));
-        info.extra.insert(QStringLiteral("udp"),
-                          QStringLiteral("%1:%2").arg(address).arg(source.port()));
+        if (foxglove) {
+            info.extra.insert(QStringLiteral("foxglove"), url.toString());
+            info.extra.insert(QStringLiteral("topics"), parser.value(QStringLiteral("topics")));
+        } else {
+            info.extra.insert(QStringLiteral("udp"),
+                              QStringLiteral("%1:%2").arg(address).arg(udp.port()));
+        }
         session = SessionWriter::create(parser.value(QStringLiteral("session")), info, *router,
                                         &message);
         if (!session)
             return inputError(message);
-        session->setActorTable(&source.actors());
+        session->setActorTable(actors);
     }
 
     // A signal lets the loop close the session and the outputs; bands stop at once.
@@ -205,36 +261,51 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (!devices.boundNames().isEmpty())
         devices.armAll(true);
     Throttle throttle([this](const QString &line) { report(line); });
-    source.setErrorHandler([&throttle](const QString &line) { throttle.report(line); });
-    report(tr("listening on udp:%1:%2").arg(address).arg(source.port()));
+    const auto throttled = [&throttle](const QString &line) { throttle.report(line); };
+    if (robot) {
+        robot->setErrorHandler(throttled);
+        robot->start();
+        report(tr("following %1").arg(name));
+    } else {
+        udp.setErrorHandler(throttled);
+        report(tr("listening on udp:%1:%2").arg(address).arg(udp.port()));
+    }
 
     Pipeline pipeline(std::move(router));
     StreamSink streams(pipeline.router(), events, deviceFrames);
     DeviceOutputSink output(pipeline.router().player(), devices);
     SinkList sink{&output, &streams, session.get()};
+    long long frames = 0;
     const auto process = [&](const ContactFrame &frame, double arrival) {
         if (session)
             session->recordContactFrame(frame, arrival);
         pipeline.process(frame, sink);
+        ++frames;
     };
     QElapsedTimer wall;
     wall.start();
     const qint64 limit = duration > 0 ? qint64(duration * 1000) : -1;
     while (!QuitSignal::requested() && (limit < 0 || wall.elapsed() < limit)) {
         qint64 wait = limit < 0 ? 100 : limit - wall.elapsed();
-        if (source.msecsToSilence() >= 0)
-            wait = std::min(wait, source.msecsToSilence());
-        if (source.waitForDatagrams(int(std::clamp<qint64>(wait, 0, 100))) &&
-            source.poll(process) > 0)
+        if (msecsToSilence() >= 0)
+            wait = std::min(wait, msecsToSilence());
+        if (poll(process, int(std::clamp<qint64>(wait, 0, 100))) > 0)
             flushOutputs();
-        if (source.fellSilent()) {
-            // A silent sender must not hold the bands where it left them.
+        if (!fatal().isEmpty()) {
+            devices.stopAll();
+            if (session)
+                finishSession(*session);
+            return inputError(fatal());
+        }
+        if (fellSilent()) {
+            // A silent sender must not hold the bands where it left them. The frames that
+            // waited for the silent source are routed first.
+            poll(process, 0);
             pipeline.endAll(sink);
             devices.stopAll();
             flushOutputs();
-            throttle.report(tr("udp:%1: no frame for %2 s: messages ended, bands stopped")
-                                .arg(source.port())
-                                .arg(source.silence()));
+            throttle.report(
+                tr("%1: no frame for %2 s: messages ended, bands stopped").arg(name).arg(silence));
         }
         throttle.roll();
         if (const OutputFile *failed = failedOutput()) {
@@ -244,24 +315,34 @@ int ListenCommand::execute(const QCommandLineParser &parser)
             return inputError(failed->writeError().toString());
         }
     }
-    if (source.stats().frames > 0)
+    if (frames > 0)
         pipeline.flush(sink);
     devices.stopAll();
     reportDroppedEvents(pipeline);
     if (session && !finishSession(*session))
         return ExitInvalidInput;
     if (QuitSignal::requested())
-        report(tr("udp:%1: interrupted after t = %2 s; the outputs hold what was routed")
-                   .arg(source.port())
+        report(tr("%1: interrupted after t = %2 s; the outputs hold what was routed")
+                   .arg(name)
                    .arg(pipeline.now()));
 
-    const UdpFrameSource::Stats &stats = source.stats();
-    report(tr("udp:%1: %2 datagram(s), %3 frame(s), %4 rejected (%5 oversize)")
-               .arg(source.port())
-               .arg(stats.datagrams)
-               .arg(stats.frames)
-               .arg(stats.rejected)
-               .arg(stats.oversize));
+    if (robot) {
+        const FoxgloveSource::Stats &stats = robot->stats();
+        report(tr("%1: %2 connection(s), %3 message(s), %4 frame(s), %5 rejected")
+                   .arg(name)
+                   .arg(stats.connections)
+                   .arg(stats.messages)
+                   .arg(stats.frames)
+                   .arg(stats.rejected));
+    } else {
+        const UdpFrameSource::Stats &stats = udp.stats();
+        report(tr("udp:%1: %2 datagram(s), %3 frame(s), %4 rejected (%5 oversize)")
+                   .arg(udp.port())
+                   .arg(stats.datagrams)
+                   .arg(stats.frames)
+                   .arg(stats.rejected)
+                   .arg(stats.oversize));
+    }
     return ExitOk;
 }
 

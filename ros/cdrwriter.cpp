@@ -9,7 +9,7 @@ namespace semhap {
 
 void CdrWriter::clear()
 {
-    m_bytes.clear();
+    m_bytes.resize(0); // keeps the capacity: a message after the first allocates nothing
     m_bytes.append("\x00\x01\x00\x00", 4); // CDR, little-endian
 }
 

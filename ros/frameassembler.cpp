@@ -200,6 +200,11 @@ void FrameAssembler::emitReady(size_t g)
 
 bool FrameAssembler::next(ContactFrame *frame)
 {
+    if (!m_released.empty()) {
+        *frame = std::move(m_released.front());
+        m_released.pop_front();
+        return true;
+    }
     Hand *earliest = nullptr;
     for (Hand &hand : m_hands) {
         if (!hand.present)
@@ -228,6 +233,14 @@ void FrameAssembler::finish()
     m_finished = true;
     for (size_t g = 0; g < m_hands.size(); ++g)
         emitReady(g);
+    // Both grippers' frames, merged in time order after any released before.
+    std::deque<ContactFrame> released;
+    released.swap(m_released);
+    ContactFrame frame;
+    while (next(&frame))
+        released.push_back(std::move(frame));
+    m_released.swap(released);
+    m_finished = false; // a robot may speak again
 }
 
 } // namespace semhap

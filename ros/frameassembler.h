@@ -57,7 +57,10 @@ public:
      * the other's, at most MaxPending); false when none is ready.
      */
     bool next(ContactFrame *frame);
-    /** No more messages: every frame still waiting is made. */
+    /**
+     * No more messages for now (the end of a recording, a robot fallen silent): every frame
+     * still waiting is made and handed on by next(). Messages may follow.
+     */
     void finish();
     /** The time (s, in the messages' clock) that frames count from: the first clock message's. */
     double start() const { return m_start; }
@@ -106,6 +109,7 @@ private:
     std::vector<QStringList> m_pointers;
     QStringList m_topicPointers;
     std::array<Hand, 2> m_hands;
+    std::deque<ContactFrame> m_released; ///< made by finish(), in time order
     double m_start = 0.0;
     bool m_started = false;
     bool m_finished = false;

@@ -99,6 +99,7 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
     const std::uint16_t events = mcap.addChannel(eventSchema, eventsTopic(), Cdr);
     std::vector<std::uint16_t> devices;
     QStringList models;
+    std::vector<std::vector<QByteArray>> channelNames; // per device, as UTF-8, made once
     RouterGraph graph;
     LoadError routerError;
     const bool hasGraph = session.routerGraph(&graph, &routerError);
@@ -110,13 +111,32 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
                 model = node.params.value(QLatin1String("model")).toString();
         }
         models << model;
+        channelNames.emplace_back();
+        for (const QString &c : session.channelNames(int(devices.size() - 1)))
+            channelNames.back().push_back(c.toUtf8());
     }
+    // Each gripper's and hand's names and channels, looked up once per gripper, not per row.
+    struct Hand
+    {
+        QString name;
+        int contact = -1, input = -1;
+        std::array<int, 2> wrench{-1, -1};
+    };
+    std::array<Hand, 2> hands;
+    for (const Gripper g : {Gripper::Left, Gripper::Right})
+        hands[size_t(g)].name = gripperName(g);
+    const auto lazy = [&](int &id, std::uint16_t schemaId, const QString &topic) {
+        if (id < 0)
+            id = channel(schemaId, topic);
+        return std::uint16_t(id);
+    };
 
     CdrWriter cdr;
     const ActorTable &actors = session.actors();
     bool ok = session.readContactFrames(
         [&](const ContactFrame &frame, double) {
-            const QString name = gripperName(frame.gripper);
+            Hand &hand = hands[size_t(frame.gripper)];
+            const QString &name = hand.name;
             cdr.clear();
             header(cdr, stamp(frame.t), name);
             fingertip(cdr, frame.left, actors);
@@ -127,8 +147,8 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
             cdr.sequence(std::uint32_t(frame.signalValues.size()));
             for (const SignalValue &s : frame.signalValues)
                 cdr.float64(s.value);
-            mcap.addMessage(channel(contactSchema, contactTopic(frame.gripper)), logTime(frame.t),
-                            cdr.bytes());
+            mcap.addMessage(lazy(hand.contact, contactSchema, contactTopic(frame.gripper)),
+                            logTime(frame.t), cdr.bytes());
             for (const bool left : {true, false}) {
                 const Fingertip &tip = left ? frame.left : frame.right;
                 cdr.clear();
@@ -141,7 +161,8 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
                     cdr.float64(c);
                 for (int i = 0; i < 3; ++i)
                     cdr.float64(0.0); // no torque is measured
-                mcap.addMessage(channel(wrenchSchema, wrenchTopic(frame.gripper, left)),
+                mcap.addMessage(lazy(hand.wrench[left ? 0 : 1], wrenchSchema,
+                                     wrenchTopic(frame.gripper, left)),
                                 logTime(frame.t), cdr.bytes());
             }
             return mcap.error().isEmpty();
@@ -166,10 +187,10 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
                        cdr.clear();
                        header(cdr, stamp(f.t), session.deviceNames().value(f.device));
                        cdr.string(models.value(f.device).toUtf8());
-                       const QStringList names = session.channelNames(f.device);
+                       const std::vector<QByteArray> &names = channelNames[size_t(f.device)];
                        cdr.sequence(std::uint32_t(f.channelCount));
                        for (int c = 0; c < f.channelCount; ++c)
-                           cdr.string(names.value(c).toUtf8());
+                           cdr.string(size_t(c) < names.size() ? names[size_t(c)] : QByteArray());
                        cdr.sequence(std::uint32_t(f.channelCount));
                        for (int c = 0; c < f.channelCount; ++c)
                            cdr.float64(f.values[size_t(c)]);
@@ -189,8 +210,9 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
                        cdr.float64(h.target.quat[3]);
                        cdr.float64(h.target.quat[0]);
                        cdr.float64(h.grip);
-                       mcap.addMessage(channel(inputSchema, inputTopic(h.hand)), logTime(h.t),
-                                       cdr.bytes());
+                       mcap.addMessage(
+                           lazy(hands[size_t(h.hand)].input, inputSchema, inputTopic(h.hand)),
+                           logTime(h.t), cdr.bytes());
                        return mcap.error().isEmpty();
                    },
                    error);

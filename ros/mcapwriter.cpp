@@ -120,11 +120,17 @@ std::uint16_t McapWriter::addChannel(std::uint16_t schemaId, const QString &topi
 bool McapWriter::addMessage(std::uint16_t channel, std::uint64_t logTime, const QByteArray &data)
 {
     const auto sequence = std::uint32_t(m_channelCounts[channel]++);
-    Body body;
-    body.number(channel).number(sequence).number(logTime).number(logTime);
-    body.bytes += data;
     m_index[channel].emplace_back(logTime, std::uint64_t(m_chunk.size()));
-    m_chunk += recordBytes(0x05, body.bytes);
+    // Straight into the chunk: opcode, length, the fields, the data.
+    char head[1 + 8 + 2 + 4 + 8 + 8];
+    head[0] = 0x05;
+    qToLittleEndian(std::uint64_t(2 + 4 + 8 + 8 + data.size()), head + 1);
+    qToLittleEndian(channel, head + 9);
+    qToLittleEndian(sequence, head + 11);
+    qToLittleEndian(logTime, head + 15);
+    qToLittleEndian(logTime, head + 23);
+    m_chunk.append(head, sizeof head);
+    m_chunk.append(data);
     m_chunkStart = std::min(m_chunkStart, logTime);
     m_chunkEnd = std::max(m_chunkEnd, logTime);
     m_start = std::min(m_start, logTime);
@@ -161,6 +167,8 @@ bool McapWriter::flushChunk()
     index.length = m_offset - index.offset;
     const std::uint64_t indexesStart = m_offset;
     for (auto &[channel, entries] : m_index) {
+        if (entries.empty())
+            continue;
         Body records;
         for (const auto &[time, offset] : entries)
             records.number(time).number(offset);
@@ -172,8 +180,9 @@ bool McapWriter::flushChunk()
     }
     index.indexLength = m_offset - indexesStart;
     m_chunkIndexes.push_back(index);
-    m_chunk.clear();
-    m_index.clear();
+    m_chunk.resize(0); // its capacity serves the next chunk
+    for (auto &entry : m_index)
+        entry.second.clear();
     m_chunkStart = UINT64_MAX;
     m_chunkEnd = 0;
     return true;

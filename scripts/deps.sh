@@ -28,8 +28,9 @@ packages=(
     stress-ng
     # scripts/replicate.py (the paper's studies simulated) and scripts/make-scenes.py
     python3
-    # ROS 2 recordings: MCAP's chunk compressions and CRC-32
-    libzstd-dev liblz4-dev zlib1g-dev
+    # ROS 2 recordings: MCAP's chunk compressions and CRC-32; robots live over Foxglove's
+    # WebSocket protocol
+    libzstd-dev liblz4-dev zlib1g-dev qt6-websockets-dev
     # the desktop package: man pages, metadata checks, .deb dependencies
     help2man appstream desktop-file-utils dpkg-dev man-db bash-completion
 )

@@ -326,9 +326,19 @@ void TestSessionCli::errors_data()
         << "/nonexistent.db: cannot read: No such file or directory";
     QTest::newRow("export without format")
         << QStringList{"export", Trace} << 2
-        << "semhap export: --csv DIR or --jsonl DIR is required";
-    QTest::newRow("listen without port")
-        << QStringList{"listen"} << 2 << "semhap listen: --udp is required";
+        << "semhap export: --csv DIR, --jsonl DIR or --mcap FILE is required";
+    QTest::newRow("listen without a source")
+        << QStringList{"listen"} << 2
+        << "semhap listen: give one source: --udp PORT or --foxglove ws://HOST:PORT";
+    QTest::newRow("listen to two sources")
+        << QStringList{"listen", "--udp", "0", "--foxglove", "ws://robot:8765"} << 2
+        << "semhap listen: give one source: --udp PORT or --foxglove ws://HOST:PORT";
+    QTest::newRow("a robot without its map")
+        << QStringList{"listen", "--foxglove", "ws://robot:8765"} << 2
+        << "semhap listen: --foxglove needs the map of its topics: --topics MAP.json";
+    QTest::newRow("a robot that is not a WebSocket")
+        << QStringList{"listen", "--foxglove", "http://robot:8765", "--topics", "map.json"} << 2
+        << "semhap listen: --foxglove: expected ws://HOST:PORT, got 'http://robot:8765'";
     QTest::newRow("listen on a bad address")
         << QStringList{"listen", "--udp", "0", "--address", "localhostt"} << 1
         << "localhostt: not an IP address";
