@@ -320,6 +320,29 @@ bool Command::routerContextOption(const QCommandLineParser &parser, RouterContex
     return true;
 }
 
+std::unique_ptr<Router> Command::routerFromOptions(const QCommandLineParser &parser,
+                                                   const QString &fallback, RoutingChoice *choice,
+                                                   int *exit)
+{
+    choice->router =
+        parser.isSet(QStringLiteral("router")) ? parser.value(QStringLiteral("router")) : fallback;
+    choice->overrides = parser.values(QStringLiteral("set"));
+    if (!routerContextOption(parser, &choice->context)) {
+        *exit = ExitUsage;
+        return nullptr;
+    }
+    LoadError error;
+    std::unique_ptr<Router> router =
+        loadRouter(choice->router, choice->overrides, &error, choice->context);
+    if (!router) {
+        *exit = inputError(error.toString());
+        return nullptr;
+    }
+    reportWarnings(router->graph());
+    keepFromOutputs(choice->router, Kept::Input);
+    return router;
+}
+
 void Command::addPatternArguments(QCommandLineParser &parser)
 {
     parser.addPositionalArgument(QStringLiteral("pattern"),

@@ -25,6 +25,7 @@ struct PersonParameters;
 struct RunOptions;
 
 class Pipeline;
+class Router;
 class RouterGraph;
 class SessionReader;
 class SessionWriter;
@@ -120,6 +121,21 @@ protected:
      * when it is not a number of seconds within SessionInfo::MaxReactionTime.
      */
     bool routerContextOption(const QCommandLineParser &parser, RouterContext *context);
+    /** What the routing options chose: the router's name or file, its overrides, its context. */
+    struct RoutingChoice
+    {
+        QString router;
+        QStringList overrides;
+        RouterContext context;
+    };
+    /**
+     * The router the routing options name: --router (`fallback` when it is not given),
+     * --set and --reaction-time; its warnings reported, its file kept from the outputs.
+     * Null after the usage or input message, with the exit code in `exit`.
+     */
+    std::unique_ptr<Router> routerFromOptions(const QCommandLineParser &parser,
+                                              const QString &fallback, RoutingChoice *choice,
+                                              int *exit);
     /**
      * Reads --duration (more than 0, at most MaxDuration s), --cubes (a whole number >= 0;
      * absent: -1, the scene's own), --gripper and --horizon into `options`: what run and

@@ -49,27 +49,20 @@ int ImportCommand::execute(const QCommandLineParser &parser)
     const QString recordingPath = args[0];
     const QString topicsPath = parser.value(QStringLiteral("topics"));
     const QString sessionPath = parser.value(QStringLiteral("session"));
-    const QString routerName = parser.isSet(QStringLiteral("router"))
-                                   ? parser.value(QStringLiteral("router"))
-                                   : QStringLiteral("C3");
-    const QStringList overrides = parser.values(QStringLiteral("set"));
-    RouterContext context;
-    if (!routerContextOption(parser, &context))
-        return ExitUsage;
-    LoadError error;
-    std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error, context);
+    RoutingChoice choice;
+    int exit = ExitOk;
+    std::unique_ptr<Router> router =
+        routerFromOptions(parser, QStringLiteral("C3"), &choice, &exit);
     if (!router)
-        return inputError(error.toString());
-    reportWarnings(router->graph());
-    keepFromOutputs(routerName, Kept::Input);
+        return exit;
     keepFromOutputs(topicsPath, Kept::Input);
     keepFromOutputs(recordingPath, Kept::Input);
     keepFromOutputs(sessionPath, Kept::Session);
 
     SessionInfo info;
-    info.routerSource = routerName;
-    info.overrides = overrides;
-    info.routerContext = context;
+    info.routerSource = choice.router;
+    info.overrides = choice.overrides;
+    info.routerContext = choice.context;
     info.notes = parser.value(QStringLiteral("notes"));
     RecordingImport::Result result;
     if (!RecordingImport::run(

@@ -150,19 +150,12 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (!checkSingleStdout({eventsPath, framesPath}))
         return ExitUsage;
 
-    const QString routerName = parser.isSet(QStringLiteral("router"))
-                                   ? parser.value(QStringLiteral("router"))
-                                   : QStringLiteral("C3");
-    const QStringList overrides = parser.values(QStringLiteral("set"));
-    RouterContext context;
-    if (!routerContextOption(parser, &context))
-        return ExitUsage;
-    LoadError error;
-    std::unique_ptr<Router> router = loadRouter(routerName, overrides, &error, context);
+    RoutingChoice choice;
+    int exit = ExitOk;
+    std::unique_ptr<Router> router =
+        routerFromOptions(parser, QStringLiteral("C3"), &choice, &exit);
     if (!router)
-        return inputError(error.toString());
-    reportWarnings(router->graph());
-    keepFromOutputs(routerName, Kept::Input);
+        return exit;
     keepFromOutputs(parser.value(QStringLiteral("session")), Kept::Session);
     QIODevice *events = eventsPath.isEmpty() ? nullptr : openOutput(eventsPath);
     QIODevice *deviceFrames = framesPath.isEmpty() ? nullptr : openOutput(framesPath);
@@ -237,9 +230,9 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (parser.isSet(QStringLiteral("session"))) {
         SessionInfo info;
         info.source = QStringLiteral("listen");
-        info.routerSource = routerName;
-        info.overrides = overrides;
-        info.routerContext = context;
+        info.routerSource = choice.router;
+        info.overrides = choice.overrides;
+        info.routerContext = choice.context;
         info.addBindings(bindings);
         info.notes = parser.value(QStringLiteral("notes"));
         if (foxglove) {

@@ -61,17 +61,12 @@ int RouteCommand::execute(const QCommandLineParser &parser)
     if (!checkSingleStdout({eventsPath, framesOutPath}))
         return ExitUsage;
 
-    RouterContext context;
-    if (!routerContextOption(parser, &context))
-        return ExitUsage;
-    LoadError error;
-    std::unique_ptr<Router> router =
-        loadRouter(parser.value(QStringLiteral("router")), parser.values(QStringLiteral("set")),
-                   &error, context);
+    RoutingChoice choice;
+    int exit = ExitOk;
+    std::unique_ptr<Router> router = routerFromOptions(parser, QString(), &choice, &exit);
     if (!router)
-        return inputError(error.toString());
-    reportWarnings(router->graph());
-    keepFromOutputs(parser.value(QStringLiteral("router")), Kept::Input);
+        return exit;
+    LoadError error;
 
     const QString framesPath = parser.value(QStringLiteral("frames"));
     const QString topicsPath = parser.value(QStringLiteral("topics"));
