@@ -6,8 +6,6 @@
 #include "router.h"
 #include "routergraph.h"
 
-#include <climits>
-
 namespace semhap {
 
 QString ImportCommand::summary() const
@@ -71,10 +69,6 @@ int ImportCommand::execute(const QCommandLineParser &parser)
         return inputError(result.error);
     if (result.cancelled)
         report(tr("%1: interrupted; the session holds what was imported").arg(recordingPath));
-    if (result.skipped > 0)
-        report(tr("%1: %n message(s) without a header stamp skipped", nullptr,
-                  int(std::min<long long>(result.skipped, INT_MAX)))
-                   .arg(recordingPath));
     report(tr("%1: %2 frame(s) from %3 s (the recording's time) into %4")
                .arg(recordingPath)
                .arg(result.frames)

@@ -158,10 +158,6 @@ int RouteCommand::execute(const QCommandLineParser &parser)
 
     if (reader && reader->rejectedCount() > 0)
         report(tr("%1: %n line(s) rejected", nullptr, reader->rejectedCount()).arg(framesPath));
-    if (recordingReader && recordingReader->skippedCount() > 0)
-        report(tr("%1: %n message(s) without a header stamp skipped", nullptr,
-                  int(recordingReader->skippedCount()))
-                   .arg(framesPath));
     return ExitOk;
 }
 

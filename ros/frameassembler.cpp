@@ -97,11 +97,11 @@ bool FrameAssembler::isOptional(int i) const
     return true;
 }
 
-bool FrameAssembler::take(int i, double logTime, const double *values, bool stamped)
+void FrameAssembler::take(int i, double logTime, const double *values, bool stamped)
 {
-    const double t = m_map.time == TopicMap::Time::Header && stamped ? values[0] : logTime;
+    double t = m_map.time == TopicMap::Time::Header && stamped ? values[0] : logTime;
     if (!std::isfinite(t))
-        return false;
+        t = logTime;
     for (size_t g = 0; g < m_hands.size(); ++g) {
         Hand &hand = m_hands[g];
         const auto used = std::find(hand.topicsUsed.begin(), hand.topicsUsed.end(), i);
@@ -121,7 +121,6 @@ bool FrameAssembler::take(int i, double logTime, const double *values, bool stam
         }
         emitReady(g);
     }
-    return true;
 }
 
 const FrameAssembler::Sample *FrameAssembler::latest(const Hand &hand, int topic, double t) const

@@ -50,7 +50,6 @@ bool RecordingImport::run(const QString &recording, const QString &topics,
     }
     if (result->frames > 0)
         pipeline.flush(*writer);
-    result->skipped = reader.skippedCount();
     result->startTime = reader.startTime();
     if (!writer->finish(&result->error))
         return false;

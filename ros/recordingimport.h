@@ -24,7 +24,6 @@ public:
     struct Result
     {
         long long frames = 0;
-        long long skipped = 0;  ///< messages without a header stamp
         double startTime = 0.0; ///< the recording's time of the session's t = 0 (s)
         bool cancelled = false;
         QString error; ///< located, as the readers and the session writer give it

@@ -156,9 +156,8 @@ bool RecordingReader::next(ContactFrame *frame)
         if (!decode(*m_reader, message, &topic))
             return false;
         const double logTime = double(std::int64_t(message.logTime) - m_epoch * 1000000000) * 1e-9;
-        if (topic >= 0 &&
-            !m_assembler.take(topic, logTime, m_values.data(), !m_unstamped[size_t(topic)]))
-            ++m_skipped;
+        if (topic >= 0)
+            m_assembler.take(topic, logTime, m_values.data(), !m_unstamped[size_t(topic)]);
     }
     return true;
 }

@@ -39,8 +39,6 @@ public:
     double progress() const;
     /** The actors the frames name (the map's). */
     ActorTable &actors() { return m_actors; }
-    /** How many messages were skipped for lacking a time (a header stamp). */
-    long long skippedCount() const { return m_skipped; }
     /** The time of the frames' t = 0, in the recording's clock (s; Unix time for stamps). */
     double startTime() const { return double(m_epoch) + m_assembler.start(); }
 
@@ -66,7 +64,6 @@ private:
     std::vector<bool> m_unstamped; ///< per assembler topic: no header, timed by the log
     std::vector<double> m_values;
     QString m_error;
-    long long m_skipped = 0;
     /// The recording's first whole second: times are read from it, to keep nanoseconds.
     std::int64_t m_epoch = -1;
     /// From an export's `semhap` metadata: the Unix time (ns) of its t = 0, or -1.

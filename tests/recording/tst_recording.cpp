@@ -75,6 +75,7 @@ private slots:
     void usage();
     void importMakesASession();
     void importOfABadRecordingMakesNothing();
+    void jsonMessagesWithoutAHeader();
     void exportOpensInTheReferenceReader_data();
     void exportOpensInTheReferenceReader();
     void exportImportsBackToTheSameEvents();
@@ -254,6 +255,31 @@ void TestRecording::importOfABadRecordingMakesNothing()
     QFile kept(session);
     QVERIFY(kept.open(QIODevice::ReadOnly));
     QCOMPARE(kept.readAll(), QByteArray("precious"));
+}
+
+void TestRecording::jsonMessagesWithoutAHeader()
+{
+    // A JSON topic (the operator's notes, no header) read as a signal: each note is timed by
+    // its log time, and a frame carries the latest logged at or before its stamp.
+    QTemporaryDir dir;
+    const QJsonObject map = changed(graspMap(), {"grippers", "right", "signals", "note.i"},
+                                    QJsonObject{{"topic", "/operator/note"}, {"field", "i"}});
+    write(dir.filePath("map.json"), QJsonDocument(map).toJson());
+    const QString session = dir.filePath("notes.db");
+    const CliResult imported = semhapRun({"import", recording("grasp-zstd.mcap"), "--topics",
+                                          dir.filePath("map.json"), "--session", session});
+    QVERIFY2(imported.code == 0, imported.err.constData());
+    QCOMPARE(semhapRun({"export", session, "--jsonl", dir.filePath("j")}).code, 0);
+    const QList<QJsonObject> frames = readLines(dir.filePath("j/frames.jsonl"));
+    QCOMPARE(frames.size(), 1000);
+    // Notes are logged every 100 ticks; a frame's stamp is 3 ms (1.5 ticks) before its log.
+    for (int j = 0; j < frames.size(); ++j) {
+        const QJsonValue note = frames[j]["signals"].toObject().value("note.i");
+        if (j < 2)
+            QVERIFY2(note.isUndefined(), qPrintable(QString::number(j)));
+        else
+            QCOMPARE(note.toDouble(), double((j - 2) / 100 * 100));
+    }
 }
 
 void TestRecording::exportOpensInTheReferenceReader_data()
