@@ -137,24 +137,17 @@ void FoxgloveSource::onBinary(const QByteArray &bytes)
         auto decoder = std::make_unique<TopicDecoder>();
         decoder->setEpoch(m_epoch);
         const std::vector<TopicDecoder::Want> &wants = m_assembler->wants(channel.topic);
-        bool compiled = decoder->compile(channel.description, wants, &why);
-        if (!compiled && m_map.time == TopicMap::Time::Header &&
-            why.contains(QLatin1String("has no field 'header'"))) {
-            compiled =
-                decoder->compile(channel.description, {wants.begin() + 1, wants.end()}, &why);
-            channel.unstamped = compiled;
-        }
+        const bool compiled = decoder->compile(channel.description, wants, &why);
         if (!compiled) {
             m_fatal = QStringLiteral("%1: %2: %3").arg(m_mapPath, describe(), why);
             m_socket->close();
             return;
         }
-        m_values.resize(std::max(m_values.size(), size_t(decoder->valueCount()) + 1));
+        m_values.resize(std::max(m_values.size(), size_t(decoder->valueCount())));
         channel.decoder = std::move(decoder);
     }
-    double *values = m_values.data() + (channel.unstamped ? 1 : 0);
-    if (!channel.decoder->decode(bytes.constData() + 13, size_t(bytes.size() - 13), values,
-                                 &why)) {
+    if (!channel.decoder->decode(bytes.constData() + 13, size_t(bytes.size() - 13),
+                                 m_values.data(), &why)) {
         ++m_stats.rejected;
         report(QStringLiteral("%1: %2: %3").arg(describe(), channel.description.topic, why));
         return;
@@ -163,7 +156,7 @@ void FoxgloveSource::onBinary(const QByteArray &bytes)
     m_lastMessage = m_clock.elapsed();
     m_silent = false;
     const double logTime = double(std::int64_t(stamp) - m_epoch * 1000000000) * 1e-9;
-    m_assembler->take(channel.topic, logTime, m_values.data(), !channel.unstamped);
+    m_assembler->take(channel.topic, logTime, m_values.data());
 }
 
 int FoxgloveSource::poll(const FrameHandler &handler, int msecs)

@@ -77,7 +77,6 @@ private:
         int topic = -1; ///< the assembler's
         TopicDecoder::Description description;
         std::unique_ptr<TopicDecoder> decoder; ///< made at its first message
-        bool unstamped = false;
     };
 
     void connectNow();

@@ -60,7 +60,8 @@ FrameAssembler::Part FrameAssembler::want(int gripper, const QString &topic, con
         m_wants.emplace_back();
         m_pointers.emplace_back();
         if (m_map.time == TopicMap::Time::Header) {
-            m_wants.back().push_back({QStringLiteral("header.stamp"), 1});
+            // A type without a header (std_msgs/Int32) is timed by its log time.
+            m_wants.back().push_back({QStringLiteral("header.stamp"), 1, true});
             m_pointers.back() << QStringLiteral("/time");
         }
     }
@@ -97,9 +98,9 @@ bool FrameAssembler::isOptional(int i) const
     return true;
 }
 
-void FrameAssembler::take(int i, double logTime, const double *values, bool stamped)
+void FrameAssembler::take(int i, double logTime, const double *values)
 {
-    double t = m_map.time == TopicMap::Time::Header && stamped ? values[0] : logTime;
+    double t = m_map.time == TopicMap::Time::Header ? values[0] : logTime;
     if (!std::isfinite(t))
         t = logTime;
     for (size_t g = 0; g < m_hands.size(); ++g) {

@@ -47,11 +47,10 @@ public:
 
     /**
      * A message of topic `i`, logged (or arrived) at `logTime` seconds, with its wants'
-     * values. With the header's time, a message without a header stamp (a topic whose type
-     * has none: `stamped` false, values[0] not read; a JSON message lacking it) is timed by
-     * its log time.
+     * values. With the header's time, a message without a header stamp (NaN: a type without
+     * a header, a JSON message lacking it) is timed by its log time.
      */
-    void take(int i, double logTime, const double *values, bool stamped = true);
+    void take(int i, double logTime, const double *values);
     /**
      * The next frame made, in time order across the grippers (a gripper's frames wait for
      * the other's, at most MaxPending); false when none is ready.

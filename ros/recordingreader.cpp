@@ -66,7 +66,6 @@ bool RecordingReader::decode(const McapReader &reader, const McapMessage &messag
     const QStringList &topics = m_assembler.topics();
     m_decoders.resize(size_t(topics.size()));
     m_messageCount.resize(size_t(topics.size()), 0);
-    m_unstamped.resize(size_t(topics.size()), false);
     if (message.channelId >= m_topicOf.size())
         m_topicOf.resize(size_t(message.channelId) + 1, Unseen);
     if (m_epoch < 0)
@@ -90,18 +89,7 @@ bool RecordingReader::decode(const McapReader &reader, const McapMessage &messag
             auto decoder = std::make_unique<TopicDecoder>();
             decoder->setEpoch(m_epoch);
             QString why;
-            bool compiled = decoder->compile(d, wants, &why);
-            // A message without a header (a tactile count as std_msgs/Int32) keeps its log time.
-            const bool stamped = m_map.time == TopicMap::Time::Header;
-            m_unstamped[size_t(t)] = false;
-            if (!compiled && stamped && why.contains(QLatin1String("has no field 'header'"))) {
-                QString without;
-                const std::vector<TopicDecoder::Want> rest(wants.begin() + 1, wants.end());
-                compiled = decoder->compile(d, rest, &without);
-                m_unstamped[size_t(t)] = compiled;
-                if (!compiled)
-                    why = without;
-            }
+            const bool compiled = decoder->compile(d, wants, &why);
             if (!compiled) {
                 // Name the map's entry whose path the schema does not have.
                 QString pointer = m_assembler.topicPointer(t);
@@ -113,7 +101,7 @@ bool RecordingReader::decode(const McapReader &reader, const McapMessage &messag
                 return fail(
                     QStringLiteral("%1: %2: in %3: %4").arg(m_mapPath, pointer, m_path, why));
             }
-            m_values.resize(std::max(m_values.size(), size_t(decoder->valueCount()) + 1));
+            m_values.resize(std::max(m_values.size(), size_t(decoder->valueCount())));
             m_decoders[size_t(t)] = std::move(decoder);
         }
     }
@@ -122,9 +110,7 @@ bool RecordingReader::decode(const McapReader &reader, const McapMessage &messag
         return true;
     const long long n = ++m_messageCount[size_t(t)];
     QString why;
-    // An unstamped topic's values start after the stamp's place.
-    double *values = m_values.data() + (m_unstamped[size_t(t)] ? 1 : 0);
-    if (!m_decoders[size_t(t)]->decode(message.data, message.size, values, &why))
+    if (!m_decoders[size_t(t)]->decode(message.data, message.size, m_values.data(), &why))
         return fail(QStringLiteral("%1: %2 message %3: %4")
                         .arg(m_path, m_assembler.topics()[t])
                         .arg(n)
@@ -157,7 +143,7 @@ bool RecordingReader::next(ContactFrame *frame)
             return false;
         const double logTime = double(std::int64_t(message.logTime) - m_epoch * 1000000000) * 1e-9;
         if (topic >= 0)
-            m_assembler.take(topic, logTime, m_values.data(), !m_unstamped[size_t(topic)]);
+            m_assembler.take(topic, logTime, m_values.data());
     }
     return true;
 }

@@ -61,7 +61,6 @@ private:
     std::vector<int> m_topicOf; ///< per channel id: the assembler's topic, -1, or Unseen
     std::vector<std::unique_ptr<TopicDecoder>> m_decoders; ///< per assembler topic
     std::vector<long long> m_messageCount;                 ///< per assembler topic
-    std::vector<bool> m_unstamped; ///< per assembler topic: no header, timed by the log
     std::vector<double> m_values;
     QString m_error;
     /// The recording's first whole second: times are read from it, to keep nanoseconds.

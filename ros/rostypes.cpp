@@ -54,9 +54,9 @@ QByteArray RosTypes::schema(const QString &type)
     QByteArray out = own.trimmed();
     // Each type it uses, depth first, once.
     QStringList done{type};
-    QStringList todo = uses(type, own);
-    while (!todo.isEmpty()) {
-        const QString next = todo.takeFirst();
+    QStringList pending = uses(type, own);
+    while (!pending.isEmpty()) {
+        const QString next = pending.takeFirst();
         if (done.contains(next))
             continue;
         done << next;
@@ -64,7 +64,7 @@ QByteArray RosTypes::schema(const QString &type)
         out += "\n" + QByteArray(80, '=') +
                "\nMSG: " + next.section(QLatin1Char('/'), 0, 0).toUtf8() + '/' +
                next.section(QLatin1Char('/'), 2, 2).toUtf8() + '\n' + msg.trimmed();
-        todo = uses(next, msg) + todo;
+        pending = uses(next, msg) + pending;
     }
     return out + '\n';
 }

@@ -63,23 +63,31 @@ bool TopicDecoder::compile(const Description &d, const std::vector<Want> &wants,
         *error = QStringLiteral("%1: its schema, line %2").arg(what, why);
         return false;
     }
+    // An optional path the type lacks is left out; the rest must all be there.
     QStringList paths;
-    for (const Want &w : wants)
-        paths << w.path;
+    std::vector<int> compiled; // want i's index among the paths compiled, or -1
+    for (const Want &w : wants) {
+        CdrDecoder probe;
+        const bool absent = w.optional && !CdrDecoder::compile(schema, {w.path}, &probe, &why);
+        compiled.push_back(absent ? -1 : int(paths.size()));
+        if (!absent)
+            paths << w.path;
+    }
     if (!CdrDecoder::compile(schema, paths, &m_cdr, &why)) {
         *error = QStringLiteral("%1: %2").arg(what, why);
         return false;
     }
     m_cdrOffsets.clear();
-    for (int i = 0; i < int(wants.size()); ++i) {
-        if (m_cdr.width(i) != wants[size_t(i)].width) {
+    for (size_t i = 0; i < wants.size(); ++i) {
+        const int c = compiled[i];
+        if (c >= 0 && m_cdr.width(c) != wants[i].width) {
             *error = QStringLiteral("%1: '%2' gives %3 number(s), not the %4 wanted")
-                         .arg(what, wants[size_t(i)].path)
-                         .arg(m_cdr.width(i))
-                         .arg(wants[size_t(i)].width);
+                         .arg(what, wants[i].path)
+                         .arg(m_cdr.width(c))
+                         .arg(wants[i].width);
             return false;
         }
-        m_cdrOffsets.push_back(m_cdr.offset(i));
+        m_cdrOffsets.push_back(c >= 0 ? m_cdr.offset(c) : -1);
     }
     m_scratch.assign(size_t(m_cdr.valueCount()), 0.0);
     m_cdr.setEpoch(m_epoch);
@@ -100,7 +108,8 @@ bool TopicDecoder::decode(const char *data, std::size_t size, double *values, QS
         return false;
     for (size_t i = 0; i < m_wants.size(); ++i) {
         for (int k = 0; k < m_wants[i].width; ++k)
-            values[m_offsets[i] + k] = m_scratch[size_t(m_cdrOffsets[i] + k)];
+            values[m_offsets[i] + k] =
+                m_cdrOffsets[i] < 0 ? NaN : m_scratch[size_t(m_cdrOffsets[i] + k)];
     }
     return true;
 }

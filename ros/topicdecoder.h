@@ -25,6 +25,8 @@ public:
     {
         QString path;
         int width = 1;
+        /// A path the type may lack (a header stamp): it then reads as NaN, not an error.
+        bool optional = false;
     };
 
     /** The schema and encoding of a topic's messages. */
@@ -58,7 +60,7 @@ private:
     CdrDecoder m_cdr;
     std::vector<Want> m_wants;
     std::vector<int> m_offsets;
-    std::vector<int> m_cdrOffsets; ///< want i's first number among the CDR decoder's
+    std::vector<int> m_cdrOffsets; ///< want i's first number among the CDR decoder's; -1: absent
     std::vector<double> m_scratch;
     int m_valueCount = 0;
     std::int64_t m_epoch = 0;

@@ -6,6 +6,7 @@
 #include "jsonreader.h"
 #include "topicmap.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -39,8 +40,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (int i = 0; i < count; ++i)
             values[size_t(i)] = size > 0 ? double(data[size_t(k + i) % size]) - 100.0 : 0.0;
         const double t = k * 0.001 - ((k % 7 == 0) ? 0.01 : 0.0);
-        values[0] = t;
-        assembler.take(topic, t, values.data(), k % 5 != 0);
+        // Now and then a message without a stamp (NaN), timed by its log time instead.
+        values[0] = k % 5 == 0 ? std::nan("") : t;
+        assembler.take(topic, t, values.data());
         while (assembler.next(&frame))
             ++frames;
     }
