@@ -28,6 +28,15 @@ int startRobot(QProcess &robot, const QStringList &args)
     return QJsonDocument::fromJson(robot.readLine()).object().value("port").toInt();
 }
 
+/** `semhap listen --foxglove` on the robot at `port`, through the grasp's map. */
+CliResult follow(int port, const QStringList &more)
+{
+    return semhapRun(QStringList{"listen", "--foxglove",
+                                 QStringLiteral("ws://127.0.0.1:%1").arg(port), "--topics",
+                                 interop("grasp.topics.json")} +
+                     more);
+}
+
 } // namespace
 
 class TestFoxglove : public QObject
@@ -48,9 +57,7 @@ void TestFoxglove::followsARobotLive()
     QTemporaryDir dir;
     // A silence well above any stall of a loaded machine: the grasp is one stretch.
     const CliResult live =
-        semhapRun({"listen", "--foxglove", QStringLiteral("ws://127.0.0.1:%1").arg(port),
-                   "--topics", interop("grasp.topics.json"), "--events", dir.filePath("live"),
-                   "--silence", "1.5", "--duration", "6"});
+        follow(port, {"--events", dir.filePath("live"), "--silence", "1.5", "--duration", "6"});
     QVERIFY2(live.code == 0, live.err.constData());
     QVERIFY2(live.err.contains(": 1 connection(s), 2200 message(s), 1000 frame(s), 0 rejected"),
              live.err.constData());
@@ -71,9 +78,7 @@ void TestFoxglove::followsARobotThatRestarts()
     QVERIFY(port > 0);
     QTemporaryDir dir;
     const CliResult live =
-        semhapRun({"listen", "--foxglove", QStringLiteral("ws://127.0.0.1:%1").arg(port),
-                   "--topics", interop("grasp.topics.json"), "--events", dir.filePath("live"),
-                   "--silence", "1.5", "--duration", "12"});
+        follow(port, {"--events", dir.filePath("live"), "--silence", "1.5", "--duration", "12"});
     QVERIFY2(live.code == 0, live.err.constData());
     // Followed again after the restart; the quiet between stopped the bands.
     QVERIFY2(live.err.contains(": 2 connection(s), 4400 message(s), 2000 frame(s), 0 rejected"),
@@ -101,9 +106,7 @@ void TestFoxglove::aRobotWithoutTheMapsTopics()
     const int port = startRobot(robot, {"--topics", "/arm/wrist/wrench,/arm/joint_states"});
     QVERIFY(port > 0);
     QTemporaryDir dir;
-    const CliResult live =
-        semhapRun({"listen", "--foxglove", QStringLiteral("ws://127.0.0.1:%1").arg(port),
-                   "--topics", interop("grasp.topics.json"), "--duration", "20"});
+    const CliResult live = follow(port, {"--duration", "20"});
     QCOMPARE(live.code, 1);
     QVERIFY2(live.err.contains(QStringLiteral("ws://127.0.0.1:%1 advertises none of the map's "
                                               "topics (/right/left_tip/wrench, "
