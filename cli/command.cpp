@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "command.h"
 
+#include "foxgloveserver.h"
+
 #include "gripperlibrary.h"
 
 #include "inputfile.h"
@@ -14,6 +16,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHostAddress>
 
 #include <algorithm>
 #include <climits>
@@ -318,6 +321,55 @@ bool Command::routerContextOption(const QCommandLineParser &parser, RouterContex
     }
     context->reactionTime = seconds;
     return true;
+}
+
+void Command::addFoxgloveServerOption(QCommandLineParser &parser)
+{
+    parser.addOption({QStringLiteral("foxglove-server"),
+                      tr("Serve the streams live to Foxglove (its WebSocket protocol) on PORT, "
+                         "at 127.0.0.1 unless an ADDRESS is given; a run goes in real time."),
+                      tr("[ADDRESS:]PORT")});
+}
+
+std::unique_ptr<FoxgloveServer>
+Command::foxgloveServerFromOptions(const QCommandLineParser &parser, int *exit)
+{
+    const QString name = QStringLiteral("foxglove-server");
+    if (!parser.isSet(name))
+        return nullptr;
+    const QString value = parser.value(name);
+    // The port is after the last colon; an IPv6 address is in brackets.
+    const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
+    QString host = colon < 0 ? QStringLiteral("127.0.0.1") : value.left(colon);
+    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+        host = host.mid(1, host.size() - 2);
+    bool ok = false;
+    const uint port = value.mid(colon + 1).toUInt(&ok);
+    const QHostAddress address(host);
+    if (!ok || port > 65535 || address.isNull()) {
+        *exit = usageError(tr("--foxglove-server: expected [ADDRESS:]PORT, got '%1'").arg(value));
+        return nullptr;
+    }
+    auto server = std::make_unique<FoxgloveServer>(QStringLiteral("semhap"));
+    QString error;
+    if (!server->listen(address, quint16(port), &error)) {
+        *exit = inputError(tr("--foxglove-server %1: %2").arg(value, error));
+        return nullptr;
+    }
+    report(tr("serving Foxglove on %1").arg(server->url()));
+    return server;
+}
+
+void Command::finishFoxgloveServer(FoxgloveServer *server)
+{
+    if (!server)
+        return;
+    server->close();
+    const FoxgloveServer::Stats stats = server->stats();
+    report(tr("foxglove: %1 message(s) sent to %2 viewer(s), %3 dropped")
+               .arg(stats.sent)
+               .arg(stats.connections)
+               .arg(stats.dropped));
 }
 
 std::unique_ptr<Router> Command::routerFromOptions(const QCommandLineParser &parser,

@@ -21,6 +21,8 @@
 
 namespace semhap {
 
+class FoxgloveServer;
+
 struct PersonParameters;
 struct RunOptions;
 
@@ -151,6 +153,17 @@ protected:
     static void addSceneOptions(QCommandLineParser &parser);
     /** The longest simulated run (s): about eleven days. */
     static constexpr double MaxDuration = 1e6;
+    /** Declares --foxglove-server [ADDRESS:]PORT (run, listen). */
+    void addFoxgloveServerOption(QCommandLineParser &parser);
+    /**
+     * The Foxglove server --foxglove-server asks for, listening (on 127.0.0.1 when no
+     * address is given), its URL reported; null when the option is not set. Null after a
+     * usage or input message, with the exit code in `exit`.
+     */
+    std::unique_ptr<FoxgloveServer> foxgloveServerFromOptions(const QCommandLineParser &parser,
+                                                              int *exit);
+    /** Closes `server` (when there is one), its viewers served, and reports what it sent. */
+    void finishFoxgloveServer(FoxgloveServer *server);
     /** Declares --max-gap: how far a frame's `t` may jump (route, listen). */
     void addMaxGapOption(QCommandLineParser &parser);
     /** Reads --max-gap into `parser`'s rule; false after a usage message. */

@@ -5,6 +5,8 @@
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
+#include "foxglovepublisher.h"
+#include "foxgloveserver.h"
 #include "foxglovesource.h"
 #include "quitsignal.h"
 #include "sessionwriter.h"
@@ -12,6 +14,7 @@
 #include "streamsink.h"
 #include "udpframesource.h"
 
+#include <QDateTime>
 #include <QElapsedTimer>
 
 #include <functional>
@@ -92,6 +95,7 @@ void ListenCommand::configure(QCommandLineParser &parser)
     parser.addOption({QStringLiteral("router"), tr("Router preset or router file (default C3)."),
                       tr("PRESET|FILE")});
     addRoutingOptions(parser);
+    addFoxgloveServerOption(parser);
     parser.addOption({QStringLiteral("session"),
                       tr("Record into a new session database, with each frame's arrival time."),
                       tr("FILE")});
@@ -197,13 +201,13 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     std::function<QString()> fatal = [] { return QString(); };
     QString name;
     const ActorTable *actors = nullptr;
+    TopicMap robotMap;
     if (foxglove) {
-        TopicMap map;
         LoadError mapError;
         const QString mapPath = parser.value(QStringLiteral("topics"));
-        if (!TopicMap::load(mapPath, &map, &mapError))
+        if (!TopicMap::load(mapPath, &robotMap, &mapError))
             return inputError(mapError.toString());
-        robot = std::make_unique<FoxgloveSource>(url, map, mapPath);
+        robot = std::make_unique<FoxgloveSource>(url, robotMap, mapPath);
         robot->setSilence(silence);
         name = robot->describe();
         actors = &robot->actors();
@@ -249,6 +253,10 @@ int ListenCommand::execute(const QCommandLineParser &parser)
         session->setActorTable(actors);
     }
 
+    const std::unique_ptr<FoxgloveServer> server = foxgloveServerFromOptions(parser, &exit);
+    if (!server && exit != ExitOk)
+        return exit;
+
     // A signal lets the loop close the session and the outputs; bands stop at once.
     EmergencyStop::installGraceful();
     if (!devices.boundNames().isEmpty())
@@ -267,11 +275,29 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     Pipeline pipeline(std::move(router));
     StreamSink streams(pipeline.router(), events, deviceFrames);
     DeviceOutputSink output(pipeline.router().player(), devices);
-    SinkList sink{&output, &streams, session.get()};
+    std::unique_ptr<FoxglovePublisher> live;
+    if (server) {
+        live = std::make_unique<FoxglovePublisher>(*server, pipeline.router(), *actors, 0);
+        // A robot's grippers are its map's; a UDP sender's show with their first frame.
+        for (const Gripper g : {Gripper::Left, Gripper::Right}) {
+            if (robot && robotMap.grippers[size_t(g)].present)
+                live->advertise(g);
+        }
+    }
+    SinkList sink{&output, &streams, session.get(), live.get()};
     long long frames = 0;
     const auto process = [&](const ContactFrame &frame, double arrival) {
         if (session)
             session->recordContactFrame(frame, arrival);
+        if (live) {
+            // A robot's frames are on its own clock, so its viewer shows semhap's topics
+            // beside the robot's; a UDP sender's t is put on the wall clock at its first frame.
+            if (frames == 0)
+                live->setOrigin(robot ? robot->epoch() * 1000000000
+                                      : QDateTime::currentMSecsSinceEpoch() * 1000000 -
+                                            std::llround(frame.t * 1e9));
+            live->onContactFrame(frame);
+        }
         pipeline.process(frame, sink);
         ++frames;
     };
@@ -311,6 +337,7 @@ int ListenCommand::execute(const QCommandLineParser &parser)
     if (frames > 0)
         pipeline.flush(sink);
     devices.stopAll();
+    finishFoxgloveServer(server.get());
     reportDroppedEvents(pipeline);
     if (session && !finishSession(*session))
         return ExitInvalidInput;

@@ -5,6 +5,8 @@
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "emergencystop.h"
+#include "foxglovepublisher.h"
+#include "foxgloveserver.h"
 #include "jsonlineswriter.h"
 #include "operator.h"
 #include "quitsignal.h"
@@ -12,6 +14,7 @@
 #include "simrun.h"
 #include "sinklist.h"
 
+#include <QDateTime>
 #include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QThread>
@@ -23,13 +26,16 @@ namespace semhap {
 
 namespace {
 
-/** Writes the run's requested streams as JSON Lines, and records them into a session. */
+/**
+ * Writes the run's requested streams as JSON Lines, records them into a session and serves
+ * them to Foxglove.
+ */
 class StreamWriter : public RunSink
 {
 public:
     StreamWriter(const SimRun &run, QIODevice *frames, QIODevice *events, QIODevice *devices,
-                 SessionWriter *session)
-        : m_frames(frames), m_events(events), m_devices(devices), m_session(session),
+                 SessionWriter *session, FoxglovePublisher *live)
+        : m_frames(frames), m_events(events), m_devices(devices), m_session(session), m_live(live),
           m_frameWriter(frames), m_eventWriter(events), m_deviceWriter(devices)
     {
         const Router &router = const_cast<SimRun &>(run).pipeline().router();
@@ -46,6 +52,8 @@ public:
             m_session->recordContactFrame(frame, qQNaN());
         if (m_frames)
             m_frameWriter.write(frame);
+        if (m_live)
+            m_live->onContactFrame(frame);
     }
     void onEvent(const SemanticEvent &event) override
     {
@@ -53,6 +61,8 @@ public:
             m_session->onEvent(event);
         if (m_events)
             m_eventWriter.write(event);
+        if (m_live)
+            m_live->onEvent(event);
     }
     void onDeviceFrame(const DeviceFrame &frame) override
     {
@@ -60,6 +70,8 @@ public:
             m_session->onDeviceFrame(frame);
         if (m_devices)
             m_deviceWriter.write(frame);
+        if (m_live)
+            m_live->onDeviceFrame(frame);
     }
 
 private:
@@ -67,6 +79,7 @@ private:
     QIODevice *m_events;
     QIODevice *m_devices;
     SessionWriter *m_session;
+    FoxglovePublisher *m_live;
     JsonLinesWriter m_frameWriter;
     JsonLinesWriter m_eventWriter;
     JsonLinesWriter m_deviceWriter;
@@ -132,6 +145,7 @@ void RunCommand::configure(QCommandLineParser &parser)
                       tr("Send a device's output to a band, e.g. right.vibro=serial:/dev/ttyACM0 "
                          "(repeatable); implies --realtime."),
                       tr("NAME=URI")});
+    addFoxgloveServerOption(parser); // implies --realtime
     parser.addOption({QStringLiteral("session"),
                       tr("Record the run into a new session database (docs/sessions.md)."),
                       tr("FILE")});
@@ -206,7 +220,21 @@ int RunCommand::execute(const QCommandLineParser &parser)
             return inputError(message);
         session->setActorTable(&run->world().actors());
     }
-    StreamWriter writer(*run, devices[1], devices[2], devices[3], session.get());
+    int exit = ExitOk;
+    const std::unique_ptr<FoxgloveServer> server = foxgloveServerFromOptions(parser, &exit);
+    if (!server && exit != ExitOk)
+        return exit;
+    std::unique_ptr<FoxglovePublisher> live;
+    if (server) {
+        live = std::make_unique<FoxglovePublisher>(*server, run->pipeline().router(),
+                                                   run->world().actors(),
+                                                   QDateTime::currentMSecsSinceEpoch() * 1000000);
+        for (const Gripper g : {Gripper::Left, Gripper::Right}) {
+            if (run->world().hasGripper(g))
+                live->advertise(g);
+        }
+    }
+    StreamWriter writer(*run, devices[1], devices[2], devices[3], session.get(), live.get());
     const bool bound = !bands.boundNames().isEmpty();
     // A signal stops the bands at once and ends the run, which still closes the session and
     // hands the outputs over with what was simulated.
@@ -220,7 +248,8 @@ int RunCommand::execute(const QCommandLineParser &parser)
     QElapsedTimer wall;
     wall.start();
     qint64 lastDraw = -1000;
-    const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound;
+    // Bands and viewers are served as things happen.
+    const bool realtime = parser.isSet(QStringLiteral("realtime")) || bound || server;
     while (!QuitSignal::requested() && run->step(sink)) {
         if (const OutputFile *failed = failedOutput()) {
             bands.stopAll();
@@ -251,6 +280,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
     if (progress)
         m_io.err->write("\r\033[K");
     bands.stopAll();
+    finishFoxgloveServer(server.get());
     reportDroppedEvents(run->pipeline());
     if (QuitSignal::requested())
         report(tr("run: interrupted at t = %1 s; the session and the outputs hold what was "

@@ -68,6 +68,8 @@ public:
     QString fatalError() const { return m_fatal; }
     void setErrorHandler(ErrorHandler handler) { m_onError = std::move(handler); }
     const Stats &stats() const { return m_stats; }
+    /** Where frames' t count from: whole seconds since the epoch; -1 before a message. */
+    std::int64_t epoch() const { return m_epoch; }
     ActorTable &actors() { return m_actors; }
     QString describe() const { return m_url.toString(); }
 

@@ -14,15 +14,9 @@ class SessionReader;
 
 /**
  * A session as MCAP for the lab's viewers (Foxglove, PlotJuggler, Rerun, `ros2 bag info`):
- * every frame, none decimated, as ROS 2 messages in CDR with their `ros2msg` schemas. The
- * same mapping read the other way, topicMap(), imports an export again.
- *
- * | topic | type |
- * |---|---|
- * | `/semhap/GRIPPER/contact` | `semhap_msgs/msg/ContactFrame` |
- * | `/semhap/GRIPPER/TIP/wrench` | `geometry_msgs/msg/WrenchStamped` (the force in the gripper
- * frame) | | `/semhap/events` | `semhap_msgs/msg/SemanticEvent` | | `/semhap/devices/DEVICE` |
- * `semhap_msgs/msg/DeviceFrame` | | `/semhap/HAND/input` | `semhap_msgs/msg/HandCommand` |
+ * every frame, none decimated, on SemhapMessages' topics, as ROS 2 messages in CDR with
+ * their `ros2msg` schemas. The same mapping read the other way, topicMap(), imports an
+ * export again.
  *
  * Times are the session's start (its UTC clock) plus each row's t; the Metadata record
  * `semhap` keeps that start as `time_origin` (ns), so an import counts t from it again.
@@ -31,12 +25,6 @@ class SessionReader;
 class McapExport
 {
 public:
-    static QString contactTopic(Gripper gripper);
-    static QString wrenchTopic(Gripper gripper, bool leftTip);
-    static QString eventsTopic();
-    static QString deviceTopic(const QString &device);
-    static QString inputTopic(Gripper hand);
-
     /** Writes `session` to `out`; false with `error` (the session's or the device's). */
     static bool write(SessionReader &session, QIODevice *out, QString *error);
 

@@ -14,6 +14,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/build/tests/bench/bench_warnings"
 "$root/build/tests/bench/bench_inputs"
 "$root/build/tests/bench/bench_ros"
+"$root/build/tests/bench/bench_foxglove"
 "$root/build/tests/bench/bench_study"
 # The studio's plots draw in a virtual display, so the number is the same on any machine.
 xvfb-run -a -s '-screen 0 1920x1200x24' "$root/build/tests/bench/bench_plots"

@@ -4,11 +4,12 @@
 // client has subscribed to every fingertip topic, the grasp's messages published in CDR at
 // their own pace (500 Hz, 2 s), each stamped with its log time. Prints {"port": N} first.
 //
-//   node foxglove-robot.mjs [--restarts N] [--topics /a,/b]
+//   node foxglove-robot.mjs [--restarts N] [--topics /a,/b] [--hold]
 //
 // --restarts N: after each grasp the robot goes quiet for 3 s, then stops its server and
 // starts again on the same port, N times (each run plays the grasp once more);
-// --topics: advertise only these topics (a robot that has none of the map's).
+// --topics: advertise only these topics (a robot that has none of the map's); --hold: play
+// only once a line comes on standard input too (a test's viewers are ready).
 import foxglove from "@foxglove/ws-protocol";
 import { WebSocketServer } from "ws";
 import { grasp } from "./grasp.mjs";
@@ -21,6 +22,9 @@ const argument = (name, fallback) => {
 };
 const restarts = Number(argument("--restarts", 0));
 const only = argument("--topics", null)?.split(",");
+const held = process.argv.includes("--hold")
+  ? new Promise((resolve) => process.stdin.once("data", resolve))
+  : Promise.resolve();
 const { types, messages } = grasp();
 const topics = [...new Set(messages.filter((m) => m.type !== "json").map((m) => m.topic))];
 const advertised = only ?? topics;
@@ -63,6 +67,7 @@ console.log(JSON.stringify({ port: robot.port }));
 for (let run = 0; ; run++) {
   if (only) break; // nothing of the map's to play: stay up until the client gives up
   await robot.ready;
+  await held;
   const startedAt = Date.now();
   const first = messages[0].log;
   // Each run is 10 s later than the one before, in its log times and header stamps alike.
