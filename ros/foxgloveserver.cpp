@@ -405,6 +405,11 @@ int FoxgloveServer::addChannel(const QString &topic, const QString &schemaName,
                                const QByteArray &schema)
 {
     QMutexLocker lock(&m_shared->mutex);
+    for (size_t id = 0; id < m_shared->channels.size(); ++id) {
+        const Channel &c = m_shared->channels[id];
+        if (c.topic == topic && c.schemaName == schemaName)
+            return int(id);
+    }
     m_shared->channels.push_back({topic, schemaName, schema});
     return int(m_shared->channels.size() - 1);
 }

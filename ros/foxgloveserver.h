@@ -58,7 +58,8 @@ public:
 
     /**
      * A channel of `topic` with messages in CDR of the ROS 2 type `schemaName`
-     * (`ros2msg` text `schema`); its id. Clients connected now are told at once.
+     * (`ros2msg` text `schema`); its id. Clients connected now are told within 5 ms. The
+     * same topic and type again is the same channel.
      */
     int addChannel(const QString &topic, const QString &schemaName, const QByteArray &schema);
     /** Sends `payload` on `channel`, stamped `ns` (ns since the epoch). Any thread. */

@@ -1255,6 +1255,25 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
             <numerusform>%1 importiert: %n Frames nach %2</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Foxglove: %n viewer(s)</source>
+        <translation>
+            <numerusform>Foxglove: %n Betrachter</numerusform>
+            <numerusform>Foxglove: %n Betrachter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
+        <translation>Veröffentlicht unter %1: %2 Nachricht(en) gesendet, %3 für langsame Betrachter verworfen</translation>
+    </message>
+    <message>
+        <source>Publishing to Foxglove at %1</source>
+        <translation>Veröffentlicht für Foxglove unter %1</translation>
+    </message>
+    <message>
+        <source>Cannot publish to Foxglove on port %1: %2</source>
+        <translation>Veröffentlichen für Foxglove auf Port %1 nicht möglich: %2</translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>
@@ -2477,8 +2496,16 @@ In %2; in Exporten: %3</translation>
         <translation>Handgelenk-Geschwindigkeit:</translation>
     </message>
     <message>
-        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on.</source>
-        <translation>Eine neue Sprache baut das Fenster dort neu auf, wo es ist, mit seiner Anordnung; der Lauf, eine Aufzeichnung, die Geräte und Ihre Änderungen gehen weiter. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner.</translation>
+        <source>Publish to Foxglove on port</source>
+        <translation>Für Foxglove veröffentlichen auf Port</translation>
+    </message>
+    <message>
+        <source>Viewers:</source>
+        <translation>Betrachter:</translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on. Foxglove on this computer watches the run live at ws://localhost:PORT (Open connection → Foxglove WebSocket).</source>
+        <translation>Eine neue Sprache baut das Fenster dort neu auf, wo es ist, mit seiner Anordnung; der Lauf, eine Aufzeichnung, die Geräte und Ihre Änderungen gehen weiter. Aufzeichnungen gehen ab der nächsten in den Sitzungsordner. Foxglove auf diesem Rechner verfolgt den Lauf live unter ws://localhost:PORT (Open connection → Foxglove WebSocket).</translation>
     </message>
 </context>
 <context>

@@ -1251,6 +1251,25 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
             <numerusform></numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Foxglove: %n viewer(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Publishing to Foxglove at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot publish to Foxglove on port %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>
@@ -2471,7 +2490,15 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on.</source>
+        <source>Publish to Foxglove on port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Viewers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new language rebuilds the window where it is, with its layout; the run, a recording, the devices and your edits go on. Recordings go to the sessions folder from the next one on. Foxglove on this computer watches the run live at ws://localhost:PORT (Open connection → Foxglove WebSocket).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

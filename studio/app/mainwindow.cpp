@@ -208,6 +208,7 @@ MainWindow::MainWindow(Workspace &workspace, const StudioOptions &options, QWidg
             openRun(defaults);
     }
     applyTeleopSettings();
+    applyPublishing();
     connect(m_gamepad, &GamepadInput::triggered, this, [this](GamepadMapping::Action action) {
         if (action == GamepadMapping::HandBack)
             m_driveAction->setChecked(false);
@@ -782,6 +783,7 @@ void MainWindow::createStatusBar()
     m_devicesLabel = label(QStringLiteral("devicesLabel"));
     m_timeLabel = label(QStringLiteral("timeLabel"));
     m_rateLabel = label(QStringLiteral("rateLabel"));
+    m_foxgloveLabel = label(QStringLiteral("foxgloveLabel"));
     m_statusTimer.setInterval(250);
     connect(&m_statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
     m_statusTimer.start();
@@ -1298,6 +1300,16 @@ void MainWindow::updateStatus()
                                    .arg(QFileInfo(m_engine.recordingPath()).fileName())
                                    .arg(m_engine.recordingDropped()));
     m_timeLabel->setText(tr("t = %1 s").arg(locale.toString(m_engine.simTime(), 'f', 2)));
+    m_foxgloveLabel->setVisible(m_engine.isPublishing());
+    if (m_engine.isPublishing()) {
+        const FoxgloveServer::Stats served = m_engine.publishingStats();
+        m_foxgloveLabel->setText(tr("Foxglove: %n viewer(s)", nullptr, served.clients));
+        m_foxgloveLabel->setToolTip(
+            tr("Published at %1: %2 message(s) sent, %3 dropped for slow viewers")
+                .arg(m_engine.publishingUrl())
+                .arg(served.sent)
+                .arg(served.dropped));
+    }
     m_rateLabel->setToolTip(QString()); // a live rig's says why its datagrams were refused
     if (m_engine.isReplaying()) {
         m_operatorLabel->setText(tr("Replay: nobody drives"));
@@ -1399,8 +1411,28 @@ void MainWindow::showPreferences()
     if (dialog.exec() != QDialog::Accepted)
         return;
     applyTeleopSettings();
+    applyPublishing();
     if (dialog.languageChanged())
         emit languageChangeRequested(dialog.language());
+}
+
+void MainWindow::applyPublishing()
+{
+    if (!PreferencesDialog::publishesToFoxglove()) {
+        m_engine.stopPublishing();
+        return;
+    }
+    // Only this computer's viewers: a door to the network is the command line's to open.
+    const auto port = quint16(PreferencesDialog::foxglovePort());
+    const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(port);
+    if (m_engine.publishingUrl() == url)
+        return; // a window rebuilt for a language keeps its viewers
+    QString error;
+    if (m_engine.startPublishing(QHostAddress::LocalHost, port, &error))
+        statusBar()->showMessage(tr("Publishing to Foxglove at %1").arg(url), 10000);
+    else
+        statusBar()->showMessage(
+            tr("Cannot publish to Foxglove on port %1: %2").arg(port).arg(error), 15000);
 }
 
 void MainWindow::applyDefaultSizes()

@@ -151,6 +151,8 @@ private:
     void showPreferences();
     /** Applies the saved driving settings: speed, the gamepad and the 3D mouse. */
     void applyTeleopSettings();
+    /** Serves the run to Foxglove, or stops, as the preferences say; a server kept as is. */
+    void applyPublishing();
     void toggleRunning();
     void toggleRecording();
     void rerouteReplay();
@@ -208,6 +210,7 @@ private:
     QLabel *m_recordLabel = nullptr;
     QLabel *m_timeLabel = nullptr;
     QLabel *m_rateLabel = nullptr;
+    QLabel *m_foxgloveLabel = nullptr;
     QLabel *m_operatorLabel = nullptr;
     QLabel *m_devicesLabel = nullptr;
     QTimer m_statusTimer;

@@ -17,6 +17,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTabWidget>
 
@@ -25,6 +26,8 @@ namespace semhap {
 namespace {
 const QString LanguageKey = QStringLiteral("interface/language");
 const QString SessionsFolderKey = QStringLiteral("sessions/folder");
+const QString FoxgloveKey = QStringLiteral("foxglove/publish");
+const QString FoxglovePortKey = QStringLiteral("foxglove/port");
 } // namespace
 
 PreferencesDialog::PreferencesDialog(QWidget *parent) : QDialog(parent)
@@ -74,12 +77,30 @@ QWidget *PreferencesDialog::createGeneralPage()
     folderRow->addWidget(m_sessionsFolder);
     folderRow->addWidget(browse);
 
+    // Off by default: a server is a door into the computer, opened only when asked.
+    m_foxglove = new QCheckBox(tr("Publish to Foxglove on port"), page);
+    m_foxglove->setObjectName(QStringLiteral("publishToFoxglove"));
+    m_foxglove->setChecked(publishesToFoxglove());
+    m_foxglovePort = new QSpinBox(page);
+    m_foxglovePort->setObjectName(QStringLiteral("foxglovePort"));
+    m_foxglovePort->setRange(1, 65535);
+    m_foxglovePort->setValue(foxglovePort());
+    m_foxglovePort->setEnabled(m_foxglove->isChecked());
+    connect(m_foxglove, &QCheckBox::toggled, m_foxglovePort, &QWidget::setEnabled);
+    auto *foxgloveRow = new QHBoxLayout;
+    foxgloveRow->addWidget(m_foxglove);
+    foxgloveRow->addWidget(m_foxglovePort);
+    foxgloveRow->addStretch();
+
     auto *form = new QFormLayout;
     form->addRow(tr("Interface language:"), m_language);
     form->addRow(tr("Sessions folder:"), folderRow);
+    form->addRow(tr("Viewers:"), foxgloveRow);
     auto *note = new QLabel(tr("A new language rebuilds the window where it is, with its "
                                "layout; the run, a recording, the devices and your edits go "
-                               "on. Recordings go to the sessions folder from the next one on."),
+                               "on. Recordings go to the sessions folder from the next one on. "
+                               "Foxglove on this computer watches the run live at "
+                               "ws://localhost:PORT (Open connection → Foxglove WebSocket)."),
                             page);
     note->setWordWrap(true);
     auto *layout = new QVBoxLayout(page);
@@ -286,6 +307,17 @@ QString PreferencesDialog::sessionsFolder()
     return saved.isEmpty() ? defaultSessionsFolder() : saved;
 }
 
+bool PreferencesDialog::publishesToFoxglove()
+{
+    return QSettings().value(FoxgloveKey, false).toBool();
+}
+
+int PreferencesDialog::foxglovePort()
+{
+    const int port = QSettings().value(FoxglovePortKey, DefaultFoxglovePort).toInt();
+    return port >= 1 && port <= 65535 ? port : DefaultFoxglovePort;
+}
+
 QString PreferencesDialog::defaultSessionsFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
@@ -297,6 +329,8 @@ void PreferencesDialog::save()
     teleopSettings().save();
     QSettings settings;
     settings.setValue(LanguageKey, language());
+    settings.setValue(FoxgloveKey, m_foxglove->isChecked());
+    settings.setValue(FoxglovePortKey, m_foxglovePort->value());
     // Left empty or at the default, it follows the default (a moved data folder too).
     const QString folder = QDir::fromNativeSeparators(m_sessionsFolder->text().trimmed());
     if (folder.isEmpty() || folder == defaultSessionsFolder())

@@ -11,6 +11,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLineEdit;
+class QSpinBox;
 
 namespace semhap {
 
@@ -50,6 +51,12 @@ public:
     static QString sessionsFolder();
     /** The folder recordings go to when the user has not chosen one. */
     static QString defaultSessionsFolder();
+    /** Foxglove's own default port, which its connection dialog offers. */
+    static constexpr int DefaultFoxglovePort = 8765;
+    /** Whether the run is served to Foxglove (saved; off until the user turns it on). */
+    static bool publishesToFoxglove();
+    /** The port it is served on (saved, else DefaultFoxglovePort). */
+    static int foxglovePort();
 
 private:
     QWidget *createGeneralPage();
@@ -59,6 +66,8 @@ private:
 
     QComboBox *m_language = nullptr;
     QLineEdit *m_sessionsFolder = nullptr;
+    QCheckBox *m_foxglove = nullptr;
+    QSpinBox *m_foxglovePort = nullptr;
     QDoubleSpinBox *m_speed = nullptr;
     QCheckBox *m_gamepad = nullptr;
     QDoubleSpinBox *m_gamepadDeadZone = nullptr;

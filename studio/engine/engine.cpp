@@ -4,6 +4,7 @@
 #include "devicemanager.h"
 #include "deviceoutputsink.h"
 #include "deviceuri.h"
+#include "foxglovepublisher.h"
 #include "sessionwriter.h"
 
 #include <QCoreApplication>
@@ -47,6 +48,8 @@ void Engine::takeFrame(const ContactFrame &frame, double arrival)
 {
     if (m_recorder)
         m_recorder->recordContactFrame(frame, arrival);
+    if (m_publisher)
+        m_publisher->onContactFrame(frame);
     m_feed.push(frame);
 }
 
@@ -69,7 +72,57 @@ void Engine::rewire()
 {
     // The recording first: it keeps what the router asked for; then the bands, whose sent
     // frames are the readouts' device frames (m_sentFeed); then the feed, for the rest.
-    m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed};
+    m_publisher.reset();
+    Pipeline *running = m_source ? m_source->pipeline() : nullptr;
+    if (m_foxglove && running) {
+        // Stamped on the wall clock: the run's t now is now.
+        const std::int64_t origin =
+            QDateTime::currentMSecsSinceEpoch() * 1000000 - std::llround(m_simTime.load() * 1e9);
+        m_publisher = std::make_unique<FoxglovePublisher>(
+            *m_foxglove, running->router(),
+            m_simulation ? m_simulation->run().world().actors() : m_rig->actors(), origin);
+        const Hands hands = m_source->hands();
+        for (const Gripper g : {Gripper::Left, Gripper::Right}) {
+            if (hands[size_t(g)])
+                m_publisher->advertise(g);
+        }
+    }
+    m_outputs = SinkList{m_recorder.get(), m_output.get(), &m_feed, m_publisher.get()};
+}
+
+bool Engine::startPublishing(const QHostAddress &address, quint16 port, QString *error)
+{
+    auto server = std::make_unique<FoxgloveServer>(QStringLiteral("semhap studio"));
+    if (!server->listen(address, port, error))
+        return false;
+    std::unique_ptr<FoxgloveServer> old;
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        old = std::move(m_foxglove);
+        m_foxglove = std::move(server);
+        rewire();
+    }
+    return true; // `old` closes here, off the pipeline's lock
+}
+
+void Engine::stopPublishing()
+{
+    std::unique_ptr<FoxgloveServer> old;
+    {
+        std::lock_guard<std::mutex> lock(m_setupMutex);
+        old = std::move(m_foxglove);
+        rewire();
+    }
+}
+
+QString Engine::publishingUrl() const
+{
+    return m_foxglove ? m_foxglove->url() : QString();
+}
+
+FoxgloveServer::Stats Engine::publishingStats() const
+{
+    return m_foxglove ? m_foxglove->stats() : FoxgloveServer::Stats();
 }
 
 Engine::Engine(QObject *parent) : QObject(parent), m_devices(std::make_unique<DeviceManager>())

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "foxgloveserver.h"
 #include "liverig.h"
 #include "runfeed.h"
 #include "runhistory.h"
@@ -23,6 +24,7 @@ namespace semhap {
 
 class DeviceManager;
 class DeviceOutputSink;
+class FoxglovePublisher;
 class SessionWriter;
 
 /**
@@ -231,6 +233,21 @@ public:
      */
     QString newRecordingPath(const QString &folder, const QString &name = QString()) const;
 
+    /**
+     * Serves the running session to Foxglove (File → Preferences, Publish to Foxglove): a
+     * FoxgloveServer on `address`:`port` (0: any free one) publishes every contact frame,
+     * event and band frame of the simulation or live rig as it runs, on the topics of an
+     * MCAP export (docs/ros.md). Replaced when called again. False with a one-line `error`.
+     */
+    bool startPublishing(const QHostAddress &address, quint16 port, QString *error);
+    /** Closes the Foxglove server, its viewers served what waited for them. */
+    void stopPublishing();
+    bool isPublishing() const { return m_foxglove != nullptr; }
+    /** ws://ADDRESS:PORT of the Foxglove server; empty when not publishing. */
+    QString publishingUrl() const;
+    /** The Foxglove server's counts (zero when not publishing). */
+    FoxgloveServer::Stats publishingStats() const;
+
 signals:
     /** The source is about to be replaced or freed: let go of its world and scene feed. */
     void sourceAboutToChange();
@@ -285,7 +302,10 @@ private:
     void silenceDevices(PipelineSink &sink);
     /** The running router's device names, by index: what the SentFeed reads. */
     QStringList deviceNames();
-    /** Rebuilds m_outputs after the recorder or the device output changed (setup lock held). */
+    /**
+     * Rebuilds m_outputs, and the publisher for the router that runs, after the recorder,
+     * the device output, the router or the publishing changed (setup lock held).
+     */
     void rewire();
     void stepOnce();
     /**
@@ -314,7 +334,10 @@ private:
     SentFeed m_sentFeed; ///< GUI thread; rebound under m_setupMutex with every binding
     /** Written on the pipeline thread under m_setupMutex; swapped on the GUI thread. */
     std::unique_ptr<SessionWriter> m_recorder;
-    /** Where the pipeline's output goes: the recorder, the bands, the feed (rewire()). */
+    /** Serving Foxglove: the server, and the publisher of the streaming source (rewire()). */
+    std::unique_ptr<FoxgloveServer> m_foxglove;
+    std::unique_ptr<FoxglovePublisher> m_publisher;
+    /** Where the pipeline's output goes: the recorder, the bands, the feed, the publisher. */
     SinkList m_outputs;
     double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};

@@ -9,6 +9,7 @@
 #include "cdrwriter.h"
 #include "clirun.h"
 #include "foxgloveserver.h"
+#include "foxgloveviewer.h"
 #include "jsonlines.h"
 
 #include <QJsonArray>
@@ -52,24 +53,6 @@ int freePort()
 {
     QTcpServer probe;
     return probe.listen(QHostAddress::LocalHost, 0) ? probe.serverPort() : 0;
-}
-
-/** The reference viewer, started on `url`: it waits for the server to come. */
-void startViewer(QProcess &viewer, const QString &url, const QStringList &more = {})
-{
-    viewer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    viewer.start(QStringLiteral(SEMHAP_NODE),
-                 QStringList{QStringLiteral(SEMHAP_INTEROP_TOOLS "/foxglove-viewer.mjs"), url} +
-                     more);
-}
-
-/** What the viewer printed when its server closed. */
-QJsonObject viewed(QProcess &viewer)
-{
-    if (!viewer.waitForFinished(30000))
-        return {};
-    const QList<QByteArray> lines = viewer.readAllStandardOutput().trimmed().split('\n');
-    return QJsonDocument::fromJson(lines.last()).object();
 }
 
 /** How many messages a viewer got, over all topics. */
@@ -257,10 +240,7 @@ void TestFoxglove::aViewerWatchesTheRobotFollowed()
     QVERIFY2(served.hasMatch(), err.constData());
     QProcess viewer;
     startViewer(viewer, served.captured(1));
-    QByteArray subscribed;
-    while (!subscribed.contains("subscribed /semhap/right/contact\n") &&
-           viewer.waitForReadyRead(30000))
-        subscribed += viewer.readAllStandardOutput();
+    const QByteArray subscribed = waitForViewer(viewer, "subscribed /semhap/right/contact");
     QVERIFY2(subscribed.contains("subscribed /semhap/right/contact"), subscribed.constData());
     robot.write("go\n");
     QVERIFY(robot.waitForBytesWritten(10000));
@@ -308,9 +288,7 @@ void TestFoxglove::aStalledViewerLosesItsOldestMessages()
         server.publish(channel, std::uint64_t(i), cdr.bytes());
     };
     publish(0);
-    QByteArray said;
-    while (!said.contains("stalled\n") && viewer.waitForReadyRead(30000))
-        said += viewer.readAllStandardOutput();
+    const QByteArray said = waitForViewer(viewer, "stalled");
     QVERIFY2(said.contains("stalled\n"), said.constData());
     const int count = 4000;
     for (int i = 1; i <= count; ++i)

@@ -13,6 +13,7 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "fifocard.h"
+#include "foxgloveviewer.h"
 #include "gamepadinput.h"
 #include "handdrive.h"
 #include "imagechecks.h"
@@ -35,6 +36,7 @@
 #include "workspace.h"
 #include "world.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -54,6 +56,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -184,6 +187,7 @@ private slots:
     void handingBackNeverStrikes_data();
     void handingBackNeverStrikes();
     void drivingPreferencesApply();
+    void publishesToFoxglove();
     void aKeyInTheViewportTakesOver();
     void drivingOverlayLeavesTheHandInSight_data();
     void drivingOverlayLeavesTheHandInSight();
@@ -1106,6 +1110,78 @@ void TestStudio::drivingPreferencesApply()
     QCOMPARE(again.findChild<GamepadInput *>()->mapping().motions[GamepadMapping::Turn],
              QString("leftshoulder+rightshoulder"));
     TeleopSettings().save(); // the defaults again for the other tests
+}
+
+namespace {
+
+/** Turns Preferences → General → Publish to Foxglove on (on `port`) or off, as a person does. */
+void setPublishing(MainWindow &window, bool on, int port = 0)
+{
+    QTimer::singleShot(0, &window, [on, port] {
+        QTRY_VERIFY(QApplication::activeModalWidget());
+        auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        auto *publish = dialog->findChild<QCheckBox *>("publishToFoxglove");
+        if (publish->isChecked() != on)
+            QTest::mouseClick(publish, Qt::LeftButton, {}, QPoint(8, publish->height() / 2));
+        QCOMPARE(publish->isChecked(), on);
+        if (on) {
+            auto *spin = dialog->findChild<QSpinBox *>("foxglovePort");
+            QVERIFY(spin->isEnabled());
+            spin->setFocus();
+            spin->selectAll();
+            QTest::keyClicks(spin, QString::number(port));
+        }
+        const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+        if (!folder.isEmpty())
+            dialog->grab().save(folder + "/preferences-foxglove.png");
+        QTest::keyClick(dialog, Qt::Key_Return);
+    });
+    window.findChild<QAction *>("preferencesAction")->trigger();
+}
+
+} // namespace
+
+void TestStudio::publishesToFoxglove()
+{
+    // Off until turned on; then Foxglove's client watches the run, every message decoded.
+    Workspace workspace;
+    MainWindow window(workspace, options());
+    QVERIFY(openWindow(window));
+    QVERIFY(!window.engine().isPublishing());
+    auto *label = window.findChild<QLabel *>("foxgloveLabel");
+    QVERIFY(!label->isVisible());
+    QTcpServer probe;
+    QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
+    const int port = probe.serverPort();
+    probe.close();
+    setPublishing(window, true, port);
+    const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(port);
+    QCOMPARE(window.engine().publishingUrl(), url);
+    QTRY_VERIFY(label->isVisible());
+    QProcess viewer;
+    startViewer(viewer, url);
+    const QByteArray said = waitForViewer(viewer, "subscribed /semhap/right/contact");
+    QVERIFY2(said.contains("subscribed /semhap/right/contact"), said.constData());
+    QTRY_COMPARE(label->text(), QString("Foxglove: 1 viewer(s)"));
+    QVERIFY(window.engine().isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(window.engine().publishingStats().sent > 2000, 30000);
+    QVERIFY2(label->toolTip().startsWith("Published at " + url), qPrintable(label->toolTip()));
+    savePicture(&window, "foxglove-status");
+
+    // Turned off: the viewer is served what waited for it, and told goodbye.
+    setPublishing(window, false);
+    QVERIFY(!window.engine().isPublishing());
+    QTRY_VERIFY(!label->isVisible());
+    const QJsonObject view = viewed(viewer);
+    QCOMPARE(view["serverInfo"].toString(), QString("semhap studio"));
+    QCOMPARE(view["undecoded"].toInt(), 0);
+    const QJsonObject topics = view["topics"].toObject();
+    QVERIFY2(topics["/semhap/right/contact"].toObject()["count"].toInt() > 100,
+             QJsonDocument(view).toJson().constData());
+    QCOMPARE(topics["/semhap/right/left/wrench"].toObject()["type"].toString(),
+             QString("geometry_msgs/msg/WrenchStamped"));
+    QVERIFY(topics.contains("/semhap/devices/right.vibro"));
 }
 
 void TestStudio::aKeyInTheViewportTakesOver()

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStringList>
+
+/**
+ * The reference Foxglove viewer (tests/interop/foxglove-viewer.mjs, @foxglove/ws-protocol's
+ * FoxgloveClient), started on `url`: it waits for the server to come, subscribes to every
+ * channel ("subscribed TOPIC" lines) and decodes every message. Needs SEMHAP_NODE and
+ * SEMHAP_INTEROP_TOOLS.
+ */
+inline void startViewer(QProcess &viewer, const QString &url, const QStringList &more = {})
+{
+    viewer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    viewer.start(QStringLiteral(SEMHAP_NODE),
+                 QStringList{QStringLiteral(SEMHAP_INTEROP_TOOLS "/foxglove-viewer.mjs"), url} +
+                     more);
+}
+
+/** Reads the viewer's output until it has said `line` (or 30 s passed); all it said. */
+inline QByteArray waitForViewer(QProcess &viewer, const QByteArray &line)
+{
+    QByteArray said;
+    while (!said.contains(QByteArray(line + '\n')) && viewer.waitForReadyRead(30000))
+        said += viewer.readAllStandardOutput();
+    return said;
+}
+
+/** What the viewer printed when its server closed: topics with counts, first and last. */
+inline QJsonObject viewed(QProcess &viewer)
+{
+    // waitForFinished() is false for a process that has finished already.
+    if (viewer.state() != QProcess::NotRunning && !viewer.waitForFinished(30000))
+        return {};
+    const QList<QByteArray> lines = viewer.readAllStandardOutput().trimmed().split('\n');
+    return QJsonDocument::fromJson(lines.last()).object();
+}
