@@ -70,7 +70,7 @@ public:
     const Stats &stats() const { return m_stats; }
     /** Where frames' t count from: whole seconds since the epoch; -1 before a message. */
     std::int64_t epoch() const { return m_epoch; }
-    ActorTable &actors() { return m_actors; }
+    const ActorTable &actors() const { return m_actors; }
     QString describe() const { return m_url.toString(); }
 
 private:

@@ -644,6 +644,42 @@
         <source>&lt;p&gt;Send contact frames (one JSON object per datagram, or an array of them) to this port; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s.&lt;/p&gt;&lt;p&gt;To try it: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Senden Sie Kontaktframes (ein JSON-Objekt pro Datagramm oder ein Array davon) an diesen Port; sie laufen wie die der Simulation durch die Detektoren, den Router &lt;b&gt;%1&lt;/b&gt; und die Geräte.&lt;/p&gt;&lt;p&gt;Zum Ausprobieren: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>Contact frames over UDP</source>
+        <translation>Kontaktframes per UDP</translation>
+    </message>
+    <message>
+        <source>A robot&apos;s Foxglove server</source>
+        <translation>Der Foxglove-Server eines Roboters</translation>
+    </message>
+    <message>
+        <source>the semhap.topics/1 map of its topics</source>
+        <translation>die semhap.topics/1-Zuordnung seiner Topics</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Topic map</source>
+        <translation>Topic-Zuordnung</translation>
+    </message>
+    <message>
+        <source>Topic maps (*.json);;All files (*)</source>
+        <translation>Topic-Zuordnungen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Server:</source>
+        <translation>Server:</translation>
+    </message>
+    <message>
+        <source>Topic map:</source>
+        <translation>Topic-Zuordnung:</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The robot&apos;s topics become contact frames through the topic map, as a recording&apos;s do; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s. When the robot restarts, the studio connects again.&lt;/p&gt;&lt;p&gt;On the robot: &lt;code&gt;ros2 launch foxglove_bridge foxglove_bridge_launch.xml&lt;/code&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Die Topics des Roboters werden über die Topic-Zuordnung zu Kontaktframes, wie die einer Aufzeichnung; sie laufen wie die der Simulation durch die Detektoren, den Router &lt;b&gt;%1&lt;/b&gt; und die Geräte. Startet der Roboter neu, verbindet sich das Studio wieder.&lt;/p&gt;&lt;p&gt;Auf dem Roboter: &lt;code&gt;ros2 launch foxglove_bridge foxglove_bridge_launch.xml&lt;/code&gt;&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MainWindow</name>
@@ -995,10 +1031,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>The task to simulate, or a live rig&apos;s frames</source>
         <translation>Die zu simulierende Aufgabe oder die Frames eines Live-Rigs</translation>
     </message>
-    <message>
-        <source>Live rig (UDP)…</source>
-        <translation>Live-Rig (UDP)…</translation>
-    </message>
     <message numerus="yes">
         <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
         <translation>
@@ -1273,6 +1305,10 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Cannot publish to Foxglove on port %1: %2</source>
         <translation>Veröffentlichen für Foxglove auf Port %1 nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>Live rig…</source>
+        <translation>Live-Rig…</translation>
     </message>
 </context>
 <context>

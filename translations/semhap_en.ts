@@ -644,6 +644,42 @@
         <source>&lt;p&gt;Send contact frames (one JSON object per datagram, or an array of them) to this port; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s.&lt;/p&gt;&lt;p&gt;To try it: &lt;code&gt;scripts/send-frames.py resources/traces/demo.jsonl --port %2&lt;/code&gt;&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Contact frames over UDP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A robot&apos;s Foxglove server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the semhap.topics/1 map of its topics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topic map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topic maps (*.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Server:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topic map:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The robot&apos;s topics become contact frames through the topic map, as a recording&apos;s do; they run through the detectors, the router &lt;b&gt;%1&lt;/b&gt; and the devices like the simulation&apos;s. When the robot restarts, the studio connects again.&lt;/p&gt;&lt;p&gt;On the robot: &lt;code&gt;ros2 launch foxglove_bridge foxglove_bridge_launch.xml&lt;/code&gt;&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MainWindow</name>
@@ -994,10 +1030,6 @@ The rig draws its own scene.</source>
         <source>The task to simulate, or a live rig&apos;s frames</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Live rig (UDP)…</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
         <translation type="unfinished">
@@ -1268,6 +1300,10 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Cannot publish to Foxglove on port %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

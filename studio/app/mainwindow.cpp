@@ -505,7 +505,7 @@ void MainWindow::createToolBar()
     m_scenePicker->setToolTip(tr("The task to simulate, or a live rig's frames"));
     for (const QString &name : World::builtinScenes())
         m_scenePicker->addItem(name, name);
-    m_scenePicker->addItem(tr("Live rig (UDP)…"), LiveRigEntry);
+    m_scenePicker->addItem(tr("Live rig…"), LiveRigEntry);
     connect(m_scenePicker, &QComboBox::activated, this, &MainWindow::pickScene);
     bar->addWidget(m_scenePicker);
     // Beside the scene, as its icon: a field naming the choice has no room at 1280 px in

@@ -114,12 +114,15 @@ QJsonObject Workspace::toJson() const
     const RunSource *run = engine.streamingSource();
     if (run && run->kind() == RunSource::Kind::Rig) {
         const LiveRigOptions rig = engine.liveOptions();
-        json.insert(
-            QStringLiteral("live_rig"),
-            QJsonObject{{QStringLiteral("address"), rig.address},
-                        {QStringLiteral("port"), rig.port},
-                        {QStringLiteral("router"), rig.router},
-                        {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}});
+        QJsonObject live{{QStringLiteral("address"), rig.address},
+                         {QStringLiteral("port"), rig.port},
+                         {QStringLiteral("router"), rig.router},
+                         {QStringLiteral("overrides"), QJsonArray::fromStringList(rig.overrides)}};
+        if (!rig.foxglove.isEmpty()) {
+            live.insert(QStringLiteral("foxglove"), rig.foxglove.toString());
+            live.insert(QStringLiteral("topics"), rig.topics);
+        }
+        json.insert(QStringLiteral("live_rig"), live);
     } else if (run) {
         json.insert(QStringLiteral("simulation"), engine.options().toJson());
     }
@@ -221,16 +224,21 @@ void Workspace::restoreRun(const QJsonObject &json, const QString &path,
         const QString at = QStringLiteral("/live_rig");
         LiveRigOptions live = options.liveRig;
         double port = live.port;
+        QString robot;
         if (!reader.checkKeys(rig, at,
                               {QLatin1String("address"), QLatin1String("port"),
-                               QLatin1String("router"), QLatin1String("overrides")}) ||
+                               QLatin1String("router"), QLatin1String("overrides"),
+                               QLatin1String("foxglove"), QLatin1String("topics")}) ||
             !reader.string(rig, at, QLatin1String("address"), &live.address) ||
             !reader.number(rig, at, QLatin1String("port"), &port) ||
             !reader.string(rig, at, QLatin1String("router"), &live.router) ||
-            !reader.strings(rig, at, QLatin1String("overrides"), &live.overrides, false)) {
+            !reader.strings(rig, at, QLatin1String("overrides"), &live.overrides, false) ||
+            !reader.string(rig, at, QLatin1String("foxglove"), &robot, false) ||
+            !reader.string(rig, at, QLatin1String("topics"), &live.topics, !robot.isEmpty())) {
             problems->append(reader.error().toString());
             return;
         }
+        live.foxglove = QUrl(robot);
         if (port < 0 || port > 65535 || port != std::floor(port)) {
             problems->append(LoadError::at(path, at + QStringLiteral("/port"),
                                            QStringLiteral("expected a port from 0 to 65535"))

@@ -257,7 +257,9 @@ bool Engine::startLive(const LiveRigOptions &options, QString *error)
         return false;
     }
     // A rig on the same port (a reset) has to let go of it before the new one can open it.
-    const bool samePort = m_rig && options.port != 0 && options.port == m_rig->stats().port &&
+    const bool samePort = m_rig && options.foxglove.isEmpty() &&
+                          m_rig->options().foxglove.isEmpty() && options.port != 0 &&
+                          options.port == m_rig->stats().port &&
                           options.address == m_rig->options().address;
     if (samePort) {
         emit sourceAboutToChange();
@@ -738,7 +740,7 @@ void Engine::listenLoop()
         m_rig->poll(process, !m_running.load());
         // The rig behind a replay keeps its silence for later: an audition or the replay
         // owns the devices until the replay closes.
-        if (!m_runKept.load() && m_rig->endIfSilent(m_sink)) {
+        if (!m_runKept.load() && m_rig->endIfSilent(m_sink, process, !m_running.load())) {
             silenceDevices(m_outputs);
             m_devices->stopAll();
         }
@@ -822,7 +824,12 @@ bool Engine::startRecording(const QString &path, const QString &notes, QString *
         info.routerSource = m_options.router;
         info.overrides = m_options.overrides;
         info.routerContext.reactionTime = m_options.reactionTime;
-        info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
+        if (m_rig->options().foxglove.isEmpty()) {
+            info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
+        } else {
+            info.extra.insert(QStringLiteral("foxglove"), liveUri());
+            info.extra.insert(QStringLiteral("topics"), m_rig->options().topics);
+        }
     } else {
         info = m_simulation->run().sessionInfo();
         // Applied from the editor: the graph itself is in the session, its name is not.

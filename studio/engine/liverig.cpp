@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "liverig.h"
 
+#include "foxglovesource.h"
 #include "nametable.h"
+#include "topicmap.h"
 #include "udpframesource.h"
+
+#include <QEventLoop>
 
 #include <algorithm>
 
@@ -26,84 +30,157 @@ void LiveRig::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
     m_pipeline->setRouter(std::move(router), sink);
 }
 
+void LiveRig::reject(const QString &message)
+{
+    std::lock_guard<std::mutex> lock(m_statsMutex);
+    m_lastRejection = message;
+    ++m_rejections;
+}
+
 bool LiveRig::open(QString *error)
 {
+    if (!m_options.foxglove.isEmpty()) {
+        const QUrl &url = m_options.foxglove;
+        if (!url.isValid() || url.host().isEmpty() ||
+            (url.scheme() != QLatin1String("ws") && url.scheme() != QLatin1String("wss"))) {
+            *error = QStringLiteral("expected a robot's server as ws://HOST:PORT, got '%1'")
+                         .arg(url.toString());
+            return false;
+        }
+        TopicMap map;
+        LoadError mapError;
+        if (!TopicMap::load(m_options.topics, &map, &mapError)) {
+            *error = mapError.toString();
+            return false;
+        }
+        // The pipeline thread is not a QThread: an event loop made here gives it the event
+        // dispatcher the robot's socket registers with.
+        {
+            QEventLoop dispatcher;
+        }
+        m_robot = std::make_unique<FoxgloveSource>(m_options.foxglove, map, m_options.topics);
+        m_robot->setSilence(m_options.silence);
+        m_robot->setErrorHandler([this](const QString &message) { reject(message); });
+        m_robot->start();
+        m_fatalTold = false;
+        startCounting(m_options.foxglove.port());
+        return true;
+    }
     auto source = std::make_unique<UdpFrameSource>();
     if (!source->bind(m_options.address, m_options.port, error))
         return false;
     source->setSilence(m_options.silence);
-    source->setErrorHandler([this](const QString &message) {
-        std::lock_guard<std::mutex> lock(m_statsMutex);
-        m_lastRejection = message;
-        ++m_rejections;
-    });
+    source->setErrorHandler([this](const QString &message) { reject(message); });
     m_source = std::move(source);
+    startCounting(m_source->port());
+    return true;
+}
+
+void LiveRig::startCounting(int port)
+{
     m_clock.start();
     m_windowStart = 0.0;
     m_windowFrames = 0;
     m_held = 0;
     std::lock_guard<std::mutex> lock(m_statsMutex);
     m_stats = Stats();
-    m_stats.port = m_source->port();
+    m_stats.port = port;
     for (auto &seen : m_seenSignals)
         seen.clear();
-    return true;
 }
 
 bool LiveRig::wait(int msecs)
 {
+    if (m_robot) {
+        m_robot->poll([this](const ContactFrame &frame,
+                             double arrival) { m_taken.emplace_back(frame, arrival); },
+                      msecs);
+        // A robot with none of the map's topics is told once; the rig stays, as a silent one.
+        if (!m_robot->fatalError().isEmpty() && !m_fatalTold) {
+            m_fatalTold = true;
+            reject(m_robot->fatalError());
+        }
+        return !m_taken.empty();
+    }
     return m_source && m_source->waitForDatagrams(msecs);
+}
+
+void LiveRig::take(const ContactFrame &frame, double arrival, const FrameHandler &process,
+                   bool hold)
+{
+    const double delay = arrival - frame.t;
+    if (m_windowFrames == 0) {
+        m_delayMin = delay;
+        m_delayMax = delay;
+    } else {
+        m_delayMin = std::min(m_delayMin, delay);
+        m_delayMax = std::max(m_delayMax, delay);
+    }
+    ++m_windowFrames;
+    noteSignals(frame);
+    if (hold)
+        ++m_held;
+    else
+        process(frame, arrival);
 }
 
 void LiveRig::poll(const FrameHandler &process, bool hold)
 {
-    if (!m_source)
+    if (m_robot) {
+        for (const auto &[frame, arrival] : m_taken)
+            take(frame, arrival, process, hold);
+        m_taken.clear();
+    } else if (m_source) {
+        m_source->poll([&](const ContactFrame &frame, double arrival) {
+            take(frame, arrival, process, hold);
+        });
+    } else {
         return;
-    m_source->poll([&](const ContactFrame &frame, double arrival) {
-        const double delay = arrival - frame.t;
-        if (m_windowFrames == 0) {
-            m_delayMin = delay;
-            m_delayMax = delay;
-        } else {
-            m_delayMin = std::min(m_delayMin, delay);
-            m_delayMax = std::max(m_delayMax, delay);
-        }
-        ++m_windowFrames;
-        noteSignals(frame);
-        if (hold)
-            ++m_held;
-        else
-            process(frame, arrival);
-    });
+    }
     publish(double(m_clock.nsecsElapsed()) * 1e-9);
 }
 
-bool LiveRig::endIfSilent(PipelineSink &sink)
+bool LiveRig::endIfSilent(PipelineSink &sink, const FrameHandler &process, bool hold)
 {
-    if (!m_source || !m_source->fellSilent())
+    const bool silent = m_robot ? m_robot->fellSilent() : m_source && m_source->fellSilent();
+    if (!silent)
         return false;
+    if (m_robot) {
+        m_robot->poll([&](const ContactFrame &frame,
+                          double arrival) { take(frame, arrival, process, hold); },
+                      0);
+    }
     m_pipeline->endAll(sink);
     return true;
 }
 
 const ActorTable &LiveRig::actors() const
 {
-    return m_source->actors();
+    return m_robot ? m_robot->actors() : m_source->actors();
 }
 
 void LiveRig::close()
 {
     m_source.reset();
+    m_robot.reset();
+    m_taken.clear();
 }
 
 void LiveRig::publish(double now)
 {
-    const UdpFrameSource::Stats &source = m_source->stats();
     std::lock_guard<std::mutex> lock(m_statsMutex);
-    m_stats.datagrams = source.datagrams;
-    m_stats.frames = source.frames;
-    m_stats.rejected = source.rejected;
-    m_stats.oversize = source.oversize;
+    if (m_robot) {
+        const FoxgloveSource::Stats &robot = m_robot->stats();
+        m_stats.datagrams = quint64(robot.messages + robot.rejected);
+        m_stats.frames = quint64(robot.frames);
+        m_stats.rejected = quint64(robot.rejected);
+    } else {
+        const UdpFrameSource::Stats &source = m_source->stats();
+        m_stats.datagrams = source.datagrams;
+        m_stats.frames = source.frames;
+        m_stats.rejected = source.rejected;
+        m_stats.oversize = source.oversize;
+    }
     m_stats.held = m_held;
     // The window closes on the clock, not on frames, so a silent rig shows 0 frames/s.
     if (now - m_windowStart >= Window) {
@@ -151,6 +228,8 @@ QStringList LiveRig::signalNames(Gripper gripper) const
 
 QString LiveRig::uri() const
 {
+    if (!m_options.foxglove.isEmpty())
+        return m_options.foxglove.toString();
     return QStringLiteral("udp:%1:%2").arg(m_options.address).arg(stats().port);
 }
 

@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QString>
 #include <QStringList>
+#include <QUrl>
 
 #include <array>
 #include <atomic>
@@ -20,11 +21,19 @@
 namespace semhap {
 
 class ActorTable;
+class FoxgloveSource;
 class UdpFrameSource;
 
 /** Where the studio listens for a live rig and what it routes the rig's frames with. */
 struct LiveRigOptions
 {
+    /**
+     * A robot's Foxglove WebSocket server to follow (ws://HOST:PORT, as foxglove_bridge
+     * serves it) through the topic map `topics`; empty: contact frames over UDP on
+     * `address`:`port`.
+     */
+    QUrl foxglove;
+    QString topics;
     /** Localhost unless the user opens it to the network (`0.0.0.0`). */
     QString address = QStringLiteral("127.0.0.1");
     /** 9870 is the pose input's: the rig gets the next port. 0: any free port. */
@@ -36,9 +45,10 @@ struct LiveRigOptions
 };
 
 /**
- * The studio's live-rig source: contact frames another program sends over UDP, run through
- * a pipeline the way the simulation's frames are. The socket is opened, read and closed on
- * the engine's pipeline thread; the counters can be read from any thread.
+ * The studio's live-rig source: contact frames another program sends over UDP, or a robot's
+ * topics followed over the Foxglove WebSocket protocol through a topic map (FoxgloveSource),
+ * run through a pipeline the way the simulation's frames are. The socket is opened, read
+ * and closed on the engine's pipeline thread; the counters can be read from any thread.
  *
  * The sender's `t` drives the detectors. Link delay is the arrival time (steady clock since
  * the socket opened) minus `t`; its offset is arbitrary, but its spread over a second is the
@@ -50,7 +60,7 @@ public:
     /** What the rig has seen since it started listening. */
     struct Stats
     {
-        quint64 datagrams = 0; ///< received, good or bad
+        quint64 datagrams = 0; ///< received, good or bad (a robot's: its messages)
         quint64 frames = 0;    ///< valid frames
         quint64 rejected = 0;  ///< malformed datagrams and invalid frames
         quint64 oversize = 0;  ///< datagrams over the size limit, not parsed
@@ -74,9 +84,12 @@ public:
     void setRouter(std::unique_ptr<Router> router, PipelineSink &sink);
 
     // Pipeline thread.
-    /** Opens the socket; false with a one-line `error`. */
+    /** Opens the socket (or loads the topic map and connects); false with a one-line `error`. */
     bool open(QString *error);
-    /** Blocks until a datagram is pending or `msecs` passed; true when one is pending. */
+    /**
+     * Blocks until a datagram is pending or `msecs` passed; true when one is pending. A
+     * robot's messages are taken meanwhile, and its frames wait for poll().
+     */
     bool wait(int msecs);
     /**
      * Reads a batch of pending datagrams and hands each valid frame to `process`, or, when
@@ -86,9 +99,10 @@ public:
     /**
      * When the sender has been silent for UdpFrameSource's silence (once per silence), ends
      * every active message, its End events to `sink`, and returns true: the caller stops
-     * the bands.
+     * the bands. A robot's frames that waited for the silent topics are made and handed to
+     * `process` (as poll() does, `hold` included) before.
      */
-    bool endIfSilent(PipelineSink &sink);
+    bool endIfSilent(PipelineSink &sink, const FrameHandler &process, bool hold);
     /** The actors the frames named (sessions record their names). */
     const ActorTable &actors() const;
     void close();
@@ -97,7 +111,7 @@ public:
     Stats stats() const;
     /** The latest rejection (`udp:PORT: reason`) and how many there were so far. */
     QString lastRejection(quint64 *count = nullptr) const;
-    /** The address the user reaches the rig on, `udp:ADDRESS:PORT`. */
+    /** The address the user reaches the rig on, `udp:ADDRESS:PORT`, or the robot's URL. */
     QString uri() const;
     /**
      * The named signals the gripper's valid frames carried since the rig started listening,
@@ -107,12 +121,21 @@ public:
 
 private:
     void publish(double now);
+    /** Counters, windows and signals from zero, on `port` (the UDP port, or the robot's). */
+    void startCounting(int port);
+    /** Counts a frame into the rate and jitter, and processes it, or holds it. */
+    void take(const ContactFrame &frame, double arrival, const FrameHandler &process, bool hold);
+    void reject(const QString &message);
     /** Notes the signals of a valid frame that no earlier frame of its gripper carried. */
     void noteSignals(const ContactFrame &frame);
 
     LiveRigOptions m_options;
     std::unique_ptr<Pipeline> m_pipeline;
     std::unique_ptr<UdpFrameSource> m_source;
+    std::unique_ptr<FoxgloveSource> m_robot;
+    /** The robot's frames taken in wait(), for poll(). */
+    std::vector<std::pair<ContactFrame, double>> m_taken;
+    bool m_fatalTold = false;
 
     // Pipeline thread: the rate and jitter windows.
     QElapsedTimer m_clock;

@@ -8,8 +8,8 @@
 // viewer that stalls loses its own oldest messages and is told so.
 #include "cdrwriter.h"
 #include "clirun.h"
+#include "foxglovepeers.h"
 #include "foxgloveserver.h"
-#include "foxgloveviewer.h"
 #include "jsonlines.h"
 
 #include <QJsonArray>
@@ -26,17 +26,6 @@ namespace {
 QString interop(const QString &name)
 {
     return QStringLiteral(SEMHAP_INTEROP_DIR "/") + name;
-}
-
-/** The reference robot, started; its port, or 0. */
-int startRobot(QProcess &robot, const QStringList &args)
-{
-    robot.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    robot.start(QStringLiteral(SEMHAP_NODE),
-                QStringList{QStringLiteral(SEMHAP_INTEROP_TOOLS "/foxglove-robot.mjs")} + args);
-    if (!robot.waitForReadyRead(30000))
-        return 0;
-    return QJsonDocument::fromJson(robot.readLine()).object().value("port").toInt();
 }
 
 /** `semhap listen --foxglove` on the robot at `port`, through the grasp's map. */

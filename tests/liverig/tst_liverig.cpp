@@ -2,16 +2,20 @@
 // The studio's live-rig source: another program's contact frames over UDP (loopback only)
 // run through detectors, router and devices like the simulation's, with the history fed,
 // malformed datagrams counted and never fatal, a flood that does not stall the GUI, and
-// recordings that keep each frame's arrival time.
+// recordings that keep each frame's arrival time; and a robot followed over the Foxglove
+// WebSocket protocol (the reference server, tests/interop/foxglove-robot.mjs) through a
+// topic map.
 #include "contactframereader.h"
 #include "devicemanager.h"
 #include "engine.h"
+#include "foxglovepeers.h"
 #include "routergraph.h"
 #include "sessionreader.h"
 #include "virtualtransport.h"
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -26,6 +30,8 @@ class TestLiveRig : public QObject
 
 private slots:
     void initTestCase();
+    void followsARobot();
+    void aRobotNeedsItsTopicMap();
     void framesRunLikeRoute();
     void malformedDatagramsAreCounted_data();
     void malformedDatagramsAreCounted();
@@ -115,6 +121,20 @@ template<typename T> qint64 count(const RunSeries<T> &series)
     return series.end() - series.begin();
 }
 
+/** The history's events as `route`'s reference has them: "t node phase". */
+QStringList eventLines(const RunHistory &history)
+{
+    QStringList events;
+    for (qint64 i = history.events().begin(); i < history.events().end(); ++i) {
+        const SemanticEvent &event = history.events().at(i);
+        events << QStringLiteral("%1 %2 %3")
+                      .arg(event.t)
+                      .arg(history.nodeName(event.node))
+                      .arg(int(event.phase));
+    }
+    return events;
+}
+
 bool waitForFrames(Engine &engine, quint64 frames)
 {
     // `frames` counts every valid frame received, the held ones too.
@@ -128,11 +148,11 @@ struct Reference
     std::vector<double> deviceMax; ///< by device: the largest value sent
 };
 
-Reference route(const QString &router, int frames)
+Reference route(const QString &router, int frames, const QString &path = Trace)
 {
-    QFile file(Trace);
+    QFile file(path);
     file.open(QIODevice::ReadOnly);
-    ContactFrameReader reader(&file, Trace);
+    ContactFrameReader reader(&file, path);
     LoadError error;
     Pipeline pipeline(loadRouter(router, {}, &error));
     struct Collect : PipelineSink
@@ -197,14 +217,7 @@ void TestLiveRig::framesRunLikeRoute()
     QVERIFY(qAbs(engine.simTime() - 4.995) < 1e-9);
 
     const Reference reference = route("C3", int(lines.size()));
-    QStringList events;
-    for (qint64 i = history.events().begin(); i < history.events().end(); ++i) {
-        const SemanticEvent &event = history.events().at(i);
-        events << QStringLiteral("%1 %2 %3")
-                      .arg(event.t)
-                      .arg(history.nodeName(event.node))
-                      .arg(int(event.phase));
-    }
+    const QStringList events = eventLines(history);
     QVERIFY(events.size() > 5);
     QCOMPARE(events, reference.events);
     bool anyOutput = false;
@@ -219,6 +232,60 @@ void TestLiveRig::framesRunLikeRoute()
         anyOutput = anyOutput || max > 0.0;
     }
     QVERIFY(anyOutput);
+}
+
+void TestLiveRig::followsARobot()
+{
+    // The robot plays its grasp (2 s at 500 Hz) once the rig has subscribed and runs.
+    QProcess robot;
+    const int port = startRobot(robot, {"--hold"});
+    QVERIFY(port > 0);
+    Engine engine;
+    // The last frames wait for the silence that tells the grasp is over.
+    LiveRigOptions options = anyPort("C3", 1.5);
+    options.foxglove = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port));
+    options.topics = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json");
+    QString error;
+    QVERIFY2(engine.listen(options, &error), qPrintable(error));
+    QCOMPARE(engine.liveUri(), options.foxglove.toString());
+    engine.run();
+    robot.write("go\n");
+    QVERIFY(robot.waitForBytesWritten(10000));
+    quint64 rejections = 0;
+    QVERIFY2(QTest::qWaitFor([&] { return engine.liveStats().frames >= 1000; }, 30000),
+             qPrintable(QStringLiteral("%1 message(s), %2 frame(s); %3")
+                            .arg(engine.liveStats().datagrams)
+                            .arg(engine.liveStats().frames)
+                            .arg(engine.liveRejection(&rejections))));
+    QTest::qWait(50); // one drain of the feed
+    QCOMPARE(engine.liveStats().frames, quint64(1000));
+    QCOMPARE(engine.liveStats().rejected, quint64(0));
+
+    // The events `semhap route` makes of the same grasp as JSON Lines.
+    const RunHistory &history = engine.history();
+    const QStringList events = eventLines(history);
+    const Reference reference =
+        route("C3", 1000, QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.frames.jsonl"));
+    QVERIFY(events.size() > 5);
+    QCOMPARE(events, reference.events);
+    robot.waitForFinished(10000);
+}
+
+void TestLiveRig::aRobotNeedsItsTopicMap()
+{
+    // A map that does not load, or a server that is not a WebSocket URL, keeps the run.
+    Engine engine;
+    LiveRigOptions options = anyPort();
+    options.foxglove = QUrl("ws://127.0.0.1:9");
+    options.topics = QStringLiteral(SEMHAP_INTEROP_DIR "/no-such.topics.json");
+    QString error;
+    QVERIFY(!engine.listen(options, &error));
+    QVERIFY2(error.contains("no-such.topics.json"), qPrintable(error));
+    QVERIFY(!engine.isLive());
+    options.foxglove = QUrl("http://127.0.0.1:9");
+    options.topics = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json");
+    QVERIFY(!engine.listen(options, &error));
+    QVERIFY2(error.contains("expected a robot's server as ws://HOST:PORT"), qPrintable(error));
 }
 
 void TestLiveRig::malformedDatagramsAreCounted_data()

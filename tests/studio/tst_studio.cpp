@@ -13,7 +13,7 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "fifocard.h"
-#include "foxgloveviewer.h"
+#include "foxglovepeers.h"
 #include "gamepadinput.h"
 #include "handdrive.h"
 #include "imagechecks.h"

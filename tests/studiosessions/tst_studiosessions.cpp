@@ -4,6 +4,7 @@
 // pipeline gives for the same frames.
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
+#include "foxglovepeers.h"
 #include "liverigdialog.h"
 #include "mainwindow.h"
 #include "openwindow.h"
@@ -30,8 +31,12 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QHelpEvent>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProcess>
+#include <QRadioButton>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -43,8 +48,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
-#include <QToolTip>
 #include <QToolButton>
+#include <QToolTip>
 #include <QTranslator>
 #include <QUdpSocket>
 
@@ -66,6 +71,7 @@ private slots:
     void reroutesThroughTheEditorsRouter();
     void replaySaysWhichRowsItSkipped();
     void windowListensToALiveRig();
+    void aLiveRigFollowsARobot();
     void closingAReplayBringsTheRunBack();
     void opensARobotRecording();
     void replayNamesAnEditedRouter();
@@ -488,6 +494,8 @@ void TestStudioSessions::windowListensToALiveRig()
         auto *dialog = qobject_cast<LiveRigDialog *>(QApplication::activeModalWidget());
         QVERIFY(dialog);
         QVERIFY(!dialog->networkCheck()->isChecked());
+        QRadioButton *udp = dialog->udpChoice();
+        QTest::mouseClick(udp, Qt::LeftButton, {}, QPoint(8, udp->height() / 2));
         QSpinBox *edit = dialog->portEdit();
         edit->setFocus();
         edit->selectAll();
@@ -499,7 +507,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().isRunning());
     QCOMPARE(window.engine().liveUri(), QStringLiteral("udp:127.0.0.1:%1").arg(port));
     QVERIFY(window.windowTitle().contains("live rig"));
-    QCOMPARE(window.scenePicker()->currentText(), QString("Live rig (UDP)…"));
+    QCOMPARE(window.scenePicker()->currentText(), QString("Live rig…"));
     QVERIFY(window.viewport()->placeholder().startsWith("Live rig on udp:127.0.0.1"));
     // What only the simulation has is off: stepping, pacing, driving.
     for (const char *name : {"stepAction", "driveAction", "fasterAction", "slowerAction"})
@@ -590,6 +598,67 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(asked);
     QVERIFY(!window.engine().isLive());
     QCOMPARE(scene->currentData().toString(), before);
+}
+
+void TestStudioSessions::aLiveRigFollowsARobot()
+{
+    // The reference robot (tests/interop/foxglove-robot.mjs) plays its grasp once asked.
+    QProcess robot;
+    const int port = startRobot(robot, {"--hold"});
+    QVERIFY(port > 0);
+    const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(port);
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+
+    // File → Listen for a live rig (Ctrl+L): a robot's Foxglove server, its address and map.
+    QTimer::singleShot(0, this, [url] {
+        auto *dialog = qobject_cast<LiveRigDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QVERIFY(!dialog->robotUrlEdit()->isEnabled());
+        QRadioButton *robotChoice = dialog->robotChoice();
+        QTest::mouseClick(robotChoice, Qt::LeftButton, {}, QPoint(8, robotChoice->height() / 2));
+        QVERIFY(dialog->robotUrlEdit()->isEnabled());
+        QVERIFY(!dialog->portEdit()->isEnabled());
+        for (QLineEdit *edit : {dialog->robotUrlEdit(), dialog->topicsEdit()}) {
+            edit->setFocus();
+            edit->selectAll();
+            QTest::keyClicks(edit, edit == dialog->topicsEdit()
+                                       ? QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json")
+                                       : url);
+        }
+        const QString folder = qEnvironmentVariable("SEMHAP_SCREENSHOTS");
+        if (!folder.isEmpty())
+            dialog->grab().save(folder + "/liverig-robot.png");
+        QTest::keyClick(dialog->topicsEdit(), Qt::Key_Return);
+    });
+    QTest::keyClick(&window, Qt::Key_L, Qt::ControlModifier);
+    QVERIFY(window.engine().isLive());
+    QCOMPARE(window.engine().liveUri(), url);
+    QVERIFY(window.engine().isRunning());
+    robot.write("go\n");
+    QVERIFY(robot.waitForBytesWritten(10000));
+    QTRY_COMPARE_WITH_TIMEOUT(window.engine().liveStats().frames, quint64(1000), 30000);
+    // The grasp is confirmed in the log, as from a recording of it.
+    QTRY_VERIFY(window.eventLog()->model()->rowCount() > 5);
+    QTRY_COMPARE(window.findChild<QLabel *>("operatorLabel")->text(), "Live rig on " + url);
+    robot.waitForFinished(10000);
+    QSettings().remove("liveRig"); // the dialog remembers the robot: the other tests start on UDP
+
+    // The next start follows the same robot, through the same map.
+    QTemporaryDir dir;
+    const QString saved = dir.filePath("workspace.json");
+    workspace.autosaveTo(saved);
+    QString error;
+    QVERIFY2(workspace.autosave(&error), qPrintable(error));
+    Workspace again;
+    MainWindow next(again, studioOptions());
+    QStringList problems;
+    QVERIFY(again.restore(saved, studioOptions(), &problems));
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+    QCOMPARE(next.engine().liveUri(), url);
+    QCOMPARE(next.engine().liveOptions().topics,
+             QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json"));
 }
 
 void TestStudioSessions::closingAReplayBringsTheRunBack()

@@ -7,10 +7,24 @@
 #include <QStringList>
 
 /**
+ * The reference robot (tests/interop/foxglove-robot.mjs, @foxglove/ws-protocol's
+ * FoxgloveServer playing the grasp), started with `args`; its port, or 0. Needs SEMHAP_NODE
+ * and SEMHAP_INTEROP_TOOLS.
+ */
+inline int startRobot(QProcess &robot, const QStringList &args)
+{
+    robot.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    robot.start(QStringLiteral(SEMHAP_NODE),
+                QStringList{QStringLiteral(SEMHAP_INTEROP_TOOLS "/foxglove-robot.mjs")} + args);
+    if (!robot.waitForReadyRead(30000))
+        return 0;
+    return QJsonDocument::fromJson(robot.readLine()).object().value("port").toInt();
+}
+
+/**
  * The reference Foxglove viewer (tests/interop/foxglove-viewer.mjs, @foxglove/ws-protocol's
  * FoxgloveClient), started on `url`: it waits for the server to come, subscribes to every
- * channel ("subscribed TOPIC" lines) and decodes every message. Needs SEMHAP_NODE and
- * SEMHAP_INTEROP_TOOLS.
+ * channel ("subscribed TOPIC" lines) and decodes every message.
  */
 inline void startViewer(QProcess &viewer, const QString &url, const QStringList &more = {})
 {
