@@ -12,6 +12,7 @@
 
 #include <climits>
 #include <cmath>
+#include <tuple>
 
 namespace semhap {
 
@@ -93,13 +94,66 @@ bool ContactFrameParser::parse(const QJsonObject &json, ContactFrame *frame, QSt
     QString leftActor;
     QString rightActor;
     if (!parseFingertip(json, QLatin1String("left"), &parsed.left, &leftActor, reason) ||
-        !parseFingertip(json, QLatin1String("right"), &parsed.right, &rightActor, reason))
+        !parseFingertip(json, QLatin1String("right"), &parsed.right, &rightActor, reason) ||
+        !checkFingertip(parsed.left, QLatin1String("left"), reason) ||
+        !checkFingertip(parsed.right, QLatin1String("right"), reason) ||
+        !checkClock(parsed, reason) || !parseSignals(json, &parsed.signalValues, reason))
         return false;
+    take(&parsed, leftActor, rightActor);
+    *frame = parsed;
+    return true;
+}
 
-    if (std::abs(parsed.t) > MaxTime)
+bool ContactFrameParser::accept(ContactFrame *frame, const QString &leftActor,
+                                const QString &rightActor, QString *reason)
+{
+    if (!std::isfinite(frame->t))
+        return fail(
+            reason,
+            QStringLiteral("\"t\" must be a finite number, got %1").arg(formatNumber(frame->t)));
+    for (const auto &[tip, name, actor] :
+         {std::tuple(&frame->left, QLatin1String("left"), &leftActor),
+          std::tuple(&frame->right, QLatin1String("right"), &rightActor)}) {
+        if (!checkFingertip(*tip, name, reason))
+            return false;
+        if (actor->isNull() != (tip->actor < 0)) // a named actor's name must be known
+            return fail(reason, QStringLiteral("%1 names no actor of the session")
+                                    .arg(quotedField(name + QLatin1String(".actor"))));
+    }
+    for (const SignalValue &signal : frame->signalValues) {
+        if (!std::isfinite(signal.value))
+            return fail(reason, QStringLiteral("%1 must be a finite number, got %2")
+                                    .arg(quotedField(QStringLiteral("signals.") +
+                                                     signalNames().name(signal.id)),
+                                         formatNumber(signal.value)));
+    }
+    if (!checkClock(*frame, reason))
+        return false;
+    take(frame, leftActor, rightActor);
+    return true;
+}
+
+bool ContactFrameParser::checkSignalName(const QString &name, QString *reason)
+{
+    static const QStringList builtins = SignalNode::quantityNames();
+    const QString field = quotedField(QStringLiteral("signals.") + name);
+    if (!isPlainName(name))
+        return fail(reason, QStringLiteral("%1: a signal's name must be 1 to %2 characters "
+                                           "of a-z, 0-9, _ and .")
+                                .arg(field)
+                                .arg(MaxPlainNameLength));
+    if (builtins.contains(name))
+        return fail(reason, QStringLiteral("%1: \"%2\" is a built-in quantity, not a signal name")
+                                .arg(field, name));
+    return true;
+}
+
+bool ContactFrameParser::checkClock(const ContactFrame &frame, QString *reason) const
+{
+    if (std::abs(frame.t) > MaxTime)
         return fail(reason, QStringLiteral("\"t\" must be within ±%1 s, got %2")
-                                .arg(formatNumber(MaxTime), formatNumber(parsed.t)));
-    const size_t g = size_t(gripper);
+                                .arg(formatNumber(MaxTime), formatNumber(frame.t)));
+    const size_t g = size_t(frame.gripper);
     // A jump far past the stream's clock is a sender gone wrong, not a pause: every device
     // instant in between would have to be rendered.
     bool started = false;
@@ -110,25 +164,50 @@ bool ContactFrameParser::parse(const QJsonObject &json, ContactFrame *frame, QSt
             started = true;
         }
     }
-    if (started && parsed.t - latest > m_maxGap) {
+    if (started && frame.t - latest > m_maxGap) {
         return fail(reason, QStringLiteral("\"t\" jumps by %1 s, more than the %2 s allowed "
                                            "(--max-gap)")
-                                .arg(formatNumber(parsed.t - latest), formatNumber(m_maxGap)));
+                                .arg(formatNumber(frame.t - latest), formatNumber(m_maxGap)));
     }
-    if (m_seen[g] && !(parsed.t > m_lastT[g])) {
+    if (m_seen[g] && !(frame.t > m_lastT[g])) {
         return fail(reason, QStringLiteral("\"t\" must increase per gripper, got %1 after %2 "
                                            "for \"%3\"")
-                                .arg(formatNumber(parsed.t), formatNumber(m_lastT[g]),
-                                     gripperName(gripper)));
+                                .arg(formatNumber(frame.t), formatNumber(m_lastT[g]),
+                                     gripperName(frame.gripper)));
     }
-    if (!parseSignals(json, &parsed.signalValues, reason))
-        return false;
-    // Only a valid line may change state: the clock and the actor table.
-    m_seen[g] = true;
-    m_lastT[g] = parsed.t;
-    parsed.left.actor = m_actors.intern(leftActor);
-    parsed.right.actor = m_actors.intern(rightActor);
-    *frame = parsed;
+    return true;
+}
+
+void ContactFrameParser::take(ContactFrame *frame, const QString &leftActor,
+                              const QString &rightActor)
+{
+    // Only a valid frame may change state: the clock and the actor table.
+    m_seen[size_t(frame->gripper)] = true;
+    m_lastT[size_t(frame->gripper)] = frame->t;
+    frame->left.actor = m_actors.intern(leftActor);
+    frame->right.actor = m_actors.intern(rightActor);
+}
+
+bool ContactFrameParser::checkFingertip(const Fingertip &tip, QLatin1String name, QString *reason)
+{
+    const QString prefix = name + QLatin1Char('.');
+    if (!std::isfinite(tip.f) || tip.f < 0.0)
+        return fail(reason, QStringLiteral("%1 must be a finite non-negative number, got %2")
+                                .arg(quotedField(prefix + u'f'), formatNumber(tip.f)));
+    if (tip.n < 0)
+        return fail(reason, QStringLiteral("%1 must be a non-negative integer, got %2")
+                                .arg(quotedField(prefix + u'n'))
+                                .arg(tip.n));
+    for (size_t i = 0; tip.hasFxyz && i < 3; ++i) {
+        if (!std::isfinite(tip.fxyz[i]))
+            return fail(reason, QStringLiteral("%1 must be an array of 3 finite numbers, got "
+                                               "an array")
+                                    .arg(quotedField(prefix + QLatin1String("fxyz"))));
+    }
+    if (!std::isfinite(tip.mu) || tip.mu < 0.0)
+        return fail(reason,
+                    QStringLiteral("%1 must be a finite positive number or null, got %2")
+                        .arg(quotedField(prefix + QLatin1String("mu")), formatNumber(tip.mu)));
     return true;
 }
 
@@ -149,21 +228,13 @@ bool ContactFrameParser::parseSignals(const QJsonObject &json, FrameSignals *sig
                                 .arg(object.size())
                                 .arg(FrameSignals::Capacity));
     // Every name and value first: a rejected line must not grow the name table.
-    static const QStringList builtins = SignalNode::quantityNames();
     for (auto it = object.begin(); it != object.end(); ++it) {
-        const QString field = quotedField(QStringLiteral("signals.") + it.key());
-        if (!isPlainName(it.key()))
-            return fail(reason, QStringLiteral("%1: a signal's name must be 1 to %2 characters "
-                                               "of a-z, 0-9, _ and .")
-                                    .arg(field)
-                                    .arg(MaxPlainNameLength));
-        if (builtins.contains(it.key()))
-            return fail(reason, QStringLiteral("%1: \"%2\" is a built-in quantity, not a "
-                                               "signal name")
-                                    .arg(field, it.key()));
+        if (!checkSignalName(it.key(), reason))
+            return false;
         if (!it.value().isDouble() || !std::isfinite(it.value().toDouble()))
             return fail(reason, QStringLiteral("%1 must be a finite number, got %2")
-                                    .arg(field, describe(it.value())));
+                                    .arg(quotedField(QStringLiteral("signals.") + it.key()),
+                                         describe(it.value())));
     }
     for (auto it = object.begin(); it != object.end(); ++it) {
         const int id = signalNames().intern(it.key());
@@ -193,7 +264,7 @@ bool ContactFrameParser::parseFingertip(const QJsonObject &json, QLatin1String n
     const QJsonValue f = object.value(QLatin1String("f"));
     if (f.isUndefined())
         return fail(reason, QStringLiteral("%1 is missing").arg(quotedField(prefix + u'f')));
-    if (!f.isDouble() || !std::isfinite(f.toDouble()) || f.toDouble() < 0.0) {
+    if (!f.isDouble()) { // its range is checkFingertip()'s
         return fail(reason, QStringLiteral("%1 must be a finite non-negative number, got %2")
                                 .arg(quotedField(prefix + u'f'), describe(f)));
     }
@@ -225,7 +296,7 @@ bool ContactFrameParser::parseFingertip(const QJsonObject &json, QLatin1String n
         bool valid = fxyz.isArray() && array.size() == 3;
         for (qsizetype i = 0; valid && i < 3; ++i) {
             components[size_t(i)] = array.at(i).toDouble(qQNaN());
-            valid = array.at(i).isDouble() && std::isfinite(components[size_t(i)]);
+            valid = array.at(i).isDouble();
         }
         if (!valid) {
             return fail(reason,

@@ -41,11 +41,25 @@ public:
     /** Parses an already decoded object; false with a one-sentence `reason`. */
     bool parse(const QJsonObject &json, ContactFrame *frame, QString *reason);
 
+    /**
+     * Checks a frame built from numbers (a session's block row) by the rules a line is
+     * checked by, and takes it: names its fingertips' actors (`leftActor`, `rightActor`; null
+     * for none, as the tips' `actor` -1 says) and moves the clock on. False with a
+     * one-sentence `reason`, changing nothing.
+     */
+    bool accept(ContactFrame *frame, const QString &leftActor, const QString &rightActor,
+                QString *reason);
+    /** False with the reason when `name` cannot name a signal. */
+    static bool checkSignalName(const QString &name, QString *reason);
+
     /** The actors named so far; frames refer to them by id. */
     const ActorTable &actors() const { return m_actors; }
     ActorTable &actors() { return m_actors; }
 
 private:
+    static bool checkFingertip(const Fingertip &tip, QLatin1String name, QString *reason);
+    bool checkClock(const ContactFrame &frame, QString *reason) const;
+    void take(ContactFrame *frame, const QString &leftActor, const QString &rightActor);
     static bool parseSignals(const QJsonObject &json, FrameSignals *signalValues, QString *reason);
     bool parseFingertip(const QJsonObject &json, QLatin1String name, Fingertip *tip,
                         QString *actor, QString *reason) const;

@@ -20,8 +20,11 @@ namespace semhap {
 struct SessionInfo
 {
     static constexpr const char *Format = "semhap.session/1";
-    /** The schema this semhap writes; 2 added the scene states. */
-    static constexpr int SchemaVersion = 4;
+    /**
+     * The schema this semhap writes: 2 added the scene states, 3 friction, 4 signals, and 5
+     * keeps the per-tick streams in compressed blocks.
+     */
+    static constexpr int SchemaVersion = 5;
     /** The oldest schema this semhap reads; a session outside the two is refused. */
     static constexpr int OldestSchemaVersion = 1;
 

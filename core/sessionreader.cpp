@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "sessionreader.h"
 
+#include "nametable.h"
 #include "routergraph.h"
+#include "sessionblock.h"
 #include "sessionschema.h"
 
 #include <QFile>
@@ -15,6 +17,7 @@
 #include <QtEndian>
 #include <QUrl>
 
+#include <climits>
 #include <cmath>
 #include <limits>
 
@@ -42,6 +45,12 @@ QString window(double from, double to)
 double optional(const QVariant &value)
 {
     return value.isNull() ? qQNaN() : value.toDouble();
+}
+
+/** True when `value` is a whole number from 0 to below `size`: an index a block row holds. */
+bool isIndex(double value, qint64 size)
+{
+    return value >= 0.0 && value < double(size) && value == std::floor(value);
 }
 
 } // namespace
@@ -190,6 +199,8 @@ bool SessionReader::load(QString *error)
     if (query.lastError().isValid())
         return damaged(query);
 
+    if (m_schemaVersion >= 5)
+        return loadBlocks(error);
     // Counting walks every table's pages: a truncated file shows here, not halfway through.
     const std::array<std::pair<const char *, qint64 *>, 4> counts{{
         {"contact_frames", &m_frameCount},
@@ -212,6 +223,61 @@ bool SessionReader::load(QString *error)
         return damaged(query);
     m_start = query.value(0).toDouble();
     m_end = query.value(1).toDouble();
+    return true;
+}
+
+bool SessionReader::loadBlocks(QString *error)
+{
+    QSqlQuery query(m_db->db());
+    query.setForwardOnly(true);
+    const auto damaged = [&] {
+        *error = QStringLiteral("damaged session: ") + sqlError(query.lastError());
+        return false;
+    };
+    // A name that could not have been written is left out: rows naming it are rejected.
+    if (!query.exec(QStringLiteral("SELECT kind, id, name FROM names")))
+        return damaged();
+    QString reason;
+    while (query.next()) {
+        const QString kind = query.value(0).toString();
+        const qint64 id = query.value(1).toLongLong();
+        const QString name = query.value(2).toString();
+        if (kind == QLatin1String("actor") && !name.isEmpty()) {
+            m_actorNames[double(id)] = name;
+        } else if (kind == QLatin1String("signal") &&
+                   ContactFrameParser::checkSignalName(name, &reason)) {
+            const int signal = signalNames().intern(name);
+            if (signal >= 0)
+                m_signalIds[double(id)] = signal;
+        }
+    }
+    if (query.lastError().isValid())
+        return damaged();
+    // Summing walks the block table's pages: a truncated file shows here.
+    if (!query.exec(QStringLiteral("SELECT stream, sum(rows), min(first), max(last) FROM "
+                                   "blocks GROUP BY stream")))
+        return damaged();
+    using S = SessionSchema::Stream;
+    while (query.next()) {
+        const QString stream = query.value(0).toString();
+        const qint64 rows = query.value(1).toLongLong();
+        if (stream == QLatin1String(SessionSchema::streamName(S::ContactFrames))) {
+            m_frameCount = rows;
+            m_start = query.value(2).toDouble();
+            m_end = query.value(3).toDouble();
+        } else if (stream == QLatin1String(SessionSchema::streamName(S::DeviceFrames))) {
+            m_deviceFrameCount = rows;
+        } else if (stream == QLatin1String(SessionSchema::streamName(S::OperatorInput))) {
+            m_inputCount = rows;
+        } else if (stream == QLatin1String(SessionSchema::streamName(S::SceneStates))) {
+            m_sceneStateCount = rows;
+        }
+    }
+    if (query.lastError().isValid())
+        return damaged();
+    if (!query.exec(QStringLiteral("SELECT count(*) FROM events")) || !query.next())
+        return damaged();
+    m_eventCount = query.value(0).toLongLong();
     return true;
 }
 
@@ -310,15 +376,83 @@ QString describe(const QVariant &value)
 
 void SessionReader::rejectRow(const char *table, const QVariant &rowid, const QString &reason)
 {
-    ++m_rejectedRows;
+    reject(table, QStringLiteral("row ") + rowid.toString(), reason);
+}
+
+void SessionReader::reject(const char *table, const QString &where, const QString &reason,
+                           qint64 rows)
+{
+    m_rejectedRows += rows;
     if (m_onRowError)
-        m_onRowError(QStringLiteral("%1: %2 row %3: %4")
-                         .arg(m_path, QLatin1String(table), rowid.toString(), reason));
+        m_onRowError(
+            QStringLiteral("%1: %2 %3: %4").arg(m_path, QLatin1String(table), where, reason));
+}
+
+bool SessionReader::readBlocks(SessionSchema::Stream stream, double from, double to,
+                               const RowVisitor &visit, QString *error)
+{
+    const char *name = SessionSchema::streamName(stream);
+    QSqlQuery query(m_db->db());
+    query.setForwardOnly(true);
+    // A block may hold rows of the window when it ends at or after its start and begins
+    // before its end; the rows themselves are sifted below.
+    QString sql = QStringLiteral("SELECT rowid, rows, width, data FROM blocks WHERE stream = "
+                                 ":stream");
+    if (std::isfinite(from))
+        sql += QStringLiteral(" AND last >= :from");
+    if (std::isfinite(to))
+        sql += QStringLiteral(" AND first < :to");
+    query.prepare(sql + QStringLiteral(" ORDER BY rowid"));
+    query.bindValue(QStringLiteral(":stream"), QLatin1String(name));
+    if (std::isfinite(from))
+        query.bindValue(QStringLiteral(":from"), from);
+    if (std::isfinite(to))
+        query.bindValue(QStringLiteral(":to"), to);
+    if (!query.exec()) {
+        *error = m_path + QStringLiteral(": damaged session: ") + sqlError(query.lastError());
+        return false;
+    }
+    std::vector<double> rows;
+    QString reason;
+    while (query.next()) {
+        const qint64 block = query.value(0).toLongLong();
+        const int count = query.value(1).toInt();
+        const int width = query.value(2).toInt();
+        if (!SessionBlock::unpack(query.value(3).toByteArray(), count, width,
+                                  SessionSchema::keyColumn(stream), &rows, &reason)) {
+            reject(name, QStringLiteral("block %1").arg(block), reason, std::max(count, 1));
+            continue;
+        }
+        for (int r = 0; r < count; ++r) {
+            const double *row = rows.data() + size_t(r) * size_t(width);
+            if (!(row[0] >= from && row[0] < to))
+                continue;
+            const Row at{row, width, block, r + 1};
+            if (!visit(at))
+                return true;
+        }
+    }
+    return finished(query, m_path, error);
 }
 
 bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error, double from,
                                       double to)
 {
+    m_frames.restartClock();
+    m_frames.setMaxGap(std::numeric_limits<double>::infinity());
+    if (m_schemaVersion >= 5) {
+        ContactFrame frame;
+        QString reason;
+        return readBlocks(
+            SessionSchema::Stream::ContactFrames, from, to,
+            [&](const Row &row) {
+                if (contactFrameOf(row, &frame, &reason))
+                    return visit(frame, row.values[2]);
+                reject("contact_frames", row.where(), reason);
+                return true;
+            },
+            error);
+    }
     QSqlQuery query;
     QString reason;
     if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "contact_frames", from, to,
@@ -329,8 +463,6 @@ bool SessionReader::readContactFrames(const FrameVisitor &visit, QString *error,
     // Each row is checked as the stream line it was: one set of rules for frames, wherever
     // they come from. A recorded pause is real, so no gap is too long; time must still move
     // on per gripper.
-    m_frames.restartClock();
-    m_frames.setMaxGap(std::numeric_limits<double>::infinity());
     const bool hasMu = m_schemaVersion >= 3;      // friction coefficients came with schema 3
     const bool hasSignals = m_schemaVersion >= 4; // and signals with 4
     const auto fingertip = [&query, hasMu](int column, int muColumn) {
@@ -415,6 +547,33 @@ bool SessionReader::readEvents(const EventVisitor &visit, QString *error, double
 bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *error, double from,
                                      double to)
 {
+    if (m_schemaVersion >= 5) {
+        DeviceFrame frame;
+        return readBlocks(
+            SessionSchema::Stream::DeviceFrames, from, to,
+            [&](const Row &row) {
+                // A device's values run up to the first NaN: its model's channel count.
+                frame.t = row.values[0];
+                frame.values.fill(0.0);
+                frame.channelCount = 0;
+                bool valid = row.width == SessionSchema::DeviceColumns &&
+                             isIndex(row.values[1], m_devices.size());
+                for (int c = 0; valid && c < MaxChannels && !std::isnan(row.values[2 + c]); ++c) {
+                    frame.values[size_t(c)] = row.values[2 + c];
+                    frame.channelCount = c + 1;
+                    valid = std::isfinite(frame.values[size_t(c)]);
+                }
+                if (!valid) {
+                    reject("device_frames", row.where(),
+                           QStringLiteral("\"t\", \"device\" and the values must be finite "
+                                          "numbers and a device of the session"));
+                    return true;
+                }
+                frame.device = int(row.values[1]);
+                return visit(frame);
+            },
+            error);
+    }
     QSqlQuery query;
     QString reason;
     if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "device_frames", from, to,
@@ -448,6 +607,29 @@ bool SessionReader::readDeviceFrames(const DeviceFrameVisitor &visit, QString *e
 bool SessionReader::readHandCommands(const HandCommandVisitor &visit, QString *error, double from,
                                      double to)
 {
+    if (m_schemaVersion >= 5) {
+        HandCommand input;
+        return readBlocks(
+            SessionSchema::Stream::OperatorInput, from, to,
+            [&](const Row &row) {
+                bool valid = row.width == SessionSchema::InputColumns && isIndex(row.values[1], 2);
+                for (int c = 2; valid && c < SessionSchema::InputColumns; ++c)
+                    valid = std::isfinite(row.values[c]);
+                if (!valid) {
+                    reject("operator_input", row.where(),
+                           QStringLiteral("\"t\", the pose and the grip must be finite numbers "
+                                          "and \"hand\" left or right"));
+                    return true;
+                }
+                input.t = row.values[0];
+                input.hand = Gripper(int(row.values[1]));
+                std::copy(row.values + 2, row.values + 5, input.target.pos.begin());
+                std::copy(row.values + 5, row.values + 9, input.target.quat.begin());
+                input.grip = row.values[9];
+                return visit(input);
+            },
+            error);
+    }
     QSqlQuery query;
     QString reason;
     if (!select(m_db->db(), &query, QStringLiteral("rowid, *"), "operator_input", from, to,
@@ -480,6 +662,8 @@ bool SessionReader::readSceneState(double t, SceneState *state, QString *error)
 {
     if (m_sceneStateCount == 0)
         return false;
+    if (m_schemaVersion >= 5)
+        return readSceneStateBlock(t, state, error);
     // The latest state at or before t; before the first one, the first.
     QSqlQuery query(m_db->db());
     query.setForwardOnly(true);
@@ -499,6 +683,116 @@ bool SessionReader::readSceneState(double t, SceneState *state, QString *error)
     for (int i = 0; i < 4; ++i)
         state->overlay[size_t(i)] = query.value(2 + i).toDouble();
     return true;
+}
+
+bool SessionReader::readSceneStateBlock(double t, SceneState *state, QString *error)
+{
+    // The block that holds the latest state at or before t (or the first block), by the
+    // index on (stream, first); the last one read is kept, so scrubbing within a second
+    // unpacks nothing.
+    QSqlQuery query(m_db->db());
+    query.setForwardOnly(true);
+    query.prepare(QStringLiteral(
+        "SELECT * FROM (SELECT rowid FROM blocks WHERE stream = 'scene_states' AND first <= :t "
+        "ORDER BY first DESC LIMIT 1) UNION ALL SELECT * FROM (SELECT rowid FROM blocks WHERE "
+        "stream = 'scene_states' ORDER BY first LIMIT 1)"));
+    query.bindValue(QStringLiteral(":t"), t);
+    const auto damaged = [&] {
+        if (query.lastError().isValid())
+            *error = m_path + QStringLiteral(": damaged session: ") + sqlError(query.lastError());
+        return false;
+    };
+    if (!query.exec() || !query.next())
+        return damaged();
+    const qint64 block = query.value(0).toLongLong();
+    if (block != m_sceneBlock) {
+        query.prepare(QStringLiteral("SELECT rows, width, data FROM blocks WHERE rowid = :block"));
+        query.bindValue(QStringLiteral(":block"), block);
+        if (!query.exec() || !query.next())
+            return damaged();
+        QString reason;
+        m_sceneBlock = -1;
+        m_sceneWidth = query.value(1).toInt();
+        if (!SessionBlock::unpack(query.value(2).toByteArray(), query.value(0).toInt(),
+                                  m_sceneWidth, -1, &m_sceneRows, &reason) ||
+            m_sceneWidth < SessionSchema::SceneColumns) {
+            *error =
+                QStringLiteral("%1: damaged session: scene_states block %2: %3")
+                    .arg(m_path)
+                    .arg(block)
+                    .arg(reason.isEmpty() ? QStringLiteral("its rows are too short") : reason);
+            return false;
+        }
+        m_sceneBlock = block;
+    }
+    const size_t width = size_t(m_sceneWidth);
+    size_t at = 0;
+    for (size_t r = 0; r * width < m_sceneRows.size(); ++r) {
+        if (m_sceneRows[r * width] <= t)
+            at = r;
+    }
+    const double *row = m_sceneRows.data() + at * width;
+    state->t = row[0];
+    std::copy(row + 1, row + SessionSchema::SceneColumns, state->overlay.begin());
+    state->pose.assign(row + SessionSchema::SceneColumns, row + width);
+    return true;
+}
+
+bool SessionReader::contactFrameOf(const Row &row, ContactFrame *frame, QString *reason)
+{
+    const int signalCount = (row.width - SessionSchema::ContactColumns) / 2;
+    if (row.width < SessionSchema::ContactColumns ||
+        (row.width - SessionSchema::ContactColumns) % 2 != 0 ||
+        signalCount > FrameSignals::Capacity) {
+        *reason = QStringLiteral("a contact frame row of %1 numbers is not one").arg(row.width);
+        return false;
+    }
+    const double *v = row.values;
+    if (!isIndex(v[1], 2)) {
+        *reason = QStringLiteral("\"gripper\" must be 0 (left) or 1 (right), got %1")
+                      .arg(formatNumber(v[1]));
+        return false;
+    }
+    *frame = ContactFrame();
+    frame->t = v[0];
+    frame->gripper = Gripper(int(v[1]));
+    std::array<QString, 2> actors;
+    for (int side = 0; side < 2; ++side) {
+        Fingertip &tip = side == 0 ? frame->left : frame->right;
+        const double *at = v + 3 + 7 * side;
+        const QLatin1String name = side == 0 ? QLatin1String("left") : QLatin1String("right");
+        if (!isIndex(at[1], INT_MAX)) {
+            *reason = QStringLiteral("\"%1.n\" must be a non-negative integer, got %2")
+                          .arg(name, formatNumber(at[1]));
+            return false;
+        }
+        const auto actor = m_actorNames.find(at[2]);
+        if (at[2] != -1.0 && actor == m_actorNames.end()) {
+            *reason = QStringLiteral("\"%1.actor\" names no actor of the session").arg(name);
+            return false;
+        }
+        tip.f = at[0];
+        tip.n = int(at[1]);
+        tip.actor = at[2] == -1.0 ? -1 : 0; // the parser gives it its id by name
+        if (tip.actor >= 0)
+            actors[size_t(side)] = actor->second;
+        tip.hasFxyz = !(std::isnan(at[3]) && std::isnan(at[4]) && std::isnan(at[5]));
+        std::copy(at + 3, at + 6, tip.fxyz.begin());
+        tip.mu = at[6];
+    }
+    for (int i = 0; i < signalCount; ++i) {
+        const double id = v[SessionSchema::ContactColumns + 2 * i];
+        if (std::isnan(id)) // room for a signal this frame did not have
+            continue;
+        const auto named = m_signalIds.find(id);
+        if (named == m_signalIds.end()) {
+            *reason =
+                QStringLiteral("signal %1 is not named by the session").arg(formatNumber(id));
+            return false;
+        }
+        frame->signalValues.set(named->second, v[SessionSchema::ContactColumns + 2 * i + 1]);
+    }
+    return m_frames.accept(frame, actors[0], actors[1], reason);
 }
 
 } // namespace semhap

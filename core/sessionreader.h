@@ -9,13 +9,16 @@
 #include "scenestate.h"
 #include "semanticevent.h"
 #include "sessioninfo.h"
+#include "sessionschema.h"
 
 #include <QString>
 #include <QStringList>
 
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
+#include <vector>
 
 namespace semhap {
 
@@ -104,12 +107,31 @@ public:
 
 private:
     class Database;
+    /** A row of a block (schema 5): its numbers, where it is for a reason. */
+    struct Row
+    {
+        const double *values;
+        int width;
+        qint64 block;
+        int row; ///< 1-based, in its block
+        QString where() const { return QStringLiteral("block %1 row %2").arg(block).arg(row); }
+    };
+    using RowVisitor = std::function<bool(const Row &row)>;
+
     SessionReader() = default;
     bool load(QString *error);
+    bool loadBlocks(QString *error);
+    /** Visits the rows of `stream` with `from <= t < to`, in recorded order (schema 5). */
+    bool readBlocks(SessionSchema::Stream stream, double from, double to, const RowVisitor &visit,
+                    QString *error);
+    bool contactFrameOf(const Row &row, ContactFrame *frame, QString *reason);
+    bool readSceneStateBlock(double t, SceneState *state, QString *error);
     int nodeIndex(const QString &name);
     int deviceIndex(const QString &name);
     /** Skips a row: counts and reports it. */
     void rejectRow(const char *table, const QVariant &rowid, const QString &reason);
+    /** Skips `rows` rows at `where` (`row 3`, `block 2 row 7`): counts and reports them. */
+    void reject(const char *table, const QString &where, const QString &reason, qint64 rows = 1);
 
     QString m_path;
     std::unique_ptr<Database> m_db;
@@ -128,6 +150,12 @@ private:
     int m_schemaVersion = 0;
     double m_start = 0.0;
     double m_end = 0.0;
+    // Schema 5: what the `names` table names, and the scene state block last unpacked.
+    std::map<double, QString> m_actorNames; ///< the session's actor ids to their names
+    std::map<double, int> m_signalIds;      ///< the session's signal ids to signalNames()'
+    qint64 m_sceneBlock = -1;
+    int m_sceneWidth = 0;
+    std::vector<double> m_sceneRows;
 };
 
 } // namespace semhap

@@ -4,6 +4,7 @@
 #include "actortable.h"
 #include "nametable.h"
 #include "router.h"
+#include "sessionblock.h"
 #include "sessionschema.h"
 
 #include <QFile>
@@ -15,7 +16,6 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QTemporaryFile>
-#include <QtEndian>
 
 #include <cerrno>
 #include <chrono>
@@ -27,6 +27,7 @@
 #include <future>
 #include <mutex>
 #include <pthread.h>
+#include <set>
 #include <thread>
 #include <time.h>
 #include <unistd.h>
@@ -53,10 +54,31 @@ struct DeviceRow
     QStringList channels;
 };
 
-QVariant optional(double value)
+using Stream = SessionSchema::Stream;
+
+/**
+ * How long a stream's open block grows before it is sealed: a second of rows packs several
+ * times smaller than each commit's few (docs/sessions.md).
+ */
+constexpr double SealSeconds = 1.0;
+/** Values a block holds at most before it is sealed early (a very wide scene). */
+constexpr size_t SealValues = SessionBlock::MaxValues / 4;
+/** zstd levels: fast for the tail blocks written at each commit, tighter for a sealed one. */
+constexpr int TailLevel = 1;
+constexpr int SealLevel = 3;
+
+/**
+ * One stream's rows on their way into blocks. Each commit writes the rows it brought as a
+ * tail block, so a crash loses no more than a commit's worth; once the open block spans
+ * SealSeconds, its tail blocks are replaced by one sealed block of all its rows.
+ */
+struct BlockStream
 {
-    return std::isfinite(value) ? QVariant(value) : QVariant();
-}
+    int width = 0;            ///< of the open block's rows
+    std::vector<double> rows; ///< the open block's rows
+    size_t written = 0;       ///< values of `rows` already in tail blocks
+    std::vector<qint64> tail; ///< the rowids of those tail blocks
+};
 
 QString sqlError(const QSqlError &error)
 {
@@ -176,11 +198,9 @@ private:
             stamp.addBindValue(QString::number(m_owner.dropped()));
             check(stamp.exec(), stamp);
             stamp.clear();
-            m_frameInsert.clear();
-            m_eventInsert.clear();
-            m_deviceInsert.clear();
-            m_inputInsert.clear();
-            m_sceneInsert.clear();
+            for (QSqlQuery *query :
+                 {&m_eventInsert, &m_blockInsert, &m_blockDelete, &m_nameInsert})
+                query->clear();
             // A finished session is one file: back to a rollback journal, so readers (the
             // studio's replay, `semhap replay`, opening it read-only) leave no -wal or -shm
             // beside it. WAL was for recording; a killed recording keeps it and recovers.
@@ -302,25 +322,16 @@ private:
 
     bool prepare(QSqlDatabase &db, QString *error)
     {
-        m_frameInsert = QSqlQuery(db);
-        m_eventInsert = QSqlQuery(db);
-        m_deviceInsert = QSqlQuery(db);
-        m_inputInsert = QSqlQuery(db);
-        m_sceneInsert = QSqlQuery(db);
-        const std::array<std::pair<QSqlQuery *, int>, 5> inserts{{
-            {&m_frameInsert, 18},
-            {&m_eventInsert, 8},
-            {&m_deviceInsert, 2 + MaxChannels},
-            {&m_inputInsert, 10},
-            {&m_sceneInsert, 6},
+        const std::array<std::pair<QSqlQuery *, const char *>, 4> statements{{
+            {&m_eventInsert, "INSERT INTO events VALUES (?, ?, ?, ?, ?, ?, ?, ?)"},
+            {&m_blockInsert, "INSERT INTO blocks VALUES (?, ?, ?, ?, ?, ?)"},
+            {&m_blockDelete, "DELETE FROM blocks WHERE rowid = ?"},
+            {&m_nameInsert, "INSERT INTO names VALUES (?, ?, ?)"},
         }};
-        const QStringList tables = SessionSchema::tables().mid(2);
-        for (size_t i = 0; i < inserts.size(); ++i) {
-            QSqlQuery &query = *inserts[i].first;
-            const QString marks = QStringLiteral("?, ").repeated(inserts[i].second - 1);
-            if (!query.prepare(
-                    QStringLiteral("INSERT INTO %1 VALUES (%2?)").arg(tables.at(int(i)), marks))) {
-                *error = QStringLiteral("cannot prepare: ") + sqlError(query.lastError());
+        for (const auto &[query, statement] : statements) {
+            *query = QSqlQuery(db);
+            if (!query->prepare(QLatin1String(statement))) {
+                *error = QStringLiteral("cannot prepare: ") + sqlError(query->lastError());
                 return false;
             }
         }
@@ -341,23 +352,33 @@ private:
             m_room.notify_all();
             const bool stopping = m_stopping;
             lock.unlock();
-            write(db);
+            write(db, stopping);
             lock.lock();
             if (stopping)
                 return;
         }
     }
 
-    void write(QSqlDatabase &db)
+    /** Writes the batch taken; `last`: seals every open block, the session ends. */
+    void write(QSqlDatabase &db, bool last)
     {
-        m_actorNames.append(m_backActors);
-        m_backActors.clear();
-        if (m_back.empty())
+        if (m_back.empty() && m_backActors.isEmpty() && !last)
             return;
         db.transaction();
+        for (const QString &name : std::as_const(m_backActors)) {
+            insertName("actor", m_actorsNamed++, name);
+        }
+        m_backActors.clear();
         for (const Record &record : m_back)
             std::visit([this, &record](const auto &value) { insert(value, record.arrival); },
                        record.value);
+        for (int s = 0; s < SessionSchema::StreamCount; ++s) {
+            BlockStream &stream = m_streams[size_t(s)];
+            if (last || spansSeal(stream))
+                seal(Stream(s));
+            else if (stream.written < stream.rows.size())
+                writeTail(Stream(s));
+        }
         if (!db.commit() && m_error.isEmpty())
             m_error = m_path + QStringLiteral(": cannot write: ") + sqlError(db.lastError());
         else
@@ -365,42 +386,109 @@ private:
         m_back.clear();
     }
 
-    QVariant actor(int id) const
+    static bool spansSeal(const BlockStream &stream)
     {
-        return id >= 0 && id < m_actorNames.size() ? QVariant(m_actorNames.at(id)) : QVariant();
+        return !stream.rows.empty() &&
+               (stream.rows.size() >= SealValues ||
+                stream.rows[stream.rows.size() - size_t(stream.width)] - stream.rows[0] >=
+                    SealSeconds);
     }
 
-    void bindFingertip(const Fingertip &tip)
+    /**
+     * Adds a row to its stream's open block. A contact frame with fewer signals than the
+     * block's rows have room for is padded with NaN pairs; any other row of another width,
+     * or any row once the block spans SealSeconds, seals the block first.
+     */
+    void append(Stream s, std::vector<double> &row)
     {
-        m_frameInsert.addBindValue(tip.f);
-        m_frameInsert.addBindValue(tip.n);
-        m_frameInsert.addBindValue(actor(tip.actor));
-        for (double component : tip.fxyz)
-            m_frameInsert.addBindValue(tip.hasFxyz ? QVariant(component) : QVariant());
+        BlockStream &stream = m_streams[size_t(s)];
+        if (s == Stream::ContactFrames && int(row.size()) < stream.width)
+            row.resize(size_t(stream.width), qQNaN());
+        if (spansSeal(stream) || (!stream.rows.empty() && int(row.size()) != stream.width))
+            seal(s);
+        stream.width = int(row.size());
+        stream.rows.insert(stream.rows.end(), row.begin(), row.end());
+    }
+
+    void writeTail(Stream s)
+    {
+        BlockStream &stream = m_streams[size_t(s)];
+        const std::vector<double> rows(stream.rows.begin() + qsizetype(stream.written),
+                                       stream.rows.end());
+        const qint64 id = insertBlock(s, rows, stream.width, TailLevel);
+        if (id >= 0)
+            stream.tail.push_back(id);
+        stream.written = stream.rows.size();
+    }
+
+    /** Replaces the open block's tail blocks by one block of all its rows. */
+    void seal(Stream s)
+    {
+        BlockStream &stream = m_streams[size_t(s)];
+        if (stream.rows.empty())
+            return;
+        for (const qint64 id : stream.tail) {
+            m_blockDelete.addBindValue(id);
+            check(m_blockDelete.exec(), m_blockDelete);
+        }
+        insertBlock(s, stream.rows, stream.width, SealLevel);
+        stream.rows.clear();
+        stream.tail.clear();
+        stream.written = 0;
+    }
+
+    /** Inserts a block of `rows`; its rowid, or -1 when it could not be written. */
+    qint64 insertBlock(Stream s, const std::vector<double> &rows, int width, int level)
+    {
+        const auto [first, last] = SessionBlock::span(rows, width);
+        const QByteArray data =
+            SessionBlock::pack(rows, width, SessionSchema::keyColumn(s), level);
+        if (data.isEmpty()) {
+            if (m_error.isEmpty())
+                m_error = m_path + QStringLiteral(": cannot write: zstd cannot pack a block");
+            return -1;
+        }
+        m_blockInsert.addBindValue(QLatin1String(SessionSchema::streamName(s)));
+        m_blockInsert.addBindValue(first);
+        m_blockInsert.addBindValue(last);
+        m_blockInsert.addBindValue(qint64(rows.size() / size_t(width)));
+        m_blockInsert.addBindValue(width);
+        m_blockInsert.addBindValue(data);
+        if (!m_blockInsert.exec()) {
+            check(false, m_blockInsert);
+            return -1;
+        }
+        return m_blockInsert.lastInsertId().toLongLong();
+    }
+
+    void insertName(const char *kind, int id, const QString &name)
+    {
+        m_nameInsert.addBindValue(QLatin1String(kind));
+        m_nameInsert.addBindValue(id);
+        m_nameInsert.addBindValue(name);
+        check(m_nameInsert.exec(), m_nameInsert);
+    }
+
+    static void appendFingertip(std::vector<double> &row, const Fingertip &tip)
+    {
+        const double unknown = qQNaN();
+        row.insert(row.end(),
+                   {tip.f, double(tip.n), double(tip.actor), tip.hasFxyz ? tip.fxyz[0] : unknown,
+                    tip.hasFxyz ? tip.fxyz[1] : unknown, tip.hasFxyz ? tip.fxyz[2] : unknown,
+                    std::max(0.0, tip.mu)});
     }
 
     void insert(const ContactFrame &frame, double arrival)
     {
-        m_frameInsert.addBindValue(frame.t);
-        m_frameInsert.addBindValue(m_grippers[size_t(frame.gripper)]);
-        bindFingertip(frame.left);
-        bindFingertip(frame.right);
-        m_frameInsert.addBindValue(optional(arrival));
-        for (const Fingertip *tip : {&frame.left, &frame.right})
-            m_frameInsert.addBindValue(tip->mu > 0.0 ? QVariant(tip->mu) : QVariant());
-        m_frameInsert.addBindValue(signalsText(frame.signalValues));
-        check(m_frameInsert.exec(), m_frameInsert);
-    }
-
-    /** The frame's signals as the stream writes them (a JSON object), NULL for none. */
-    static QVariant signalsText(const FrameSignals &signalValues)
-    {
-        if (signalValues.isEmpty())
-            return QVariant();
-        QJsonObject object;
-        for (const SignalValue &signal : signalValues)
-            object.insert(signalNames().name(signal.id), signal.value);
-        return QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact));
+        m_row.assign({frame.t, double(frame.gripper), arrival});
+        appendFingertip(m_row, frame.left);
+        appendFingertip(m_row, frame.right);
+        for (const SignalValue &signal : frame.signalValues) {
+            if (m_signalsNamed.insert(signal.id).second)
+                insertName("signal", signal.id, signalNames().name(signal.id));
+            m_row.insert(m_row.end(), {double(signal.id), signal.value});
+        }
+        append(Stream::ContactFrames, m_row);
     }
 
     void insert(const SemanticEvent &event, double)
@@ -420,37 +508,27 @@ private:
 
     void insert(const DeviceFrame &frame, double)
     {
-        m_deviceInsert.addBindValue(frame.t);
-        m_deviceInsert.addBindValue(frame.device >= 0 && size_t(frame.device) < m_devices.size()
-                                        ? m_devices[size_t(frame.device)].name
-                                        : QString::number(frame.device));
+        m_row.assign({frame.t, double(frame.device)});
         for (int c = 0; c < MaxChannels; ++c)
-            m_deviceInsert.addBindValue(c < frame.channelCount ? QVariant(frame.values[size_t(c)])
-                                                               : QVariant());
-        check(m_deviceInsert.exec(), m_deviceInsert);
+            m_row.push_back(c < frame.channelCount ? frame.values[size_t(c)] : qQNaN());
+        append(Stream::DeviceFrames, m_row);
     }
 
     void insert(const HandCommand &input, double)
     {
-        m_inputInsert.addBindValue(input.t);
-        m_inputInsert.addBindValue(m_grippers[size_t(input.hand)]);
-        for (double v : input.target.pos)
-            m_inputInsert.addBindValue(v);
-        for (double v : input.target.quat)
-            m_inputInsert.addBindValue(v);
-        m_inputInsert.addBindValue(input.grip);
-        check(m_inputInsert.exec(), m_inputInsert);
+        m_row.assign({input.t, double(input.hand)});
+        m_row.insert(m_row.end(), input.target.pos.begin(), input.target.pos.end());
+        m_row.insert(m_row.end(), input.target.quat.begin(), input.target.quat.end());
+        m_row.push_back(input.grip);
+        append(Stream::OperatorInput, m_row);
     }
 
     void insert(const SceneState &state, double)
     {
-        m_sceneInsert.addBindValue(state.t);
-        QByteArray pose(qsizetype(state.pose.size() * sizeof(double)), Qt::Uninitialized);
-        qToLittleEndian<double>(state.pose.data(), qsizetype(state.pose.size()), pose.data());
-        m_sceneInsert.addBindValue(pose);
-        for (double value : state.overlay)
-            m_sceneInsert.addBindValue(value);
-        check(m_sceneInsert.exec(), m_sceneInsert);
+        m_row.assign({state.t});
+        m_row.insert(m_row.end(), state.overlay.begin(), state.overlay.end());
+        m_row.insert(m_row.end(), state.pose.begin(), state.pose.end());
+        append(Stream::SceneStates, m_row);
     }
 
     void check(bool ok, const QSqlQuery &query)
@@ -481,13 +559,15 @@ private:
     // Writer thread only.
     std::vector<Record> m_back;
     QStringList m_backActors;
-    QStringList m_actorNames;
+    int m_actorsNamed = 0;        ///< actor ids the names table has
+    std::set<int> m_signalsNamed; ///< signal ids the names table has
     std::array<QString, 2> m_grippers;
-    QSqlQuery m_frameInsert;
+    std::array<BlockStream, SessionSchema::StreamCount> m_streams;
+    std::vector<double> m_row; ///< the row being made, kept to spare its allocation
     QSqlQuery m_eventInsert;
-    QSqlQuery m_deviceInsert;
-    QSqlQuery m_inputInsert;
-    QSqlQuery m_sceneInsert;
+    QSqlQuery m_blockInsert;
+    QSqlQuery m_blockDelete;
+    QSqlQuery m_nameInsert;
     QString m_error;
 };
 

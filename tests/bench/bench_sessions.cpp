@@ -2,10 +2,13 @@
 // Sessions under load. Recording: both hands at 1 kHz (every field filled, fxyz too)
 // through the C3 router, its events and all seven devices' frames into a SessionWriter,
 // paced to the wall clock (zero drops required); then the same as fast as the producer
-// can go, which outruns any disk by design: it measures the writer's capacity. UDP: frames
+// can go, which outruns any disk by design: it measures the writer's capacity. Scrubbing:
+// the scene state at random moments of the paced session, as the studio's scrubber asks
+// for it, then a moment after the last, as playback does. UDP: frames
 // over loopback into a UdpFrameSource, one per datagram and in batches of 10.
 #include "actortable.h"
 #include "pipeline.h"
+#include "sessionreader.h"
 #include "sessionwriter.h"
 #include "udpframesource.h"
 
@@ -19,6 +22,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <random>
 #include <thread>
 
 using namespace semhap;
@@ -138,6 +143,31 @@ void record(const QString &path, double seconds, bool paced)
  * and the receiver's CPU time per datagram. `invalid`: every frame lacks its gripper (a
  * flood of garbage must cost about what good frames cost).
  */
+/** The scene state at moments of the session: at random, and one after another. */
+void scrub(const QString &path)
+{
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    if (!reader) {
+        std::printf("scrub: %s\n", qPrintable(error));
+        return;
+    }
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> moment(reader->startTime(), reader->endTime());
+    SceneState state;
+    const auto time = [&](int count, const std::function<double(int)> &at) {
+        const auto start = Clock::now();
+        for (int i = 0; i < count; ++i)
+            reader->readSceneState(at(i), &state, &error);
+        return std::chrono::duration<double, std::micro>(Clock::now() - start).count() / count;
+    };
+    const double jumps = time(1000, [&](int) { return moment(random); });
+    const double steps = time(1000, [&](int i) { return reader->startTime() + i / 60.0; });
+    std::printf("scrub: scene state at a random moment %.0f µs, at the next frame of playback "
+                "(60 Hz) %.0f µs\n",
+                jumps, steps);
+}
+
 void udp(double seconds, int batch, bool invalid = false)
 {
     std::atomic<int> port{0};
@@ -216,6 +246,7 @@ int main(int argc, char *argv[])
     const double seconds = args.size() > 1 ? args[1].toDouble() : 10.0;
     QTemporaryDir dir;
     record(dir.filePath(QStringLiteral("paced.db")), seconds, true);
+    scrub(dir.filePath(QStringLiteral("paced.db")));
     record(dir.filePath(QStringLiteral("flat.db")), 3.0, false);
     udp(3.0, 1);
     udp(3.0, 10);

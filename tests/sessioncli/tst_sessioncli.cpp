@@ -4,6 +4,7 @@
 // recording killed with SIGKILL loses at most ~100 ms and still opens.
 #include "clitool.h"
 #include "nametable.h"
+#include "sessionblocks.h"
 #include "sessionreader.h"
 
 #include <QBuffer>
@@ -253,8 +254,8 @@ void TestSessionCli::replayOfAFarFrameEnds()
     // in between: it never ended.
     const QString far = m_dir.filePath("far.db");
     QVERIFY(alteredCopy(m_session, far,
-                        {"UPDATE contact_frames SET t = 1e9 WHERE rowid = "
-                         "(SELECT max(rowid) FROM contact_frames)"}));
+                        {insertBlock(SessionSchema::Stream::ContactFrames, emptyContactRow(1e9, 0),
+                                     SessionSchema::ContactColumns)}));
     const Result replay = semhapRun({"replay", far, "--device-frames", "-"});
     QCOMPARE(replay.code, 0);
     QVERIFY(replay.out.count('\n') < contents(m_dir.filePath("with.devices")).count('\n') + 8000);
@@ -308,7 +309,7 @@ void TestSessionCli::exportNestsJsonMetadata()
     QVERIFY(metadata.value("bindings").isObject());
     QVERIFY(metadata.value("overrides").isArray());
     QCOMPARE(metadata.value("notes").toString(), QString("[1]"));
-    QCOMPARE(metadata.value("schema_version").toString(), QString("4"));
+    QCOMPARE(metadata.value("schema_version").toString(), QString("5"));
 }
 
 void TestSessionCli::errors_data()

@@ -5,6 +5,7 @@
 #include "nametable.h"
 #include "pipeline.h"
 #include "router.h"
+#include "sessionblocks.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"
 #include "slipdetector.h"
@@ -155,6 +156,146 @@ void damage(const QString &path, const QStringList &statements)
     QSqlDatabase::removeDatabase("damage");
 }
 
+/**
+ * Reads every stream of `session` and compares it with `r`, bit for bit; `exactZero`:
+ * -0 too (schema 5 keeps it, older schemas read it as 0).
+ */
+void readsBack(SessionReader &reader, const Recording &r, bool exactZero = true)
+{
+    QString error;
+    QCOMPARE(reader.contactFrameCount(), qint64(r.frames.size()));
+
+    size_t i = 0;
+    QVERIFY(reader.readContactFrames(
+        [&](const ContactFrame &frame, double arrival) {
+            const ContactFrame &want = r.frames[i];
+            bool same = sameBits(frame.t, want.t) && frame.gripper == want.gripper &&
+                        frame.signalValues.size() == want.signalValues.size() &&
+                        (std::isnan(arrival) ? std::isnan(r.arrivals[i])
+                                             : sameBits(arrival, r.arrivals[i]));
+            for (auto [got, expected] :
+                 {std::pair(&frame.left, &want.left), std::pair(&frame.right, &want.right)}) {
+                same = same && sameBits(got->f, expected->f) && got->n == expected->n &&
+                       got->hasFxyz == expected->hasFxyz && sameBits(got->mu, expected->mu) &&
+                       reader.actors().name(got->actor) == r.actors.name(expected->actor);
+                for (size_t c = 0; c < 3 && expected->hasFxyz; ++c)
+                    same = same && sameBits(got->fxyz[c], expected->fxyz[c]);
+            }
+            for (const SignalValue &signal : want.signalValues) {
+                const double *value = frame.signalValues.find(signal.id);
+                // Bit for bit but for -0, which schema 4 reads back as 0 (docs/sessions.md).
+                same = same && value &&
+                       (*value == 0.0 && !exactZero ? signal.value == 0.0
+                                                    : sameBits(*value, signal.value));
+            }
+            if (!same)
+                qWarning("contact frame %zu differs", i);
+            ++i;
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.frames.size());
+
+    i = 0;
+    QVERIFY(reader.readEvents(
+        [&](const SemanticEvent &e) {
+            const SemanticEvent &want = r.events[i++];
+            return sameBits(e.t, want.t) && e.gripper == want.gripper && e.node == want.node &&
+                   e.detector == want.detector && e.message == want.message &&
+                   e.category == want.category && e.phase == want.phase &&
+                   sameBits(e.intensity, want.intensity);
+        },
+        &error));
+    QCOMPARE(i, r.events.size());
+
+    i = 0;
+    QVERIFY(reader.readDeviceFrames(
+        [&](const DeviceFrame &f) {
+            const DeviceFrame &want = r.deviceFrames[i++];
+            bool same = sameBits(f.t, want.t) && f.device == want.device &&
+                        f.channelCount == want.channelCount;
+            for (int c = 0; same && c < f.channelCount; ++c)
+                same = sameBits(f.values[size_t(c)], want.values[size_t(c)]);
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.deviceFrames.size());
+
+    i = 0;
+    QVERIFY(reader.readHandCommands(
+        [&](const HandCommand &in) {
+            const HandCommand &want = r.inputs[i++];
+            bool same =
+                sameBits(in.t, want.t) && in.hand == want.hand && sameBits(in.grip, want.grip);
+            for (size_t c = 0; c < 3; ++c)
+                same = same && sameBits(in.target.pos[c], want.target.pos[c]);
+            for (size_t c = 0; c < 4; ++c)
+                same = same && sameBits(in.target.quat[c], want.target.quat[c]);
+            return same;
+        },
+        &error));
+    QCOMPARE(i, r.inputs.size());
+}
+
+/** The scene states the schema 4 fixture holds, made as they were made for it. */
+std::vector<SceneState> fixtureSceneStates(const Recording &r)
+{
+    std::mt19937_64 random(11);
+    std::vector<SceneState> states;
+    for (size_t i = 0; i < r.frames.size(); i += 40) {
+        SceneState state;
+        state.t = r.frames[i].t;
+        for (int k = 0; k < 37; ++k)
+            state.pose.push_back((random() % 2 ? -1 : 1) * anyDouble(random));
+        state.overlay = {0.0, 0.25, anyDouble(random), 1.0};
+        states.push_back(state);
+    }
+    return states;
+}
+
+/** A writable copy of the schema 4 fixture in `dir`, named `name`. */
+QString schemaFour(const QTemporaryDir &dir, const QString &name)
+{
+    const QString path = dir.filePath(name);
+    QFile::remove(path);
+    if (!QFile::copy(QFINDTESTDATA("data/schema4.db"), path) ||
+        !QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner))
+        qFatal("cannot copy the schema 4 fixture");
+    return path;
+}
+
+/** What reading every stream of the session at `path` gives: counts and rejected rows. */
+struct ReadBack
+{
+    qint64 frames = 0;
+    qint64 events = 0;
+    qint64 deviceFrames = 0;
+    qint64 inputs = 0;
+    qint64 rejectedRows = 0;
+    QStringList rejected;
+};
+
+ReadBack readAll(const QString &path)
+{
+    ReadBack got;
+    QString error;
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    if (!reader)
+        qFatal("%s", qPrintable(error));
+    reader->setRowErrorHandler([&](const QString &line) { got.rejected.append(line); });
+    const bool read =
+        reader->readContactFrames([&](const ContactFrame &, double) { return ++got.frames; },
+                                  &error) &&
+        reader->readEvents([&](const SemanticEvent &) { return ++got.events; }, &error) &&
+        reader->readDeviceFrames([&](const DeviceFrame &) { return ++got.deviceFrames; },
+                                 &error) &&
+        reader->readHandCommands([&](const HandCommand &) { return ++got.inputs; }, &error);
+    if (!read)
+        qFatal("%s", qPrintable(error));
+    got.rejectedRows = reader->rejectedRows();
+    return got;
+}
+
 } // namespace
 
 class TestSessions : public QObject
@@ -163,6 +304,7 @@ class TestSessions : public QObject
 
 private slots:
     void roundTripIsBitForBit();
+    void schemaFourStillReads();
     void negativeZeroReadsAsZero();
     void metadataAndRouter();
     void gripperTraitsReplay();
@@ -176,6 +318,8 @@ private slots:
     void damagedFiles_data();
     void damagedFiles();
     void rowsAreCheckedAsStreamsAre();
+    void blocksAreCheckedAsStreamsAre();
+    void blocksAreSealedBySecond();
     void udpGarbageOversizeAndBatch();
     void udpFlood();
 
@@ -193,78 +337,35 @@ void TestSessions::roundTripIsBitForBit()
     QString error;
     std::unique_ptr<SessionReader> session = SessionReader::open(path, &error);
     QVERIFY2(session, qPrintable(error));
-    QCOMPARE(session->contactFrameCount(), qint64(r.frames.size()));
+    QCOMPARE(session->schemaVersion(), SessionInfo::SchemaVersion);
     QCOMPARE(session->nodeNames(), router->nodeIds());
+    readsBack(*session, r);
+}
 
-    size_t i = 0;
-    QVERIFY(session->readContactFrames(
-        [&](const ContactFrame &frame, double arrival) {
-            const ContactFrame &want = r.frames[i];
-            bool same = sameBits(frame.t, want.t) && frame.gripper == want.gripper &&
-                        frame.signalValues.size() == want.signalValues.size() &&
-                        (std::isnan(arrival) ? std::isnan(r.arrivals[i])
-                                             : sameBits(arrival, r.arrivals[i]));
-            for (auto [got, expected] :
-                 {std::pair(&frame.left, &want.left), std::pair(&frame.right, &want.right)}) {
-                same = same && sameBits(got->f, expected->f) && got->n == expected->n &&
-                       got->hasFxyz == expected->hasFxyz && sameBits(got->mu, expected->mu) &&
-                       session->actors().name(got->actor) == r.actors.name(expected->actor);
-                for (size_t c = 0; c < 3 && expected->hasFxyz; ++c)
-                    same = same && sameBits(got->fxyz[c], expected->fxyz[c]);
-            }
-            for (const SignalValue &signal : want.signalValues) {
-                const double *value = frame.signalValues.find(signal.id);
-                // Bit for bit but for -0, which reads back as 0 (docs/sessions.md).
-                same = same && value &&
-                       (*value == 0.0 ? signal.value == 0.0 : sameBits(*value, signal.value));
-            }
-            if (!same)
-                qWarning("contact frame %zu differs", i);
-            ++i;
-            return same;
-        },
-        &error));
-    QCOMPARE(i, r.frames.size());
-
-    i = 0;
-    QVERIFY(session->readEvents(
-        [&](const SemanticEvent &e) {
-            const SemanticEvent &want = r.events[i++];
-            return sameBits(e.t, want.t) && e.gripper == want.gripper && e.node == want.node &&
-                   e.detector == want.detector && e.message == want.message &&
-                   e.category == want.category && e.phase == want.phase &&
-                   sameBits(e.intensity, want.intensity);
-        },
-        &error));
-    QCOMPARE(i, r.events.size());
-
-    i = 0;
-    QVERIFY(session->readDeviceFrames(
-        [&](const DeviceFrame &f) {
-            const DeviceFrame &want = r.deviceFrames[i++];
-            bool same = sameBits(f.t, want.t) && f.device == want.device &&
-                        f.channelCount == want.channelCount;
-            for (int c = 0; same && c < f.channelCount; ++c)
-                same = sameBits(f.values[size_t(c)], want.values[size_t(c)]);
-            return same;
-        },
-        &error));
-    QCOMPARE(i, r.deviceFrames.size());
-
-    i = 0;
-    QVERIFY(session->readHandCommands(
-        [&](const HandCommand &in) {
-            const HandCommand &want = r.inputs[i++];
-            bool same =
-                sameBits(in.t, want.t) && in.hand == want.hand && sameBits(in.grip, want.grip);
-            for (size_t c = 0; c < 3; ++c)
-                same = same && sameBits(in.target.pos[c], want.target.pos[c]);
-            for (size_t c = 0; c < 4; ++c)
-                same = same && sameBits(in.target.quat[c], want.target.quat[c]);
-            return same;
-        },
-        &error));
-    QCOMPARE(i, r.inputs.size());
+void TestSessions::schemaFourStillReads()
+{
+    // Written by semhap before blocks (tests/sessions/data/schema4.db): synthetic(C3, 200)
+    // as record() writes it, and fixtureSceneStates().
+    const auto router = c3();
+    const QString path = schemaFour(m_dir, "schema4.db");
+    QString error;
+    std::unique_ptr<SessionReader> session = SessionReader::open(path, &error);
+    QVERIFY2(session, qPrintable(error));
+    QCOMPARE(session->schemaVersion(), 4);
+    QCOMPARE(session->info().notes, QString("notes, with \"quotes\""));
+    readsBack(*session, synthetic(*router, 200), false);
+    const std::vector<SceneState> states = fixtureSceneStates(synthetic(*router, 200));
+    QCOMPARE(session->sceneStateCount(), qint64(states.size()));
+    for (const SceneState &want : states) {
+        SceneState state;
+        QVERIFY2(session->readSceneState(want.t, &state, &error), qPrintable(error));
+        QVERIFY(sameBits(state.t, want.t));
+        QCOMPARE(state.pose.size(), want.pose.size());
+        for (size_t i = 0; i < want.pose.size(); ++i)
+            QVERIFY(sameBits(state.pose[i], want.pose[i]));
+        for (size_t i = 0; i < 4; ++i)
+            QVERIFY(sameBits(state.overlay[i], want.overlay[i]));
+    }
 }
 
 void TestSessions::negativeZeroReadsAsZero()
@@ -561,19 +662,20 @@ void TestSessions::sceneStates()
         for (size_t i = 0; i < 4; ++i)
             QVERIFY(sameBits(state.overlay[i], want.overlay[i]));
     };
-    check(0.0, 0);                  // before the first: the first
-    check(states[10].t, 10);        // exactly on one
-    check(states[10].t + 0.01, 10); // between two: the one before
-    check(1e9, states.size() - 1);  // after the last: the last
+    check(0.0, 0); // before the first: the first
+    for (size_t k = 0; k < states.size(); ++k) {
+        check(states[k].t, k);        // exactly on one, in every block
+        check(states[k].t + 0.01, k); // between two: the one before
+    }
+    check(1e9, states.size() - 1); // after the last: the last
 }
 
 void TestSessions::schemaOneStillOpens()
 {
     // A session from before scene states: no table, version 1.
     const auto router = c3();
-    const QString path = m_dir.filePath("schema1.db");
+    const QString path = schemaFour(m_dir, "schema1.db");
     const Recording r = synthetic(*router, 200);
-    record(path, *router, r);
     damage(path, {"DROP TABLE scene_states",
                   "UPDATE metadata SET value = '1' WHERE key = 'schema_version'",
                   "DELETE FROM metadata WHERE key = 'reaction_time'"});
@@ -608,11 +710,11 @@ void TestSessions::damagedFiles_data()
     QTest::newRow("newer schema")
         << QStringList{"UPDATE metadata SET value = '7' WHERE key = 'schema_version'"}
         << QByteArray() << 0
-        << "session schema version 7 is not supported (this semhap reads 1 to 4)";
+        << "session schema version 7 is not supported (this semhap reads 1 to 5)";
     QTest::newRow("schema not a number")
         << QStringList{"UPDATE metadata SET value = 'two' WHERE key = 'schema_version'"}
         << QByteArray() << 0
-        << "session schema version two is not supported (this semhap reads 1 to 4)";
+        << "session schema version two is not supported (this semhap reads 1 to 5)";
     QTest::newRow("reaction time not a number")
         << QStringList{"UPDATE metadata SET value = 'slow' WHERE key = 'reaction_time'"}
         << QByteArray() << 0
@@ -644,9 +746,10 @@ void TestSessions::damagedFiles_data()
         << QStringList{"UPDATE metadata SET value = 'inf' WHERE key = 'left_force_ripple'"}
         << QByteArray() << 0
         << "damaged session: metadata left_force_ripple: expected newtons, 0 or more, got 'inf'";
-    QTest::newRow("missing scene states")
-        << QStringList{"DROP TABLE scene_states"} << QByteArray() << 0
-        << "damaged session: table 'scene_states' is missing";
+    QTest::newRow("missing blocks") << QStringList{"DROP TABLE blocks"} << QByteArray() << 0
+                                    << "damaged session: table 'blocks' is missing";
+    QTest::newRow("missing names") << QStringList{"DROP TABLE names"} << QByteArray() << 0
+                                   << "damaged session: table 'names' is missing";
     QTest::newRow("missing table") << QStringList{"DROP TABLE events"} << QByteArray() << 0
                                    << "damaged session: table 'events' is missing";
     QTest::newRow("truncated") << QStringList() << QByteArray() << 40000
@@ -683,9 +786,8 @@ void TestSessions::rowsAreCheckedAsStreamsAre()
 {
     // Rows a program (or a bit flip) wrote wrong used to replay and export without a word.
     const auto router = c3();
-    const QString path = m_dir.filePath("bad-rows.db");
+    const QString path = schemaFour(m_dir, "bad-rows.db");
     const Recording good = synthetic(*router, 200);
-    record(path, *router, good);
     damage(path, {"UPDATE contact_frames SET left_f = 'abc' WHERE rowid = 3",
                   "UPDATE contact_frames SET gripper = 'middle' WHERE rowid = 5",
                   "UPDATE contact_frames SET right_n = -3 WHERE rowid = 7",
@@ -695,25 +797,13 @@ void TestSessions::rowsAreCheckedAsStreamsAre()
                   "UPDATE events SET intensity = 2 WHERE rowid = 4",
                   "UPDATE device_frames SET v0 = 'x' WHERE rowid = 4",
                   "UPDATE operator_input SET hand = 'middle' WHERE rowid = 6"});
-    QString error;
-    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
-    QVERIFY2(reader, qPrintable(error));
-    QStringList rejected;
-    reader->setRowErrorHandler([&](const QString &line) { rejected.append(line); });
-    qint64 frames = 0;
-    qint64 events = 0;
-    qint64 deviceFrames = 0;
-    qint64 inputs = 0;
-    QVERIFY(
-        reader->readContactFrames([&](const ContactFrame &, double) { return ++frames; }, &error));
-    QVERIFY(reader->readEvents([&](const SemanticEvent &) { return ++events; }, &error));
-    QVERIFY(reader->readDeviceFrames([&](const DeviceFrame &) { return ++deviceFrames; }, &error));
-    QVERIFY(reader->readHandCommands([&](const HandCommand &) { return ++inputs; }, &error));
-    QCOMPARE(frames, qint64(good.frames.size()) - 5);
-    QCOMPARE(events, qint64(good.events.size()) - 2);
-    QCOMPARE(deviceFrames, qint64(good.deviceFrames.size()) - 1);
-    QCOMPARE(inputs, qint64(good.inputs.size()) - 1);
-    QCOMPARE(reader->rejectedRows(), qint64(9));
+    const ReadBack got = readAll(path);
+    QCOMPARE(got.frames, qint64(good.frames.size()) - 5);
+    QCOMPARE(got.events, qint64(good.events.size()) - 2);
+    QCOMPARE(got.deviceFrames, qint64(good.deviceFrames.size()) - 1);
+    QCOMPARE(got.inputs, qint64(good.inputs.size()) - 1);
+    QCOMPARE(got.rejectedRows, qint64(9));
+    const QStringList &rejected = got.rejected;
     const QString at = path + ": ";
     const QStringList expected{
         at + "contact_frames row 3: \"left.f\" must be a finite non-negative number, got \"abc\"",
@@ -737,6 +827,119 @@ void TestSessions::rowsAreCheckedAsStreamsAre()
         else
             QCOMPARE(rejected[i], expected[i]);
     }
+}
+
+void TestSessions::blocksAreCheckedAsStreamsAre()
+{
+    // Schema 5: a block that does not unpack is skipped whole; a row in one that breaks its
+    // stream's rules is skipped as a stream line would be.
+    const auto router = c3();
+    const QString path = m_dir.filePath("bad-blocks.db");
+    const Recording good = synthetic(*router, 200);
+    record(path, *router, good);
+    const auto contact = [](double t, double gripper, double f, double n, double actor) {
+        std::vector<double> row = emptyContactRow(t, gripper);
+        row[3] = f;
+        row[4] = n;
+        row[5] = actor;
+        return row;
+    };
+    std::vector<double> rows;
+    for (const auto &row :
+         {contact(10, 0, 1, 1, -1), contact(10.1, 0, -1, 1, -1), contact(10.2, 2, 1, 1, -1),
+          contact(10.3, 0, 1, 1.5, -1), contact(10.4, 0, 1, 1, 99), contact(5, 0, 1, 1, -1)})
+        rows.insert(rows.end(), row.begin(), row.end());
+    std::vector<double> device{11, 99};
+    device.resize(SessionSchema::DeviceColumns, qQNaN());
+    const std::vector<double> input{12, 3, 0, 0, 0, 1, 0, 0, 0, 0.5};
+    qint64 last = 0; // the blocks added below are last + 1 to last + 4
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "last");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        QSqlQuery query("SELECT max(rowid) FROM blocks", db);
+        QVERIFY(query.next());
+        last = query.value(0).toLongLong();
+    }
+    QSqlDatabase::removeDatabase("last");
+    using S = SessionSchema::Stream;
+    damage(path, {insertBlock(S::ContactFrames, rows, SessionSchema::ContactColumns),
+                  "INSERT INTO blocks VALUES ('contact_frames', 20, 21, 3, 17, 'not zstd')",
+                  insertBlock(S::DeviceFrames, device, SessionSchema::DeviceColumns),
+                  insertBlock(S::OperatorInput, input, SessionSchema::InputColumns)});
+    const ReadBack got = readAll(path);
+    QCOMPARE(got.frames, qint64(good.frames.size()) + 1);
+    QCOMPARE(got.deviceFrames, qint64(good.deviceFrames.size()));
+    QCOMPARE(got.inputs, qint64(good.inputs.size()));
+    const auto at = [&](const char *stream, int block) {
+        return QStringLiteral("%1: %2 block %3").arg(path, stream).arg(last + block);
+    };
+    const QStringList expected{
+        at("contact_frames", 1) + " row 2: \"left.f\" must be a finite non-negative number, "
+                                  "got -1",
+        at("contact_frames", 1) + " row 3: \"gripper\" must be 0 (left) or 1 (right), got 2",
+        at("contact_frames", 1) + " row 4: \"left.n\" must be a non-negative integer, got 1.5",
+        at("contact_frames", 1) + " row 5: \"left.actor\" names no actor of the session",
+        at("contact_frames", 1) + " row 6: \"t\" must increase per gripper, got 5 after 10 for "
+                                  "\"left\"",
+        at("contact_frames", 2) + ": a block is not zstd data",
+        at("device_frames", 3) + " row 1: \"t\", \"device\" and the values must be finite "
+                                 "numbers and a device of the session",
+        at("operator_input", 4) + " row 1: \"t\", the pose and the grip must be finite "
+                                  "numbers and \"hand\" left or right"};
+    QCOMPARE(got.rejected, expected);
+    QCOMPARE(got.rejectedRows, qint64(5 + 3 + 1 + 1));
+}
+
+void TestSessions::blocksAreSealedBySecond()
+{
+    // Each commit writes its rows as a tail block, which a reader sees at once (what a crash
+    // leaves); a second's tail blocks become one sealed block, which packs several times
+    // smaller. A finished session holds one block per stream and second.
+    const auto router = c3();
+    const QString path = m_dir.filePath("sealed.db");
+    const Recording r = synthetic(*router, 3500); // 3.5 s
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    writer->setActorTable(&r.actors);
+    const auto write = [&](size_t from, size_t to) {
+        for (size_t i = from; i < to; ++i)
+            writer->recordContactFrame(r.frames[i], r.arrivals[i]);
+    };
+    write(0, 1000); // half a second: no block sealed yet
+    QTRY_COMPARE_WITH_TIMEOUT(writer->committed(), quint64(1000), 30000);
+    {
+        std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+        QVERIFY2(reader, qPrintable(error));
+        QCOMPARE(reader->contactFrameCount(), qint64(1000));
+        size_t i = 0;
+        QVERIFY(reader->readContactFrames(
+            [&](const ContactFrame &frame, double) {
+                return sameBits(frame.t, r.frames[i++].t) &&
+                       frame.left.n == r.frames[i - 1].left.n;
+            },
+            &error));
+        QCOMPARE(i, size_t(1000));
+    }
+    write(1000, r.frames.size());
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+    QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "sealed");
+    db.setDatabaseName(path);
+    QVERIFY(db.open());
+    {
+        QSqlQuery query(db);
+        QVERIFY(query.exec("SELECT stream, count(*), sum(rows) FROM blocks GROUP BY stream"));
+        QVERIFY(query.next());
+        QCOMPARE(query.value(0).toString(), QString("contact_frames"));
+        QCOMPARE(query.value(1).toInt(), 4);
+        QCOMPARE(query.value(2).toInt(), 7000);
+        QVERIFY(!query.next());
+    }
+    db.close();
+    db = QSqlDatabase();
+    QSqlDatabase::removeDatabase("sealed");
 }
 
 void TestSessions::udpGarbageOversizeAndBatch()

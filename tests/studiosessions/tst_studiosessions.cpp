@@ -15,6 +15,7 @@
 #include "router.h"
 #include "routereditor.h"
 #include "routergraph.h"
+#include "sessionblocks.h"
 #include "sessionreader.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
@@ -459,7 +460,12 @@ void TestStudioSessions::replaySaysWhichRowsItSkipped()
         db.setDatabaseName(path);
         QVERIFY(db.open());
         QSqlQuery query(db);
-        QVERIFY(query.exec("UPDATE contact_frames SET left_f = 'abc' WHERE rowid IN (5, 6)"));
+        std::vector<double> rows = emptyContactRow(0.5, 0);
+        rows[3] = -1; // a negative force, twice
+        rows.insert(rows.end(), rows.begin(), rows.end());
+        rows[SessionSchema::ContactColumns] = 0.6;
+        QVERIFY(query.exec(insertBlock(SessionSchema::Stream::ContactFrames, rows,
+                                       SessionSchema::ContactColumns)));
         QVERIFY(query.exec("UPDATE events SET message = 'Shout!' WHERE rowid = 1"));
         db.close();
     }
