@@ -78,9 +78,10 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
         std::array<int, 2> wrench{-1, -1};
     };
     std::array<Hand, 2> hands;
-    const auto lazy = [&](int &id, std::uint16_t schemaId, const QString &topic) {
+    // The topic is named only the first time: naming it per message cost a tenth of export.
+    const auto lazy = [&](int &id, std::uint16_t schemaId, const auto &topic) {
         if (id < 0)
-            id = channel(schemaId, topic);
+            id = channel(schemaId, topic());
         return std::uint16_t(id);
     };
 
@@ -90,12 +91,13 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
         [&](const ContactFrame &frame, double) {
             Hand &hand = hands[size_t(frame.gripper)];
             M::contact(cdr, stamp(frame.t), frame, actors);
-            mcap.addMessage(lazy(hand.contact, contactSchema, M::contactTopic(frame.gripper)),
+            mcap.addMessage(lazy(hand.contact, contactSchema,
+                                 [&] { return M::contactTopic(frame.gripper); }),
                             logTime(frame.t), cdr.bytes());
             for (const bool left : {true, false}) {
                 M::wrench(cdr, stamp(frame.t), frame, left);
                 mcap.addMessage(lazy(hand.wrench[left ? 0 : 1], wrenchSchema,
-                                     M::wrenchTopic(frame.gripper, left)),
+                                     [&] { return M::wrenchTopic(frame.gripper, left); }),
                                 logTime(frame.t), cdr.bytes());
             }
             return mcap.error().isEmpty();
@@ -120,7 +122,8 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
                    [&](const HandCommand &h) {
                        M::input(cdr, stamp(h.t), h);
                        mcap.addMessage(
-                           lazy(hands[size_t(h.hand)].input, inputSchema, M::inputTopic(h.hand)),
+                           lazy(hands[size_t(h.hand)].input, inputSchema,
+                                [&] { return M::inputTopic(h.hand); }),
                            logTime(h.t), cdr.bytes());
                        return mcap.error().isEmpty();
                    },
