@@ -1,10 +1,10 @@
 # SPDX-License-Identifier: MIT
 # Install rules and the exported CMake package: find_package(semhap) gives semhap::core and
-# semhap::patterns to other people's tests. Only the public API's headers are installed.
+# semhap::patterns (with semhap::base under them) to other people's tests. Only the public API's headers are installed.
 include(CMakePackageConfigHelpers)
 
 set(SEMHAP_PUBLIC_HEADERS
-    patterns/loaderror.h patterns/waveform.h patterns/pattern.h patterns/voice.h
+    base/loaderror.h patterns/waveform.h patterns/pattern.h patterns/voice.h
     patterns/patternlibrary.h patterns/paramspec.h
     core/contactframe.h core/framesignals.h core/nametable.h core/actortable.h
     core/semanticevent.h core/deviceframe.h
@@ -16,7 +16,7 @@ set(SEMHAP_PUBLIC_HEADERS
     core/pipeline.h core/nodeactivity.h core/sinklist.h core/statistics.h
     core/patternrender.h)
 
-install(TARGETS semhap_patterns semhap_core EXPORT semhapTargets
+install(TARGETS semhap_base semhap_patterns semhap_core EXPORT semhapTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
@@ -58,9 +58,9 @@ install(FILES ${CMAKE_CURRENT_LIST_DIR}/../resources/traces/demo.jsonl
 # (tests/package checks): the studio's Help → Documentation opens docs/studio.md.
 install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
     FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
-foreach(readme README.md bandsim/README.md cli/README.md core/README.md devices/PROTOCOL.md
-        devices/README.md firmware/README.md patterns/README.md resources/README.md
-        ros/README.md sim/README.md studio/README.md tests/bench/README.md)
+foreach(readme README.md base/README.md bandsim/README.md cli/README.md core/README.md
+        devices/PROTOCOL.md devices/README.md firmware/README.md patterns/README.md
+        resources/README.md ros/README.md sim/README.md studio/README.md tests/bench/README.md)
     get_filename_component(folder ${readme} DIRECTORY)
     install(FILES ${CMAKE_CURRENT_LIST_DIR}/../${readme}
         DESTINATION ${CMAKE_INSTALL_DOCDIR}/${folder})
