@@ -525,6 +525,16 @@ private:
 
     void insert(const SceneState &state, double)
     {
+        // A block holds rows of at most SessionBlock::MaxWidth numbers: a wider scene state
+        // could be written but never read back, so it is refused here, said once.
+        if (state.pose.size() + SessionSchema::SceneColumns > size_t(SessionBlock::MaxWidth)) {
+            if (m_error.isEmpty())
+                m_error = m_path + QStringLiteral(": cannot write: a scene state of %1 numbers "
+                                                  "is more than a block's row holds (%2)")
+                                       .arg(state.pose.size())
+                                       .arg(SessionBlock::MaxWidth - SessionSchema::SceneColumns);
+            return;
+        }
         m_row.assign({state.t});
         m_row.insert(m_row.end(), state.overlay.begin(), state.overlay.end());
         m_row.insert(m_row.end(), state.pose.begin(), state.pose.end());

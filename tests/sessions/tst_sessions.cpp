@@ -320,6 +320,7 @@ private slots:
     void rowsAreCheckedAsStreamsAre();
     void blocksAreCheckedAsStreamsAre();
     void blocksAreSealedBySecond();
+    void aSceneTooWideIsRefused();
     void udpGarbageOversizeAndBatch();
     void udpFlood();
 
@@ -940,6 +941,24 @@ void TestSessions::blocksAreSealedBySecond()
     db.close();
     db = QSqlDatabase();
     QSqlDatabase::removeDatabase("sealed");
+}
+
+void TestSessions::aSceneTooWideIsRefused()
+{
+    // A block's row holds at most SessionBlock::MaxWidth numbers: a wider scene state is
+    // refused when written, never written to be refused when read.
+    const auto router = c3();
+    const QString path = m_dir.filePath("wide.db");
+    QString error;
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    SceneState state;
+    state.pose.assign(size_t(SessionBlock::MaxWidth), 0.5);
+    writer->recordSceneState(state);
+    QVERIFY(!writer->finish(&error));
+    QCOMPARE(error, path + ": cannot write: a scene state of 65536 numbers is more than a "
+                           "block's row holds (65531)");
 }
 
 void TestSessions::udpGarbageOversizeAndBatch()
