@@ -10,8 +10,13 @@
 
 #include <QJsonDocument>
 
+#include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <map>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 namespace semhap {
 
@@ -20,6 +25,111 @@ namespace {
 const QLatin1String Cdr("cdr");
 const QLatin1String Ros2Msg("ros2msg");
 using M = SemhapMessages;
+
+/**
+ * The writer on a thread of its own: the export reads the session and encodes its messages
+ * while the writer packs and compresses chunks, so two cores share the work. Messages go
+ * over in batches. A channel is made only once the writer has caught up (drain()), so the
+ * file is byte for byte what one thread writes.
+ */
+class WriterThread
+{
+public:
+    explicit WriterThread(McapWriter &mcap) : m_mcap(mcap), m_thread([this] { run(); }) {}
+    ~WriterThread() { finish(); }
+
+    /** Queues a message; the writer writes it in order with the others. */
+    void add(std::uint16_t channel, std::uint64_t logTime, const QByteArray &data)
+    {
+        m_front.messages.push_back({channel, logTime, m_front.bytes.size(), data.size()});
+        m_front.bytes.append(data);
+        if (m_front.messages.size() >= BatchSize)
+            hand();
+    }
+    /** Waits until every message queued is written: then the McapWriter may be used. */
+    void drain()
+    {
+        hand();
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_idle.wait(lock, [this] { return !m_busy; });
+    }
+    /** Writes what is queued and ends the thread. */
+    void finish()
+    {
+        if (!m_thread.joinable())
+            return;
+        drain();
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stopping = true;
+        }
+        m_wake.notify_one();
+        m_thread.join();
+    }
+    /** True once a write failed: McapWriter::error() says why, after drain(). */
+    bool failed() const { return m_failed.load(std::memory_order_relaxed); }
+
+private:
+    static constexpr size_t BatchSize = 4096;
+    struct Message
+    {
+        std::uint16_t channel;
+        std::uint64_t logTime;
+        qsizetype offset, size; ///< in the batch's bytes
+    };
+    struct Batch
+    {
+        std::vector<Message> messages;
+        QByteArray bytes;
+    };
+
+    /** Hands the queued batch to the writer once it has finished the one before. */
+    void hand()
+    {
+        if (m_front.messages.empty())
+            return;
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_idle.wait(lock, [this] { return !m_busy; });
+        std::swap(m_front, m_back); // the writer left its batch empty
+        m_busy = true;
+        lock.unlock();
+        m_wake.notify_one();
+    }
+
+    void run()
+    {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        for (;;) {
+            m_wake.wait(lock, [this] { return m_busy || m_stopping; });
+            if (!m_busy)
+                return;
+            lock.unlock();
+            for (const Message &m : m_back.messages) {
+                if (!failed() &&
+                    !m_mcap.addMessage(m.channel, m.logTime,
+                                       QByteArray::fromRawData(m_back.bytes.constData() + m.offset,
+                                                               m.size)))
+                    m_failed = true;
+            }
+            m_back.messages.clear();
+            m_back.bytes.resize(0); // keeps its capacity for the next batch
+            lock.lock();
+            m_busy = false;
+            m_idle.notify_all();
+        }
+    }
+
+    McapWriter &m_mcap;
+    Batch m_front; ///< the reading thread's
+    Batch m_back;  ///< the writer's while m_busy
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::condition_variable m_idle;
+    bool m_busy = false;
+    bool m_stopping = false;
+    std::atomic<bool> m_failed{false};
+    std::thread m_thread;
+};
 
 } // namespace
 
@@ -47,10 +157,14 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
     // A gripper's and a hand's channels come with their first message: a one-handed
     // session shows no empty topics.
     std::map<QString, std::uint16_t> channels;
+    // Nothing is queued before the streams are read: the channels made until then need no drain.
+    WriterThread writer(mcap);
     const auto channel = [&](std::uint16_t schemaId, const QString &topic) {
         const auto it = channels.find(topic);
-        return it != channels.end() ? it->second
-                                    : channels[topic] = mcap.addChannel(schemaId, topic, Cdr);
+        if (it != channels.end())
+            return it->second;
+        writer.drain(); // the channel's record goes after every message before it
+        return channels[topic] = mcap.addChannel(schemaId, topic, Cdr);
     };
     const std::uint16_t events = mcap.addChannel(eventSchema, M::eventsTopic(), Cdr);
     std::vector<std::uint16_t> devices;
@@ -91,44 +205,45 @@ bool McapExport::write(SessionReader &session, QIODevice *out, QString *error)
         [&](const ContactFrame &frame, double) {
             Hand &hand = hands[size_t(frame.gripper)];
             M::contact(cdr, stamp(frame.t), frame, actors);
-            mcap.addMessage(lazy(hand.contact, contactSchema,
+            writer.add(lazy(hand.contact, contactSchema,
                                  [&] { return M::contactTopic(frame.gripper); }),
                             logTime(frame.t), cdr.bytes());
             for (const bool left : {true, false}) {
                 M::wrench(cdr, stamp(frame.t), frame, left);
-                mcap.addMessage(lazy(hand.wrench[left ? 0 : 1], wrenchSchema,
+                writer.add(lazy(hand.wrench[left ? 0 : 1], wrenchSchema,
                                      [&] { return M::wrenchTopic(frame.gripper, left); }),
                                 logTime(frame.t), cdr.bytes());
             }
-            return mcap.error().isEmpty();
+            return !writer.failed();
         },
         error);
     ok = ok && session.readEvents(
                    [&](const SemanticEvent &e) {
                        M::event(cdr, stamp(e.t), e, session.nodeNames().value(e.node));
-                       mcap.addMessage(events, logTime(e.t), cdr.bytes());
-                       return mcap.error().isEmpty();
+                       writer.add(events, logTime(e.t), cdr.bytes());
+                       return !writer.failed();
                    },
                    error);
     ok = ok && session.readDeviceFrames(
                    [&](const DeviceFrame &f) {
                        M::device(cdr, stamp(f.t), f, session.deviceNames().value(f.device),
                                  models.value(f.device), channelNames[size_t(f.device)]);
-                       mcap.addMessage(devices[size_t(f.device)], logTime(f.t), cdr.bytes());
-                       return mcap.error().isEmpty();
+                       writer.add(devices[size_t(f.device)], logTime(f.t), cdr.bytes());
+                       return !writer.failed();
                    },
                    error);
     ok = ok && session.readHandCommands(
                    [&](const HandCommand &h) {
                        M::input(cdr, stamp(h.t), h);
-                       mcap.addMessage(
+                       writer.add(
                            lazy(hands[size_t(h.hand)].input, inputSchema,
                                 [&] { return M::inputTopic(h.hand); }),
                            logTime(h.t), cdr.bytes());
-                       return mcap.error().isEmpty();
+                       return !writer.failed();
                    },
                    error);
-    if (!ok) {
+    writer.finish();
+    if (!ok || writer.failed()) {
         if (error->isEmpty())
             *error = mcap.error();
         return false;

@@ -328,6 +328,10 @@ void TestSessionCli::errors_data()
     QTest::newRow("export without format")
         << QStringList{"export", Trace} << 2
         << "semhap export: --csv DIR, --jsonl DIR or --mcap FILE is required";
+    // The export's writer runs on a thread of its own; its write errors still end it.
+    QTest::newRow("export to a full disk")
+        << QStringList{"export", m_session, "--mcap", "/dev/full"} << 1
+        << "/dev/full: cannot write: No space left on device";
     QTest::newRow("listen without a source")
         << QStringList{"listen"} << 2
         << "semhap listen: give one source: --udp PORT or --foxglove ws://HOST:PORT";
