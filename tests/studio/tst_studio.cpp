@@ -115,24 +115,30 @@ std::optional<QPointF> projected(const OrbitCamera &camera, const std::array<dou
 QString driveTo(SimViewport *viewport, HandDrive *drive, size_t axis, double goal)
 {
     auto at = [drive, axis] { return drive->command(drive->activeHand())->target.pos[axis]; };
-    const double sign = goal > at() ? 1.0 : -1.0;
-    Qt::Key key = sign > 0 ? Qt::Key_R : Qt::Key_F;
-    if (axis < 2) {
+    auto landed = [drive, axis](double sign) {
+        return axis == 2 && sign < 0 && drive->status(drive->activeHand()).floor.has_value();
+    };
+    auto keyToward = [drive, axis](double sign) {
+        if (axis == 2)
+            return sign > 0 ? Qt::Key_R : Qt::Key_F;
         const auto [x, y] = drive->awayDirection();
         const double away = axis == 0 ? x : y;
         const double right = axis == 0 ? y : -x;
-        key = away != 0 ? (away * sign > 0 ? Qt::Key_W : Qt::Key_S)
-                        : (right * sign > 0 ? Qt::Key_D : Qt::Key_A);
-    }
-    QTest::keyPress(viewport, key);
+        return away != 0 ? (away * sign > 0 ? Qt::Key_W : Qt::Key_S)
+                         : (right * sign > 0 ? Qt::Key_D : Qt::Key_A);
+    };
+    // As a person lands on a spot: the last centimetre at a quarter of the speed (Shift held),
+    // then an overshoot taken back in taps. A busy machine that stalls while a key is held
+    // moves the target further than asked (up to the drive's longest tick); a tap moves one
+    // tick's worth whatever the machine, so the spot reached does not depend on its speed.
+    constexpr double Tolerance = 0.002;
     QElapsedTimer clock;
     clock.start();
-    // Until there, or the guard holds the target on what is below. The last centimetre at a
-    // quarter of the speed (Shift held), as a person lands on a spot: a busy machine that
-    // looks at the target late then overshoots by a quarter as much.
+    const double sign = goal > at() ? 1.0 : -1.0;
+    Qt::Key key = keyToward(sign);
+    QTest::keyPress(viewport, key);
     bool slow = false;
-    while ((goal - at()) * sign > 0 && clock.elapsed() < 10000 &&
-           !(axis == 2 && drive->status(drive->activeHand()).floor)) {
+    while ((goal - at()) * sign > 0 && clock.elapsed() < 10000 && !landed(sign)) {
         if (!slow && std::abs(goal - at()) < 0.01) {
             QTest::keyPress(viewport, Qt::Key_Shift);
             slow = true;
@@ -140,12 +146,17 @@ QString driveTo(SimViewport *viewport, HandDrive *drive, size_t axis, double goa
         QTest::qWait(10);
     }
     QTest::keyRelease(viewport, key);
-    if (slow)
-        QTest::keyRelease(viewport, Qt::Key_Shift);
-    if ((goal - at()) * sign <= 0)
+    if (!slow)
+        QTest::keyPress(viewport, Qt::Key_Shift);
+    for (int tap = 0; tap < 200 && !landed(sign) && std::abs(goal - at()) > Tolerance; ++tap) {
+        key = keyToward(goal > at() ? 1.0 : -1.0);
+        QTest::keyClick(viewport, key);
+    }
+    QTest::keyRelease(viewport, Qt::Key_Shift);
+    // Landing ends the way down wherever the floor is; elsewhere the target must be there.
+    if (landed(sign) || std::abs(goal - at()) <= Tolerance)
         return QString();
-    return QString("key %1 held %2 ms: the target is at %3 of %4, the view's azimuth %5, "
-                   "focus %6")
+    return QString("key %1, %2 ms: the target is at %3 of %4, the view's azimuth %5, focus %6")
         .arg(QKeySequence(key).toString())
         .arg(clock.elapsed())
         .arg(at())
