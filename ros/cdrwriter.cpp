@@ -1,61 +1,36 @@
 // SPDX-License-Identifier: MIT
 #include "cdrwriter.h"
 
-#include <QtEndian>
-
-#include <cstring>
-
 namespace semhap {
 
 void CdrWriter::clear()
 {
-    m_bytes.resize(0); // keeps the capacity: a message after the first allocates nothing
-    m_bytes.append("\x00\x01\x00\x00", 4); // CDR, little-endian
+    m_size = 0;
+    std::memcpy(grow(4), "\x00\x01\x00\x00", 4); // CDR, little-endian
 }
 
-void CdrWriter::align(int size)
-{
-    // Alignment counts from after the encapsulation header.
-    const qsizetype at = m_bytes.size() - 4;
-    const qsizetype padded = (at + size - 1) / size * size;
-    m_bytes.append(padded - at, '\0');
-}
-
-template<typename T> void CdrWriter::put(T value)
-{
-    align(int(sizeof(T)));
-    char bytes[sizeof(T)];
-    qToLittleEndian(value, bytes);
-    m_bytes.append(bytes, sizeof(T));
-}
-
-void CdrWriter::uint8(std::uint8_t value)
-{
-    m_bytes.append(char(value));
-}
-
-void CdrWriter::int32(std::int32_t value)
-{
-    put(value);
-}
-
-void CdrWriter::uint32(std::uint32_t value)
-{
-    put(value);
-}
-
-void CdrWriter::float64(double value)
-{
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    put(bits);
-}
-
-void CdrWriter::string(const QByteArray &utf8)
+void CdrWriter::string(QByteArrayView utf8)
 {
     uint32(std::uint32_t(utf8.size() + 1));
-    m_bytes.append(utf8);
-    m_bytes.append('\0');
+    char *at = grow(size_t(utf8.size()) + 1);
+    std::memcpy(at, utf8.data(), size_t(utf8.size()));
+    at[utf8.size()] = '\0';
+}
+
+void CdrWriter::string(QStringView text)
+{
+    // Names are ASCII nearly always: those are copied byte for byte, the rest encoded.
+    for (const QChar c : text) {
+        if (c.unicode() >= 0x80) {
+            string(QByteArrayView(text.toUtf8()));
+            return;
+        }
+    }
+    uint32(std::uint32_t(text.size() + 1));
+    char *at = grow(size_t(text.size()) + 1);
+    for (const QChar c : text)
+        *at++ = char(c.unicode());
+    *at = '\0';
 }
 
 void CdrWriter::time(std::int64_t nanoseconds)

@@ -414,7 +414,7 @@ int FoxgloveServer::addChannel(const QString &topic, const QString &schemaName,
     return int(m_shared->channels.size() - 1);
 }
 
-void FoxgloveServer::publish(int channel, std::uint64_t ns, const QByteArray &payload)
+void FoxgloveServer::publish(int channel, std::uint64_t ns, QByteArrayView payload)
 {
     QMutexLocker lock(&m_shared->mutex);
     ++m_shared->published;
@@ -422,7 +422,7 @@ void FoxgloveServer::publish(int channel, std::uint64_t ns, const QByteArray &pa
         ++m_shared->lost;
         return;
     }
-    m_shared->pending.push_back({channel, ns, payload});
+    m_shared->pending.push_back({channel, ns, payload.toByteArray()});
     // The server's thread starved (a machine far too busy): the publisher still never waits.
     if (m_shared->pending.size() > Pending) {
         m_shared->pending.pop_front();

@@ -63,7 +63,7 @@ public:
      */
     int addChannel(const QString &topic, const QString &schemaName, const QByteArray &schema);
     /** Sends `payload` on `channel`, stamped `ns` (ns since the epoch). Any thread. */
-    void publish(int channel, std::uint64_t ns, const QByteArray &payload);
+    void publish(int channel, std::uint64_t ns, QByteArrayView payload);
 
     /**
      * Sends each client what is waiting for it (up to Goodbye ms) and closes; later

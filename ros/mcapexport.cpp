@@ -39,10 +39,10 @@ public:
     ~WriterThread() { finish(); }
 
     /** Queues a message; the writer writes it in order with the others. */
-    void add(std::uint16_t channel, std::uint64_t logTime, const QByteArray &data)
+    void add(std::uint16_t channel, std::uint64_t logTime, QByteArrayView data)
     {
-        m_front.messages.push_back({channel, logTime, m_front.bytes.size(), data.size()});
-        m_front.bytes.append(data);
+        m_front.messages.push_back({channel, logTime, m_front.bytes.size(), size_t(data.size())});
+        m_front.bytes.insert(m_front.bytes.end(), data.begin(), data.end());
         if (m_front.messages.size() >= BatchSize)
             hand();
     }
@@ -75,12 +75,12 @@ private:
     {
         std::uint16_t channel;
         std::uint64_t logTime;
-        qsizetype offset, size; ///< in the batch's bytes
+        size_t offset, size; ///< in the batch's bytes
     };
     struct Batch
     {
         std::vector<Message> messages;
-        QByteArray bytes;
+        std::vector<char> bytes;
     };
 
     /** Hands the queued batch to the writer once it has finished the one before. */
@@ -105,14 +105,13 @@ private:
                 return;
             lock.unlock();
             for (const Message &m : m_back.messages) {
-                if (!failed() &&
-                    !m_mcap.addMessage(m.channel, m.logTime,
-                                       QByteArray::fromRawData(m_back.bytes.constData() + m.offset,
-                                                               m.size)))
+                if (!failed() && !m_mcap.addMessage(m.channel, m.logTime,
+                                                    QByteArrayView(m_back.bytes.data() + m.offset,
+                                                                   qsizetype(m.size))))
                     m_failed = true;
             }
             m_back.messages.clear();
-            m_back.bytes.resize(0); // keeps its capacity for the next batch
+            m_back.bytes.clear(); // keeps its capacity for the next batch
             lock.lock();
             m_busy = false;
             m_idle.notify_all();

@@ -49,16 +49,17 @@ struct Body
     }
 };
 
-QByteArray recordBytes(std::uint8_t opcode, const QByteArray &body)
+QByteArray recordBytes(std::uint8_t opcode, QByteArrayView body)
 {
     Body r;
+    r.bytes.reserve(9 + body.size());
     r.bytes.append(char(opcode));
     r.number(std::uint64_t(body.size()));
     r.bytes += body;
     return r.bytes;
 }
 
-std::uint32_t crc(std::uint32_t running, const QByteArray &bytes)
+std::uint32_t crc(std::uint32_t running, QByteArrayView bytes)
 {
     return std::uint32_t(
         ::crc32(running, reinterpret_cast<const Bytef *>(bytes.constData()), uInt(bytes.size())));
@@ -68,11 +69,11 @@ std::uint32_t crc(std::uint32_t running, const QByteArray &bytes)
 
 McapWriter::McapWriter(QIODevice *out) : m_out(out) {}
 
-bool McapWriter::write(const QByteArray &bytes)
+bool McapWriter::write(QByteArrayView bytes)
 {
     if (!m_error.isEmpty())
         return false;
-    if (m_out->write(bytes) != bytes.size()) {
+    if (m_out->write(bytes.data(), bytes.size()) != bytes.size()) {
         m_error = m_out->errorString();
         return false;
     }
@@ -80,7 +81,7 @@ bool McapWriter::write(const QByteArray &bytes)
     return true;
 }
 
-bool McapWriter::record(std::uint8_t opcode, const QByteArray &body)
+bool McapWriter::record(std::uint8_t opcode, QByteArrayView body)
 {
     const QByteArray bytes = recordBytes(opcode, body);
     m_dataCrc = crc(m_dataCrc, bytes);
@@ -117,7 +118,7 @@ std::uint16_t McapWriter::addChannel(std::uint16_t schemaId, const QString &topi
     return id;
 }
 
-bool McapWriter::addMessage(std::uint16_t channel, std::uint64_t logTime, const QByteArray &data)
+bool McapWriter::addMessage(std::uint16_t channel, std::uint64_t logTime, QByteArrayView data)
 {
     const auto sequence = std::uint32_t(m_channelCounts[channel]++);
     m_index[channel].emplace_back(logTime, std::uint64_t(m_chunk.size()));
@@ -129,58 +130,71 @@ bool McapWriter::addMessage(std::uint16_t channel, std::uint64_t logTime, const 
     qToLittleEndian(sequence, head + 11);
     qToLittleEndian(logTime, head + 15);
     qToLittleEndian(logTime, head + 23);
-    m_chunk.append(head, sizeof head);
-    m_chunk.append(data);
+    m_chunk.insert(m_chunk.end(), head, head + sizeof head);
+    m_chunk.insert(m_chunk.end(), data.begin(), data.end());
     m_chunkStart = std::min(m_chunkStart, logTime);
     m_chunkEnd = std::max(m_chunkEnd, logTime);
     m_start = std::min(m_start, logTime);
     m_end = std::max(m_end, logTime);
     ++m_messageCount;
-    return m_chunk.size() < ChunkSize || flushChunk();
+    return m_chunk.size() < size_t(ChunkSize) || flushChunk();
 }
 
 bool McapWriter::flushChunk()
 {
-    if (m_chunk.isEmpty())
+    if (m_chunk.empty())
         return m_error.isEmpty();
-    QByteArray compressed(qsizetype(ZSTD_compressBound(size_t(m_chunk.size()))), '\0');
-    const size_t size = ZSTD_compress(compressed.data(), size_t(compressed.size()),
-                                      m_chunk.constData(), size_t(m_chunk.size()), 3);
+    const QByteArrayView chunk(m_chunk.data(), qsizetype(m_chunk.size()));
+    m_compressed.resize(std::max(m_compressed.size(), ZSTD_compressBound(m_chunk.size())));
+    const size_t size = ZSTD_compress(m_compressed.data(), m_compressed.size(), chunk.data(),
+                                      size_t(chunk.size()), 3);
     if (ZSTD_isError(size)) {
         m_error = QStringLiteral("zstd: %1").arg(QLatin1String(ZSTD_getErrorName(size)));
         return false;
     }
-    compressed.truncate(qsizetype(size));
+    const QByteArrayView compressed(m_compressed.data(), qsizetype(size));
     ChunkIndex index;
     index.start = m_chunkStart;
     index.end = m_chunkEnd;
     index.offset = m_offset;
     index.compressed = size;
-    index.uncompressed = std::uint64_t(m_chunk.size());
+    index.uncompressed = std::uint64_t(chunk.size());
+    // The Chunk record's head, then the compressed records written as they are: a chunk is
+    // never copied into its record.
     Body body;
-    body.number(m_chunkStart).number(m_chunkEnd).number(std::uint64_t(m_chunk.size()));
-    body.number(crc(0, m_chunk)).string(QStringLiteral("zstd"));
+    body.number(m_chunkStart).number(m_chunkEnd).number(std::uint64_t(chunk.size()));
+    body.number(crc(0, chunk)).string(QStringLiteral("zstd"));
     body.number(std::uint64_t(size));
-    body.bytes += compressed;
-    if (!record(0x06, body.bytes))
+    Body head;
+    head.bytes.append(char(0x06));
+    head.number(std::uint64_t(body.bytes.size()) + size);
+    head.bytes += body.bytes;
+    m_dataCrc = crc(crc(m_dataCrc, head.bytes), compressed);
+    if (!write(head.bytes) || !write(compressed))
         return false;
     index.length = m_offset - index.offset;
     const std::uint64_t indexesStart = m_offset;
     for (auto &[channel, entries] : m_index) {
         if (entries.empty())
             continue;
-        Body records;
-        for (const auto &[time, offset] : entries)
-            records.number(time).number(offset);
+        // Written in place: the index has a record per message of the chunk.
         Body message;
-        message.number(channel).data32(records.bytes);
+        message.number(channel).number(std::uint32_t(entries.size() * 16));
+        const qsizetype at = message.bytes.size();
+        message.bytes.resize(at + qsizetype(entries.size() * 16));
+        char *entry = message.bytes.data() + at;
+        for (const auto &[time, offset] : entries) {
+            qToLittleEndian(time, entry);
+            qToLittleEndian(offset, entry + 8);
+            entry += 16;
+        }
         index.indexOffsets[channel] = m_offset;
         if (!record(0x07, message.bytes))
             return false;
     }
     index.indexLength = m_offset - indexesStart;
     m_chunkIndexes.push_back(index);
-    m_chunk.resize(0); // its capacity serves the next chunk
+    m_chunk.clear(); // its capacity serves the next chunk
     for (auto &entry : m_index)
         entry.second.clear();
     m_chunkStart = UINT64_MAX;
@@ -264,7 +278,7 @@ bool McapWriter::end()
     // The Footer's CRC covers the summary through its own summary_offset_start.
     Body footer;
     footer.number(summaryStart).number(offsetsStart);
-    QByteArray head = recordBytes(0x02, footer.bytes + QByteArray(4, '\0'));
+    QByteArray head = recordBytes(0x02, QByteArray(footer.bytes + QByteArray(4, '\0')));
     head.chop(4);
     summaryCrc = crc(summaryCrc, head);
     footer.number(summaryCrc);

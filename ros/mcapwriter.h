@@ -34,7 +34,7 @@ public:
     std::uint16_t addChannel(std::uint16_t schemaId, const QString &topic,
                              const QString &messageEncoding);
     /** A message; times in nanoseconds. Messages may come in any order. */
-    bool addMessage(std::uint16_t channel, std::uint64_t logTime, const QByteArray &data);
+    bool addMessage(std::uint16_t channel, std::uint64_t logTime, QByteArrayView data);
     /** A Metadata record of name and key-value pairs. */
     bool addMetadata(const QString &name, const std::map<QString, QString> &values);
     /** The last chunk, the data end and the summary; false with error() on a failed write. */
@@ -52,8 +52,8 @@ private:
         std::uint64_t indexLength = 0, compressed = 0, uncompressed = 0;
     };
 
-    bool write(const QByteArray &bytes);
-    bool record(std::uint8_t opcode, const QByteArray &body);
+    bool write(QByteArrayView bytes);
+    bool record(std::uint8_t opcode, QByteArrayView body);
     bool flushChunk();
 
     QIODevice *m_out;
@@ -62,7 +62,8 @@ private:
     std::uint32_t m_dataCrc = 0;
     std::vector<QByteArray> m_schemas;  ///< Schema record bodies, by id - 1
     std::vector<QByteArray> m_channels; ///< Channel record bodies, by id
-    QByteArray m_chunk;                 ///< the open chunk's records
+    std::vector<char> m_chunk;          ///< the open chunk's records
+    std::vector<char> m_compressed;     ///< the last chunk compressed; kept for its capacity
     std::uint64_t m_chunkStart = UINT64_MAX, m_chunkEnd = 0;
     std::map<std::uint16_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> m_index;
     std::vector<ChunkIndex> m_chunkIndexes;

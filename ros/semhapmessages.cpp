@@ -17,14 +17,14 @@ void header(CdrWriter &cdr, std::int64_t ns, const QString &frame)
 {
     cdr.clear();
     cdr.time(ns);
-    cdr.string(frame.toUtf8());
+    cdr.string(frame);
 }
 
 void fingertip(CdrWriter &cdr, const Fingertip &tip, const ActorTable &actors)
 {
     cdr.float64(tip.f);
     cdr.int32(tip.n);
-    cdr.string(tip.actor >= 0 ? actors.name(tip.actor).toUtf8() : QByteArray());
+    cdr.string(tip.actor >= 0 ? actors.name(tip.actor) : QString());
     cdr.boolean(tip.hasFxyz);
     for (double c : tip.fxyz)
         cdr.float64(tip.hasFxyz ? c : 0.0);
@@ -67,7 +67,7 @@ void SemhapMessages::contact(CdrWriter &cdr, std::int64_t ns, const ContactFrame
     fingertip(cdr, frame.right, actors);
     cdr.sequence(std::uint32_t(frame.signalValues.size()));
     for (const SignalValue &s : frame.signalValues)
-        cdr.string(signalNames().name(s.id).toUtf8());
+        cdr.string(signalNames().name(s.id));
     cdr.sequence(std::uint32_t(frame.signalValues.size()));
     for (const SignalValue &s : frame.signalValues)
         cdr.float64(s.value);
@@ -92,11 +92,11 @@ void SemhapMessages::event(CdrWriter &cdr, std::int64_t ns, const SemanticEvent 
                            const QString &node)
 {
     header(cdr, ns, gripperName(e.gripper));
-    cdr.string(node.toUtf8());
-    cdr.string(detectorKindName(e.detector).toUtf8());
-    cdr.string(messageName(e.message).toUtf8());
-    cdr.string(categoryName(e.category).toUtf8());
-    cdr.string(eventPhaseName(e.phase).toUtf8());
+    cdr.string(node);
+    cdr.string(detectorKindName(e.detector));
+    cdr.string(messageName(e.message));
+    cdr.string(categoryName(e.category));
+    cdr.string(eventPhaseName(e.phase));
     cdr.float64(e.intensity);
 }
 
@@ -105,10 +105,11 @@ void SemhapMessages::device(CdrWriter &cdr, std::int64_t ns, const DeviceFrame &
                             const std::vector<QByteArray> &channels)
 {
     header(cdr, ns, name);
-    cdr.string(model.toUtf8());
+    cdr.string(model);
     cdr.sequence(std::uint32_t(f.channelCount));
     for (int c = 0; c < f.channelCount; ++c)
-        cdr.string(size_t(c) < channels.size() ? channels[size_t(c)] : QByteArray());
+        cdr.string(size_t(c) < channels.size() ? QByteArrayView(channels[size_t(c)])
+                                               : QByteArrayView());
     cdr.sequence(std::uint32_t(f.channelCount));
     for (int c = 0; c < f.channelCount; ++c)
         cdr.float64(f.values[size_t(c)]);

@@ -77,7 +77,7 @@ int main(int argc, char **argv)
                     std::max(0.0, 35 * std::sin(0.7 * t + c / 2) + 12 * std::sin(5.3 * t) + 5);
                 cdr.clear();
                 cdr.time(log - 2000000);
-                cdr.string("tip");
+                cdr.string(QByteArrayView("tip"));
                 for (double v : {0.05 * f, f, 0.02 * f, 0.0, 0.0, 0.001 * f})
                     cdr.float64(v);
                 mcap.addMessage(channels[c], std::uint64_t(log), cdr.bytes());

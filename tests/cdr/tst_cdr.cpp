@@ -2,8 +2,9 @@
 // ROS 2 message schemas (.msg) and their CDR encoding: messages the reference writer
 // (@foxglove/rosmsg2-serialization, tests/interop) encoded, decoded by the schema text the
 // recording carries, against what the reference reader decodes; schemas, paths and messages
-// that are wrong get located errors.
+// that are wrong get located errors; and the writer's strings, byte for byte.
 #include "cdrdecoder.h"
+#include "cdrwriter.h"
 #include "mcapreader.h"
 #include "msgschema.h"
 
@@ -90,6 +91,7 @@ private slots:
     void pathErrors_data();
     void pathErrors();
     void damagedMessages();
+    void writerStringsAreUtf8();
 };
 
 void TestCdr::decodesWhatTheReferenceWrote()
@@ -323,6 +325,28 @@ void TestCdr::damagedMessages()
     QVERIFY(!decoder.decode(lie.constData(), size_t(lie.size()), values, &error));
     QCOMPARE(error, QStringLiteral("byte 8: 'many' claims 2147483647 elements, more than the "
                                    "message holds"));
+}
+
+void TestCdr::writerStringsAreUtf8()
+{
+    // ASCII names are copied byte by byte, others encoded: both as UTF-8, with the length
+    // counting the terminating zero, and the number after them aligned again.
+    CdrWriter cdr;
+    cdr.string(QStringLiteral("cube"));
+    cdr.string(QString::fromUtf8("W\u00fcrfel"));
+    cdr.string(QString());
+    cdr.float64(1.0);
+    const QByteArray want = QByteArray::fromHex("00010000"
+                                                "05000000"
+                                                "6375626500"
+                                                "000000"
+                                                "08000000"
+                                                "57c3bc7266656c00"
+                                                "01000000"
+                                                "00"
+                                                "000000"
+                                                "000000000000f03f");
+    QCOMPARE(cdr.bytes().toByteArray().toHex(), want.toHex());
 }
 
 QTEST_GUILESS_MAIN(TestCdr)
