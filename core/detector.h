@@ -21,10 +21,13 @@ namespace semhap {
 class Detector
 {
 public:
-    Detector(int node, Gripper gripper) : m_node(node), m_gripper(gripper) {}
+    Detector(int node, Gripper gripper, DetectorKind kind)
+        : m_node(node), m_gripper(gripper), m_kind(kind)
+    {}
     virtual ~Detector() = default;
 
-    virtual DetectorKind kind() const = 0;
+    /** The kind its events carry: its node type's (RouterNodeType::detectorKind). */
+    DetectorKind kind() const { return m_kind; }
     /**
      * Consumes one frame and appends this tick's events. Frames of the other gripper are
      * ignored, so a pipeline may hand every frame to every detector.
@@ -47,6 +50,7 @@ public:
 protected:
     int m_node;
     Gripper m_gripper;
+    DetectorKind m_kind;
 };
 
 } // namespace semhap

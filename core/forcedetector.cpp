@@ -78,12 +78,12 @@ ForceDetector::Params ForceDetector::Params::fittedTo(const GripperTraits &gripp
     return fitted;
 }
 
-ForceDetector::ForceDetector(int node, Gripper gripper, const Params &params)
-    : Detector(node, gripper), m_params(params)
+ForceDetector::ForceDetector(int node, Gripper gripper, const Params &params, DetectorKind kind)
+    : Detector(node, gripper, kind), m_params(params)
 {
-    m_grasp.configure(gripper, node, DetectorKind::Force, Message::Grasp, Category::Confirmation,
+    m_grasp.configure(gripper, node, kind, Message::Grasp, Category::Confirmation,
                       params.minDuration);
-    m_break.configure(gripper, node, DetectorKind::Force, Message::Break, Category::Exception,
+    m_break.configure(gripper, node, kind, Message::Break, Category::Exception,
                       params.minDuration);
 }
 

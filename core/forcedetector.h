@@ -41,9 +41,9 @@ public:
     };
 
     /** `params` should have passed validate(); events carry `node` and `gripper`. */
-    ForceDetector(int node, Gripper gripper, const Params &params);
+    ForceDetector(int node, Gripper gripper, const Params &params,
+                  DetectorKind kind = DetectorKind::Force);
 
-    DetectorKind kind() const override { return DetectorKind::Force; }
     void update(const ContactFrame &frame, EventBuffer &out) override;
     void endAll(double t, EventBuffer &out) override;
     void clear() override;

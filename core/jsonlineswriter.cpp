@@ -3,6 +3,7 @@
 
 #include "actortable.h"
 #include "nametable.h"
+#include "routernodetype.h"
 
 #include <QIODevice>
 
@@ -56,7 +57,7 @@ std::vector<QByteArray> encodedList(const QStringList &names)
 JsonLinesWriter::JsonLinesWriter(QIODevice *device) : m_device(device)
 {
     encodeNames(m_grippers, gripperName);
-    encodeNames(m_kinds, detectorKindName);
+    m_kinds = encodedList(detectorKindNames());
     encodeNames(m_categories, categoryName);
     encodeNames(m_phases, eventPhaseName);
     m_line.reserve(256);
@@ -82,7 +83,7 @@ bool JsonLinesWriter::write(const SemanticEvent &event)
     m_line += ",\"node\":";
     m_line += lookup(m_nodes, event.node);
     m_line += ",\"detector\":";
-    m_line += lookup(m_kinds, event.detector);
+    m_line += lookup(m_kinds, int(event.detector));
     m_line += ",\"message\":";
     m_line += tableName(messageNames(), m_messages, int(event.message));
     m_line += ",\"category\":";

@@ -64,7 +64,7 @@ private:
     const ActorTable *m_actors = nullptr;
     std::vector<QByteArray> m_actorNames; ///< encoded lazily, as the table grows
     std::array<QByteArray, 2> m_grippers;
-    std::array<QByteArray, 4> m_kinds;
+    std::vector<QByteArray> m_kinds;    ///< detectorKindNames(), the node-type table's
     std::vector<QByteArray> m_messages; ///< messageNames(), encoded lazily
     std::vector<QByteArray> m_signals;  ///< signalNames(), encoded lazily
     std::array<QByteArray, 2> m_categories;

@@ -80,17 +80,17 @@ std::vector<ThresholdLevels> Router::thresholds() const
             if (from < 0)
                 break;
             const RouterNode &source = m_graph.nodes[size_t(from)];
-            if (source.type == QLatin1String("signal")) {
+            const RuntimeNode *runtime = m_nodes[size_t(from)].get();
+            if (const auto *signal = dynamic_cast<const SignalNode *>(runtime)) {
                 t.quantity = source.params.value(QStringLiteral("quantity")).toString();
-                t.signalGripper =
-                    static_cast<const SignalNode *>(m_nodes[size_t(from)].get())->gripper();
+                t.signalGripper = signal->gripper();
                 break;
             }
-            if (source.type != QLatin1String("derivative") &&
-                source.type != QLatin1String("predict"))
+            const bool derivative = dynamic_cast<const DerivativeNode *>(runtime) != nullptr;
+            if (!derivative && !dynamic_cast<const PredictNode *>(runtime))
                 break;
             t.via.prepend(source.type);
-            t.levelsInSignalUnits &= source.type != QLatin1String("derivative");
+            t.levelsInSignalUnits &= !derivative;
             at = source.id;
         }
         list.push_back(t);

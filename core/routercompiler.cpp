@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "routercompiler.h"
 
-#include "forcedetector.h"
+#include "detector.h"
 #include "jsonreader.h"
+#include "nodebuilder.h"
 #include "patternlibrary.h"
 #include "routernodes.h"
-#include "slipdetector.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -78,13 +78,6 @@ double RouterCompiler::number(int node, const QString &key) const
     return param(node, key).toDouble();
 }
 
-Gripper RouterCompiler::gripper(int node) const
-{
-    Gripper gripper = Gripper::Right;
-    gripperFromName(param(node, QStringLiteral("gripper")).toString(), &gripper);
-    return gripper;
-}
-
 QStringList RouterCompiler::channels(int node) const
 {
     QStringList list;
@@ -132,40 +125,12 @@ DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
     return model;
 }
 
-bool RouterCompiler::buildDetector(int node)
-{
-    const RouterNode &n = m_graph.nodes[size_t(node)];
-    QJsonObject params = n.params;
-    params.remove(QStringLiteral("gripper"));
-    QString key;
-    QString reason;
-    std::unique_ptr<Detector> detector;
-    // The node's own values are checked and kept in the graph; they run fitted to the
-    // gripper, like a predict node's horizon to the reaction time.
-    const GripperTraits &traits = m_context.grippers[size_t(gripper(node))];
-    if (n.type == QLatin1String("force")) {
-        ForceDetector::Params p;
-        if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
-            return failNode(node, key, reason);
-        detector = std::make_unique<ForceDetector>(node, gripper(node), p.fittedTo(traits));
-    } else {
-        SlipDetector::Params p;
-        if (!p.read(params, &key, &reason) || !p.validate(&key, &reason))
-            return failNode(node, key, reason);
-        detector = std::make_unique<SlipDetector>(node, gripper(node), p.fittedTo(traits));
-    }
-    auto runtime = std::make_unique<DetectorNode>(std::move(detector));
-    m_router->m_detectors.push_back(runtime.get());
-    m_router->m_nodes[size_t(node)] = std::move(runtime);
-    return true;
-}
-
 bool RouterCompiler::buildPattern(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
     NodeInfo &info = m_info[size_t(node)];
     // The pattern first: its parameters are the node's too.
-    const ParamSpec &patternSpec = *info.type->param(QStringLiteral("pattern"));
+    const ParamSpec &patternSpec = *info.type->paramOfKind(ParamKind::Pattern);
     const QJsonValue name = n.params.value(patternSpec.name);
     QString reason;
     if (name.isUndefined())
@@ -233,96 +198,6 @@ bool RouterCompiler::buildDevice(int node)
     return true;
 }
 
-std::unique_ptr<RuntimeNode> RouterCompiler::buildLogic(int node)
-{
-    const RouterNode &n = m_graph.nodes[size_t(node)];
-    if (n.type == QLatin1String("signal"))
-        return buildSignal(node);
-    if (n.type == QLatin1String("derivative"))
-        return std::make_unique<DerivativeNode>(number(node, QStringLiteral("tau")));
-    if (n.type == QLatin1String("predict")) {
-        auto predict = std::make_unique<PredictNode>(number(node, QStringLiteral("tau")));
-        const QJsonValue horizon = param(node, QStringLiteral("horizon"));
-        // Absent: setDefaultHorizons works it out once the devices downstream are known.
-        predict->setHorizon(horizon.isUndefined() ? -1.0 : horizon.toDouble());
-        return predict;
-    }
-    if (n.type == QLatin1String("threshold"))
-        return buildThreshold(node);
-    if (n.type == QLatin1String("compose"))
-        return buildCompose(node);
-    if (n.type == QLatin1String("filter")) {
-        std::vector<Message> messages;
-        const QJsonValue value = param(node, QStringLiteral("message"));
-        for (const QJsonValue &item : value.isArray() ? value.toArray() : QJsonArray{value}) {
-            Message message = Message::Grasp;
-            if (item.isString() && !messageFromName(item.toString(), &message)) {
-                failNode(node, QStringLiteral("message"),
-                         QStringLiteral("more new messages than the %1 semhap can name")
-                             .arg(NameTable::Capacity));
-                return nullptr;
-            }
-            if (item.isString())
-                messages.push_back(message);
-        }
-        return std::make_unique<FilterNode>(std::move(messages),
-                                            choiceBits(node, QStringLiteral("category")),
-                                            choiceBits(node, QStringLiteral("gripper")));
-    }
-    if (n.type == QLatin1String("gate"))
-        return std::make_unique<GateNode>(param(node, QStringLiteral("mode")).toString() ==
-                                          QLatin1String("open"));
-    if (n.type == QLatin1String("debounce")) {
-        auto debounce = std::make_unique<DebounceNode>(number(node, QStringLiteral("hold")),
-                                                       number(node, QStringLiteral("band")));
-        m_router->m_timed.push_back(debounce.get());
-        return debounce;
-    }
-    if (n.type == QLatin1String("curve")) {
-        const QJsonValue points = param(node, QStringLiteral("points"));
-        if (points.isUndefined())
-            return std::make_unique<CurveNode>(Curve());
-        std::vector<std::pair<double, double>> list;
-        for (const QJsonValue &point : points.toArray())
-            list.emplace_back(point.toArray().at(0).toDouble(), point.toArray().at(1).toDouble());
-        return std::make_unique<CurveNode>(Curve::points(std::move(list)));
-    }
-    // proportional
-    m_info[size_t(node)].channels = channels(node);
-    return std::make_unique<ProportionalNode>(number(node, QStringLiteral("ref")));
-}
-
-std::unique_ptr<RuntimeNode> RouterCompiler::buildSignal(int node)
-{
-    const QString name = param(node, QStringLiteral("quantity")).toString();
-    const Gripper hand = gripper(node);
-    SignalNode::Quantity quantity = SignalNode::Quantity::Named;
-    int id = -1;
-    if (!SignalNode::quantityFromName(name, &quantity)) {
-        const QStringList &known = m_context.signalNames[size_t(hand)];
-        if (m_context.knowsSignals && !known.contains(name)) {
-            failNode(node, QStringLiteral("quantity"),
-                     QStringLiteral("the %1 gripper's frames carry no signal '%2' (%3)")
-                         .arg(gripperName(hand), name,
-                              known.isEmpty() ? QStringLiteral("they carry none")
-                                              : QStringLiteral("they carry: ") +
-                                                    known.join(QStringLiteral(", "))));
-            return nullptr;
-        }
-        id = signalNames().intern(name);
-        if (id < 0) {
-            failNode(node, QStringLiteral("quantity"),
-                     QStringLiteral("more signal names than the %1 semhap can hold")
-                         .arg(NameTable::Capacity));
-            return nullptr;
-        }
-    }
-    auto signal =
-        std::make_unique<SignalNode>(hand, quantity, number(node, QStringLiteral("mu")), id);
-    m_router->m_signals.push_back(signal.get());
-    return signal;
-}
-
 bool RouterCompiler::messageOf(int node, Message *message, Category *category)
 {
     const QString name = param(node, QStringLiteral("message")).toString();
@@ -379,87 +254,6 @@ bool RouterCompiler::level(int node, const QString &key, bool range, double *low
     return true;
 }
 
-std::unique_ptr<RuntimeNode> RouterCompiler::buildThreshold(int node)
-{
-    using Condition = ThresholdNode::Condition;
-    ThresholdNode::Params p;
-    if (!messageOf(node, &p.message, &p.category))
-        return nullptr;
-    p.condition = Condition(ThresholdNode::conditionNames().indexOf(
-        param(node, QStringLiteral("condition")).toString()));
-    const bool range = p.condition == Condition::Inside || p.condition == Condition::Outside;
-    const QString begin = QStringLiteral("begin");
-    const QString end = QStringLiteral("end");
-    if (!level(node, begin, range, &p.begin, &p.beginHigh))
-        return nullptr;
-    if (param(node, end).isUndefined()) {
-        p.end = p.begin;
-        p.endHigh = p.beginHigh;
-    } else if (!level(node, end, range, &p.end, &p.endHigh)) {
-        return nullptr;
-    }
-    // The end level lies on the far side of the begin level, or the message would end as
-    // it begins.
-    bool crossed = false;
-    switch (p.condition) {
-    case Condition::Above:
-        crossed = p.end > p.begin;
-        break;
-    case Condition::Below:
-        crossed = p.end < p.begin;
-        break;
-    case Condition::Inside:
-        crossed = p.end > p.begin || p.endHigh < p.beginHigh;
-        break;
-    case Condition::Outside:
-        crossed = p.end < p.begin || p.endHigh > p.beginHigh;
-        break;
-    }
-    if (crossed) {
-        static const char *const rules[] = {
-            "above: end must not be above begin", "below: end must not be below begin",
-            "inside: the end range must contain the begin range",
-            "outside: the end range must lie within the begin range"};
-        failNode(node, end,
-                 QStringLiteral("begin/end levels crossed (%1)")
-                     .arg(QLatin1String(rules[int(p.condition)])));
-        return nullptr;
-    }
-    p.minDuration = number(node, QStringLiteral("minDuration"));
-    const QJsonValue intensity = param(node, QStringLiteral("intensity"));
-    if (!intensity.isUndefined()) {
-        const QJsonArray pair = intensity.toArray();
-        if (!intensity.isArray() || pair.at(0).toDouble() == pair.at(1).toDouble()) {
-            failNode(node, QStringLiteral("intensity"),
-                     QStringLiteral("must be [x0, x1] with x0 and x1 apart: the input at "
-                                    "intensity 0 and at 1"));
-            return nullptr;
-        }
-        p.mapsIntensity = true;
-        p.intensityFrom = pair.at(0).toDouble();
-        p.intensityTo = pair.at(1).toDouble();
-    }
-    auto threshold = std::make_unique<ThresholdNode>(node, gripper(node), p);
-    m_router->m_messageSources.push_back(threshold.get());
-    return threshold;
-}
-
-std::unique_ptr<RuntimeNode> RouterCompiler::buildCompose(int node)
-{
-    ComposeNode::Params p;
-    if (!messageOf(node, &p.message, &p.category))
-        return nullptr;
-    p.mode = ComposeNode::Mode(
-        ComposeNode::modeNames().indexOf(param(node, QStringLiteral("mode")).toString()));
-    const QJsonValue hand = param(node, QStringLiteral("gripper"));
-    p.fixedGripper = !hand.isUndefined();
-    if (p.fixedGripper)
-        p.gripper = gripper(node);
-    auto compose = std::make_unique<ComposeNode>(node, p);
-    m_router->m_messageSources.push_back(compose.get());
-    return compose;
-}
-
 void RouterCompiler::setDefaultHorizons()
 {
     // The slowest device each node's output reaches, whatever the path (signals, events,
@@ -479,6 +273,57 @@ void RouterCompiler::setDefaultHorizons()
     }
 }
 
+/** A row's view of the compiler while it builds one node. */
+class RouterCompiler::Builder final : public NodeBuilder
+{
+public:
+    Builder(RouterCompiler &compiler, int node) : m_compiler(compiler), m_node(node) {}
+
+    int node() const override { return m_node; }
+    const QJsonObject &params() const override
+    {
+        return m_compiler.m_graph.nodes[size_t(m_node)].params;
+    }
+    QJsonValue param(const QString &key) const override { return m_compiler.param(m_node, key); }
+    unsigned choiceBits(const QString &key) const override
+    {
+        return m_compiler.choiceBits(m_node, key);
+    }
+    const RouterContext &context() const override { return m_compiler.m_context; }
+    DetectorKind kind() const override
+    {
+        return m_compiler.m_info[size_t(m_node)].type->detectorKind;
+    }
+    bool fail(const QString &key, const QString &reason) override
+    {
+        return m_compiler.failNode(m_node, key, reason);
+    }
+    bool messageOf(Message *message, Category *category) override
+    {
+        return m_compiler.messageOf(m_node, message, category);
+    }
+    bool level(const QString &key, bool range, double *low, double *high) override
+    {
+        return m_compiler.level(m_node, key, range, low, high);
+    }
+    bool adopt(std::unique_ptr<RuntimeNode> node) override
+    {
+        return m_compiler.adopt(m_node, std::move(node));
+    }
+    bool adoptDetector(std::unique_ptr<Detector> detector) override
+    {
+        auto runtime = std::make_unique<DetectorNode>(std::move(detector));
+        m_compiler.m_router->m_detectors.push_back(runtime.get());
+        return m_compiler.adopt(m_node, std::move(runtime));
+    }
+    bool playPattern() override { return m_compiler.buildPattern(m_node); }
+    bool drive() override { return m_compiler.buildDevice(m_node); }
+
+private:
+    RouterCompiler &m_compiler;
+    int m_node;
+};
+
 bool RouterCompiler::buildNode(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
@@ -494,18 +339,25 @@ bool RouterCompiler::buildNode(int node)
     }
     info.inputs = info.type->inputs;
     info.inputLinks.assign(info.inputs.size(), 0);
+    // A node that plays a pattern takes the pattern's parameters too: playPattern() checks
+    // them once the pattern is found.
+    if (!info.type->paramOfKind(ParamKind::Pattern) && !checkParams(node, info.type->params))
+        return false;
+    Builder builder(*this, node);
+    return info.type->build(builder);
+}
 
-    if (n.type == QLatin1String("pattern"))
-        return buildPattern(node);
-    if (!checkParams(node, info.type->params))
-        return false;
-    if (n.type == QLatin1String("force") || n.type == QLatin1String("slip"))
-        return buildDetector(node);
-    if (n.type == QLatin1String("device"))
-        return buildDevice(node);
-    std::unique_ptr<RuntimeNode> runtime = buildLogic(node);
-    if (!runtime)
-        return false;
+bool RouterCompiler::adopt(int node, std::unique_ptr<RuntimeNode> runtime)
+{
+    if (auto *signal = dynamic_cast<SignalNode *>(runtime.get()))
+        m_router->m_signals.push_back(signal);
+    if (auto *source = dynamic_cast<MessageSourceNode *>(runtime.get()))
+        m_router->m_messageSources.push_back(source);
+    if (runtime->hasTimers())
+        m_router->m_timed.push_back(runtime.get());
+    // Voices drive the channels their node names (absent: the pattern's own).
+    if (m_info[size_t(node)].type->param(QStringLiteral("channels")))
+        m_info[size_t(node)].channels = channels(node);
     m_router->m_nodes[size_t(node)] = std::move(runtime);
     return true;
 }
@@ -524,7 +376,8 @@ bool RouterCompiler::checkSize()
                                                   .arg(RouterGraph::MaxLinks));
     int devices = 0;
     for (size_t i = 0; i < m_graph.nodes.size(); ++i) {
-        if (m_graph.nodes[i].type == QLatin1String("device") &&
+        const RouterNodeType *type = routerNodeType(m_graph.nodes[i].type);
+        if (type && type->role() == RouterNodeType::Role::Device &&
             ++devices > RouterGraph::MaxDevices)
             return failNode(int(i), QString(),
                             QStringLiteral("one device more than the %1 a router may drive")
@@ -628,7 +481,7 @@ bool RouterCompiler::checkFanIn()
     const size_t limit = size_t(RouterGraph::MaxUpstreamDetectors) + 1;
     std::vector<std::vector<int>> upstream(count);
     for (size_t i = 0; i < count; ++i) {
-        if (RouterGraph::isDetectorType(m_info[i].type->type))
+        if (m_info[i].type->isDetector)
             upstream[i].push_back(int(i));
     }
     for (int node : m_order) {

@@ -11,7 +11,11 @@
 
 namespace semhap {
 
-/** Turns a RouterGraph into a Router, reporting the first problem with node and reason. */
+/**
+ * Turns a RouterGraph into a Router, reporting the first problem with node and reason. Each
+ * node is built by its type's row (RouterNodeType::build), through a NodeBuilder; the
+ * compiler resolves links, checks the graph and wires what the rows built.
+ */
 class RouterCompiler
 {
 public:
@@ -51,20 +55,17 @@ private:
     /** A checked parameter's value, or its spec's default when absent. */
     QJsonValue param(int node, const QString &key) const;
     double number(int node, const QString &key) const;
-    Gripper gripper(int node) const;
     QStringList channels(int node) const;
     /** A filter parameter as a bit set over its choices; absent: 0, which a filter takes as any.
      */
     unsigned choiceBits(int node, const QString &key) const;
 
+    class Builder;
     bool buildNode(int node);
-    bool buildDetector(int node);
     bool buildPattern(int node);
     bool buildDevice(int node);
-    std::unique_ptr<RuntimeNode> buildLogic(int node);
-    std::unique_ptr<RuntimeNode> buildThreshold(int node);
-    std::unique_ptr<RuntimeNode> buildCompose(int node);
-    std::unique_ptr<RuntimeNode> buildSignal(int node);
+    /** Takes a node a row built: the router runs it, and lists it by what it does. */
+    bool adopt(int node, std::unique_ptr<RuntimeNode> runtime);
     /** The message and category of a threshold or compose node; false after failNode. */
     bool messageOf(int node, Message *message, Category *category);
     /** A [low, high] or single-number level parameter; false after failNode. */

@@ -20,6 +20,13 @@ namespace semhap {
 
 namespace {
 
+/** The node's parameter naming a file of `kind` (the pattern it plays, its model), or null. */
+const ParamSpec *fileParam(const RouterNode &node, ParamKind kind)
+{
+    const RouterNodeType *type = routerNodeType(node.type);
+    return type ? type->paramOfKind(kind) : nullptr;
+}
+
 bool validId(const QString &id)
 {
     if (id.isEmpty())
@@ -239,9 +246,9 @@ QStringList RouterGraph::nodesPlayingFile(const QString &path) const
     const QString wanted = QDir::cleanPath(QFileInfo(path).absoluteFilePath());
     QStringList ids;
     for (const RouterNode &node : nodes) {
-        const QString named = node.params.value(QLatin1String("pattern")).toString();
-        if (node.type == QLatin1String("pattern") && !embedded(patterns, named) &&
-            InputFile::namesFile(named) &&
+        const ParamSpec *played = fileParam(node, ParamKind::Pattern);
+        const QString named = played ? node.params.value(played->name).toString() : QString();
+        if (played && !embedded(patterns, named) && InputFile::namesFile(named) &&
             QDir::cleanPath(QDir(baseDir).absoluteFilePath(named)) == wanted)
             ids.append(node.id);
     }
@@ -251,8 +258,10 @@ QStringList RouterGraph::nodesPlayingFile(const QString &path) const
 QStringList RouterGraph::followRenamedFile(const QString &from, const QString &to)
 {
     const QStringList ids = nodesPlayingFile(from);
-    for (const QString &id : ids)
-        nodes[size_t(nodeIndex(id))].params.insert(QStringLiteral("pattern"), to);
+    for (const QString &id : ids) {
+        RouterNode &node = nodes[size_t(nodeIndex(id))];
+        node.params.insert(fileParam(node, ParamKind::Pattern)->name, to);
+    }
     return ids;
 }
 
@@ -276,10 +285,11 @@ DeviceModelPtr RouterGraph::model(const QString &nameOrPath, QString *reason) co
 
 PatternPtr RouterGraph::playedPattern(const RouterNode &node) const
 {
-    if (node.type != QLatin1String("pattern"))
+    const ParamSpec *spec = fileParam(node, ParamKind::Pattern);
+    if (!spec)
         return nullptr;
     QString ignored;
-    const QString played = node.params.value(QLatin1String("pattern")).toString();
+    const QString played = node.params.value(spec->name).toString();
     return played.isEmpty() ? nullptr : pattern(played, &ignored);
 }
 
@@ -406,8 +416,8 @@ QString RouterGraph::fanInProblem()
 
 bool RouterGraph::isDetectorType(const QString &type)
 {
-    return type == QLatin1String("force") || type == QLatin1String("slip") ||
-           type == QLatin1String("threshold") || type == QLatin1String("compose");
+    const RouterNodeType *row = routerNodeType(type);
+    return row && row->isDetector;
 }
 
 bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const
@@ -457,7 +467,7 @@ bool RouterGraph::checkLink(const RouterLink &link, QString *reason) const
         const DeviceModelPtr device =
             model(to.params.value(QLatin1String("model")).toString(), &ignored);
         const PatternPtr played = playedPattern(from);
-        if (!device || (from.type == QLatin1String("pattern") && !played))
+        if (!device || (fileParam(from, ParamKind::Pattern) && !played))
             return true;
         QStringList channels;
         for (const QJsonValue &channel : from.params.value(QLatin1String("channels")).toArray())
@@ -559,10 +569,12 @@ bool RouterGraph::embedFiles(LoadError *error)
     QHash<QString, QString> embeddedAs;
     for (size_t i = 0; i < nodes.size(); ++i) {
         RouterNode &node = nodes[i];
-        const bool isPattern = node.type == QLatin1String("pattern");
-        if (!isPattern && node.type != QLatin1String("device"))
+        const ParamSpec *patternSpec = fileParam(node, ParamKind::Pattern);
+        const ParamSpec *modelSpec = fileParam(node, ParamKind::Model);
+        const bool isPattern = patternSpec != nullptr;
+        if (!patternSpec && !modelSpec)
             continue;
-        const QString key = isPattern ? QStringLiteral("pattern") : QStringLiteral("model");
+        const QString key = isPattern ? patternSpec->name : modelSpec->name;
         const QString named = node.params.value(key).toString();
         if (named.isEmpty() || !InputFile::namesFile(named))
             continue;

@@ -176,6 +176,8 @@ public:
     /** When the node next needs fireTimers (infinity: never). */
     virtual double nextTimer() const;
     virtual void fireTimers(double t);
+    /** Whether it may set timers: the router then asks nextTimer() after every tick. */
+    virtual bool hasTimers() const { return false; }
 
     /**
      * Follows a begin of `event` arriving at input `port` to the pattern nodes it can reach,
@@ -452,6 +454,7 @@ public:
     void onEvent(int port, const SemanticEvent &event) override;
     double nextTimer() const override;
     void fireTimers(double t) override;
+    bool hasTimers() const override { return true; }
 
 private:
     double m_hold;

@@ -3,9 +3,12 @@
 
 #include "detectorparams.h"
 #include "forcedetector.h"
+#include "nodebuilder.h"
 #include "player.h"
 #include "routernodes.h"
 #include "slipdetector.h"
+
+#include <QJsonArray>
 
 namespace semhap {
 
@@ -52,6 +55,15 @@ RouterNodeType::Role RouterNodeType::role() const
 const ParamSpec *RouterNodeType::param(const QString &name) const
 {
     return findParamSpec(params, name);
+}
+
+const ParamSpec *RouterNodeType::paramOfKind(ParamKind kind) const
+{
+    for (const ParamSpec &spec : params) {
+        if (spec.kind == kind)
+            return &spec;
+    }
+    return nullptr;
 }
 
 namespace {
@@ -113,6 +125,183 @@ ParamSpec tauParam()
         .atLeast(0);
 }
 
+/** The detector kinds DetectorKind names, at its ids. */
+QStringList builtinDetectorKinds()
+{
+    return {QStringLiteral("force"), QStringLiteral("slip"), QStringLiteral("threshold"),
+            QStringLiteral("compose")};
+}
+
+// The build functions of the rows below: each reads its node's checked parameters and makes
+// the node.
+
+bool buildSignal(NodeBuilder &b)
+{
+    const QString name = b.param(QStringLiteral("quantity")).toString();
+    const Gripper hand = b.gripper();
+    SignalNode::Quantity quantity = SignalNode::Quantity::Named;
+    int id = -1;
+    if (!SignalNode::quantityFromName(name, &quantity)) {
+        const QStringList &known = b.context().signalNames[size_t(hand)];
+        if (b.context().knowsSignals && !known.contains(name))
+            return b.fail(QStringLiteral("quantity"),
+                          QStringLiteral("the %1 gripper's frames carry no signal '%2' (%3)")
+                              .arg(gripperName(hand), name,
+                                   known.isEmpty() ? QStringLiteral("they carry none")
+                                                   : QStringLiteral("they carry: ") +
+                                                         known.join(QStringLiteral(", "))));
+        id = signalNames().intern(name);
+        if (id < 0)
+            return b.fail(QStringLiteral("quantity"),
+                          QStringLiteral("more signal names than the %1 semhap can hold")
+                              .arg(NameTable::Capacity));
+    }
+    return b.adopt(
+        std::make_unique<SignalNode>(hand, quantity, b.number(QStringLiteral("mu")), id));
+}
+
+bool buildDerivative(NodeBuilder &b)
+{
+    return b.adopt(std::make_unique<DerivativeNode>(b.number(QStringLiteral("tau"))));
+}
+
+bool buildPredict(NodeBuilder &b)
+{
+    auto predict = std::make_unique<PredictNode>(b.number(QStringLiteral("tau")));
+    const QJsonValue horizon = b.param(QStringLiteral("horizon"));
+    // Absent: the compiler works it out once the devices downstream are known.
+    predict->setHorizon(horizon.isUndefined() ? -1.0 : horizon.toDouble());
+    return b.adopt(std::move(predict));
+}
+
+bool buildThreshold(NodeBuilder &b)
+{
+    using Condition = ThresholdNode::Condition;
+    ThresholdNode::Params p;
+    if (!b.messageOf(&p.message, &p.category))
+        return false;
+    p.condition = Condition(
+        ThresholdNode::conditionNames().indexOf(b.param(QStringLiteral("condition")).toString()));
+    const bool range = p.condition == Condition::Inside || p.condition == Condition::Outside;
+    const QString begin = QStringLiteral("begin");
+    const QString end = QStringLiteral("end");
+    if (!b.level(begin, range, &p.begin, &p.beginHigh))
+        return false;
+    if (b.param(end).isUndefined()) {
+        p.end = p.begin;
+        p.endHigh = p.beginHigh;
+    } else if (!b.level(end, range, &p.end, &p.endHigh)) {
+        return false;
+    }
+    // The end level lies on the far side of the begin level, or the message would end as
+    // it begins.
+    bool crossed = false;
+    switch (p.condition) {
+    case Condition::Above:
+        crossed = p.end > p.begin;
+        break;
+    case Condition::Below:
+        crossed = p.end < p.begin;
+        break;
+    case Condition::Inside:
+        crossed = p.end > p.begin || p.endHigh < p.beginHigh;
+        break;
+    case Condition::Outside:
+        crossed = p.end < p.begin || p.endHigh > p.beginHigh;
+        break;
+    }
+    if (crossed) {
+        static const char *const rules[] = {
+            "above: end must not be above begin", "below: end must not be below begin",
+            "inside: the end range must contain the begin range",
+            "outside: the end range must lie within the begin range"};
+        return b.fail(end, QStringLiteral("begin/end levels crossed (%1)")
+                               .arg(QLatin1String(rules[int(p.condition)])));
+    }
+    p.minDuration = b.number(QStringLiteral("minDuration"));
+    const QJsonValue intensity = b.param(QStringLiteral("intensity"));
+    if (!intensity.isUndefined()) {
+        const QJsonArray pair = intensity.toArray();
+        if (!intensity.isArray() || pair.at(0).toDouble() == pair.at(1).toDouble())
+            return b.fail(QStringLiteral("intensity"),
+                          QStringLiteral("must be [x0, x1] with x0 and x1 apart: the input at "
+                                         "intensity 0 and at 1"));
+        p.mapsIntensity = true;
+        p.intensityFrom = pair.at(0).toDouble();
+        p.intensityTo = pair.at(1).toDouble();
+    }
+    return b.adopt(std::make_unique<ThresholdNode>(b.node(), b.gripper(), p));
+}
+
+bool buildCompose(NodeBuilder &b)
+{
+    ComposeNode::Params p;
+    if (!b.messageOf(&p.message, &p.category))
+        return false;
+    p.mode = ComposeNode::Mode(
+        ComposeNode::modeNames().indexOf(b.param(QStringLiteral("mode")).toString()));
+    p.fixedGripper = !b.param(QStringLiteral("gripper")).isUndefined();
+    if (p.fixedGripper)
+        p.gripper = b.gripper();
+    return b.adopt(std::make_unique<ComposeNode>(b.node(), p));
+}
+
+bool buildFilter(NodeBuilder &b)
+{
+    std::vector<Message> messages;
+    const QJsonValue value = b.param(QStringLiteral("message"));
+    for (const QJsonValue &item : value.isArray() ? value.toArray() : QJsonArray{value}) {
+        Message message = Message::Grasp;
+        if (item.isString() && !messageFromName(item.toString(), &message))
+            return b.fail(QStringLiteral("message"),
+                          QStringLiteral("more new messages than the %1 semhap can name")
+                              .arg(NameTable::Capacity));
+        if (item.isString())
+            messages.push_back(message);
+    }
+    return b.adopt(std::make_unique<FilterNode>(std::move(messages),
+                                                b.choiceBits(QStringLiteral("category")),
+                                                b.choiceBits(QStringLiteral("gripper"))));
+}
+
+bool buildGate(NodeBuilder &b)
+{
+    return b.adopt(std::make_unique<GateNode>(b.param(QStringLiteral("mode")).toString() ==
+                                              QLatin1String("open")));
+}
+
+bool buildDebounce(NodeBuilder &b)
+{
+    return b.adopt(std::make_unique<DebounceNode>(b.number(QStringLiteral("hold")),
+                                                  b.number(QStringLiteral("band"))));
+}
+
+bool buildCurve(NodeBuilder &b)
+{
+    const QJsonValue points = b.param(QStringLiteral("points"));
+    if (points.isUndefined())
+        return b.adopt(std::make_unique<CurveNode>(Curve()));
+    std::vector<std::pair<double, double>> list;
+    for (const QJsonValue &point : points.toArray())
+        list.emplace_back(point.toArray().at(0).toDouble(), point.toArray().at(1).toDouble());
+    return b.adopt(std::make_unique<CurveNode>(Curve::points(std::move(list))));
+}
+
+bool buildPattern(NodeBuilder &b)
+{
+    return b.playPattern();
+}
+
+bool buildProportional(NodeBuilder &b)
+{
+    return b.adopt(std::make_unique<ProportionalNode>(b.number(QStringLiteral("ref"))));
+}
+
+bool buildDevice(NodeBuilder &b)
+{
+    return b.drive();
+}
+
 } // namespace
 
 const std::vector<RouterNodeType> &routerNodeTypes()
@@ -124,17 +313,21 @@ const std::vector<RouterNodeType> &routerNodeTypes()
         const PortSpec signalIn{QStringLiteral("in"), PortType::Signal, false};
         const PortSpec value{QStringLiteral("value"), PortType::Signal, true};
         const QString seconds = QStringLiteral("s");
-        return std::vector<RouterNodeType>{
+        std::vector<RouterNodeType> rows{
             {QStringLiteral("force"),
              QStringLiteral("Force detector (Algorithm 1): grasp and break messages from F"),
              {},
              {eventsOut},
-             detectorParams(ForceDetector::Params::specs())},
+             detectorParams(ForceDetector::Params::specs()),
+             &buildDetector<ForceDetector>,
+             true},
             {QStringLiteral("slip"),
              QStringLiteral("Slip detector (Algorithm 2): grasp and slip messages from N"),
              {},
              {eventsOut},
-             detectorParams(SlipDetector::Params::specs())},
+             detectorParams(SlipDetector::Params::specs()),
+             &buildDetector<SlipDetector>,
+             true},
             {QStringLiteral("signal"),
              QStringLiteral("A continuous quantity of a gripper's contact frames (friction: "
                             "tangential over normal force over mu, 1 at the cone's edge)"),
@@ -149,12 +342,14 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("The friction coefficient of the friction "
                                                "quantities; absent: the frames' own"))
                   .above(0)
-                  .computed()}},
+                  .computed()},
+             &buildSignal},
             {QStringLiteral("derivative"),
              QStringLiteral("The time derivative of a signal, smoothed over tau seconds"),
              {signalIn},
              {value},
-             {tauParam()}},
+             {tauParam()},
+             &buildDerivative},
             {QStringLiteral("predict"),
              QStringLiteral("A signal extrapolated over a horizon (default: the downstream "
                             "devices' delay plus the reaction time)"),
@@ -166,7 +361,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                                "reaction time"))
                   .atLeast(0)
                   .computed(),
-              tauParam()}},
+              tauParam()},
+             &buildPredict},
             {QStringLiteral("threshold"),
              QStringLiteral("A detector on a signal: its message begins when the signal meets "
                             "the condition at the begin level and ends when it no longer "
@@ -190,7 +386,9 @@ const std::vector<RouterNodeType> &routerNodeTypes()
               minDurationSpec(),
               ParamSpec::of(QStringLiteral("intensity"), ParamKind::Level, ParamAbsent::Default,
                             QStringLiteral("[x0, x1]: intensity grows from 0 at x0 to 1 at x1, "
-                                           "clipped; absent: 1"))}},
+                                           "clipped; absent: 1"))},
+             &buildThreshold,
+             true},
             {QStringLiteral("compose"),
              QStringLiteral("A message made of two: while both inputs have an active message "
                             "(all), either has (any), or a has while b has (while)"),
@@ -206,7 +404,9 @@ const std::vector<RouterNodeType> &routerNodeTypes()
               ParamSpec::choice(QStringLiteral("gripper"), gripperNames(), QString(),
                                 QStringLiteral("The gripper its events name; absent: that of "
                                                "the input message that makes it active"))
-                  .computed()}},
+                  .computed()},
+             &buildCompose,
+             true},
             {QStringLiteral("filter"),
              QStringLiteral("Passes the messages that match by message, category and gripper"),
              {in},
@@ -217,7 +417,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
               ParamSpec::anyOf(QStringLiteral("category"), categoryNames(),
                                QStringLiteral("The categories it passes")),
               ParamSpec::anyOf(QStringLiteral("gripper"), gripperNames(),
-                               QStringLiteral("The grippers whose messages it passes"))}},
+                               QStringLiteral("The grippers whose messages it passes"))},
+             &buildFilter},
             {QStringLiteral("gate"),
              QStringLiteral("Passes its input only while the control has no active message "
                             "(block) or while it has one (open)"),
@@ -227,7 +428,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 {QStringLiteral("block"), QStringLiteral("open")},
                                 QStringLiteral("block"),
                                 QStringLiteral("block: an active control stops the input; "
-                                               "open: only an active control lets it through"))}},
+                                               "open: only an active control lets it through"))},
+             &buildGate},
             {QStringLiteral("debounce"),
              QStringLiteral("Holds ends back for a while and drops small intensity changes"),
              {in},
@@ -240,14 +442,16 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("Intensity changes smaller than this are "
                                                "dropped"))
                   .atLeast(0)
-                  .atMost(1)}},
+                  .atMost(1)},
+             &buildDebounce},
             {QStringLiteral("curve"),
              QStringLiteral("Maps intensity through a piecewise-linear curve"),
              {in},
              {out},
              {ParamSpec::of(QStringLiteral("points"), ParamKind::Points, ParamAbsent::Default,
                             QStringLiteral("[x, y] points, x increasing, held constant outside "
-                                           "them; absent: intensity passes unchanged"))}},
+                                           "them; absent: intensity passes unchanged"))},
+             &buildCurve},
             {QStringLiteral("pattern"),
              QStringLiteral("Plays a pattern while any of its messages is active; one signal "
                             "input per pattern parameter"),
@@ -256,7 +460,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {ParamSpec::of(QStringLiteral("pattern"), ParamKind::Pattern, ParamAbsent::Required,
                             QStringLiteral("A built-in or embedded pattern's name, or a "
                                            "pattern file")),
-              channelsParam()}},
+              channelsParam()},
+             &buildPattern},
             {QStringLiteral("proportional"),
              QStringLiteral("Drives channels with clip(signal / ref, 0, 1)"),
              {{QStringLiteral("in"), PortType::Signal, false}},
@@ -265,7 +470,8 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("The signal value that drives the channels "
                                                "fully"))
                   .above(0),
-              channelsParam()}},
+              channelsParam()},
+             &buildProportional},
             {QStringLiteral("device"),
              QStringLiteral("A device instance: mixes its voices into frames at its rate"),
              {{QStringLiteral("in"), PortType::Voice, true}},
@@ -284,10 +490,48 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                 QStringLiteral("The hand that feels it; absent: the id's first "
                                                "part when that is left or right (left.air), "
                                                "else none (an overlay)"))
-                  .computed()}},
+                  .computed()},
+             &buildDevice},
         };
+        // The built-in kinds keep their ids (DetectorKind); a new detector takes the next.
+        const QStringList builtin = builtinDetectorKinds();
+        int next = int(builtin.size());
+        for (RouterNodeType &row : rows) {
+            if (row.isDetector)
+                row.detectorKind = DetectorKind(
+                    builtin.contains(row.type) ? int(builtin.indexOf(row.type)) : next++);
+        }
+        return rows;
     }();
     return types;
+}
+
+QStringList detectorKindNames()
+{
+    static const QStringList names = [] {
+        QStringList list = builtinDetectorKinds();
+        for (const RouterNodeType &row : routerNodeTypes()) {
+            if (row.isDetector && !list.contains(row.type))
+                list.append(row.type);
+        }
+        return list;
+    }();
+    return names;
+}
+
+QString detectorKindName(DetectorKind kind)
+{
+    const QStringList names = detectorKindNames();
+    return int(kind) >= 0 && int(kind) < names.size() ? names[int(kind)] : QString();
+}
+
+bool detectorKindFromName(const QString &name, DetectorKind *kind)
+{
+    const qsizetype index = detectorKindNames().indexOf(name);
+    if (index < 0)
+        return false;
+    *kind = DetectorKind(index);
+    return true;
 }
 
 const RouterNodeType *routerNodeType(const QString &type)

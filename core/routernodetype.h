@@ -2,6 +2,7 @@
 #pragma once
 
 #include "paramspec.h"
+#include "semanticevent.h"
 
 #include <QString>
 #include <QStringList>
@@ -9,6 +10,8 @@
 #include <vector>
 
 namespace semhap {
+
+class NodeBuilder;
 
 /** What flows along a link: semantic events, a continuous value, or a voice's channels. */
 enum class PortType
@@ -29,18 +32,29 @@ struct PortSpec
 };
 
 /**
- * A router node type: its ports and its parameters' specs. The table is the one place node
- * types are described: the compiler checks graphs against it, the node editor builds its
- * palette and inspector from it, the reference is written from it. Adding a parameter is a
- * line here and the code that uses its value in the compiler.
+ * A router node type: its ports, its parameters' specs and how a node of it is built. The
+ * table is the one place node types are described: the compiler builds and checks graphs by
+ * it, the node editor builds its palette and inspector from it, the reference is written
+ * from it. A new node type is a row; a new parameter is a line in its row and the code that
+ * uses its value in the row's build function.
  */
 struct RouterNodeType
 {
+    /** Builds a node from its checked parameters (NodeBuilder::adopt); false after fail(). */
+    using Build = bool (*)(NodeBuilder &builder);
+
     QString type;
     QString description;
     std::vector<PortSpec> inputs;  ///< the first is the default input
     std::vector<PortSpec> outputs; ///< the first is the default output
     std::vector<ParamSpec> params; ///< its parameters (pattern nodes add the pattern's)
+    Build build = nullptr;
+    /**
+     * Whether it raises messages of its own (a detector): its events carry its detectorKind,
+     * named as the type, and a node hears at most RouterGraph::MaxUpstreamDetectors of them.
+     */
+    bool isDetector = false;
+    DetectorKind detectorKind = DetectorKind::Force; ///< detectors: the kind of its events
 
     /** What a node of the type does in a router, read from its ports. */
     enum class Role
@@ -55,6 +69,8 @@ struct RouterNodeType
     const PortSpec *input(const QString &name) const;
     const PortSpec *output(const QString &name) const;
     const ParamSpec *param(const QString &name) const;
+    /** Its first parameter of `kind` (the pattern a node plays, a device's model), or null. */
+    const ParamSpec *paramOfKind(ParamKind kind) const;
 };
 
 /**
@@ -66,6 +82,8 @@ constexpr double DefaultSlopeTau = 0.05;
 
 /** Every node type, in palette order. */
 const std::vector<RouterNodeType> &routerNodeTypes();
+/** The names of the detector kinds: the detector rows' types, the built-in four first. */
+QStringList detectorKindNames();
 /** The type named `type`, or null. */
 const RouterNodeType *routerNodeType(const QString &type);
 

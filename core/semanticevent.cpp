@@ -18,18 +18,11 @@ bool fromName(const QLatin1String (&names)[Count], const QString &name, Enum *va
     return false;
 }
 
-const QLatin1String detectorKindNames[] = {QLatin1String("force"), QLatin1String("slip"),
-                                           QLatin1String("threshold"), QLatin1String("compose")};
 const QLatin1String categoryNames[] = {QLatin1String("confirmation"), QLatin1String("exception")};
 const QLatin1String eventPhaseNames[] = {QLatin1String("begin"), QLatin1String("update"),
                                          QLatin1String("end")};
 
 } // namespace
-
-QString detectorKindName(DetectorKind kind)
-{
-    return detectorKindNames[size_t(kind)];
-}
 
 NameTable &messageNames()
 {
@@ -51,11 +44,6 @@ QString categoryName(Category category)
 QString eventPhaseName(EventPhase phase)
 {
     return eventPhaseNames[size_t(phase)];
-}
-
-bool detectorKindFromName(const QString &name, DetectorKind *kind)
-{
-    return fromName(detectorKindNames, name, kind);
 }
 
 bool messageFromName(const QString &name, Message *message)

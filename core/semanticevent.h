@@ -8,8 +8,12 @@
 
 namespace semhap {
 
-/** The kind of detector that produced an event. */
-enum class DetectorKind
+/**
+ * The kind of detector that produced an event: the type of its router node. The four built
+ * in are named here; a detector type added to the node-type table (routerNodeTypes()) gets
+ * the next id, and its name is its type's.
+ */
+enum class DetectorKind : int
 {
     Force,
     Slip,
@@ -39,6 +43,7 @@ enum class EventPhase
     End
 };
 
+/** The kind's name (its node type's); defined with the node-type table. */
 QString detectorKindName(DetectorKind kind);
 QString messageName(Message message);
 QString categoryName(Category category);

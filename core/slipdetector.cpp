@@ -83,13 +83,12 @@ SlipDetector::Params SlipDetector::Params::fittedTo(const GripperTraits &gripper
     return fitted;
 }
 
-SlipDetector::SlipDetector(int node, Gripper gripper, const Params &params)
-    : Detector(node, gripper), m_params(params)
+SlipDetector::SlipDetector(int node, Gripper gripper, const Params &params, DetectorKind kind)
+    : Detector(node, gripper, kind), m_params(params)
 {
-    m_grasp.configure(gripper, node, DetectorKind::Slip, Message::Grasp, Category::Confirmation,
+    m_grasp.configure(gripper, node, kind, Message::Grasp, Category::Confirmation,
                       params.minDuration);
-    m_slip.configure(gripper, node, DetectorKind::Slip, Message::Slip, Category::Exception,
-                     params.minDuration);
+    m_slip.configure(gripper, node, kind, Message::Slip, Category::Exception, params.minDuration);
 }
 
 void SlipDetector::update(const ContactFrame &frame, EventBuffer &out)

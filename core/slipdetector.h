@@ -45,9 +45,9 @@ public:
     };
 
     /** `params` should have passed validate(); events carry `node` and `gripper`. */
-    SlipDetector(int node, Gripper gripper, const Params &params);
+    SlipDetector(int node, Gripper gripper, const Params &params,
+                 DetectorKind kind = DetectorKind::Slip);
 
-    DetectorKind kind() const override { return DetectorKind::Slip; }
     void update(const ContactFrame &frame, EventBuffer &out) override;
     void endAll(double t, EventBuffer &out) override;
     void clear() override;
