@@ -13,6 +13,28 @@
 
 namespace semhap {
 
+/** A level a detector compares a frame's quantity with: what the plots draw. */
+struct DetectorLevel
+{
+    /** The frame's quantity it is a level of: the force F (N) or the contact count N. */
+    enum class Quantity
+    {
+        Force,
+        Contacts
+    };
+    /** What happens at it: a confirmation or an exception begins, or intensity is full. */
+    enum class Meaning
+    {
+        ConfirmationBegins,
+        ExceptionBegins,
+        FullIntensity
+    };
+    Quantity quantity = Quantity::Force;
+    Meaning meaning = Meaning::ConfirmationBegins;
+    QString name; ///< the parameter's, as the router file and the event log spell it
+    double value = 0.0;
+};
+
 /**
  * A stateful state estimator on one gripper's contact frames (spec section 2). Each update
  * appends the begin/update/end events of that tick to the buffer, in the spec's order.
@@ -43,6 +65,8 @@ public:
     virtual void appendActive(double t, EventBuffer &out) const = 0;
     /** A begin of each message it may send, at `intensity` (Router::messageRoutes). */
     virtual std::vector<SemanticEvent> probes(double intensity) const = 0;
+    /** The levels it runs with, for the plots; none by default. */
+    virtual std::vector<DetectorLevel> levels() const { return {}; }
 
     int node() const { return m_node; }
     Gripper gripper() const { return m_gripper; }

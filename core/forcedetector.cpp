@@ -138,4 +138,14 @@ std::vector<SemanticEvent> ForceDetector::probes(double intensity) const
     return {m_grasp.probe(intensity), m_break.probe(intensity)};
 }
 
+std::vector<DetectorLevel> ForceDetector::levels() const
+{
+    using L = DetectorLevel;
+    return {
+        {L::Quantity::Force, L::Meaning::ConfirmationBegins, QStringLiteral("grasp"),
+         m_params.grasp},
+        {L::Quantity::Force, L::Meaning::ExceptionBegins, QStringLiteral("break"), m_params.brk},
+        {L::Quantity::Force, L::Meaning::FullIntensity, QStringLiteral("max"), m_params.max}};
+}
+
 } // namespace semhap

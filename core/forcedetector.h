@@ -50,6 +50,7 @@ public:
     bool isActive(Message message, double *intensity = nullptr) const override;
     void appendActive(double t, EventBuffer &out) const override;
     std::vector<SemanticEvent> probes(double intensity) const override;
+    std::vector<DetectorLevel> levels() const override;
 
     /** The parameters it runs with (a router's are fitted to the gripper). */
     const Params &params() const { return m_params; }

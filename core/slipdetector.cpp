@@ -163,4 +163,13 @@ std::vector<SemanticEvent> SlipDetector::probes(double intensity) const
     return {m_grasp.probe(intensity), m_slip.probe(intensity)};
 }
 
+std::vector<DetectorLevel> SlipDetector::levels() const
+{
+    using L = DetectorLevel;
+    return {
+        {L::Quantity::Contacts, L::Meaning::ExceptionBegins, QStringLiteral("loss"),
+         m_params.loss},
+        {L::Quantity::Contacts, L::Meaning::FullIntensity, QStringLiteral("min"), m_params.min}};
+}
+
 } // namespace semhap

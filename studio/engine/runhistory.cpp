@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "runhistory.h"
 
-#include "forcedetector.h"
 #include "player.h"
 #include "router.h"
-#include "slipdetector.h"
 
 #include <algorithm>
 
@@ -34,17 +32,9 @@ std::array<GripperThresholds, 2> thresholdsOf(const Router &router, const Hands 
     for (const Detector *detector : router.detectors()) {
         if (!present[size_t(detector->gripper())])
             continue;
-        GripperThresholds &t = result[size_t(detector->gripper())];
-        if (const auto *force = dynamic_cast<const ForceDetector *>(detector)) {
-            t.hasForce = true;
-            t.grasp = force->params().grasp;
-            t.brk = force->params().brk;
-            t.max = force->params().max;
-        } else if (const auto *slip = dynamic_cast<const SlipDetector *>(detector)) {
-            t.hasSlip = true;
-            t.loss = slip->params().loss;
-            t.min = slip->params().min;
-        }
+        std::vector<DetectorLevel> &levels = result[size_t(detector->gripper())].levels;
+        for (const DetectorLevel &level : detector->levels())
+            levels.push_back(level);
     }
     for (const ThresholdLevels &levels : router.thresholds()) {
         if (!levels.quantity.isEmpty() && present[size_t(levels.signalGripper)])

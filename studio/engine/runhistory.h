@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contactframe.h"
+#include "detector.h"
 #include "deviceframe.h"
 #include "nodeactivity.h"
 #include "router.h"
@@ -20,13 +21,8 @@ namespace semhap {
 /** The active detectors' thresholds for one gripper, drawn as lines on its plots. */
 struct GripperThresholds
 {
-    bool hasForce = false;
-    double grasp = 0.0;
-    double brk = 0.0; ///< the force detector's `break` (a C++ keyword), as in its Params
-    double max = 0.0;
-    bool hasSlip = false;
-    double loss = 0.0;
-    double min = 0.0;
+    /** The levels of the detectors on this gripper's frames, as they report them. */
+    std::vector<DetectorLevel> levels;
     /** The threshold nodes reading a signal of this gripper's frames, in graph order. */
     std::vector<ThresholdLevels> signalThresholds;
 };

@@ -315,7 +315,7 @@ static std::vector<Gripper> shownGrippers(const RunHistory &history)
     for (Gripper gripper : {Gripper::Right, Gripper::Left}) {
         const GripperThresholds &thresholds = history.thresholds()[size_t(gripper)];
         const auto &frames = history.frames(gripper);
-        if (thresholds.hasForce || thresholds.hasSlip || !thresholds.signalThresholds.empty() ||
+        if (!thresholds.levels.empty() || !thresholds.signalThresholds.empty() ||
             !frames.isEmpty())
             shown.push_back(gripper);
     }
@@ -560,38 +560,36 @@ void PlotPanel::addGripper(Gripper gripper)
     plot->right = addGraph(plot->forceRect, id + QStringLiteral(".right.f"),
                            tr("right.f (finger)"), Green, 1.0);
     plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 1.0);
-    if (thresholds.hasForce) {
-        // Named as the force node's parameters, in every language: the event log and the
-        // router files say `grasp` too.
-        const QString format = tr("%1 %2 N");
-        addThreshold(plot->forceRect, id + QStringLiteral(".grasp"),
-                     format.arg(QStringLiteral("grasp"), number(thresholds.grasp)),
-                     thresholds.grasp, Blue);
-        addThreshold(plot->forceRect, id + QStringLiteral(".break"),
-                     format.arg(QStringLiteral("break"), number(thresholds.brk)), thresholds.brk,
-                     Orange);
-        addThreshold(plot->forceRect, id + QStringLiteral(".max"),
-                     format.arg(QStringLiteral("max"), number(thresholds.max)), thresholds.max,
-                     Vermillion);
-        plot->thresholdTop = std::max({thresholds.grasp, thresholds.brk, thresholds.max});
-    }
-
+    addLevels(plot.get(), DetectorLevel::Quantity::Force, thresholds.levels);
     plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 3);
     plot->countRect->axis(QCPAxis::atLeft)->setLabel(tr("N"));
     plot->count =
         addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"), Black, 1.0);
-    if (thresholds.hasSlip) {
-        const QString format = tr("%1 %2");
-        addThreshold(plot->countRect, id + QStringLiteral(".loss"),
-                     format.arg(QStringLiteral("loss"), number(thresholds.loss)), thresholds.loss,
-                     Vermillion);
-        addThreshold(plot->countRect, id + QStringLiteral(".min"),
-                     format.arg(QStringLiteral("min"), number(thresholds.min)), thresholds.min,
-                     Purple);
-        plot->countTop = std::max(thresholds.loss, thresholds.min);
-    }
+    addLevels(plot.get(), DetectorLevel::Quantity::Contacts, thresholds.levels);
     plot->next = m_history.frames(gripper).begin();
     m_grippers.push_back(std::move(plot));
+}
+
+void PlotPanel::addLevels(GripperPlot *plot, DetectorLevel::Quantity quantity,
+                          const std::vector<DetectorLevel> &levels)
+{
+    const bool force = quantity == DetectorLevel::Quantity::Force;
+    QCPAxisRect *rect = force ? plot->forceRect : plot->countRect;
+    double &top = force ? plot->thresholdTop : plot->countTop;
+    // Named as the detector's parameters, in every language: the event log and the router
+    // files say `grasp` too. The colour says what happens there, the same on every rect.
+    const QString format = force ? tr("%1 %2 N") : tr("%1 %2");
+    for (const DetectorLevel &level : levels) {
+        if (level.quantity != quantity)
+            continue;
+        const QColor color = level.meaning == DetectorLevel::Meaning::ConfirmationBegins ? Blue
+                             : level.meaning == DetectorLevel::Meaning::ExceptionBegins
+                                 ? Orange
+                                 : Vermillion;
+        addThreshold(rect, gripperName(plot->gripper) + QLatin1Char('.') + level.name,
+                     format.arg(level.name, number(level.value)), level.value, color);
+        top = std::max(top, level.value);
+    }
 }
 
 void PlotPanel::addSignals(Gripper gripper)

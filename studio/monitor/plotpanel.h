@@ -85,6 +85,9 @@ private:
                        const QColor &color, double width);
     void addThreshold(QCPAxisRect *rect, const QString &id, const QString &name, double value,
                       const QColor &color, Qt::PenStyle style = Qt::DashLine);
+    /** The detectors' levels of `quantity` on the gripper's force or contacts rect. */
+    void addLevels(GripperPlot *plot, DetectorLevel::Quantity quantity,
+                   const std::vector<DetectorLevel> &levels);
     bool needsRebuild() const;
 
     void onUpdated();

@@ -44,14 +44,13 @@ double threadCpuSeconds()
 
 GripperThresholds thresholds()
 {
+    using L = DetectorLevel;
     GripperThresholds t;
-    t.hasForce = true;
-    t.grasp = 5.0;
-    t.brk = 80.0;
-    t.max = 100.0;
-    t.hasSlip = true;
-    t.loss = 28.0;
-    t.min = 12.0;
+    t.levels = {{L::Quantity::Force, L::Meaning::ConfirmationBegins, QStringLiteral("grasp"), 5.0},
+                {L::Quantity::Force, L::Meaning::ExceptionBegins, QStringLiteral("break"), 80.0},
+                {L::Quantity::Force, L::Meaning::FullIntensity, QStringLiteral("max"), 100.0},
+                {L::Quantity::Contacts, L::Meaning::ExceptionBegins, QStringLiteral("loss"), 28.0},
+                {L::Quantity::Contacts, L::Meaning::FullIntensity, QStringLiteral("min"), 12.0}};
     return t;
 }
 
@@ -119,13 +118,14 @@ private:
 
     void detect(size_t g, const ContactFrame &frame, Tick *out)
     {
-        const GripperThresholds th = thresholds();
+        // The levels thresholds() gives: grasp, break and loss.
+        const std::vector<DetectorLevel> levels = thresholds().levels;
         const double f = frame.totalForce();
         const int n = frame.totalContacts();
         const int forceNode = int(2 * g);
-        toggle(&m_grasp[g], f >= th.grasp, Message::Grasp, forceNode, frame, out);
-        toggle(&m_break[g], f >= th.brk, Message::Break, forceNode, frame, out);
-        toggle(&m_slip[g], n > 0 && n < th.loss, Message::Slip, forceNode + 1, frame, out);
+        toggle(&m_grasp[g], f >= levels[0].value, Message::Grasp, forceNode, frame, out);
+        toggle(&m_break[g], f >= levels[1].value, Message::Break, forceNode, frame, out);
+        toggle(&m_slip[g], n > 0 && n < levels[3].value, Message::Slip, forceNode + 1, frame, out);
     }
 
     static void toggle(bool *active, bool now, Message message, int node,

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // PlotPanel fed from a RunHistory directly: the graphs, threshold lines and message spans
 // it draws, and its controls driven as a user would (spin box, clicks, buttons).
+#include "forcedetector.h"
 #include "plotchecks.h"
 #include "plotpanel.h"
 #include "runhistory.h"
+#include "slipdetector.h"
 
 #include <QFile>
 #include <QJsonDocument>
@@ -63,14 +65,18 @@ SemanticEvent eventAt(double t, int node, Message message, EventPhase phase)
 
 GripperThresholds rightThresholds()
 {
+    // The levels as the detectors report them.
+    ForceDetector::Params force;
+    force.grasp = 5.0;
+    force.brk = 80.0;
+    force.max = 100.0;
+    SlipDetector::Params slip;
+    slip.loss = 24.0;
+    slip.min = 8.0;
     GripperThresholds thresholds;
-    thresholds.hasForce = true;
-    thresholds.grasp = 5.0;
-    thresholds.brk = 80.0;
-    thresholds.max = 100.0;
-    thresholds.hasSlip = true;
-    thresholds.loss = 24.0;
-    thresholds.min = 8.0;
+    thresholds.levels = ForceDetector(0, Gripper::Right, force).levels();
+    for (const DetectorLevel &level : SlipDetector(1, Gripper::Right, slip).levels())
+        thresholds.levels.push_back(level);
     return thresholds;
 }
 

@@ -264,7 +264,11 @@ void TestStudio::picksSceneAndRouter()
     QVERIFY(window.engine().isRunning()); // picking keeps a running session running
 
     // The bimanual scene has a left hand: its frames and the slip detector show up.
-    QVERIFY(window.engine().history().thresholds()[size_t(Gripper::Left)].hasSlip);
+    const std::vector<DetectorLevel> &left =
+        window.engine().history().thresholds()[size_t(Gripper::Left)].levels;
+    QVERIFY(std::any_of(left.begin(), left.end(), [](const DetectorLevel &level) {
+        return level.quantity == DetectorLevel::Quantity::Contacts;
+    }));
     QTRY_VERIFY_WITH_TIMEOUT(!window.engine().history().frames(Gripper::Left).isEmpty(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(window.eventLog()->model()->rowCount() > 0, 30000);
     QVERIFY(window.windowTitle().contains("C1"));
