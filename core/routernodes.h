@@ -9,6 +9,7 @@
 #include "messagetracker.h"
 #include "nodeactivity.h"
 #include "player.h"
+#include "slopefilter.h"
 #include "voice.h"
 #include "waveform.h"
 
@@ -259,26 +260,6 @@ private:
     Quantity m_quantity;
     double m_mu;
     int m_signal;
-};
-
-/**
- * The slope of a signal (units per second), the difference quotient smoothed by a
- * first-order low-pass of time constant `tau`: on a ramp it settles on the ramp's slope
- * within a few tau; the first sample gives 0. What `derivative` and `predict` share.
- */
-class SlopeFilter
-{
-public:
-    explicit SlopeFilter(double tau) : m_tau(tau) {}
-    /** Feeds the value at `t` and returns the smoothed slope; a repeated `t` keeps it. */
-    double update(double value, double t);
-
-private:
-    double m_tau;
-    bool m_started = false;
-    double m_value = 0.0;
-    double m_t = 0.0;
-    double m_slope = 0.0;
 };
 
 /** Sends on the smoothed time derivative of its input. */
