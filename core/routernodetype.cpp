@@ -3,6 +3,7 @@
 
 #include "detectorparams.h"
 #include "forcedetector.h"
+#include "impactdetector.h"
 #include "nodebuilder.h"
 #include "player.h"
 #include "routernodes.h"
@@ -327,6 +328,14 @@ const std::vector<RouterNodeType> &routerNodeTypes()
              {eventsOut},
              detectorParams(SlipDetector::Params::specs()),
              &buildDetector<SlipDetector>,
+             true},
+            {QStringLiteral("impact"),
+             QStringLiteral("Impact detector: an impact message when F rises faster than a "
+                            "rate, as when the hand strikes something"),
+             {},
+             {eventsOut},
+             detectorParams(ImpactDetector::Params::specs()),
+             &buildDetector<ImpactDetector>,
              true},
             {QStringLiteral("signal"),
              QStringLiteral("A continuous quantity of a gripper's contact frames (friction: "

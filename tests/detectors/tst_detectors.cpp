@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "actortable.h"
 #include "forcedetector.h"
+#include "impactdetector.h"
 #include "messagetracker.h"
+#include "routernodetype.h"
 #include "slipdetector.h"
 
 #include <QJsonDocument>
@@ -120,6 +122,10 @@ private slots:
     void forceParams();
     void slipParams_data();
     void slipParams();
+    void impactEvents_data();
+    void impactEvents();
+    void impactParams_data();
+    void impactParams();
 };
 
 void TestDetectors::names()
@@ -494,6 +500,98 @@ void TestDetectors::slipParams()
     QFETCH(QString, reason);
 
     SlipDetector::Params params;
+    QString gotKey;
+    QString gotReason;
+    const bool ok =
+        params.read(QJsonDocument::fromJson(json.toUtf8()).object(), &gotKey, &gotReason) &&
+        params.validate(&gotKey, &gotReason);
+    QCOMPARE(gotKey, key);
+    QCOMPARE(gotReason, reason);
+    QCOMPARE(ok, key.isEmpty());
+}
+
+void TestDetectors::impactEvents_data()
+{
+    QTest::addColumn<QStringList>("frames");
+    QTest::addColumn<QStringList>("events");
+
+    // tau 0: the rate is the difference quotient of F, exactly.
+    QTest::newRow("a slow rise is no impact")
+        << lines({"0 0 0", "1 25 25", "2 50 50"}) << QStringList();
+    QTest::newRow("the first frame is no impact") << lines({"0 100 100"}) << QStringList();
+    QTest::newRow("a strike is felt for hold after it")
+        << lines({"0 0 0", "0.1 10 10", "0.2 10 10", "0.5 10 10", "0.6 10 10"})
+        << lines({"0.1 impact begin 0.5", "0.6 impact end 0.5"});
+    QTest::newRow("its intensity is its steepest rise's")
+        << lines({"0 0 0", "0.1 10 10", "0.2 25 25", "0.3 30 30", "0.8 30 30"})
+        << lines({"0.1 impact begin 0.5", "0.2 impact update 1", "0.8 impact end 1"});
+    QTest::newRow("a new strike after the end begins anew")
+        << lines({"0 0 0", "0.125 12.5 12.5", "0.75 12.5 12.5", "0.875 21.875 21.875"})
+        << lines({"0.125 impact begin 0.5", "0.75 impact end 0.5", "0.875 impact begin 0.25"});
+}
+
+void TestDetectors::impactEvents()
+{
+    QFETCH(QStringList, frames);
+    QFETCH(QStringList, events);
+
+    ImpactDetector::Params p;
+    QString key;
+    QString reason;
+    QVERIFY(p.read(
+        QJsonDocument::fromJson(R"({"rate": 100, "full": 300, "tau": 0, "hold": 0.5})").object(),
+        &key, &reason));
+    QVERIFY2(p.validate(&key, &reason), qPrintable(key + QStringLiteral(": ") + reason));
+    // Its kind is its node type's, as the router builds it.
+    const DetectorKind kind = routerNodeType(QStringLiteral("impact"))->detectorKind;
+    QCOMPARE(detectorKindName(kind), QStringLiteral("impact"));
+    ImpactDetector detector(Node, Gripper::Right, p, kind);
+    QStringList got;
+    EventBuffer buffer;
+    for (const QString &text : std::as_const(frames)) {
+        buffer.clear();
+        detector.update(forceFrame(text), buffer);
+        for (const SemanticEvent &event : buffer) {
+            QCOMPARE(event.detector, kind);
+            QCOMPARE(event.category, Category::Exception);
+            QCOMPARE(event.node, Node);
+            got.append(describe(event));
+        }
+    }
+    QCOMPARE(got, events);
+}
+
+void TestDetectors::impactParams_data()
+{
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("reason");
+
+    QTest::newRow("defaults") << "{}"
+                              << ""
+                              << "";
+    QTest::newRow("all keys") << R"({"rate": 50, "full": 60, "tau": 0, "hold": 0,
+                                     "minDuration": 0.1})"
+                              << ""
+                              << "";
+    QTest::newRow("full equal to rate") << R"({"full": 1000})"
+                                        << "full"
+                                        << "must be greater than rate (1000), got 1000";
+    QTest::newRow("negative hold") << R"({"hold": -1})"
+                                   << "hold"
+                                   << "must not be negative, got -1";
+    QTest::newRow("unknown key") << R"({"threshold": 5})"
+                                 << "threshold"
+                                 << "unknown parameter";
+}
+
+void TestDetectors::impactParams()
+{
+    QFETCH(QString, json);
+    QFETCH(QString, key);
+    QFETCH(QString, reason);
+
+    ImpactDetector::Params params;
     QString gotKey;
     QString gotReason;
     const bool ok =

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "forcedetector.h"
 #include "gatedrouter.h"
+#include "impactdetector.h"
 #include "jsonreader.h"
 #include "pipeline.h"
 #include "router.h"
@@ -224,8 +225,14 @@ void TestRouter::invalid_data()
     QTest::newRow("unknown type")
         << edited("nodes/1", object(R"({"id": "warn", "type": "fliter"})"))
         << "r.json: /nodes/1/type: node 'warn': unknown node type 'fliter' (known: force, slip, "
-           "signal, derivative, predict, threshold, compose, filter, gate, debounce, curve, "
+           "impact, signal, derivative, predict, threshold, compose, filter, gate, debounce, "
+           "curve, "
            "pattern, proportional, device)";
+    QTest::newRow("impact full below rate")
+        << edited("nodes/1", object(R"({"id": "right.impact", "type": "impact",
+                                        "params": {"gripper": "right", "full": 500}})"))
+        << "r.json: /nodes/1/params/full: node 'right.impact' (impact): must be greater than "
+           "rate (1000), got 500";
     QTest::newRow("detector without gripper")
         << edited("nodes/0", object(R"({"id": "right.force", "type": "force"})"))
         << "r.json: /nodes/0: node 'right.force' (force): needs \"gripper\": \"left\" or "
@@ -529,6 +536,12 @@ void TestRouter::nodeTypesTable()
     // The detectors' defaults are the ones their parameters start with.
     QCOMPARE(routerNodeType("force")->param("break")->defaultNumber, ForceDetector::Params().brk);
     QCOMPARE(routerNodeType("slip")->param("loss")->defaultNumber, SlipDetector::Params().loss);
+    QCOMPARE(routerNodeType("impact")->param("rate")->defaultNumber,
+             ImpactDetector::Params().rate);
+    // The detector rows are the detector kinds: the built-in four keep their ids.
+    QCOMPARE(detectorKindNames().mid(0, 4),
+             QStringList({"force", "slip", "threshold", "compose"}));
+    QVERIFY(detectorKindNames().contains("impact"));
 }
 
 void TestRouter::checkLinkAgreesWithTheCompiler_data()
