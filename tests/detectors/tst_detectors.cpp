@@ -102,6 +102,32 @@ QStringList run(Detector &detector, const QList<ContactFrame> &frames)
     return events;
 }
 
+/**
+ * Reads and validates the row's `json` as a detector's Params, and checks the key and reason
+ * of the row's error (none: valid, and its JSON reads back the same).
+ */
+template<typename Params> void checkParams()
+{
+    QFETCH(QString, json);
+    QFETCH(QString, key);
+    QFETCH(QString, reason);
+
+    Params params;
+    QString gotKey;
+    QString gotReason;
+    const bool ok =
+        params.read(QJsonDocument::fromJson(json.toUtf8()).object(), &gotKey, &gotReason) &&
+        params.validate(&gotKey, &gotReason);
+    QCOMPARE(gotKey, key);
+    QCOMPARE(gotReason, reason);
+    QCOMPARE(ok, key.isEmpty());
+    if (ok) {
+        Params back;
+        QVERIFY(back.read(params.toJson(), nullptr, nullptr));
+        QCOMPARE(back.toJson(), params.toJson());
+    }
+}
+
 } // namespace
 
 class TestDetectors : public QObject
@@ -443,24 +469,7 @@ void TestDetectors::forceParams_data()
 
 void TestDetectors::forceParams()
 {
-    QFETCH(QString, json);
-    QFETCH(QString, key);
-    QFETCH(QString, reason);
-
-    ForceDetector::Params params;
-    QString gotKey;
-    QString gotReason;
-    const bool ok =
-        params.read(QJsonDocument::fromJson(json.toUtf8()).object(), &gotKey, &gotReason) &&
-        params.validate(&gotKey, &gotReason);
-    QCOMPARE(gotKey, key);
-    QCOMPARE(gotReason, reason);
-    QCOMPARE(ok, key.isEmpty());
-    if (ok) {
-        ForceDetector::Params back;
-        QVERIFY(back.read(params.toJson(), nullptr, nullptr));
-        QCOMPARE(back.toJson(), params.toJson());
-    }
+    checkParams<ForceDetector::Params>();
 }
 
 void TestDetectors::slipParams_data()
@@ -495,19 +504,7 @@ void TestDetectors::slipParams_data()
 
 void TestDetectors::slipParams()
 {
-    QFETCH(QString, json);
-    QFETCH(QString, key);
-    QFETCH(QString, reason);
-
-    SlipDetector::Params params;
-    QString gotKey;
-    QString gotReason;
-    const bool ok =
-        params.read(QJsonDocument::fromJson(json.toUtf8()).object(), &gotKey, &gotReason) &&
-        params.validate(&gotKey, &gotReason);
-    QCOMPARE(gotKey, key);
-    QCOMPARE(gotReason, reason);
-    QCOMPARE(ok, key.isEmpty());
+    checkParams<SlipDetector::Params>();
 }
 
 void TestDetectors::impactEvents_data()
@@ -587,19 +584,7 @@ void TestDetectors::impactParams_data()
 
 void TestDetectors::impactParams()
 {
-    QFETCH(QString, json);
-    QFETCH(QString, key);
-    QFETCH(QString, reason);
-
-    ImpactDetector::Params params;
-    QString gotKey;
-    QString gotReason;
-    const bool ok =
-        params.read(QJsonDocument::fromJson(json.toUtf8()).object(), &gotKey, &gotReason) &&
-        params.validate(&gotKey, &gotReason);
-    QCOMPARE(gotKey, key);
-    QCOMPARE(gotReason, reason);
-    QCOMPARE(ok, key.isEmpty());
+    checkParams<ImpactDetector::Params>();
 }
 
 QTEST_GUILESS_MAIN(TestDetectors)
