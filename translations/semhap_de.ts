@@ -2748,10 +2748,6 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <translation>Nicht verbunden: %1</translation>
     </message>
     <message>
-        <source>Drag a node type onto the canvas, or double-click it</source>
-        <translation>Einen Knotentyp auf die Zeichenfläche ziehen oder doppelklicken</translation>
-    </message>
-    <message>
         <source>Router</source>
         <translation>Router</translation>
     </message>
@@ -2875,53 +2871,6 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <translation>Angewendet: Die laufende Sitzung verwendet jetzt diesen Router.</translation>
     </message>
     <message>
-        <source>Select a node to edit its parameters.</source>
-        <translation>Einen Knoten auswählen, um seine Parameter zu bearbeiten.</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n nodes selected.</source>
-        <translation>
-            <numerusform>%n Knoten ausgewählt.</numerusform>
-            <numerusform>%n Knoten ausgewählt.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The name events and devices carry</source>
-        <translation>Der Name, den Ereignisse und Geräte tragen</translation>
-    </message>
-    <message>
-        <source>id</source>
-        <translation>id</translation>
-    </message>
-    <message>
-        <source>(any)</source>
-        <translation>(beliebig)</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <source>(default)</source>
-        <translation>(Standard)</translation>
-    </message>
-    <message>
-        <source>Not a parameter of this node: clear it</source>
-        <translation>Kein Parameter dieses Knotens: bitte leeren</translation>
-    </message>
-    <message>
-        <source>(automatic)</source>
-        <translation>(automatisch)</translation>
-    </message>
-    <message>
-        <source>(default: %1)</source>
-        <translation>(Standard: %1)</translation>
-    </message>
-    <message>
-        <source>%1 (your file)</source>
-        <translation>%1 (Ihre Datei)</translation>
-    </message>
-    <message>
         <source>Rename pattern</source>
         <translation>Muster umbenennen</translation>
     </message>
@@ -2972,6 +2921,63 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>How far apart the messages on each band feel, in just-noticeable differences</source>
         <translation>Wie weit die Nachrichten auf jedem Band spürbar auseinanderliegen, in eben merklichen Unterschieden (JND)</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RouterInspector</name>
+    <message>
+        <source>Select a node to edit its parameters.</source>
+        <translation>Einen Knoten auswählen, um seine Parameter zu bearbeiten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected.</source>
+        <translation>
+            <numerusform>%n Knoten ausgewählt.</numerusform>
+            <numerusform>%n Knoten ausgewählt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The name events and devices carry</source>
+        <translation>Der Name, den Ereignisse und Geräte tragen</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>Not a parameter of this node: clear it</source>
+        <translation>Kein Parameter dieses Knotens: bitte leeren</translation>
+    </message>
+    <message>
+        <source>%1 (your file)</source>
+        <translation>%1 (Ihre Datei)</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>(any)</source>
+        <translation>(beliebig)</translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation>(automatisch)</translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation>(Standard: %1)</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(Standard)</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RouterPalette</name>
+    <message>
+        <source>Drag a node type onto the canvas, or double-click it</source>
+        <translation>Einen Knotentyp auf die Zeichenfläche ziehen oder doppelklicken</translation>
     </message>
 </context>
 <context>

@@ -2740,10 +2740,6 @@ Please tell the experimenter that you are done.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Drag a node type onto the canvas, or double-click it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Router</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2867,53 +2863,6 @@ Please tell the experimenter that you are done.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Select a node to edit its parameters.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n nodes selected.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The name events and devices carry</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>id</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(any)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(default)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not a parameter of this node: clear it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(automatic)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(default: %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 (your file)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Rename pattern</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2963,6 +2912,63 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>How far apart the messages on each band feel, in just-noticeable differences</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RouterInspector</name>
+    <message>
+        <source>Select a node to edit its parameters.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The name events and devices carry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not a parameter of this node: clear it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (your file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(any)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RouterPalette</name>
+    <message>
+        <source>Drag a node type onto the canvas, or double-click it</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,35 +4,29 @@
 #include "colors.h"
 #include "distinctivenessview.h"
 #include "filedialogs.h"
-#include "patternlibrary.h"
 #include "router.h"
 #include "routercommands.h"
 #include "routerdocument.h"
+#include "routerinspector.h"
+#include "routerpalette.h"
 #include "routerscene.h"
 #include "routerwireitem.h"
 #include "runhistory.h"
 #include "undoactions.h"
-#include "userpatterns.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QClipboard>
-#include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QGraphicsView>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
-#include <QLineEdit>
 #include <QListWidget>
-#include <QLocale>
 #include <QMenu>
 #include <QMimeData>
-#include <QRegularExpression>
-#include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QTabWidget>
@@ -51,186 +45,6 @@ namespace semhap {
 namespace {
 
 constexpr char RouterMime[] = "application/x-semhap-router";
-/** The room a new node is given: most nodes' height with their ports. */
-constexpr double NewNodeHeight = 100.0;
-
-/** The palette: node types that drag onto the canvas as their type name. */
-class NodePalette : public QListWidget
-{
-public:
-    explicit NodePalette(QWidget *parent) : QListWidget(parent)
-    {
-        setDragEnabled(true);
-        setDragDropMode(DragOnly);
-        setSelectionMode(SingleSelection);
-        // Columns of entries: the ten types fit in a short strip beside the inspector.
-        setFlow(TopToBottom);
-        setWrapping(true);
-        setResizeMode(Adjust);
-        setSpacing(1);
-    }
-
-protected:
-    QStringList mimeTypes() const override { return {QLatin1String(RouterScene::NodeTypeMime)}; }
-    QMimeData *mimeData(const QList<QListWidgetItem *> &items) const override
-    {
-        if (items.isEmpty())
-            return nullptr;
-        auto *mime = new QMimeData;
-        mime->setData(QLatin1String(RouterScene::NodeTypeMime),
-                      items.front()->data(Qt::UserRole).toString().toUtf8());
-        return mime;
-    }
-};
-
-/**
- * An editable list of names whose entries are worked out again each time it opens: a live
- * rig's signals grow while the inspector shows a node.
- */
-class NameCombo : public QComboBox
-{
-public:
-    using Choices = std::function<QStringList()>;
-
-    NameCombo(const QString &absent, Choices choices, QWidget *parent)
-        : QComboBox(parent), m_absent(absent), m_choices(std::move(choices))
-    {
-        setEditable(true);
-        setInsertPolicy(QComboBox::NoInsert);
-        fill();
-    }
-    void showPopup() override
-    {
-        const QString typed = currentText();
-        {
-            const QSignalBlocker blocker(this);
-            clear();
-            fill();
-            setEditText(typed);
-        }
-        QComboBox::showPopup();
-    }
-
-private:
-    /** The first entry leaves the parameter out; typed, its text means the same. */
-    void fill()
-    {
-        addItem(m_absent, QString());
-        for (const QString &choice : m_choices())
-            addItem(choice, choice);
-    }
-
-    QString m_absent;
-    Choices m_choices;
-};
-
-/** Numbers in the user's locale, without group separators that would read as decimals. */
-QLocale numberLocale()
-{
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
-    return locale;
-}
-
-/** A parameter's value as the inspector shows it. */
-QString valueText(const QJsonValue &value)
-{
-    if (value.isUndefined() || value.isNull())
-        return QString();
-    if (value.isString())
-        return value.toString();
-    if (value.isDouble())
-        return numberLocale().toString(value.toDouble(), 'g', 12);
-    const QJsonDocument doc =
-        value.isArray() ? QJsonDocument(value.toArray()) : QJsonDocument(value.toObject());
-    return QString::fromUtf8(doc.toJson(QJsonDocument::Compact));
-}
-
-/** What the user typed as a parameter: a number, JSON, or a plain string; empty: unset. */
-QJsonValue parseValue(const QString &text)
-{
-    const QString trimmed = text.trimmed();
-    if (trimmed.isEmpty())
-        return QJsonValue(QJsonValue::Undefined);
-    bool ok = false;
-    const double number = numberLocale().toDouble(trimmed, &ok);
-    if (ok)
-        return number;
-    const QJsonDocument doc = QJsonDocument::fromJson(QByteArrayLiteral("[") + trimmed.toUtf8() +
-                                                      QByteArrayLiteral("]"));
-    if (doc.isArray() && doc.array().size() == 1)
-        return doc.array().at(0);
-    return trimmed;
-}
-
-/** The separator of a range's two numbers: `;` where the comma is the decimal point. */
-QString rangeSeparator()
-{
-    return numberLocale().decimalPoint() == QLatin1String(",") ? QStringLiteral("; ")
-                                                               : QStringLiteral(", ");
-}
-
-/** A level as the inspector shows it: `80`, or `[0.02, 0.08]` (`[0,02; 0,08]` in German). */
-QString levelText(const QJsonValue &value)
-{
-    const QJsonArray pair = value.toArray();
-    if (!value.isArray() || pair.size() != 2 || !pair.at(0).isDouble() || !pair.at(1).isDouble())
-        return valueText(value);
-    const QLocale locale = numberLocale();
-    return QStringLiteral("[%1%2%3]")
-        .arg(locale.toString(pair.at(0).toDouble(), 'g', 12), rangeSeparator(),
-             locale.toString(pair.at(1).toDouble(), 'g', 12));
-}
-
-/**
- * A level typed: a number, a JSON range `[0.02, 0.08]`, or two numbers in the user's
- * locale with or without brackets (`0.02, 0.08`; in German `0,02; 0,08` or `0,02, 0,08`);
- * else what parseValue() makes of it, for the compiler to name what is wrong.
- */
-QJsonValue parseLevel(const QString &text)
-{
-    const QJsonValue value = parseValue(text);
-    if (!value.isString())
-        return value;
-    QString inner = value.toString();
-    if (inner.startsWith(QLatin1Char('[')) && inner.endsWith(QLatin1Char(']')))
-        inner = inner.mid(1, inner.size() - 2);
-    // A comma with a space after it parts the numbers even where it is the decimal point.
-    const QStringList parts = inner.contains(QLatin1Char(';'))
-                                  ? inner.split(QLatin1Char(';'))
-                                  : inner.split(QRegularExpression(QStringLiteral(",\\s+")));
-    if (parts.size() != 2)
-        return value;
-    QJsonArray range;
-    for (const QString &part : parts) {
-        bool ok = false;
-        const double number = numberLocale().toDouble(part.trimmed(), &ok);
-        if (!ok)
-            return value;
-        range.append(number);
-    }
-    return range;
-}
-
-/** Names typed into a list field: `grasp, aligned` as a list, one name as itself. */
-QJsonValue parseNames(const QString &text)
-{
-    const QJsonValue value = parseValue(text);
-    if (!value.isString() || !value.toString().contains(QLatin1Char(',')))
-        return value;
-    QJsonArray names;
-    for (const QString &name : value.toString().split(QLatin1Char(','), Qt::SkipEmptyParts))
-        names.append(name.trimmed());
-    return names;
-}
-
-/** Whether the field takes a name the user may type: a signal, an open message list. */
-bool takesTypedName(const ParamSpec &spec)
-{
-    return spec.kind == ParamKind::Signal ||
-           (spec.openChoices &&
-            (spec.kind == ParamKind::Choice || spec.kind == ParamKind::Choices));
-}
 
 } // namespace
 
@@ -264,18 +78,9 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     m_errorList = new QListWidget(this);
     m_errorList->setObjectName(QStringLiteral("routerErrors"));
     m_errorList->setWordWrap(true);
-    m_inspector = new QWidget(this);
-    m_inspector->setObjectName(QStringLiteral("routerInspector"));
-    auto *inspectorLayout = new QVBoxLayout(m_inspector);
-    inspectorLayout->setContentsMargins(0, 0, 0, 0);
-    auto *scroll = new QScrollArea(m_inspector);
-    scroll->setObjectName(QStringLiteral("inspectorScroll"));
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    inspectorLayout->addWidget(scroll);
-    m_palette = new NodePalette(this);
-    m_palette->setObjectName(QStringLiteral("routerPalette"));
-    createPalette();
+    m_inspector = new RouterInspector(*this, this);
+    connect(m_inspector, &RouterInspector::status, this, &RouterEditor::showStatus);
+    m_palette = new RouterPalette(this);
     m_autoApply = new QCheckBox(tr("Auto-apply"), this);
     m_autoApply->setObjectName(QStringLiteral("autoApply"));
     m_autoApply->setToolTip(tr("Send every edit that compiles to the running session"));
@@ -349,7 +154,7 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
         button->setObjectName(QStringLiteral("applyButton"));
 
     connect(m_document, &RouterDocument::changed, this, &RouterEditor::onGraphChanged);
-    connect(m_scene, &QGraphicsScene::selectionChanged, this, &RouterEditor::scheduleInspector);
+    connect(m_scene, &QGraphicsScene::selectionChanged, m_inspector, &RouterInspector::schedule);
     // A node picked on the canvas shows its parameters, wherever the side was.
     connect(m_scene, &QGraphicsScene::selectionChanged, this, [this] {
         if (!m_scene->selectedNodeIds().isEmpty())
@@ -374,8 +179,10 @@ RouterEditor::RouterEditor(RouterDocument *document, QWidget *parent)
     connect(m_palette, &QListWidget::itemDoubleClicked, this, [this](QListWidgetItem *item) {
         // In free space, as near the view's centre as there is any.
         const QPointF centre = m_view->mapToScene(m_view->viewport()->rect().center()) -
-                               QPointF(RouterNodeItem::Width / 2, NewNodeHeight / 2);
-        const QString id = addNode(item->data(Qt::UserRole).toString(), freePlace(centre));
+                               QPointF(RouterNodeItem::Width / 2, RouterScene::NewNodeHeight / 2);
+        const QRectF visible = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
+        const QString id =
+            addNode(item->data(Qt::UserRole).toString(), m_scene->freePlace(centre, visible));
         if (RouterNodeItem *node = m_scene->nodeItem(id))
             m_view->ensureVisible(node);
     });
@@ -409,26 +216,6 @@ RouterEditor::~RouterEditor()
     m_document->disconnect(this);
     // And the scene, whose items say the selection changed as they go.
     m_scene->disconnect(this);
-}
-
-void RouterEditor::createPalette()
-{
-    for (const RouterNodeType &type : routerNodeTypes()) {
-        auto *item = new QListWidgetItem(type.type, m_palette);
-        item->setData(Qt::UserRole, type.type);
-        item->setToolTip(type.description);
-        QPixmap swatch(12, 12);
-        swatch.fill(RouterNodeItem::kindColor(type.type));
-        item->setIcon(QIcon(swatch));
-    }
-    m_palette->setToolTip(tr("Drag a node type onto the canvas, or double-click it"));
-    // Two columns of whole names, whatever the height: the splitter keeps it this wide.
-    int widest = 0;
-    for (int row = 0; row < m_palette->count(); ++row)
-        widest = std::max(
-            widest, m_palette->fontMetrics().horizontalAdvance(m_palette->item(row)->text()));
-    const int entry = widest + m_palette->iconSize().width() + 24; // icon, gaps, spacing
-    m_palette->setMinimumWidth(2 * entry + 2 * m_palette->frameWidth());
 }
 
 QList<QAction *> RouterEditor::createActions()
@@ -512,53 +299,19 @@ QList<QAction *> RouterEditor::createActions()
 void RouterEditor::setGraph(const RouterGraph &graph, const QString &path)
 {
     m_document->reset(RouterScene::placed(graph), path);
-    m_inspected.clear();
-    scheduleInspector();
+    m_inspector->forget();
     fitView();
     validate();
+}
+
+QWidget *RouterEditor::inspector() const
+{
+    return m_inspector;
 }
 
 const RouterGraph &RouterEditor::graph() const
 {
     return m_document->graph();
-}
-
-QPointF RouterEditor::freePlace(const QPointF &preferred) const
-{
-    constexpr double Gap = 16.0;
-    const QSizeF size(RouterNodeItem::Width, NewNodeHeight);
-    QList<QRectF> taken;
-    for (const RouterNode &node : graph().nodes) {
-        if (const RouterNodeItem *item = m_scene->nodeItem(node.id))
-            taken.append(item->sceneBoundingRect().adjusted(-Gap, -Gap, Gap, Gap));
-    }
-    const auto free = [&](const QPointF &at) {
-        const QRectF place(at, size);
-        return std::none_of(taken.begin(), taken.end(),
-                            [&](const QRectF &t) { return t.intersects(place); });
-    };
-    if (free(preferred))
-        return preferred;
-    // The free place nearest to the preferred one on a half-node grid over the view.
-    const QRectF view = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
-    const double stepX = size.width() / 2;
-    const double stepY = size.height() / 2;
-    std::optional<QPointF> best;
-    double nearest = 0.0;
-    for (double y = view.top(); y + size.height() <= view.bottom(); y += stepY) {
-        for (double x = view.left(); x + size.width() <= view.right(); x += stepX) {
-            const QPointF at(x, y);
-            const double distance = QLineF(at, preferred).length();
-            if ((!best || distance < nearest) && free(at)) {
-                best = at;
-                nearest = distance;
-            }
-        }
-    }
-    if (best)
-        return *best;
-    // Nothing free in sight: beside the graph, to its right.
-    return QPointF(m_scene->itemsBoundingRect().right() + 2 * Gap, preferred.y());
 }
 
 QString RouterEditor::addNode(const QString &type, const QPointF &scenePos)
@@ -996,234 +749,7 @@ void RouterEditor::showStatus(const QString &text, bool warning)
 void RouterEditor::onGraphChanged()
 {
     m_validateTimer->start();
-    scheduleInspector();
-}
-
-void RouterEditor::scheduleInspector()
-{
-    if (m_inspectorPending)
-        return;
-    m_inspectorPending = true;
-    // Later: the field that made the edit may still be inside its signal.
-    QTimer::singleShot(0, this, [this] {
-        m_inspectorPending = false;
-        rebuildInspector();
-    });
-}
-
-void RouterEditor::rebuildInspector()
-{
-    const QStringList ids = m_scene->selectedNodeIds();
-    const int index = ids.size() == 1 ? graph().nodeIndex(ids.front()) : -1;
-    auto *scroll = m_inspector->findChild<QScrollArea *>(QStringLiteral("inspectorScroll"));
-    // The same node edited: the new fields show where the old ones were scrolled to, with
-    // the focus in the field it was in (an edit jumped back to the top).
-    int keptScroll = 0;
-    QString keptFocus;
-    if (index >= 0 && m_inspected == graph().nodes[size_t(index)].id && scroll->widget()) {
-        keptScroll = scroll->verticalScrollBar()->value();
-        if (QWidget *focus = QApplication::focusWidget();
-            focus && scroll->widget()->isAncestorOf(focus)) {
-            for (QWidget *w = focus; w != scroll->widget(); w = w->parentWidget()) {
-                if (w->objectName().startsWith(QLatin1String("param:")) ||
-                    w->objectName() == QLatin1String("nodeId")) {
-                    keptFocus = w->objectName();
-                    break;
-                }
-            }
-        }
-    }
-    if (index >= 0) {
-        const RouterNode &node = graph().nodes[size_t(index)];
-        // Unchanged: keep the fields, and the focus the user is typing in.
-        if (scroll->widget() && m_inspected == node.id && m_inspectedNode.type == node.type &&
-            m_inspectedNode.params == node.params)
-            return;
-        m_inspected = node.id;
-        m_inspectedNode = node;
-    } else {
-        m_inspected.clear();
-    }
-
-    auto *page = new QWidget;
-    auto *form = new QFormLayout(page);
-    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    if (index < 0) {
-        auto *hint = new QLabel(ids.isEmpty() ? tr("Select a node to edit its parameters.")
-                                              : tr("%n nodes selected.", nullptr, int(ids.size())),
-                                page);
-        hint->setWordWrap(true);
-        form->addRow(hint);
-        scroll->setWidget(page);
-        return;
-    }
-    const RouterNode &node = graph().nodes[size_t(index)];
-    const RouterNodeType *type = routerNodeType(node.type);
-    auto *title = new QLabel(
-        type ? QStringLiteral("<b>%1</b> — %2").arg(node.type, type->description) : node.type,
-        page);
-    title->setWordWrap(true);
-    form->addRow(title);
-    auto *idEdit = new QLineEdit(node.id, page);
-    idEdit->setObjectName(QStringLiteral("nodeId"));
-    idEdit->setToolTip(tr("The name events and devices carry"));
-    const QString id = node.id;
-    connect(idEdit, &QLineEdit::editingFinished, this, [this, idEdit, id] {
-        QString reason;
-        if (!renameNode(id, idEdit->text().trimmed(), &reason)) {
-            showStatus(reason, true);
-            idEdit->setText(id);
-        }
-    });
-    form->addRow(tr("id"), idEdit);
-
-    const std::vector<ParamSpec> specs = graph().paramsOf(node);
-    for (const ParamSpec &spec : specs)
-        addField(form, node, spec.name, &spec);
-    for (auto it = node.params.begin(); it != node.params.end(); ++it) {
-        if (!findParamSpec(specs, it.key()))
-            addField(form, node, it.key(), nullptr); // unknown: shown so it can be cleared
-    }
-    scroll->setWidget(page);
-    if (keptScroll > 0) {
-        page->adjustSize(); // the scroll range follows the new page at once
-        scroll->verticalScrollBar()->setValue(keptScroll);
-    }
-    if (!keptFocus.isEmpty()) {
-        if (auto *field = page->findChild<QWidget *>(keptFocus))
-            field->setFocus(Qt::OtherFocusReason);
-    }
-}
-
-void RouterEditor::addField(QFormLayout *form, const RouterNode &node, const QString &key,
-                            const ParamSpec *spec)
-{
-    const QJsonValue value = node.params.value(key);
-    const ParamKind kind = spec ? spec->kind : ParamKind::Points;
-    const bool name = kind == ParamKind::Pattern || kind == ParamKind::Model;
-    const QString id = node.id;
-    const QString objectName = QStringLiteral("param:") + key;
-    const QString help = spec ? spec->help : tr("Not a parameter of this node: clear it");
-    auto *label = new QLabel(
-        spec && !spec->unit.isEmpty() ? QStringLiteral("%1 (%2)").arg(key, spec->unit) : key,
-        form->parentWidget());
-    label->setToolTip(help);
-    if (spec && kind == ParamKind::Signal) {
-        // The built-in quantities, then what the source's frames carry for the node's
-        // gripper (both grippers' while it has none).
-        const QString hand = node.params.value(QStringLiteral("gripper")).toString();
-        addNameCombo(form, label, node, key, *spec, [this, builtin = spec->choices, hand] {
-            QStringList choices = builtin;
-            const RouterContext source = context();
-            for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
-                if (hand.isEmpty() || hand == gripperName(gripper))
-                    choices.append(source.signalNames[size_t(gripper)]);
-            }
-            choices.removeDuplicates();
-            return choices;
-        });
-        return;
-    }
-    if (spec && takesTypedName(*spec)) {
-        // The built-in messages, then the new ones other nodes of the graph name.
-        addNameCombo(form, label, node, key, *spec, [this, builtin = spec->choices] {
-            QStringList choices = builtin + newMessageNames();
-            choices.removeDuplicates();
-            return choices;
-        });
-        return;
-    }
-    if (kind == ParamKind::Choice || kind == ParamKind::Choices || name) {
-        QStringList choices = spec->choices;
-        if (kind == ParamKind::Pattern) {
-            for (const PatternPtr &pattern : graph().patterns)
-                choices.append(pattern->name());
-            choices.append(PatternLibrary::builtinNames());
-        } else if (kind == ParamKind::Model) {
-            for (const DeviceModelPtr &model : graph().models)
-                choices.append(model->name());
-            choices.append(DeviceModelLibrary::builtinNames());
-        }
-        auto *combo = new QComboBox(form->parentWidget());
-        combo->setObjectName(objectName);
-        combo->setToolTip(help);
-        combo->setEditable(name);
-        combo->setInsertPolicy(QComboBox::NoInsert);
-        if (!name)
-            combo->addItem(absentText(*spec), QString());
-        for (const QString &choice : choices)
-            combo->addItem(choice, choice);
-        if (kind == ParamKind::Pattern) {
-            // The designer's saved patterns, by name; the node names the file, which the
-            // router loads (and a self-contained save embeds).
-            for (const UserPattern &pattern : userPatterns()) {
-                const bool taken = combo->findText(pattern.name) >= 0;
-                combo->addItem(taken ? tr("%1 (your file)").arg(pattern.name) : pattern.name,
-                               pattern.path);
-                combo->setItemData(combo->count() - 1, pattern.path, Qt::ToolTipRole);
-            }
-        }
-        const QString current = valueText(value);
-        int at = combo->findData(current);
-        if (at < 0 && !current.isEmpty()) {
-            combo->addItem(current, current); // a list, a path: shown as it is
-            at = combo->count() - 1;
-        }
-        if (name) {
-            combo->setCurrentIndex(std::max(at, 0));
-            combo->setEditText(at >= 0 ? combo->itemText(at) : current);
-            // What an entry stands for (a file for the user's patterns), or what was typed.
-            const auto chosen = [combo](const QString &text) {
-                const int i = combo->findText(text);
-                return i >= 0 ? combo->itemData(i).toString() : text;
-            };
-            connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {
-                commitText(id, key, combo->itemData(i).toString());
-            });
-            connect(combo->lineEdit(), &QLineEdit::editingFinished, this,
-                    [this, id, key, combo, chosen] {
-                        commitText(id, key, chosen(combo->currentText()));
-                    });
-        } else {
-            combo->setCurrentIndex(std::max(at, 0));
-            connect(combo, &QComboBox::activated, this, [this, id, key, combo](int i) {
-                commitText(id, key, combo->itemData(i).toString());
-            });
-        }
-        form->addRow(label, combo);
-        return;
-    }
-    auto *edit = new QLineEdit(kind == ParamKind::Level ? levelText(value) : valueText(value),
-                               form->parentWidget());
-    edit->setObjectName(objectName);
-    edit->setPlaceholderText(spec ? absentText(*spec) : QString());
-    edit->setToolTip(help);
-    connect(edit, &QLineEdit::editingFinished, this,
-            [this, id, key, edit] { commitText(id, key, edit->text()); });
-    form->addRow(label, edit);
-}
-
-void RouterEditor::addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node,
-                                const QString &key, const ParamSpec &spec,
-                                std::function<QStringList()> choices)
-{
-    auto *combo = new NameCombo(absentText(spec), std::move(choices), form->parentWidget());
-    combo->setObjectName(QStringLiteral("param:") + key);
-    combo->setToolTip(spec.help);
-    const QString current = valueText(node.params.value(key));
-    const int at = current.isEmpty() ? 0 : combo->findData(current);
-    combo->setCurrentIndex(std::max(at, 0));
-    combo->setEditText(at >= 0 ? combo->itemText(at) : current);
-    if (QLineEdit *line = combo->lineEdit())
-        line->setPlaceholderText(absentText(spec));
-    const QString id = node.id;
-    connect(combo, &QComboBox::activated, this,
-            [this, id, key, combo](int i) { commitText(id, key, combo->itemData(i).toString()); });
-    connect(combo->lineEdit(), &QLineEdit::editingFinished, this, [this, id, key, combo] {
-        const int i = combo->findText(combo->currentText());
-        commitText(id, key, i >= 0 ? combo->itemData(i).toString() : combo->currentText());
-    });
-    form->addRow(label, combo);
+    m_inspector->schedule();
 }
 
 QStringList RouterEditor::newMessageNames() const
@@ -1257,51 +783,12 @@ void RouterEditor::setContextFunction(ContextFunction context)
 void RouterEditor::updateContext()
 {
     m_validateTimer->start();
-    m_inspectedNode = RouterNode(); // the signal picker's choices follow the source
-    scheduleInspector();
+    m_inspector->refresh(); // the signal picker's choices follow the source
 }
 
 RouterContext RouterEditor::context() const
 {
     return m_context ? m_context() : RouterContext();
-}
-
-QString RouterEditor::absentText(const ParamSpec &spec)
-{
-    switch (spec.absent) {
-    case ParamAbsent::Required:
-        return tr("(none)");
-    case ParamAbsent::Any:
-        return tr("(any)");
-    case ParamAbsent::Computed:
-        return tr("(automatic)");
-    case ParamAbsent::Default:
-        break;
-    }
-    const QJsonValue standard = spec.defaultValue();
-    if (standard.isDouble())
-        return tr("(default: %1)").arg(QLocale().toString(standard.toDouble()));
-    if (standard.isString())
-        return tr("(default: %1)").arg(standard.toString());
-    return tr("(default)");
-}
-
-void RouterEditor::commitText(const QString &id, const QString &key, const QString &text)
-{
-    const int index = graph().nodeIndex(id);
-    if (index < 0)
-        return;
-    const ParamSpec *spec = findParamSpec(graph().paramsOf(graph().nodes[size_t(index)]), key);
-    const ParamKind kind = spec ? spec->kind : ParamKind::Points;
-    QJsonValue value = parseValue(text);
-    if (kind == ParamKind::Level)
-        value = parseLevel(text);
-    else if (kind == ParamKind::Choices && spec->openChoices)
-        value = parseNames(text);
-    // A numeric-looking pattern, model, signal or message name is still a name.
-    const bool name = kind == ParamKind::Pattern || kind == ParamKind::Model ||
-                      (spec && kind != ParamKind::Choices && takesTypedName(*spec));
-    setParam(id, key, name && !value.isUndefined() ? QJsonValue(text.trimmed()) : value);
 }
 
 } // namespace semhap

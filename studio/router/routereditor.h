@@ -26,6 +26,7 @@ namespace semhap {
 class DistinctivenessView;
 class RunHistory;
 class RouterDocument;
+class RouterInspector;
 class RouterScene;
 
 /**
@@ -113,6 +114,8 @@ public:
      * in, sorted: what the message fields offer besides grasp, break and slip.
      */
     QStringList newMessageNames() const;
+    /** The context the source compiles for (a default one without a context function). */
+    RouterContext context() const;
 
     /** Where Apply sends the graph; without one Apply is disabled. */
     void setApplyFunction(ApplyFunction apply);
@@ -141,7 +144,7 @@ public:
     QListWidget *palette() const { return m_palette; }
     QUndoStack *undoStack() const { return m_undo; }
     /** The form of the selected node's parameters. */
-    QWidget *inspector() const { return m_inspector; }
+    QWidget *inspector() const;
     /** The line that says why a link was refused, or what Apply did. */
     QLabel *statusLabel() const { return m_status; }
 
@@ -156,29 +159,7 @@ protected:
 private:
     /** Makes the editor's actions; returns the toolbar's, in order. */
     QList<QAction *> createActions();
-    void createPalette();
-    void rebuildInspector();
-    void scheduleInspector();
-    /** A field for parameter `key`, built from its spec (null: a parameter the type lacks). */
-    void addField(QFormLayout *form, const RouterNode &node, const QString &key,
-                  const ParamSpec *spec);
-    /** What the field shows when the parameter is absent: "(default: 20)", "(any)"… */
-    static QString absentText(const ParamSpec &spec);
-    void commitText(const QString &id, const QString &key, const QString &text);
-    /**
-     * An editable combo for a name typed or picked (a signal, a new message), offering
-     * `choices()` each time it opens.
-     */
-    void addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node, const QString &key,
-                      const ParamSpec &spec, std::function<QStringList()> choices);
-    /** The context the source compiles for (a default one without a context function). */
-    RouterContext context() const;
     void showStatus(const QString &text, bool warning);
-    /**
-     * Where a new node goes near `preferred` (its top left) without covering another: there
-     * if it is free, else the nearest free place in the view, else right of the graph.
-     */
-    QPointF freePlace(const QPointF &preferred) const;
     /** Names the document above the canvas: its file or name, and whether it is saved. */
     void showDocument();
     /** Says what Apply did, the run's or the replay's router (`to`), as is true now. */
@@ -199,7 +180,7 @@ private:
     QListWidget *m_palette = nullptr;
     QTabWidget *m_sideTabs = nullptr;
     DistinctivenessView *m_distinct = nullptr;
-    QWidget *m_inspector = nullptr;
+    RouterInspector *m_inspector = nullptr;
     QListWidget *m_errorList = nullptr;
     QLabel *m_documentLabel = nullptr;
     QLabel *m_status = nullptr;
@@ -216,9 +197,6 @@ private:
     RunHistory *m_history = nullptr;
     qint64 m_nextActivity = 0;
     QStringList m_errors;
-    QString m_inspected; ///< id of the node the inspector shows
-    RouterNode m_inspectedNode;
-    bool m_inspectorPending = false;
     bool m_fitted = true;   ///< the view shows the whole graph and follows its size
     bool m_fitting = false; ///< inside fitView (its scroll bars resize the view)
 };

@@ -11,11 +11,13 @@
 #include <QGraphicsSceneDragDropEvent>
 #include <QGraphicsSceneMouseEvent>
 #include <QJsonArray>
+#include <QLineF>
 #include <QLocale>
 #include <QMimeData>
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <set>
 
 namespace semhap {
@@ -479,6 +481,44 @@ void RouterScene::fade()
         if (wire && !lit)
             wire->update();
     }
+}
+
+QPointF RouterScene::freePlace(const QPointF &preferred, const QRectF &visible) const
+{
+    constexpr double Gap = 16.0;
+    const QSizeF size(RouterNodeItem::Width, NewNodeHeight);
+    QList<QRectF> taken;
+    for (const RouterNode &node : graph().nodes) {
+        if (const RouterNodeItem *item = nodeItem(node.id))
+            taken.append(item->sceneBoundingRect().adjusted(-Gap, -Gap, Gap, Gap));
+    }
+    const auto free = [&](const QPointF &at) {
+        const QRectF place(at, size);
+        return std::none_of(taken.begin(), taken.end(),
+                            [&](const QRectF &t) { return t.intersects(place); });
+    };
+    if (free(preferred))
+        return preferred;
+    // The free place nearest to the preferred one on a half-node grid over the view.
+    const QRectF &view = visible;
+    const double stepX = size.width() / 2;
+    const double stepY = size.height() / 2;
+    std::optional<QPointF> best;
+    double nearest = 0.0;
+    for (double y = view.top(); y + size.height() <= view.bottom(); y += stepY) {
+        for (double x = view.left(); x + size.width() <= view.right(); x += stepX) {
+            const QPointF at(x, y);
+            const double distance = QLineF(at, preferred).length();
+            if ((!best || distance < nearest) && free(at)) {
+                best = at;
+                nearest = distance;
+            }
+        }
+    }
+    if (best)
+        return *best;
+    // Nothing free in sight: beside the graph, to its right.
+    return QPointF(itemsBoundingRect().right() + 2 * Gap, preferred.y());
 }
 
 } // namespace semhap

@@ -44,6 +44,14 @@ public:
     RouterNodeItem *nodeItem(const QString &id) const;
     /** The wire of link `index`, or null when the link does not resolve to ports. */
     RouterWireItem *wireItem(int index) const;
+    /**
+     * Where a new node goes near `preferred` (its top left) without covering another: there
+     * if it is free, else the nearest free place in `visible` (the view's part of the
+     * scene), else right of the graph.
+     */
+    QPointF freePlace(const QPointF &preferred, const QRectF &visible) const;
+    /** The room a new node is given: most nodes' height with their ports. */
+    static constexpr double NewNodeHeight = 100.0;
     /** Ids of the selected nodes, in graph order. */
     QStringList selectedNodeIds() const;
     /** Indexes of the selected wires' links. */
