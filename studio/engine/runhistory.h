@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QStringList>
 
+#include <algorithm>
 #include <array>
 #include <deque>
 #include <vector>
@@ -79,6 +80,15 @@ public:
     const T &at(qint64 index) const { return m_values[size_t(index - m_first)]; }
     bool isEmpty() const { return m_values.empty(); }
     const T &last() const { return m_values.back(); }
+    /** The latest value at or before `t` (by its `t`), or null when the series starts after. */
+    const T *latestAt(double t) const
+    {
+        // The first value after t, by bisection: the values are in time order.
+        const auto after =
+            std::upper_bound(m_values.begin(), m_values.end(), t,
+                             [](double at, const T &value) { return at < value.t; });
+        return after == m_values.begin() ? nullptr : &*(after - 1);
+    }
     void append(const T &value) { m_values.push_back(value); }
     /** Appends `other`'s values, oldest first (they get this series' next indices). */
     void appendAll(const RunSeries &other)

@@ -3,6 +3,7 @@
 
 #include "colors.h"
 #include "filedialogs.h"
+#include "historycsv.h"
 #include "nametable.h"
 #include "outputfile.h"
 #include "routernodetype.h"
@@ -42,22 +43,6 @@ constexpr double MinWindow = 2.0;
 constexpr double MaxWindow = 120.0;
 // Plots need no more than ~33 frames/s, and each frame costs ~10 ms of software drawing.
 constexpr qint64 MinReplotMs = 30;
-
-/** The latest sample at or before `t`, or null when the series starts after it. */
-template<typename T> const T *sampleAt(const RunSeries<T> &series, double t)
-{
-    qint64 lo = series.begin();
-    qint64 hi = series.end();
-    // First index whose time is after t.
-    while (lo < hi) {
-        const qint64 mid = lo + (hi - lo) / 2;
-        if (series.at(mid).t <= t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo > series.begin() ? &series.at(lo - 1) : nullptr;
-}
 
 void place(QCPItemPosition *position, QCPAxisRect *rect, QCPItemPosition::PositionType typeX,
            QCPItemPosition::PositionType typeY, double x, double y)
@@ -1143,7 +1128,7 @@ void PlotPanel::updateCursor()
     QStringList lines;
     lines << tr("t = %1 s").arg(QLocale().toString(t, 'f', 3));
     for (const auto &plot : m_grippers) {
-        const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+        const ContactFrame *frame = m_history.frames(plot->gripper).latestAt(t);
         if (!frame)
             continue;
         lines << tr("%1: F %2 N (left %3, right %4), N %5")
@@ -1154,7 +1139,7 @@ void PlotPanel::updateCursor()
                      .arg(frame->totalContacts());
     }
     for (const auto &plot : m_signals) {
-        const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
+        const ContactFrame *frame = m_history.frames(plot->gripper).latestAt(t);
         const double *value = frame ? frame->signalValues.find(plot->id) : nullptr;
         if (value)
             lines << tr("%1: %2 %3")
@@ -1162,7 +1147,7 @@ void PlotPanel::updateCursor()
                               QLocale().toString(*value, 'g', 4));
     }
     for (const auto &plot : m_devices) {
-        const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
+        const DeviceFrame *frame = m_history.deviceFrames(plot->device).latestAt(t);
         if (!frame)
             continue;
         const RunDevice &info = m_history.devices()[size_t(plot->device)];
@@ -1291,75 +1276,17 @@ bool PlotPanel::exportCsv(const QString &path, QString *error) const
     const QCPRange visible = m_rects.empty()
                                  ? QCPRange(m_history.now() - m_windowSeconds, m_history.now())
                                  : m_rects.front()->axis(QCPAxis::atBottom)->range();
-
-    QStringList header{QStringLiteral("t")};
-    for (const auto &plot : m_grippers) {
-        const QString id = gripperName(plot->gripper);
-        for (const char *column : {".F", ".left.f", ".right.f", ".N"})
-            header << id + QLatin1String(column);
-    }
-    for (const auto &plot : m_signals)
-        header << plot->graph->objectName();
-    for (const auto &plot : m_devices) {
-        const RunDevice &info = m_history.devices()[size_t(plot->device)];
-        for (const QString &channel : info.channels)
-            header << info.name + QLatin1Char('.') + channel;
-    }
-
-    // Rows at the contact frames' times (both grippers' merged) — the pipeline's tick —
-    // or at the device frames' times when no gripper has data. Every other series shows
-    // its latest sample at or before the row's time, as a sample-and-hold reading of the
-    // plot would; a cell stays empty before a series' first sample.
-    std::vector<double> times;
-    const auto collect = [&](const auto &series) {
-        for (qint64 i = series.begin(); i < series.end(); ++i) {
-            const double t = series.at(i).t;
-            if (t >= visible.lower && t <= visible.upper)
-                times.push_back(t);
-        }
-    };
+    // What the plots show, as the history's CSV holds it.
+    HistoryCsv::Columns columns;
     for (const auto &plot : m_grippers)
-        collect(m_history.frames(plot->gripper));
-    if (times.empty()) {
-        for (const auto &plot : m_devices)
-            collect(m_history.deviceFrames(plot->device));
-    }
-    std::sort(times.begin(), times.end());
-    times.erase(std::unique(times.begin(), times.end()), times.end());
-
-    QString text;
-    QTextStream out(&text);
-    out << header.join(QLatin1Char(',')) << '\n';
-    QStringList cells;
-    for (double t : times) {
-        cells.clear();
-        cells << number(t);
-        for (const auto &plot : m_grippers) {
-            const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
-            if (frame) {
-                cells << number(frame->totalForce()) << number(frame->left.f)
-                      << number(frame->right.f) << QString::number(frame->totalContacts());
-            } else {
-                cells << QString() << QString() << QString() << QString();
-            }
-        }
-        for (const auto &plot : m_signals) {
-            const ContactFrame *frame = sampleAt(m_history.frames(plot->gripper), t);
-            const double *value = frame ? frame->signalValues.find(plot->id) : nullptr;
-            cells << (value ? number(*value) : QString());
-        }
-        for (const auto &plot : m_devices) {
-            const DeviceFrame *frame = sampleAt(m_history.deviceFrames(plot->device), t);
-            const int n = int(m_history.devices()[size_t(plot->device)].channels.size());
-            for (int c = 0; c < n; ++c)
-                cells << (frame && c < frame->channelCount ? number(frame->values[size_t(c)])
-                                                           : QString());
-        }
-        out << cells.join(QLatin1Char(',')) << '\n';
-    }
-    out.flush();
+        columns.grippers.push_back(plot->gripper);
+    for (const auto &plot : m_signals)
+        columns.frameSignals.push_back({plot->gripper, plot->id, plot->graph->objectName()});
+    for (const auto &plot : m_devices)
+        columns.devices.push_back(plot->device);
     LoadError failure;
-    if (!OutputFile::write(path, text.toUtf8(), &failure)) {
+    if (!OutputFile::write(
+            path, HistoryCsv::write(m_history, columns, visible.lower, visible.upper), &failure)) {
         if (error)
             *error = failure.toString();
         return false;
