@@ -52,62 +52,26 @@ QString joinEndpoint(const QString &node, const QString &port)
 }
 
 /**
- * Spellings semhap 1.0 wrote, read as today's with a located warning: the debounce node was
- * called "hysteresis" like the detectors' parameter, a fingertip's quantities were "f.left"
- * where the contact frame says `left.f`, and a threshold had one `level`, a `hysteresis`
- * back from it and intensity growing to `full` (which also set the direction).
+ * Spellings older files wrote, read as today's with a located warning: a type's former name
+ * and its row's upgrade of old parameters (RouterNodeType::formerNames, upgrade).
  */
 void readOldSpellings(const QString &file, const QString &where, RouterNode *node,
                       std::vector<LoadError> *warnings)
 {
-    const auto warn = [&](const QString &pointer, const QString &what, const QString &old,
-                          const QString &now) {
-        warnings->push_back(
-            LoadError::at(file, where + pointer,
-                          QStringLiteral("deprecated: %1 \"%2\" is now \"%3\" (read as \"%3\")")
-                              .arg(what, old, now)));
+    const UpgradeWarning warn = [&](const QString &pointer, const QString &message) {
+        warnings->push_back(LoadError::at(file, where + pointer, message));
     };
-    if (node->type == QLatin1String("hysteresis")) {
-        node->type = QStringLiteral("debounce");
-        warn(QStringLiteral("/type"), QStringLiteral("node type"), QStringLiteral("hysteresis"),
-             node->type);
+    const RouterNodeType *type = routerNodeType(node->type);
+    for (const RouterNodeType &row : routerNodeTypes()) {
+        if (!type && row.formerNames.contains(node->type)) {
+            warn(QStringLiteral("/type"),
+                 deprecatedSpelling(QStringLiteral("node type"), node->type, row.type));
+            node->type = row.type;
+            type = &row;
+        }
     }
-    static const QHash<QString, QString> quantities{
-        {QStringLiteral("f.left"), QStringLiteral("left.f")},
-        {QStringLiteral("f.right"), QStringLiteral("right.f")},
-        {QStringLiteral("n.left"), QStringLiteral("left.n")},
-        {QStringLiteral("n.right"), QStringLiteral("right.n")},
-        {QStringLiteral("friction.left"), QStringLiteral("left.friction")},
-        {QStringLiteral("friction.right"), QStringLiteral("right.friction")}};
-    QJsonObject &params = node->params;
-    const QJsonValue level = params.value(QLatin1String("level"));
-    const QJsonValue full = params.value(QLatin1String("full"));
-    const QJsonValue hysteresis = params.value(QLatin1String("hysteresis"));
-    if (node->type == QLatin1String("threshold") && level.isDouble() &&
-        full.toDouble(1.0) != level.toDouble() && !params.contains(QLatin1String("begin"))) {
-        const double at = level.toDouble();
-        const double to = full.toDouble(1.0);
-        const double relief = std::abs(hysteresis.toDouble(0.0));
-        params.insert(QStringLiteral("condition"),
-                      to > at ? QStringLiteral("above") : QStringLiteral("below"));
-        params.insert(QStringLiteral("begin"), at);
-        if (relief > 0.0)
-            params.insert(QStringLiteral("end"), to > at ? at - relief : at + relief);
-        params.insert(QStringLiteral("intensity"), QJsonArray{at, to});
-        for (const char *old : {"level", "full", "hysteresis"})
-            params.remove(QLatin1String(old));
-        warnings->push_back(LoadError::at(
-            file, where + QStringLiteral("/params"),
-            QStringLiteral("deprecated: threshold parameters \"level\", \"full\" and "
-                           "\"hysteresis\" are now \"condition\", \"begin\", \"end\" and "
-                           "\"intensity\" (read as those)")));
-    }
-    const QString quantity = params.value(QLatin1String("quantity")).toString();
-    if (node->type == QLatin1String("signal") && quantities.contains(quantity)) {
-        node->params.insert(QStringLiteral("quantity"), quantities.value(quantity));
-        warn(QStringLiteral("/params/quantity"), QStringLiteral("quantity"), quantity,
-             quantities.value(quantity));
-    }
+    if (type && type->upgrade)
+        type->upgrade(node->params, warn);
 }
 
 bool readNodes(JsonReader &reader, const QJsonArray &nodes, RouterGraph *graph)

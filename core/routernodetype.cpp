@@ -9,7 +9,10 @@
 #include "routernodes.h"
 #include "slipdetector.h"
 
+#include <QHash>
 #include <QJsonArray>
+
+#include <cmath>
 
 namespace semhap {
 
@@ -303,6 +306,53 @@ bool buildDevice(NodeBuilder &b)
     return b.drive();
 }
 
+// The upgrades of older files' parameters (semhap 1.0's spellings).
+
+/** A threshold had one `level`, a `hysteresis` back from it and intensity growing to `full`
+ * (which also set the direction). */
+void upgradeThreshold(QJsonObject &params, const UpgradeWarning &warn)
+{
+    const QJsonValue level = params.value(QLatin1String("level"));
+    const QJsonValue full = params.value(QLatin1String("full"));
+    const QJsonValue hysteresis = params.value(QLatin1String("hysteresis"));
+    if (!level.isDouble() || full.toDouble(1.0) == level.toDouble() ||
+        params.contains(QLatin1String("begin")))
+        return;
+    const double at = level.toDouble();
+    const double to = full.toDouble(1.0);
+    const double relief = std::abs(hysteresis.toDouble(0.0));
+    params.insert(QStringLiteral("condition"),
+                  to > at ? QStringLiteral("above") : QStringLiteral("below"));
+    params.insert(QStringLiteral("begin"), at);
+    if (relief > 0.0)
+        params.insert(QStringLiteral("end"), to > at ? at - relief : at + relief);
+    params.insert(QStringLiteral("intensity"), QJsonArray{at, to});
+    for (const char *old : {"level", "full", "hysteresis"})
+        params.remove(QLatin1String(old));
+    warn(QStringLiteral("/params"),
+         QStringLiteral("deprecated: threshold parameters \"level\", \"full\" and "
+                        "\"hysteresis\" are now \"condition\", \"begin\", \"end\" and "
+                        "\"intensity\" (read as those)"));
+}
+
+/** A fingertip's quantities were `f.left` where the contact frame says `left.f`. */
+void upgradeSignal(QJsonObject &params, const UpgradeWarning &warn)
+{
+    static const QHash<QString, QString> quantities{
+        {QStringLiteral("f.left"), QStringLiteral("left.f")},
+        {QStringLiteral("f.right"), QStringLiteral("right.f")},
+        {QStringLiteral("n.left"), QStringLiteral("left.n")},
+        {QStringLiteral("n.right"), QStringLiteral("right.n")},
+        {QStringLiteral("friction.left"), QStringLiteral("left.friction")},
+        {QStringLiteral("friction.right"), QStringLiteral("right.friction")}};
+    const QString quantity = params.value(QLatin1String("quantity")).toString();
+    if (!quantities.contains(quantity))
+        return;
+    params.insert(QStringLiteral("quantity"), quantities.value(quantity));
+    warn(QStringLiteral("/params/quantity"),
+         deprecatedSpelling(QStringLiteral("quantity"), quantity, quantities.value(quantity)));
+}
+
 } // namespace
 
 const std::vector<RouterNodeType> &routerNodeTypes()
@@ -352,7 +402,10 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                                "quantities; absent: the frames' own"))
                   .above(0)
                   .computed()},
-             &buildSignal},
+             &buildSignal,
+             false,
+             {},
+             &upgradeSignal},
             {QStringLiteral("derivative"),
              QStringLiteral("The time derivative of a signal, smoothed over tau seconds"),
              {signalIn},
@@ -397,7 +450,9 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                             QStringLiteral("[x0, x1]: intensity grows from 0 at x0 to 1 at x1, "
                                            "clipped; absent: 1"))},
              &buildThreshold,
-             true},
+             true,
+             {},
+             &upgradeThreshold},
             {QStringLiteral("compose"),
              QStringLiteral("A message made of two: while both inputs have an active message "
                             "(all), either has (any), or a has while b has (while)"),
@@ -452,7 +507,9 @@ const std::vector<RouterNodeType> &routerNodeTypes()
                                                "dropped"))
                   .atLeast(0)
                   .atMost(1)},
-             &buildDebounce},
+             &buildDebounce,
+             false,
+             {QStringLiteral("hysteresis")}},
             {QStringLiteral("curve"),
              QStringLiteral("Maps intensity through a piecewise-linear curve"),
              {in},
@@ -513,6 +570,12 @@ const std::vector<RouterNodeType> &routerNodeTypes()
         return rows;
     }();
     return types;
+}
+
+QString deprecatedSpelling(const QString &what, const QString &old, const QString &now)
+{
+    return QStringLiteral("deprecated: %1 \"%2\" is now \"%3\" (read as \"%3\")")
+        .arg(what, old, now);
 }
 
 QStringList detectorKindNames()

@@ -4,14 +4,22 @@
 #include "paramspec.h"
 #include "semanticevent.h"
 
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
+
+#include <functional>
 
 #include <vector>
 
 namespace semhap {
 
 class NodeBuilder;
+
+/** Says one rewrite of an older file's spelling: where under the node (`/type`), and what. */
+using UpgradeWarning = std::function<void(const QString &pointer, const QString &message)>;
+/** `deprecated: WHAT "OLD" is now "NOW" (read as "NOW")`: one wording for every rewrite. */
+QString deprecatedSpelling(const QString &what, const QString &old, const QString &now);
 
 /** What flows along a link: semantic events, a continuous value, or a voice's channels. */
 enum class PortType
@@ -54,6 +62,10 @@ struct RouterNodeType
      * named as the type, and a node hears at most RouterGraph::MaxUpstreamDetectors of them.
      */
     bool isDetector = false;
+    /** Names the type had in older files: such a node is read as this type, with a warning. */
+    QStringList formerNames = {};
+    /** Rewrites the parameters older files spelled otherwise, saying each (null: none). */
+    void (*upgrade)(QJsonObject &params, const UpgradeWarning &warn) = nullptr;
     DetectorKind detectorKind = DetectorKind::Force; ///< detectors: the kind of its events
 
     /** What a node of the type does in a router, read from its ports. */
