@@ -102,6 +102,17 @@ QStringList run(Detector &detector, const QList<ContactFrame> &frames)
     return events;
 }
 
+/** The columns of a detector's parameter rows (json, key, reason), and the defaults' row. */
+void paramColumns()
+{
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("defaults") << "{}"
+                              << ""
+                              << "";
+}
+
 /**
  * Reads and validates the row's `json` as a detector's Params, and checks the key and reason
  * of the row's error (none: valid, and its JSON reads back the same).
@@ -433,13 +444,7 @@ void TestDetectors::endAllAndClear()
 
 void TestDetectors::forceParams_data()
 {
-    QTest::addColumn<QString>("json");
-    QTest::addColumn<QString>("key");
-    QTest::addColumn<QString>("reason");
-
-    QTest::newRow("defaults") << "{}"
-                              << ""
-                              << "";
+    paramColumns();
     QTest::newRow("all keys") << R"({"grasp": 1, "break": 2, "max": 3, "hysteresis": 0.5,
                                      "minDuration": 0.1})"
                               << ""
@@ -474,13 +479,7 @@ void TestDetectors::forceParams()
 
 void TestDetectors::slipParams_data()
 {
-    QTest::addColumn<QString>("json");
-    QTest::addColumn<QString>("key");
-    QTest::addColumn<QString>("reason");
-
-    QTest::newRow("defaults") << "{}"
-                              << ""
-                              << "";
+    paramColumns();
     QTest::newRow("all keys") << R"({"grasp": 5, "loss": 20, "min": 4, "hysteresis": 2,
                                      "minDuration": 0.05})"
                               << ""
@@ -560,13 +559,7 @@ void TestDetectors::impactEvents()
 
 void TestDetectors::impactParams_data()
 {
-    QTest::addColumn<QString>("json");
-    QTest::addColumn<QString>("key");
-    QTest::addColumn<QString>("reason");
-
-    QTest::newRow("defaults") << "{}"
-                              << ""
-                              << "";
+    paramColumns();
     QTest::newRow("all keys") << R"({"rate": 50, "full": 60, "tau": 0, "hold": 0,
                                      "minDuration": 0.1})"
                               << ""
