@@ -73,19 +73,6 @@ QJsonValue RouterCompiler::param(int node, const QString &key) const
     return spec ? spec->defaultValue() : value;
 }
 
-double RouterCompiler::number(int node, const QString &key) const
-{
-    return param(node, key).toDouble();
-}
-
-QStringList RouterCompiler::channels(int node) const
-{
-    QStringList list;
-    for (const QJsonValue &channel : param(node, QStringLiteral("channels")).toArray())
-        list.append(channel.toString());
-    return list;
-}
-
 unsigned RouterCompiler::choiceBits(int node, const QString &key) const
 {
     const QJsonValue value = param(node, key);
@@ -98,31 +85,71 @@ unsigned RouterCompiler::choiceBits(int node, const QString &key) const
     return bits;
 }
 
-PatternPtr RouterCompiler::findPattern(int node, const QString &name)
+/** A row's view of the compiler while it builds one node. */
+class RouterCompiler::Builder final : public NodeBuilder
 {
-    // Many nodes may play one pattern: each is found or loaded once.
-    if (PatternPtr known = m_patterns.value(name))
-        return known;
-    QString reason;
-    PatternPtr pattern = m_graph.pattern(name, &reason);
-    if (!pattern)
-        failNode(node, QStringLiteral("pattern"), reason);
-    else
-        m_patterns.insert(name, pattern);
-    return pattern;
-}
+public:
+    Builder(RouterCompiler &compiler, int node) : m_compiler(compiler), m_node(node) {}
 
-DeviceModelPtr RouterCompiler::findModel(int node, const QString &name)
+    int node() const override { return m_node; }
+    const QJsonObject &params() const override
+    {
+        return m_compiler.m_graph.nodes[size_t(m_node)].params;
+    }
+    QJsonValue param(const QString &key) const override { return m_compiler.param(m_node, key); }
+    unsigned choiceBits(const QString &key) const override
+    {
+        return m_compiler.choiceBits(m_node, key);
+    }
+    const RouterContext &context() const override { return m_compiler.m_context; }
+    DetectorKind kind() const override
+    {
+        return m_compiler.m_info[size_t(m_node)].type->detectorKind;
+    }
+    bool fail(const QString &key, const QString &reason) override
+    {
+        return m_compiler.failNode(m_node, key, reason);
+    }
+    bool messageOf(Message *message, Category *category) override
+    {
+        return m_compiler.messageOf(m_node, message, category);
+    }
+    bool level(const QString &key, bool range, double *low, double *high) override
+    {
+        return m_compiler.level(m_node, key, range, low, high);
+    }
+    bool adopt(std::unique_ptr<RuntimeNode> node) override
+    {
+        return m_compiler.adopt(m_node, std::move(node));
+    }
+    bool adoptDetector(std::unique_ptr<Detector> detector) override
+    {
+        auto runtime = std::make_unique<DetectorNode>(std::move(detector));
+        m_compiler.m_router->m_detectors.push_back(runtime.get());
+        return m_compiler.adopt(m_node, std::move(runtime));
+    }
+    bool playPattern() override { return m_compiler.buildPattern(m_node); }
+    bool drive() override { return m_compiler.buildDevice(m_node); }
+
+private:
+    RouterCompiler &m_compiler;
+    int m_node;
+};
+
+template<typename Ptr, typename Lookup>
+Ptr RouterCompiler::findFile(int node, const QString &key, const QString &name,
+                             QHash<QString, Ptr> *found, Lookup lookup)
 {
-    if (DeviceModelPtr known = m_models.value(name))
+    // Many nodes may play one pattern or drive one model: each is found or loaded once.
+    if (Ptr known = found->value(name))
         return known;
     QString reason;
-    DeviceModelPtr model = m_graph.model(name, &reason);
-    if (!model)
-        failNode(node, QStringLiteral("model"), reason);
+    Ptr file = lookup(name, &reason);
+    if (!file)
+        failNode(node, key, reason);
     else
-        m_models.insert(name, model);
-    return model;
+        found->insert(name, file);
+    return file;
 }
 
 bool RouterCompiler::buildPattern(int node)
@@ -137,14 +164,16 @@ bool RouterCompiler::buildPattern(int node)
         return failNode(node, QString(), patternSpec.missingReason());
     if (!patternSpec.check(name, &reason))
         return failNode(node, patternSpec.name, reason);
-    PatternPtr pattern = findPattern(node, name.toString());
+    PatternPtr pattern = findFile(
+        node, patternSpec.name, name.toString(), &m_patterns,
+        [this](const QString &named, QString *why) { return m_graph.pattern(named, why); });
     if (!pattern)
         return false;
     std::vector<ParamSpec> specs = info.type->params;
     RouterGraph::appendPatternParams(*pattern, &specs);
     if (!checkParams(node, specs))
         return false;
-    info.channels = channels(node);
+    info.channels = Builder(*this, node).channels();
     m_router->m_sources[size_t(node)].pattern = pattern;
     if (!info.channels.isEmpty() && pattern->tracks().size() != 1)
         return failNode(node, QStringLiteral("channels"),
@@ -183,7 +212,10 @@ bool RouterCompiler::buildPattern(int node)
 bool RouterCompiler::buildDevice(int node)
 {
     NodeInfo &info = m_info[size_t(node)];
-    info.model = findModel(node, param(node, QStringLiteral("model")).toString());
+    const QString model = param(node, QStringLiteral("model")).toString();
+    info.model =
+        findFile(node, QStringLiteral("model"), model, &m_models,
+                 [this](const QString &named, QString *why) { return m_graph.model(named, why); });
     if (!info.model)
         return false;
     m_router->m_sources[size_t(node)].model = info.model;
@@ -273,57 +305,6 @@ void RouterCompiler::setDefaultHorizons()
     }
 }
 
-/** A row's view of the compiler while it builds one node. */
-class RouterCompiler::Builder final : public NodeBuilder
-{
-public:
-    Builder(RouterCompiler &compiler, int node) : m_compiler(compiler), m_node(node) {}
-
-    int node() const override { return m_node; }
-    const QJsonObject &params() const override
-    {
-        return m_compiler.m_graph.nodes[size_t(m_node)].params;
-    }
-    QJsonValue param(const QString &key) const override { return m_compiler.param(m_node, key); }
-    unsigned choiceBits(const QString &key) const override
-    {
-        return m_compiler.choiceBits(m_node, key);
-    }
-    const RouterContext &context() const override { return m_compiler.m_context; }
-    DetectorKind kind() const override
-    {
-        return m_compiler.m_info[size_t(m_node)].type->detectorKind;
-    }
-    bool fail(const QString &key, const QString &reason) override
-    {
-        return m_compiler.failNode(m_node, key, reason);
-    }
-    bool messageOf(Message *message, Category *category) override
-    {
-        return m_compiler.messageOf(m_node, message, category);
-    }
-    bool level(const QString &key, bool range, double *low, double *high) override
-    {
-        return m_compiler.level(m_node, key, range, low, high);
-    }
-    bool adopt(std::unique_ptr<RuntimeNode> node) override
-    {
-        return m_compiler.adopt(m_node, std::move(node));
-    }
-    bool adoptDetector(std::unique_ptr<Detector> detector) override
-    {
-        auto runtime = std::make_unique<DetectorNode>(std::move(detector));
-        m_compiler.m_router->m_detectors.push_back(runtime.get());
-        return m_compiler.adopt(m_node, std::move(runtime));
-    }
-    bool playPattern() override { return m_compiler.buildPattern(m_node); }
-    bool drive() override { return m_compiler.buildDevice(m_node); }
-
-private:
-    RouterCompiler &m_compiler;
-    int m_node;
-};
-
 bool RouterCompiler::buildNode(int node)
 {
     const RouterNode &n = m_graph.nodes[size_t(node)];
@@ -357,7 +338,7 @@ bool RouterCompiler::adopt(int node, std::unique_ptr<RuntimeNode> runtime)
         m_router->m_timed.push_back(runtime.get());
     // Voices drive the channels their node names (absent: the pattern's own).
     if (m_info[size_t(node)].type->param(QStringLiteral("channels")))
-        m_info[size_t(node)].channels = channels(node);
+        m_info[size_t(node)].channels = Builder(*this, node).channels();
     m_router->m_nodes[size_t(node)] = std::move(runtime);
     return true;
 }

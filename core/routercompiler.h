@@ -54,8 +54,6 @@ private:
     bool checkParams(int node, const std::vector<ParamSpec> &specs);
     /** A checked parameter's value, or its spec's default when absent. */
     QJsonValue param(int node, const QString &key) const;
-    double number(int node, const QString &key) const;
-    QStringList channels(int node) const;
     /** A filter parameter as a bit set over its choices; absent: 0, which a filter takes as any.
      */
     unsigned choiceBits(int node, const QString &key) const;
@@ -73,8 +71,13 @@ private:
     /** The default horizons of predict nodes: downstream devices' delay + reaction time. */
     void setDefaultHorizons();
 
-    PatternPtr findPattern(int node, const QString &name);
-    DeviceModelPtr findModel(int node, const QString &name);
+    /**
+     * The pattern or model `name` that node `node`'s parameter `key` names, by `lookup`
+     * (RouterGraph::pattern, model), each looked up once into `found`; null after failNode.
+     */
+    template<typename Ptr, typename Lookup>
+    Ptr findFile(int node, const QString &key, const QString &name, QHash<QString, Ptr> *found,
+                 Lookup lookup);
 
     /** The graph's size against the caps (RouterGraph::MaxNodes, MaxLinks, MaxDevices). */
     bool checkSize();
