@@ -6,7 +6,9 @@
 
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
+#include <sys/socket.h>
 #include <unistd.h>
 
 namespace semhap {
@@ -101,15 +103,23 @@ void EmergencyStop::remove(int fd)
 void EmergencyStop::stopAllNow()
 {
     const StopFrame &frame = stopFrame();
+    const int interruptedErrno = errno; // a signal handler leaves errno as it found it
     for (auto &slot : g_fds) {
         const int fd = slot.load() - 1;
         if (fd < 0)
             continue;
         for (int i = 0; i < StopRepeats; ++i) {
-            if (::write(fd, frame.bytes.data(), size_t(frame.size)) < 0)
+            // send() first: a socket whose peer has gone would raise SIGPIPE on write() and
+            // end the process before the other bands got their stop. Both are
+            // async-signal-safe; a tty or pty is no socket and takes write().
+            ssize_t n = ::send(fd, frame.bytes.data(), size_t(frame.size), MSG_NOSIGNAL);
+            if (n < 0 && errno == ENOTSOCK)
+                n = ::write(fd, frame.bytes.data(), size_t(frame.size));
+            if (n < 0)
                 break;
         }
     }
+    errno = interruptedErrno;
 }
 
 } // namespace semhap
