@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "comparecommand.h"
 
+#include "metricspec.h"
 #include "operator.h"
 #include "simrun.h"
 #include "statistics.h"
@@ -20,49 +21,29 @@ namespace semhap {
 
 namespace {
 
-// The metrics a comparison reports, in table order; inputs come first in the CSV.
+/**
+ * The metrics a comparison reports, in the order of their table (MetricSpec): what the runs
+ * scored, then the runs' own measures (their times). Inputs come first in the CSV.
+ */
+const std::vector<const MetricSpec *> &metricSpecs()
+{
+    static const std::vector<const MetricSpec *> specs = [] {
+        std::vector<const MetricSpec *> out = MetricSpec::numbers(MetricRole::Outcome);
+        for (const MetricSpec *spec : MetricSpec::numbers(MetricRole::Measure))
+            out.push_back(spec);
+        return out;
+    }();
+    return specs;
+}
+
 const QStringList &metricKeys()
 {
-    static const QStringList keys{QStringLiteral("cubes_transferred"),
-                                  QStringLiteral("cubes_dropped"),
-                                  QStringLiteral("cubes_broken"),
-                                  QStringLiteral("grasps"),
-                                  QStringLiteral("average_grasp_force"),
-                                  QStringLiteral("grasps_per_transfer"),
-                                  QStringLiteral("average_peak_grasp_force"),
-                                  QStringLiteral("containers_dropped"),
-                                  QStringLiteral("transfers_per_container_cycle"),
-                                  QStringLiteral("warning_lead_time"),
-                                  QStringLiteral("breaks_warned_share"),
-                                  QStringLiteral("breaks_warned_in_time_share"),
-                                  QStringLiteral("drop_warning_lead_time"),
-                                  QStringLiteral("drops_warned_share"),
-                                  QStringLiteral("drops_warned_in_time_share"),
-                                  QStringLiteral("confirmations_per_grasp"),
-                                  QStringLiteral("slip_episodes"),
-                                  QStringLiteral("warnings_per_slip_episode"),
-                                  QStringLiteral("breaks_warned_by_onset_share"),
-                                  QStringLiteral("right_warning_precision"),
-                                  QStringLiteral("right_warning_duty"),
-                                  QStringLiteral("drops_warned_by_onset_share"),
-                                  QStringLiteral("left_warning_precision"),
-                                  QStringLiteral("left_warning_duty"),
-                                  QStringLiteral("box_refills"),
-                                  QStringLiteral("insertions"),
-                                  QStringLiteral("time_to_insert"),
-                                  QStringLiteral("collisions"),
-                                  QStringLiteral("peak_insertion_force"),
-                                  QStringLiteral("plug_pickups"),
-                                  QStringLiteral("plugs_dropped"),
-                                  QStringLiteral("area_cleaned"),
-                                  QStringLiteral("plates_cleaned"),
-                                  QStringLiteral("time_to_clean"),
-                                  QStringLiteral("peak_force"),
-                                  QStringLiteral("time_above_safe_force"),
-                                  QStringLiteral("plates_broken"),
-                                  QStringLiteral("average_press_force"),
-                                  QStringLiteral("warnings_felt"),
-                                  QStringLiteral("realtime_factor")};
+    static const QStringList keys = [] {
+        QStringList out;
+        for (const MetricSpec *spec : metricSpecs())
+            out.append(QLatin1String(spec->name));
+        return out;
+    }();
     return keys;
 }
 
@@ -215,8 +196,8 @@ QString pairedTable(const std::vector<Row> &rows, const QString &baseline)
     lines.push_back(header);
     int pairs = 0;
     for (int m = 0; m < metricKeys().size(); ++m) {
-        if (metricKeys()[m] == QLatin1String("realtime_factor"))
-            continue; // the machine's speed, not the router's effect
+        if (metricSpecs()[size_t(m)]->role != MetricRole::Outcome)
+            continue; // the machine's speed and the run's length, not the router's effect
         const std::map<QString, double> base = valuesOf(rows, baseline, m);
         QStringList line{metricKeys()[m]};
         bool any = false;
@@ -389,8 +370,7 @@ int CompareCommand::execute(const QCommandLineParser &parser)
             }
             const double wall =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            QJsonObject metrics = run->metrics();
-            metrics.insert(QStringLiteral("realtime_factor"), run->time() / std::max(wall, 1e-9));
+            const QJsonObject metrics = run->report(wall);
             Row row;
             row.inputs = {options.scene, options.router, options.operatorName,
                           QString::number(options.seed), QString::number(options.duration)};

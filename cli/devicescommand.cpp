@@ -4,6 +4,7 @@
 #include "bandprobe.h"
 #include "devicemanager.h"
 #include "deviceuri.h"
+#include "transportscheme.h"
 
 namespace semhap {
 
@@ -11,6 +12,9 @@ namespace {
 
 /** How long --probe waits for a band's two replies. */
 constexpr double ProbeTimeout = 2.5; // a Nano's boot loader holds the line for up to 2 s
+/** The columns of the transports' listing: their syntax, and the whole line. */
+constexpr int SyntaxWidth = 24;
+constexpr int LineWidth = 80;
 
 } // namespace
 
@@ -35,16 +39,26 @@ int DevicesCommand::execute(const QCommandLineParser &parser)
             tr("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     if (parser.isSet(QStringLiteral("probe")))
         return probe(parser.value(QStringLiteral("probe")));
-    m_out << tr("Transports (URIs for --device and --bind):\n")
-          << tr("  virtual:NAME             no hardware; keeps frames for previews\n")
-          << tr("  serial:PATH[?baud=N]     a serial port or pseudo-terminal (default "
-                "250000 baud)\n")
-          << tr("  hid:VID:PID              a USB HID band (hex IDs, usage page 0xFF00)\n")
-          << tr("  udp:HOST:PORT            a band on the network\n")
-          << tr("  audio:DEVICE[?channels=1,2,…&carrier=HZ,…]\n"
-                "                           a sound card's outputs: each channel a carrier "
-                "(170 Hz)\n"
-                "                           times its envelope\n\n");
+    m_out << tr("Transports (URIs for --device and --bind):\n");
+    for (const TransportScheme &scheme : TransportScheme::all()) {
+        const QString syntax = QString::fromUtf8(scheme.syntax);
+        // A syntax wider than its column puts its help on the next line; the help wraps
+        // at the terminal's usual width.
+        QString line = syntax.size() < SyntaxWidth
+                           ? QStringLiteral("  %1").arg(syntax, -SyntaxWidth)
+                           : QStringLiteral("  %1\n%2")
+                                 .arg(syntax, QString(SyntaxWidth + 2, QLatin1Char(' ')));
+        qsizetype lineStart = line.lastIndexOf(QLatin1Char('\n')) + 1;
+        for (const QString &word : QString::fromUtf8(scheme.help).split(QLatin1Char(' '))) {
+            if (line.size() - lineStart + 1 + word.size() > LineWidth) {
+                line += QLatin1Char('\n') + QString(SyntaxWidth + 2, QLatin1Char(' '));
+                lineStart = line.size() - SyntaxWidth - 2;
+            }
+            line += QLatin1Char(' ') + word;
+        }
+        m_out << line << '\n';
+    }
+    m_out << '\n';
     DeviceManager manager;
     const std::vector<PortInfo> ports = manager.present();
     m_out << tr("Present:\n");

@@ -3,6 +3,7 @@
 
 #include "emergencystop.h"
 #include "transportfactory.h"
+#include "transportscheme.h"
 
 #include <chrono>
 #include <thread>
@@ -27,9 +28,11 @@ QString PlayCommand::summary() const
 void PlayCommand::configure(QCommandLineParser &parser)
 {
     addPatternArguments(parser);
+    QStringList syntaxes;
+    for (const TransportScheme &scheme : TransportScheme::all())
+        syntaxes.append(QString::fromUtf8(scheme.syntax));
     parser.addOption({QStringLiteral("device"),
-                      tr("Where to play: virtual:NAME, serial:PATH[?baud=N], hid:VID:PID, "
-                         "udp:HOST:PORT, audio:DEVICE[?channels=1,2,…&carrier=HZ]."),
+                      tr("Where to play: %1.").arg(syntaxes.join(QStringLiteral(", "))),
                       tr("URI")});
     parser.addOption({QStringLiteral("duration"),
                       tr("How long to play, in seconds (default: release-at + 1, or 2)."),

@@ -290,14 +290,7 @@ int RunCommand::execute(const QCommandLineParser &parser)
         return ExitInvalidInput;
 
     const double wallSeconds = double(wall.elapsed()) / 1000;
-    QJsonObject metrics = run->metrics();
-    metrics.insert(QStringLiteral("scene"), options.scene);
-    metrics.insert(QStringLiteral("router"), options.router);
-    metrics.insert(QStringLiteral("operator"), options.operatorName);
-    metrics.insert(QStringLiteral("seed"), double(options.seed));
-    metrics.insert(QStringLiteral("sim_seconds"), run->time());
-    metrics.insert(QStringLiteral("wall_seconds"), wallSeconds);
-    metrics.insert(QStringLiteral("realtime_factor"), run->time() / std::max(1e-9, wallSeconds));
+    const QJsonObject metrics = run->report(wallSeconds);
     if (devices[0])
         devices[0]->write(QJsonDocument(metrics).toJson(QJsonDocument::Indented));
     return ExitOk;

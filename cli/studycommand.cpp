@@ -5,6 +5,7 @@
 #include "studyanalysis.h"
 #include "studydatabase.h"
 #include "studyexport.h"
+#include "studyprotocol.h"
 #include "studysimulation.h"
 #include "studytable.h"
 
@@ -146,7 +147,7 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
                           trial.practice ? QStringLiteral("practice")
                                          : QStringLiteral("trial %1").arg(trial.number))
                      .arg(trial.seconds, 0, 'f', 1)
-                     .arg(trial.metrics.value(QLatin1String("cubes_transferred")).toInt());
+                     .arg(StudyProtocol::transfers(trial.metrics));
         flushOutputs(); // a pipe sees each run as it ends
     };
     if (!StudySimulation::run(*study, options, &error))

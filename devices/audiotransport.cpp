@@ -8,7 +8,10 @@
 
 #include <portaudio.h>
 
+#include <QStringList>
+
 #include <algorithm>
+#include <cmath>
 
 namespace semhap {
 
@@ -19,6 +22,8 @@ constexpr double ResponseTimeout = 0.5;
 /** How long close() lets the fade and a buffer of silence reach the card. */
 constexpr double SilenceTimeout = 0.25;
 constexpr auto WorkerPeriod = std::chrono::milliseconds(10);
+/** How old the listing of sound cards may be (s): a panel polls every second. */
+constexpr double ListAge = 5.0;
 
 int renderCallback(const void *, void *output, unsigned long frames,
                    const PaStreamCallbackTimeInfo *time, PaStreamCallbackFlags flags, void *data)
@@ -68,7 +73,7 @@ QString AudioTransport::uri() const
     return m_uri.toString();
 }
 
-bool AudioTransport::check(const DeviceUri &uri, const DeviceModel &model, QString *error)
+bool AudioTransport::fits(const DeviceUri &uri, const DeviceModel &model, QString *error)
 {
     const size_t channels =
         uri.outputChannels.empty() ? size_t(model.channelCount()) : uri.outputChannels.size();
@@ -90,6 +95,101 @@ bool AudioTransport::check(const DeviceUri &uri, const DeviceModel &model, QStri
         return false;
     }
     return true;
+}
+
+bool AudioTransport::parseAddress(const QString &address, DeviceUri *uri, QString *error)
+{
+    const qsizetype query = address.indexOf(QLatin1Char('?'));
+    uri->name = address.left(query);
+    if (uri->name.isEmpty()) {
+        *error = QStringLiteral("an audio device needs an output (audio:default, or a name "
+                                "`semhap devices` lists)");
+        return false;
+    }
+    if (query < 0)
+        return true;
+    for (const QString &option : address.mid(query + 1).split(QLatin1Char('&'))) {
+        const QString key = option.section(QLatin1Char('='), 0, 0);
+        const QStringList values = option.section(QLatin1Char('='), 1).split(QLatin1Char(','));
+        if (key == QLatin1String("channels")) {
+            uri->outputChannels.clear();
+            for (const QString &value : values) {
+                bool ok = false;
+                const int channel = value.toInt(&ok);
+                if (!ok || channel < 1) {
+                    *error = QStringLiteral("channels= takes the card's output channels, from 1, "
+                                            "comma-separated (channels=1,2,3,4)");
+                    return false;
+                }
+                if (std::find(uri->outputChannels.begin(), uri->outputChannels.end(), channel) !=
+                    uri->outputChannels.end()) {
+                    *error = QStringLiteral("output channel %1 is given twice").arg(channel);
+                    return false;
+                }
+                uri->outputChannels.push_back(channel);
+            }
+            if (int(uri->outputChannels.size()) > MaxChannels) {
+                *error = QStringLiteral("at most %1 channels").arg(MaxChannels);
+                return false;
+            }
+        } else if (key == QLatin1String("carrier")) {
+            uri->carriers.clear();
+            for (const QString &value : values) {
+                bool ok = false;
+                const double carrier = value.toDouble(&ok);
+                if (!ok || !std::isfinite(carrier) || carrier <= 0.0) {
+                    *error = QStringLiteral("carrier= takes frequencies above 0 Hz, one for all "
+                                            "channels or one per channel (carrier=170 or "
+                                            "carrier=170,170,200,200)");
+                    return false;
+                }
+                uri->carriers.push_back(carrier);
+            }
+        } else {
+            *error = QStringLiteral("unknown option '%1' (audio takes "
+                                    "?channels=1,2,…&carrier=HZ,…)")
+                         .arg(option);
+            return false;
+        }
+    }
+    if (uri->carriers.size() > 1 && !uri->outputChannels.empty() &&
+        uri->carriers.size() != uri->outputChannels.size()) {
+        *error = QStringLiteral("%1 carriers for %2 channels: give one for all, or one per "
+                                "channel")
+                     .arg(uri->carriers.size())
+                     .arg(uri->outputChannels.size());
+        return false;
+    }
+    return true;
+}
+
+QString AudioTransport::formatAddress(const DeviceUri &uri)
+{
+    QStringList options;
+    QStringList list;
+    for (const int channel : uri.outputChannels)
+        list.append(QString::number(channel));
+    if (!list.isEmpty())
+        options.append(QStringLiteral("channels=") + list.join(QLatin1Char(',')));
+    list.clear();
+    for (const double carrier : uri.carriers)
+        list.append(QString::number(carrier));
+    if (!list.isEmpty() &&
+        !(uri.carriers.size() == 1 && uri.carriers[0] == DeviceUri::DefaultCarrier))
+        options.append(QStringLiteral("carrier=") + list.join(QLatin1Char(',')));
+    return uri.name +
+           (options.isEmpty() ? QString() : QLatin1Char('?') + options.join(QLatin1Char('&')));
+}
+
+void AudioTransport::present(std::vector<PortInfo> *out)
+{
+    for (const AudioOutputInfo &output : AudioSystem::list(ListAge)) {
+        DeviceUri uri;
+        uri.scheme = QStringLiteral("audio");
+        uri.name = output.name;
+        out->push_back({uri.toString(), uri.scheme, output.hostApi, -1, -1, output.channels,
+                        output.sampleRate});
+    }
 }
 
 bool AudioTransport::open(QString *error)

@@ -3,6 +3,7 @@
 
 #include "deviceuri.h"
 #include "transport.h"
+#include "transportscheme.h"
 
 #include <array>
 #include <condition_variable>
@@ -48,7 +49,16 @@ public:
      * Whether `uri` fits `model`: no more output channels or carriers than the model has
      * channels. False with a reason.
      */
-    static bool check(const DeviceUri &uri, const DeviceModel &model, QString *error);
+    static bool fits(const DeviceUri &uri, const DeviceModel &model, QString *error);
+    /**
+     * `DEVICE[?channels=1,2,…&carrier=HZ,…]`, what follows `audio:`, into the output's name,
+     * its channels and carriers; false with a reason.
+     */
+    static bool parseAddress(const QString &address, DeviceUri *uri, QString *error);
+    /** The same, spelled: the options only when they are not the defaults. */
+    static QString formatAddress(const DeviceUri &uri);
+    /** Appends the sound card outputs (scanned at most every 5 s: probing cards is slow). */
+    static void present(std::vector<PortInfo> *out);
     /**
      * Seconds from send() to the first sample that carried sent() frame number `index`
      * (its running count) at the card's DAC, by PortAudio's output time; < 0 when that

@@ -1,23 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "devicemanager.h"
 
-#include "audiosystem.h"
 #include "deviceuri.h"
-#include "hidlink.h"
-#include "hidreport.h"
-#include "seriallink.h"
 #include "transportfactory.h"
 
 #include <algorithm>
 
 namespace semhap {
-
-namespace {
-
-/** How old the listing of sound cards may be (s): a panel polls every second. */
-constexpr double AudioListAge = 5.0;
-
-} // namespace
 
 DeviceManager::DeviceManager() = default;
 
@@ -37,24 +26,9 @@ void DeviceManager::addConfigured(const QString &uri)
 std::vector<PortInfo> DeviceManager::present() const
 {
     std::vector<PortInfo> out;
-    for (const SerialPortInfo &port : SerialLink::enumerate())
-        out.push_back({QStringLiteral("serial:") + port.path, QStringLiteral("serial"),
-                       port.description, port.vendorId, port.productId});
-    for (const HidDeviceInfo &hid : HidLink::enumerate(0, 0, hidreport::UsagePage)) {
-        DeviceUri uri;
-        uri.scheme = DeviceUri::Scheme::Hid;
-        uri.vendorId = hid.vendorId;
-        uri.productId = hid.productId;
-        out.push_back({uri.toString(), QStringLiteral("hid"),
-                       QString(hid.manufacturer + QLatin1Char(' ') + hid.product).trimmed(),
-                       hid.vendorId, hid.productId});
-    }
-    for (const AudioOutputInfo &output : AudioSystem::list(AudioListAge)) {
-        DeviceUri uri;
-        uri.scheme = DeviceUri::Scheme::Audio;
-        uri.name = output.name;
-        out.push_back({uri.toString(), QStringLiteral("audio"), output.hostApi, -1, -1,
-                       output.channels, output.sampleRate});
+    for (const TransportScheme &scheme : TransportScheme::all()) {
+        if (scheme.present)
+            scheme.present(&out);
     }
     for (const QString &uri : m_configured)
         out.push_back(

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "transport.h"
+#include "transportscheme.h"
 
 #include <QStringList>
 
@@ -10,18 +11,6 @@
 #include <vector>
 
 namespace semhap {
-
-/** Something a transport could be made for, as listed to the user. */
-struct PortInfo
-{
-    QString uri;         ///< ready for --device / --bind
-    QString kind;        ///< "serial", "hid", "audio", "virtual", "udp"
-    QString description; ///< what the system says it is (audio: the host API)
-    int vendorId = -1;   ///< USB only
-    int productId = -1;
-    int outputChannels = -1; ///< sound cards only
-    double sampleRate = 0.0; ///< sound cards only: Hz
-};
 
 /** A bound device and how its transport is doing. */
 struct BoundDevice
@@ -51,8 +40,8 @@ public:
     /** The addresses added with addConfigured(), in the order they came. */
     QStringList configured() const { return m_configured; }
     /**
-     * Everything present now: serial ports, HID devices, sound card outputs (scanned at
-     * most every 5 s: probing cards is slow), then the configured addresses.
+     * Everything present now: what each TransportScheme lists (serial ports, HID bands,
+     * sound card outputs, …), then the configured addresses.
      */
     std::vector<PortInfo> present() const;
     /**

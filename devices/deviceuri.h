@@ -8,28 +8,20 @@
 namespace semhap {
 
 /**
- * Where a device is, as users write it: `virtual:NAME`, `serial:PATH[?baud=N]`,
- * `hid:VID:PID` (hex), `udp:HOST:PORT`, `audio:DEVICE[?channels=1,2&carrier=170]`. One
- * string names a band in options, bindings and settings.
+ * Where a device is, as users write it: `SCHEME:ADDRESS`, the schemes being the rows of
+ * TransportScheme (`virtual:NAME`, `serial:PATH[?baud=N]`, `udp:HOST:PORT`, …). One string
+ * names a band in options, bindings and settings; the fields are the parts the schemes'
+ * addresses are made of.
  */
 struct DeviceUri
 {
-    enum class Scheme
-    {
-        Virtual,
-        Serial,
-        Hid,
-        Udp,
-        Audio
-    };
-
     /** The reference bands' rate (firmware/README.md): 250000 is exact on a 16 MHz AVR. */
     static constexpr int DefaultBaud = 250000;
     /** Hz: the resonance of the LRAs vibrotactile bands use. */
     static constexpr double DefaultCarrier = 170.0;
 
-    Scheme scheme = Scheme::Virtual;
-    QString name; ///< virtual: the name; serial: the path; udp: the host; audio: the output
+    QString scheme = QStringLiteral("virtual"); ///< a TransportScheme's name
+    QString name; ///< virtual: the name; serial: the path; udp, tcp: the host; audio: the output
     int baud = DefaultBaud;
     int vendorId = 0;
     int productId = 0;
@@ -43,6 +35,10 @@ struct DeviceUri
     static bool parse(const QString &text, DeviceUri *uri, QString *error);
     /** The canonical spelling (hex IDs with four digits, baud only when not the default). */
     QString toString() const;
+    /** `HOST:PORT` (an IPv6 host in brackets) into name and port: the network schemes' address. */
+    static bool parseHostPort(const QString &address, DeviceUri *uri, QString *error);
+    /** The same, spelled: brackets around an IPv6 host. */
+    static QString formatHostPort(const DeviceUri &uri);
     /**
      * `virtual:NAME`: where a router device `name` plays when no band is bound to it (its
      * frames show in the studio, nothing leaves the machine).

@@ -3,6 +3,8 @@
 
 #include "hidreport.h"
 
+#include <QStringList>
+
 #include <hidapi.h>
 
 #include <array>
@@ -128,6 +130,45 @@ std::vector<HidDeviceInfo> HidLink::enumerate(int vendorId, int productId, int u
     }
     hid_free_enumeration(list);
     return out;
+}
+
+bool HidLink::parseAddress(const QString &address, DeviceUri *uri, QString *error)
+{
+    const auto hexId = [](const QString &text, int *value) {
+        bool ok = false;
+        const uint parsed = text.toUInt(&ok, 16);
+        if (!ok || text.isEmpty() || text.size() > 4 || text.startsWith(QLatin1Char('+')))
+            return false;
+        *value = int(parsed);
+        return true;
+    };
+    const QStringList ids = address.split(QLatin1Char(':'));
+    if (ids.size() != 2 || !hexId(ids[0], &uri->vendorId) || !hexId(ids[1], &uri->productId)) {
+        *error = QStringLiteral("a HID device is hid:VID:PID, each up to four hex digits "
+                                "(hid:1234:5678)");
+        return false;
+    }
+    return true;
+}
+
+QString HidLink::formatAddress(const DeviceUri &uri)
+{
+    return QStringLiteral("%1:%2")
+        .arg(uri.vendorId, 4, 16, QLatin1Char('0'))
+        .arg(uri.productId, 4, 16, QLatin1Char('0'));
+}
+
+void HidLink::present(std::vector<PortInfo> *out)
+{
+    for (const HidDeviceInfo &hid : enumerate(0, 0, hidreport::UsagePage)) {
+        DeviceUri uri;
+        uri.scheme = QStringLiteral("hid");
+        uri.vendorId = hid.vendorId;
+        uri.productId = hid.productId;
+        out->push_back({uri.toString(), uri.scheme,
+                        QString(hid.manufacturer + QLatin1Char(' ') + hid.product).trimmed(),
+                        hid.vendorId, hid.productId});
+    }
 }
 
 } // namespace semhap

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "link.h"
+#include "transportscheme.h"
 
 #include <memory>
 #include <vector>
@@ -45,6 +46,12 @@ public:
      * Empty when there are none (or hidapi cannot start).
      */
     static std::vector<HidDeviceInfo> enumerate(int vendorId, int productId, int usagePage);
+    /** `VID:PID` (hex), what follows `hid:`, into the IDs; false with a reason. */
+    static bool parseAddress(const QString &address, DeviceUri *uri, QString *error);
+    /** The same, spelled: four hex digits each. */
+    static QString formatAddress(const DeviceUri &uri);
+    /** Appends the bands on the protocol's usage page, as listed to the user. */
+    static void present(std::vector<PortInfo> *out);
 
 private:
     struct DeviceDeleter

@@ -164,4 +164,40 @@ std::vector<SerialPortInfo> SerialLink::enumerate()
     return out;
 }
 
+bool SerialLink::parseAddress(const QString &address, DeviceUri *uri, QString *error)
+{
+    const qsizetype query = address.indexOf(QLatin1Char('?'));
+    uri->name = address.left(query);
+    if (uri->name.isEmpty()) {
+        *error = QStringLiteral("a serial device needs a path (serial:/dev/ttyACM0)");
+        return false;
+    }
+    if (query >= 0) {
+        const QString option = address.mid(query + 1);
+        bool ok = false;
+        const int baud = option.startsWith(QLatin1String("baud=")) ? option.mid(5).toInt(&ok) : 0;
+        if (!ok || baud <= 0) {
+            *error =
+                QStringLiteral("unknown option '%1' (serial takes ?baud=N, N > 0)").arg(option);
+            return false;
+        }
+        uri->baud = baud;
+    }
+    return true;
+}
+
+QString SerialLink::formatAddress(const DeviceUri &uri)
+{
+    return uri.baud == DeviceUri::DefaultBaud
+               ? uri.name
+               : QStringLiteral("%1?baud=%2").arg(uri.name).arg(uri.baud);
+}
+
+void SerialLink::present(std::vector<PortInfo> *out)
+{
+    for (const SerialPortInfo &port : enumerate())
+        out->push_back({QStringLiteral("serial:") + port.path, QStringLiteral("serial"),
+                        port.description, port.vendorId, port.productId});
+}
+
 } // namespace semhap

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "fdlink.h"
+#include "transportscheme.h"
 
 #include <QString>
 
@@ -37,6 +38,12 @@ public:
 
     /** The serial ports libserialport sees (real ports; not ptys). */
     static std::vector<SerialPortInfo> enumerate();
+    /** `PATH[?baud=N]`, what follows `serial:`, into the name and baud; false with a reason. */
+    static bool parseAddress(const QString &address, DeviceUri *uri, QString *error);
+    /** The same, spelled: the baud only when it is not the default. */
+    static QString formatAddress(const DeviceUri &uri);
+    /** Appends the ports enumerate() finds, as listed to the user. */
+    static void present(std::vector<PortInfo> *out);
 
 private:
     struct PortDeleter

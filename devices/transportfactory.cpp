@@ -1,12 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "transportfactory.h"
 
-#include "audiotransport.h"
-#include "hidlink.h"
 #include "linktransport.h"
-#include "seriallink.h"
-#include "udplink.h"
-#include "virtualtransport.h"
+#include "transportscheme.h"
 
 namespace semhap {
 
@@ -16,40 +12,26 @@ std::unique_ptr<Transport> TransportFactory::create(const QString &uri, DeviceMo
     DeviceUri parsed;
     if (!DeviceUri::parse(uri, &parsed, error))
         return nullptr;
-    if (parsed.scheme == DeviceUri::Scheme::Audio && !AudioTransport::check(parsed, *model, error))
+    const TransportScheme *scheme = TransportScheme::find(parsed.scheme);
+    if (scheme->fits && !scheme->fits(parsed, *model, error))
         return nullptr;
     return create(parsed, std::move(model));
 }
 
 std::unique_ptr<Transport> TransportFactory::create(const DeviceUri &uri, DeviceModelPtr model)
 {
-    switch (uri.scheme) {
-    case DeviceUri::Scheme::Virtual:
-        return std::make_unique<VirtualTransport>(uri.name, std::move(model));
-    case DeviceUri::Scheme::Audio:
-        return std::make_unique<AudioTransport>(uri, std::move(model));
-    case DeviceUri::Scheme::Serial:
-    case DeviceUri::Scheme::Hid:
-    case DeviceUri::Scheme::Udp:
-        break;
-    }
-    return std::make_unique<LinkTransport>(createLink(uri), std::move(model));
+    const TransportScheme *scheme = TransportScheme::find(uri.scheme);
+    if (!scheme)
+        return nullptr;
+    if (scheme->transport)
+        return scheme->transport(uri, std::move(model));
+    return std::make_unique<LinkTransport>(scheme->link(uri), std::move(model));
 }
 
 std::unique_ptr<Link> TransportFactory::createLink(const DeviceUri &uri)
 {
-    switch (uri.scheme) {
-    case DeviceUri::Scheme::Virtual:
-    case DeviceUri::Scheme::Audio:
-        break;
-    case DeviceUri::Scheme::Serial:
-        return std::make_unique<SerialLink>(uri.name, uri.baud);
-    case DeviceUri::Scheme::Hid:
-        return std::make_unique<HidLink>(uri.vendorId, uri.productId);
-    case DeviceUri::Scheme::Udp:
-        return std::make_unique<UdpLink>(uri.name, uri.port);
-    }
-    return nullptr;
+    const TransportScheme *scheme = TransportScheme::find(uri.scheme);
+    return scheme && scheme->link ? scheme->link(uri) : nullptr;
 }
 
 } // namespace semhap

@@ -167,4 +167,33 @@ QJsonObject InsertionTask::metrics() const
             {QStringLiteral("plugs_dropped"), m_drops}};
 }
 
+const std::vector<MetricSpec> &InsertionTask::metricSpecs()
+{
+    static const std::vector<MetricSpec> specs = {
+        {"insertions", MetricUnit::Count, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plugs inserted"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plugs seated in the port.")},
+        {"time_to_insert", MetricUnit::Seconds, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Time to insert"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The mean time from picking a plug up to seating it.")},
+        {"collisions", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Collisions with the port"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Times the plug pushed on the port's face beside the opening.")},
+        {"peak_insertion_force", MetricUnit::Newtons, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Peak insertion force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "The highest force on the port during the run.")},
+        {"plug_pickups", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plug pick-ups"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Times a plug was lifted from where it was laid out.")},
+        {"plugs_dropped", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plugs dropped"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Plugs let go of after a pick-up without being seated.")},
+    };
+    return specs;
+}
+
 } // namespace semhap

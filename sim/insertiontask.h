@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "metricspec.h"
 #include "pose.h"
 #include "random.h"
 #include "task.h"
@@ -41,6 +42,8 @@ public:
     void observe(World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
     QJsonObject metrics() const override;
+    /** Its metrics, a row each (docs/metrics.md). */
+    static const std::vector<MetricSpec> &metricSpecs();
 
     /**
      * Whether the plug sits in the port: its tip within SeatedWithin of full depth, on the

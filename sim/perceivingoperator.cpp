@@ -93,4 +93,36 @@ void PerceivingOperator::addMetrics(QJsonObject *metrics) const
     metrics->insert(QStringLiteral("warnings_ignored"), ignored);
 }
 
+const std::vector<MetricSpec> &PerceivingOperator::metricSpecs()
+{
+    static const std::vector<MetricSpec> specs = {
+        {"cues_taken_in", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cues taken in"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Cues the perceiving operator felt on a band or saw on the overlay.")},
+        {"cues_misread", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cues misread"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Cues the perceiving operator took for a message of the other meaning: "
+                           "a warning for a confirmation, or the other way round.")},
+        {"warnings_ignored", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Warnings ignored"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Warnings the perceiving operator felt and did not answer, for how "
+                           "seldom that hand's warnings had been right.")},
+        {"left_reliance", MetricUnit::Share, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Left reliance"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of the left hand's warnings the perceiving operator answers "
+                           "now.")},
+        {"right_reliance", MetricUnit::Share, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Right reliance"),
+         QT_TRANSLATE_NOOP(
+             "semhap::MetricSpec",
+             "The share of the right hand's warnings the perceiving operator answers "
+             "now.")},
+    };
+    return specs;
+}
+
 } // namespace semhap

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "metricspec.h"
 #include "operator.h"
 #include "person.h"
 
@@ -33,6 +34,8 @@ public:
      * scene `left_reliance`, `right_reliance` (docs/metrics.md).
      */
     void addMetrics(QJsonObject *metrics) const override;
+    /** What addMetrics() adds, a row each (docs/metrics.md). */
+    static const std::vector<MetricSpec> &metricSpecs();
 
     const Person &person() const { return m_person; }
     /**

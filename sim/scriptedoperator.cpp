@@ -1,13 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "scriptedoperator.h"
 
-#include "insertionoperator.h"
-#include "insertiontask.h"
-#include "perceivingoperator.h"
 #include "perception.h"
 #include "taskmonitor.h"
-#include "wipingoperator.h"
-#include "wipingtask.h"
 #include "world.h"
 
 #include <algorithm>
@@ -51,12 +46,6 @@ constexpr double RiseSpeed = 0.3;
 constexpr double RegripStep = 5.0;
 
 } // namespace
-
-void Operator::feel(Gripper, const Feeling &, double) {}
-
-void Operator::sense(const Perception &, const Task &, double) {}
-
-void Operator::addMetrics(QJsonObject *) const {}
 
 ScriptedOperator::ScriptedOperator(Task task, std::uint64_t seed, bool reactive,
                                    double reactionTime, Variant variant)
@@ -489,47 +478,15 @@ void ScriptedOperator::react(World &world, const Percept &percept)
     }
 }
 
-QStringList operatorNames()
+std::unique_ptr<Operator> ScriptedOperator::create(const QString &name, const World &world,
+                                                   std::uint64_t seed, double reactionTime,
+                                                   QString *error)
 {
-    return {QStringLiteral("scripted"), QStringLiteral("reactive"), QStringLiteral("perceiving"),
-            QStringLiteral("fast_squeeze"), QStringLiteral("drifting_hold")};
-}
-
-std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, std::uint64_t seed,
-                                       double reactionTime, const PersonParameters &person,
-                                       QString *error)
-{
-    if (name == QLatin1String("perceiving")) {
-        // The reactive hands, with no delay of their own: the person's senses supply it.
-        std::unique_ptr<Operator> hands =
-            makeOperator(QStringLiteral("reactive"), world, seed, 0.0, person, error);
-        if (!hands)
-            return nullptr;
-        return std::make_unique<PerceivingOperator>(std::move(hands), person, seed);
-    }
-    if (!operatorNames().contains(name)) {
-        *error = QStringLiteral("unknown operator '%1' (operators: %2)")
-                     .arg(name, operatorNames().join(QStringLiteral(", ")));
-        return nullptr;
-    }
-    const bool insertion = world.taskName() == QLatin1String(InsertionTask::Name);
-    if (insertion || world.taskName() == QLatin1String(WipingTask::Name)) {
-        if (name != QLatin1String("scripted") && name != QLatin1String("reactive")) {
-            *error = QStringLiteral("%1: the %2 operator cannot do %3 (operators: scripted, "
-                                    "reactive, perceiving)")
-                         .arg(world.sceneName(), name, world.taskName());
-            return nullptr;
-        }
-        const bool reactive = name == QLatin1String("reactive");
-        if (insertion)
-            return std::make_unique<InsertionOperator>(seed, reactive, reactionTime);
-        return std::make_unique<WipingOperator>(world, seed, reactive, reactionTime);
-    }
     Region region;
-    ScriptedOperator::Task task = ScriptedOperator::Task::BoxAndBlock;
+    Task task = Task::BoxAndBlock;
     if (world.objectIndex(QStringLiteral("container")) >= 0 && world.hasGripper(Gripper::Left) &&
         world.region(QStringLiteral("home"), &region)) {
-        task = ScriptedOperator::Task::BimanualSorting;
+        task = Task::BimanualSorting;
     } else if (!world.region(QStringLiteral("place"), &region)) {
         *error = QStringLiteral("%1: the %2 operator needs sites 'pick' and 'place' (or a "
                                 "'container' and a 'home' site; see sim/README.md)")
@@ -541,10 +498,9 @@ std::unique_ptr<Operator> makeOperator(const QString &name, const World &world, 
                      .arg(world.sceneName(), name);
         return nullptr;
     }
-    const auto variant =
-        name == QLatin1String("fast_squeeze")    ? ScriptedOperator::Variant::FastSqueeze
-        : name == QLatin1String("drifting_hold") ? ScriptedOperator::Variant::DriftingHold
-                                                 : ScriptedOperator::Variant::Normal;
+    const auto variant = name == QLatin1String("fast_squeeze")    ? Variant::FastSqueeze
+                         : name == QLatin1String("drifting_hold") ? Variant::DriftingHold
+                                                                  : Variant::Normal;
     return std::make_unique<ScriptedOperator>(task, seed, name == QLatin1String("reactive"),
                                               reactionTime, variant);
 }

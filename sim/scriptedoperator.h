@@ -48,6 +48,14 @@ public:
 
     ScriptedOperator(Task task, std::uint64_t seed, bool reactive, double reactionTime,
                      Variant variant = Variant::Normal);
+    /**
+     * The operator `name` (scripted, reactive, fast_squeeze, drifting_hold) for a cube scene:
+     * bimanual_sorting's when it has a container, a left gripper and a home site, else
+     * box_and_block's. Null with `error` when the scene lacks the sites it needs.
+     */
+    static std::unique_ptr<Operator> create(const QString &name, const World &world,
+                                            std::uint64_t seed, double reactionTime,
+                                            QString *error);
 
     QString name() const override;
     void act(World &world) override;

@@ -132,6 +132,19 @@ QJsonObject SimRun::metrics() const
     return metrics;
 }
 
+QJsonObject SimRun::report(double wallSeconds) const
+{
+    QJsonObject report = metrics();
+    report.insert(QStringLiteral("scene"), m_options.scene);
+    report.insert(QStringLiteral("router"), m_options.router);
+    report.insert(QStringLiteral("operator"), m_options.operatorName);
+    report.insert(QStringLiteral("seed"), double(m_options.seed));
+    report.insert(QStringLiteral("sim_seconds"), time());
+    report.insert(QStringLiteral("wall_seconds"), wallSeconds);
+    report.insert(QStringLiteral("realtime_factor"), time() / std::max(1e-9, wallSeconds));
+    return report;
+}
+
 bool SimRun::isDone() const
 {
     return m_steps >= m_totalSteps;
@@ -236,6 +249,39 @@ SessionInfo SimRun::sessionInfo() const
             QString::fromUtf8(
                 QJsonDocument(m_options.person.toJson()).toJson(QJsonDocument::Compact)));
     return info;
+}
+
+const std::vector<MetricSpec> &SimRun::metricSpecs()
+{
+    static const std::vector<MetricSpec> specs = {
+        {"sim_seconds", MetricUnit::Seconds, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Simulated time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Simulated time so far."), MetricRole::Measure},
+        {"wall_seconds", MetricUnit::Seconds, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Wall time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Real time so far."), MetricRole::Measure},
+        {"realtime_factor", MetricUnit::Factor, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Real-time factor"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Simulated seconds per real second."),
+         MetricRole::Measure},
+        {"scene", MetricUnit::Text, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Scene"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "The task that runs."), MetricRole::Input},
+        {"router", MetricUnit::Text, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Router"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "The router the run was loaded with."),
+         MetricRole::Input},
+        {"operator", MetricUnit::Text, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Operator"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Who drives the grippers when you do not."),
+         MetricRole::Input},
+        {"seed", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Seed"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The seed of the operator and of a laid-out scene."),
+         MetricRole::Input},
+    };
+    return specs;
 }
 
 } // namespace semhap

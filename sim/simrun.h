@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "metricspec.h"
 #include "operator.h"
 #include "perception.h"
 #include "personparameters.h"
@@ -93,6 +94,13 @@ public:
 
     /** The task metrics so far, and the run's own operator's (Operator::addMetrics). */
     QJsonObject metrics() const;
+    /**
+     * The report of a run that took `wallSeconds`: metrics(), then the run's inputs (scene,
+     * router, operator, seed) and its own measures (simulated and wall time, their ratio).
+     */
+    QJsonObject report(double wallSeconds) const;
+    /** What report() adds to metrics(), a row each (docs/metrics.md). */
+    static const std::vector<MetricSpec> &metricSpecs();
 
     /**
      * Drives the grippers with `op` instead of the run's own operator while it is set (the

@@ -44,8 +44,9 @@ public:
 };
 
 /**
- * The task of `world`'s scene, by its `semhap:task` text (sim/README.md): `usb_insertion`,
- * `dish_wiping`, or without one the cube tasks (box_and_block, bimanual_sorting). It may lay
+ * The task of `world`'s scene, by its `semhap:task` text (sim/README.md), made by that
+ * TaskType row: `usb_insertion`, `dish_wiping`, or without one the cube tasks
+ * (box_and_block, bimanual_sorting). It may lay
  * the scene out, or draw what it varies unseen, from `seed` now. Null with `error` for a task
  * semhap does not know or a scene it cannot do. `reactionTime` and `horizon` judge the
  * warnings (docs/metrics.md).

@@ -485,7 +485,7 @@ QJsonObject TaskMonitor::metrics() const
 {
     const int breaks = m_breaks.count;
     QJsonObject metrics{
-        {QStringLiteral("cubes_transferred"), m_transfers},
+        {QLatin1String(CubesTransferred), m_transfers},
         {QStringLiteral("cubes_dropped"), m_dropped},
         {QStringLiteral("cubes_broken"), breaks},
         {QStringLiteral("grasps"), m_grasps},
@@ -499,7 +499,7 @@ QJsonObject TaskMonitor::metrics() const
         {QStringLiteral("box_refills"), m_refills},
     };
     if (m_hasPlace && m_container < 0)
-        metrics.insert(QStringLiteral("completion_time"),
+        metrics.insert(QLatin1String(CompletionTime),
                        m_completedAt >= 0 ? QJsonValue(m_completedAt) : QJsonValue());
     int confirmations = m_confirmations[size_t(Gripper::Right)].onsets;
     int grasps = m_grasps;
@@ -535,6 +535,137 @@ QJsonObject TaskMonitor::metrics() const
         metrics.insert(QStringLiteral("left_warning_duty"), left.duty());
     }
     return metrics;
+}
+
+const std::vector<MetricSpec> &TaskMonitor::metricSpecs()
+{
+    static const std::vector<MetricSpec> specs = {
+        {CompletionTime, MetricUnit::Seconds, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Completion time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "When the pile was first finished: every cube transferred or broken "
+                           "(box_and_block).")},
+        {CubesTransferred, MetricUnit::Count, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cubes transferred"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Cubes that arrived where the task wants them, once per trip.")},
+        {"cubes_broken", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cubes broken"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cubes that fractured under the fingertips.")},
+        {"cubes_dropped", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cubes dropped (slipped out)"),
+         QT_TRANSLATE_NOOP(
+             "semhap::MetricSpec",
+             "Grasps that ended while the hand still gripped, after a lift: the cube "
+             "slipped out.")},
+        {"grasps", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Grasps"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Grasps begun.")},
+        {"grasps_per_transfer", MetricUnit::Ratio, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Grasps per transfer"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Grasps per cube transferred: 1 is one grasp for each.")},
+        {"average_grasp_force", MetricUnit::Newtons, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Average grasp force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The mean force of both fingertips over every moment of every grasp.")},
+        {"average_peak_grasp_force", MetricUnit::Newtons, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Average peak grasp force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The mean over grasps of the highest force during each.")},
+        {"warning_lead_time", MetricUnit::Seconds, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Warning lead time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "How long before a break its warning was first felt, on average.")},
+        {"breaks_warned_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Breaks warned"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of breaks a felt warning came before.")},
+        {"breaks_warned_in_time_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Breaks warned in time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of breaks warned at least a reaction time before: the "
+                           "warnings a person could act on.")},
+        {"containers_dropped", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Containers dropped"),
+         QT_TRANSLATE_NOOP(
+             "semhap::MetricSpec",
+             "Times the held container left the left fingertips and fell (bimanual).")},
+        {"drop_warning_lead_time", MetricUnit::Seconds, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Drop warning lead time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "How long before a container drop its warning was first felt, on "
+                           "average (bimanual).")},
+        {"drops_warned_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Drops warned"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of container drops a felt warning came before (bimanual).")},
+        {"drops_warned_in_time_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Drops warned in time"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of container drops warned at least a reaction time before "
+                           "(bimanual).")},
+        {"containers_set_down", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Containers set down"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Times the holding hand set the full container down on its base to be "
+                           "emptied (bimanual).")},
+        {"transfers_per_container_cycle", MetricUnit::Ratio, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Transfers per container cycle"),
+         QT_TRANSLATE_NOOP(
+             "semhap::MetricSpec",
+             "Cubes transferred per container cycle, which a drop or a set-down ends "
+             "(bimanual).")},
+        {"confirmations_per_grasp", MetricUnit::Ratio, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Confirmations felt per grasp"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Confirmations felt per real grasp: 1 is one per grasp, more is "
+                           "chatter, 0 without feedback.")},
+        {"slip_episodes", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Slip episodes"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Times the container slid in the left fingertips (bimanual).")},
+        {"warnings_per_slip_episode", MetricUnit::Ratio, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Warnings felt per slip episode"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Warnings felt on the left hand per slip: above 1, warnings came that "
+                           "no slip answered (bimanual).")},
+        {"breaks_warned_by_onset_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Breaks warned by onset"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of breaks whose warning began within the horizon before, in "
+                           "time to act: a warning on all along does not count.")},
+        {"right_warning_precision", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Right warnings borne out"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of the right hand's warnings a break, or the grip crossing "
+                           "the break line, followed within the horizon: the rest were false "
+                           "alarms.")},
+        {"right_warning_duty", MetricUnit::Share, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Right warning duty"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of grasping time a warning was felt on the right hand.")},
+        {"drops_warned_by_onset_share", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Drops warned by onset"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of container drops whose warning began within the horizon "
+                           "before, in time to act (bimanual).")},
+        {"left_warning_precision", MetricUnit::Share, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Left warnings borne out"),
+         QT_TRANSLATE_NOOP(
+             "semhap::MetricSpec",
+             "The share of the left hand's warnings a drop or a slip followed within "
+             "the horizon: the rest were false alarms (bimanual).")},
+        {"left_warning_duty", MetricUnit::Share, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Left warning duty"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The share of the time the container was held that a warning was felt "
+                           "(bimanual).")},
+        {"box_refills", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Cube box refills"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Times the cube box was refilled.")},
+    };
+    return specs;
 }
 
 } // namespace semhap

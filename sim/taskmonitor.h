@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "metricspec.h"
 #include "task.h"
 #include "world.h"
 
@@ -25,12 +26,19 @@ public:
      * `reactionTime`: how long before a failure a warning must be felt to count in time;
      * `horizon`: how long before it a warning's onset may lie and still count.
      */
+    /** The metrics others read: a practice round's goal counts transfers (StudyProtocol). */
+    static constexpr const char *CubesTransferred = "cubes_transferred";
+    /** The studio says when the pile is finished. */
+    static constexpr const char *CompletionTime = "completion_time";
+
     explicit TaskMonitor(const World &world, double reactionTime = DefaultReactionTime,
                          double horizon = DefaultHorizon);
 
     void observe(World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
     QJsonObject metrics() const override;
+    /** Its metrics, a row each (docs/metrics.md), in the order a reader looks for them. */
+    static const std::vector<MetricSpec> &metricSpecs();
     std::optional<bool> warranted(Gripper hand, double onset, double t) const override;
 
     static constexpr double RespawnPenalty = 2.0;

@@ -240,4 +240,43 @@ QJsonObject WipingTask::metrics() const
     };
 }
 
+const std::vector<MetricSpec> &WipingTask::metricSpecs()
+{
+    static const std::vector<MetricSpec> specs = {
+        {"area_cleaned", MetricUnit::Ratio, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Area cleaned (plates)"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Cells cleaned, in plates' worth: above 1 when more than a plate was "
+                           "cleaned.")},
+        {"time_to_clean", MetricUnit::Seconds, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Time to clean"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "When every cell of the first plate was first clean.")},
+        {"plates_cleaned", MetricUnit::Count, MetricBetter::Higher,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plates cleaned"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "Times every cell of a plate was clean at once.")},
+        {"plates_broken", MetricUnit::Count, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plates broken"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Plates broken by pressing above 40 N.")},
+        {"peak_force", MetricUnit::Newtons, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Peak force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "The highest press of the sponge on the plate.")},
+        {"time_above_safe_force", MetricUnit::Seconds, MetricBetter::Lower,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Time above the safe force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "The time the press was above the safe 25 N.")},
+        {"average_press_force", MetricUnit::Newtons, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Average press force"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec",
+                           "The mean press while the sponge pressed on the plate.")},
+        {"warnings_felt", MetricUnit::Count, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Warnings felt"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Warnings felt on the wiping hand.")},
+        {"stiffened_at", MetricUnit::Seconds, MetricBetter::Neither,
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "Sponge stiffened at"),
+         QT_TRANSLATE_NOOP("semhap::MetricSpec", "When the sponge's holder stiffened.")},
+    };
+    return specs;
+}
+
 } // namespace semhap

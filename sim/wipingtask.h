@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "metricspec.h"
 #include "random.h"
 #include "task.h"
 #include "world.h"
@@ -43,6 +44,8 @@ public:
     void observe(World &world) override;
     void feel(Gripper hand, const Feeling &feeling, double t) override;
     QJsonObject metrics() const override;
+    /** Its metrics, a row each (docs/metrics.md). */
+    static const std::vector<MetricSpec> &metricSpecs();
 
     /** The stained cells: how many there are and whether one is clean now. */
     int cellCount() const { return int(m_cells.size()); }

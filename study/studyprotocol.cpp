@@ -5,6 +5,7 @@
 #include "inputfile.h"
 #include "jsonreader.h"
 #include "router.h"
+#include "taskmonitor.h"
 #include "world.h"
 
 #include <QDir>
@@ -294,7 +295,7 @@ std::vector<StudyProtocol::Step> StudyProtocol::steps(const std::vector<int> &or
 
 int StudyProtocol::transfers(const QJsonObject &metrics)
 {
-    return metrics.value(QLatin1String("cubes_transferred")).toInt();
+    return metrics.value(QLatin1String(TaskMonitor::CubesTransferred)).toInt();
 }
 
 bool StudyProtocol::practiceDone(const QJsonObject &metrics, double seconds) const

@@ -353,10 +353,6 @@
         <translation>z. B. udp:127.0.0.1:9000</translation>
     </message>
     <message>
-        <source>An address that cannot be discovered: a UDP band (udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a virtual device (virtual:x)</source>
-        <translation>Eine Adresse, die nicht automatisch gefunden werden kann: ein UDP-Armband (udp:127.0.0.1:9000), ein Pseudo-Terminal (serial:/dev/pts/3) oder ein virtuelles Gerät (virtual:x)</translation>
-    </message>
-    <message>
         <source>Its hand is not in this scene.</source>
         <translation>Seine Hand ist nicht in dieser Szene.</translation>
     </message>
@@ -367,6 +363,10 @@
     <message>
         <source>%1 ch, %2 Hz (%3)</source>
         <translation>%1 Kan., %2 Hz (%3)</translation>
+    </message>
+    <message>
+        <source>An address that cannot be discovered, such as a band on the network or a pseudo-terminal, in one of these forms:</source>
+        <translation>Eine Adresse, die nicht automatisch gefunden werden kann, etwa ein Armband im Netzwerk oder ein Pseudo-Terminal, in einer dieser Formen:</translation>
     </message>
 </context>
 <context>
@@ -1343,410 +1343,310 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     </message>
 </context>
 <context>
-    <name>semhap::MetricsPanel</name>
-    <message>
-        <source>Cubes transferred</source>
-        <translation>Transportierte Würfel</translation>
-    </message>
-    <message>
-        <source>Cubes broken</source>
-        <translation>Zerbrochene Würfel</translation>
-    </message>
-    <message>
-        <source>Cubes dropped (slipped out)</source>
-        <translation>Verlorene Würfel (herausgerutscht)</translation>
-    </message>
-    <message>
-        <source>Grasps</source>
-        <translation>Griffe</translation>
-    </message>
-    <message>
-        <source>Grasps per transfer</source>
-        <translation>Griffe pro Transport</translation>
-    </message>
-    <message>
-        <source>Average grasp force</source>
-        <translation>Mittlere Griffkraft</translation>
-    </message>
-    <message>
-        <source>Average peak grasp force</source>
-        <translation>Mittlere Spitzen-Griffkraft</translation>
-    </message>
-    <message>
-        <source>Warning lead time</source>
-        <translation>Vorwarnzeit</translation>
-    </message>
-    <message>
-        <source>Breaks warned</source>
-        <translation>Vorgewarnte Brüche</translation>
-    </message>
-    <message>
-        <source>Breaks warned in time</source>
-        <translation>Rechtzeitig vorgewarnte Brüche</translation>
-    </message>
-    <message>
-        <source>Drop warning lead time</source>
-        <translation>Vorwarnzeit vor Abstürzen</translation>
-    </message>
-    <message>
-        <source>Drops warned</source>
-        <translation>Vorgewarnte Abstürze</translation>
-    </message>
-    <message>
-        <source>Drops warned in time</source>
-        <translation>Rechtzeitig vorgewarnte Abstürze</translation>
-    </message>
-    <message>
-        <source>Confirmations felt per grasp</source>
-        <translation>Gespürte Bestätigungen je Griff</translation>
-    </message>
-    <message>
-        <source>Slip episodes</source>
-        <translation>Rutschphasen</translation>
-    </message>
-    <message>
-        <source>Warnings felt per slip episode</source>
-        <translation>Gespürte Warnungen je Rutschphase</translation>
-    </message>
-    <message>
-        <source>Cube box refills</source>
-        <translation>Nachfüllungen der Würfelkiste</translation>
-    </message>
-    <message>
-        <source>Containers dropped</source>
-        <translation>Fallen gelassene Behälter</translation>
-    </message>
-    <message>
-        <source>Transfers per container cycle</source>
-        <translation>Transporte pro Behälterzyklus</translation>
-    </message>
-    <message>
-        <source>Simulated time</source>
-        <translation>Simulierte Zeit</translation>
-    </message>
-    <message>
-        <source>Wall time</source>
-        <translation>Reale Zeit</translation>
-    </message>
-    <message>
-        <source>Real-time factor</source>
-        <translation>Echtzeitfaktor</translation>
-    </message>
-    <message>
-        <source>Scene</source>
-        <translation>Szene</translation>
-    </message>
-    <message>
-        <source>Router</source>
-        <translation>Router</translation>
-    </message>
-    <message>
-        <source>Operator</source>
-        <translation>Bediener</translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation>Startwert</translation>
-    </message>
-    <message>
-        <source>No metrics yet: they appear while a task runs.</source>
-        <translation>Noch keine Metriken: Sie erscheinen, während eine Aufgabe läuft.</translation>
-    </message>
-    <message>
-        <source>n/a</source>
-        <translation>k. A.</translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation>ja</translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation>nein</translation>
-    </message>
-    <message>
-        <source>%1×</source>
-        <translation>%1×</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 N</source>
-        <translation>%1 N</translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <source>Completion time</source>
-        <translation>Zeit bis zum Abschluss</translation>
-    </message>
+    <name>semhap::MetricSpec</name>
     <message>
         <source>Plugs inserted</source>
         <translation>Stecker eingesteckt</translation>
-    </message>
-    <message>
-        <source>Time to insert</source>
-        <translation>Zeit zum Einstecken</translation>
-    </message>
-    <message>
-        <source>Collisions with the port</source>
-        <translation>Kollisionen mit der Buchse</translation>
-    </message>
-    <message>
-        <source>Peak insertion force</source>
-        <translation>Höchste Steckkraft</translation>
-    </message>
-    <message>
-        <source>Plug pick-ups</source>
-        <translation>Stecker aufgenommen</translation>
-    </message>
-    <message>
-        <source>Plugs dropped</source>
-        <translation>Stecker fallen gelassen</translation>
-    </message>
-    <message>
-        <source>Area cleaned (plates)</source>
-        <translation>Gereinigte Fläche (Teller)</translation>
-    </message>
-    <message>
-        <source>Time to clean</source>
-        <translation>Zeit bis sauber</translation>
-    </message>
-    <message>
-        <source>Plates cleaned</source>
-        <translation>Teller gereinigt</translation>
-    </message>
-    <message>
-        <source>Plates broken</source>
-        <translation>Teller zerbrochen</translation>
-    </message>
-    <message>
-        <source>Peak force</source>
-        <translation>Spitzenkraft</translation>
-    </message>
-    <message>
-        <source>Time above the safe force</source>
-        <translation>Zeit über der sicheren Kraft</translation>
-    </message>
-    <message>
-        <source>Average press force</source>
-        <translation>Mittlere Andruckkraft</translation>
-    </message>
-    <message>
-        <source>Warnings felt</source>
-        <translation>Gefühlte Warnungen</translation>
-    </message>
-    <message>
-        <source>Sponge stiffened at</source>
-        <translation>Schwamm versteift bei</translation>
-    </message>
-    <message>
-        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
-        <translation>Wann der Stapel zuerst abgearbeitet war: jeder Würfel übertragen oder zerbrochen (box_and_block).</translation>
-    </message>
-    <message>
-        <source>Cubes that arrived where the task wants them, once per trip.</source>
-        <translation>Würfel, die dort ankamen, wo die Aufgabe sie haben will, einmal je Weg.</translation>
-    </message>
-    <message>
-        <source>Cubes that fractured under the fingertips.</source>
-        <translation>Würfel, die unter den Fingerspitzen zerbrachen.</translation>
-    </message>
-    <message>
-        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
-        <translation>Griffe, die endeten, während die Hand noch zugriff, nach einem Anheben: Der Würfel rutschte heraus.</translation>
-    </message>
-    <message>
-        <source>Grasps begun.</source>
-        <translation>Begonnene Griffe.</translation>
-    </message>
-    <message>
-        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
-        <translation>Griffe je übertragenem Würfel: 1 ist ein Griff für jeden.</translation>
-    </message>
-    <message>
-        <source>The mean force of both fingertips over every moment of every grasp.</source>
-        <translation>Die mittlere Kraft beider Fingerspitzen über jeden Moment jedes Griffs.</translation>
-    </message>
-    <message>
-        <source>The mean over grasps of the highest force during each.</source>
-        <translation>Der Mittelwert über die Griffe der jeweils höchsten Kraft.</translation>
-    </message>
-    <message>
-        <source>How long before a break its warning was first felt, on average.</source>
-        <translation>Wie lange vor einem Bruch seine Warnung zuerst gespürt wurde, im Mittel.</translation>
-    </message>
-    <message>
-        <source>The share of breaks a felt warning came before.</source>
-        <translation>Der Anteil der Brüche, denen eine gespürte Warnung vorausging.</translation>
-    </message>
-    <message>
-        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
-        <translation>Der Anteil der Brüche, die mindestens eine Reaktionszeit vorher gewarnt wurden: die Warnungen, auf die ein Mensch handeln konnte.</translation>
-    </message>
-    <message>
-        <source>Times the held container left the left fingertips and fell (bimanual).</source>
-        <translation>Wie oft der gehaltene Behälter die linken Fingerspitzen verließ und fiel (beidhändig).</translation>
-    </message>
-    <message>
-        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
-        <translation>Wie lange vor einem Fall des Behälters seine Warnung zuerst gespürt wurde, im Mittel (beidhändig).</translation>
-    </message>
-    <message>
-        <source>The share of container drops a felt warning came before (bimanual).</source>
-        <translation>Der Anteil der Behälterfälle, denen eine gespürte Warnung vorausging (beidhändig).</translation>
-    </message>
-    <message>
-        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
-        <translation>Der Anteil der Behälterfälle, die mindestens eine Reaktionszeit vorher gewarnt wurden (beidhändig).</translation>
-    </message>
-    <message>
-        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
-        <translation>Übertragene Würfel je Behälterzyklus, den ein Fallen oder Abstellen beendet (beidhändig).</translation>
-    </message>
-    <message>
-        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
-        <translation>Gespürte Bestätigungen je echtem Griff: 1 ist eine je Griff, mehr ist Flattern, 0 ohne Rückmeldung.</translation>
-    </message>
-    <message>
-        <source>Times the container slid in the left fingertips (bimanual).</source>
-        <translation>Wie oft der Behälter in den linken Fingerspitzen rutschte (beidhändig).</translation>
-    </message>
-    <message>
-        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
-        <translation>Gespürte Warnungen an der linken Hand je Rutschen: über 1 kamen Warnungen, denen kein Rutschen entsprach (beidhändig).</translation>
-    </message>
-    <message>
-        <source>Times the cube box was refilled.</source>
-        <translation>Wie oft die Würfelkiste nachgefüllt wurde.</translation>
     </message>
     <message>
         <source>Plugs seated in the port.</source>
         <translation>In die Buchse gesteckte Stecker.</translation>
     </message>
     <message>
+        <source>Time to insert</source>
+        <translation>Zeit zum Einstecken</translation>
+    </message>
+    <message>
         <source>The mean time from picking a plug up to seating it.</source>
         <translation>Die mittlere Zeit vom Aufnehmen eines Steckers bis zum Stecken.</translation>
+    </message>
+    <message>
+        <source>Collisions with the port</source>
+        <translation>Kollisionen mit der Buchse</translation>
     </message>
     <message>
         <source>Times the plug pushed on the port&apos;s face beside the opening.</source>
         <translation>Wie oft der Stecker neben der Öffnung auf die Buchse drückte.</translation>
     </message>
     <message>
+        <source>Peak insertion force</source>
+        <translation>Höchste Steckkraft</translation>
+    </message>
+    <message>
         <source>The highest force on the port during the run.</source>
         <translation>Die höchste Kraft auf die Buchse während des Laufs.</translation>
+    </message>
+    <message>
+        <source>Plug pick-ups</source>
+        <translation>Stecker aufgenommen</translation>
     </message>
     <message>
         <source>Times a plug was lifted from where it was laid out.</source>
         <translation>Wie oft ein Stecker von seinem Platz angehoben wurde.</translation>
     </message>
     <message>
+        <source>Plugs dropped</source>
+        <translation>Stecker fallen gelassen</translation>
+    </message>
+    <message>
         <source>Plugs let go of after a pick-up without being seated.</source>
         <translation>Stecker, die nach dem Aufnehmen losgelassen wurden, ohne zu stecken.</translation>
     </message>
     <message>
-        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
-        <translation>Gereinigte Felder, in Tellern gerechnet: über 1, wenn mehr als ein Teller gereinigt wurde.</translation>
+        <source>Cues taken in</source>
+        <translation>Wahrgenommene Signale</translation>
     </message>
     <message>
-        <source>When every cell of the first plate was first clean.</source>
-        <translation>Wann jedes Feld des ersten Tellers zuerst sauber war.</translation>
+        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
+        <translation>Signale, die der wahrnehmende Bediener an einem Armband gespürt oder in der Einblendung gesehen hat.</translation>
     </message>
     <message>
-        <source>Times every cell of a plate was clean at once.</source>
-        <translation>Wie oft jedes Feld eines Tellers zugleich sauber war.</translation>
+        <source>Cues misread</source>
+        <translation>Verwechselte Signale</translation>
     </message>
     <message>
-        <source>Plates broken by pressing above 40 N.</source>
-        <translation>Teller, die durch Drücken über 40 N zerbrachen.</translation>
+        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
+        <translation>Signale, die der wahrnehmende Bediener für eine Nachricht der anderen Bedeutung hielt: eine Warnung für eine Bestätigung oder umgekehrt.</translation>
     </message>
     <message>
-        <source>The highest press of the sponge on the plate.</source>
-        <translation>Der stärkste Druck des Schwamms auf den Teller.</translation>
+        <source>Warnings ignored</source>
+        <translation>Übergangene Warnungen</translation>
     </message>
     <message>
-        <source>The time the press was above the safe 25 N.</source>
-        <translation>Die Zeit, in der der Druck über den sicheren 25 N lag.</translation>
+        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
+        <translation>Warnungen, die der wahrnehmende Bediener spürte und nicht beantwortete, weil die Warnungen dieser Hand selten gestimmt hatten.</translation>
     </message>
     <message>
-        <source>The mean press while the sponge pressed on the plate.</source>
-        <translation>Der mittlere Druck, während der Schwamm auf den Teller drückte.</translation>
+        <source>Left reliance</source>
+        <translation>Vertrauen links</translation>
     </message>
     <message>
-        <source>Warnings felt on the wiping hand.</source>
-        <translation>An der wischenden Hand gespürte Warnungen.</translation>
+        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation>Der Anteil der Warnungen der linken Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
     </message>
     <message>
-        <source>When the sponge&apos;s holder stiffened.</source>
-        <translation>Wann die Halterung des Schwamms steif wurde.</translation>
+        <source>Right reliance</source>
+        <translation>Vertrauen rechts</translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation>Der Anteil der Warnungen der rechten Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+    </message>
+    <message>
+        <source>Simulated time</source>
+        <translation>Simulierte Zeit</translation>
     </message>
     <message>
         <source>Simulated time so far.</source>
         <translation>Bisher simulierte Zeit.</translation>
     </message>
     <message>
+        <source>Wall time</source>
+        <translation>Reale Zeit</translation>
+    </message>
+    <message>
         <source>Real time so far.</source>
         <translation>Bisher vergangene echte Zeit.</translation>
+    </message>
+    <message>
+        <source>Real-time factor</source>
+        <translation>Echtzeitfaktor</translation>
     </message>
     <message>
         <source>Simulated seconds per real second.</source>
         <translation>Simulierte Sekunden pro echter Sekunde.</translation>
     </message>
     <message>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
         <source>The task that runs.</source>
         <translation>Die laufende Aufgabe.</translation>
+    </message>
+    <message>
+        <source>Router</source>
+        <translation>Router</translation>
     </message>
     <message>
         <source>The router the run was loaded with.</source>
         <translation>Der Router, mit dem der Lauf geladen wurde.</translation>
     </message>
     <message>
+        <source>Operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
         <source>Who drives the grippers when you do not.</source>
         <translation>Wer die Greifer steuert, wenn Sie es nicht tun.</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Startwert</translation>
     </message>
     <message>
         <source>The seed of the operator and of a laid-out scene.</source>
         <translation>Der Startwert des Bedieners und einer ausgelegten Szene.</translation>
     </message>
     <message>
-        <source>a count</source>
-        <translation>einer Anzahl</translation>
+        <source>Completion time</source>
+        <translation>Zeit bis zum Abschluss</translation>
     </message>
     <message>
-        <source>a ratio</source>
-        <translation>einem Verhältnis</translation>
+        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
+        <translation>Wann der Stapel zuerst abgearbeitet war: jeder Würfel übertragen oder zerbrochen (box_and_block).</translation>
     </message>
     <message>
-        <source>times real time</source>
-        <translation>Vielfachen der Echtzeit</translation>
+        <source>Cubes transferred</source>
+        <translation>Transportierte Würfel</translation>
     </message>
     <message>
-        <source>seconds of simulated time</source>
-        <translation>Sekunden simulierter Zeit</translation>
+        <source>Cubes that arrived where the task wants them, once per trip.</source>
+        <translation>Würfel, die dort ankamen, wo die Aufgabe sie haben will, einmal je Weg.</translation>
     </message>
     <message>
-        <source>newtons (N)</source>
-        <translation>Newton (N)</translation>
+        <source>Cubes broken</source>
+        <translation>Zerbrochene Würfel</translation>
     </message>
     <message>
-        <source>a share, 0 to 100 %</source>
-        <translation>einem Anteil, 0 bis 100 %</translation>
+        <source>Cubes that fractured under the fingertips.</source>
+        <translation>Würfel, die unter den Fingerspitzen zerbrachen.</translation>
     </message>
     <message>
-        <source>%1
-In exports: %2</source>
-        <translation>%1
-In Exporten: %2</translation>
+        <source>Cubes dropped (slipped out)</source>
+        <translation>Verlorene Würfel (herausgerutscht)</translation>
     </message>
     <message>
-        <source>%1
-In %2; in exports: %3</source>
-        <translation>%1
-In %2; in Exporten: %3</translation>
+        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
+        <translation>Griffe, die endeten, während die Hand noch zugriff, nach einem Anheben: Der Würfel rutschte heraus.</translation>
+    </message>
+    <message>
+        <source>Grasps</source>
+        <translation>Griffe</translation>
+    </message>
+    <message>
+        <source>Grasps begun.</source>
+        <translation>Begonnene Griffe.</translation>
+    </message>
+    <message>
+        <source>Grasps per transfer</source>
+        <translation>Griffe pro Transport</translation>
+    </message>
+    <message>
+        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
+        <translation>Griffe je übertragenem Würfel: 1 ist ein Griff für jeden.</translation>
+    </message>
+    <message>
+        <source>Average grasp force</source>
+        <translation>Mittlere Griffkraft</translation>
+    </message>
+    <message>
+        <source>The mean force of both fingertips over every moment of every grasp.</source>
+        <translation>Die mittlere Kraft beider Fingerspitzen über jeden Moment jedes Griffs.</translation>
+    </message>
+    <message>
+        <source>Average peak grasp force</source>
+        <translation>Mittlere Spitzen-Griffkraft</translation>
+    </message>
+    <message>
+        <source>The mean over grasps of the highest force during each.</source>
+        <translation>Der Mittelwert über die Griffe der jeweils höchsten Kraft.</translation>
+    </message>
+    <message>
+        <source>Warning lead time</source>
+        <translation>Vorwarnzeit</translation>
+    </message>
+    <message>
+        <source>How long before a break its warning was first felt, on average.</source>
+        <translation>Wie lange vor einem Bruch seine Warnung zuerst gespürt wurde, im Mittel.</translation>
+    </message>
+    <message>
+        <source>Breaks warned</source>
+        <translation>Vorgewarnte Brüche</translation>
+    </message>
+    <message>
+        <source>The share of breaks a felt warning came before.</source>
+        <translation>Der Anteil der Brüche, denen eine gespürte Warnung vorausging.</translation>
+    </message>
+    <message>
+        <source>Breaks warned in time</source>
+        <translation>Rechtzeitig vorgewarnte Brüche</translation>
+    </message>
+    <message>
+        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
+        <translation>Der Anteil der Brüche, die mindestens eine Reaktionszeit vorher gewarnt wurden: die Warnungen, auf die ein Mensch handeln konnte.</translation>
+    </message>
+    <message>
+        <source>Containers dropped</source>
+        <translation>Fallen gelassene Behälter</translation>
+    </message>
+    <message>
+        <source>Times the held container left the left fingertips and fell (bimanual).</source>
+        <translation>Wie oft der gehaltene Behälter die linken Fingerspitzen verließ und fiel (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Drop warning lead time</source>
+        <translation>Vorwarnzeit vor Abstürzen</translation>
+    </message>
+    <message>
+        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
+        <translation>Wie lange vor einem Fall des Behälters seine Warnung zuerst gespürt wurde, im Mittel (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Drops warned</source>
+        <translation>Vorgewarnte Abstürze</translation>
+    </message>
+    <message>
+        <source>The share of container drops a felt warning came before (bimanual).</source>
+        <translation>Der Anteil der Behälterfälle, denen eine gespürte Warnung vorausging (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Drops warned in time</source>
+        <translation>Rechtzeitig vorgewarnte Abstürze</translation>
+    </message>
+    <message>
+        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
+        <translation>Der Anteil der Behälterfälle, die mindestens eine Reaktionszeit vorher gewarnt wurden (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Containers set down</source>
+        <translation>Abgestellte Behälter</translation>
+    </message>
+    <message>
+        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
+        <translation>Wie oft die haltende Hand den vollen Behälter zum Leeren auf seinen Sockel stellte (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Transfers per container cycle</source>
+        <translation>Transporte pro Behälterzyklus</translation>
+    </message>
+    <message>
+        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
+        <translation>Übertragene Würfel je Behälterzyklus, den ein Fallen oder Abstellen beendet (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Confirmations felt per grasp</source>
+        <translation>Gespürte Bestätigungen je Griff</translation>
+    </message>
+    <message>
+        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
+        <translation>Gespürte Bestätigungen je echtem Griff: 1 ist eine je Griff, mehr ist Flattern, 0 ohne Rückmeldung.</translation>
+    </message>
+    <message>
+        <source>Slip episodes</source>
+        <translation>Rutschphasen</translation>
+    </message>
+    <message>
+        <source>Times the container slid in the left fingertips (bimanual).</source>
+        <translation>Wie oft der Behälter in den linken Fingerspitzen rutschte (beidhändig).</translation>
+    </message>
+    <message>
+        <source>Warnings felt per slip episode</source>
+        <translation>Gespürte Warnungen je Rutschphase</translation>
+    </message>
+    <message>
+        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
+        <translation>Gespürte Warnungen an der linken Hand je Rutschen: über 1 kamen Warnungen, denen kein Rutschen entsprach (beidhändig).</translation>
     </message>
     <message>
         <source>Breaks warned by onset</source>
@@ -1797,52 +1697,163 @@ In %2; in Exporten: %3</translation>
         <translation>Der Anteil der Haltezeit des Behälters, in dem eine Warnung zu spüren war (beidhändig).</translation>
     </message>
     <message>
-        <source>Cues taken in</source>
-        <translation>Wahrgenommene Signale</translation>
+        <source>Cube box refills</source>
+        <translation>Nachfüllungen der Würfelkiste</translation>
     </message>
     <message>
-        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
-        <translation>Signale, die der wahrnehmende Bediener an einem Armband gespürt oder in der Einblendung gesehen hat.</translation>
+        <source>Times the cube box was refilled.</source>
+        <translation>Wie oft die Würfelkiste nachgefüllt wurde.</translation>
     </message>
     <message>
-        <source>Cues misread</source>
-        <translation>Verwechselte Signale</translation>
+        <source>Area cleaned (plates)</source>
+        <translation>Gereinigte Fläche (Teller)</translation>
     </message>
     <message>
-        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
-        <translation>Signale, die der wahrnehmende Bediener für eine Nachricht der anderen Bedeutung hielt: eine Warnung für eine Bestätigung oder umgekehrt.</translation>
+        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
+        <translation>Gereinigte Felder, in Tellern gerechnet: über 1, wenn mehr als ein Teller gereinigt wurde.</translation>
     </message>
     <message>
-        <source>Warnings ignored</source>
-        <translation>Übergangene Warnungen</translation>
+        <source>Time to clean</source>
+        <translation>Zeit bis sauber</translation>
     </message>
     <message>
-        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
-        <translation>Warnungen, die der wahrnehmende Bediener spürte und nicht beantwortete, weil die Warnungen dieser Hand selten gestimmt hatten.</translation>
+        <source>When every cell of the first plate was first clean.</source>
+        <translation>Wann jedes Feld des ersten Tellers zuerst sauber war.</translation>
     </message>
     <message>
-        <source>Left reliance</source>
-        <translation>Vertrauen links</translation>
+        <source>Plates cleaned</source>
+        <translation>Teller gereinigt</translation>
     </message>
     <message>
-        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
-        <translation>Der Anteil der Warnungen der linken Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+        <source>Times every cell of a plate was clean at once.</source>
+        <translation>Wie oft jedes Feld eines Tellers zugleich sauber war.</translation>
     </message>
     <message>
-        <source>Right reliance</source>
-        <translation>Vertrauen rechts</translation>
+        <source>Plates broken</source>
+        <translation>Teller zerbrochen</translation>
     </message>
     <message>
-        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
-        <translation>Der Anteil der Warnungen der rechten Hand, die der wahrnehmende Bediener jetzt beantwortet.</translation>
+        <source>Plates broken by pressing above 40 N.</source>
+        <translation>Teller, die durch Drücken über 40 N zerbrachen.</translation>
     </message>
     <message>
-        <source>Containers set down</source>
-        <translation>Abgestellte Behälter</translation>
+        <source>Peak force</source>
+        <translation>Spitzenkraft</translation>
     </message>
     <message>
-        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
-        <translation>Wie oft die haltende Hand den vollen Behälter zum Leeren auf seinen Sockel stellte (beidhändig).</translation>
+        <source>The highest press of the sponge on the plate.</source>
+        <translation>Der stärkste Druck des Schwamms auf den Teller.</translation>
+    </message>
+    <message>
+        <source>Time above the safe force</source>
+        <translation>Zeit über der sicheren Kraft</translation>
+    </message>
+    <message>
+        <source>The time the press was above the safe 25 N.</source>
+        <translation>Die Zeit, in der der Druck über den sicheren 25 N lag.</translation>
+    </message>
+    <message>
+        <source>Average press force</source>
+        <translation>Mittlere Andruckkraft</translation>
+    </message>
+    <message>
+        <source>The mean press while the sponge pressed on the plate.</source>
+        <translation>Der mittlere Druck, während der Schwamm auf den Teller drückte.</translation>
+    </message>
+    <message>
+        <source>Warnings felt</source>
+        <translation>Gefühlte Warnungen</translation>
+    </message>
+    <message>
+        <source>Warnings felt on the wiping hand.</source>
+        <translation>An der wischenden Hand gespürte Warnungen.</translation>
+    </message>
+    <message>
+        <source>Sponge stiffened at</source>
+        <translation>Schwamm versteift bei</translation>
+    </message>
+    <message>
+        <source>When the sponge&apos;s holder stiffened.</source>
+        <translation>Wann die Halterung des Schwamms steif wurde.</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::MetricsPanel</name>
+    <message>
+        <source>No metrics yet: they appear while a task runs.</source>
+        <translation>Noch keine Metriken: Sie erscheinen, während eine Aufgabe läuft.</translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation>k. A.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation>%1 N</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>a count</source>
+        <translation>einer Anzahl</translation>
+    </message>
+    <message>
+        <source>a ratio</source>
+        <translation>einem Verhältnis</translation>
+    </message>
+    <message>
+        <source>times real time</source>
+        <translation>Vielfachen der Echtzeit</translation>
+    </message>
+    <message>
+        <source>seconds of simulated time</source>
+        <translation>Sekunden simulierter Zeit</translation>
+    </message>
+    <message>
+        <source>newtons (N)</source>
+        <translation>Newton (N)</translation>
+    </message>
+    <message>
+        <source>a share, 0 to 100 %</source>
+        <translation>einem Anteil, 0 bis 100 %</translation>
+    </message>
+    <message>
+        <source>%1
+In exports: %2</source>
+        <translation>%1
+In Exporten: %2</translation>
+    </message>
+    <message>
+        <source>%1
+In %2; in exports: %3</source>
+        <translation>%1
+In %2; in Exporten: %3</translation>
+    </message>
+    <message>
+        <source>Higher is better.</source>
+        <translation>Höher ist besser.</translation>
+    </message>
+    <message>
+        <source>Lower is better.</source>
+        <translation>Niedriger ist besser.</translation>
     </message>
 </context>
 <context>

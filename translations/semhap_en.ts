@@ -353,10 +353,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>An address that cannot be discovered: a UDP band (udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a virtual device (virtual:x)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Its hand is not in this scene.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -366,6 +362,10 @@
     </message>
     <message>
         <source>%1 ch, %2 Hz (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An address that cannot be discovered, such as a band on the network or a pseudo-terminal, in one of these forms:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1339,285 +1339,9 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
 </context>
 <context>
-    <name>semhap::MetricsPanel</name>
-    <message>
-        <source>Cubes transferred</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cubes broken</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cubes dropped (slipped out)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grasps</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grasps per transfer</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Average grasp force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Average peak grasp force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warning lead time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Breaks warned</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Breaks warned in time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drop warning lead time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drops warned</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drops warned in time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Confirmations felt per grasp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Slip episodes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warnings felt per slip episode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cube box refills</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Containers dropped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Transfers per container cycle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulated time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Wall time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Real-time factor</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Scene</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Router</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Operator</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No metrics yet: they appear while a task runs.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>n/a</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1×</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 N</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Completion time</source>
-        <translation type="unfinished"></translation>
-    </message>
+    <name>semhap::MetricSpec</name>
     <message>
         <source>Plugs inserted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time to insert</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Collisions with the port</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Peak insertion force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Plug pick-ups</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Area cleaned (plates)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time to clean</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Plates cleaned</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Plates broken</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Peak force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time above the safe force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Average press force</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warnings felt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sponge stiffened at</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Plugs dropped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cubes that arrived where the task wants them, once per trip.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cubes that fractured under the fingertips.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grasps begun.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The mean force of both fingertips over every moment of every grasp.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The mean over grasps of the highest force during each.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How long before a break its warning was first felt, on average.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The share of breaks a felt warning came before.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Times the held container left the left fingertips and fell (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The share of container drops a felt warning came before (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Times the container slid in the left fingertips (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Times the cube box was refilled.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1625,7 +1349,15 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Time to insert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>The mean time from picking a plug up to seating it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collisions with the port</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1633,7 +1365,15 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Peak insertion force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>The highest force on the port during the run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plug pick-ups</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1641,43 +1381,55 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Plugs dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Plugs let go of after a pick-up without being seated.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
+        <source>Cues taken in</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>When every cell of the first plate was first clean.</source>
+        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Times every cell of a plate was clean at once.</source>
+        <source>Cues misread</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Plates broken by pressing above 40 N.</source>
+        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The highest press of the sponge on the plate.</source>
+        <source>Warnings ignored</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The time the press was above the safe 25 N.</source>
+        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The mean press while the sponge pressed on the plate.</source>
+        <source>Left reliance</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Warnings felt on the wiping hand.</source>
+        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>When the sponge&apos;s holder stiffened.</source>
+        <source>Right reliance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated time</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1685,7 +1437,15 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Wall time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Real time so far.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real-time factor</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1693,7 +1453,15 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>The task that runs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1701,7 +1469,15 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Who drives the grippers when you do not.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1709,37 +1485,163 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>a count</source>
+        <source>Completion time</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>a ratio</source>
+        <source>When the pile was first finished: every cube transferred or broken (box_and_block).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>times real time</source>
+        <source>Cubes transferred</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>seconds of simulated time</source>
+        <source>Cubes that arrived where the task wants them, once per trip.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>newtons (N)</source>
+        <source>Cubes broken</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>a share, 0 to 100 %</source>
+        <source>Cubes that fractured under the fingertips.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1
-In exports: %2</source>
+        <source>Cubes dropped (slipped out)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1
-In %2; in exports: %3</source>
+        <source>Grasps that ended while the hand still gripped, after a lift: the cube slipped out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps begun.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps per transfer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grasps per cube transferred: 1 is one grasp for each.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average grasp force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean force of both fingertips over every moment of every grasp.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average peak grasp force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean over grasps of the highest force during each.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warning lead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How long before a break its warning was first felt, on average.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Breaks warned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of breaks a felt warning came before.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Breaks warned in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of breaks warned at least a reaction time before: the warnings a person could act on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Containers dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the held container left the left fingertips and fell (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop warning lead time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How long before a container drop its warning was first felt, on average (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drops warned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of container drops a felt warning came before (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drops warned in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The share of container drops warned at least a reaction time before (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Containers set down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transfers per container cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubes transferred per container cycle, which a drop or a set-down ends (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirmations felt per grasp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirmations felt per real grasp: 1 is one per grasp, more is chatter, 0 without feedback.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slip episodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the container slid in the left fingertips (bimanual).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt per slip episode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt on the left hand per slip: above 1, warnings came that no slip answered (bimanual).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1791,51 +1693,160 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cues taken in</source>
+        <source>Cube box refills</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cues the perceiving operator felt on a band or saw on the overlay.</source>
+        <source>Times the cube box was refilled.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cues misread</source>
+        <source>Area cleaned (plates)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cues the perceiving operator took for a message of the other meaning: a warning for a confirmation, or the other way round.</source>
+        <source>Cells cleaned, in plates&apos; worth: above 1 when more than a plate was cleaned.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Warnings ignored</source>
+        <source>Time to clean</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Warnings the perceiving operator felt and did not answer, for how seldom that hand&apos;s warnings had been right.</source>
+        <source>When every cell of the first plate was first clean.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Left reliance</source>
+        <source>Plates cleaned</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The share of the left hand&apos;s warnings the perceiving operator answers now.</source>
+        <source>Times every cell of a plate was clean at once.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Right reliance</source>
+        <source>Plates broken</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The share of the right hand&apos;s warnings the perceiving operator answers now.</source>
+        <source>Plates broken by pressing above 40 N.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Containers set down</source>
+        <source>Peak force</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Times the holding hand set the full container down on its base to be emptied (bimanual).</source>
+        <source>The highest press of the sponge on the plate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time above the safe force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The time the press was above the safe 25 N.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Average press force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean press while the sponge pressed on the plate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings felt on the wiping hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sponge stiffened at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When the sponge&apos;s holder stiffened.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::MetricsPanel</name>
+    <message>
+        <source>No metrics yet: they appear while a task runs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a ratio</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>times real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seconds of simulated time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>newtons (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a share, 0 to 100 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+In exports: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+In %2; in exports: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Higher is better.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower is better.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -31,6 +31,7 @@
 #include "studydocument.h"
 #include "studyexport.h"
 #include "studypanel.h"
+#include "taskmonitor.h"
 #include "teleopsettings.h"
 #include "waveformdesigner.h"
 #include "windowplacement.h"
@@ -1069,7 +1070,8 @@ void MainWindow::switchRouter(const QString &router)
 void MainWindow::showTaskDone()
 {
     // TaskMonitor decides when the task is done (docs/metrics.md); this only says so.
-    const QJsonValue done = m_engine.history().metrics().value(QLatin1String("completion_time"));
+    const QJsonValue done =
+        m_engine.history().metrics().value(QLatin1String(TaskMonitor::CompletionTime));
     const QString notice =
         done.isDouble()
             ? tr("Task done\nThe pile was finished after %1 s.\nCarry on with the refilled box, "

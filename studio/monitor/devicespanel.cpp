@@ -6,6 +6,7 @@
 #include "deviceuri.h"
 #include "levelmeter.h"
 #include "runhistory.h"
+#include "transportscheme.h"
 
 #include <QApplication>
 #include <QBoxLayout>
@@ -120,9 +121,13 @@ DevicesPanel::DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget 
     m_present->header()->setStretchLastSection(true);
     m_address->setObjectName(QStringLiteral("address"));
     m_address->setPlaceholderText(tr("e.g. udp:127.0.0.1:9000"));
-    m_address->setToolTip(tr("An address that cannot be discovered: a UDP band "
-                             "(udp:127.0.0.1:9000), a pseudo-terminal (serial:/dev/pts/3) or a "
-                             "virtual device (virtual:x)"));
+    QStringList syntaxes;
+    for (const TransportScheme &scheme : TransportScheme::all())
+        syntaxes.append(QString::fromUtf8(scheme.syntax).toHtmlEscaped());
+    m_address->setToolTip(QStringLiteral("<p>%1<br><tt>%2</tt></p>")
+                              .arg(tr("An address that cannot be discovered, such as a band on "
+                                      "the network or a pseudo-terminal, in one of these forms:"),
+                                   syntaxes.join(QStringLiteral("<br>"))));
     auto *add = new QPushButton(tr("Add"), this);
     add->setObjectName(QStringLiteral("addButton"));
     auto *rescanButton = new QPushButton(tr("Rescan"), this);

@@ -60,7 +60,7 @@ double processCpu()
 DeviceUri fifoCard()
 {
     DeviceUri uri;
-    uri.scheme = DeviceUri::Scheme::Audio;
+    uri.scheme = QStringLiteral("audio");
     uri.name = QStringLiteral("semhaptest");
     return uri;
 }

@@ -11,19 +11,23 @@
 #include "fifocard.h"
 #include "levelmeter.h"
 #include "runhistory.h"
+#include "transportscheme.h"
 #include "widgetchecks.h"
 
 #include <QApplication>
 #include <QComboBox>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolTip>
 #include <QTreeWidget>
 #include <QWheelEvent>
 
@@ -145,6 +149,11 @@ void TestDevicesPanel::addAddress()
     QCOMPARE(f.presentUris().last(), listed);
     QVERIFY(f.child<QComboBox>(QStringLiteral("uri:") + Band)->findText(listed) >= 0);
     QVERIFY(f.child<QLineEdit>(QStringLiteral("address"))->text().isEmpty());
+    // The field's tooltip names every form an address can take (TransportScheme).
+    const QString tooltip = f.child<QLineEdit>(QStringLiteral("address"))->toolTip();
+    for (const TransportScheme &scheme : TransportScheme::all())
+        QVERIFY2(tooltip.contains(QString::fromUtf8(scheme.syntax).toHtmlEscaped()),
+                 scheme.syntax);
 }
 
 void TestDevicesPanel::connectToEmulator()
@@ -433,6 +442,15 @@ void TestDevicesPanel::screenshot()
         QVERIFY(panel.grab().save(
             QStringLiteral("%1/devices-%2x%3.png").arg(dir).arg(size.width()).arg(size.height())));
     }
+    auto *address = panel.findChild<QLineEdit *>(QStringLiteral("address"));
+    QToolTip::showText(address->mapToGlobal(QPoint(0, address->height())), address->toolTip(),
+                       address);
+    QTest::qWait(400);
+    const QPoint corner = address->mapToGlobal(QPoint(0, -100));
+    QVERIFY(QGuiApplication::primaryScreen()
+                ->grabWindow(0, corner.x(), corner.y(), 640, 320)
+                .save(dir + "/devices-address-tooltip.png"));
+    QToolTip::hideText();
     quit = true;
     thread.join();
 }

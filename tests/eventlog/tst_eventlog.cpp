@@ -6,21 +6,25 @@
 #include "eventlogmodel.h"
 #include "eventlogpanel.h"
 #include "metricspanel.h"
+#include "metricspec.h"
 #include "runhistory.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QGuiApplication>
 #include <QHeaderView>
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTest>
+#include <QToolTip>
 #include <QTranslator>
 
 using namespace semhap;
@@ -120,6 +124,8 @@ private slots:
     void metrics_data();
     void metrics();
     void everyDocumentedMetricHasARow();
+    void metricTooltipsSayWhichWayIsBetter_data();
+    void metricTooltipsSayWhichWayIsBetter();
     void metricsRowsFollowTheKeys();
     void screenshot();
 };
@@ -434,21 +440,66 @@ void TestEventLog::metrics()
 
 void TestEventLog::everyDocumentedMetricHasARow()
 {
-    // The metrics docs/metrics.md names, in the first column of its tables, are the ones a
-    // run reports: each must read as words in the panel, not as its key.
+    // docs/metrics.md's tables (the names in their first column) and the metric table
+    // (MetricSpec) hold the same metrics, and each reads as words in the panel, not as its key.
     QFile doc(QStringLiteral(SEMHAP_METRICS_DOC));
     QVERIFY(doc.open(QIODevice::ReadOnly));
-    const QRegularExpression row(QStringLiteral("^\\| `([a-z_]+)`"),
+    const QRegularExpression row(QStringLiteral("^\\| ([^|]+)\\|"),
                                  QRegularExpression::MultilineOption);
-    QStringList unnamed;
-    int documented = 0;
-    for (const auto &match : row.globalMatch(QString::fromUtf8(doc.readAll()))) {
-        ++documented;
-        if (MetricsPanel::label(match.captured(1)) == match.captured(1))
-            unnamed << match.captured(1);
+    const QRegularExpression name(QStringLiteral("`([a-z_]+)`"));
+    QStringList documented;
+    for (const auto &cell : row.globalMatch(QString::fromUtf8(doc.readAll()))) {
+        for (const auto &match : name.globalMatch(cell.captured(1)))
+            documented << match.captured(1);
     }
-    QVERIFY(documented > 40);
+    QStringList registered;
+    QStringList unnamed;
+    for (const MetricSpec &spec : MetricSpec::all()) {
+        registered << QString::fromUtf8(spec.name);
+        if (MetricsPanel::label(registered.last()) == registered.last())
+            unnamed << registered.last();
+    }
+    QStringList undocumented;
+    for (const QString &key : registered) {
+        if (!documented.contains(key))
+            undocumented << key;
+    }
+    QStringList unregistered;
+    for (const QString &key : documented) {
+        if (!registered.contains(key))
+            unregistered << key;
+    }
+    QVERIFY(registered.size() > 40);
+    QVERIFY2(undocumented.isEmpty(), qPrintable(undocumented.join(QStringLiteral(", "))));
+    QVERIFY2(unregistered.isEmpty(), qPrintable(unregistered.join(QStringLiteral(", "))));
     QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QStringLiteral(", "))));
+    QCOMPARE(registered.removeDuplicates(), 0);
+}
+
+void TestEventLog::metricTooltipsSayWhichWayIsBetter_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("better");
+    QTest::newRow("fewer breaks") << "cubes_broken"
+                                  << "Lower is better.";
+    QTest::newRow("more transfers") << "cubes_transferred"
+                                    << "Higher is better.";
+    QTest::newRow("grasps describe") << "grasps"
+                                     << "";
+    QTest::newRow("the machine's speed") << "realtime_factor"
+                                         << "";
+}
+
+void TestEventLog::metricTooltipsSayWhichWayIsBetter()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, better);
+    const QString tooltip = MetricsPanel::tooltip(key);
+    QVERIFY2(tooltip.endsWith(QStringLiteral("in exports: ") + key), qPrintable(tooltip));
+    if (better.isEmpty())
+        QVERIFY2(!tooltip.contains(QStringLiteral("is better")), qPrintable(tooltip));
+    else
+        QVERIFY2(tooltip.contains(better), qPrintable(tooltip));
 }
 
 void TestEventLog::metricsRowsFollowTheKeys()
@@ -545,6 +596,21 @@ void TestEventLog::screenshot()
     metricsDe.show();
     QVERIFY(QTest::qWaitForWindowExposed(&metricsDe));
     QVERIFY(metricsDe.grab().save(dir + "/metrics-de-420x800.png"));
+    // A label's tooltip: the help, the unit, which way is better, the key (German).
+    QLabel *brokenLabel = nullptr;
+    for (QLabel *label : metricsDe.findChildren<QLabel *>()) {
+        if (label->text() == MetricsPanel::label(QStringLiteral("cubes_broken")))
+            brokenLabel = label;
+    }
+    QVERIFY(brokenLabel);
+    QToolTip::showText(brokenLabel->mapToGlobal(QPoint(0, brokenLabel->height())),
+                       brokenLabel->toolTip(), brokenLabel);
+    QTest::qWait(400);
+    const QPoint corner = metricsDe.mapToGlobal(QPoint(0, 0));
+    QVERIFY(QGuiApplication::primaryScreen()
+                ->grabWindow(0, corner.x(), corner.y(), 700, 300)
+                .save(dir + "/metrics-tooltip-de.png"));
+    QToolTip::hideText();
     QCoreApplication::removeTranslator(&german);
     for (const QSize size : {QSize(420, 600), QSize(640, 800)}) {
         for (QWidget *panel : {static_cast<QWidget *>(&log), static_cast<QWidget *>(&metrics)}) {

@@ -6,6 +6,7 @@
 #include "driveoperator.h"
 #include "handplan.h"
 #include "jsonreader.h"
+#include "metricspec.h"
 #include "simrun.h"
 #include "taskmonitor.h"
 
@@ -145,6 +146,17 @@ std::unique_ptr<SimRun> bimanualRun(std::uint64_t seed, double duration, int cub
     if (!run)
         qWarning("%s", qPrintable(error));
     return run;
+}
+
+/** The keys of a run's report that no row of the metric table (MetricSpec) names. */
+QString unregistered(const QJsonObject &report)
+{
+    QStringList keys;
+    for (const QString &key : report.keys()) {
+        if (!MetricSpec::find(key))
+            keys << key;
+    }
+    return keys.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -421,6 +433,7 @@ void TestSimRun::commandLine()
         QVERIFY2(m.contains(key), key);
     QVERIFY(m.value("cubes_transferred").toInt() >= 1);
     QVERIFY(std::abs(m.value("sim_seconds").toDouble() - 12.0) < 1e-6);
+    QVERIFY2(unregistered(m).isEmpty(), qPrintable(unregistered(m)));
 }
 
 void TestSimRun::commandLineErrors_data()
@@ -521,11 +534,11 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
     const CliResult merged =
         semhapRun(QStringList{"compare", "--merge", "--csv", dir.filePath("merged.csv")} + parts);
     QCOMPARE(merged.code, 0);
-    // The same six runs, whatever slice ran them (timing columns aside).
+    // The same six runs, whatever slice ran them (the wall time and real-time factor aside).
     const auto runs = [](const QByteArray &csv) {
         QStringList lines;
         for (const QByteArray &line : csv.trimmed().split('\n'))
-            lines.append(QString::fromUtf8(line).section(',', 0, -2));
+            lines.append(QString::fromUtf8(line).section(QLatin1Char(','), 0, -3));
         lines.sort();
         return lines;
     };
@@ -900,6 +913,7 @@ void TestSimRun::usbInsertionReportsEveryMetric()
         QVERIFY2(metrics.contains(key), key);
     QVERIFY(metrics.value("insertions").toInt() >= 1);
     QVERIFY(metrics.value("time_to_insert").isDouble());
+    QVERIFY2(unregistered(metrics).isEmpty(), qPrintable(unregistered(metrics)));
 }
 
 void TestSimRun::compareRunsOnUsbInsertion()

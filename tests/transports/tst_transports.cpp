@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Transports without hardware: URIs, safety (clamp, gain, inflation limit, armed, stop-all),
 // the virtual transport, what a transport says it sent (against an emulated band's
-// setpoints), HID enumeration.
+// setpoints), HID enumeration, the scheme table against its docs.
 #include "deviceuri.h"
 #include "emulatedband.h"
 #include "framedecoder.h"
@@ -9,9 +9,11 @@
 #include "hidlink.h"
 #include "safetyfilter.h"
 #include "transportfactory.h"
+#include "transportscheme.h"
 #include "virtualtransport.h"
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QTest>
 #include <QThread>
 
@@ -53,6 +55,7 @@ private slots:
     void sentIsWhatTheBandGot_data();
     void sentIsWhatTheBandGot();
     void factoryMakesEachKind();
+    void everySchemeIsDocumented();
     void identifyIsAskedUntilAnswered();
     void hidEnumerationWithoutDevices();
 };
@@ -485,11 +488,27 @@ void TestTransports::factoryMakesEachKind()
         QCOMPARE(t->uri(), uri);
         QCOMPARE(t->model().name(), QStringLiteral("lra4"));
     }
-    QVERIFY(!TransportFactory::create(QStringLiteral("tcp:1"), model, &error));
+    QVERIFY(!TransportFactory::create(QStringLiteral("usb:1"), model, &error));
     QVERIFY(error.contains(QStringLiteral("unknown device scheme")));
     // Real bands start disarmed.
     QVERIFY(
         !TransportFactory::create(QStringLiteral("udp:127.0.0.1:9"), model, &error)->isArmed());
+}
+
+void TestTransports::everySchemeIsDocumented()
+{
+    // The URI table of devices/README.md has a row for each registered scheme, and no other.
+    QFile doc(QStringLiteral(SEMHAP_DEVICES_DOC));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    QStringList documented;
+    for (const QByteArray &line : doc.readAll().split('\n')) {
+        if (line.startsWith("| `") && line.contains(':'))
+            documented.append(QString::fromUtf8(line.mid(3, line.indexOf('`', 3) - 3)));
+    }
+    QStringList registered;
+    for (const TransportScheme &scheme : TransportScheme::all())
+        registered.append(QString::fromUtf8(scheme.syntax));
+    QCOMPARE(documented, registered);
 }
 
 void TestTransports::identifyIsAskedUntilAnswered()
