@@ -4,6 +4,7 @@
 #include "audiotransport.h"
 #include "hidlink.h"
 #include "seriallink.h"
+#include "tcplink.h"
 #include "udplink.h"
 #include "virtualtransport.h"
 
@@ -67,6 +68,19 @@ const std::vector<TransportScheme> &TransportScheme::all()
             nullptr,
             [](const DeviceUri &uri) -> std::unique_ptr<Link> {
                 return std::make_unique<UdpLink>(uri.name, uri.port);
+            },
+            nullptr,
+            nullptr,
+        },
+        {
+            "tcp",
+            "tcp:HOST:PORT",
+            "a band behind a TCP port: a serial band shared by ser2net or socat, or a Wi-Fi board",
+            &DeviceUri::parseHostPort,
+            &DeviceUri::formatHostPort,
+            nullptr,
+            [](const DeviceUri &uri) -> std::unique_ptr<Link> {
+                return std::make_unique<TcpLink>(uri.name, uri.port);
             },
             nullptr,
             nullptr,

@@ -166,7 +166,7 @@ void TestCli::errors_data()
         << 1 << Data + "/truncated-image.hex: no end-of-file record (a truncated image?)";
     QTest::newRow("probe of a malformed URI") << QStringList{"devices", "--probe", "bogus:x"} << 2
                                               << "semhap devices: bogus:x: unknown device scheme "
-                                                 "'bogus' (virtual, serial, hid, udp, audio)";
+                                                 "'bogus' (virtual, serial, hid, udp, tcp, audio)";
     QTest::newRow("probe of a virtual band")
         << QStringList{"devices", "--probe", "virtual:x"} << 1
         << "virtual:x: no band on a link there to answer (a virtual band or a sound output)";

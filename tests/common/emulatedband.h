@@ -7,11 +7,15 @@
 #include <atomic>
 #include <thread>
 
-/** An emulated band of a built-in model serving UDP loopback on its own thread. */
+/**
+ * An emulated band of a built-in model serving UDP loopback (or, with `udp` false, a
+ * pseudo-terminal) on its own thread.
+ */
 class EmulatedBand
 {
 public:
-    explicit EmulatedBand(const QString &model) : m_emulator(options(model)) {}
+    explicit EmulatedBand(const QString &model, bool udp = true) : m_emulator(options(model, udp))
+    {}
     ~EmulatedBand()
     {
         m_quit = true;
@@ -26,14 +30,16 @@ public:
         return true;
     }
     QString uri() const { return m_emulator.uri(); }
+    /** The pty's path, or HOST:PORT. */
+    QString address() const { return m_emulator.address(); }
     semhap::Emulator::State state() const { return m_emulator.state(); }
 
 private:
-    static semhap::EmulatorOptions options(const QString &model)
+    static semhap::EmulatorOptions options(const QString &model, bool udp)
     {
         semhap::EmulatorOptions options;
         options.model = semhap::DeviceModelLibrary::builtin(model);
-        options.udp = true;
+        options.udp = udp;
         return options;
     }
 

@@ -126,6 +126,8 @@ void TestDevicesPanel::addAddress_data()
                          << "serial:/dev/pts/3";
     QTest::newRow("virtual") << " virtual:x "
                              << "virtual:x";
+    QTest::newRow("tcp") << "tcp:band.local:2000"
+                         << "tcp:band.local:2000";
     QTest::newRow("bad scheme") << "usb:1"
                                 << "";
     QTest::newRow("no port") << "udp:127.0.0.1"

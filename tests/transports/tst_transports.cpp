@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Transports without hardware: URIs, safety (clamp, gain, inflation limit, armed, stop-all),
 // the virtual transport, what a transport says it sent (against an emulated band's
-// setpoints), HID enumeration, the scheme table against its docs.
+// setpoints), a band behind a TCP port, HID enumeration, the scheme table against its docs.
 #include "deviceuri.h"
 #include "emulatedband.h"
 #include "framedecoder.h"
@@ -17,8 +17,15 @@
 #include <QTest>
 #include <QThread>
 
+#include <atomic>
+#include <thread>
+
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
+#include <sys/socket.h>
+#include <termios.h>
 #include <unistd.h>
 
 using namespace semhap;
@@ -34,6 +41,104 @@ DeviceFrame frameOf(std::initializer_list<double> values)
 }
 
 } // namespace
+
+/**
+ * ser2net in miniature: serves a pty's bytes on a loopback TCP port, one client at a time,
+ * on its own thread. drop() ends the connection, as a server that restarts does.
+ */
+class TcpBridge
+{
+public:
+    explicit TcpBridge(const QString &ptyPath) : m_ptyPath(ptyPath) {}
+    ~TcpBridge()
+    {
+        m_quit = true;
+        if (m_thread.joinable())
+            m_thread.join();
+        for (const int fd : {m_listen, m_pty}) {
+            if (fd >= 0)
+                ::close(fd);
+        }
+    }
+    bool start(QString *error)
+    {
+        m_pty = ::open(m_ptyPath.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+        termios raw{};
+        if (m_pty < 0 || ::tcgetattr(m_pty, &raw) != 0) {
+            *error = m_ptyPath + QStringLiteral(": cannot open");
+            return false;
+        }
+        ::cfmakeraw(&raw);
+        ::tcsetattr(m_pty, TCSANOW, &raw);
+        m_listen = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t size = sizeof address;
+        if (::bind(m_listen, reinterpret_cast<sockaddr *>(&address), size) != 0 ||
+            ::listen(m_listen, 1) != 0 ||
+            ::getsockname(m_listen, reinterpret_cast<sockaddr *>(&address), &size) != 0) {
+            *error = QStringLiteral("cannot listen on the loopback");
+            return false;
+        }
+        m_port = ntohs(address.sin_port);
+        m_thread = std::thread([this] { run(); });
+        return true;
+    }
+    int port() const { return m_port; }
+    void drop() { m_drop = true; }
+    int connections() const { return m_connections; }
+
+private:
+    void run()
+    {
+        int client = -1;
+        char buffer[256];
+        while (!m_quit) {
+            pollfd fds[3] = {{m_listen, POLLIN, 0}, {m_pty, POLLIN, 0}, {client, POLLIN, 0}};
+            ::poll(fds, client >= 0 ? 3 : 2, 10);
+            if (m_drop.exchange(false) && client >= 0) {
+                ::close(client);
+                client = -1;
+                continue;
+            }
+            if (fds[0].revents & POLLIN) {
+                const int accepted = ::accept4(m_listen, nullptr, nullptr, SOCK_CLOEXEC);
+                if (accepted >= 0) {
+                    if (client >= 0)
+                        ::close(client);
+                    client = accepted;
+                    ++m_connections;
+                }
+            }
+            // Without a client, what the band says is lost, as ser2net drops it.
+            const ssize_t fromBand =
+                (fds[1].revents & POLLIN) ? ::read(m_pty, buffer, sizeof buffer) : 0;
+            if (fromBand > 0 && client >= 0)
+                ::send(client, buffer, size_t(fromBand), MSG_NOSIGNAL);
+            if (client >= 0 && (fds[2].revents & (POLLIN | POLLHUP))) {
+                const ssize_t fromHost = ::recv(client, buffer, sizeof buffer, 0);
+                if (fromHost > 0) {
+                    [[maybe_unused]] const ssize_t n = ::write(m_pty, buffer, size_t(fromHost));
+                } else {
+                    ::close(client);
+                    client = -1;
+                }
+            }
+        }
+        if (client >= 0)
+            ::close(client);
+    }
+
+    QString m_ptyPath;
+    int m_pty = -1;
+    int m_listen = -1;
+    int m_port = 0;
+    std::atomic<bool> m_quit{false};
+    std::atomic<bool> m_drop{false};
+    std::atomic<int> m_connections{0};
+    std::thread m_thread;
+};
 
 class TestTransports : public QObject
 {
@@ -56,6 +161,7 @@ private slots:
     void sentIsWhatTheBandGot();
     void factoryMakesEachKind();
     void everySchemeIsDocumented();
+    void tcpReachesABandBehindABridge();
     void identifyIsAskedUntilAnswered();
     void hidEnumerationWithoutDevices();
 };
@@ -125,6 +231,15 @@ void TestTransports::parseUri_data()
     QTest::newRow("udp port too big") << "udp:127.0.0.1:70000"
                                       << ""
                                       << "1-65535";
+    QTest::newRow("tcp") << "tcp:band.local:2000"
+                         << "tcp:band.local:2000"
+                         << "";
+    QTest::newRow("tcp ipv6") << "tcp:[fe80::1]:2000"
+                              << "tcp:[fe80::1]:2000"
+                              << "";
+    QTest::newRow("tcp no port") << "tcp:band.local"
+                                 << ""
+                                 << "tcp:HOST:PORT";
     QTest::newRow("audio") << "audio:default"
                            << "audio:default"
                            << "";
@@ -480,9 +595,10 @@ void TestTransports::factoryMakesEachKind()
 {
     DeviceModelPtr model = DeviceModelLibrary::builtin(QStringLiteral("lra4"));
     QString error;
-    for (const QString &uri : {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
-                               QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9"),
-                               QStringLiteral("audio:default?channels=1,2,3,4")}) {
+    for (const QString &uri :
+         {QStringLiteral("virtual:a"), QStringLiteral("serial:/dev/null"),
+          QStringLiteral("hid:1234:5678"), QStringLiteral("udp:127.0.0.1:9"),
+          QStringLiteral("tcp:127.0.0.1:9"), QStringLiteral("audio:default?channels=1,2,3,4")}) {
         std::unique_ptr<Transport> t = TransportFactory::create(uri, model, &error);
         QVERIFY2(t, qPrintable(error));
         QCOMPARE(t->uri(), uri);
@@ -509,6 +625,37 @@ void TestTransports::everySchemeIsDocumented()
     for (const TransportScheme &scheme : TransportScheme::all())
         registered.append(QString::fromUtf8(scheme.syntax));
     QCOMPARE(documented, registered);
+}
+
+void TestTransports::tcpReachesABandBehindABridge()
+{
+    // tcp: drives a serial band another machine shares (ser2net, socat): here an emulated
+    // band's pty served on a loopback port. The server restarting is a lost link, and the
+    // transport connects again by itself.
+    EmulatedBand band(QStringLiteral("lra4"), false);
+    QString error;
+    QVERIFY2(band.start(&error), qPrintable(error));
+    TcpBridge bridge(band.address());
+    QVERIFY2(bridge.start(&error), qPrintable(error));
+    const QString uri = QStringLiteral("tcp:127.0.0.1:%1").arg(bridge.port());
+    std::unique_ptr<Transport> transport =
+        TransportFactory::create(uri, DeviceModelLibrary::builtin(QStringLiteral("lra4")), &error);
+    QVERIFY2(transport, qPrintable(error));
+    QCOMPARE(transport->uri(), uri);
+    QVERIFY2(transport->open(&error), qPrintable(error));
+    QTRY_VERIFY(transport->status().responding);
+    transport->setArmed(true);
+    transport->send(frameOf({0.5, 0.0, 0.0, 0.0}));
+    QTRY_VERIFY(band.state().setpoints.size() == 4 &&
+                std::abs(band.state().setpoints[0] - 0.5) < 1e-3);
+
+    bridge.drop();
+    QTRY_COMPARE(bridge.connections(), 2);
+    QTRY_VERIFY(transport->status().reconnects >= 1);
+    transport->send(frameOf({0.25, 0.0, 0.0, 0.0}));
+    QTRY_VERIFY(std::abs(band.state().setpoints[0] - 0.25) < 1e-3);
+    QTRY_VERIFY(transport->status().responding);
+    transport->close();
 }
 
 void TestTransports::identifyIsAskedUntilAnswered()
