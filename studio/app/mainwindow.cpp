@@ -28,6 +28,7 @@
 #include "spacemouseinput.h"
 #include "statusbar.h"
 #include "studio.h"
+#include "studiofolders.h"
 #include "studydocument.h"
 #include "studyexport.h"
 #include "studypanel.h"
@@ -839,7 +840,7 @@ void MainWindow::toggleRecording()
     }
     QString error;
     const QString path =
-        m_engine.newRecordingPath(PreferencesDialog::sessionsFolder(), m_sessionNameEdit->text());
+        m_engine.newRecordingPath(StudioFolders::sessions(), m_sessionNameEdit->text());
     if (!m_engine.startRecording(path, m_notesEdit->text(), &error)) {
         m_recordAction->setChecked(false);
         showError(tr("Could not start recording"), error);
@@ -938,7 +939,7 @@ bool MainWindow::importRecording(const QString &recording)
     if (topics.isEmpty())
         return false;
     // A new session beside the recorded ones, never over one.
-    const QDir folder(PreferencesDialog::sessionsFolder());
+    const QDir folder(StudioFolders::sessions());
     folder.mkpath(QStringLiteral("."));
     const QString base = QFileInfo(recording).completeBaseName();
     QString session = folder.filePath(base + QStringLiteral(".db"));

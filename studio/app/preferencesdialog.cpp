@@ -2,6 +2,7 @@
 #include "preferencesdialog.h"
 
 #include "handdrive.h"
+#include "studiofolders.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -18,14 +19,12 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTabWidget>
 
 namespace semhap {
 
 namespace {
 const QString LanguageKey = QStringLiteral("interface/language");
-const QString SessionsFolderKey = QStringLiteral("sessions/folder");
 const QString FoxgloveKey = QStringLiteral("foxglove/publish");
 const QString FoxglovePortKey = QStringLiteral("foxglove/port");
 } // namespace
@@ -62,9 +61,10 @@ QWidget *PreferencesDialog::createGeneralPage()
     m_initial = savedLanguage();
     m_language->setCurrentIndex(std::max(0, m_language->findData(m_initial)));
 
-    m_sessionsFolder = new QLineEdit(QDir::toNativeSeparators(sessionsFolder()), page);
+    m_sessionsFolder = new QLineEdit(QDir::toNativeSeparators(StudioFolders::sessions()), page);
     m_sessionsFolder->setObjectName(QStringLiteral("sessionsFolder"));
-    m_sessionsFolder->setPlaceholderText(QDir::toNativeSeparators(defaultSessionsFolder()));
+    m_sessionsFolder->setPlaceholderText(
+        QDir::toNativeSeparators(StudioFolders::defaultSessions()));
     m_sessionsFolder->setMinimumWidth(320);
     auto *browse = new QPushButton(tr("Browse…"), page);
     connect(browse, &QPushButton::clicked, this, [this] {
@@ -301,12 +301,6 @@ QString PreferencesDialog::savedLanguage()
     return QSettings().value(LanguageKey).toString();
 }
 
-QString PreferencesDialog::sessionsFolder()
-{
-    const QString saved = QSettings().value(SessionsFolderKey).toString();
-    return saved.isEmpty() ? defaultSessionsFolder() : saved;
-}
-
 bool PreferencesDialog::publishesToFoxglove()
 {
     return QSettings().value(FoxgloveKey, false).toBool();
@@ -318,12 +312,6 @@ int PreferencesDialog::foxglovePort()
     return port >= 1 && port <= 65535 ? port : DefaultFoxglovePort;
 }
 
-QString PreferencesDialog::defaultSessionsFolder()
-{
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-           QStringLiteral("/sessions");
-}
-
 void PreferencesDialog::save()
 {
     teleopSettings().save();
@@ -331,12 +319,7 @@ void PreferencesDialog::save()
     settings.setValue(LanguageKey, language());
     settings.setValue(FoxgloveKey, m_foxglove->isChecked());
     settings.setValue(FoxglovePortKey, m_foxglovePort->value());
-    // Left empty or at the default, it follows the default (a moved data folder too).
-    const QString folder = QDir::fromNativeSeparators(m_sessionsFolder->text().trimmed());
-    if (folder.isEmpty() || folder == defaultSessionsFolder())
-        settings.remove(SessionsFolderKey);
-    else
-        settings.setValue(SessionsFolderKey, folder);
+    StudioFolders::setSessions(QDir::fromNativeSeparators(m_sessionsFolder->text().trimmed()));
 }
 
 } // namespace semhap

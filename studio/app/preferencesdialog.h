@@ -47,10 +47,6 @@ public:
 
     /** The saved language setting (empty: follow the system). */
     static QString savedLanguage();
-    /** Where recordings go: the saved folder, else `sessions` in the user's data folder. */
-    static QString sessionsFolder();
-    /** The folder recordings go to when the user has not chosen one. */
-    static QString defaultSessionsFolder();
     /** Foxglove's own default port, which its connection dialog offers. */
     static constexpr int DefaultFoxglovePort = 8765;
     /** Whether the run is served to Foxglove (saved; off until the user turns it on). */

@@ -6,7 +6,11 @@
 #include "historycsv.h"
 #include "nametable.h"
 #include "outputfile.h"
+#include "plotcursor.h"
+#include "plotlayout.h"
+#include "plotseries.h"
 #include "routernodetype.h"
+#include "spanoverlay.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -28,6 +32,8 @@
 
 namespace semhap {
 
+using namespace plotlayout;
+
 namespace {
 
 // Okabe–Ito: readable for the common colour-vision deficiencies.
@@ -44,56 +50,6 @@ constexpr double MaxWindow = 120.0;
 // Plots need no more than ~33 frames/s, and each frame costs ~10 ms of software drawing.
 constexpr qint64 MinReplotMs = 30;
 
-void place(QCPItemPosition *position, QCPAxisRect *rect, QCPItemPosition::PositionType typeX,
-           QCPItemPosition::PositionType typeY, double x, double y)
-{
-    position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    position->setAxisRect(rect);
-    position->setTypeX(typeX);
-    position->setTypeY(typeY);
-    position->setCoords(x, y);
-}
-
-/** A vertical line at time `t` across `rect`. */
-QCPItemStraightLine *addTimeLine(QCustomPlot *plot, QCPAxisRect *rect, double t, const QPen &pen)
-{
-    auto *line = new QCPItemStraightLine(plot);
-    line->setClipAxisRect(rect);
-    line->setPen(pen);
-    line->setSelectable(false);
-    place(line->point1, rect, QCPItemPosition::ptPlotCoords, QCPItemPosition::ptAxisRectRatio, t,
-          0.0);
-    place(line->point2, rect, QCPItemPosition::ptPlotCoords, QCPItemPosition::ptAxisRectRatio, t,
-          1.0);
-    return line;
-}
-
-void moveTimeLine(QCPItemStraightLine *line, double t)
-{
-    line->point1->setCoords(t, 0.0);
-    line->point2->setCoords(t, 1.0);
-}
-
-QCPItemText *addText(QCustomPlot *plot, QCPAxisRect *rect, const QString &text,
-                     Qt::Alignment alignment)
-{
-    auto *item = new QCPItemText(plot);
-    item->setClipAxisRect(rect);
-    item->setSelectable(false);
-    item->setText(text);
-    item->setPositionAlignment(alignment);
-    item->setPadding(QMargins(3, 1, 3, 1));
-    return item;
-}
-
-/** The legend in the rect's top right corner, if it has one yet. */
-QCPLegend *legendOf(QCPAxisRect *rect)
-{
-    if (rect->insetLayout()->elementCount() == 0)
-        return nullptr;
-    return qobject_cast<QCPLegend *>(rect->insetLayout()->elementAt(0));
-}
-
 QString number(double value)
 {
     return QLocale::c().toString(value, 'g', 10);
@@ -101,72 +57,7 @@ QString number(double value)
 
 } // namespace
 
-struct PlotPanel::GripperPlot
-{
-    Gripper gripper = Gripper::Right;
-    QCPAxisRect *forceRect = nullptr;
-    QCPAxisRect *countRect = nullptr;
-    QCPGraph *left = nullptr;
-    QCPGraph *right = nullptr;
-    QCPGraph *sum = nullptr;
-    QCPGraph *count = nullptr;
-    double thresholdTop = 0.0; ///< the highest force threshold, kept in view
-    double countTop = 0.0;     ///< the highest count threshold, kept in view
-    qint64 next = 0;           ///< the history index not yet plotted
-};
-
-/** A frame signal that threshold nodes read, with their levels. */
-struct PlotPanel::SignalPlot
-{
-    Gripper gripper = Gripper::Right;
-    QString quantity; ///< the signal's name (`plug.angle`)
-    int id = -1;      ///< its signalNames() id
-    QCPAxisRect *rect = nullptr;
-    QCPGraph *graph = nullptr;
-    QStringList nodes; ///< the threshold nodes reading it: their spans are shaded here
-    bool hasLevels = false;
-    double levelLow = 0.0; ///< the levels drawn, kept in view
-    double levelHigh = 0.0;
-    bool gap = true; ///< the last point plotted was a frame without the signal (or none)
-    qint64 next = 0;
-};
-
-struct PlotPanel::DevicePlot
-{
-    int device = 0;
-    QCPAxisRect *rect = nullptr;
-    std::vector<QCPGraph *> graphs;
-    qint64 next = 0;
-    int rewinds = 0;  ///< the series' rewinds() when it was read
-    double low = 0.0; ///< the value range seen since the run started, at least 0..1
-    double high = 1.0;
-};
-
-/** The items showing one MessageSpan on its gripper's two rects. */
-struct PlotPanel::SpanView
-{
-    Gripper gripper = Gripper::Right;
-    QString node;
-    Message message = Message::Grasp;
-    double begin = 0.0;
-    double end = 0.0;
-    bool active = true;
-    int row = 0; ///< the label's own row under the rect's title (a kind of message each)
-    std::vector<QCPItemRect *> shades; ///< one per rect it is shaded on
-    std::vector<QCPItemStraightLine *> beginLines;
-    std::vector<QCPItemStraightLine *> endLines;
-    QCPItemText *label = nullptr;
-    bool seen = false;
-
-    bool shows(const MessageSpan &span) const
-    {
-        return span.gripper == gripper && span.node == node && span.message == message &&
-               span.begin == begin;
-    }
-};
-
-PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
-    : QWidget(parent), m_history(history), m_cursorTime(std::numeric_limits<double>::quiet_NaN())
+PlotPanel::PlotPanel(RunHistory &history, QWidget *parent) : QWidget(parent), m_history(history)
 {
     m_pauseButton = new QToolButton(this);
     m_pauseButton->setText(tr("Pause"));
@@ -203,6 +94,7 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     toolbar->addWidget(pngButton);
 
     m_plot = new QCustomPlot(this);
+    m_spanOverlay = std::make_unique<SpanOverlay>(m_plot);
     m_plot->setAutoAddPlottableToLegend(false);
     // No "fast polylines": they draw each segment with its own call, slower than one
     // polyline for thin pens (measured with bench_plots).
@@ -215,13 +107,8 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
     m_plot->setToolTip(tr("Click to place the cursor; when paused, drag to pan (Shift+drag "
                           "moves the cursor) and use the wheel to zoom"));
 
-    m_readout = new QLabel(m_plot);
-    m_readout->setObjectName(QStringLiteral("cursorReadout"));
-    m_readout->setStyleSheet(
-        QStringLiteral("QLabel { background: rgba(255, 255, 255, 225); border: 1px solid #888;"
-                       " padding: 3px; color: black; }"));
-    m_readout->setAttribute(Qt::WA_TransparentForMouseEvents);
-    m_readout->hide();
+    m_cursor = new PlotCursor(m_plot, [this](double t) { return readoutAt(t); });
+    connect(m_cursor, &PlotCursor::moved, this, &PlotPanel::requestReplot);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -243,18 +130,15 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
             [this](int seconds) { setWindowSeconds(seconds); });
     connect(csvButton, &QToolButton::clicked, this, &PlotPanel::exportCsvDialog);
     connect(pngButton, &QToolButton::clicked, this, &PlotPanel::exportPngDialog);
-    connect(m_plot, &QCustomPlot::mousePress, this, &PlotPanel::onMousePress);
-    connect(m_plot, &QCustomPlot::mouseMove, this, &PlotPanel::onMouseMove);
-    connect(m_plot, &QCustomPlot::mouseRelease, this, &PlotPanel::onMouseRelease);
     // Pixels are known only once the plot is laid out (after a resize, say).
     // The value ranges keep the data under each rect's title and legend, whose pixels a
     // layout sets; the drawing that follows it shows the new ranges.
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::fitToLayout);
-    connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::placeReadout);
+    connect(m_plot, &QCustomPlot::afterLayout, m_cursor, &PlotCursor::placeReadout);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::layoutSpanLabels);
     connect(m_plot, &QCustomPlot::afterLayout, this, &PlotPanel::keepReadableHeight);
     connect(&m_history, &RunHistory::reset, this, [this] {
-        m_cursorTime = std::numeric_limits<double>::quiet_NaN();
+        m_cursor->setTime(std::numeric_limits<double>::quiet_NaN());
         rebuild();
         goLive();
     });
@@ -276,6 +160,11 @@ PlotPanel::PlotPanel(RunHistory &history, QWidget *parent)
 
 PlotPanel::~PlotPanel() = default;
 
+double PlotPanel::cursorTime() const
+{
+    return m_cursor->time();
+}
+
 void PlotPanel::clearPlots()
 {
     m_plot->clearItems();
@@ -287,8 +176,8 @@ void PlotPanel::clearPlots()
     m_grippers.clear();
     m_signals.clear();
     m_devices.clear();
-    m_spans.clear();
-    m_cursorLines.clear();
+    m_spanOverlay->clear();
+    m_cursor->clearLines();
     m_levelNames.clear();
     m_titles.clear();
 }
@@ -336,14 +225,8 @@ void PlotPanel::rebuild()
     QCPAxis *timeAxis = m_rects.back()->axis(QCPAxis::atBottom);
     timeAxis->setTickLabels(true);
     timeAxis->setLabel(tr("pipeline time (s)"));
-    QPen cursorPen(colors::Text);
-    cursorPen.setWidthF(1.5);
-    for (QCPAxisRect *rect : m_rects) {
-        QCPItemStraightLine *line = addTimeLine(m_plot, rect, 0.0, cursorPen);
-        line->setObjectName(QStringLiteral("cursor"));
-        line->setVisible(false);
-        m_cursorLines.push_back(line);
-    }
+    for (QCPAxisRect *rect : m_rects)
+        m_cursor->addLine(rect);
     updateInteractions();
     // Fewer rects may need less height; keepReadableHeight() sets what they need.
     m_plot->setMinimumHeight(0);
@@ -415,113 +298,12 @@ QCPAxisRect *PlotPanel::addRect(const QString &title, int stretch)
     return rect;
 }
 
-QCPGraph *PlotPanel::addGraph(QCPAxisRect *rect, const QString &id, const QString &name,
-                              const QColor &color, double width)
-{
-    QCPGraph *graph = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    graph->setObjectName(id);
-    graph->setName(name);
-    QPen pen(color);
-    pen.setWidthF(width);
-    graph->setPen(pen);
-    graph->setAntialiased(false);
-    graph->setAdaptiveSampling(true);
-    QCPLegend *legend = legendOf(rect);
-    if (!legend) {
-        legend = new QCPLegend;
-        rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-        legend->setLayer(QStringLiteral("legend"));
-        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-        legend->setBrush(colors::veil(200));
-        legend->setBorderPen(QPen(colors::Border));
-        legend->setRowSpacing(0);
-        legend->setColumnSpacing(6);
-        legend->setIconSize(16, 8);
-        legend->setMargins(QMargins(4, 1, 4, 1));
-    }
-    graph->addToLegend(legend);
-    return graph;
-}
-
 void PlotPanel::addThreshold(QCPAxisRect *rect, const QString &id, const QString &name,
                              double value, const QColor &color, Qt::PenStyle style)
 {
-    QPen pen(color, 1.0, style);
-    auto *line = new QCPItemStraightLine(m_plot);
-    line->setObjectName(id);
-    line->setClipAxisRect(rect);
-    line->setLayer(QStringLiteral("spans"));
-    line->setPen(pen);
-    line->setSelectable(false);
-    place(line->point1, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords, 0.0,
-          value);
-    place(line->point2, rect, QCPItemPosition::ptAxisRectRatio, QCPItemPosition::ptPlotCoords, 1.0,
-          value);
-    // Named on the right axis, beside the plot, where no data, legend or span can hide it.
-    QCPAxis *names = rect->axis(QCPAxis::atRight);
-    auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
-    if (!ticker) {
-        ticker.reset(new QCPAxisTickerText);
-        ticker->setSubTickCount(0);
-        names->setTicker(ticker);
-        names->setVisible(true);
-        names->setTickLabels(true);
-        names->setBasePen(Qt::NoPen);
-    }
+    addLevelLine(m_plot, rect, id, value, QPen(color, 1.0, style));
     if (!name.isEmpty()) // a line named in another's label
         m_levelNames.push_back({rect, value, name});
-}
-
-bool PlotPanel::nameLevels(QCPAxisRect *rect)
-{
-    QCPAxis *names = rect->axis(QCPAxis::atRight);
-    auto ticker = names->ticker().dynamicCast<QCPAxisTickerText>();
-    if (!ticker)
-        return false;
-    std::vector<const LevelName *> levels;
-    for (const LevelName &level : m_levelNames) {
-        if (level.rect == rect)
-            levels.push_back(&level);
-    }
-    std::stable_sort(levels.begin(), levels.end(),
-                     [](const LevelName *a, const LevelName *b) { return a->value > b->value; });
-    // Each level's name a label; two labels that would overlap become one, a line per name,
-    // at their levels' mean, until none overlaps (two signal nodes' levels a thousandth apart
-    // on a metre scale were drawn over each other).
-    const double height = rect->rect().height();
-    const double pixelsPerUnit = height > 0 && names->range().size() > 0
-                                     ? height / names->range().size()
-                                     : std::numeric_limits<double>::infinity(); // not laid out
-    const double lineHeight = QFontMetrics(names->tickLabelFont()).height();
-    struct Label
-    {
-        QStringList lines;
-        double sum = 0.0; // of the levels' values
-        double value() const { return sum / double(lines.size()); }
-    };
-    std::vector<Label> labels;
-    for (const LevelName *level : levels)
-        labels.push_back({{level->name}, level->value});
-    for (size_t i = 0; i + 1 < labels.size();) {
-        const Label &above = labels[i];
-        const Label &below = labels[i + 1];
-        const double apart = (above.value() - below.value()) * pixelsPerUnit;
-        if (apart >= double(above.lines.size() + below.lines.size()) * lineHeight / 2) {
-            ++i;
-            continue;
-        }
-        labels[i].lines += below.lines;
-        labels[i].sum += below.sum;
-        labels.erase(labels.begin() + std::ptrdiff_t(i) + 1);
-        i = i > 0 ? i - 1 : 0; // the grown label may now reach the one above
-    }
-    QMap<double, QString> ticks;
-    for (const Label &label : labels)
-        ticks.insert(label.value(), label.lines.join(QLatin1Char('\n')));
-    if (ticker->ticks() == ticks)
-        return false;
-    ticker->setTicks(ticks);
-    return true;
 }
 
 /** The gripper's name as shown (the data keep the untranslated one). */
@@ -540,16 +322,17 @@ void PlotPanel::addGripper(Gripper gripper)
 
     plot->forceRect = addRect(tr("%1: force").arg(gripperTitle(gripper)), 5);
     plot->forceRect->axis(QCPAxis::atLeft)->setLabel(tr("F (N)"));
-    plot->left =
-        addGraph(plot->forceRect, id + QStringLiteral(".left.f"), tr("left.f (finger)"), Sky, 1.0);
-    plot->right = addGraph(plot->forceRect, id + QStringLiteral(".right.f"),
-                           tr("right.f (finger)"), Green, 1.0);
-    plot->sum = addGraph(plot->forceRect, id + QStringLiteral(".F"), tr("F (sum)"), Black, 1.0);
+    plot->left = plotlayout::addGraph(m_plot, plot->forceRect, id + QStringLiteral(".left.f"),
+                                      tr("left.f (finger)"), Sky, 1.0);
+    plot->right = plotlayout::addGraph(m_plot, plot->forceRect, id + QStringLiteral(".right.f"),
+                                       tr("right.f (finger)"), Green, 1.0);
+    plot->sum = plotlayout::addGraph(m_plot, plot->forceRect, id + QStringLiteral(".F"),
+                                     tr("F (sum)"), Black, 1.0);
     addLevels(plot.get(), DetectorLevel::Quantity::Force, thresholds.levels);
     plot->countRect = addRect(tr("%1: contacts").arg(gripperTitle(gripper)), 3);
     plot->countRect->axis(QCPAxis::atLeft)->setLabel(tr("N"));
-    plot->count =
-        addGraph(plot->countRect, id + QStringLiteral(".N"), tr("N (contacts)"), Black, 1.0);
+    plot->count = plotlayout::addGraph(m_plot, plot->countRect, id + QStringLiteral(".N"),
+                                       tr("N (contacts)"), Black, 1.0);
     addLevels(plot.get(), DetectorLevel::Quantity::Contacts, thresholds.levels);
     plot->next = m_history.frames(gripper).begin();
     m_grippers.push_back(std::move(plot));
@@ -598,8 +381,9 @@ void PlotPanel::addSignals(Gripper gripper)
             plot->id = signalNames().find(levels.quantity);
             plot->rect = addRect(tr("%1: %2").arg(gripperTitle(gripper), levels.quantity), 3);
             plot->rect->axis(QCPAxis::atLeft)->setLabel(levels.quantity);
-            plot->graph = addGraph(plot->rect, hand + QLatin1Char('.') + levels.quantity,
-                                   levels.quantity, Black, 1.0);
+            plot->graph =
+                plotlayout::addGraph(m_plot, plot->rect, hand + QLatin1Char('.') + levels.quantity,
+                                     levels.quantity, Black, 1.0);
             plot->next = m_history.frames(gripper).begin();
             m_signals.push_back(std::move(plot));
             found = m_signals.end() - 1;
@@ -649,8 +433,8 @@ void PlotPanel::addDevice(int device)
         const QString &name = info.channels[channel];
         const QColor color = colors::series(channel);
         // Past the palette, dashes keep channels apart.
-        QCPGraph *graph =
-            addGraph(plot->rect, info.name + QLatin1Char('.') + name, name, color, 1.0);
+        QCPGraph *graph = plotlayout::addGraph(
+            m_plot, plot->rect, info.name + QLatin1Char('.') + name, name, color, 1.0);
         if (channel >= colors::SeriesCount) {
             QPen pen = graph->pen();
             pen.setStyle(Qt::DashLine);
@@ -694,277 +478,50 @@ void PlotPanel::requestReplot()
 
 void PlotPanel::appendNew()
 {
-    QVector<QCPGraphData> left, right, sum, count;
-    for (auto &plot : m_grippers) {
-        const RunSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
-        left.clear();
-        right.clear();
-        sum.clear();
-        count.clear();
-        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
-            const ContactFrame &frame = frames.at(i);
-            left.append(QCPGraphData(frame.t, frame.left.f));
-            right.append(QCPGraphData(frame.t, frame.right.f));
-            sum.append(QCPGraphData(frame.t, frame.totalForce()));
-            count.append(QCPGraphData(frame.t, frame.totalContacts()));
-        }
-        plot->next = frames.end();
-        plot->left->data()->add(left, true);
-        plot->right->data()->add(right, true);
-        plot->sum->data()->add(sum, true);
-        plot->count->data()->add(count, true);
-    }
-    QVector<QCPGraphData> values;
-    for (auto &plot : m_signals) {
-        const RunSeries<ContactFrame> &frames = m_history.frames(plot->gripper);
-        values.clear();
-        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
-            const ContactFrame &frame = frames.at(i);
-            const double *value = frame.signalValues.find(plot->id);
-            // A frame without the signal breaks the curve (a NaN is a gap).
-            if (value || !plot->gap)
-                values.append(QCPGraphData(
-                    frame.t, value ? *value : std::numeric_limits<double>::quiet_NaN()));
-            plot->gap = !value;
-        }
-        plot->next = frames.end();
-        plot->graph->data()->add(values, true);
-    }
-    std::vector<QVector<QCPGraphData>> channels;
-    for (auto &plot : m_devices) {
-        const RunSeries<DeviceFrame> &frames = m_history.deviceFrames(plot->device);
-        if (frames.rewinds() != plot->rewinds) {
-            // The run went on where an audition had drawn ahead of it: draw it again.
-            plot->rewinds = frames.rewinds();
-            plot->next = frames.begin();
-            for (QCPGraph *graph : plot->graphs)
-                graph->data()->clear();
-        }
-        channels.assign(plot->graphs.size(), QVector<QCPGraphData>());
-        for (qint64 i = std::max(plot->next, frames.begin()); i < frames.end(); ++i) {
-            const DeviceFrame &frame = frames.at(i);
-            const size_t n = std::min(channels.size(), size_t(frame.channelCount));
-            for (size_t c = 0; c < n; ++c) {
-                channels[c].append(QCPGraphData(frame.t, frame.values[c]));
-                plot->low = std::min(plot->low, frame.values[c]);
-                plot->high = std::max(plot->high, frame.values[c]);
-            }
-        }
-        plot->next = frames.end();
-        for (size_t c = 0; c < channels.size(); ++c)
-            plot->graphs[c]->data()->add(channels[c], true);
-    }
+    for (auto &plot : m_grippers)
+        plot->appendNew(m_history);
+    for (auto &plot : m_signals)
+        plot->appendNew(m_history);
+    for (auto &plot : m_devices)
+        plot->appendNew(m_history);
     // The history forgot what is older; so do the graphs.
     const double oldest = m_history.now() - m_history.keepSeconds();
     for (int i = 0; i < m_plot->graphCount(); ++i)
         m_plot->graph(i)->data()->removeBefore(oldest);
 }
 
-PlotPanel::SpanView PlotPanel::makeSpanView(const MessageSpan &span,
-                                            const std::vector<QCPAxisRect *> &rects,
-                                            QCPAxisRect *labelRect)
-{
-    SpanView view;
-    view.gripper = span.gripper;
-    view.node = span.node;
-    view.message = span.message;
-    view.begin = span.begin;
-    // Confirmations blue, exceptions orange; slip hatched vermillion so it never reads as
-    // a break even without colour.
-    QColor color = Blue;
-    QBrush brush;
-    if (span.category == Category::Exception)
-        color = span.message == Message::Slip ? Vermillion : Orange;
-    if (span.message == Message::Slip) {
-        QColor hatch = color;
-        hatch.setAlpha(140);
-        brush = QBrush(hatch, Qt::BDiagPattern);
-    } else {
-        QColor fill = color;
-        fill.setAlpha(span.category == Category::Exception ? 70 : 32);
-        brush = QBrush(fill);
-    }
-    // A threshold node's message is named after its node, in rows under the detectors'
-    // labels: a predicted break begins while the force detector's is still ahead.
-    const bool threshold = span.detector == DetectorKind::Threshold;
-    QString id =
-        QStringLiteral("span.%1.%2").arg(gripperName(span.gripper), messageName(span.message));
-    if (threshold)
-        id += QLatin1Char('/') + span.node;
-    for (size_t i = 0; i < rects.size(); ++i) {
-        auto *shade = new QCPItemRect(m_plot);
-        shade->setObjectName(id);
-        shade->setClipAxisRect(rects[i]);
-        shade->setLayer(QStringLiteral("spans"));
-        shade->setPen(Qt::NoPen);
-        shade->setBrush(brush);
-        shade->setSelectable(false);
-        place(shade->topLeft, rects[i], QCPItemPosition::ptPlotCoords,
-              QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
-        place(shade->bottomRight, rects[i], QCPItemPosition::ptPlotCoords,
-              QCPItemPosition::ptAxisRectRatio, span.end, 1.0);
-        view.shades.push_back(shade);
-        view.beginLines.push_back(addTimeLine(m_plot, rects[i], span.begin, QPen(color, 1.0)));
-        view.endLines.push_back(addTimeLine(m_plot, rects[i], span.end, QPen(color, 1.0)));
-        view.beginLines.back()->setLayer(QStringLiteral("spans"));
-        view.endLines.back()->setLayer(QStringLiteral("spans"));
-    }
-    view.label = addText(m_plot, labelRect, threshold ? span.node : messageName(span.message),
-                         Qt::AlignLeft | Qt::AlignTop);
-    view.label->setObjectName(id);
-    view.label->setColor(color.darker(150));
-    QFont font = view.label->font();
-    font.setBold(true);
-    view.label->setFont(font);
-    view.label->setBrush(colors::veil(170));
-    // A row per kind of message below the rect's title, so overlapping spans stay readable
-    // (layoutSpanLabels() places it).
-    view.row = int(span.message) + (threshold ? 3 : 0);
-    place(view.label->position, labelRect, QCPItemPosition::ptPlotCoords,
-          QCPItemPosition::ptAxisRectRatio, span.begin, 0.0);
-    return view;
-}
-
-void PlotPanel::placeSpan(const SpanView &view, const MessageSpan &span)
-{
-    for (size_t i = 0; i < view.shades.size(); ++i) {
-        view.shades[i]->bottomRight->setCoords(span.end, 1.0);
-        moveTimeLine(view.endLines[i], span.end);
-        view.endLines[i]->setVisible(!span.active);
-    }
-}
-
 void PlotPanel::syncSpans()
 {
-    for (SpanView &view : m_spans)
-        view.seen = false;
-    for (const MessageSpan &span : m_history.spans()) {
-        auto view = std::find_if(m_spans.begin(), m_spans.end(),
-                                 [&](const SpanView &v) { return v.shows(span); });
-        if (view == m_spans.end()) {
-            // On its gripper's force and contact rects, and on the plots of the signals its
-            // threshold node reads.
-            std::vector<QCPAxisRect *> rects;
-            const auto plot =
-                std::find_if(m_grippers.begin(), m_grippers.end(),
-                             [&](const auto &p) { return p->gripper == span.gripper; });
-            if (plot != m_grippers.end())
-                rects = {(*plot)->forceRect, (*plot)->countRect};
-            for (const auto &signal : m_signals) {
-                if (span.detector == DetectorKind::Threshold && signal->nodes.contains(span.node))
-                    rects.push_back(signal->rect);
-            }
-            if (rects.empty())
-                continue;
-            m_spans.push_back(makeSpanView(span, rects, rects.front()));
-            view = m_spans.end() - 1;
-            // Only a force rect's labels are laid out (layoutSpanLabels).
-            view->label->setVisible(plot != m_grippers.end());
+    m_spanOverlay->sync(m_history.spans(), [this](const MessageSpan &span, bool *labelled) {
+        // On its gripper's force and contact rects, and on the plots of the signals its
+        // threshold node reads.
+        std::vector<QCPAxisRect *> rects;
+        const auto plot = std::find_if(m_grippers.begin(), m_grippers.end(),
+                                       [&](const auto &p) { return p->gripper == span.gripper; });
+        if (plot != m_grippers.end())
+            rects = {(*plot)->forceRect, (*plot)->countRect};
+        for (const auto &signal : m_signals) {
+            if (span.detector == DetectorKind::Threshold && signal->nodes.contains(span.node))
+                rects.push_back(signal->rect);
         }
-        view->seen = true;
-        view->end = span.end;
-        view->active = span.active;
-        placeSpan(*view, span);
-    }
-    // Spans the history forgot.
-    const auto gone =
-        std::partition(m_spans.begin(), m_spans.end(), [](const SpanView &v) { return v.seen; });
-    for (auto it = gone; it != m_spans.end(); ++it) {
-        for (size_t i = 0; i < it->shades.size(); ++i) {
-            m_plot->removeItem(it->shades[i]);
-            m_plot->removeItem(it->beginLines[i]);
-            m_plot->removeItem(it->endLines[i]);
-        }
-        m_plot->removeItem(it->label);
-    }
-    m_spans.erase(gone, m_spans.end());
+        // Only a force rect's labels are laid out.
+        *labelled = plot != m_grippers.end();
+        return rects;
+    });
 }
 
-/** Sets the rect's value range on both sides, so the threshold names stay at their lines. */
-static bool setValueRange(QCPAxisRect *rect, double lower, double upper)
+void PlotPanel::layoutSpanLabels()
 {
-    if (rect->axis(QCPAxis::atLeft)->range() == QCPRange(lower, upper))
-        return false;
-    rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
-    rect->axis(QCPAxis::atRight)->setRange(lower, upper);
-    return true;
-}
-
-double PlotPanel::upperUnderHeader(QCPAxisRect *rect, double lower, double top,
-                                   double headroom) const
-{
-    // The title and the legend sit over the top of the rect: the range reaches so far above
-    // the data that its top runs under them, never behind (a band's 1.0 went behind both).
-    QCPLegend *legend = legendOf(rect);
-    const int legendHeight = legend ? legend->outerRect().height() : 0;
-    const bool stacked =
-        legend && rect->insetLayout()->insetPlacement(0) == QCPLayoutInset::ipFree;
-    const int header =
-        (stacked ? m_titleHeight + legendHeight : std::max(m_titleHeight, legendHeight)) + 2;
-    const int height = rect->rect().height();
-    const double span = top - lower;
-    double upper = top + span * headroom;
-    if (height > header) // laid out
-        upper = std::max(upper, lower + span * height / (height - header));
-    return upper;
-}
-
-bool PlotPanel::spaceValueTicks(QCPAxisRect *rect)
-{
-    // Labels a fifth of their height apart at least, on a step of 1, 2 or 5 times a
-    // power of ten: the ticker's default of about five overlapped in the rects of both
-    // hands' seven devices at 1920×1080.
-    QCPAxis *axis = rect->axis(QCPAxis::atLeft);
-    const double pixels = rect->rect().height();
-    if (pixels <= 0)
-        return false;
-    const double least =
-        axis->range().size() * 1.2 * QFontMetrics(axis->tickLabelFont()).height() / pixels;
-    const double power = std::pow(10.0, std::floor(std::log10(least)));
-    double step = 10 * power;
-    for (double mantissa : {1.0, 2.0, 5.0}) {
-        if (mantissa * power >= least) {
-            step = mantissa * power;
-            break;
-        }
-    }
-    auto ticker = axis->ticker().staticCast<QCPAxisTickerFixed>();
-    if (ticker->tickStep() == step)
-        return false;
-    ticker->setTickStep(step);
-    return true;
-}
-
-void PlotPanel::placeLegend(QCPAxisRect *rect)
-{
-    QCPLegend *legend = legendOf(rect);
-    const auto title = m_titles.find(rect);
-    const int width = rect->rect().width();
-    if (!legend || title == m_titles.end() || width <= 0)
-        return;
-    // Beside the title while both fit the rect's width; else under it, at the right (in a
-    // narrow dock the legend of a signal's rect hid its title, "rechter Greifer: Kraft").
-    const QCPItemText *text = title->second;
-    const int titleWidth = QFontMetrics(text->font()).horizontalAdvance(text->text()) +
-                           text->padding().left() + text->padding().right();
-    const QSize size = legend->minimumOuterSizeHint();
-    QCPLayoutInset *inset = rect->insetLayout();
-    const bool beside = titleWidth + 8 + size.width() <= width;
-    const auto placement = beside ? QCPLayoutInset::ipBorderAligned : QCPLayoutInset::ipFree;
-    const QRectF under(std::max(0.0, 1.0 - double(size.width()) / width),
-                       double(m_titleHeight) / std::max(1, rect->rect().height()), 0.0, 0.0);
-    if (inset->insetPlacement(0) == placement && (beside || inset->insetRect(0) == under))
-        return;
-    inset->setInsetPlacement(0, placement);
-    if (!beside)
-        inset->setInsetRect(0, under);
-    requestReplot(); // the inset is laid out at the next replot
+    for (const auto &plot : m_grippers)
+        m_spanOverlay->layoutLabels(plot->gripper, plot->forceRect);
 }
 
 void PlotPanel::fitToLayout()
 {
-    for (QCPAxisRect *rect : m_rects)
-        placeLegend(rect);
+    for (QCPAxisRect *rect : m_rects) {
+        if (placeLegend(rect, m_titles[rect], m_titleHeight))
+            requestReplot(); // the inset is laid out at the next replot
+    }
     // The layout has set up the axes' ticks for the old ranges: they are set up again for
     // the drawing that follows (the margins follow at the next replot).
     if (!fitValueAxes())
@@ -987,11 +544,13 @@ bool PlotPanel::fitValueAxes()
     for (auto &plot : m_grippers) {
         const double force = visibleTop(plot->sum, std::max(1.0, plot->thresholdTop));
         // Headroom above the data for the span labels too.
-        changed |= setValueRange(plot->forceRect, 0.0,
-                                 upperUnderHeader(plot->forceRect, 0.0, force, 0.3));
+        changed |=
+            setValueRange(plot->forceRect, 0.0,
+                          upperUnderHeader(plot->forceRect, m_titleHeight, 0.0, force, 0.3));
         const double count = visibleTop(plot->count, std::max(4.0, plot->countTop));
-        changed |= setValueRange(plot->countRect, 0.0,
-                                 std::ceil(upperUnderHeader(plot->countRect, 0.0, count, 0.1)));
+        changed |= setValueRange(
+            plot->countRect, 0.0,
+            std::ceil(upperUnderHeader(plot->countRect, m_titleHeight, 0.0, count, 0.1)));
     }
     for (auto &plot : m_signals) {
         // The data in view and the levels, whatever their sign and scale.
@@ -1010,20 +569,21 @@ bool PlotPanel::fitValueAxes()
             high += pad;
         }
         const double lower = low - 0.08 * (high - low);
-        changed |=
-            setValueRange(plot->rect, lower, upperUnderHeader(plot->rect, lower, high, 0.1));
+        changed |= setValueRange(plot->rect, lower,
+                                 upperUnderHeader(plot->rect, m_titleHeight, lower, high, 0.1));
     }
     for (auto &plot : m_devices) {
         // Normalised outputs keep a fixed 0..1 scale so devices compare at a glance; a
         // model with a wider range widens it (tracked as data come, not searched per frame:
         // sixteen channels at 1 kHz would cost more than drawing them).
         const double lower = plot->low - 0.06 * (plot->high - plot->low);
-        changed |= setValueRange(plot->rect, lower,
-                                 upperUnderHeader(plot->rect, lower, plot->high, 0.06));
+        changed |=
+            setValueRange(plot->rect, lower,
+                          upperUnderHeader(plot->rect, m_titleHeight, lower, plot->high, 0.06));
     }
     for (QCPAxisRect *rect : m_rects) {
         changed |= spaceValueTicks(rect);
-        changed |= nameLevels(rect);
+        changed |= nameLevels(rect, m_levelNames);
     }
     return changed;
 }
@@ -1035,74 +595,7 @@ void PlotPanel::setTimeRange(double lower, double upper)
         rect->axis(QCPAxis::atBottom)->setRange(lower, upper);
     m_syncingRange = false;
     fitValueAxes();
-    updateCursor();
-}
-
-void PlotPanel::layoutSpanLabels()
-{
-    for (const auto &plot : m_grippers) {
-        const QRect area = plot->forceRect->rect();
-        const QCPAxis *time = plot->forceRect->axis(QCPAxis::atBottom);
-        const QCPRange range = time->range();
-        // A span's label shows while the span does: from its begin, or from the view's left
-        // edge while it goes on; an ended span out of view takes it along.
-        std::vector<SpanView *> shown;
-        for (SpanView &view : m_spans) {
-            if (view.gripper != plot->gripper)
-                continue;
-            view.label->setVisible(false);
-            const bool inView =
-                view.begin <= range.upper && (view.active || view.end >= range.lower);
-            if (inView && area.height() > 0)
-                shown.push_back(&view);
-        }
-        std::stable_sort(shown.begin(), shown.end(),
-                         [](const SpanView *a, const SpanView *b) { return a->begin < b->begin; });
-        // In rows as tall as a label under the rect's title, in the upper part where the
-        // force curves leave room: each kind of message on its own row, so the labels read
-        // as lanes; a label that would cover another waits until it would not (its span is
-        // shaded anyway). A rect too short for a kind's row lends it the first free row. The
-        // legend's box is taken (under the title in a narrow rect).
-        std::vector<QRectF> taken;
-        if (const QCPLegend *legend = legendOf(plot->forceRect))
-            taken.push_back(QRectF(legend->outerRect()));
-        for (SpanView *view : shown) {
-            double x = std::max(view->begin, range.lower);
-            view->label->position->setCoords(x, 0.0);
-            QRectF box(view->label->topLeft->pixelPosition(),
-                       view->label->bottomRight->pixelPosition());
-            // A span begun near the right edge has its label end there, not cut off by it.
-            if (box.right() > area.right()) {
-                x = time->pixelToCoord(area.right() - box.width());
-                view->label->position->setCoords(x, 0.0);
-                box = QRectF(view->label->topLeft->pixelPosition(),
-                             view->label->bottomRight->pixelPosition());
-            }
-            const double rowHeight = box.height() + 1.0;
-            // Less the title's row; a squeezed rect still has the one under its title.
-            int rows = int(area.height() * 0.75 / rowHeight) - 1;
-            if (rows < 1 && area.height() >= 2 * rowHeight)
-                rows = 1;
-            std::vector<int> tries{view->row};
-            if (view->row >= rows) {
-                tries.clear();
-                for (int row = 0; row < rows; ++row)
-                    tries.push_back(row);
-            }
-            for (int row : tries) {
-                const QRectF at = box.translated(0.0, (row + 1) * rowHeight);
-                const auto overlaps = [&at](const QRectF &other) {
-                    return other.adjusted(-2.0, 0.0, 2.0, 0.0).intersects(at);
-                };
-                if (std::any_of(taken.begin(), taken.end(), overlaps))
-                    continue;
-                taken.push_back(at);
-                view->label->position->setCoords(x, (at.top() - area.top()) / area.height());
-                view->label->setVisible(true);
-                break;
-            }
-        }
-    }
+    m_cursor->refresh();
 }
 
 void PlotPanel::onTimeRangeChanged(const QCPRange &range)
@@ -1112,19 +605,8 @@ void PlotPanel::onTimeRangeChanged(const QCPRange &range)
     setTimeRange(range.lower, range.upper);
 }
 
-void PlotPanel::updateCursor()
+QString PlotPanel::readoutAt(double t) const
 {
-    const bool placed = !std::isnan(m_cursorTime);
-    for (QCPItemStraightLine *line : m_cursorLines) {
-        line->setVisible(placed);
-        if (placed)
-            moveTimeLine(line, m_cursorTime);
-    }
-    if (!placed || m_rects.empty()) {
-        m_readout->hide();
-        return;
-    }
-    const double t = m_cursorTime;
     QStringList lines;
     lines << tr("t = %1 s").arg(QLocale().toString(t, 'f', 3));
     for (const auto &plot : m_grippers) {
@@ -1158,67 +640,12 @@ void PlotPanel::updateCursor()
                                       QLocale().toString(frame->values[size_t(c)], 'f', 2));
         lines << tr("%1: %2").arg(info.name, values.join(QStringLiteral(", ")));
     }
-    m_readout->setText(lines.join(QLatin1Char('\n')));
-    m_readout->adjustSize();
-    placeReadout();
-}
-
-void PlotPanel::placeReadout()
-{
-    if (std::isnan(m_cursorTime) || m_rects.empty())
-        return;
-    const double t = m_cursorTime;
-    QCPAxis *time = m_rects.front()->axis(QCPAxis::atBottom);
-    const int x = int(time->coordToPixel(t));
-    // Right of the cursor, or left of it where it would cover the threshold names.
-    int left = x + 10;
-    if (left + m_readout->width() > m_rects.front()->right())
-        left = x - 10 - m_readout->width();
-    m_readout->move(std::max(0, left), m_rects.front()->top() + 2);
-    m_readout->setVisible(time->range().contains(t));
-}
-
-void PlotPanel::onMousePress(QMouseEvent *event)
-{
-    if (event->button() != Qt::LeftButton || m_rects.empty())
-        return;
-    const bool inside = std::any_of(m_rects.begin(), m_rects.end(), [event](QCPAxisRect *r) {
-        return r->rect().contains(event->pos());
-    });
-    if (!inside)
-        return;
-    // Live, a drag can only mean the cursor; paused, a plain drag pans and Shift picks the
-    // cursor. The plot sees the press after this signal, so switching drag off works now.
-    if (!m_paused || event->modifiers().testFlag(Qt::ShiftModifier)) {
-        m_draggingCursor = true;
-        m_plot->setInteraction(QCP::iRangeDrag, false);
-    }
-    placeCursorAt(event->pos().x());
-}
-
-void PlotPanel::onMouseMove(QMouseEvent *event)
-{
-    if (m_draggingCursor && event->buttons().testFlag(Qt::LeftButton))
-        placeCursorAt(event->pos().x());
-}
-
-void PlotPanel::onMouseRelease(QMouseEvent *)
-{
-    if (!m_draggingCursor)
-        return;
-    m_draggingCursor = false;
-    updateInteractions();
-}
-
-void PlotPanel::placeCursorAt(int pixelX)
-{
-    m_cursorTime = m_rects.front()->axis(QCPAxis::atBottom)->pixelToCoord(pixelX);
-    updateCursor();
-    requestReplot();
+    return lines.join(QLatin1Char('\n'));
 }
 
 void PlotPanel::updateInteractions()
 {
+    m_cursor->setPaused(m_paused);
     m_plot->setInteractions(m_paused ? QCP::iRangeDrag | QCP::iRangeZoom : QCP::Interactions());
 }
 
@@ -1266,8 +693,7 @@ void PlotPanel::setCursorTime(double t)
         if (!range.contains(t))
             setTimeRange(t - range.size() / 2, t + range.size() / 2);
     }
-    m_cursorTime = t;
-    updateCursor();
+    m_cursor->setTime(t);
     requestReplot();
 }
 

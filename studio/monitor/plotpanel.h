@@ -26,6 +26,15 @@ class QToolButton;
 
 namespace semhap {
 
+namespace plotlayout {
+struct LevelName;
+}
+struct DevicePlot;
+struct GripperPlot;
+class PlotCursor;
+struct SignalPlot;
+class SpanOverlay;
+
 /**
  * The studio's live plots: per gripper its fingertip forces and contact count with the
  * detectors' thresholds and the messages as shaded spans, each frame signal a threshold
@@ -48,7 +57,7 @@ public:
     /** True while the view is frozen for inspection. */
     bool isPaused() const { return m_paused; }
     /** The cursor's time, or NaN while there is none. */
-    double cursorTime() const { return m_cursorTime; }
+    double cursorTime() const;
 
     /**
      * Writes the visible time range as CSV (`t`, then one column per plotted series) so a
@@ -69,11 +78,6 @@ public slots:
     void setCursorTime(double t);
 
 private:
-    struct GripperPlot;
-    struct SignalPlot;
-    struct DevicePlot;
-    struct SpanView;
-
     void rebuild();
     void clearPlots();
     void addGripper(Gripper gripper);
@@ -81,8 +85,6 @@ private:
     void addSignals(Gripper gripper);
     void addDevice(int device);
     QCPAxisRect *addRect(const QString &label, int stretch);
-    QCPGraph *addGraph(QCPAxisRect *rect, const QString &id, const QString &name,
-                       const QColor &color, double width);
     void addThreshold(QCPAxisRect *rect, const QString &id, const QString &name, double value,
                       const QColor &color, Qt::PenStyle style = Qt::DashLine);
     /** The detectors' levels of `quantity` on the gripper's force or contacts rect. */
@@ -95,10 +97,6 @@ private:
     void requestReplot();
     void appendNew();
     void syncSpans();
-    /** Shades `span` on `rects`; its label goes on `labelRect` (laid out when a force rect). */
-    SpanView makeSpanView(const MessageSpan &span, const std::vector<QCPAxisRect *> &rects,
-                          QCPAxisRect *labelRect);
-    void placeSpan(const SpanView &view, const MessageSpan &span);
     /** Shows the labels of the spans in view, none over another (the pixels are laid out). */
     void layoutSpanLabels();
     /** Holds the plot as high as its rects need, so the panel scrolls instead (afterLayout). */
@@ -107,29 +105,10 @@ private:
     bool fitValueAxes();
     /** Fits them again once a layout has set the rects' pixels. */
     void fitToLayout();
-    /**
-     * The upper end of a value range from `lower` that shows `top` below the rect's title and
-     * legend, with at least `headroom` (a part of the data's span) above it.
-     */
-    double upperUnderHeader(QCPAxisRect *rect, double lower, double top, double headroom) const;
-    /** As many value ticks on the rect as its height lets stand apart (true: changed). */
-    static bool spaceValueTicks(QCPAxisRect *rect);
-    /**
-     * Names the levels beside the rect, on its right axis: levels closer than a label's
-     * height share one label, a line each, so no name is drawn over another (true: changed).
-     */
-    bool nameLevels(QCPAxisRect *rect);
-    /** Moves the legend under the title where the two do not fit side by side. */
-    void placeLegend(QCPAxisRect *rect);
     void setTimeRange(double lower, double upper);
     void onTimeRangeChanged(const QCPRange &range);
-    void updateCursor();
-    void placeReadout();
-
-    void onMousePress(QMouseEvent *event);
-    void onMouseMove(QMouseEvent *event);
-    void onMouseRelease(QMouseEvent *event);
-    void placeCursorAt(int pixelX);
+    /** What the cursor reads at `t`: each plot's latest value at or before it. */
+    QString readoutAt(double t) const;
     void updateInteractions();
     void exportCsvDialog();
     void exportPngDialog();
@@ -139,33 +118,24 @@ private:
     QToolButton *m_pauseButton = nullptr;
     QToolButton *m_liveButton = nullptr;
     QSpinBox *m_windowSpin = nullptr;
-    QLabel *m_readout = nullptr;
+    PlotCursor *m_cursor = nullptr;
     QCPMarginGroup *m_marginGroup = nullptr;
 
     std::vector<QCPAxisRect *> m_rects;
-    /** A level's name beside its rect (nameLevels() lays them out). */
-    struct LevelName
-    {
-        QCPAxisRect *rect;
-        double value;
-        QString name;
-    };
-    std::vector<LevelName> m_levelNames;
+    std::vector<plotlayout::LevelName> m_levelNames; ///< laid out by plotlayout::nameLevels
+
     /** Per rect: its title, whose width decides where the legend goes. */
     std::map<QCPAxisRect *, QCPItemText *> m_titles;
     std::vector<std::unique_ptr<GripperPlot>> m_grippers;
     std::vector<std::unique_ptr<SignalPlot>> m_signals;
     std::vector<std::unique_ptr<DevicePlot>> m_devices;
-    std::vector<SpanView> m_spans;
-    std::vector<QCPItemStraightLine *> m_cursorLines;
+    std::unique_ptr<SpanOverlay> m_spanOverlay;
     QTimer m_replotTimer;
     QElapsedTimer m_sinceReplot;
 
     double m_windowSeconds = 10.0;
     int m_titleHeight = 0; ///< a rect's title's pixels, over the top of the rect
     bool m_paused = false;
-    double m_cursorTime;
-    bool m_draggingCursor = false;
     bool m_syncingRange = false;
 };
 

@@ -6,15 +6,8 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QStandardPaths>
 
 namespace semhap {
-
-QString userPatternFolder()
-{
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
-           QStringLiteral("/patterns");
-}
 
 QList<UserPattern> userPatterns(const QString &folder)
 {

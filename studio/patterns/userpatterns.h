@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "studiofolders.h"
+
 #include <QList>
 #include <QString>
 
 namespace semhap {
-
-/** Where the designer saves the user's patterns: `<app data>/patterns`. */
-QString userPatternFolder();
 
 /** A pattern the user saved: its name and its file, `<folder>/<name>.json`. */
 struct UserPattern
@@ -20,7 +19,7 @@ struct UserPattern
  * The user's saved patterns in `folder`, by name, so a router node can offer them by name
  * and store their file as the core reads it (RouterGraph::pattern).
  */
-QList<UserPattern> userPatterns(const QString &folder = userPatternFolder());
+QList<UserPattern> userPatterns(const QString &folder = StudioFolders::patterns());
 
 /** The file a pattern named `name` is saved as in `folder`: the name is the file's. */
 QString userPatternPath(const QString &folder, const QString &name);

@@ -115,7 +115,7 @@ QString waveformSummary(const QJsonObject &node)
 
 WaveformDesigner::WaveformDesigner(DeviceManager *devices, PatternDocument *document,
                                    QWidget *parent)
-    : QWidget(parent), m_devices(devices), m_userFolder(userPatternFolder()),
+    : QWidget(parent), m_devices(devices), m_userFolder(StudioFolders::patterns()),
       m_document(document ? document : new PatternDocument(this))
 {
     setObjectName(QStringLiteral("waveformDesigner"));

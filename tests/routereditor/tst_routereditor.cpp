@@ -19,6 +19,7 @@
 #include "routerwireitem.h"
 #include "runhistory.h"
 #include "studio.h"
+#include "studiofolders.h"
 #include "userpatterns.h"
 #include "workspace.h"
 
@@ -785,8 +786,8 @@ void TestRouterEditor::opensAnOldSpelling()
 void TestRouterEditor::offersTheDesignersPatterns()
 {
     QStandardPaths::setTestModeEnabled(true);
-    QVERIFY(QDir().mkpath(userPatternFolder()));
-    const QString path = userPatternFolder() + "/my.slipwarning.json";
+    QVERIFY(QDir().mkpath(StudioFolders::patterns()));
+    const QString path = StudioFolders::patterns() + "/my.slipwarning.json";
     QFile::remove(path);
     QVERIFY(QFile::copy(SEMHAP_RESOURCES "/patterns/vib.geiger.json", path));
     Fixture f;

@@ -16,6 +16,7 @@
 #include "routereditor.h"
 #include "simviewport.h"
 #include "studio.h"
+#include "studiofolders.h"
 #include "studiotesting.h"
 #include "userpatterns.h"
 #include "waveformdesigner.h"
@@ -230,8 +231,8 @@ void TestStudioFiles::fileDialogsStartWhereTheirKindLives()
     MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     window.engine().pause();
-    const QString expected = folder == "sessions"   ? PreferencesDialog::sessionsFolder()
-                             : folder == "patterns" ? userPatternFolder()
+    const QString expected = folder == "sessions"   ? StudioFolders::sessions()
+                             : folder == "patterns" ? StudioFolders::patterns()
                                                     : home.documents();
     QCOMPARE(dialogFolder([&] { openDialog(window, how); }), QDir(expected).absolutePath());
 }
@@ -278,7 +279,7 @@ void TestStudioFiles::routerFollowsARenamedPattern()
     MainWindow &window = *studio->window();
     QVERIFY(window.isActiveWindow());
     WaveformDesigner *designer = window.waveformDesigner();
-    QCOMPARE(designer->userFolder(), userPatternFolder());
+    QCOMPARE(designer->userFolder(), StudioFolders::patterns());
     window.findChild<QDockWidget *>("patternsDock")->raise();
     designer->openBuiltin("air.squeeze");
     designer->duplicate();
@@ -303,7 +304,7 @@ void TestStudioFiles::routerFollowsARenamedPattern()
 
     designer->document()->setValue("/name", "my.warning");
     clickDesignerAction(window, "savePattern");
-    const QString renamed = userPatternPath(userPatternFolder(), "my.warning");
+    const QString renamed = userPatternPath(StudioFolders::patterns(), "my.warning");
     QVERIFY(QFileInfo::exists(renamed));
     QVERIFY(!QFileInfo::exists(old));
     const RouterGraph &graph = editor->graph();

@@ -20,6 +20,7 @@
 #include "sessionreplay.h"
 #include "simviewport.h"
 #include "statusbar.h"
+#include "studiofolders.h"
 #include "widgetchecks.h"
 #include "workspace.h"
 #include "world.h"
@@ -264,7 +265,7 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
         auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
         QVERIFY(dialog);
         QLineEdit *edit = dialog->sessionsFolderEdit();
-        QCOMPARE(edit->text(), QDir::toNativeSeparators(PreferencesDialog::sessionsFolder()));
+        QCOMPARE(edit->text(), QDir::toNativeSeparators(StudioFolders::sessions()));
         edit->setFocus();
         edit->selectAll();
         QTest::keyClicks(edit, folder);
@@ -272,7 +273,7 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
         QTest::keyClick(edit, Qt::Key_Return);
     });
     window.findChild<QAction *>("preferencesAction")->trigger();
-    QCOMPARE(PreferencesDialog::sessionsFolder(), folder);
+    QCOMPARE(StudioFolders::sessions(), folder);
 
     QTest::keyClicks(window.sessionNameEdit(), "p07/baseline");
     QTest::keyClicks(window.notesEdit(), "participant 7");
@@ -526,7 +527,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().isRecording());
     const QString path = window.engine().recordingPath();
     QVERIFY2(QFileInfo(path).fileName().startsWith("live-C3-"), qPrintable(path));
-    QCOMPARE(QFileInfo(path).absolutePath(), PreferencesDialog::sessionsFolder());
+    QCOMPARE(QFileInfo(path).absolutePath(), StudioFolders::sessions());
     QFile trace(SEMHAP_RESOURCES "/traces/demo.jsonl");
     QVERIFY(trace.open(QIODevice::ReadOnly));
     QUdpSocket sender;
@@ -735,7 +736,7 @@ void TestStudioSessions::opensARobotRecording()
     QVERIFY(openWindow(window));
     const QString recording = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp-zstd.mcap");
     const QString map = QStringLiteral(SEMHAP_INTEROP_DIR "/grasp.topics.json");
-    const QString session = QDir(PreferencesDialog::sessionsFolder()).filePath("grasp-zstd.db");
+    const QString session = QDir(StudioFolders::sessions()).filePath("grasp-zstd.db");
     QFile::remove(session);
     bool askedForTheMap = false;
     QTimer::singleShot(0, [&] {

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "filedialogs.h"
 
-#include "preferencesdialog.h"
-#include "userpatterns.h"
+#include "studiofolders.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -48,9 +47,9 @@ QString FileDialogs::startFolder(FileKind kind)
 {
     QString home;
     if (kind == FileKind::Session)
-        home = PreferencesDialog::sessionsFolder();
+        home = StudioFolders::sessions();
     else if (kind == FileKind::Pattern)
-        home = userPatternFolder();
+        home = StudioFolders::patterns();
     if (!home.isEmpty()) {
         QDir().mkpath(home); // the studio's own folders: a dialog opens in them even when new
         return home;
