@@ -792,26 +792,6 @@
         <translation>&lt;p&gt;&lt;b&gt;semhap studio&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Semantische haptische Rückmeldung für die Fernsteuerung von Robotern: Kontaktkräfte werden zu Bestätigungen und Ausnahmen, die als Muster auf Armbänder geleitet werden.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
-        <translation>Simulierte Sekunden pro echter Sekunde (Strg+- / Strg++)</translation>
-    </message>
-    <message>
-        <source>%1× speed</source>
-        <translation>%1× Tempo</translation>
-    </message>
-    <message>
-        <source>Scene:</source>
-        <translation>Szene:</translation>
-    </message>
-    <message>
-        <source>Router:</source>
-        <translation>Router:</translation>
-    </message>
-    <message>
-        <source>Which feedback design turns events into patterns</source>
-        <translation>Das Rückmeldungsdesign, das Ereignisse in Muster umsetzt</translation>
-    </message>
-    <message>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
@@ -892,10 +872,6 @@
         <translation>Szene %1 mit Router %2 konnte nicht geladen werden</translation>
     </message>
     <message>
-        <source>Simulation</source>
-        <translation>Simulation</translation>
-    </message>
-    <message>
         <source>Patterns</source>
         <translation>Muster</translation>
     </message>
@@ -918,14 +894,6 @@
     <message>
         <source>Open session</source>
         <translation>Sitzung öffnen</translation>
-    </message>
-    <message>
-        <source>Session notes</source>
-        <translation>Notizen</translation>
-    </message>
-    <message>
-        <source>Kept with the next recording (participant, condition, …)</source>
-        <translation>Wird mit der nächsten Aufnahme gespeichert (Versuchsperson, Bedingung, …)</translation>
     </message>
     <message>
         <source>Replay</source>
@@ -1019,18 +987,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <source>Record the run into a new session in the sessions folder (Ctrl+Shift+R); again to stop</source>
         <translation>Den Lauf in eine neue Sitzung im Sitzungsordner aufzeichnen (Strg+Umschalt+R); erneut zum Beenden</translation>
     </message>
-    <message>
-        <source>Session name</source>
-        <translation>Sitzungsname</translation>
-    </message>
-    <message>
-        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
-        <translation>Benennt die Datei der nächsten Aufzeichnung (leer: Szene, Router und Zeit); Datei → Einstellungen legt fest, wohin sie geht</translation>
-    </message>
-    <message>
-        <source>The task to simulate, or a live rig&apos;s frames</source>
-        <translation>Die zu simulierende Aufgabe oder die Frames eines Live-Rigs</translation>
-    </message>
     <message numerus="yes">
         <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
         <translation>
@@ -1115,22 +1071,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Letztes fehlerhaftes Datagramm: %1</translation>
     </message>
     <message>
-        <source>Scene&apos;s own</source>
-        <translation>Eigene der Szene</translation>
-    </message>
-    <message>
-        <source>Other file…</source>
-        <translation>Andere Datei…</translation>
-    </message>
-    <message>
-        <source>Open gripper adapter</source>
-        <translation>Greifer-Adapter öffnen</translation>
-    </message>
-    <message>
-        <source>Gripper adapters (*.json)</source>
-        <translation>Greifer-Adapter (*.json)</translation>
-    </message>
-    <message>
         <source>%1 with %2</source>
         <translation>%1 mit %2</translation>
     </message>
@@ -1143,94 +1083,8 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>Greifer</translation>
     </message>
     <message>
-        <source>Gripper: %1
-The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
-        <translation>Greifer: %1
-Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adapters</translation>
-    </message>
-    <message>
-        <source>the scene&apos;s own</source>
-        <translation>die eigenen der Szene</translation>
-    </message>
-    <message>
-        <source>New study…</source>
-        <translation>Neue Studie…</translation>
-    </message>
-    <message>
-        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
-        <translation>Eine Studie nach einem Protokoll beginnen: Versuchspersonen, ihre Reihenfolgen der Bedingungen, zeitlich begrenzte Durchgänge und Fragebögen</translation>
-    </message>
-    <message>
-        <source>Open study…</source>
-        <translation>Studie öffnen…</translation>
-    </message>
-    <message>
-        <source>Close study</source>
-        <translation>Studie schließen</translation>
-    </message>
-    <message>
         <source>Study</source>
         <translation>Studie</translation>
-    </message>
-    <message>
-        <source>Stud&amp;y</source>
-        <translation>Stud&amp;ie</translation>
-    </message>
-    <message>
-        <source>New study: its protocol</source>
-        <translation>Neue Studie: ihr Protokoll</translation>
-    </message>
-    <message>
-        <source>semhap study protocols (*.json)</source>
-        <translation>semhap-Studienprotokolle (*.json)</translation>
-    </message>
-    <message>
-        <source>New study: where to keep it</source>
-        <translation>Neue Studie: wo sie gespeichert wird</translation>
-    </message>
-    <message>
-        <source>semhap studies (*.db)</source>
-        <translation>semhap-Studien (*.db)</translation>
-    </message>
-    <message>
-        <source>Could not create the study</source>
-        <translation>Die Studie konnte nicht angelegt werden</translation>
-    </message>
-    <message>
-        <source>Open study</source>
-        <translation>Studie öffnen</translation>
-    </message>
-    <message>
-        <source>semhap studies (*.db);;All files (*)</source>
-        <translation>semhap-Studien (*.db);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>Could not open the study %1</source>
-        <translation>Die Studie %1 konnte nicht geöffnet werden</translation>
-    </message>
-    <message>
-        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
-        <translation>„%1“ läuft. Wenn Sie die Studie schließen, wird das abgebrochen: Es zählt nicht und ist wieder an der Reihe, wenn die Studie wieder geöffnet wird.</translation>
-    </message>
-    <message>
-        <source>Export results…</source>
-        <translation>Ergebnisse exportieren…</translation>
-    </message>
-    <message>
-        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
-        <translation>Die Ergebnisse der Studie in einen Ordner schreiben: measures.csv (tidy, für R oder pandas), trials.csv, answers.csv und den Bericht der Auswertung mit einem Boxplot je Messgröße</translation>
-    </message>
-    <message>
-        <source>Export the study&apos;s results into</source>
-        <translation>Ergebnisse der Studie exportieren nach</translation>
-    </message>
-    <message>
-        <source>Could not export the study&apos;s results</source>
-        <translation>Die Ergebnisse der Studie ließen sich nicht exportieren</translation>
-    </message>
-    <message>
-        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
-        <translation>%1 Dateien nach %2 exportiert: measures.csv, trials.csv, answers.csv und %3/report.md</translation>
     </message>
     <message>
         <source>Could not load router %1</source>
@@ -1305,10 +1159,6 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Cannot publish to Foxglove on port %1: %2</source>
         <translation>Veröffentlichen für Foxglove auf Port %1 nicht möglich: %2</translation>
-    </message>
-    <message>
-        <source>Live rig…</source>
-        <translation>Live-Rig…</translation>
     </message>
 </context>
 <context>
@@ -3011,6 +2861,99 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     </message>
 </context>
 <context>
+    <name>semhap::RunToolBar</name>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
+        <translation>Simulierte Sekunden pro echter Sekunde (Strg+- / Strg++)</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>Echtzeit</translation>
+    </message>
+    <message>
+        <source>%1× speed</source>
+        <translation>%1× Tempo</translation>
+    </message>
+    <message>
+        <source>Scene:</source>
+        <translation>Szene:</translation>
+    </message>
+    <message>
+        <source>The task to simulate, or a live rig&apos;s frames</source>
+        <translation>Die zu simulierende Aufgabe oder die Frames eines Live-Rigs</translation>
+    </message>
+    <message>
+        <source>Live rig…</source>
+        <translation>Live-Rig…</translation>
+    </message>
+    <message>
+        <source>Router:</source>
+        <translation>Router:</translation>
+    </message>
+    <message>
+        <source>Session name</source>
+        <translation>Sitzungsname</translation>
+    </message>
+    <message>
+        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
+        <translation>Benennt die Datei der nächsten Aufzeichnung (leer: Szene, Router und Zeit); Datei → Einstellungen legt fest, wohin sie geht</translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>Kept with the next recording (participant, condition, …)</source>
+        <translation>Wird mit der nächsten Aufnahme gespeichert (Versuchsperson, Bedingung, …)</translation>
+    </message>
+    <message>
+        <source>Gripper</source>
+        <translation>Greifer</translation>
+    </message>
+    <message>
+        <source>Scene&apos;s own</source>
+        <translation>Eigene der Szene</translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation>Andere Datei…</translation>
+    </message>
+    <message>
+        <source>Open gripper adapter</source>
+        <translation>Greifer-Adapter öffnen</translation>
+    </message>
+    <message>
+        <source>Gripper adapters (*.json)</source>
+        <translation>Greifer-Adapter (*.json)</translation>
+    </message>
+    <message>
+        <source>Gripper: %1
+The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
+        <translation>Greifer: %1
+Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adapters</translation>
+    </message>
+    <message>
+        <source>the scene&apos;s own</source>
+        <translation>die eigenen der Szene</translation>
+    </message>
+    <message>
+        <source>Which feedback design turns events into patterns</source>
+        <translation>Das Rückmeldungsdesign, das Ereignisse in Muster umsetzt</translation>
+    </message>
+</context>
+<context>
     <name>semhap::SessionReplay</name>
     <message>
         <source>Replay: a live rig&apos;s session has no scene</source>
@@ -3245,6 +3188,85 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>%1: cannot create the folder</source>
         <translation>%1: Ordner kann nicht angelegt werden</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyMenu</name>
+    <message>
+        <source>Stud&amp;y</source>
+        <translation>Stud&amp;ie</translation>
+    </message>
+    <message>
+        <source>New study…</source>
+        <translation>Neue Studie…</translation>
+    </message>
+    <message>
+        <source>Open study…</source>
+        <translation>Studie öffnen…</translation>
+    </message>
+    <message>
+        <source>Export results…</source>
+        <translation>Ergebnisse exportieren…</translation>
+    </message>
+    <message>
+        <source>Close study</source>
+        <translation>Studie schließen</translation>
+    </message>
+    <message>
+        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
+        <translation>Eine Studie nach einem Protokoll beginnen: Versuchspersonen, ihre Reihenfolgen der Bedingungen, zeitlich begrenzte Durchgänge und Fragebögen</translation>
+    </message>
+    <message>
+        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
+        <translation>Die Ergebnisse der Studie in einen Ordner schreiben: measures.csv (tidy, für R oder pandas), trials.csv, answers.csv und den Bericht der Auswertung mit einem Boxplot je Messgröße</translation>
+    </message>
+    <message>
+        <source>New study: its protocol</source>
+        <translation>Neue Studie: ihr Protokoll</translation>
+    </message>
+    <message>
+        <source>semhap study protocols (*.json)</source>
+        <translation>semhap-Studienprotokolle (*.json)</translation>
+    </message>
+    <message>
+        <source>New study: where to keep it</source>
+        <translation>Neue Studie: wo sie gespeichert wird</translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db)</source>
+        <translation>semhap-Studien (*.db)</translation>
+    </message>
+    <message>
+        <source>Could not create the study</source>
+        <translation>Die Studie konnte nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Open study</source>
+        <translation>Studie öffnen</translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db);;All files (*)</source>
+        <translation>semhap-Studien (*.db);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Could not open the study %1</source>
+        <translation>Die Studie %1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Export the study&apos;s results into</source>
+        <translation>Ergebnisse der Studie exportieren nach</translation>
+    </message>
+    <message>
+        <source>Could not export the study&apos;s results</source>
+        <translation>Die Ergebnisse der Studie ließen sich nicht exportieren</translation>
+    </message>
+    <message>
+        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
+        <translation>%1 Dateien nach %2 exportiert: measures.csv, trials.csv, answers.csv und %3/report.md</translation>
+    </message>
+    <message>
+        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
+        <translation>„%1“ läuft. Wenn Sie die Studie schließen, wird das abgebrochen: Es zählt nicht und ist wieder an der Reihe, wenn die Studie wieder geöffnet wird.</translation>
     </message>
 </context>
 <context>

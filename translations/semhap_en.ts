@@ -792,26 +792,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1× speed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Scene:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Router:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Which feedback design turns events into patterns</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Plots</source>
         <translation type="unfinished"></translation>
     </message>
@@ -892,10 +872,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simulation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Patterns</source>
         <translation type="unfinished"></translation>
     </message>
@@ -917,14 +893,6 @@
     </message>
     <message>
         <source>Open session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Session notes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Kept with the next recording (participant, condition, …)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1018,18 +986,6 @@ The rig draws its own scene.</source>
         <source>Record the run into a new session in the sessions folder (Ctrl+Shift+R); again to stop</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Session name</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The task to simulate, or a live rig&apos;s frames</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n row(s) of the session break the stream rules and were skipped (semhap replay lists them)</source>
         <translation type="unfinished">
@@ -1112,22 +1068,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Scene&apos;s own</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Other file…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open gripper adapter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Gripper adapters (*.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 with %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1140,92 +1080,7 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Gripper: %1
-The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the scene&apos;s own</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New study…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open study…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Close study</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Study</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stud&amp;y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New study: its protocol</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>semhap study protocols (*.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New study: where to keep it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>semhap studies (*.db)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not create the study</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open study</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>semhap studies (*.db);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not open the study %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export results…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export the study&apos;s results into</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not export the study&apos;s results</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1300,10 +1155,6 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Cannot publish to Foxglove on port %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live rig…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3003,6 +2854,98 @@ Please tell the experimenter that you are done.</source>
     </message>
 </context>
 <context>
+    <name>semhap::RunToolBar</name>
+    <message>
+        <source>Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second (Ctrl+- / Ctrl++)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1× speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The task to simulate, or a live rig&apos;s frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Router:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Names the next recording&apos;s file (empty: scene, router and time); File → Preferences says where it goes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kept with the next recording (participant, condition, …)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene&apos;s own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open gripper adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper adapters (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gripper: %1
+The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scene&apos;s own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which feedback design turns events into patterns</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::SessionReplay</name>
     <message>
         <source>Replay: a live rig&apos;s session has no scene</source>
@@ -3236,6 +3179,85 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>%1: cannot create the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::StudyMenu</name>
+    <message>
+        <source>Stud&amp;y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New study…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open study…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export results…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start a study from a protocol: participants, their orders of conditions, timed trials and questionnaires</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the study&apos;s results into a folder: measures.csv (tidy, for R or pandas), trials.csv, answers.csv, and the analysis&apos; report with a box plot per measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New study: its protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap study protocols (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New study: where to keep it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not create the study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap studies (*.db);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open the study %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the study&apos;s results into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the study&apos;s results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 files into %2: measures.csv, trials.csv, answers.csv and %3/report.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 runs. Closing the study aborts it: it will not count and is due again when the study is opened again.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,6 +4,7 @@
 #include "colors.h"
 #include "devicemanager.h"
 #include "devicespanel.h"
+#include "drawnicon.h"
 #include "eventlogpanel.h"
 #include "filedialogs.h"
 #include "gamepadinput.h"
@@ -22,6 +23,7 @@
 #include "routerdocument.h"
 #include "routereditor.h"
 #include "routergraph.h"
+#include "runtoolbar.h"
 #include "scenelibrary.h"
 #include "sessionreplay.h"
 #include "simviewport.h"
@@ -30,7 +32,7 @@
 #include "studio.h"
 #include "studiofolders.h"
 #include "studydocument.h"
-#include "studyexport.h"
+#include "studymenu.h"
 #include "studypanel.h"
 #include "taskmonitor.h"
 #include "teleopsettings.h"
@@ -75,41 +77,8 @@ namespace semhap {
 
 namespace {
 
-/** The speeds the toolbar offers, slowest first; real time is the default. */
-constexpr double Speeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0};
-constexpr int RealTimeIndex = 3;
-constexpr int SpeedCount = int(sizeof(Speeds) / sizeof(Speeds[0]));
-
-/** The scene picker's entry for a live rig (not a scene file or name). */
-const QString LiveRigEntry = QStringLiteral("semhap:live-rig");
-/** The Gripper menu's entry that asks for an adapter file (not an adapter's name). */
-const QString OtherGripperEntry = QStringLiteral("semhap:other-gripper");
-
-/** Marks a router picker entry that names what a replay shows, not a router to load. */
-constexpr int ShownByReplayRole = Qt::UserRole + 1;
-
-/**
- * The router picker's widest name, in average characters ("mine-v2.json" fits): what the
- * top toolbar has room for at 1280 px in German with every button and field whole.
- */
-constexpr int RouterNameChars = 14;
-
 /** Layouts saved by another version of the docks are not restored. */
 constexpr int LayoutVersion = 3;
-
-/** A 32×32 icon of filled shapes (no outlines) that `draw` paints. */
-QIcon drawnIcon(const std::function<void(QPainter &)> &draw)
-{
-    QPixmap pixmap(32, 32);
-    pixmap.fill(Qt::transparent);
-    {
-        QPainter painter(&pixmap);
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setPen(Qt::NoPen);
-        draw(painter);
-    }
-    return QIcon(pixmap);
-}
 
 /** The record button's red dot. */
 QIcon recordIcon()
@@ -117,24 +86,6 @@ QIcon recordIcon()
     return drawnIcon([](QPainter &painter) {
         painter.setBrush(colors::Error);
         painter.drawEllipse(QRectF(6, 6, 20, 20));
-    });
-}
-
-/**
- * The Gripper menu's button: a parallel gripper holding a cube, its jaws blue when a gripper
- * adapter's model takes the place of the scene's own.
- */
-QIcon gripperIcon(bool adapter)
-{
-    return drawnIcon([adapter](QPainter &painter) {
-        painter.setBrush(colors::Text);
-        painter.drawRect(QRectF(13, 2, 6, 5)); // the wrist
-        painter.setBrush(adapter ? colors::Confirmation : colors::Text);
-        painter.drawRect(QRectF(4, 7, 24, 5));  // the palm
-        painter.drawRect(QRectF(4, 12, 5, 17)); // the jaws
-        painter.drawRect(QRectF(23, 12, 5, 17));
-        painter.setBrush(colors::Border);
-        painter.drawRect(QRectF(11, 17, 10, 10)); // the cube
     });
 }
 
@@ -276,7 +227,7 @@ bool MainWindow::openRun(const RunOptions &options, const QString &what)
                 : tr("Could not load scene %1 with gripper %2 and router %3")
                       .arg(options.scene, gripper, options.router),
             error);
-        syncPickers();
+        m_runToolBar->sync(m_engine);
         return false;
     }
     m_routerEditor->forgetApplied(); // the run loaded its router from the file or preset
@@ -331,18 +282,16 @@ void MainWindow::createActions()
     });
     m_slowerAction = action(tr("Slower"), QStringLiteral("slowerAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_Minus));
-    connect(m_slowerAction, &QAction::triggered, this,
-            [this] { setSpeedIndex(m_speedPicker->currentIndex() - 1); });
+    connect(m_slowerAction, &QAction::triggered, this, [this] { m_runToolBar->stepSpeed(-1); });
     m_fasterAction = action(tr("Faster"), QStringLiteral("fasterAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_Plus));
     // Ctrl+= too: the + key's own face on most keyboards, pressed without Shift.
     m_fasterAction->setShortcuts(
         {QKeySequence(Qt::CTRL | Qt::Key_Plus), QKeySequence(Qt::CTRL | Qt::Key_Equal)});
-    connect(m_fasterAction, &QAction::triggered, this,
-            [this] { setSpeedIndex(m_speedPicker->currentIndex() + 1); });
+    connect(m_fasterAction, &QAction::triggered, this, [this] { m_runToolBar->stepSpeed(+1); });
     m_realTimeAction = action(tr("Real time"), QStringLiteral("realTimeAction"),
                               QKeySequence(Qt::CTRL | Qt::Key_0));
-    connect(m_realTimeAction, &QAction::triggered, this, [this] { setSpeedIndex(RealTimeIndex); });
+    connect(m_realTimeAction, &QAction::triggered, this, [this] { m_runToolBar->pickRealTime(); });
 
     // Stop-all works from anywhere in the application, whatever has the focus.
     m_stopAllAction = action(tr("Stop all"), QStringLiteral("stopAllAction"), Qt::Key_Escape);
@@ -381,14 +330,8 @@ void MainWindow::createActions()
         sceneOptions.gripper = m_engine.options().sceneOptions.gripper;
         loadScene(file, sceneOptions);
     });
-    m_gripperMenu = new QMenu(this);
-    m_gripperMenu->setObjectName(QStringLiteral("gripperMenu"));
-    // Filled as it opens: an adapter copied into the gripper folder shows without a restart.
-    connect(m_gripperMenu, &QMenu::aboutToShow, this, &MainWindow::fillGripperMenu);
     m_gripperAction = new QAction(tr("Gripper"), this);
     m_gripperAction->setObjectName(QStringLiteral("gripperAction"));
-    m_gripperAction->setMenu(m_gripperMenu);
-    m_gripperAction->setIcon(gripperIcon(false));
     m_openRouterAction = action(tr("Open router…"), QStringLiteral("openRouterAction"),
                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     connect(m_openRouterAction, &QAction::triggered, this, [this] {
@@ -426,19 +369,11 @@ void MainWindow::createActions()
         if (dialog.exec() == QDialog::Accepted)
             openLiveRig(dialog.options());
     });
-    m_newStudyAction = action(tr("New study…"), QStringLiteral("newStudyAction"), {});
-    m_newStudyAction->setToolTip(tr("Start a study from a protocol: participants, their orders "
-                                    "of conditions, timed trials and questionnaires"));
-    connect(m_newStudyAction, &QAction::triggered, this, &MainWindow::newStudy);
-    m_openStudyAction = action(tr("Open study…"), QStringLiteral("openStudyAction"), {});
-    connect(m_openStudyAction, &QAction::triggered, this, &MainWindow::openStudy);
-    m_closeStudyAction = action(tr("Close study"), QStringLiteral("closeStudyAction"), {});
-    connect(m_closeStudyAction, &QAction::triggered, this, &MainWindow::closeStudy);
-    m_exportStudyAction = action(tr("Export results…"), QStringLiteral("exportStudyAction"), {});
-    m_exportStudyAction->setToolTip(
-        tr("Write the study's results into a folder: measures.csv (tidy, for R or pandas), "
-           "trials.csv, answers.csv, and the analysis' report with a box plot per measure"));
-    connect(m_exportStudyAction, &QAction::triggered, this, &MainWindow::exportStudy);
+    // The study feature brings its own actions (File → Study).
+    m_studyMenu = new StudyMenu(m_workspace.study(), this);
+    connect(m_studyMenu, &StudyMenu::problem, this, &MainWindow::showError);
+    connect(m_studyMenu, &StudyMenu::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     m_preferencesAction = action(tr("Preferences…"), QStringLiteral("preferencesAction"),
                                  QKeySequence(Qt::CTRL | Qt::Key_Comma));
     // Ctrl+, everywhere (Linux desktops define no standard key); the platform's own too.
@@ -465,107 +400,27 @@ void MainWindow::createActions()
 
 void MainWindow::createToolBar()
 {
-    QToolBar *bar = addToolBar(tr("Simulation"));
-    bar->setObjectName(QStringLiteral("runToolBar"));
-    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    bar->addAction(m_runAction);
-    bar->addAction(m_stepAction);
-    bar->addAction(m_resetAction);
-    // Step and Reset go by their players' icons (their tooltips name them): the room is the
-    // session name's and notes', in German too.
-    for (QAction *action : {m_stepAction, m_resetAction}) {
-        if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(action)))
-            button->setToolButtonStyle(Qt::ToolButtonIconOnly);
-    }
-    // Run and Pause take the same room: the toolbar stands still as the run starts and stops.
-    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_runAction))) {
-        int widest = 0;
-        for (const QString &text : {tr("Run"), tr("Pause")}) {
-            m_runAction->setText(text);
-            widest = std::max(widest, button->sizeHint().width());
-        }
-        button->setMinimumWidth(widest);
-    }
-    bar->addSeparator();
-
-    m_speedPicker = new QComboBox(bar);
-    m_speedPicker->setObjectName(QStringLiteral("speedPicker"));
-    m_speedPicker->setToolTip(tr("Simulated seconds per real second (Ctrl+- / Ctrl++)"));
-    for (double speed : Speeds) {
-        m_speedPicker->addItem(speed == 1.0 ? tr("Real time")
-                                            : tr("%1× speed").arg(QLocale().toString(speed)),
-                               speed);
-    }
-    m_speedPicker->setCurrentIndex(RealTimeIndex);
-    connect(m_speedPicker, &QComboBox::activated, this, &MainWindow::setSpeedIndex);
-    bar->addWidget(m_speedPicker);
-    bar->addSeparator();
-
-    bar->addWidget(new QLabel(tr("Scene:"), bar));
-    m_scenePicker = new QComboBox(bar);
-    m_scenePicker->setObjectName(QStringLiteral("scenePicker"));
-    m_scenePicker->setToolTip(tr("The task to simulate, or a live rig's frames"));
-    for (const QString &name : World::builtinScenes())
-        m_scenePicker->addItem(name, name);
-    m_scenePicker->addItem(tr("Live rig…"), LiveRigEntry);
-    connect(m_scenePicker, &QComboBox::activated, this, &MainWindow::pickScene);
-    bar->addWidget(m_scenePicker);
-    // Beside the scene, as its icon: a field naming the choice has no room at 1280 px in
-    // German; the button's tooltip and the window's title name it.
-    bar->addAction(m_gripperAction);
-    if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(m_gripperAction))) {
-        button->setObjectName(QStringLiteral("gripperButton"));
-        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
-        button->setPopupMode(QToolButton::InstantPopup);
-    }
-
-    bar->addWidget(new QLabel(tr("Router:"), bar));
-    m_routerPicker = new QComboBox(bar);
-    m_routerPicker->setObjectName(QStringLiteral("routerPicker"));
-    // It grows with a name added later (a file opened, what a replay shows) up to a limit,
-    // beyond which the name gives up its middle (syncPickers).
-    m_routerPicker->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    m_routerPicker->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
-    for (const QString &name : RouterPresets::names())
-        m_routerPicker->addItem(name, name);
-    connect(m_routerPicker, &QComboBox::activated, this, &MainWindow::pickRouter);
-    bar->addWidget(m_routerPicker);
-    bar->addSeparator();
-    bar->addAction(m_driveAction);
-    bar->addAction(m_forcesAction);
-    bar->addSeparator();
-    bar->addAction(m_recordAction);
-    m_sessionNameEdit = new QLineEdit(bar);
-    m_sessionNameEdit->setObjectName(QStringLiteral("sessionName"));
-    m_sessionNameEdit->setPlaceholderText(tr("Session name"));
-    m_sessionNameEdit->setToolTip(tr("Names the next recording's file (empty: scene, router and "
-                                     "time); File → Preferences says where it goes"));
-    m_sessionNameEdit->setMaximumWidth(140);
-    m_sessionNameEdit->setText(m_workspace.sessionName());
-    connect(m_sessionNameEdit, &QLineEdit::textChanged, &m_workspace, &Workspace::setSessionName);
-    bar->addWidget(m_sessionNameEdit);
-    m_notesEdit = new QLineEdit(bar);
-    m_notesEdit->setObjectName(QStringLiteral("sessionNotes"));
-    m_notesEdit->setPlaceholderText(tr("Session notes"));
-    m_notesEdit->setToolTip(tr("Kept with the next recording (participant, condition, …)"));
-    m_notesEdit->setMaximumWidth(180);
-    m_notesEdit->setText(m_workspace.sessionNotes());
-    connect(m_notesEdit, &QLineEdit::textChanged, &m_workspace, &Workspace::setSessionNotes);
-    bar->addWidget(m_notesEdit);
-
-    // Kept apart and in a colour of its own, so it is found without looking.
-    auto *spacer = new QWidget(bar);
-    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
-    bar->addWidget(spacer);
-    bar->addAction(m_stopAllAction);
-    if (QWidget *button = bar->widgetForAction(m_stopAllAction)) {
-        button->setObjectName(QStringLiteral("stopAllButton"));
-        button->setStyleSheet(
-            QStringLiteral("QToolButton { background: %1; color: white; font-weight: bold;"
-                           " border-radius: 4px; padding: 4px 14px; }"
-                           "QToolButton:pressed { background: %2; }")
-                .arg(colors::css(colors::Error), colors::css(colors::ErrorDark)));
-    }
+    m_runToolBar = new RunToolBar({m_runAction, m_stepAction, m_resetAction, m_gripperAction,
+                                   m_driveAction, m_forcesAction, m_recordAction, m_stopAllAction},
+                                  m_workspace, this);
+    addToolBar(m_runToolBar);
+    connect(m_runToolBar, &RunToolBar::speedPicked, &m_engine, &Engine::setSpeed);
+    connect(m_runToolBar, &RunToolBar::scenePicked, this, [this](const QString &scene) {
+        SceneOptions sceneOptions; // the scene's own cube count; the gripper picked stays
+        sceneOptions.gripper = m_engine.options().sceneOptions.gripper;
+        loadScene(scene, sceneOptions);
+    });
+    connect(m_runToolBar, &RunToolBar::liveRigPicked, this, [this] {
+        if (!m_engine.isLive())
+            m_listenAction->trigger();
+        m_runToolBar->sync(m_engine); // cancelled, it shows what runs
+    });
+    connect(m_runToolBar, &RunToolBar::gripperPicked, this, [this](const QString &gripper) {
+        SceneOptions sceneOptions = m_engine.options().sceneOptions;
+        sceneOptions.gripper = gripper;
+        loadScene(m_engine.options().scene, sceneOptions);
+    });
+    connect(m_runToolBar, &RunToolBar::routerPicked, this, &MainWindow::switchRouter);
 }
 
 void MainWindow::createReplayBar()
@@ -581,7 +436,8 @@ void MainWindow::createReplayBar()
     connect(m_replayBar, &ReplayBar::closeRequested, this, &MainWindow::closeReplay);
     connect(m_replayBar, &ReplayBar::rerouteRequested, this, &MainWindow::rerouteReplay);
     // The router picker names the router whose events the replay shows.
-    connect(&m_engine.replay(), &SessionReplay::streamsChanged, this, &MainWindow::syncPickers);
+    connect(&m_engine.replay(), &SessionReplay::streamsChanged, this,
+            [this] { m_runToolBar->sync(m_engine); });
 }
 
 void MainWindow::createDocks()
@@ -609,7 +465,7 @@ void MainWindow::createDocks()
     QDockWidget *patterns =
         makeDock(tr("Patterns"), QStringLiteral("patternsDock"), m_designer, this);
     m_studyPanel = new StudyPanel(m_workspace.study(), m_engine, this);
-    m_studyPanel->setStudyActions(m_newStudyAction, m_openStudyAction);
+    m_studyPanel->setStudyActions(m_studyMenu->newStudyAction(), m_studyMenu->openStudyAction());
     QDockWidget *study = makeDock(tr("Study"), QStringLiteral("studyDock"), m_studyPanel, this);
     // The plots run the full height on the right; the log, devices and metrics share the
     // space under the viewport.
@@ -680,12 +536,7 @@ void MainWindow::createMenus()
     file->addAction(m_openSessionAction);
     file->addAction(m_listenAction);
     file->addSeparator();
-    QMenu *study = file->addMenu(tr("Stud&y"));
-    study->setObjectName(QStringLiteral("studyMenu"));
-    study->addAction(m_newStudyAction);
-    study->addAction(m_openStudyAction);
-    study->addAction(m_exportStudyAction);
-    study->addAction(m_closeStudyAction);
+    file->addMenu(m_studyMenu);
     file->addSeparator();
     file->addAction(m_preferencesAction);
     file->addSeparator();
@@ -808,7 +659,7 @@ void MainWindow::connectEngine()
     connect(&m_engine, &Engine::routerChanged, this, [this] {
         m_devicesPanel->refresh();
         syncRouterEditor();
-        syncPickers();
+        m_runToolBar->sync(m_engine);
         updateTitle();
     });
     connect(&m_engine, &Engine::runningChanged, this, [this](bool running) {
@@ -839,9 +690,9 @@ void MainWindow::toggleRecording()
         return;
     }
     QString error;
-    const QString path =
-        m_engine.newRecordingPath(StudioFolders::sessions(), m_sessionNameEdit->text());
-    if (!m_engine.startRecording(path, m_notesEdit->text(), &error)) {
+    const QString path = m_engine.newRecordingPath(StudioFolders::sessions(),
+                                                   m_runToolBar->sessionNameEdit()->text());
+    if (!m_engine.startRecording(path, m_runToolBar->notesEdit()->text(), &error)) {
         m_recordAction->setChecked(false);
         showError(tr("Could not start recording"), error);
     }
@@ -876,7 +727,7 @@ void MainWindow::showSource()
     updateMode();
     m_devicesPanel->refresh();
     m_designer->refreshDevices();
-    syncPickers();
+    m_runToolBar->sync(m_engine);
     updateTitle();
     updateStatus();
     const qint64 skipped = m_engine.isReplaying() ? m_engine.replay().skippedRows() : 0;
@@ -1033,19 +884,16 @@ void MainWindow::updateMode()
     m_runAction->setEnabled(!replaying);
     m_recordAction->setEnabled(!replaying && !trial);
     // Another study in place of this one would abort the trial without asking.
-    for (QAction *action :
-         {m_resetAction, m_openSceneAction, m_openRouterAction, m_openSessionAction,
-          m_listenAction, m_newStudyAction, m_openStudyAction})
+    for (QAction *action : {m_resetAction, m_openSceneAction, m_openRouterAction,
+                            m_openSessionAction, m_listenAction})
         action->setEnabled(!trial);
-    m_scenePicker->setEnabled(!trial);
-    m_routerPicker->setEnabled(!trial);
-    m_closeStudyAction->setEnabled(m_workspace.study().isOpen());
-    m_exportStudyAction->setEnabled(m_workspace.study().isOpen());
+    m_runToolBar->scenePicker()->setEnabled(!trial);
+    m_runToolBar->routerPicker()->setEnabled(!trial);
     // A live rig keeps its own pace and drives its own grippers.
     for (QAction *action :
          {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
         action->setEnabled(simulating);
-    m_speedPicker->setEnabled(simulating);
+    m_runToolBar->speedPicker()->setEnabled(simulating);
     m_gripperAction->setEnabled(!m_engine.isLive() && !trial); // a rig's grippers are its own
     m_stepAction->setEnabled(simulating && !m_engine.isRunning());
     updateStatus();
@@ -1058,7 +906,7 @@ void MainWindow::switchRouter(const QString &router)
         LiveRigOptions options = m_engine.liveOptions();
         options.router = router;
         openLiveRig(options);
-        syncPickers();
+        m_runToolBar->sync(m_engine);
         return;
     }
     RunOptions options = m_engine.options();
@@ -1091,66 +939,6 @@ void MainWindow::toggleRunning()
     else
         m_engine.run();
     m_runAction->setChecked(m_engine.isRunning());
-}
-
-void MainWindow::setSpeedIndex(int index)
-{
-    index = std::clamp(index, 0, SpeedCount - 1);
-    m_speedPicker->setCurrentIndex(index);
-    m_engine.setSpeed(Speeds[index]);
-}
-
-void MainWindow::pickScene(int index)
-{
-    if (m_scenePicker->itemData(index).toString() == LiveRigEntry) {
-        if (!m_engine.isLive())
-            m_listenAction->trigger();
-        syncPickers(); // cancelled, it shows what runs
-        return;
-    }
-    SceneOptions sceneOptions; // the scene's own cube count; the gripper picked stays
-    sceneOptions.gripper = m_engine.options().sceneOptions.gripper;
-    loadScene(m_scenePicker->itemData(index).toString(), sceneOptions);
-}
-
-void MainWindow::fillGripperMenu()
-{
-    const QString loaded = m_engine.options().sceneOptions.gripper;
-    delete m_gripperChoices; // with its entries, which leave the menu
-    m_gripperMenu->clear();
-    m_gripperChoices = new QActionGroup(this);
-    m_gripperMenu->addSection(tr("Gripper")); // the toolbar shows only its icon
-    const auto add = [this, &loaded](const QString &text, const QString &gripper) {
-        QAction *choice = m_gripperChoices->addAction(text);
-        choice->setData(gripper);
-        choice->setCheckable(gripper != OtherGripperEntry);
-        choice->setChecked(gripper == loaded);
-        connect(choice, &QAction::triggered, this, [this, gripper] { pickGripper(gripper); });
-        m_gripperMenu->addAction(choice);
-    };
-    add(tr("Scene's own"), QString());
-    const QStringList names = GripperLibrary::names();
-    for (const QString &name : names)
-        add(name, name);
-    // A file, or a name no gripper folder has now: shown, so the menu never hides what runs.
-    if (!loaded.isEmpty() && !names.contains(loaded))
-        add(QFileInfo(loaded).fileName(), loaded);
-    m_gripperMenu->addSeparator();
-    add(tr("Other file…"), OtherGripperEntry);
-}
-
-void MainWindow::pickGripper(const QString &choice)
-{
-    QString gripper = choice;
-    if (gripper == OtherGripperEntry) {
-        gripper = FileDialogs::openFile(this, FileKind::Gripper, tr("Open gripper adapter"),
-                                        tr("Gripper adapters (*.json)"));
-        if (gripper.isEmpty())
-            return;
-    }
-    SceneOptions sceneOptions = m_engine.options().sceneOptions;
-    sceneOptions.gripper = gripper;
-    loadScene(m_engine.options().scene, sceneOptions);
 }
 
 void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOptions)
@@ -1188,74 +976,6 @@ void MainWindow::loadScene(const QString &scene, const SceneOptions &sceneOption
             tr("%1 has a router of its own, %2: pick it under Router").arg(name, own), 15000);
     if (running)
         m_engine.run();
-}
-
-void MainWindow::pickRouter(int index)
-{
-    switchRouter(m_routerPicker->itemData(index).toString());
-}
-
-void MainWindow::syncPickers()
-{
-    // A file opened from disk shows as an extra entry, so the picker never lies.
-    const auto sync = [](QComboBox *picker, const QString &value) {
-        int index = picker->findData(value);
-        if (index < 0) {
-            picker->addItem(QFileInfo(value).fileName(), value);
-            index = picker->count() - 1;
-        }
-        picker->setCurrentIndex(index);
-        return index;
-    };
-    sync(m_scenePicker, m_engine.isLive() ? LiveRigEntry : m_engine.options().scene);
-    const QString gripper = m_engine.options().sceneOptions.gripper;
-    m_gripperAction->setIcon(gripperIcon(!gripper.isEmpty()));
-    m_gripperAction->setToolTip(
-        tr("Gripper: %1\nThe scene's own grippers, or a gripper adapter's model in their place")
-            .arg(gripper.isEmpty() ? tr("the scene's own") : QFileInfo(gripper).fileName()));
-    // A router only a replay shows (an untitled re-routing graph, a recorded file) is named
-    // while it shows and cannot be picked: the picker offers only what it can load.
-    const QString router = m_engine.routerSource();
-    for (int i = m_routerPicker->count(); i-- > 0;) {
-        if (m_routerPicker->itemData(i, ShownByReplayRole).toBool() &&
-            (!m_engine.isReplaying() || m_routerPicker->itemData(i).toString() != router))
-            m_routerPicker->removeItem(i);
-    }
-    const int count = m_routerPicker->count();
-    const int current = sync(m_routerPicker, router);
-    if (m_engine.isReplaying() && m_routerPicker->count() > count) {
-        m_routerPicker->setItemData(current, true, ShownByReplayRole);
-        auto *entries = qobject_cast<QStandardItemModel *>(m_routerPicker->model());
-        entries->item(current)->setEnabled(false);
-    }
-    // An edit runs (or a replay shows it) under the name it started from: say so (`C3*`).
-    // A name longer than the picker's room gives up its middle, and its tooltip has it whole.
-    const bool edited = m_engine.isRouterEdited();
-    const QStringList presets = RouterPresets::names();
-    const QFontMetrics metrics = m_routerPicker->fontMetrics();
-    const int room = RouterNameChars * metrics.averageCharWidth();
-    QString whole;
-    for (int i = 0; i < m_routerPicker->count(); ++i) {
-        const QString value = m_routerPicker->itemData(i).toString();
-        QString name = presets.contains(value) ? value : QFileInfo(value).fileName();
-        if (edited && i == m_routerPicker->currentIndex())
-            name += QLatin1Char('*');
-        const QString shown = metrics.elidedText(name, Qt::ElideMiddle, room);
-        m_routerPicker->setItemText(i, shown);
-        m_routerPicker->setItemData(i, shown == name ? QVariant() : QVariant(name),
-                                    Qt::ToolTipRole);
-        if (shown != name && i == m_routerPicker->currentIndex())
-            whole = name;
-    }
-    const QString purpose = tr("Which feedback design turns events into patterns");
-    m_routerPicker->setToolTip(whole.isEmpty() ? purpose
-                                               : QStringLiteral("%1\n%2").arg(whole, purpose));
-    int speed = RealTimeIndex;
-    for (int i = 0; i < SpeedCount; ++i) {
-        if (std::abs(Speeds[i] - m_engine.speed()) < 1e-9)
-            speed = i;
-    }
-    m_speedPicker->setCurrentIndex(speed);
 }
 
 void MainWindow::syncRouterEditor()
@@ -1492,68 +1212,6 @@ void MainWindow::saveLayout()
     settings.setValue(QStringLiteral("view/playIntensity"), play.intensity);
     settings.setValue(QStringLiteral("view/playEndAt"), play.endAt);
     settings.setValue(QStringLiteral("view/playHold"), play.hold);
-}
-
-void MainWindow::newStudy()
-{
-    const QString protocol =
-        FileDialogs::openFile(this, FileKind::Protocol, tr("New study: its protocol"),
-                              tr("semhap study protocols (*.json)"));
-    if (protocol.isEmpty())
-        return;
-    const QString path =
-        FileDialogs::saveFile(this, FileKind::Study, tr("New study: where to keep it"),
-                              QFileInfo(protocol).completeBaseName() + QStringLiteral(".db"),
-                              tr("semhap studies (*.db)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!m_workspace.study().create(protocol, path, &error))
-        showError(tr("Could not create the study"), error);
-}
-
-void MainWindow::openStudy()
-{
-    const QString path = FileDialogs::openFile(this, FileKind::Study, tr("Open study"),
-                                               tr("semhap studies (*.db);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!m_workspace.study().open(path, &error))
-        showError(tr("Could not open the study %1").arg(QFileInfo(path).fileName()), error);
-}
-
-void MainWindow::exportStudy()
-{
-    const QString dir =
-        FileDialogs::folder(this, FileKind::Study, tr("Export the study's results into"));
-    if (dir.isEmpty())
-        return;
-    QStringList written;
-    QString error;
-    if (!m_workspace.study().exportResults(dir, &written, &error)) {
-        showError(tr("Could not export the study's results"), error);
-        return;
-    }
-    statusBar()->showMessage(
-        tr("Exported %1 files into %2: measures.csv, trials.csv, "
-           "answers.csv and %3/report.md")
-            .arg(written.size())
-            .arg(QDir::toNativeSeparators(dir), QLatin1String(StudyExport::ReportFolder)),
-        10000);
-}
-
-void MainWindow::closeStudy()
-{
-    StudyDocument &study = m_workspace.study();
-    if (study.isTrialRunning() &&
-        QMessageBox::question(this, tr("Close study"),
-                              tr("%1 runs. Closing the study aborts it: it will not count and "
-                                 "is due again when the study is opened again.")
-                                  .arg(study.describe(study.runningStep())),
-                              QMessageBox::Ok | QMessageBox::Cancel) != QMessageBox::Ok)
-        return;
-    study.close();
 }
 
 void MainWindow::showStudy()

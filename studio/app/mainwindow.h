@@ -27,6 +27,8 @@ class ReplayBar;
 class RouterEditor;
 class SessionReplay;
 class SimViewport;
+class RunToolBar;
+class StudyMenu;
 class StudyPanel;
 class WaveformDesigner;
 class Workspace;
@@ -64,11 +66,8 @@ public:
     WaveformDesigner *waveformDesigner() const { return m_designer; }
     /** The experimenter's view of the open study (the Study dock). */
     StudyPanel *studyPanel() const { return m_studyPanel; }
-    QComboBox *scenePicker() const { return m_scenePicker; }
-    QComboBox *routerPicker() const { return m_routerPicker; }
-    QComboBox *speedPicker() const { return m_speedPicker; }
-    QLineEdit *notesEdit() const { return m_notesEdit; }
-    QLineEdit *sessionNameEdit() const { return m_sessionNameEdit; }
+    /** The run toolbar: its pickers, the session's name and notes. */
+    RunToolBar *runToolBar() const { return m_runToolBar; }
     SessionReplay *replay() { return &m_engine.replay(); }
     ReplayBar *replayBar() const { return m_replayBar; }
 
@@ -130,24 +129,13 @@ private:
     void updateLiveStatus();
     void updateDevicesStatus();
     void updateTitle();
-    void syncPickers();
     /** Shows the running router in the editor unless the editor already holds it. */
     void syncRouterEditor();
-    void pickScene(int index);
-    /**
-     * Lists the gripper choices in the Gripper menu — the scene's own, the adapters found by
-     * name, the file in use, another file — with the loaded one checked.
-     */
-    void fillGripperMenu();
-    /** Loads the scene with `choice`: empty, an adapter's name, a file, or "ask for a file". */
-    void pickGripper(const QString &choice);
     /**
      * Loads `scene` with `sceneOptions` in place of the run's, keeping a running session
      * running; a scene that does not load is said and the run that was there stays.
      */
     void loadScene(const QString &scene, const SceneOptions &sceneOptions);
-    void pickRouter(int index);
-    void setSpeedIndex(int index);
     void showPreferences();
     /** Applies the saved driving settings: speed, the gamepad and the 3D mouse. */
     void applyTeleopSettings();
@@ -166,14 +154,6 @@ private:
     void showManual();
     /** Says over the viewport that the task is done, once its metrics say so; else nothing. */
     void showTaskDone();
-    /** File → Study → New study…: a protocol, then where the study is kept. */
-    void newStudy();
-    /** File → Study → Open study…; the study's refusal (another studio has it) is said. */
-    void openStudy();
-    /** File → Study → Close study; a trial that runs is aborted once the user agrees. */
-    void closeStudy();
-    /** File → Study → Export results…: the CSVs and the analysis' report into a folder. */
-    void exportStudy();
     /** The Study dock comes forward when a study opens; its actions follow. */
     void showStudy();
 
@@ -198,13 +178,7 @@ private:
     RouterEditor *m_routerEditor = nullptr;
     WaveformDesigner *m_designer = nullptr;
     StudyPanel *m_studyPanel = nullptr;
-    QComboBox *m_scenePicker = nullptr;
-    QMenu *m_gripperMenu = nullptr;
-    QActionGroup *m_gripperChoices = nullptr; ///< the Gripper menu's entries, refilled on show
-    QComboBox *m_routerPicker = nullptr;
-    QComboBox *m_speedPicker = nullptr;
-    QLineEdit *m_notesEdit = nullptr;
-    QLineEdit *m_sessionNameEdit = nullptr;
+    RunToolBar *m_runToolBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QToolBar *m_replayToolBar = nullptr;
     QLabel *m_recordLabel = nullptr;
@@ -232,10 +206,7 @@ private:
     QAction *m_recordAction = nullptr;
     QAction *m_openSessionAction = nullptr;
     QAction *m_listenAction = nullptr;
-    QAction *m_newStudyAction = nullptr;
-    QAction *m_openStudyAction = nullptr;
-    QAction *m_closeStudyAction = nullptr;
-    QAction *m_exportStudyAction = nullptr;
+    StudyMenu *m_studyMenu = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_resetCameraAction = nullptr;

@@ -26,6 +26,7 @@
 #include "preferencesdialog.h"
 #include "routerdocument.h"
 #include "routereditor.h"
+#include "runtoolbar.h"
 #include "simviewport.h"
 #include "studio.h"
 #include "studiotesting.h"
@@ -218,8 +219,9 @@ void TestStudio::opensOnTheDefaultsAndRuns()
     Workspace workspace;
     MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
-    QCOMPARE(window.scenePicker()->currentData().toString(), QString("box_and_block"));
-    QCOMPARE(window.routerPicker()->currentData().toString(), QString("C3"));
+    QCOMPARE(window.runToolBar()->scenePicker()->currentData().toString(),
+             QString("box_and_block"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentData().toString(), QString("C3"));
     QVERIFY(window.engine().isRunning());
     QVERIFY(!window.engine().isDriving());
     for (const RunDevice &device : window.engine().history().devices())
@@ -245,7 +247,7 @@ void TestStudio::picksSceneAndRouter()
     QVERIFY(openWindow(window));
     QSignalSpy loaded(&window.engine(), &Engine::sourceChanged);
 
-    QComboBox *scene = window.scenePicker();
+    QComboBox *scene = window.runToolBar()->scenePicker();
     scene->setFocus();
     const int bimanual = scene->findData("bimanual_sorting");
     QVERIFY(bimanual >= 0);
@@ -253,7 +255,7 @@ void TestStudio::picksSceneAndRouter()
         QTest::keyClick(scene, bimanual > scene->currentIndex() ? Qt::Key_Down : Qt::Key_Up);
     QTRY_COMPARE(window.engine().options().scene, QString("bimanual_sorting"));
 
-    QComboBox *router = window.routerPicker();
+    QComboBox *router = window.runToolBar()->routerPicker();
     router->setFocus();
     const int c1 = router->findData("C1");
     QVERIFY(c1 >= 0);
@@ -306,7 +308,7 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
     QCOMPARE(window.engine().speed(), 2.0);
     QTest::keyClick(&window, Qt::Key_0, Qt::ControlModifier);
     QCOMPARE(window.engine().speed(), 1.0);
-    QCOMPARE(window.speedPicker()->currentData().toDouble(), 1.0);
+    QCOMPARE(window.runToolBar()->speedPicker()->currentData().toDouble(), 1.0);
     // Faster on either face of the key: Ctrl++, and Ctrl+= without Shift (in the viewport too,
     // where it leaves the grippers to the operator).
     QTest::keyClick(&window, Qt::Key_Plus, Qt::ControlModifier);
@@ -314,7 +316,7 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
     window.viewport()->setFocus();
     QTest::keyClick(window.viewport(), Qt::Key_Equal, Qt::ControlModifier);
     QCOMPARE(window.engine().speed(), 4.0);
-    QCOMPARE(window.speedPicker()->currentData().toDouble(), 4.0);
+    QCOMPARE(window.runToolBar()->speedPicker()->currentData().toDouble(), 4.0);
     QVERIFY(!window.engine().isDriving());
     QTest::keyClick(&window, Qt::Key_F5);
     QVERIFY(window.engine().isRunning());
@@ -1441,7 +1443,7 @@ void TestStudio::languageSwitchKeepsTheWork()
     window->findChild<QDockWidget *>("routerDock")->raise();
     editor->setParam("right.force", "grasp", 25.0);
     QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
-    QTRY_COMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    QTRY_COMPARE(window->runToolBar()->routerPicker()->currentText(), QString("C3*"));
     editor->setParam("right.force", "grasp", 30.0);
     const QJsonObject edited = editor->graph().toJson();
     const int undoSteps = editor->undoStack()->count();
@@ -1469,7 +1471,7 @@ void TestStudio::languageSwitchKeepsTheWork()
     QVERIFY(engine.devices().transport("right.vibro")->isArmed());
 
     // A recording with notes, and the user driving.
-    auto *notes = window->notesEdit();
+    auto *notes = window->runToolBar()->notesEdit();
     notes->setFocus();
     QTest::keyClicks(notes, "participant 7");
     window->findChild<QAction *>("recordAction")->trigger();
@@ -1513,8 +1515,9 @@ void TestStudio::languageSwitchKeepsTheWork()
     QCOMPARE(&window->engine(), &engine);
     QVERIFY(engine.isRunning());
     QTRY_VERIFY(engine.simTime() > before + 0.5);
-    QCOMPARE(window->scenePicker()->currentData().toString(), QString("box_and_block"));
-    QCOMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window->runToolBar()->scenePicker()->currentData().toString(),
+             QString("box_and_block"));
+    QCOMPARE(window->runToolBar()->routerPicker()->currentText(), QString("C3*"));
     QCOMPARE(window->routerEditor()->graph().toJson(), edited);
     QCOMPARE(window->routerEditor()->undoStack()->count(), undoSteps);
     QCOMPARE(window->waveformDesigner()->document()->json(), pattern);
@@ -1527,7 +1530,7 @@ void TestStudio::languageSwitchKeepsTheWork()
     QCOMPARE(engine.recordingPath(), recording);
     QVERIFY(window->findChild<QAction *>("recordAction")->isChecked());
     QVERIFY(window->findChild<QLabel *>("recordLabel")->isVisible());
-    QCOMPARE(window->notesEdit()->text(), QString("participant 7"));
+    QCOMPARE(window->runToolBar()->notesEdit()->text(), QString("participant 7"));
     QVERIFY(engine.isDriving());
     QVERIFY(window->findChild<QAction *>("driveAction")->isChecked());
     QCOMPARE(window->findChild<QDockWidget *>("plotsDock")->windowTitle(), QString("Diagramme"));
@@ -1564,7 +1567,7 @@ void TestStudio::workComesBackAfterARestart()
         RouterEditor *editor = window->routerEditor();
         editor->setParam("right.force", "grasp", 25.0);
         QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
-        QTRY_COMPARE(window->routerPicker()->currentText(), QString("C3*"));
+        QTRY_COMPARE(window->runToolBar()->routerPicker()->currentText(), QString("C3*"));
         editor->setParam("right.force", "grasp", 30.0);
         edited = editor->graph().toJson();
         window->waveformDesigner()->duplicate();
@@ -1573,8 +1576,8 @@ void TestStudio::workComesBackAfterARestart()
         QString error;
         QVERIFY2(engine.bindDevice("right.vibro", "udp:127.0.0.1:9", &error), qPrintable(error));
         engine.devices().armAll(true);
-        window->notesEdit()->setFocus();
-        QTest::keyClicks(window->notesEdit(), "participant 7");
+        window->runToolBar()->notesEdit()->setFocus();
+        QTest::keyClicks(window->runToolBar()->notesEdit(), "participant 7");
         window->close();
     }
     Studio studio(options());
@@ -1583,7 +1586,7 @@ void TestStudio::workComesBackAfterARestart()
     QVERIFY(QTest::qWaitForWindowExposed(window));
     Engine &engine = window->engine();
     QVERIFY(engine.isRunning());
-    QCOMPARE(window->routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window->runToolBar()->routerPicker()->currentText(), QString("C3*"));
     const RouterGraph &running = engine.routerGraph();
     QCOMPARE(running.nodes[size_t(running.nodeIndex("right.force"))].params.value("grasp"),
              QJsonValue(25.0));
@@ -1598,7 +1601,7 @@ void TestStudio::workComesBackAfterARestart()
         window->waveformDesigner()->findChild<QLabel *>("banner")->text().contains("not saved"));
     QCOMPARE(engine.devices().transport("right.vibro")->uri(), QString("udp:127.0.0.1:9"));
     QVERIFY(!engine.devices().transport("right.vibro")->isArmed());
-    QCOMPARE(window->notesEdit()->text(), QString("participant 7"));
+    QCOMPARE(window->runToolBar()->notesEdit()->text(), QString("participant 7"));
 
     // A run named on the command line wins over the saved one; the rest comes back.
     window->close();
@@ -1610,9 +1613,9 @@ void TestStudio::workComesBackAfterARestart()
     Studio again(named);
     again.start();
     QCOMPARE(again.window()->engine().options().scene, QString("bimanual_sorting"));
-    QCOMPARE(again.window()->routerPicker()->currentText(), QString("C3"));
+    QCOMPARE(again.window()->runToolBar()->routerPicker()->currentText(), QString("C3"));
     QCOMPARE(again.window()->routerEditor()->graph().toJson(), edited);
-    QCOMPARE(again.window()->notesEdit()->text(), QString("participant 7"));
+    QCOMPARE(again.window()->runToolBar()->notesEdit()->text(), QString("participant 7"));
     QCOMPARE(again.window()->engine().devices().transport("right.vibro")->uri(),
              QString("udp:127.0.0.1:9"));
 }

@@ -14,6 +14,7 @@
 #include "plotpanel.h"
 #include "preferencesdialog.h"
 #include "routereditor.h"
+#include "runtoolbar.h"
 #include "simviewport.h"
 #include "studio.h"
 #include "studiofolders.h"
@@ -337,7 +338,7 @@ void TestStudioFiles::routerFollowsARenamedPattern()
              QJsonValue(renamed));
     QString error;
     QVERIFY2(window.engine().reset(&error), qPrintable(error));
-    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C3*"));
 }
 
 void TestStudioFiles::buildsAnAlignmentConfirmationByMouse_data()
@@ -492,7 +493,7 @@ void TestStudioFiles::aSceneThatDoesNotLoadLeavesTheRun()
     MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     Engine &engine = window.engine();
-    QComboBox *scene = window.scenePicker();
+    QComboBox *scene = window.runToolBar()->scenePicker();
     scene->setFocus();
     const int bimanual = scene->findData("bimanual_sorting");
     while (scene->currentIndex() != bimanual)
@@ -549,7 +550,7 @@ void TestStudioFiles::eachSceneComesWithItsRouter()
     MainWindow window(workspace, options());
     QVERIFY(openWindow(window));
     Engine &engine = window.engine();
-    QComboBox *scene = window.scenePicker();
+    QComboBox *scene = window.runToolBar()->scenePicker();
     const auto pick = [&](const QString &name) {
         scene->setFocus();
         const int index = scene->findData(name);
@@ -561,7 +562,7 @@ void TestStudioFiles::eachSceneComesWithItsRouter()
     QCOMPARE(engine.options().router, QString("C3"));
     pick("dish_wiping");
     QTRY_COMPARE(engine.options().router, QString("wipe"));
-    QCOMPARE(window.routerPicker()->currentText(), QString("wipe"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("wipe"));
     QVERIFY(engine.isRunning());
     QVERIFY2(window.statusBar()->currentMessage().contains("wipe"),
              qPrintable(window.statusBar()->currentMessage()));
@@ -571,7 +572,7 @@ void TestStudioFiles::eachSceneComesWithItsRouter()
     QTRY_COMPARE(engine.options().router, QString("C3"));
 
     // C1 picked by hand stays with the next scene.
-    QComboBox *router = window.routerPicker();
+    QComboBox *router = window.runToolBar()->routerPicker();
     router->setFocus();
     const int c1 = router->findText("C1");
     QVERIFY(c1 >= 0);
@@ -604,7 +605,7 @@ void TestStudioFiles::aRunThatDoesNotLoadAtTheStartLeavesTheDefaults()
     Engine &engine = window->engine();
     QVERIFY(engine.isLoaded());
     QCOMPARE(engine.options().scene, QString("box_and_block"));
-    QCOMPARE(window->scenePicker()->currentText(), QString("box_and_block"));
+    QCOMPARE(window->runToolBar()->scenePicker()->currentText(), QString("box_and_block"));
     QVERIFY(window->windowTitle().contains("box_and_block"));
     QVERIFY(!engine.isRunning());
     QVERIFY(!window->findChild<QAction *>("runAction")->isChecked());
@@ -729,10 +730,10 @@ void TestStudioFiles::gripperMenuPicksAnAdapter()
         QVERIFY(!blueJaws());
     }
     QVERIFY(engine.isRunning());
-    QCOMPARE(window.scenePicker()->currentText(), QString("box_and_block"));
+    QCOMPARE(window.runToolBar()->scenePicker()->currentText(), QString("box_and_block"));
 
     // Another scene keeps the gripper; the scene's own brings the scene's back.
-    QComboBox *scene = window.scenePicker();
+    QComboBox *scene = window.runToolBar()->scenePicker();
     scene->setFocus();
     QTest::keyClick(scene, Qt::Key_Down);
     QTRY_VERIFY(engine.options().scene != "box_and_block");
@@ -855,8 +856,8 @@ void TestStudioFiles::gripperMenuScreenshots()
     for (QAction *action : menu->actions())
         entries.append(action->text());
     const QStringList expected =
-        QStringList{MainWindow::tr("Gripper"), MainWindow::tr("Scene's own")} + names +
-        QStringList{QString(), MainWindow::tr("Other file…")};
+        QStringList{RunToolBar::tr("Gripper"), RunToolBar::tr("Scene's own")} + names +
+        QStringList{QString(), RunToolBar::tr("Other file…")};
     QCOMPARE(entries, expected);
     QVERIFY(window->screen()->availableGeometry().contains(menu->geometry()));
     QTest::qWait(200);

@@ -15,6 +15,7 @@
 #include "router.h"
 #include "routereditor.h"
 #include "routergraph.h"
+#include "runtoolbar.h"
 #include "sessionblocks.h"
 #include "sessionreader.h"
 #include "sessionreplay.h"
@@ -275,8 +276,8 @@ void TestStudioSessions::windowRecordsReopensAndScrubs()
     window.findChild<QAction *>("preferencesAction")->trigger();
     QCOMPARE(StudioFolders::sessions(), folder);
 
-    QTest::keyClicks(window.sessionNameEdit(), "p07/baseline");
-    QTest::keyClicks(window.notesEdit(), "participant 7");
+    QTest::keyClicks(window.runToolBar()->sessionNameEdit(), "p07/baseline");
+    QTest::keyClicks(window.runToolBar()->notesEdit(), "participant 7");
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(window.engine().isRecording());
     const QString path = window.engine().recordingPath();
@@ -514,12 +515,12 @@ void TestStudioSessions::windowListensToALiveRig()
     QVERIFY(window.engine().isRunning());
     QCOMPARE(window.engine().liveUri(), QStringLiteral("udp:127.0.0.1:%1").arg(port));
     QVERIFY(window.windowTitle().contains("live rig"));
-    QCOMPARE(window.scenePicker()->currentText(), QString("Live rig…"));
+    QCOMPARE(window.runToolBar()->scenePicker()->currentText(), QString("Live rig…"));
     QVERIFY(window.viewport()->placeholder().startsWith("Live rig on udp:127.0.0.1"));
     // What only the simulation has is off: stepping, pacing, driving.
     for (const char *name : {"stepAction", "driveAction", "fasterAction", "slowerAction"})
         QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), name);
-    QVERIFY(!window.speedPicker()->isEnabled());
+    QVERIFY(!window.runToolBar()->speedPicker()->isEnabled());
     QVERIFY(window.findChild<QAction *>("recordAction")->isEnabled());
 
     // Record while the rig sends a few seconds of the trace and some garbage.
@@ -578,7 +579,7 @@ void TestStudioSessions::windowListensToALiveRig()
     QTRY_COMPARE(window.engine().liveStats().held, quint64(1));
 
     // Picking a scene goes back to the simulation.
-    QComboBox *scene = window.scenePicker();
+    QComboBox *scene = window.runToolBar()->scenePicker();
     scene->setFocus();
     const int bimanual = scene->findData("bimanual_sorting");
     while (scene->currentIndex() != bimanual)
@@ -788,7 +789,7 @@ void TestStudioSessions::replayNamesAnEditedRouter()
     window.findChild<QDockWidget *>("routerDock")->raise();
     editor->setParam("right.force", "break", 100.0);
     QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
-    QTRY_COMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    QTRY_COMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C3*"));
     const QString path = recordWithKeys(window, 0.5);
     QVERIFY(!path.isEmpty());
 
@@ -799,13 +800,13 @@ void TestStudioSessions::replayNamesAnEditedRouter()
     editor->setGraph(c1);
     editor->setParam("right.force", "grasp", 25.0);
     QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
-    QTRY_COMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    QTRY_COMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C1*"));
     const QJsonObject running = window.engine().routerGraph().toJson();
     openSessionWithKeys(window, path);
     QVERIFY(window.engine().isReplaying());
     auto *source = window.replayBar()->findChild<QLabel *>("replaySource");
     QCOMPARE(source->text(), QString("Showing: recorded with C3*"));
-    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C3*"));
     auto *about = window.replayBar()->findChild<QLabel *>("replayAbout");
     QVERIFY2(about->toolTip().contains("Router: C3, edited"), qPrintable(about->toolTip()));
     QCOMPARE(clippedTexts(window.replayBar()), QStringList()); // the star fits at 1280 px
@@ -817,18 +818,18 @@ void TestStudioSessions::replayNamesAnEditedRouter()
     // Re-routed through the editor's C1 with its edit, then through C1 as it is.
     QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
     QCOMPARE(source->text(), QString("Showing: re-routed through C1*"));
-    QCOMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C1*"));
     editor->setGraph(c1);
     QTest::mouseClick(window.replayBar()->rerouteButton(), Qt::LeftButton);
     QCOMPARE(source->text(), QString("Showing: re-routed through C1"));
-    QCOMPARE(window.routerPicker()->currentText(), QString("C1"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C1"));
     QTest::mouseClick(window.replayBar()->recordedButton(), Qt::LeftButton);
     QCOMPARE(source->text(), QString("Showing: recorded with C3*"));
-    QCOMPARE(window.routerPicker()->currentText(), QString("C3*"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C3*"));
 
     // Closed, the picker names the run's router again.
     QTest::mouseClick(window.replayBar()->closeButton(), Qt::LeftButton);
-    QCOMPARE(window.routerPicker()->currentText(), QString("C1*"));
+    QCOMPARE(window.runToolBar()->routerPicker()->currentText(), QString("C1*"));
     QCOMPARE(window.engine().routerGraph().toJson(), running);
 }
 
@@ -840,7 +841,7 @@ void TestStudioSessions::untitledRerouteLeavesNoPickerEntry()
     Workspace workspace;
     MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
-    QComboBox *picker = window.routerPicker();
+    QComboBox *picker = window.runToolBar()->routerPicker();
     QStringList entries;
     for (int i = 0; i < picker->count(); ++i)
         entries << picker->itemText(i);
@@ -1068,7 +1069,7 @@ void TestStudioSessions::routerStatusGoesWithAnotherRouter()
     QTest::mouseClick(editor->findChild<QWidget *>("applyButton"), Qt::LeftButton);
     QCOMPARE(status->text(), QString("Applied: the running session uses this router now."));
     if (picker) {
-        QVERIFY(choose(window.routerPicker(), "C1"));
+        QVERIFY(choose(window.runToolBar()->routerPicker(), "C1"));
         QTRY_COMPARE(window.engine().options().router, QString("C1"));
     } else {
         const QString file = m_dir.filePath("mine.json");
@@ -1110,7 +1111,7 @@ void TestStudioSessions::routerPickerShowsTheWholeName()
     Workspace workspace;
     MainWindow window(workspace, studioOptions());
     QVERIFY(openWindow(window));
-    QComboBox *picker = window.routerPicker();
+    QComboBox *picker = window.runToolBar()->routerPicker();
     if (file.isEmpty()) {
         const QString path = recordWithKeys(window, 0.5);
         QVERIFY(!path.isEmpty());

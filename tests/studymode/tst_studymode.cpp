@@ -13,6 +13,7 @@
 #include "questionnairewindow.h"
 #include "rankingpage.h"
 #include "reasondialog.h"
+#include "runtoolbar.h"
 #include "sessionreader.h"
 #include "studio.h"
 #include "studydocument.h"
@@ -691,8 +692,8 @@ void TestStudyMode::aTrialKeepsItsRun()
     QVERIFY(studyOf(*studio).isTrialRunning());
     for (const QString &name : actions)
         QVERIFY2(!window.findChild<QAction *>(name)->isEnabled(), qPrintable(name));
-    QVERIFY(!window.scenePicker()->isEnabled());
-    QVERIFY(!window.routerPicker()->isEnabled());
+    QVERIFY(!window.runToolBar()->scenePicker()->isEnabled());
+    QVERIFY(!window.runToolBar()->routerPicker()->isEnabled());
 
     QString error;
     QVERIFY(window.engine().reset(&error));
@@ -706,7 +707,7 @@ void TestStudyMode::aTrialKeepsItsRun()
     QCOMPARE(box->text(), QString("Practice — No feedback (2 s) was aborted"));
     for (const QString &name : actions)
         QVERIFY2(window.findChild<QAction *>(name)->isEnabled(), qPrintable(name));
-    QVERIFY(window.scenePicker()->isEnabled());
+    QVERIFY(window.runToolBar()->scenePicker()->isEnabled());
 }
 
 // File → Study → Close study in a trial asks first; agreed, the trial is aborted (the study
