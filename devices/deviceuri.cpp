@@ -54,6 +54,15 @@ bool DeviceUri::parseHostPort(const QString &address, DeviceUri *uri, QString *e
     return true;
 }
 
+QString DeviceUri::hostPortUri(const QString &scheme, const QString &host, int port)
+{
+    DeviceUri uri;
+    uri.scheme = scheme;
+    uri.name = host;
+    uri.port = port;
+    return uri.toString();
+}
+
 QString DeviceUri::formatHostPort(const DeviceUri &uri)
 {
     return uri.name.contains(QLatin1Char(':'))

@@ -39,6 +39,8 @@ struct DeviceUri
     static bool parseHostPort(const QString &address, DeviceUri *uri, QString *error);
     /** The same, spelled: brackets around an IPv6 host. */
     static QString formatHostPort(const DeviceUri &uri);
+    /** `SCHEME:HOST:PORT` as a network link names itself (udp, tcp). */
+    static QString hostPortUri(const QString &scheme, const QString &host, int port);
     /**
      * `virtual:NAME`: where a router device `name` plays when no band is bound to it (its
      * frames show in the studio, nothing leaves the machine).

@@ -3,6 +3,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <memory>
+#include <netdb.h>
 #include <unistd.h>
 
 namespace semhap {
@@ -42,6 +44,41 @@ int FdLink::read(std::uint8_t *buffer, int size, QString *error)
         return 0; // nobody listening on a UDP port yet is not a lost link
     *error = QString::fromLocal8Bit(std::strerror(errno));
     return -1;
+}
+
+bool FdLink::openSocket(const QString &host, int port, int type, const Connect &connect,
+                        QString *error)
+{
+    close();
+    addrinfo hints{};
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = type;
+    addrinfo *found = nullptr;
+    const int rc = ::getaddrinfo(host.toLocal8Bit().constData(),
+                                 QByteArray::number(port).constData(), &hints, &found);
+    if (rc != 0) {
+        *error = QStringLiteral("%1: %2").arg(host, QString::fromLocal8Bit(gai_strerror(rc)));
+        return false;
+    }
+    std::unique_ptr<addrinfo, void (*)(addrinfo *)> list(found, ::freeaddrinfo);
+    for (addrinfo *a = found; a; a = a->ai_next) {
+        const int fd =
+            ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
+        if (fd < 0)
+            continue;
+        if (connect(fd, a->ai_addr, a->ai_addrlen)) {
+            m_fd = fd;
+            return true;
+        }
+        const int failure = errno;
+        ::close(fd);
+        errno = failure;
+    }
+    *error = QStringLiteral("%1:%2: %3")
+                 .arg(host)
+                 .arg(port)
+                 .arg(QString::fromLocal8Bit(std::strerror(errno)));
+    return false;
 }
 
 } // namespace semhap

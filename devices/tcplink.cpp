@@ -5,8 +5,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <memory>
-#include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -49,44 +47,21 @@ TcpLink::TcpLink(const QString &host, int port) : m_host(host), m_port(port) {}
 
 QString TcpLink::uri() const
 {
-    DeviceUri uri;
-    uri.scheme = QStringLiteral("tcp");
-    uri.name = m_host;
-    uri.port = m_port;
-    return uri.toString();
+    return DeviceUri::hostPortUri(QStringLiteral("tcp"), m_host, m_port);
 }
 
 bool TcpLink::open(QString *error)
 {
-    close();
-    addrinfo hints{};
-    hints.ai_family = AF_UNSPEC;
-    hints.ai_socktype = SOCK_STREAM;
-    addrinfo *found = nullptr;
-    const int rc = ::getaddrinfo(m_host.toLocal8Bit().constData(),
-                                 QByteArray::number(m_port).constData(), &hints, &found);
-    if (rc != 0) {
-        *error = QStringLiteral("%1: %2").arg(m_host, QString::fromLocal8Bit(gai_strerror(rc)));
+    if (!openSocket(
+            m_host, m_port, SOCK_STREAM,
+            [](int fd, const sockaddr *address, socklen_t length) {
+                return connectWithin(fd, address, length, ConnectTimeoutMs);
+            },
+            error))
         return false;
-    }
-    std::unique_ptr<addrinfo, void (*)(addrinfo *)> list(found, ::freeaddrinfo);
-    for (addrinfo *a = found; a; a = a->ai_next) {
-        const int fd =
-            ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
-        if (fd < 0)
-            continue;
-        if (connectWithin(fd, a->ai_addr, a->ai_addrlen, ConnectTimeoutMs)) {
-            const int on = 1;
-            ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
-            m_fd = fd;
-            return true;
-        }
-        const int failure = errno;
-        ::close(fd);
-        errno = failure;
-    }
-    *error = QStringLiteral("%1:%2: %3").arg(m_host).arg(m_port).arg(errnoText());
-    return false;
+    const int on = 1;
+    ::setsockopt(m_fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
+    return true;
 }
 
 bool TcpLink::writeFrame(const std::uint8_t *data, int size, QString *error)
