@@ -30,10 +30,10 @@ const std::vector<TaskType> &TaskType::all()
             [](World &world, std::uint64_t seed, double, double, QString *error)
                 -> std::unique_ptr<Task> { return InsertionTask::create(world, seed, error); },
             {QStringLiteral("scripted"), QStringLiteral("reactive")},
-            [](const QString &name, const World &, std::uint64_t seed, double reactionTime,
-               QString *) -> std::unique_ptr<Operator> {
-                return std::make_unique<InsertionOperator>(seed, name == QLatin1String("reactive"),
-                                                           reactionTime);
+            [](const QString &operatorName, const World &, std::uint64_t seed,
+               double reactionTime, QString *) -> std::unique_ptr<Operator> {
+                return std::make_unique<InsertionOperator>(
+                    seed, operatorName == QLatin1String("reactive"), reactionTime);
             },
             &InsertionTask::metricSpecs,
         },
@@ -42,10 +42,10 @@ const std::vector<TaskType> &TaskType::all()
             [](World &world, std::uint64_t seed, double, double, QString *error)
                 -> std::unique_ptr<Task> { return WipingTask::create(world, seed, error); },
             {QStringLiteral("scripted"), QStringLiteral("reactive")},
-            [](const QString &name, const World &world, std::uint64_t seed, double reactionTime,
-               QString *) -> std::unique_ptr<Operator> {
+            [](const QString &operatorName, const World &world, std::uint64_t seed,
+               double reactionTime, QString *) -> std::unique_ptr<Operator> {
                 return std::make_unique<WipingOperator>(
-                    world, seed, name == QLatin1String("reactive"), reactionTime);
+                    world, seed, operatorName == QLatin1String("reactive"), reactionTime);
             },
             &WipingTask::metricSpecs,
         },
