@@ -30,8 +30,8 @@ const std::vector<TaskType> &TaskType::all()
             [](World &world, std::uint64_t seed, double, double, QString *error)
                 -> std::unique_ptr<Task> { return InsertionTask::create(world, seed, error); },
             {QStringLiteral("scripted"), QStringLiteral("reactive")},
-            [](const QString &operatorName, const World &, std::uint64_t seed,
-               double reactionTime, QString *) -> std::unique_ptr<Operator> {
+            [](const QString &operatorName, const World &, std::uint64_t seed, double reactionTime,
+               QString *) -> std::unique_ptr<Operator> {
                 return std::make_unique<InsertionOperator>(
                     seed, operatorName == QLatin1String("reactive"), reactionTime);
             },
