@@ -2,12 +2,14 @@
 // The `semhap` command line as users meet it: exit codes, one-line errors, render output.
 #include "clitool.h"
 #include "emulatedband.h"
+#include "transportscheme.h"
 
 #include <QBuffer>
 #include <QDir>
 #include <QProcess>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace semhap;
@@ -59,6 +61,7 @@ private slots:
     void renderReleaseRamp();
     void renderToFile();
     void validate();
+    void devicesListsEveryTransport();
     void probeAsksTheBand();
     void realBinaryReadsStdin();
 };
@@ -316,6 +319,30 @@ void TestCli::validate()
     QVERIFY2(old.err.contains("old-spelling-router.json: /nodes/1/type: deprecated: node type "
                               "\"hysteresis\" is now \"debounce\""),
              old.err.constData());
+}
+
+void TestCli::devicesListsEveryTransport()
+{
+    // Each registered scheme: its syntax at the start of a line, its help from column 27 on
+    // (on the next line for a syntax wider than its column), every line within 80 columns.
+    const Result r = semhapRun({"devices"});
+    QCOMPARE(r.code, 0);
+    const QString out = QString::fromUtf8(r.out);
+    QVERIFY(out.contains(QStringLiteral("Present:")));
+    const QStringList lines = out.section(QStringLiteral("\n\n"), 0, 0).split(QLatin1Char('\n'));
+    for (const QString &line : lines)
+        QVERIFY2(line.size() <= 80, qPrintable(line));
+    for (const TransportScheme &scheme : TransportScheme::all()) {
+        const QString syntax = QStringLiteral("  ") + QString::fromUtf8(scheme.syntax);
+        const auto at = std::find_if(lines.begin(), lines.end(), [&](const QString &line) {
+            return line == syntax || line.startsWith(syntax + QLatin1Char(' '));
+        });
+        QVERIFY2(at != lines.end(), scheme.syntax);
+        const QString help = *at == syntax ? *(at + 1) : *at;
+        const QString firstWord = QString::fromUtf8(scheme.help).section(QLatin1Char(' '), 0, 0);
+        QCOMPARE(help.mid(27).section(QLatin1Char(' '), 0, 0), firstWord);
+        QCOMPARE(help.left(27).trimmed(), (*at == syntax ? QString() : syntax.trimmed()));
+    }
 }
 
 void TestCli::probeAsksTheBand()
