@@ -12,8 +12,9 @@ namespace semhap {
 
 namespace {
 
-// Longer than this is almost certainly a typo in --duration.
-constexpr double MaxDuration = 3600.0;
+// Longer than this is almost certainly a typo in --duration (a name of its own: Command's
+// MaxDuration, a simulation's limit, would hide it).
+constexpr double MaxPlaySeconds = 3600.0;
 // How long to wait for a band to answer before playing anyway (it may not reply at all).
 constexpr double AnswerTimeout = 1.0;
 
@@ -55,8 +56,8 @@ int PlayCommand::execute(const QCommandLineParser &parser)
         return ExitUsage;
     if (gain < 0 || gain > 1)
         return usageError(tr("--gain must be within [0, 1]"));
-    if (options.duration < 0 || options.duration > MaxDuration)
-        return usageError(tr("--duration must be within [0, %1]").arg(MaxDuration));
+    if (options.duration < 0 || options.duration > MaxPlaySeconds)
+        return usageError(tr("--duration must be within [0, %1]").arg(MaxPlaySeconds));
     options.rate = 0.0; // the model's own rate
     RenderedPattern rendered;
     DeviceModelPtr model;

@@ -167,6 +167,9 @@ void TestCli::errors_data()
     QTest::newRow("bandsim of a truncated image")
         << QStringList{"bandsim", "lra4", "--pty", "--firmware", Data + "/truncated-image.hex"}
         << 1 << Data + "/truncated-image.hex: no end-of-file record (a truncated image?)";
+    QTest::newRow("play for more than an hour")
+        << QStringList{"play", "vib.geiger", "--device", "virtual:x", "--duration", "4000"} << 2
+        << "semhap play: --duration must be within [0, 3600]";
     QTest::newRow("probe of a malformed URI") << QStringList{"devices", "--probe", "bogus:x"} << 2
                                               << "semhap devices: bogus:x: unknown device scheme "
                                                  "'bogus' (virtual, serial, hid, udp, tcp, audio)";
