@@ -8,7 +8,8 @@ uint16_t semhap_crc16(const uint8_t *data, size_t size, uint16_t crc)
     for (i = 0; i < size; ++i) {
         crc = (uint16_t)(crc ^ ((unsigned)data[i] << 8));
         for (bit = 0; bit < 8; ++bit)
-            crc = (crc & 0x8000u) ? (uint16_t)((crc << 1) ^ 0x1021u) : (uint16_t)(crc << 1);
+            crc = (crc & 0x8000u) ? (uint16_t)(((unsigned)crc << 1) ^ 0x1021u)
+                                  : (uint16_t)(crc << 1);
     }
     return crc;
 }
