@@ -5,8 +5,8 @@
 #     "timing") serially; the interop tests against the reference libraries that
 #     `npm ci` installs into tests/interop;
 #  2. the sanitizer build (clang, ASan + UBSan) of the core, patterns and devices tests, and
-#     each libFuzzer target for a capped number of runs on its seed corpus, each input
-#     within 10 s;
+#     each libFuzzer target (one per core) for a capped number of runs on its seed
+#     corpus, each input within 10 s;
 #  3. the Debian package (scripts/package.sh): built, validated, run from its extracted tree
 #     and installed with apt;
 #  4. the exported CMake package: an outside project's Qt Test against the installed core,
@@ -38,8 +38,10 @@ CC=clang CXX=clang++ "$root/scripts/build.sh" "$root/build-asan" \
 (cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --output-on-failure -j "$jobs" -L sanitize)
-for fuzzer in "$root"/build-asan/tests/fuzz/fuzz_*; do
-    [ -f "$fuzzer" ] && [ -x "$fuzzer" ] || continue
+# One fuzzer per core: five of them run into their 60 s cap, which is most of CI's time
+# when they queue on one core.
+fuzz() {
+    local fuzzer=$1 name corpus work output status=0
     name=$(basename "$fuzzer")
     corpus="$root/tests/fuzz/corpus/${name#fuzz_}"
     work=$(mktemp -d)
@@ -48,11 +50,20 @@ for fuzzer in "$root"/build-asan/tests/fuzz/fuzz_*; do
     case "$name" in
     fuzz_convert | fuzz_router) "$root/build-asan/tests/fuzz/largeseeds" "$work" "$work" ;;
     esac
-    echo "-- $name: $fuzz_runs runs"
-    "$fuzzer" -runs="$fuzz_runs" -max_total_time=60 -timeout=10 -rss_limit_mb=2048 \
-        "$work" 2>&1 | tail -n 1
+    output=$("$fuzzer" -runs="$fuzz_runs" -max_total_time=60 -timeout=10 -rss_limit_mb=2048 \
+        "$work" 2>&1) || status=$?
     rm -rf "$work"
-done
+    if [ "$status" -eq 0 ]; then
+        echo "-- $name: $fuzz_runs runs: ${output##*$'\n'}"
+    else
+        printf -- '-- %s: FAILED (exit %d)\n%s\n' "$name" "$status" "$output"
+    fi
+    return "$status"
+}
+export -f fuzz
+export root fuzz_runs
+find "$root/build-asan/tests/fuzz" -maxdepth 1 -type f -name 'fuzz_*' -perm -u+x -print0 \
+    | sort -z | xargs -0 -n 1 -P "$jobs" bash -c 'fuzz "$1"' fuzz
 
 echo "== desktop package"
 "$root/scripts/package.sh" "$root/build"
