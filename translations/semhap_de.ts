@@ -611,6 +611,15 @@
     </message>
 </context>
 <context>
+    <name>semhap::LiveRig</name>
+    <message>
+        <source>Live rig on %1
+The rig draws its own scene.</source>
+        <translation>Live-Rig auf %1
+Das Rig zeichnet seine Szene selbst.</translation>
+    </message>
+</context>
+<context>
     <name>semhap::LiveRigDialog</name>
     <message>
         <source>Listen for a live rig</source>
@@ -946,12 +955,6 @@
     <message>
         <source>Run another program&apos;s contact frames, sent over UDP, instead of the scene (Ctrl+L)</source>
         <translation>Die per UDP gesendeten Kontaktframes eines anderen Programms statt der Szene verarbeiten (Strg+L)</translation>
-    </message>
-    <message>
-        <source>Live rig on %1
-The rig draws its own scene.</source>
-        <translation>Live-Rig auf %1
-Das Rig zeichnet seine Szene selbst.</translation>
     </message>
     <message>
         <source>semhap studio — live rig on %1 · %2</source>
@@ -2974,6 +2977,10 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Replay: a robot&apos;s recording has no scene</source>
         <translation>Wiedergabe: Eine Roboteraufzeichnung hat keine Szene</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
     </message>
 </context>
 <context>

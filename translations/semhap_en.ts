@@ -611,6 +611,14 @@
     </message>
 </context>
 <context>
+    <name>semhap::LiveRig</name>
+    <message>
+        <source>Live rig on %1
+The rig draws its own scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::LiveRigDialog</name>
     <message>
         <source>Listen for a live rig</source>
@@ -945,11 +953,6 @@
     </message>
     <message>
         <source>Run another program&apos;s contact frames, sent over UDP, instead of the scene (Ctrl+L)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live rig on %1
-The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2965,6 +2968,10 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Replay: a robot&apos;s recording has no scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -700,28 +700,15 @@ void MainWindow::toggleRecording()
 
 void MainWindow::showSource()
 {
-    const RunSource &source = *m_engine.source();
+    RunSource &source = *m_engine.source();
     m_viewport->setScene(source.world(), source.sceneFeed());
-    switch (source.kind()) {
-    case RunSource::Kind::Simulation:
-        m_viewport->setCaption(QString());
-        m_viewport->setPlaceholder(QString());
-        break;
-    case RunSource::Kind::Rig:
-        m_viewport->setCaption(QString());
-        m_viewport->setPlaceholder(
-            tr("Live rig on %1\nThe rig draws its own scene.").arg(m_engine.liveUri()));
-        break;
-    case RunSource::Kind::Replay:
-        m_viewport->setCaption(tr("Replay"));
-        m_viewport->setPlaceholder(m_engine.replay().sceneNote());
-        break;
-    }
+    m_viewport->setCaption(source.caption());
+    m_viewport->setPlaceholder(source.sceneNote());
     // Only a simulation's grippers follow the user; a replay's bodies go where they were.
     const World *drivable = source.isDrivable() ? source.world() : nullptr;
-    m_handDrive->setOperator(m_engine.driveOperator());
+    m_handDrive->setOperator(source.driveOperator());
     m_handDrive->setWorld(drivable);
-    m_poseInput->setOperator(m_engine.driveOperator());
+    m_poseInput->setOperator(source.driveOperator());
     m_poseInput->setWorld(drivable);
     m_shownRejections = 0;
     updateMode();
@@ -1057,7 +1044,7 @@ void MainWindow::updateStatus()
 void MainWindow::updateLiveStatus()
 {
     const QLocale locale;
-    const LiveRig::Stats stats = m_engine.liveStats();
+    const RunSource::LinkStats stats = m_engine.liveStats();
     m_operatorLabel->setText(tr("Live rig on %1").arg(m_engine.liveUri()));
     QString rate = m_engine.isRunning() ? tr("%1 frames/s, jitter %2 ms")
                                               .arg(locale.toString(stats.framesPerSecond, 'f', 0),
@@ -1068,16 +1055,15 @@ void MainWindow::updateLiveStatus()
         rate += tr(" · %n malformed", nullptr, int(std::min<quint64>(stats.rejected, INT_MAX)));
     m_rateLabel->setText(rate);
     // The latest rejection says what was wrong with it, as it comes.
-    quint64 rejections = 0;
-    const QString rejection = m_engine.liveRejection(&rejections);
-    if (rejections != m_shownRejections) {
-        m_shownRejections = rejections;
-        statusBar()->showMessage(tr("Malformed datagram: %1").arg(rejection), 5000);
+    if (stats.reasons != m_shownRejections) {
+        m_shownRejections = stats.reasons;
+        statusBar()->showMessage(tr("Malformed datagram: %1").arg(stats.lastRejection), 5000);
     }
     // The message goes after 5 s and a narrow window cuts it: the count's tooltip keeps the
     // reason.
-    m_rateLabel->setToolTip(rejections > 0 ? tr("Latest malformed datagram: %1").arg(rejection)
-                                           : QString());
+    m_rateLabel->setToolTip(stats.reasons > 0
+                                ? tr("Latest malformed datagram: %1").arg(stats.lastRejection)
+                                : QString());
 }
 
 void MainWindow::updateDevicesStatus()

@@ -112,7 +112,7 @@ QJsonObject Workspace::toJson() const
     QJsonObject json{{QStringLiteral("format"), QLatin1String(Format)}};
     // A replay keeps the run it replaced behind it: that is the run to come back to.
     const RunSource *run = engine.streamingSource();
-    if (run && run->kind() == RunSource::Kind::Rig) {
+    if (engine.isListening()) {
         const LiveRigOptions rig = engine.liveOptions();
         QJsonObject live{{QStringLiteral("address"), rig.address},
                          {QStringLiteral("port"), rig.port},

@@ -6,6 +6,7 @@
 #include "deviceuri.h"
 #include "foxglovepublisher.h"
 #include "sessionwriter.h"
+#include "simulationsource.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -27,10 +28,10 @@ using Clock = std::chrono::steady_clock;
 constexpr double StepRate = 60.0;
 /** Task metrics go to the GUI this often (simulated seconds). */
 constexpr double MetricsPeriod = 0.25;
-/** The user's commanded pose and grip are recorded this often while driving (s). */
-constexpr double InputPeriod = 0.01;
 /** The most simulated time one batch catches up before pacing gives up and restarts (s). */
 constexpr double MaxLag = 0.2;
+/** How long a source that is not paced waits for its link before looking at quit (ms). */
+constexpr int WaitSlice = 5;
 
 double seconds(Clock::duration d)
 {
@@ -42,6 +43,11 @@ double seconds(Clock::duration d)
 void Engine::StepSink::onContactFrame(const ContactFrame &frame)
 {
     m_engine.takeFrame(frame, qQNaN());
+}
+
+void Engine::StepSink::onReceivedFrame(const ContactFrame &frame, double arrival)
+{
+    m_engine.takeFrame(frame, arrival);
 }
 
 void Engine::takeFrame(const ContactFrame &frame, double arrival)
@@ -74,13 +80,12 @@ void Engine::rewire()
     // frames are the readouts' device frames (m_sentFeed); then the feed, for the rest.
     m_publisher.reset();
     Pipeline *running = m_source ? m_source->pipeline() : nullptr;
-    if (m_foxglove && running) {
+    if (m_foxglove && running && m_run->actors()) {
         // Stamped on the wall clock: the run's t now is now.
         const std::int64_t origin =
             QDateTime::currentMSecsSinceEpoch() * 1000000 - std::llround(m_simTime.load() * 1e9);
-        m_publisher = std::make_unique<FoxglovePublisher>(
-            *m_foxglove, running->router(),
-            m_simulation ? m_simulation->run().world().actors() : m_rig->actors(), origin);
+        m_publisher = std::make_unique<FoxglovePublisher>(*m_foxglove, running->router(),
+                                                          *m_run->actors(), origin);
         const Hands hands = m_source->hands();
         for (const Gripper g : {Gripper::Left, Gripper::Right}) {
             if (hands[size_t(g)])
@@ -153,16 +158,60 @@ bool Engine::start(const RunOptions &options, QString *error)
     std::unique_ptr<SimRun> run = SimRun::create(options, error);
     if (!run)
         return false;
+    if (!startSource(
+            std::make_unique<SimulationSource>(std::move(run)),
+            [this](QString *restartError) { return start(m_options, restartError); }, error))
+        return false;
+    m_options = options;
+    return true;
+}
+
+bool Engine::startSource(std::unique_ptr<RunSource> source, std::function<bool(QString *)> restart,
+                         QString *error)
+{
+    // A source that needs what the running one holds (its port) has it let go of first.
+    const bool conflicts = m_run && source->conflictsWith(*m_run);
+    if (conflicts) {
+        emit sourceAboutToChange();
+        stopSource();
+    }
+    // What a source reads belongs to the thread that reads it, so the new pipeline thread
+    // opens it; it runs only once the old run has stopped and the new one is installed, and
+    // the old run goes on untouched when the source cannot open.
+    QString openError;
+    std::promise<bool> opened;
+    std::future<bool> openResult = opened.get_future();
+    std::promise<bool> go;
+    std::thread thread([this, &openError, opening = source.get(), opened = std::move(opened),
+                        goAhead = go.get_future()]() mutable {
+        const bool ok = opening->start(&openError);
+        opened.set_value(ok); // openError is the caller's again from here
+        if (!ok)
+            return;
+        if (goAhead.get())
+            loop(*opening);
+        opening->shutdown();
+    });
+    if (!openResult.get()) {
+        thread.join();
+        *error = openError;
+        if (conflicts) {
+            // Nothing is left to go back to: the simulation comes back instead.
+            QString simError;
+            start(m_options, &simError);
+        }
+        return false;
+    }
     emit sourceAboutToChange();
     stopSource();
-    m_simulation = std::make_unique<SimulationSource>(std::move(run));
-    m_source = m_simulation.get();
-    m_options = options;
+    m_run = std::move(source);
+    m_source = m_run.get();
+    m_restart = std::move(restart);
+    m_live.reset();
     install();
-    // A first picture before the thread starts: a run loaded or reset while paused shows
-    // its scene at once, not a blank viewport until Step or Run.
-    m_simulation->sceneFeed()->capture(m_simulation->run().world(), SceneOverlay());
-    startThread();
+    m_quit = false;
+    m_thread = std::move(thread);
+    go.set_value(true);
     return true;
 }
 
@@ -212,8 +261,9 @@ bool Engine::closeReplay(QString *error)
     m_keptHistory.start({}, {}, {});
     // What the bands were sent during the replay (an audition) is not the run's.
     m_sentFeed.start(deviceNames(), *m_devices);
-    if (m_simulation) // the paused run's own, fresher than the last it sent the GUI
-        m_history.setMetrics(metrics());
+    // The paused run's own, fresher than the last it sent the GUI.
+    if (const QJsonObject runMetrics = metrics(); !runMetrics.isEmpty())
+        m_history.setMetrics(runMetrics);
     m_runKept = false; // a rig that fell silent meanwhile ends its messages now
     emit sourceChanged();
     setDriving(m_keptDriving);
@@ -233,14 +283,10 @@ RouterContext Engine::routerContext() const
 {
     if (isReplaying())
         return m_replay.info().routerContext;
-    if (m_simulation)
-        return SimRun::routerContext(m_simulation->run().world(), m_options.reactionTime);
+    if (m_run)
+        return m_run->routerContext(m_options.reactionTime);
     RouterContext context;
     context.reactionTime = m_options.reactionTime;
-    for (Gripper gripper : {Gripper::Left, Gripper::Right}) {
-        if (m_rig)
-            context.signalNames[size_t(gripper)] = m_rig->signalNames(gripper);
-    }
     return context;
 }
 
@@ -256,54 +302,14 @@ bool Engine::startLive(const LiveRigOptions &options, QString *error)
         *error = loadError.toString();
         return false;
     }
-    // A rig on the same port (a reset) has to let go of it before the new one can open it.
-    const bool samePort = m_rig && options.foxglove.isEmpty() &&
-                          m_rig->options().foxglove.isEmpty() && options.port != 0 &&
-                          options.port == m_rig->stats().port &&
-                          options.address == m_rig->options().address;
-    if (samePort) {
-        emit sourceAboutToChange();
-        stopSource();
-    }
-
-    // The socket belongs to the thread that reads it, so the new pipeline thread opens it;
-    // it starts reading only once the old run has stopped and the new one is installed, and
-    // the old run goes on untouched when the port cannot be had.
-    auto rig = std::make_unique<LiveRig>(options, std::move(router));
-    std::promise<QString> opened;
-    std::future<QString> openResult = opened.get_future();
-    std::promise<bool> go;
-    std::thread thread(
-        [this, rig = rig.get(), opened = std::move(opened), start = go.get_future()]() mutable {
-            QString openError;
-            const bool ok = rig->open(&openError);
-            opened.set_value(openError);
-            if (!ok)
-                return;
-            if (start.get())
-                listenLoop();
-            rig->close();
-        });
-    *error = openResult.get();
-    if (!error->isEmpty()) {
-        thread.join();
-        if (samePort) {
-            // Nothing is left to go back to: the simulation comes back instead.
-            QString simError;
-            start(m_options, &simError);
-        }
+    if (!startSource(
+            std::make_unique<LiveRig>(options, std::move(router)),
+            [this](QString *restartError) { return startLive(liveOptions(), restartError); },
+            error))
         return false;
-    }
-    emit sourceAboutToChange();
-    stopSource();
-    m_rig = std::move(rig);
-    m_source = m_rig.get();
+    m_live = options;
     m_options.router = options.router;
     m_options.overrides = options.overrides;
-    install();
-    m_quit = false;
-    m_thread = std::move(thread);
-    go.set_value(true);
     return true;
 }
 
@@ -317,15 +323,13 @@ void Engine::stopStreaming()
     m_output.reset();
     rewire();
     m_source = isReplaying() ? m_source : nullptr;
-    m_simulation.reset();
-    m_rig.reset();
+    m_run.reset();
+    m_live.reset();
 }
 
 RunSource *Engine::streamingSource() const
 {
-    if (m_simulation)
-        return m_simulation.get();
-    return m_rig.get();
+    return m_run.get();
 }
 
 void Engine::stopSource()
@@ -348,7 +352,7 @@ void Engine::install()
     m_output = std::make_unique<DeviceOutputSink>(player, *m_devices);
     rewire();
     setDriving(false);
-    m_simTime = m_simulation ? m_simulation->run().time() : 0.0;
+    m_simTime = m_run->time();
     m_realtimeFactor = 0.0;
     m_nextMetrics = 0.0;
     m_pendingSteps = 0;
@@ -357,8 +361,7 @@ void Engine::install()
     m_history.start(liveDevicesOf(pipeline().router(), m_source->hands()), shownThresholds(),
                     pipeline().router().nodeIds());
     m_sentFeed.start(deviceNames(), *m_devices);
-    // A live rig has no task to count.
-    m_history.setMetrics(m_simulation ? m_simulation->run().metrics() : QJsonObject());
+    m_history.setMetrics(m_run->metrics()); // empty without a task (a live rig)
 }
 
 Pipeline &Engine::pipeline()
@@ -373,32 +376,27 @@ double Engine::simTime() const
 
 DriveOperator *Engine::driveOperator() const
 {
-    return m_simulation ? &m_simulation->driveOperator() : nullptr;
+    return m_run ? m_run->driveOperator() : nullptr;
 }
 
-LiveRig::Stats Engine::liveStats() const
+RunSource::LinkStats Engine::liveStats() const
 {
-    return m_rig ? m_rig->stats() : LiveRig::Stats();
-}
-
-QString Engine::liveRejection(quint64 *count) const
-{
-    *count = 0;
-    return m_rig ? m_rig->lastRejection(count) : QString();
+    const std::optional<RunSource::LinkStats> stats = m_run ? m_run->linkStats() : std::nullopt;
+    return stats.value_or(RunSource::LinkStats());
 }
 
 LiveRigOptions Engine::liveOptions() const
 {
-    if (!m_rig)
+    if (!m_live)
         return LiveRigOptions();
-    LiveRigOptions options = m_rig->options();
-    options.port = m_rig->stats().port;
+    LiveRigOptions options = *m_live;
+    options.port = liveStats().port;
     return options;
 }
 
 QString Engine::liveUri() const
 {
-    return m_rig ? m_rig->uri() : QString();
+    return m_run ? m_run->address() : QString();
 }
 
 void Engine::bindRouterDevices(const Player &player, QString *error)
@@ -438,10 +436,7 @@ bool Engine::setRouter(const RouterGraph &graph, QString *error)
         // The old router's devices fall silent now; a device the new router keeps goes on
         // with the new router's frames from the next tick.
         silenceDevices(m_outputs);
-        if (m_simulation)
-            m_simulation->run().setRouter(std::move(router), m_sink);
-        else
-            m_rig->setRouter(std::move(router), m_sink);
+        m_run->setRouter(std::move(router), m_sink);
         // What the old router's devices were sent is read with its numbering, before a
         // rebinding frees a transport.
         m_sentFeed.drainInto(m_history);
@@ -519,7 +514,9 @@ bool Engine::reset(QString *error)
     const bool wasRunning = isRunning();
     // The rig that listens, or that a replay keeps behind it, listens afresh on its port.
     std::unique_ptr<RouterGraph> applied = std::move(m_appliedGraph);
-    const bool started = m_rig ? startLive(liveOptions(), error) : start(m_options, error);
+    // A copy: the restart puts the new source's in its place.
+    const std::function<bool(QString *)> restart = m_restart;
+    const bool started = m_run && restart ? restart(error) : start(m_options, error);
     if (!started)
         return false;
     if (applied && !setRouter(*applied, error))
@@ -532,8 +529,7 @@ bool Engine::reset(QString *error)
 
 void Engine::run()
 {
-    if (!isLoaded() || !m_source->isStreaming() ||
-        (m_simulation && m_simulation->run().isDone()) || m_running.exchange(true))
+    if (!isLoaded() || !m_source->isStreaming() || m_source->isDone() || m_running.exchange(true))
         return;
     emit runningChanged(true);
 }
@@ -552,9 +548,9 @@ void Engine::pause()
 
 void Engine::step()
 {
-    if (!m_simulation || isReplaying() || isRunning())
+    if (!m_run || !m_run->isPaced() || isReplaying() || isRunning())
         return;
-    const int steps = int(std::lround(1.0 / StepRate / m_simulation->run().world().timestep()));
+    const int steps = int(std::lround(1.0 / StepRate / m_run->timestep()));
     m_pendingSteps.fetch_add(std::max(1, steps));
 }
 
@@ -570,7 +566,7 @@ void Engine::setSpeed(double speed)
 
 void Engine::setDriving(bool driving)
 {
-    driving = driving && m_simulation && !isReplaying();
+    driving = driving && driveOperator() && !isReplaying();
     if (m_driving.exchange(driving) != driving)
         emit drivingChanged(driving);
 }
@@ -601,18 +597,18 @@ bool Engine::bindDevice(const QString &name, const QString &uri, QString *error)
 
 void Engine::setDuration(double seconds)
 {
-    if (!m_simulation)
+    if (!m_run)
         return;
     std::lock_guard<std::mutex> lock(m_setupMutex);
-    m_simulation->run().setDuration(seconds);
+    m_run->setDuration(seconds);
 }
 
 std::array<std::optional<HandCommand>, 2> Engine::handCommands()
 {
-    if (!m_simulation)
+    if (!driveOperator() || !m_run->world())
         return {};
     std::lock_guard<std::mutex> lock(m_setupMutex);
-    return currentCommands(m_simulation->run().world());
+    return currentCommands(*m_run->world());
 }
 
 void Engine::stopAll()
@@ -644,12 +640,6 @@ void Engine::drain()
     m_history.commit();
 }
 
-void Engine::startThread()
-{
-    m_quit = false;
-    m_thread = std::thread([this] { loop(); });
-}
-
 void Engine::stopThread()
 {
     if (!m_thread.joinable())
@@ -658,12 +648,12 @@ void Engine::stopThread()
     m_thread.join();
 }
 
-void Engine::loop()
+void Engine::loop(RunSource &source)
 {
-    SimRun &run = m_simulation->run();
-    const double dt = run.world().timestep();
+    const bool paced = source.isPaced();
+    const double dt = source.timestep();
     Clock::time_point anchorWall = Clock::now();
-    double anchorSim = run.time();
+    double anchorSim = source.time();
     int epoch = m_speedEpoch.load();
     bool wasRunning = false;
     Clock::time_point rateWall = anchorWall;
@@ -672,38 +662,50 @@ void Engine::loop()
     while (!m_quit.load()) {
         const bool running = m_running.load();
         const Clock::time_point now = Clock::now();
-        long steps = 0;
-        if (running) {
-            if (!wasRunning || epoch != m_speedEpoch.load()) {
-                epoch = m_speedEpoch.load();
-                anchorWall = now;
-                anchorSim = run.time();
+        RunSource::Budget budget;
+        budget.running = running;
+        budget.stillRunning = &m_running;
+        budget.driving = m_driving.load(std::memory_order_relaxed);
+        budget.holdSilence = m_runKept.load();
+        bool ready = true;
+        if (paced) {
+            if (running) {
+                if (!wasRunning || epoch != m_speedEpoch.load()) {
+                    epoch = m_speedEpoch.load();
+                    anchorWall = now;
+                    anchorSim = source.time();
+                }
+                const double target = anchorSim + m_speed.load() * seconds(now - anchorWall);
+                budget.steps = std::lround(std::floor((target - source.time()) / dt));
+                if (double(budget.steps) * dt > MaxLag) {
+                    // Slower than asked: run flat out from here instead of chasing the past.
+                    budget.steps = std::lround(MaxLag / dt);
+                    anchorWall = now;
+                    anchorSim = source.time() + double(budget.steps) * dt;
+                }
+            } else {
+                budget.steps = m_pendingSteps.exchange(0);
             }
-            const double target = anchorSim + m_speed.load() * seconds(now - anchorWall);
-            steps = std::lround(std::floor((target - run.time()) / dt));
-            if (double(steps) * dt > MaxLag) {
-                // Slower than asked: run flat out from here instead of chasing the past.
-                steps = std::lround(MaxLag / dt);
-                anchorWall = now;
-                anchorSim = run.time() + double(steps) * dt;
-            }
+            wasRunning = running;
+            ready = budget.steps > 0;
+            if (!ready)
+                source.wait(1);
         } else {
-            steps = m_pendingSteps.exchange(0);
+            source.wait(WaitSlice);
         }
-        wasRunning = running;
 
         // A run ends in a batch of steps; read under the lock, as setDuration() (a study's
         // trial, from the GUI thread) changes where it ends.
         bool done = false;
-        if (steps > 0) {
+        if (ready) {
             std::lock_guard<std::mutex> lock(m_setupMutex);
-            // A pause or a stop-all ends a running batch at the next step, also one that
-            // came while this thread waited for the lock.
-            for (long k = 0; k < steps && !run.isDone() && (!running || m_running.load()); ++k)
-                stepOnce();
-            done = run.isDone();
-        } else {
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            if (source.advance(m_sink, budget) == RunSource::Outcome::Silent) {
+                silenceDevices(m_outputs);
+                m_devices->stopAll();
+            }
+            m_simTime.store(source.time(), std::memory_order_relaxed);
+            sendMetrics(source);
+            done = source.isDone();
         }
         if (done && m_running.exchange(false)) {
             QMetaObject::invokeMethod(
@@ -717,34 +719,30 @@ void Engine::loop()
 
         const double wall = seconds(now - rateWall);
         if (wall >= 0.5) {
-            m_realtimeFactor = running ? (run.time() - rateSim) / wall : 0.0;
+            m_realtimeFactor = running ? (source.time() - rateSim) / wall : 0.0;
             rateWall = now;
-            rateSim = run.time();
+            rateSim = source.time();
         }
     }
 }
 
-void Engine::listenLoop()
+void Engine::sendMetrics(const RunSource &source)
 {
-    /** How long the thread sleeps on the socket before it looks at m_quit again (ms). */
-    constexpr int WaitSlice = 5;
-    const LiveRig::FrameHandler process = [this](const ContactFrame &frame, double arrival) {
-        takeFrame(frame, arrival);
-        m_rig->pipeline()->process(frame, m_sink);
-        m_simTime.store(frame.t, std::memory_order_relaxed);
-    };
-    while (!m_quit.load()) {
-        m_rig->wait(WaitSlice);
-        // One batch a turn (LiveRig::poll), so a flood cannot keep the set-up locked.
-        std::lock_guard<std::mutex> lock(m_setupMutex);
-        m_rig->poll(process, !m_running.load());
-        // The rig behind a replay keeps its silence for later: an audition or the replay
-        // owns the devices until the replay closes.
-        if (!m_runKept.load() && m_rig->endIfSilent(m_sink, process, !m_running.load())) {
-            silenceDevices(m_outputs);
-            m_devices->stopAll();
-        }
-    }
+    const double t = source.time();
+    if (t < m_nextMetrics)
+        return;
+    m_nextMetrics = t + MetricsPeriod;
+    const QJsonObject metrics = source.metrics();
+    if (metrics.isEmpty())
+        return; // no task to count
+    const int generation = m_generation;
+    QMetaObject::invokeMethod(
+        this,
+        [this, metrics, generation] {
+            if (generation == m_generation)
+                m_history.setMetrics(metrics);
+        },
+        Qt::QueuedConnection);
 }
 
 void Engine::silenceDevices(PipelineSink &sink)
@@ -766,48 +764,12 @@ QStringList Engine::deviceNames()
     return names;
 }
 
-void Engine::stepOnce()
-{
-    SimRun &run = m_simulation->run();
-    const bool driving = m_driving.load(std::memory_order_relaxed);
-    run.setDriveOperator(driving ? &m_simulation->driveOperator() : nullptr);
-    run.step(m_sink);
-    const double t = run.time();
-    if (driving && m_recorder && t >= m_nextInput) {
-        m_nextInput = t + InputPeriod;
-        recordInput(t);
-    }
-    if (m_recorder)
-        run.recordSceneState(*m_recorder);
-    m_simTime.store(t, std::memory_order_relaxed);
-    SceneFeed &sceneFeed = *m_simulation->sceneFeed();
-    if (sceneFeed.wantsCapture()) {
-        const Perception &perception = run.perception();
-        const Feeling left = perception.feeling(Gripper::Left);
-        const Feeling right = perception.feeling(Gripper::Right);
-        sceneFeed.capture(run.world(), {left.shownConfirmation, left.shownWarning,
-                                        right.shownConfirmation, right.shownWarning});
-    }
-    if (t >= m_nextMetrics) {
-        m_nextMetrics = t + MetricsPeriod;
-        const QJsonObject metrics = run.metrics();
-        const int generation = m_generation;
-        QMetaObject::invokeMethod(
-            this,
-            [this, metrics, generation] {
-                if (generation == m_generation)
-                    m_history.setMetrics(metrics);
-            },
-            Qt::QueuedConnection);
-    }
-}
-
 QJsonObject Engine::metrics()
 {
-    if (!m_simulation || isReplaying())
+    if (!m_run || isReplaying())
         return QJsonObject();
     std::lock_guard<std::mutex> lock(m_setupMutex);
-    return m_simulation->run().metrics();
+    return m_run->metrics();
 }
 
 bool Engine::startRecording(const QString &path, const QString &notes, QString *error,
@@ -818,24 +780,11 @@ bool Engine::startRecording(const QString &path, const QString &notes, QString *
         return false;
     }
     stopRecording();
-    SessionInfo info;
-    if (m_rig) {
-        // Like `semhap listen --session`: no scene, operator or seed, the rig's address.
-        info.routerSource = m_options.router;
-        info.overrides = m_options.overrides;
-        info.routerContext.reactionTime = m_options.reactionTime;
-        if (m_rig->options().foxglove.isEmpty()) {
-            info.extra.insert(QStringLiteral("udp"), liveUri().mid(4));
-        } else {
-            info.extra.insert(QStringLiteral("foxglove"), liveUri());
-            info.extra.insert(QStringLiteral("topics"), m_rig->options().topics);
-        }
-    } else {
-        info = m_simulation->run().sessionInfo();
-        // Applied from the editor: the graph itself is in the session, its name is not.
-        info.routerSource = m_options.router;
-        info.overrides = m_options.overrides;
-    }
+    SessionInfo info = m_run->sessionInfo();
+    // Applied from the editor: the graph itself is in the session, its name is not.
+    info.routerSource = m_options.router;
+    info.overrides = m_options.overrides;
+    info.routerContext.reactionTime = m_options.reactionTime;
     info.source = QStringLiteral("studio");
     for (const BoundDevice &device : m_devices->status())
         info.bindings.insert(device.name, device.uri);
@@ -850,11 +799,10 @@ bool Engine::startRecording(const QString &path, const QString &notes, QString *
         recorder = SessionWriter::create(path, info, pipeline().router(), error);
         if (!recorder)
             return false;
-        recorder->setActorTable(m_simulation ? &m_simulation->run().world().actors()
-                                             : &m_rig->actors());
+        recorder->setActorTable(m_run->actors());
         m_recorder = std::move(recorder);
         rewire();
-        m_nextInput = 0.0;
+        m_run->recordingStarted();
     }
     emit recordingChanged(true);
     return true;
@@ -904,16 +852,6 @@ QString Engine::newRecordingPath(const QString &folder, const QString &name) con
     for (int n = 2; QFileInfo::exists(path); ++n)
         path = QStringLiteral("%1-%2.db").arg(first).arg(n);
     return path;
-}
-
-void Engine::recordInput(double t)
-{
-    for (std::optional<HandCommand> command : currentCommands(m_simulation->run().world())) {
-        if (!command)
-            continue;
-        command->t = t;
-        m_recorder->recordHandCommand(*command);
-    }
 }
 
 } // namespace semhap

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "driveoperator.h"
 #include "foxgloveserver.h"
 #include "liverig.h"
 #include "runfeed.h"
@@ -8,7 +9,6 @@
 #include "sentfeed.h"
 #include "sessionreplay.h"
 #include "simrun.h"
-#include "simulationsource.h"
 #include "sinklist.h"
 
 #include <QObject>
@@ -16,8 +16,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace semhap {
@@ -73,6 +75,15 @@ public:
      * `error` (the port is taken, the router does not load), keeping the previous run.
      */
     bool listen(const LiveRigOptions &options, QString *error);
+    /**
+     * Runs `source` in place of what runs (load() and listen() come here with theirs): it is
+     * opened on a new pipeline thread and, once open, installed like a simulation — router
+     * devices bound, history started — paused. `restart` makes it again from its start for
+     * reset(). False with the source's one-line `error`, keeping what runs (unless the source
+     * conflicted with it: then the options() load again).
+     */
+    bool startSource(std::unique_ptr<RunSource> source, std::function<bool(QString *)> restart,
+                     QString *error);
     /** What runs now; null before the first load. */
     RunSource *source() const { return m_source; }
     /**
@@ -80,19 +91,20 @@ public:
      * come back to). Null when there is none.
      */
     RunSource *streamingSource() const;
-    /** The source is a live rig. */
-    bool isLive() const { return m_source && m_source->kind() == RunSource::Kind::Rig; }
+    /** The source streams frames that arrive from outside, at their own pace (a live rig). */
+    bool isLive() const { return m_source && m_source->isStreaming() && !m_source->isPaced(); }
     /** The source is a recorded session. */
     bool isReplaying() const { return m_source == &m_replay; }
     /** The recorded session, scrubbed by the replay bar (open while isReplaying()). */
     SessionReplay &replay() { return m_replay; }
-    /** The live rig's counters (zero when not live). */
-    LiveRig::Stats liveStats() const;
-    /** The live rig's latest rejected datagram and how many so far (empty when not live). */
-    QString liveRejection(quint64 *count) const;
-    /** The live rig's options, with the port it got when any was asked for. */
+    /** The streaming source's link counters (zero when it has no link). */
+    RunSource::LinkStats liveStats() const;
+    /** The streaming source is the live rig listen() started (the one a replay keeps, too). */
+    bool isListening() const { return m_live.has_value(); }
+    /** The live rig's options, with the port it got when any was asked for (listen()). */
     LiveRigOptions liveOptions() const;
-    /** `udp:ADDRESS:PORT` of the live rig; empty when not live. */
+    /** Where the streaming source's frames come from (`udp:ADDRESS:PORT`); empty when it makes
+     * them. */
     QString liveUri() const;
     /**
      * Swaps `graph` in as the running router (the router editor's Apply) without stopping
@@ -264,15 +276,17 @@ signals:
     void recordingChanged(bool recording);
 
 private:
-    /** Routes one step's streams: contact frames to the feed, the rest to the devices. */
-    class StepSink : public RunSink
+    /** Routes a source's streams: contact frames to the feed, the rest to the outputs. */
+    class StepSink : public RunSource::Sink
     {
     public:
         explicit StepSink(Engine &engine) : m_engine(engine) {}
         void onContactFrame(const ContactFrame &frame) override;
+        void onReceivedFrame(const ContactFrame &frame, double arrival) override;
         void onEvent(const SemanticEvent &event) override;
         void onDeviceFrame(const DeviceFrame &frame) override;
         void onNodeActivity(const NodeActivity &activity) override;
+        SessionWriter *recorder() override { return m_engine.m_recorder.get(); }
 
     private:
         Engine &m_engine;
@@ -295,9 +309,10 @@ private:
     /** Binds devices, history and metrics to the newly installed run or rig. */
     void install();
     void stopThread();
-    void startThread();
-    void loop();
-    void listenLoop();
+    /** Pipeline thread: advances `source` at its pace, or as its frames come, until quit. */
+    void loop(RunSource &source);
+    /** Pipeline thread: the task's metrics to the GUI every MetricsPeriod of the source's time. */
+    void sendMetrics(const RunSource &source);
     /** Sends every device of the running router its idle values, into `sink`. */
     void silenceDevices(PipelineSink &sink);
     /** The running router's device names, by index: what the SentFeed reads. */
@@ -307,24 +322,26 @@ private:
      * the device output, the router or the publishing changed (setup lock held).
      */
     void rewire();
-    void stepOnce();
     /**
-     * Pipeline thread: a contact frame of either streaming source, into the recording (with
-     * its arrival time, NaN when simulated) and the feed.
+     * Pipeline thread: a contact frame of the source, into the recording (with its arrival
+     * time, NaN when simulated), the publisher and the feed.
      */
     void takeFrame(const ContactFrame &frame, double arrival);
     void drain();
-    void recordInput(double t);
 
     RunOptions m_options;
     /** The graph setRouter() applied since the last load: what reset() runs again. */
     std::unique_ptr<RouterGraph> m_appliedGraph;
     std::unique_ptr<DeviceManager> m_devices;
     RunHistory m_history;
-    // The source is one of these three (or none).
-    std::unique_ptr<SimulationSource> m_simulation;
-    std::unique_ptr<LiveRig> m_rig;
+    /** The streaming source: what runs, or what a replay keeps behind it. */
+    std::unique_ptr<RunSource> m_run;
+    /** How the streaming source is made again from its start (reset()). */
+    std::function<bool(QString *)> m_restart;
+    /** What listen() asked for, while its rig is the streaming source. */
+    std::optional<LiveRigOptions> m_live;
     SessionReplay m_replay{m_history};
+    /** m_run or &m_replay: what the windows show. */
     RunSource *m_source = nullptr;
     /** The history of the run kept behind a replay, and whether the user drove it. */
     RunHistory m_keptHistory;
@@ -339,7 +356,6 @@ private:
     std::unique_ptr<FoxglovePublisher> m_publisher;
     /** Where the pipeline's output goes: the recorder, the bands, the feed, the publisher. */
     SinkList m_outputs;
-    double m_nextInput = 0.0; ///< pipeline thread: when the user's input is recorded next
     StepSink m_sink{*this};
     QTimer m_drainTimer;
     std::thread m_thread;

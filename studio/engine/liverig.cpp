@@ -3,9 +3,12 @@
 
 #include "foxglovesource.h"
 #include "nametable.h"
+#include "routercontext.h"
+#include "sessioninfo.h"
 #include "topicmap.h"
 #include "udpframesource.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 
 #include <algorithm>
@@ -25,7 +28,7 @@ LiveRig::LiveRig(const LiveRigOptions &options, std::unique_ptr<Router> router)
 
 LiveRig::~LiveRig() = default;
 
-void LiveRig::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
+void LiveRig::setRouter(std::unique_ptr<Router> router, RunSink &sink)
 {
     m_pipeline->setRouter(std::move(router), sink);
 }
@@ -33,11 +36,11 @@ void LiveRig::setRouter(std::unique_ptr<Router> router, PipelineSink &sink)
 void LiveRig::reject(const QString &message)
 {
     std::lock_guard<std::mutex> lock(m_statsMutex);
-    m_lastRejection = message;
-    ++m_rejections;
+    m_stats.lastRejection = message;
+    ++m_stats.reasons;
 }
 
-bool LiveRig::open(QString *error)
+bool LiveRig::start(QString *error)
 {
     if (!m_options.foxglove.isEmpty()) {
         const QUrl &url = m_options.foxglove;
@@ -83,13 +86,13 @@ void LiveRig::startCounting(int port)
     m_windowFrames = 0;
     m_held = 0;
     std::lock_guard<std::mutex> lock(m_statsMutex);
-    m_stats = Stats();
+    m_stats = LinkStats();
     m_stats.port = port;
     for (auto &seen : m_seenSignals)
         seen.clear();
 }
 
-bool LiveRig::wait(int msecs)
+void LiveRig::wait(int msecs)
 {
     if (m_robot) {
         m_robot->poll([this](const ContactFrame &frame,
@@ -100,13 +103,12 @@ bool LiveRig::wait(int msecs)
             m_fatalTold = true;
             reject(m_robot->fatalError());
         }
-        return !m_taken.empty();
+    } else if (m_source) {
+        m_source->waitForDatagrams(msecs);
     }
-    return m_source && m_source->waitForDatagrams(msecs);
 }
 
-void LiveRig::take(const ContactFrame &frame, double arrival, const FrameHandler &process,
-                   bool hold)
+void LiveRig::take(const ContactFrame &frame, double arrival, Sink &sink, bool hold)
 {
     const double delay = arrival - frame.t;
     if (m_windowFrames == 0) {
@@ -118,48 +120,86 @@ void LiveRig::take(const ContactFrame &frame, double arrival, const FrameHandler
     }
     ++m_windowFrames;
     noteSignals(frame);
-    if (hold)
+    if (hold) {
         ++m_held;
-    else
-        process(frame, arrival);
-}
-
-void LiveRig::poll(const FrameHandler &process, bool hold)
-{
-    if (m_robot) {
-        for (const auto &[frame, arrival] : m_taken)
-            take(frame, arrival, process, hold);
-        m_taken.clear();
-    } else if (m_source) {
-        m_source->poll([&](const ContactFrame &frame, double arrival) {
-            take(frame, arrival, process, hold);
-        });
-    } else {
         return;
     }
-    publish(double(m_clock.nsecsElapsed()) * 1e-9);
+    sink.onReceivedFrame(frame, arrival);
+    m_pipeline->process(frame, sink);
+    m_time = frame.t;
 }
 
-bool LiveRig::endIfSilent(PipelineSink &sink, const FrameHandler &process, bool hold)
+RunSource::Outcome LiveRig::advance(Sink &sink, const Budget &budget)
 {
-    const bool silent = m_robot ? m_robot->fellSilent() : m_source && m_source->fellSilent();
-    if (!silent)
-        return false;
+    const bool hold = !budget.stillRunning->load();
     if (m_robot) {
-        m_robot->poll([&](const ContactFrame &frame,
-                          double arrival) { take(frame, arrival, process, hold); },
-                      0);
+        for (const auto &[frame, arrival] : m_taken)
+            take(frame, arrival, sink, hold);
+        m_taken.clear();
+    } else if (m_source) {
+        m_source->poll(
+            [&](const ContactFrame &frame, double arrival) { take(frame, arrival, sink, hold); });
+    } else {
+        return Outcome::Going;
+    }
+    publish(double(m_clock.nsecsElapsed()) * 1e-9);
+    if (budget.holdSilence)
+        return Outcome::Going;
+    const bool silent = m_robot ? m_robot->fellSilent() : m_source->fellSilent();
+    if (!silent)
+        return Outcome::Going;
+    if (m_robot) {
+        m_robot->poll(
+            [&](const ContactFrame &frame, double arrival) { take(frame, arrival, sink, hold); },
+            0);
     }
     m_pipeline->endAll(sink);
-    return true;
+    return Outcome::Silent;
 }
 
-const ActorTable &LiveRig::actors() const
+const ActorTable *LiveRig::actors() const
 {
-    return m_robot ? m_robot->actors() : m_source->actors();
+    if (m_robot)
+        return &m_robot->actors();
+    return m_source ? &m_source->actors() : nullptr;
 }
 
-void LiveRig::close()
+RouterContext LiveRig::routerContext(double reactionTime) const
+{
+    RouterContext context = RunSource::routerContext(reactionTime);
+    for (Gripper gripper : {Gripper::Left, Gripper::Right})
+        context.signalNames[size_t(gripper)] = signalNames(gripper);
+    return context;
+}
+
+SessionInfo LiveRig::sessionInfo() const
+{
+    SessionInfo info;
+    if (m_options.foxglove.isEmpty()) {
+        info.extra.insert(QStringLiteral("udp"), address().mid(4));
+    } else {
+        info.extra.insert(QStringLiteral("foxglove"), address());
+        info.extra.insert(QStringLiteral("topics"), m_options.topics);
+    }
+    return info;
+}
+
+bool LiveRig::conflictsWith(const RunSource &running) const
+{
+    const auto *rig = dynamic_cast<const LiveRig *>(&running);
+    return rig && m_options.foxglove.isEmpty() && rig->m_options.foxglove.isEmpty() &&
+           m_options.port != 0 && m_options.port == rig->linkStats()->port &&
+           m_options.address == rig->m_options.address;
+}
+
+QString LiveRig::sceneNote() const
+{
+    return QCoreApplication::translate("semhap::LiveRig",
+                                       "Live rig on %1\nThe rig draws its own scene.")
+        .arg(address());
+}
+
+void LiveRig::shutdown()
 {
     m_source.reset();
     m_robot.reset();
@@ -191,18 +231,10 @@ void LiveRig::publish(double now)
     }
 }
 
-LiveRig::Stats LiveRig::stats() const
+std::optional<RunSource::LinkStats> LiveRig::linkStats() const
 {
     std::lock_guard<std::mutex> lock(m_statsMutex);
     return m_stats;
-}
-
-QString LiveRig::lastRejection(quint64 *count) const
-{
-    std::lock_guard<std::mutex> lock(m_statsMutex);
-    if (count)
-        *count = m_rejections;
-    return m_lastRejection;
 }
 
 void LiveRig::noteSignals(const ContactFrame &frame)
@@ -226,11 +258,11 @@ QStringList LiveRig::signalNames(Gripper gripper) const
     return names;
 }
 
-QString LiveRig::uri() const
+QString LiveRig::address() const
 {
     if (!m_options.foxglove.isEmpty())
         return m_options.foxglove.toString();
-    return QStringLiteral("udp:%1:%2").arg(m_options.address).arg(stats().port);
+    return QStringLiteral("udp:%1:%2").arg(m_options.address).arg(linkStats()->port);
 }
 
 } // namespace semhap

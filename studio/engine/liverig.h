@@ -13,7 +13,6 @@
 
 #include <array>
 #include <atomic>
-#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -57,62 +56,45 @@ struct LiveRigOptions
 class LiveRig : public RunSource
 {
 public:
-    /** What the rig has seen since it started listening. */
-    struct Stats
-    {
-        quint64 datagrams = 0; ///< received, good or bad (a robot's: its messages)
-        quint64 frames = 0;    ///< valid frames
-        quint64 rejected = 0;  ///< malformed datagrams and invalid frames
-        quint64 oversize = 0;  ///< datagrams over the size limit, not parsed
-        quint64 held = 0;      ///< valid frames dropped while paused
-        double framesPerSecond = 0.0;
-        double jitter = 0.0; ///< spread of arrival minus `t` over the last second (s)
-        int port = 0;        ///< the port bound to (useful when 0 was asked for)
-    };
-
-    /** Gets each frame to process and its arrival time. */
-    using FrameHandler = std::function<void(const ContactFrame &frame, double arrival)>;
-
     LiveRig(const LiveRigOptions &options, std::unique_ptr<Router> router);
     ~LiveRig() override;
 
-    Kind kind() const override { return Kind::Rig; }
     Pipeline *pipeline() override { return m_pipeline.get(); }
-
     const LiveRigOptions &options() const { return m_options; }
-    /** Swaps the router; the old one's active messages end now, their End events to `sink`. */
-    void setRouter(std::unique_ptr<Router> router, PipelineSink &sink);
+    /** `udp:ADDRESS:PORT` (the port bound), or the robot's URL. */
+    QString address() const override;
+    std::optional<LinkStats> linkStats() const override;
+    QString sceneNote() const override;
 
     // Pipeline thread.
     /** Opens the socket (or loads the topic map and connects); false with a one-line `error`. */
-    bool open(QString *error);
+    bool start(QString *error) override;
     /**
-     * Blocks until a datagram is pending or `msecs` passed; true when one is pending. A
-     * robot's messages are taken meanwhile, and its frames wait for poll().
+     * Blocks until a datagram is pending or `msecs` passed. A robot's messages are taken
+     * meanwhile, and its frames wait for advance().
      */
-    bool wait(int msecs);
+    void wait(int msecs) override;
     /**
-     * Reads a batch of pending datagrams and hands each valid frame to `process`, or, when
-     * `hold` is set, drops it and counts it as held.
+     * Routes a batch of pending datagrams' valid frames (one batch, so a flood cannot keep
+     * the engine's set-up locked), or holds them while not running. When the sender has
+     * been silent for UdpFrameSource's silence (once per silence, unless the budget holds
+     * silence), ends every active message and says Silent: the caller stops the bands. A
+     * robot's frames that waited for the silent topics are made and routed before.
      */
-    void poll(const FrameHandler &process, bool hold);
-    /**
-     * When the sender has been silent for UdpFrameSource's silence (once per silence), ends
-     * every active message, its End events to `sink`, and returns true: the caller stops
-     * the bands. A robot's frames that waited for the silent topics are made and handed to
-     * `process` (as poll() does, `hold` included) before.
-     */
-    bool endIfSilent(PipelineSink &sink, const FrameHandler &process, bool hold);
-    /** The actors the frames named (sessions record their names). */
-    const ActorTable &actors() const;
-    void close();
+    Outcome advance(Sink &sink, const Budget &budget) override;
+    void shutdown() override;
+    /** The latest frame's `t`. */
+    double time() const override { return m_time; }
+    void setRouter(std::unique_ptr<Router> router, RunSink &sink) override;
+    /** The reaction time and the signals its frames carried so far (offered, not checked). */
+    RouterContext routerContext(double reactionTime) const override;
+    const ActorTable *actors() const override;
+    /** Like `semhap listen --session`'s: no scene, operator or seed; the rig's address. */
+    SessionInfo sessionInfo() const override;
+    /** Another rig on the port this one asks for (a reset) has to let go of it first. */
+    bool conflictsWith(const RunSource &running) const override;
 
     // Any thread.
-    Stats stats() const;
-    /** The latest rejection (`udp:PORT: reason`) and how many there were so far. */
-    QString lastRejection(quint64 *count = nullptr) const;
-    /** The address the user reaches the rig on, `udp:ADDRESS:PORT`, or the robot's URL. */
-    QString uri() const;
     /**
      * The named signals the gripper's valid frames carried since the rig started listening,
      * in the order first seen: what the router editor's signal picker offers.
@@ -123,8 +105,8 @@ private:
     void publish(double now);
     /** Counters, windows and signals from zero, on `port` (the UDP port, or the robot's). */
     void startCounting(int port);
-    /** Counts a frame into the rate and jitter, and processes it, or holds it. */
-    void take(const ContactFrame &frame, double arrival, const FrameHandler &process, bool hold);
+    /** Counts a frame into the rate and jitter, and routes it into `sink`, or holds it. */
+    void take(const ContactFrame &frame, double arrival, Sink &sink, bool hold);
     void reject(const QString &message);
     /** Notes the signals of a valid frame that no earlier frame of its gripper carried. */
     void noteSignals(const ContactFrame &frame);
@@ -133,9 +115,10 @@ private:
     std::unique_ptr<Pipeline> m_pipeline;
     std::unique_ptr<UdpFrameSource> m_source;
     std::unique_ptr<FoxgloveSource> m_robot;
-    /** The robot's frames taken in wait(), for poll(). */
+    /** The robot's frames taken in wait(), for advance(). */
     std::vector<std::pair<ContactFrame, double>> m_taken;
     bool m_fatalTold = false;
+    double m_time = 0.0;
 
     // Pipeline thread: the rate and jitter windows.
     QElapsedTimer m_clock;
@@ -146,9 +129,7 @@ private:
     double m_delayMax = 0.0;
 
     mutable std::mutex m_statsMutex;
-    Stats m_stats;
-    QString m_lastRejection;
-    quint64 m_rejections = 0;
+    LinkStats m_stats;
     /**
      * Per gripper, the signalNames() ids seen: appended under m_statsMutex on the pipeline
      * thread (rarely: only a new name), read under it on any. At most NameTable::Capacity.

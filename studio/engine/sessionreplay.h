@@ -35,9 +35,10 @@ public:
     explicit SessionReplay(RunHistory &history, QObject *parent = nullptr);
     ~SessionReplay() override;
 
-    Kind kind() const override { return Kind::Replay; }
     Pipeline *pipeline() override { return nullptr; }
     Hands hands() const override { return m_hands; }
+    bool isStreaming() const override { return false; }
+    QString caption() const override { return tr("Replay"); }
 
     /**
      * Reads the session at `path`, leaving the history alone until begin(). False with a
@@ -55,7 +56,7 @@ public:
     double startTime() const { return m_start; }
     double endTime() const { return m_end; }
     /** The time shown: the history holds what happened up to it. */
-    double time() const { return m_time; }
+    double time() const override { return m_time; }
     /** Shows the session up to `t`; forward moves only add what is new. */
     void seek(double t);
 
@@ -92,7 +93,7 @@ public:
     const World *world() const override { return m_world.get(); }
     SceneFeed *sceneFeed() const override { return m_sceneFeed.get(); }
     /** Why there is no scene to show: no states recorded, or the scene does not load. */
-    const QString &sceneNote() const { return m_sceneNote; }
+    QString sceneNote() const override { return m_sceneNote; }
     /** The events shown: the recording's or the re-routing's. */
     const std::vector<SemanticEvent> &events() const { return m_shown.events; }
 

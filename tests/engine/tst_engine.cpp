@@ -524,7 +524,7 @@ void TestEngine::swapsSources()
     QSignalSpy changed(&engine, &Engine::sourceChanged);
     QVERIFY(!engine.source());
     QVERIFY(engine.load(options(), &error));
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isPaced()); // a simulation
     QVERIFY(engine.source()->isDrivable());
     QVERIFY(engine.world() && engine.sceneFeed() && engine.driveOperator());
     engine.run();
@@ -533,7 +533,7 @@ void TestEngine::swapsSources()
     LiveRigOptions rig;
     rig.port = 0;
     QVERIFY2(engine.listen(rig, &error), qPrintable(error));
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Rig);
+    QVERIFY(engine.isLive());
     QVERIFY(engine.isLive() && !engine.isRunning());
     QVERIFY(!engine.world() && !engine.sceneFeed() && !engine.driveOperator());
     engine.setDriving(true); // nobody drives a rig's grippers from here
@@ -556,9 +556,9 @@ void TestEngine::swapsSources()
 
     // Back to a simulation, whose reset stays a simulation.
     QVERIFY(engine.load(options(), &error));
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isPaced()); // a simulation
     QVERIFY(engine.reset(&error));
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isPaced()); // a simulation
     QCOMPARE(about.count(), changed.count());
 }
 
@@ -642,7 +642,7 @@ void TestEngine::recordsAndReplays()
     QVERIFY2(engine.openReplay(path, &error), qPrintable(error));
     QCOMPARE(about.count(), 1);
     QVERIFY(engine.isReplaying());
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Replay);
+    QVERIFY(!engine.source()->isStreaming()); // a replay
     QVERIFY(!engine.source()->pipeline());
     QVERIFY(!engine.source()->isDrivable());
     QVERIFY(engine.world()); // the recorded scene states, for the viewport
@@ -676,7 +676,7 @@ void TestEngine::recordsAndReplays()
     QVERIFY(engine.reset(&error));
     QVERIFY(!engine.isReplaying());
     QVERIFY(!replay.isOpen());
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isPaced()); // a simulation
     QVERIFY(engine.simTime() < 0.1);
 }
 
@@ -801,7 +801,7 @@ void TestEngine::keepsTheRunBehindAReplay()
     QVERIFY2(engine.closeReplay(&error), qPrintable(error));
     QCOMPARE(changed.count(), 1);
     QVERIFY(!engine.isReplaying());
-    QCOMPARE(engine.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(engine.source()->isPaced()); // a simulation
     QVERIFY(!engine.isRunning());
     QCOMPARE(engine.simTime(), t);
     QCOMPARE(engine.world()->sceneState(), world);
@@ -843,7 +843,7 @@ void TestEngine::keepsTheRigBehindAReplay()
     Engine first;
     QVERIFY2(first.openReplay(path, &error), qPrintable(error));
     QVERIFY2(first.closeReplay(&error), qPrintable(error));
-    QCOMPARE(first.source()->kind(), RunSource::Kind::Simulation);
+    QVERIFY(first.source()->isPaced()); // a simulation
     QCOMPARE(first.simTime(), 0.0);
 
     LiveRigOptions rig;

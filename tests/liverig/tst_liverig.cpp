@@ -251,12 +251,11 @@ void TestLiveRig::followsARobot()
     engine.run();
     robot.write("go\n");
     QVERIFY(robot.waitForBytesWritten(10000));
-    quint64 rejections = 0;
     QVERIFY2(QTest::qWaitFor([&] { return engine.liveStats().frames >= 1000; }, 30000),
              qPrintable(QStringLiteral("%1 message(s), %2 frame(s); %3")
                             .arg(engine.liveStats().datagrams)
                             .arg(engine.liveStats().frames)
-                            .arg(engine.liveRejection(&rejections))));
+                            .arg(engine.liveStats().lastRejection)));
     QTest::qWait(50); // one drain of the feed
     QCOMPARE(engine.liveStats().frames, quint64(1000));
     QCOMPARE(engine.liveStats().rejected, quint64(0));
@@ -325,13 +324,12 @@ void TestLiveRig::malformedDatagramsAreCounted()
     sender.send(datagram);
     sender.send(lines[1]);
     QVERIFY(QTest::qWaitFor([&] { return engine.liveStats().datagrams == 3; }, 5000));
-    const LiveRig::Stats stats = engine.liveStats();
+    const RunSource::LinkStats stats = engine.liveStats();
     QCOMPARE(stats.frames, quint64(2)); // the frames around the bad one went through
     QCOMPARE(stats.rejected, quint64(rejections));
     QCOMPARE(stats.oversize, quint64(oversize ? 1 : 0));
-    quint64 count = 0;
-    const QString rejection = engine.liveRejection(&count);
-    QCOMPARE(count, quint64(1)); // one message a datagram, however many frames it drops
+    const QString rejection = stats.lastRejection;
+    QCOMPARE(stats.reasons, quint64(1)); // one message a datagram, however many frames it drops
     QVERIFY2(rejection.contains(reason), qPrintable(rejection));
     QVERIFY2(rejection.startsWith(QStringLiteral("udp:%1: ").arg(stats.port)),
              qPrintable(rejection));
@@ -385,7 +383,7 @@ void TestLiveRig::floodDoesNotStallTheGui()
         },
         10000));
     tick.stop();
-    const LiveRig::Stats stats = engine.liveStats();
+    const RunSource::LinkStats stats = engine.liveStats();
     qInfo("flood: %llu frames offered; %llu datagrams, %llu frames, %llu rejected read; the "
           "GUI's longest pause %lld ms",
           offered, stats.datagrams, stats.frames, stats.rejected, longest);
