@@ -584,6 +584,44 @@
     </message>
 </context>
 <context>
+    <name>semhap::HelpActions</name>
+    <message>
+        <source>Key map</source>
+        <translation>Tastenbelegung</translation>
+    </message>
+    <message>
+        <source>Every shortcut and drive key of the window</source>
+        <translation>Alle Tastenkürzel und Steuertasten des Fensters</translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation>Dokumentation</translation>
+    </message>
+    <message>
+        <source>Open the studio&apos;s manual</source>
+        <translation>Das Handbuch des Studios öffnen</translation>
+    </message>
+    <message>
+        <source>The manual is not installed</source>
+        <translation>Das Handbuch ist nicht installiert</translation>
+    </message>
+    <message>
+        <source>Read docs/studio.md in semhap&apos;s sources.</source>
+        <translation>Lesen Sie docs/studio.md in den Quellen von semhap.</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ImportProgress</name>
+    <message>
+        <source>Importing %1 into %2…</source>
+        <translation>%1 wird nach %2 importiert …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>semhap::KeyMapDialog</name>
     <message>
         <source>Key map</source>
@@ -849,30 +887,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>semhap studio — %1 · %2</translation>
     </message>
     <message>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
-    </message>
-    <message>
-        <source>%1× real time</source>
-        <translation>%1× Echtzeit</translation>
-    </message>
-    <message>
-        <source>paused</source>
-        <translation>angehalten</translation>
-    </message>
-    <message>
-        <source>You are driving</source>
-        <translation>Sie steuern</translation>
-    </message>
-    <message>
-        <source>Operator: %1</source>
-        <translation>Bediener: %1</translation>
-    </message>
-    <message>
-        <source>Devices: %1 virtual, %2 connected</source>
-        <translation>Geräte: %1 virtuell, %2 verbunden</translation>
-    </message>
-    <message>
         <source>semhap studio</source>
         <translation>semhap studio</translation>
     </message>
@@ -933,14 +947,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Die Sitzung konnte nicht neu geleitet werden</translation>
     </message>
     <message>
-        <source>Recording to %1 (%2 dropped)</source>
-        <translation>Aufnahme nach %1 (%2 verworfen)</translation>
-    </message>
-    <message>
-        <source>replay</source>
-        <translation>Wiedergabe</translation>
-    </message>
-    <message>
         <source>Could not listen on udp:%1:%2</source>
         <translation>Konnte nicht auf udp:%1:%2 lauschen</translation>
     </message>
@@ -959,32 +965,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>semhap studio — live rig on %1 · %2</source>
         <translation>semhap studio — Live-Rig auf %1 · %2</translation>
-    </message>
-    <message>
-        <source>Live rig on %1</source>
-        <translation>Live-Rig auf %1</translation>
-    </message>
-    <message>
-        <source>%1 frames/s, jitter %2 ms</source>
-        <translation>%1 Frames/s, Jitter %2 ms</translation>
-    </message>
-    <message numerus="yes">
-        <source>paused: %n frame(s) held</source>
-        <translation>
-            <numerusform>pausiert: %n Frame zurückgehalten</numerusform>
-            <numerusform>pausiert: %n Frames zurückgehalten</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> · %n malformed</source>
-        <translation>
-            <numerusform> · %n fehlerhaft</numerusform>
-            <numerusform> · %n fehlerhaft</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Malformed datagram: %1</source>
-        <translation>Fehlerhaftes Datagramm: %1</translation>
     </message>
     <message>
         <source>Record the run into a new session in the sessions folder (Ctrl+Shift+R); again to stop</source>
@@ -1026,52 +1006,12 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Der Router-Editor behält Ihre Änderungen, die gerade nicht laufen: Anwenden startet sie.</translation>
     </message>
     <message>
-        <source>Key map</source>
-        <translation>Tastenbelegung</translation>
-    </message>
-    <message>
-        <source>Every shortcut and drive key of the window</source>
-        <translation>Alle Tastenkürzel und Steuertasten des Fensters</translation>
-    </message>
-    <message>
-        <source>Documentation</source>
-        <translation>Dokumentation</translation>
-    </message>
-    <message>
-        <source>Open the studio&apos;s manual</source>
-        <translation>Das Handbuch des Studios öffnen</translation>
-    </message>
-    <message>
-        <source>The manual is not installed</source>
-        <translation>Das Handbuch ist nicht installiert</translation>
-    </message>
-    <message>
-        <source>Read docs/studio.md in semhap&apos;s sources.</source>
-        <translation>Lesen Sie docs/studio.md in den Quellen von semhap.</translation>
-    </message>
-    <message>
         <source>Task done
 The pile was finished after %1 s.
 Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation>Aufgabe erledigt
 Der Stapel war nach %1 s abgearbeitet.
 Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2), um neu zu beginnen.</translation>
-    </message>
-    <message>
-        <source>Replay: nobody drives</source>
-        <translation>Wiedergabe: niemand steuert</translation>
-    </message>
-    <message>
-        <source>, %1 connecting</source>
-        <translation>, %1 verbindet</translation>
-    </message>
-    <message>
-        <source>, %1 disconnected</source>
-        <translation>, %1 getrennt</translation>
-    </message>
-    <message>
-        <source>Latest malformed datagram: %1</source>
-        <translation>Letztes fehlerhaftes Datagramm: %1</translation>
     </message>
     <message>
         <source>%1 with %2</source>
@@ -1126,14 +1066,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <translation>%1 konnte nicht importiert werden</translation>
     </message>
     <message>
-        <source>Importing %1 into %2…</source>
-        <translation>%1 wird nach %2 importiert …</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
         <source>Import of %1 cancelled</source>
         <translation>Import von %1 abgebrochen</translation>
     </message>
@@ -1143,17 +1075,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
             <numerusform>%1 importiert: %n Frame nach %2</numerusform>
             <numerusform>%1 importiert: %n Frames nach %2</numerusform>
         </translation>
-    </message>
-    <message numerus="yes">
-        <source>Foxglove: %n viewer(s)</source>
-        <translation>
-            <numerusform>Foxglove: %n Betrachter</numerusform>
-            <numerusform>Foxglove: %n Betrachter</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
-        <translation>Veröffentlicht unter %1: %2 Nachricht(en) gesendet, %3 für langsame Betrachter verworfen</translation>
     </message>
     <message>
         <source>Publishing to Foxglove at %1</source>
@@ -2861,6 +2782,94 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
     <message>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RunReadouts</name>
+    <message>
+        <source>Recording to %1 (%2 dropped)</source>
+        <translation>Aufnahme nach %1 (%2 verworfen)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message numerus="yes">
+        <source>Foxglove: %n viewer(s)</source>
+        <translation>
+            <numerusform>Foxglove: %n Betrachter</numerusform>
+            <numerusform>Foxglove: %n Betrachter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
+        <translation>Veröffentlicht unter %1: %2 Nachricht(en) gesendet, %3 für langsame Betrachter verworfen</translation>
+    </message>
+    <message>
+        <source>Replay: nobody drives</source>
+        <translation>Wiedergabe: niemand steuert</translation>
+    </message>
+    <message>
+        <source>replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>%1× real time</source>
+        <translation>%1× Echtzeit</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>You are driving</source>
+        <translation>Sie steuern</translation>
+    </message>
+    <message>
+        <source>Operator: %1</source>
+        <translation>Bediener: %1</translation>
+    </message>
+    <message>
+        <source>Live rig on %1</source>
+        <translation>Live-Rig auf %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s, jitter %2 ms</source>
+        <translation>%1 Frames/s, Jitter %2 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %n frame(s) held</source>
+        <translation>
+            <numerusform>pausiert: %n Frame zurückgehalten</numerusform>
+            <numerusform>pausiert: %n Frames zurückgehalten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · %n malformed</source>
+        <translation>
+            <numerusform> · %n fehlerhaft</numerusform>
+            <numerusform> · %n fehlerhaft</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Malformed datagram: %1</source>
+        <translation>Fehlerhaftes Datagramm: %1</translation>
+    </message>
+    <message>
+        <source>Latest malformed datagram: %1</source>
+        <translation>Letztes fehlerhaftes Datagramm: %1</translation>
+    </message>
+    <message>
+        <source>Devices: %1 virtual, %2 connected</source>
+        <translation>Geräte: %1 virtuell, %2 verbunden</translation>
+    </message>
+    <message>
+        <source>, %1 connecting</source>
+        <translation>, %1 verbindet</translation>
+    </message>
+    <message>
+        <source>, %1 disconnected</source>
+        <translation>, %1 getrennt</translation>
     </message>
 </context>
 <context>

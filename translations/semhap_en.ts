@@ -584,6 +584,44 @@
     </message>
 </context>
 <context>
+    <name>semhap::HelpActions</name>
+    <message>
+        <source>Key map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every shortcut and drive key of the window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Documentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the studio&apos;s manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The manual is not installed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read docs/studio.md in semhap&apos;s sources.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ImportProgress</name>
+    <message>
+        <source>Importing %1 into %2…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>semhap::KeyMapDialog</name>
     <message>
         <source>Key map</source>
@@ -848,30 +886,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1× real time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>paused</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>You are driving</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Operator: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Devices: %1 virtual, %2 connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>semhap studio</source>
         <translation type="unfinished"></translation>
     </message>
@@ -932,14 +946,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Recording to %1 (%2 dropped)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>replay</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Could not listen on udp:%1:%2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -957,32 +963,6 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>semhap studio — live rig on %1 · %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live rig on %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 frames/s, jitter %2 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>paused: %n frame(s) held</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> · %n malformed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Malformed datagram: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1025,49 +1005,9 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Key map</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Every shortcut and drive key of the window</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Documentation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open the studio&apos;s manual</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The manual is not installed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Read docs/studio.md in semhap&apos;s sources.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Task done
 The pile was finished after %1 s.
 Carry on with the refilled box, or reset (%2) to start over.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Replay: nobody drives</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, %1 connecting</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, %1 disconnected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Latest malformed datagram: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1123,14 +1063,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Importing %1 into %2…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Import of %1 cancelled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1140,17 +1072,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
             <numerusform></numerusform>
             <numerusform></numerusform>
         </translation>
-    </message>
-    <message numerus="yes">
-        <source>Foxglove: %n viewer(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Publishing to Foxglove at %1</source>
@@ -2853,6 +2774,94 @@ Please tell the experimenter that you are done.</source>
     </message>
     <message>
         <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::RunReadouts</name>
+    <message>
+        <source>Recording to %1 (%2 dropped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Foxglove: %n viewer(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Published at %1: %2 message(s) sent, %3 dropped for slow viewers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay: nobody drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1× real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>You are driving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operator: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live rig on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 frames/s, jitter %2 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %n frame(s) held</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · %n malformed</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Malformed datagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Latest malformed datagram: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices: %1 virtual, %2 connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 disconnected</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

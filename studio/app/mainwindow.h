@@ -8,7 +8,6 @@
 
 class QActionGroup;
 class QComboBox;
-class QLabel;
 class QLineEdit;
 class QMenu;
 class QToolBar;
@@ -27,6 +26,7 @@ class ReplayBar;
 class RouterEditor;
 class SessionReplay;
 class SimViewport;
+class RunReadouts;
 class RunToolBar;
 class StudyMenu;
 class StudyPanel;
@@ -113,6 +113,9 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
+    /** Layouts saved by another version of the docks are not restored. */
+    static constexpr int LayoutVersion = 3;
+
     void createActions();
     void createToolBar();
     void createDocks();
@@ -125,9 +128,6 @@ private:
     void applyDefaultSizes();
     void restoreLayout();
     void resetLayout();
-    void updateStatus();
-    void updateLiveStatus();
-    void updateDevicesStatus();
     void updateTitle();
     /** Shows the running router in the editor unless the editor already holds it. */
     void syncRouterEditor();
@@ -148,10 +148,6 @@ private:
     void updateMode();
     /** Runs `router` on what runs now: the scene, or the live rig. */
     void switchRouter(const QString &router);
-    /** Help → Key map and Help → Documentation, added to `help`. */
-    void addHelpActions(QMenu *help);
-    /** Opens the manual in the desktop's viewer, or says where it is not. */
-    void showManual();
     /** Says over the viewport that the task is done, once its metrics say so; else nothing. */
     void showTaskDone();
     /** The Study dock comes forward when a study opens; its actions follow. */
@@ -181,14 +177,7 @@ private:
     RunToolBar *m_runToolBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QToolBar *m_replayToolBar = nullptr;
-    QLabel *m_recordLabel = nullptr;
-    QLabel *m_timeLabel = nullptr;
-    QLabel *m_rateLabel = nullptr;
-    QLabel *m_foxgloveLabel = nullptr;
-    QLabel *m_operatorLabel = nullptr;
-    QLabel *m_devicesLabel = nullptr;
-    QTimer m_statusTimer;
-    quint64 m_shownRejections = 0; ///< the live rig's rejections already in the status bar
+    RunReadouts *m_readouts = nullptr;
     QByteArray m_defaultState;     ///< the dock layout as built, for "Reset layout"
 
     QAction *m_runAction = nullptr;
