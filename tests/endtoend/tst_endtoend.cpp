@@ -100,7 +100,8 @@ void TestEndToEnd::geigerPulseRate()
         const std::vector<BandLogLine> lines = readBandLog(log);
         return !lines.empty() && pulseStarts(lines, 0).size() >= 21 && allAt(lines.back(), 0.0);
     };
-    QTest::qWaitFor(caughtUp, 10000);
+    // Its result is not needed: a band that did not catch up shows in the count.
+    static_cast<void>(QTest::qWaitFor(caughtUp, 10000));
     QCOMPARE(emulator.stop(), 0);
 
     // 2 + 18 · 0.5 = 11 pulses per second, the first at the begin: 22 in 2 s.
