@@ -1729,38 +1729,6 @@ In %2; in Exporten: %3</translation>
         <translation>Seine Eingänge sind die untergeordneten Knoten im Baum.</translation>
     </message>
     <message>
-        <source>current value</source>
-        <translation>aktueller Wert</translation>
-    </message>
-    <message>
-        <source>peak since begin</source>
-        <translation>Spitzenwert seit Beginn</translation>
-    </message>
-    <message>
-        <source>fixed value</source>
-        <translation>fester Wert</translation>
-    </message>
-    <message>
-        <source>Where the envelope starts: the track&apos;s value when it began, its peak, or a fixed value</source>
-        <translation>Wo die Hüllkurve beginnt: beim Wert der Spur zu ihrem Beginn, bei ihrem Spitzenwert oder bei einem festen Wert</translation>
-    </message>
-    <message>
-        <source>Starts from</source>
-        <translation>Beginnt bei</translation>
-    </message>
-    <message>
-        <source>Start value</source>
-        <translation>Anfangswert</translation>
-    </message>
-    <message>
-        <source>Not understood; nothing was changed</source>
-        <translation>Nicht verstanden; nichts wurde geändert</translation>
-    </message>
-    <message>
-        <source> (t:v, …)</source>
-        <translation> (t:w, …)</translation>
-    </message>
-    <message>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -1789,8 +1757,8 @@ In %2; in Exporten: %3</translation>
         <translation>Kurve</translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
+        <source>Starts from</source>
+        <translation>Beginnt bei</translation>
     </message>
 </context>
 <context>
@@ -1829,6 +1797,61 @@ In %2; in Exporten: %3</translation>
     <message>
         <source>value</source>
         <translation>Wert</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ParamForm</name>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>(any)</source>
+        <translation>(beliebig)</translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation>(automatisch)</translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation>(Standard: %1)</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(Standard)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Not a parameter of this node: clear it</source>
+        <translation>Kein Parameter dieses Knotens: bitte leeren</translation>
+    </message>
+    <message>
+        <source>current value</source>
+        <translation>aktueller Wert</translation>
+    </message>
+    <message>
+        <source>peak since begin</source>
+        <translation>Spitzenwert seit Beginn</translation>
+    </message>
+    <message>
+        <source>fixed value</source>
+        <translation>fester Wert</translation>
+    </message>
+    <message>
+        <source>Where the envelope starts: the track&apos;s value when it began, its peak, or a fixed value</source>
+        <translation>Wo die Hüllkurve beginnt: beim Wert der Spur zu ihrem Beginn, bei ihrem Spitzenwert oder bei einem festen Wert</translation>
+    </message>
+    <message>
+        <source>Start value</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>Not understood; nothing was changed</source>
+        <translation>Nicht verstanden; nichts wurde geändert</translation>
     </message>
 </context>
 <context>
@@ -2730,32 +2753,8 @@ Bitte sagen Sie der Versuchsleitung, dass Sie fertig sind.</translation>
         <translation>id</translation>
     </message>
     <message>
-        <source>Not a parameter of this node: clear it</source>
-        <translation>Kein Parameter dieses Knotens: bitte leeren</translation>
-    </message>
-    <message>
         <source>%1 (your file)</source>
         <translation>%1 (Ihre Datei)</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <source>(any)</source>
-        <translation>(beliebig)</translation>
-    </message>
-    <message>
-        <source>(automatic)</source>
-        <translation>(automatisch)</translation>
-    </message>
-    <message>
-        <source>(default: %1)</source>
-        <translation>(Standard: %1)</translation>
-    </message>
-    <message>
-        <source>(default)</source>
-        <translation>(Standard)</translation>
     </message>
 </context>
 <context>

@@ -1724,38 +1724,6 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>current value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>peak since begin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fixed value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Where the envelope starts: the track&apos;s value when it began, its peak, or a fixed value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Starts from</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Start value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not understood; nothing was changed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (t:v, …)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Time</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1784,7 +1752,7 @@ In %2; in exports: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
+        <source>Starts from</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1823,6 +1791,61 @@ In %2; in exports: %3</source>
     </message>
     <message>
         <source>value</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::ParamForm</name>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(any)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(automatic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not a parameter of this node: clear it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>current value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak since begin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fixed value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the envelope starts: the track&apos;s value when it began, its peak, or a fixed value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not understood; nothing was changed</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2723,31 +2746,7 @@ Please tell the experimenter that you are done.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Not a parameter of this node: clear it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 (your file)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(any)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(automatic)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(default: %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(default)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -6,20 +6,18 @@
 #include <QJsonObject>
 #include <QWidget>
 
-#include <functional>
-
-class QFormLayout;
 class QLabel;
 
 namespace semhap {
 
+class ParamForm;
 class PatternDocument;
 
 /**
- * The parameters of the node selected in the designer's waveform tree, as a form: the
- * pattern's name and description, a track's channels, or a waveform's type and fields
- * (numbers with their parameter bindings, start values, keyframes). Each committed edit
- * is one undoable change of the document.
+ * The parameters of the node selected in the designer's waveform tree, as a ParamForm: the
+ * pattern's name and description, a track's channels, or a waveform's type and the fields
+ * of its type's specs (numbers with their parameter bindings, start values, keyframes).
+ * Each committed edit is one undoable change of the document.
  */
 class NodeInspector : public QWidget
 {
@@ -41,31 +39,14 @@ private:
     void addPatternFields();
     void addTrackFields();
     void addWaveformFields(const QJsonObject &node);
-    void addNumber(const QJsonObject &node, const ParamSpec &field, const QString &label);
-    /** A field's translated display name and unit: "Frequency (Hz)". */
-    static QString fieldLabel(const ParamSpec &field);
-    void addStart(const QJsonObject &node);
-    /** How a text field shows its text: one line, or lines that wrap (prose). */
-    enum class TextShape
-    {
-        Line,
-        Lines
-    };
-    /**
-     * A text field that commits when the keyboard leaves it (a line also on Return);
-     * `toJson` gives null for text it does not understand, undefined to remove.
-     */
-    void addText(const QString &key, const QString &label, const QString &text,
-                 const std::function<QJsonValue(const QString &)> &toJson,
-                 TextShape shape = TextShape::Line);
-    /** A line of explanation under the fields. */
-    void addNote(const QString &text);
+    /** A field's translated display name: "Frequency". */
+    static QString fieldLabel(const QString &key);
     void edit(const QString &key, const QJsonValue &value);
     QStringList paramNames() const;
 
     PatternDocument &m_document;
     QString m_pointer;
-    QFormLayout *m_form = nullptr;
+    ParamForm *m_form = nullptr;
     QLabel *m_heading = nullptr;
     bool m_rebuildPending = false;
 };

@@ -5,20 +5,16 @@
 
 #include <QWidget>
 
-#include <functional>
-
-class QFormLayout;
-class QLabel;
-
 namespace semhap {
 
+class ParamForm;
 class RouterEditor;
 
 /**
- * The router editor's form of the selected node's parameters: a field per parameter of its
- * type, built from the specs (numbers, choices, lists, levels, points, names typed or
- * picked), each with its unit, its help and what an absent value means; an edit goes to the
- * editor as one undoable step, and a refused one is said on the editor's status line.
+ * The router editor's form of the selected node's parameters: its id, and a ParamForm of
+ * its type's specs whose name fields offer what the graph and the source know (patterns,
+ * models, signals, new messages); an edit goes to the editor as one undoable step, and a
+ * refused one is said on the editor's status line.
  */
 class RouterInspector : public QWidget
 {
@@ -40,18 +36,8 @@ signals:
 
 private:
     void rebuild();
-    /** A field for parameter `key`, built from its spec (null: a parameter the type lacks). */
-    void addField(QFormLayout *form, const RouterNode &node, const QString &key,
-                  const ParamSpec *spec);
-    /** What the field shows when the parameter is absent: "(default: 20)", "(any)"… */
-    static QString absentText(const ParamSpec &spec);
-    void commitText(const QString &id, const QString &key, const QString &text);
-    /**
-     * An editable combo for a name typed or picked (a signal, a new message), offering
-     * `choices()` each time it opens.
-     */
-    void addNameCombo(QFormLayout *form, QLabel *label, const RouterNode &node, const QString &key,
-                      const ParamSpec &spec, std::function<QStringList()> choices);
+    /** What the node's name fields offer: its signals, new messages, patterns and models. */
+    void offerChoices(ParamForm &form, const RouterNode &node) const;
 
     RouterEditor &m_editor;
     QString m_inspected; ///< id of the node the form shows

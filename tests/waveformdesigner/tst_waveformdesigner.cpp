@@ -119,7 +119,7 @@ struct Fixture
     {
         clickTreeNode(QString());
         QCoreApplication::processEvents(); // the inspector rebuilds queued
-        auto *field = child<QLineEdit>(QStringLiteral("field:name"));
+        auto *field = child<QLineEdit>(QStringLiteral("param:name"));
         QVERIFY(field);
         QTest::mouseClick(field, Qt::LeftButton);
         field->selectAll();
@@ -131,7 +131,7 @@ struct Fixture
     void typeNumber(const QString &field, const QString &text) const
     {
         QCoreApplication::processEvents(); // the inspector rebuilds queued
-        auto *edit = child<NumberEdit>(QStringLiteral("field:") + field);
+        auto *edit = child<NumberEdit>(QStringLiteral("param:") + field);
         QVERIFY(edit);
         auto *spin = edit->findChild<QDoubleSpinBox *>(QStringLiteral("value"));
         QTest::mouseClick(spin, Qt::LeftButton);
@@ -216,7 +216,7 @@ void TestWaveformDesigner::editRampChangesPreview()
     QVERIFY(std::abs(after[10] - 0.5) < 1e-9);
     // The keyboard stays in the field after the rebuild.
     QCoreApplication::processEvents();
-    QVERIFY(f.child<NumberEdit>(QStringLiteral("field:time"))
+    QVERIFY(f.child<NumberEdit>(QStringLiteral("param:time"))
                 ->isAncestorOf(QApplication::focusWidget()));
 }
 
