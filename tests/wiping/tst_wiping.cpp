@@ -51,7 +51,8 @@ Geometry geometry(const World &world)
 {
     const int plate = world.objectIndex("plate");
     const double face = world.objectPosition(plate)[2] + world.objects()[size_t(plate)].upper[2];
-    // The sponge hangs 5 cm above the plate's face as the scene begins (make-scenes.py).
+    // The sponge hangs 5 cm above the plate's face as the scene begins
+    // (scripts/scenes/dish_wiping.py).
     return {face, world.gripperPose(Gripper::Right).pos[2] - (face + 0.05)};
 }
 
@@ -116,7 +117,7 @@ void TestWiping::cleansUnderAPassWithForce_data()
 {
     QTest::addColumn<double>("depth");
     QTest::addColumn<bool>("cleans");
-    // The holder's spring gives about 1 N per mm of press (make-scenes.py).
+    // The holder's spring gives about 1 N per mm of press (scripts/scenes/dish_wiping.py).
     QTest::newRow("pressed 12 mm") << 0.012 << true;
     QTest::newRow("touching, 3 mm") << 0.003 << false;
     QTest::newRow("in the air") << -0.005 << false;
@@ -234,7 +235,7 @@ void TestWiping::signalsAreOnTheFrames()
         }
     });
     QVERIFY(checked > 90);
-    // The sponge's friction on the plate is 0.6 (make-scenes.py).
+    // The sponge's friction on the plate is 0.6 (scripts/scenes/dish_wiping.py).
     QVERIFY2(drag > 0.5 * press && drag < 0.7 * press,
              qPrintable(QString("%1 %2").arg(drag).arg(press)));
 }
