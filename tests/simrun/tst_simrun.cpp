@@ -9,6 +9,7 @@
 #include "metricspec.h"
 #include "simrun.h"
 #include "taskmonitor.h"
+#include "world.h"
 
 #include <QBuffer>
 #include <QJsonDocument>
@@ -447,8 +448,7 @@ void TestSimRun::commandLineErrors_data()
     QTest::newRow("no scene") << base << 2 << "semhap run: --scene is required";
     QTest::newRow("unknown scene")
         << base + QStringList{"--scene", "kitchen"} << 1
-        << "kitchen: no such scene (scenes: bimanual_sorting, box_and_block, dish_wiping, "
-           "usb_insertion)";
+        << "kitchen: no such scene (scenes: " + World::builtinScenes().join(", ") + ")";
     QTest::newRow("unknown operator")
         << QStringList{"run",        "--scene", "box_and_block", "--router", "C3",
                        "--operator", "robot",   "--duration",    "1"}

@@ -216,8 +216,8 @@ void TestWorld::badScenes_data()
     QTest::addColumn<int>("cubes");
     QTest::addColumn<QString>("error");
     QTest::newRow("unknown name") << "box_and_blocks" << -1
-                                  << "box_and_blocks: no such scene (scenes: bimanual_sorting, "
-                                     "box_and_block, dish_wiping, usb_insertion)";
+                                  << "box_and_blocks: no such scene (scenes: " +
+                                         World::builtinScenes().join(", ") + ")";
     QTest::newRow("too many cubes")
         << "box_and_block" << 30 << "box_and_block: asked for 30 cubes, the scene has 24";
     QTest::newRow("missing file") << "/nonexistent/scene.xml" << -1
