@@ -4,6 +4,8 @@
 #include "insertionoperator.h"
 #include "insertiontask.h"
 #include "scriptedoperator.h"
+#include "stackingoperator.h"
+#include "stackingtask.h"
 #include "taskmonitor.h"
 #include "wipingoperator.h"
 #include "wipingtask.h"
@@ -48,6 +50,18 @@ const std::vector<TaskType> &TaskType::all()
                     world, seed, operatorName == QLatin1String("reactive"), reactionTime);
             },
             &WipingTask::metricSpecs,
+        },
+        {
+            StackingTask::Name,
+            [](World &world, std::uint64_t, double, double, QString *error)
+                -> std::unique_ptr<Task> { return StackingTask::create(world, error); },
+            {QStringLiteral("scripted"), QStringLiteral("reactive")},
+            [](const QString &operatorName, const World &, std::uint64_t seed, double reactionTime,
+               QString *) -> std::unique_ptr<Operator> {
+                return std::make_unique<StackingOperator>(
+                    seed, operatorName == QLatin1String("reactive"), reactionTime);
+            },
+            &StackingTask::metricSpecs,
         },
     };
     return rows;

@@ -1550,6 +1550,54 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>When the sponge&apos;s holder stiffened.</source>
         <translation>Wann die Halterung des Schwamms steif wurde.</translation>
     </message>
+    <message>
+        <source>Blocks stacked</source>
+        <translation>Gestapelte Klötze</translation>
+    </message>
+    <message>
+        <source>Levels the placements added to the tower.</source>
+        <translation>Ebenen, die das Absetzen dem Turm hinzufügte.</translation>
+    </message>
+    <message>
+        <source>Towers built</source>
+        <translation>Gebaute Türme</translation>
+    </message>
+    <message>
+        <source>Towers stacked five blocks high.</source>
+        <translation>Türme, fünf Klötze hoch gestapelt.</translation>
+    </message>
+    <message>
+        <source>Tallest tower</source>
+        <translation>Höchster Turm</translation>
+    </message>
+    <message>
+        <source>The most levels the tower had at once.</source>
+        <translation>Die meisten Ebenen, die der Turm auf einmal hatte.</translation>
+    </message>
+    <message>
+        <source>Topples</source>
+        <translation>Einstürze</translation>
+    </message>
+    <message>
+        <source>Times the tower lost levels without a block being taken off it.</source>
+        <translation>Wie oft der Turm Ebenen verlor, ohne dass ein Klotz abgenommen wurde.</translation>
+    </message>
+    <message>
+        <source>Blocks dropped</source>
+        <translation>Fallen gelassene Klötze</translation>
+    </message>
+    <message>
+        <source>Lifted blocks let go of anywhere but on top of the tower.</source>
+        <translation>Angehobene Klötze, die anderswo als oben auf dem Turm losgelassen wurden.</translation>
+    </message>
+    <message>
+        <source>Time per level</source>
+        <translation>Zeit je Ebene</translation>
+    </message>
+    <message>
+        <source>The mean time from lifting a block to the level it adds.</source>
+        <translation>Die mittlere Zeit vom Anheben eines Klotzes bis zu der Ebene, die er hinzufügt.</translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>

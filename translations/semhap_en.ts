@@ -1547,6 +1547,54 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>When the sponge&apos;s holder stiffened.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Blocks stacked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Levels the placements added to the tower.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Towers built</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Towers stacked five blocks high.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tallest tower</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The most levels the tower had at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Topples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times the tower lost levels without a block being taken off it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Blocks dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lifted blocks let go of anywhere but on top of the tower.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time per level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mean time from lifting a block to the level it adds.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::MetricsPanel</name>
