@@ -783,18 +783,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>Die Greifer vom skriptgesteuerten Bediener übernehmen (Strg+T); jede Taste und jede Posen-Eingabe tut das ebenfalls</translation>
     </message>
     <message>
-        <source>Contact forces</source>
-        <translation>Kontaktkräfte</translation>
-    </message>
-    <message>
-        <source>Show contact forces as arrows in the viewport</source>
-        <translation>Kontaktkräfte als Pfeile in der Szenenansicht zeigen</translation>
-    </message>
-    <message>
-        <source>Reset camera</source>
-        <translation>Kamera zurücksetzen</translation>
-    </message>
-    <message>
         <source>Open scene…</source>
         <translation>Szene öffnen…</translation>
     </message>
@@ -3046,10 +3034,6 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <translation>Kamera zurücksetzen</translation>
     </message>
     <message>
-        <source>Show contact forces</source>
-        <translation>Kontaktkräfte zeigen</translation>
-    </message>
-    <message>
         <source>Waiting for the simulation…</source>
         <translation>Warten auf die Simulation…</translation>
     </message>
@@ -3132,6 +3116,18 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Grip: %1 N of %2 N, closing slowly until both pads touch</source>
         <translation>Griff: %1 N von %2 N, schließt langsam, bis beide Backen berühren</translation>
+    </message>
+    <message>
+        <source>Contact forces</source>
+        <translation>Kontaktkräfte</translation>
+    </message>
+    <message>
+        <source>Back to the default view (%1; Home in the viewport)</source>
+        <translation>Zurück zur Standardansicht (%1; Pos1 in der Szenenansicht)</translation>
+    </message>
+    <message>
+        <source>Show contact forces as arrows in the viewport (%1)</source>
+        <translation>Kontaktkräfte als Pfeile in der Szenenansicht zeigen (%1)</translation>
     </message>
 </context>
 <context>

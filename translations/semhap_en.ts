@@ -782,18 +782,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Contact forces</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show contact forces as arrows in the viewport</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reset camera</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Open scene…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3038,10 +3026,6 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Show contact forces</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Waiting for the simulation…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3123,6 +3107,18 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Grip: %1 N of %2 N, closing slowly until both pads touch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the default view (%1; Home in the viewport)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show contact forces as arrows in the viewport (%1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

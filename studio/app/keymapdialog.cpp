@@ -2,6 +2,7 @@
 #include "keymapdialog.h"
 
 #include "handdrive.h"
+#include "simviewport.h"
 #include "windowplacement.h"
 
 #include <QAction>
@@ -90,7 +91,12 @@ KeyMapDialog::KeyMapDialog(QMainWindow *window) : QDialog(window)
         QDockWidget *dock = nullptr;
         for (QWidget *w = owner; w && !dock; w = w->parentWidget())
             dock = qobject_cast<QDockWidget *>(w);
-        if (owner && viewport && (owner == viewport || viewport->isAncestorOf(owner))) {
+        // A window's or the application's shortcut works anywhere, whoever owns it.
+        const bool anywhere = action->shortcutContext() == Qt::WindowShortcut ||
+                              action->shortcutContext() == Qt::ApplicationShortcut;
+        if (anywhere) {
+            everywhere.rows.push_back(row);
+        } else if (owner && viewport && (owner == viewport || viewport->isAncestorOf(owner))) {
             inViewport.rows.push_back(row);
         } else if (dock) {
             if (!inDocks.count(dock)) {
@@ -101,6 +107,10 @@ KeyMapDialog::KeyMapDialog(QMainWindow *window) : QDialog(window)
         } else {
             everywhere.rows.push_back(row);
         }
+    }
+    if (auto *sim = qobject_cast<SimViewport *>(viewport)) {
+        for (const auto &[key, what] : sim->ownKeys())
+            inViewport.rows.emplace_back(keysText({key}), what);
     }
     // The drive keys, one row per thing they do, in the drive's own order.
     std::vector<DriveKeyAction> actions;

@@ -431,8 +431,8 @@ void MainWindow::updateMode()
     m_runToolBar->scenePicker()->setEnabled(!trial);
     m_runToolBar->routerPicker()->setEnabled(!trial);
     // A live rig keeps its own pace and drives its own grippers.
-    for (QAction *action :
-         {m_driveAction, m_forcesAction, m_slowerAction, m_fasterAction, m_realTimeAction})
+    for (QAction *action : {m_driveAction, m_viewport->showForcesAction(), m_slowerAction,
+                            m_fasterAction, m_realTimeAction})
         action->setEnabled(simulating);
     m_runToolBar->speedPicker()->setEnabled(simulating);
     m_gripperAction->setEnabled(!m_engine.isLive() && !trial); // a rig's grippers are its own

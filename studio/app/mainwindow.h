@@ -188,7 +188,6 @@ private:
     QAction *m_realTimeAction = nullptr;
     QAction *m_stopAllAction = nullptr;
     QAction *m_driveAction = nullptr;
-    QAction *m_forcesAction = nullptr;
     QAction *m_openSceneAction = nullptr;
     QAction *m_gripperAction = nullptr; ///< the Gripper menu, in the toolbar and File menu
     QAction *m_openRouterAction = nullptr;
@@ -198,7 +197,6 @@ private:
     StudyMenu *m_studyMenu = nullptr;
     QAction *m_preferencesAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
-    QAction *m_resetCameraAction = nullptr;
     QAction *m_quitAction = nullptr;
     QAction *m_aboutAction = nullptr;
 };

@@ -99,14 +99,6 @@ void MainWindow::createActions()
     m_driveAction->setToolTip(tr("Take the grippers over from the scripted operator "
                                  "(Ctrl+T); any key or pose input does it too"));
     connect(m_driveAction, &QAction::toggled, &m_engine, &Engine::setDriving);
-    m_forcesAction = action(tr("Contact forces"), QStringLiteral("forcesAction"),
-                            QKeySequence(Qt::CTRL | Qt::Key_F));
-    m_forcesAction->setCheckable(true);
-    m_forcesAction->setToolTip(tr("Show contact forces as arrows in the viewport"));
-    connect(m_forcesAction, &QAction::toggled, m_viewport, &SimViewport::setShowForces);
-    m_resetCameraAction = action(tr("Reset camera"), QStringLiteral("resetCameraAction"),
-                                 QKeySequence(Qt::CTRL | Qt::Key_Home));
-    connect(m_resetCameraAction, &QAction::triggered, m_viewport, &SimViewport::resetCamera);
 
     m_openSceneAction =
         action(tr("Open scene…"), QStringLiteral("openSceneAction"), QKeySequence::Open);
@@ -216,8 +208,9 @@ void MainWindow::createMenus()
     run->addAction(m_stopAllAction);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
-    view->addAction(m_forcesAction);
-    view->addAction(m_resetCameraAction);
+    // The viewport brings its own (as the study feature brings File → Study).
+    view->addAction(m_viewport->showForcesAction());
+    view->addAction(m_viewport->resetCameraAction());
     QMenu *camera = view->addMenu(tr("&Camera"));
     for (int preset = 0; preset < CameraPresetCount; ++preset)
         camera->addAction(m_viewport->cameraPresetAction(CameraPreset(preset)));
@@ -234,9 +227,10 @@ void MainWindow::createMenus()
 
 void MainWindow::createToolBar()
 {
-    m_runToolBar = new RunToolBar({m_runAction, m_stepAction, m_resetAction, m_gripperAction,
-                                   m_driveAction, m_forcesAction, m_recordAction, m_stopAllAction},
-                                  m_workspace, this);
+    m_runToolBar =
+        new RunToolBar({m_runAction, m_stepAction, m_resetAction, m_gripperAction, m_driveAction,
+                        m_viewport->showForcesAction(), m_recordAction, m_stopAllAction},
+                       m_workspace, this);
     addToolBar(m_runToolBar);
     connect(m_runToolBar, &RunToolBar::speedPicked, &m_engine, &Engine::setSpeed);
     connect(m_runToolBar, &RunToolBar::scenePicked, this, [this](const QString &scene) {

@@ -156,19 +156,30 @@ QStringList packHints(const QStringList &lines, const QFontMetrics &metrics, int
 
 SimViewport::SimViewport(QWidget *parent)
     : QWidget(parent), m_resetCamera(new QAction(tr("Reset camera"), this)),
-      m_showForcesAction(new QAction(tr("Show contact forces"), this))
+      m_showForcesAction(new QAction(tr("Contact forces"), this))
 {
     // Every pixel is the picture's: nothing of the parent to paint under it.
     setAttribute(Qt::WA_OpaquePaintEvent);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(320, 240);
 
-    m_resetCamera->setShortcut(Qt::Key_Home);
-    m_resetCamera->setShortcutContext(Qt::WidgetShortcut);
+    // The window's View menu and tool bar show these; their shortcuts work anywhere in the
+    // window (Home alone only here: keyPressEvent).
+    m_resetCamera->setObjectName(QStringLiteral("resetCameraAction"));
+    m_resetCamera->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
+    m_resetCamera->setToolTip(
+        tr("Back to the default view (%1; Home in the viewport)")
+            .arg(m_resetCamera->shortcut().toString(QKeySequence::NativeText)));
     connect(m_resetCamera, &QAction::triggered, this, &SimViewport::resetCamera);
     addAction(m_resetCamera);
+    m_showForcesAction->setObjectName(QStringLiteral("forcesAction"));
     m_showForcesAction->setCheckable(true);
+    m_showForcesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
+    m_showForcesAction->setToolTip(
+        tr("Show contact forces as arrows in the viewport (%1)")
+            .arg(m_showForcesAction->shortcut().toString(QKeySequence::NativeText)));
     connect(m_showForcesAction, &QAction::toggled, this, &SimViewport::setShowForces);
+    addAction(m_showForcesAction);
 
     const QString presetNames[CameraPresetCount] = {tr("Across the jaws"), tr("From the top"),
                                                     tr("From the side"), tr("Follow the hand")};
@@ -861,8 +872,18 @@ void SimViewport::wheelEvent(QWheelEvent *event)
     event->accept();
 }
 
+std::vector<std::pair<QKeySequence, QString>> SimViewport::ownKeys() const
+{
+    return {{QKeySequence(Qt::Key_Home), m_resetCamera->iconText()}};
+}
+
 void SimViewport::keyPressEvent(QKeyEvent *event)
 {
+    if (event->key() == Qt::Key_Home && event->modifiers() == Qt::NoModifier) {
+        resetCamera();
+        event->accept();
+        return;
+    }
     // Auto-repeat would make a held key stutter: the keyboard drive integrates held keys itself.
     if (m_handDrive &&
         (event->isAutoRepeat() || m_handDrive->press(event->key(), event->modifiers())))

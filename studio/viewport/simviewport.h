@@ -7,6 +7,7 @@
 
 #include <QElapsedTimer>
 #include <QImage>
+#include <QKeySequence>
 #include <QPoint>
 #include <QRectF>
 #include <QTimer>
@@ -15,6 +16,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QAction;
@@ -117,7 +119,11 @@ public:
         return presetCamera(world, CameraPreset::AcrossJaws);
     }
 
-    /** Actions for the main window's menus: reset the camera, show contact forces. */
+    /**
+     * The viewport's actions, which the main window's View menu and tool bar show: reset the
+     * camera (Ctrl+Home in the window, Home in the viewport), a camera preset (1 to 4 in the
+     * viewport), show contact forces (Ctrl+F).
+     */
     QAction *resetCameraAction() const { return m_resetCamera; }
     /** The presets' actions (checkable, keys 1–4 while the viewport has the focus). */
     QAction *cameraPresetAction(CameraPreset preset) const
@@ -125,6 +131,9 @@ public:
         return m_presetActions[size_t(preset)];
     }
     QAction *showForcesAction() const { return m_showForcesAction; }
+    /** Keys the viewport takes itself, not through an action, and what each does: the key map's.
+     */
+    std::vector<std::pair<QKeySequence, QString>> ownKeys() const;
 
     /**
      * Where the corner box saying who drives was last drawn (widget coordinates; empty:

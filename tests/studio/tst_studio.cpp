@@ -50,6 +50,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMatrix4x4>
+#include <QMenu>
+#include <QMenuBar>
 #include <QProcess>
 #include <QScrollArea>
 #include <QSettings>
@@ -62,6 +64,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QtMath>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QUdpSocket>
 #include <QVector3D>
@@ -323,6 +326,28 @@ void TestStudio::runStepAndSpeedFromTheKeyboard()
 
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
     QVERIFY(window.engine().simTime() < 0.5);
+
+    // Contact forces: Ctrl+F, the tool bar's button and the View menu's entry are the
+    // viewport's one action, so each shows what the others did.
+    QAction *forces = window.viewport()->showForcesAction();
+    QToolButton *button = nullptr;
+    for (QToolButton *b : window.runToolBar()->findChildren<QToolButton *>()) {
+        if (b->defaultAction() == forces)
+            button = b;
+    }
+    QVERIFY(button);
+    QTest::keyClick(&window, Qt::Key_F, Qt::ControlModifier);
+    QVERIFY(window.viewport()->showForces());
+    QVERIFY(button->isChecked());
+    QTest::mouseClick(button, Qt::LeftButton);
+    QVERIFY(!window.viewport()->showForces());
+    QVERIFY(!forces->isChecked());
+    bool inViewMenu = false;
+    for (QAction *menu : window.menuBar()->actions()) {
+        if (menu->menu() && menu->menu()->actions().contains(forces))
+            inViewMenu = true;
+    }
+    QVERIFY(inViewMenu);
 
     // Ctrl+, opens the preferences, as the manual says, on Linux too.
     QString opened;

@@ -362,6 +362,13 @@ void TestViewport::doubleClickResetsTheCamera()
     QCOMPARE(m_viewport.camera().azimuth, home.azimuth);
     QCOMPARE(m_viewport.camera().elevation, home.elevation);
     QCOMPARE(m_viewport.camera().distance, home.distance);
+    // Home, in the viewport, does it too.
+    QTest::mousePress(&m_viewport, Qt::LeftButton, {}, QPoint(400, 300));
+    QTest::mouseMove(&m_viewport, QPoint(600, 200));
+    QTest::mouseRelease(&m_viewport, Qt::LeftButton, {}, QPoint(600, 200));
+    QVERIFY(m_viewport.camera().azimuth != home.azimuth);
+    QTest::keyClick(&m_viewport, Qt::Key_Home);
+    QCOMPARE(m_viewport.camera().azimuth, home.azimuth);
 }
 
 void TestViewport::keysMoveTheActiveHand_data()
