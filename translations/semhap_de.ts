@@ -368,6 +368,10 @@
         <source>An address that cannot be discovered, such as a band on the network or a pseudo-terminal, in one of these forms:</source>
         <translation>Eine Adresse, die nicht automatisch gefunden werden kann, etwa ein Armband im Netzwerk oder ein Pseudo-Terminal, in einer dieser Formen:</translation>
     </message>
+    <message>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
 </context>
 <context>
     <name>semhap::DistinctivenessView</name>
@@ -526,6 +530,10 @@
     <message>
         <source>Begin and end</source>
         <translation>Beginn und Ende</translation>
+    </message>
+    <message>
+        <source>Events</source>
+        <translation>Ereignisse</translation>
     </message>
 </context>
 <context>
@@ -827,22 +835,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
         <translation>&lt;p&gt;&lt;b&gt;semhap studio&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Semantische haptische Rückmeldung für die Fernsteuerung von Robotern: Kontaktkräfte werden zu Bestätigungen und Ausnahmen, die als Muster auf Armbänder geleitet werden.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>Plots</source>
-        <translation>Diagramme</translation>
-    </message>
-    <message>
-        <source>Events</source>
-        <translation>Ereignisse</translation>
-    </message>
-    <message>
-        <source>Devices</source>
-        <translation>Geräte</translation>
-    </message>
-    <message>
-        <source>Task metrics</source>
-        <translation>Aufgabenmetriken</translation>
-    </message>
-    <message>
         <source>Could not connect %1 to %2</source>
         <translation>%1 konnte nicht mit %2 verbunden werden</translation>
     </message>
@@ -881,14 +873,6 @@ Das Rig zeichnet seine Szene selbst.</translation>
     <message>
         <source>Could not load scene %1 with router %2</source>
         <translation>Szene %1 mit Router %2 konnte nicht geladen werden</translation>
-    </message>
-    <message>
-        <source>Patterns</source>
-        <translation>Muster</translation>
-    </message>
-    <message>
-        <source>Router</source>
-        <translation>Router</translation>
     </message>
     <message>
         <source>The run is paused while you audition a pattern.</source>
@@ -1012,10 +996,6 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
     <message>
         <source>Gripper</source>
         <translation>Greifer</translation>
-    </message>
-    <message>
-        <source>Study</source>
-        <translation>Studie</translation>
     </message>
     <message>
         <source>Could not load router %1</source>
@@ -1665,6 +1645,10 @@ In %2; in Exporten: %3</translation>
         <source>Lower is better.</source>
         <translation>Niedriger ist besser.</translation>
     </message>
+    <message>
+        <source>Task metrics</source>
+        <translation>Aufgabenmetriken</translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>
@@ -2084,6 +2068,10 @@ In %2; in Exporten: %3</translation>
     <message>
         <source>%1: %2 %3</source>
         <translation>%1: %2 %3</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Diagramme</translation>
     </message>
 </context>
 <context>
@@ -3534,6 +3522,10 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <source>No participant chosen</source>
         <translation>Keine Versuchsperson gewählt</translation>
     </message>
+    <message>
+        <source>Study</source>
+        <translation>Studie</translation>
+    </message>
 </context>
 <context>
     <name>semhap::TlxPage</name>
@@ -3970,6 +3962,10 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Not saved yet: %1</source>
         <translation>Noch nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>Muster</translation>
     </message>
 </context>
 <context>

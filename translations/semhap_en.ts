@@ -368,6 +368,10 @@
         <source>An address that cannot be discovered, such as a band on the network or a pseudo-terminal, in one of these forms:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::DistinctivenessView</name>
@@ -525,6 +529,10 @@
     </message>
     <message>
         <source>Begin and end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Events</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -826,22 +834,6 @@ The rig draws its own scene.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Plots</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Events</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Devices</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Task metrics</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Could not connect %1 to %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -879,14 +871,6 @@ The rig draws its own scene.</source>
     </message>
     <message>
         <source>Could not load scene %1 with router %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Patterns</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Router</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1008,10 +992,6 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
     </message>
     <message>
         <source>Gripper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Study</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1660,6 +1640,10 @@ In %2; in exports: %3</source>
         <source>Lower is better.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Task metrics</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::NodeInspector</name>
@@ -2078,6 +2062,10 @@ In %2; in exports: %3</source>
     </message>
     <message>
         <source>%1: %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3526,6 +3514,10 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <source>No participant chosen</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Study</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::TlxPage</name>
@@ -3961,6 +3953,10 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Not saved yet: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Patterns</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -19,19 +19,10 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include <utility>
+#include <vector>
+
 namespace semhap {
-
-namespace {
-
-QDockWidget *makeDock(const QString &title, const QString &name, QWidget *content, QWidget *parent)
-{
-    auto *dock = new QDockWidget(title, parent);
-    dock->setObjectName(name);
-    dock->setWidget(content);
-    return dock;
-}
-
-} // namespace
 
 void MainWindow::createDocks()
 {
@@ -48,40 +39,36 @@ void MainWindow::createDocks()
     m_designer = new WaveformDesigner(&m_engine.devices(), &m_workspace.patternDocument(), this);
     m_designer->setRunClock([this] { return m_engine.readoutTime(); });
 
-    setDockNestingEnabled(true);
-    QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_plots, this);
-    QDockWidget *events = makeDock(tr("Events"), QStringLiteral("eventsDock"), m_eventLog, this);
-    QDockWidget *devices =
-        makeDock(tr("Devices"), QStringLiteral("devicesDock"), m_devicesPanel, this);
-    QDockWidget *metrics =
-        makeDock(tr("Task metrics"), QStringLiteral("metricsDock"), m_metricsPanel, this);
-    QDockWidget *patterns =
-        makeDock(tr("Patterns"), QStringLiteral("patternsDock"), m_designer, this);
     m_studyPanel = new StudyPanel(m_workspace.study(), m_engine, this);
     m_studyPanel->setStudyActions(m_studyMenu->newStudyAction(), m_studyMenu->openStudyAction());
-    QDockWidget *study = makeDock(tr("Study"), QStringLiteral("studyDock"), m_studyPanel, this);
-    // The plots run the full height on the right; the log, devices and metrics share the
-    // space under the viewport.
+
+    // Each panel says where it docks; the plots run the full height on the right, the log,
+    // devices and metrics share the space under the viewport, and the panels that want the
+    // plots' room sit behind them as tabs.
+    setDockNestingEnabled(true);
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
-    QDockWidget *router =
-        makeDock(tr("Router"), QStringLiteral("routerDock"), m_routerEditor, this);
-    addDockWidget(Qt::RightDockWidgetArea, plots);
-    // The router editor and the designer want the plots' height and width: they sit
-    // behind them as tabs.
-    addDockWidget(Qt::RightDockWidgetArea, router);
-    tabifyDockWidget(plots, router);
-    addDockWidget(Qt::RightDockWidgetArea, patterns);
-    tabifyDockWidget(router, patterns);
-    addDockWidget(Qt::RightDockWidgetArea, study);
-    tabifyDockWidget(patterns, study);
-    plots->raise();
-    addDockWidget(Qt::BottomDockWidgetArea, events);
-    addDockWidget(Qt::BottomDockWidgetArea, devices);
-    addDockWidget(Qt::BottomDockWidgetArea, metrics);
-    tabifyDockWidget(events, devices);
-    tabifyDockWidget(devices, metrics);
-    events->raise();
+    const std::pair<QWidget *, PanelDock> panels[] = {
+        {m_plots, PlotPanel::dock()},           {m_routerEditor, RouterEditor::dock()},
+        {m_designer, WaveformDesigner::dock()}, {m_studyPanel, StudyPanel::dock()},
+        {m_eventLog, EventLogPanel::dock()},    {m_devicesPanel, DevicesPanel::dock()},
+        {m_metricsPanel, MetricsPanel::dock()},
+    };
+    std::vector<QDockWidget *> front;
+    for (const auto &[panel, place] : panels) {
+        auto *dock = new QDockWidget(place.title, this);
+        dock->setObjectName(place.name);
+        dock->setWidget(panel);
+        addDockWidget(place.side == PanelDock::Side::Right ? Qt::RightDockWidgetArea
+                                                           : Qt::BottomDockWidgetArea,
+                      dock);
+        if (place.tabbedWith.isEmpty())
+            front.push_back(dock);
+        else
+            tabifyDockWidget(findChild<QDockWidget *>(place.tabbedWith), dock);
+    }
+    for (QDockWidget *dock : front)
+        dock->raise();
 
     connect(m_eventLog, &EventLogPanel::eventActivated, m_plots, &PlotPanel::setCursorTime);
     connect(m_devicesPanel, &DevicesPanel::addressAdded, &m_workspace,

@@ -466,4 +466,10 @@ void DevicesPanel::showLevels()
     }
 }
 
+PanelDock DevicesPanel::dock()
+{
+    return {QStringLiteral("devicesDock"), tr("Devices"), PanelDock::Side::Bottom,
+            QStringLiteral("eventsDock")};
+}
+
 } // namespace semhap

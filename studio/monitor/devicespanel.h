@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
+
 #include <QStringList>
 #include <QWidget>
 
@@ -31,6 +33,8 @@ class DevicesPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     DevicesPanel(DeviceManager &manager, RunHistory &history, QWidget *parent = nullptr);
     ~DevicesPanel() override;
 

@@ -215,4 +215,9 @@ void EventLogPanel::activateRow(const QModelIndex &proxyIndex)
     emit eventActivated(proxyIndex.data(EventLogModel::TimeRole).toDouble());
 }
 
+PanelDock EventLogPanel::dock()
+{
+    return {QStringLiteral("eventsDock"), tr("Events"), PanelDock::Side::Bottom, QString()};
+}
+
 } // namespace semhap

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
+
 #include <QWidget>
 
 class QCheckBox;
@@ -26,6 +28,8 @@ class EventLogPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     explicit EventLogPanel(RunHistory &history, QWidget *parent = nullptr);
     ~EventLogPanel() override;
 

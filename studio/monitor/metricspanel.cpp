@@ -197,4 +197,10 @@ void MetricsPanel::refresh()
     m_empty->setVisible(metrics.empty());
 }
 
+PanelDock MetricsPanel::dock()
+{
+    return {QStringLiteral("metricsDock"), tr("Task metrics"), PanelDock::Side::Bottom,
+            QStringLiteral("devicesDock")};
+}
+
 } // namespace semhap

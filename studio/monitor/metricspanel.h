@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
+
 #include <QJsonValue>
 #include <QWidget>
 
@@ -21,6 +23,8 @@ class MetricsPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     explicit MetricsPanel(RunHistory &history, QWidget *parent = nullptr);
 
     /** The label shown for a (flattened) metrics key: a translated name, or the key. */

@@ -748,4 +748,9 @@ void PlotPanel::exportPngDialog()
         QMessageBox::warning(this, tr("Export PNG"), error);
 }
 
+PanelDock PlotPanel::dock()
+{
+    return {QStringLiteral("plotsDock"), tr("Plots"), PanelDock::Side::Right, QString()};
+}
+
 } // namespace semhap

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
 #include "runhistory.h"
 
 #include <QElapsedTimer>
@@ -48,6 +49,8 @@ class PlotPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     /** Shows `history`, which must outlive the panel. */
     explicit PlotPanel(RunHistory &history, QWidget *parent = nullptr);
     ~PlotPanel() override;

@@ -1057,4 +1057,10 @@ void WaveformDesigner::stopAudition()
     m_auditioner->stop();
 }
 
+PanelDock WaveformDesigner::dock()
+{
+    return {QStringLiteral("patternsDock"), tr("Patterns"), PanelDock::Side::Right,
+            QStringLiteral("routerDock")};
+}
+
 } // namespace semhap

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "devicemodel.h"
+#include "paneldock.h"
 
 #include <QWidget>
 
@@ -42,6 +43,8 @@ class WaveformDesigner : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     /**
      * `devices` (may be null) offers its bound devices for audition; `document` is the
      * pattern to show (null: a document of the designer's own, opened on a built-in). Both

@@ -791,4 +791,10 @@ RouterContext RouterEditor::context() const
     return m_context ? m_context() : RouterContext();
 }
 
+PanelDock RouterEditor::dock()
+{
+    return {QStringLiteral("routerDock"), tr("Router"), PanelDock::Side::Right,
+            QStringLiteral("plotsDock")};
+}
+
 } // namespace semhap

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
 #include "routercontext.h"
 #include "routergraph.h"
 
@@ -41,6 +42,8 @@ class RouterEditor : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     /** Sends a graph to the running session; false with a one-line error. */
     using ApplyFunction = std::function<bool(const RouterGraph &graph, QString *error)>;
     /**

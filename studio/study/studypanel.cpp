@@ -548,4 +548,10 @@ qint64 StudyPanel::selectedDoneTrial() const
     return item ? item->data(0, TrialRole).toLongLong() : 0;
 }
 
+PanelDock StudyPanel::dock()
+{
+    return {QStringLiteral("studyDock"), tr("Study"), PanelDock::Side::Right,
+            QStringLiteral("patternsDock")};
+}
+
 } // namespace semhap

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "paneldock.h"
 #include "studyprotocol.h"
 
 #include <QPointer>
@@ -36,6 +37,8 @@ class StudyPanel : public QWidget
     Q_OBJECT
 
 public:
+    /** Where the main window docks it by default (PanelDock). */
+    static PanelDock dock();
     StudyPanel(StudyDocument &study, Engine &engine, QWidget *parent = nullptr);
     /** Closes the participant's questionnaire first: it tells the panel when it goes. */
     ~StudyPanel() override;
