@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHostAddress>
+#include <QProcessEnvironment>
 
 #include <algorithm>
 #include <climits>
@@ -103,6 +104,21 @@ bool Command::numberOption(const QCommandLineParser &parser, const QString &opti
         return false;
     }
     *value = parsed;
+    return true;
+}
+
+bool Command::shardOption(const QCommandLineParser &parser, Shard *shard)
+{
+    if (!parser.isSet(QStringLiteral("shard")))
+        return true;
+    QString error;
+    const std::optional<Shard> given = Shard::parse(
+        parser.value(QStringLiteral("shard")), QProcessEnvironment::systemEnvironment(), &error);
+    if (!given) {
+        usageError(error);
+        return false;
+    }
+    *shard = *given;
     return true;
 }
 

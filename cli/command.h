@@ -8,6 +8,7 @@
 #include "outputfile.h"
 #include "patternrender.h"
 #include "routercontext.h"
+#include "shard.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -81,6 +82,8 @@ protected:
 
     /** Parses a number option; false (after a usage message) when it is not one. */
     bool numberOption(const QCommandLineParser &parser, const QString &option, double *value);
+    /** Reads `--shard I/N|auto` into `shard` when given; false after a usage error. */
+    bool shardOption(const QCommandLineParser &parser, Shard *shard);
 
     /**
      * Opens FILE, or standard output for `-`, for writing (OutputFile: a regular file

@@ -8,7 +8,6 @@
 
 #include <QFile>
 #include <QJsonObject>
-#include <QRegularExpression>
 #include <QThread>
 
 #include <algorithm>
@@ -263,8 +262,9 @@ void CompareCommand::configure(QCommandLineParser &parser)
     addSceneOptions(parser);
     parser.addOption({QStringLiteral("jobs"), tr("Runs at once (default: the cores)."), tr("N")});
     parser.addOption({QStringLiteral("shard"),
-                      tr("Run only slice I of N of the grid (1-based), for job arrays."),
-                      tr("I/N")});
+                      tr("Run only slice I of N of the grid (1-based); auto: this task's slice "
+                         "of a Slurm job array."),
+                      tr("I/N|auto")});
     parser.addOption({QStringLiteral("csv"), tr("Where to write one row per run."), tr("FILE|-")});
     parser.addOption({QStringLiteral("baseline"),
                       tr("The router the others are compared with, run by run (default: none, "
@@ -299,16 +299,9 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         return usageError(tr("--seeds must be a whole number from 1"));
     if (jobs < 1 || jobs != std::floor(jobs))
         return usageError(tr("--jobs must be a whole number from 1"));
-    int shard = 1;
-    int shards = 1;
-    if (parser.isSet(QStringLiteral("shard"))) {
-        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("^(\\d+)/(\\d+)$"))
-                                              .match(parser.value(QStringLiteral("shard")));
-        shard = m.captured(1).toInt();
-        shards = m.captured(2).toInt();
-        if (!m.hasMatch() || shards < 1 || shard < 1 || shard > shards)
-            return usageError(tr("--shard expects I/N with 1 <= I <= N, e.g. 3/10"));
-    }
+    Shard shard;
+    if (!shardOption(parser, &shard))
+        return ExitUsage;
     const QStringList routers =
         parser.value(QStringLiteral("routers")).split(QLatin1Char(','), Qt::SkipEmptyParts);
     if (routers.isEmpty())
@@ -322,7 +315,7 @@ int CompareCommand::execute(const QCommandLineParser &parser)
     int index = 0;
     for (const QString &router : routers) {
         for (int seed = 1; seed <= int(seeds); ++seed) {
-            if (index++ % shards != shard - 1)
+            if (!shard.takes(index++))
                 continue;
             RunOptions options = common;
             options.scene = parser.value(QStringLiteral("scene"));

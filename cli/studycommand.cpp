@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "studycommand.h"
 
+#include "provenance.h"
 #include "quitsignal.h"
 #include "studyanalysis.h"
 #include "studydatabase.h"
 #include "studyexport.h"
+#include "studymerge.h"
 #include "studyprotocol.h"
 #include "studysimulation.h"
 #include "studytable.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 
 #include <cmath>
@@ -35,18 +38,25 @@ void StudyCommand::configure(QCommandLineParser &parser)
     parser.setApplicationDescription(tr(
         "semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
         "                      [--operator reactive|perceiving] [--person NAME=VALUE]...\n"
+        "                      [--shard I/N|auto]\n"
+        "semhap study merge OUT.db SHARD.db...\n"
         "semhap study export STUDY.db --csv DIR\n"
         "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
         "simulate: runs the protocol with simulated participants (the reactive or the\n"
         "perceiving operator, a seed each) into a new study, the questionnaires left\n"
-        "unanswered.\n"
+        "unanswered. With --shard, only slice I of N of the participants (each keeps\n"
+        "its name, seed and order of conditions), for a cluster's job array.\n"
+        "merge: joins the shards of one simulated study into a new study OUT.db.\n"
         "export: writes DIR/measures.csv (participant,condition,trial,measure,value),\n"
         "DIR/trials.csv and DIR/answers.csv.\n"
         "analyze: the analysis of each measure (docs/studies.md) as Markdown on standard\n"
         "output, as JSON with --json, or as DIR/report.md with a box plot per measure."));
-    parser.addPositionalArgument(QStringLiteral("action"), tr("simulate, export or analyze"));
-    parser.addPositionalArgument(QStringLiteral("file"),
-                                 tr("The protocol, the study, or (analyze) a tidy CSV."));
+    parser.addPositionalArgument(QStringLiteral("action"),
+                                 tr("simulate, merge, export or analyze"));
+    parser.addPositionalArgument(
+        QStringLiteral("file"),
+        tr("The protocol, the study, (analyze) a tidy CSV, or (merge) the new study and its "
+           "shards."));
     parser.addOption({QStringLiteral("participants"),
                       tr("simulate: how many participants (1 to %1).").arg(MaxParticipants),
                       tr("N")});
@@ -59,6 +69,10 @@ void StudyCommand::configure(QCommandLineParser &parser)
                       tr("simulate: the participants' operator, reactive (the default) or "
                          "perceiving (docs/operator.md)."),
                       tr("NAME")});
+    parser.addOption({QStringLiteral("shard"),
+                      tr("simulate: only slice I of N of the participants (1-based); auto: this "
+                         "task's slice of a Slurm job array."),
+                      tr("I/N|auto")});
     parser.addOption({QStringLiteral("person"),
                       tr("simulate: set a parameter of the perceiving operator's person "
                          "(repeatable; docs/operator.md)."),
@@ -78,10 +92,12 @@ int StudyCommand::execute(const QCommandLineParser &parser)
 {
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return usageError(tr("an action is required: simulate, export or analyze"));
+        return usageError(tr("an action is required: simulate, merge, export or analyze"));
     const QString action = positional.first();
     if (positional.size() < 2)
         return usageError(tr("%1 needs a file").arg(action));
+    if (action == QLatin1String("merge"))
+        return merge(positional.at(1), positional.mid(2));
     if (positional.size() > 2)
         return usageError(tr("unexpected argument '%1'").arg(positional.at(2)));
     if (action == QLatin1String("simulate"))
@@ -93,7 +109,22 @@ int StudyCommand::execute(const QCommandLineParser &parser)
     }
     if (action == QLatin1String("analyze"))
         return analyze(parser, positional.at(1));
-    return usageError(tr("unknown action '%1': simulate, export or analyze").arg(action));
+    return usageError(tr("unknown action '%1': simulate, merge, export or analyze").arg(action));
+}
+
+int StudyCommand::merge(const QString &out, const QStringList &shards)
+{
+    if (shards.isEmpty())
+        return usageError(tr("merge needs the new study and its shards: OUT.db SHARD.db..."));
+    for (const QString &shard : shards)
+        keepFromOutputs(shard, Kept::Input);
+    if (!checkOutputPath(out))
+        return ExitInvalidInput;
+    QString error;
+    if (!StudyMerge::merge(out, shards, &error))
+        return inputError(error);
+    m_out << tr("%1: merged %2 shards\n").arg(out).arg(shards.size());
+    return ExitOk;
 }
 
 int StudyCommand::simulate(const QCommandLineParser &parser, const QString &protocolPath)
@@ -111,6 +142,11 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
             tr("--participants must be a whole number from 1 to %1").arg(MaxParticipants));
     StudySimulation::Options options;
     options.participants = int(participants);
+    Shard shard;
+    if (!shardOption(parser, &shard))
+        return ExitUsage;
+    options.shard = shard.index;
+    options.shards = shard.count;
     if (parser.isSet(QStringLiteral("trial-seconds"))) {
         if (!numberOption(parser, QStringLiteral("trial-seconds"), &options.maxSeconds))
             return ExitUsage;
@@ -138,6 +174,29 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     std::unique_ptr<StudyDatabase> study = StudyDatabase::create(out, protocol, &error);
     if (!study)
         return inputError(error);
+    // What a merge checks the shards by, and where this one came from (docs/cluster.md).
+    const Provenance provenance;
+    QJsonArray numbers;
+    for (int number = 1; number <= options.participants; ++number) {
+        if (shard.takes(number - 1))
+            numbers.append(number);
+    }
+    const auto record = [&](bool ended) {
+        const QJsonObject json{
+            {QStringLiteral("participants"), options.participants},
+            {QStringLiteral("shard"), shard.text()},
+            {QStringLiteral("operator"), options.operatorName},
+            {QStringLiteral("trial_seconds"), options.maxSeconds},
+            {QStringLiteral("person"), options.person.toJson()},
+            {QStringLiteral("simulated"), numbers},
+            {QStringLiteral("seeds"), QStringLiteral("participant * 100 + trial (0: practice)")},
+            {QStringLiteral("provenance"), provenance.toJson(ended)}};
+        return study->setValue(
+            QStringLiteral("simulation"),
+            QString::fromUtf8(QJsonDocument(json).toJson(QJsonDocument::Compact)), &error);
+    };
+    if (!record(false))
+        return inputError(error);
     QuitSignal::install();
     options.cancelled = [] { return QuitSignal::requested(); };
     options.progress = [&](const StudyDatabase::Trial &trial) {
@@ -150,12 +209,12 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
                      .arg(StudyProtocol::transfers(trial.metrics));
         flushOutputs(); // a pipe sees each run as it ends
     };
-    if (!StudySimulation::run(*study, options, &error))
+    if (!StudySimulation::run(*study, options, &error) || !record(true))
         return inputError(error);
     m_out << tr("%1: %2 simulated %3, %4 runs (sessions in %5)\n")
                  .arg(out)
-                 .arg(options.participants)
-                 .arg(options.participants == 1 ? tr("participant") : tr("participants"))
+                 .arg(numbers.size())
+                 .arg(numbers.size() == 1 ? tr("participant") : tr("participants"))
                  .arg(study->trials().size())
                  .arg(StudyDatabase::sessionsFolder(out).section(QLatin1Char('/'), -1));
     return ExitOk;

@@ -26,6 +26,8 @@ protected:
 
 private:
     int simulate(const QCommandLineParser &parser, const QString &protocol);
+    /** Joins the shards of a simulated study into `out`. */
+    int merge(const QString &out, const QStringList &shards);
     int exportCsv(const QString &study, const QString &dir);
     int analyze(const QCommandLineParser &parser, const QString &input);
     /** Writes `files` into the folder `dir`; false after an error line. */

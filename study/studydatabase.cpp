@@ -4,6 +4,7 @@
 #include "sessioninfo.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLockFile>
@@ -289,6 +290,148 @@ QStringList StudyDatabase::participants() const
 
 bool StudyDatabase::addParticipant(const QString &id, QString *error)
 {
+    return addParticipant(id, int(participants().size()), error);
+}
+
+int StudyDatabase::position(const QString &participant) const
+{
+    QSqlQuery query(m_db);
+    query.prepare(QStringLiteral("SELECT position FROM participants WHERE id = ?"));
+    query.addBindValue(participant);
+    if (readAll(query) && query.next())
+        return query.value(0).toInt();
+    return -1;
+}
+
+bool StudyDatabase::relocateSessions(const QString &folder, QString *error)
+{
+    QSqlQuery query(m_db);
+    query.prepare(QStringLiteral("SELECT id, session FROM trials"));
+    if (!readAll(query)) {
+        *error = m_readError;
+        return false;
+    }
+    std::vector<std::pair<qint64, QString>> moved;
+    const QDir home = QFileInfo(m_path).absoluteDir();
+    while (query.next())
+        moved.emplace_back(query.value(0).toLongLong(),
+                           home.relativeFilePath(QDir(folder).filePath(
+                               QFileInfo(query.value(1).toString()).fileName())));
+    if (!m_db.transaction()) {
+        *error = located(m_path, QStringLiteral("cannot write: %1").arg(m_db.lastError().text()));
+        return false;
+    }
+    for (const auto &[id, session] : moved) {
+        if (!exec(QStringLiteral("UPDATE trials SET session = ? WHERE id = ?"), {session, id},
+                  error)) {
+            m_db.rollback();
+            return false;
+        }
+    }
+    if (!m_db.commit()) {
+        *error = located(m_path, QStringLiteral("cannot write: %1").arg(m_db.lastError().text()));
+        return false;
+    }
+    return true;
+}
+
+QString StudyDatabase::value(const QString &key) const
+{
+    QSqlQuery query(m_db);
+    query.prepare(QStringLiteral("SELECT value FROM study WHERE key = ?"));
+    query.addBindValue(key);
+    if (readAll(query) && query.next())
+        return query.value(0).toString();
+    return QString();
+}
+
+bool StudyDatabase::setValue(const QString &key, const QString &value, QString *error)
+{
+    return exec(QStringLiteral("INSERT OR REPLACE INTO study VALUES (?, ?)"), {key, value}, error);
+}
+
+bool StudyDatabase::copyParticipant(const StudyDatabase &from, const QString &participant,
+                                    QString *error)
+{
+    QSqlQuery row(from.m_db);
+    row.prepare(
+        QStringLiteral("SELECT position, conditions, added FROM participants WHERE id = ?"));
+    row.addBindValue(participant);
+    if (!from.readAll(row) || !row.next()) {
+        *error = located(from.m_path, QStringLiteral("no participant '%1'").arg(participant));
+        return false;
+    }
+    QSqlQuery trials(from.m_db);
+    trials.prepare(QStringLiteral("SELECT condition, phase, number, session, started, ended, "
+                                  "status, reason, seconds, metrics FROM trials WHERE "
+                                  "participant = ? ORDER BY id"));
+    trials.addBindValue(participant);
+    QSqlQuery answers(from.m_db);
+    answers.prepare(QStringLiteral("SELECT condition, measure, value, text, answered FROM "
+                                   "answers WHERE participant = ? ORDER BY id"));
+    answers.addBindValue(participant);
+    if (!from.readAll(trials) || !from.readAll(answers)) {
+        *error = from.readError();
+        return false;
+    }
+    const QString folder = sessionsFolder(m_path);
+    if (!QDir().mkpath(folder)) {
+        *error = located(folder, QStringLiteral("cannot create the sessions folder"));
+        return false;
+    }
+    QStringList copied;
+    const auto fail = [&](const QString &reason) {
+        m_db.rollback();
+        for (const QString &file : copied)
+            QFile::remove(file);
+        *error = reason;
+        return false;
+    };
+    if (!m_db.transaction())
+        return fail(
+            located(m_path, QStringLiteral("cannot write: %1").arg(m_db.lastError().text())));
+    if (!exec(QStringLiteral("INSERT INTO participants VALUES (?, ?, ?, ?)"),
+              {participant, row.value(0), row.value(1), row.value(2)}, error))
+        return fail(*error);
+    while (trials.next()) {
+        // The session goes beside this study under its own name; a study names its sessions
+        // relative to its own folder.
+        const QString source =
+            QFileInfo(from.m_path).absoluteDir().filePath(trials.value(3).toString());
+        const QString target = QDir(folder).filePath(QFileInfo(source).fileName());
+        if (QFileInfo::exists(target))
+            return fail(located(target, QStringLiteral("already exists")));
+        QFile file(source);
+        if (!file.copy(target))
+            return fail(
+                located(target, QStringLiteral("cannot write: %1").arg(file.errorString())));
+        copied.append(target);
+        QVariantList values{participant};
+        const QString relative = QFileInfo(m_path).absoluteDir().relativeFilePath(target);
+        for (int column = 0; column < 10; ++column)
+            values.append(column == 3 ? QVariant(relative) : trials.value(column));
+        if (!exec(QStringLiteral("INSERT INTO trials (participant, condition, phase, number, "
+                                 "session, started, ended, status, reason, seconds, metrics) "
+                                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                  values, error))
+            return fail(*error);
+    }
+    while (answers.next()) {
+        if (!exec(QStringLiteral("INSERT INTO answers (participant, condition, measure, value, "
+                                 "text, answered) VALUES (?, ?, ?, ?, ?, ?)"),
+                  {participant, answers.value(0), answers.value(1), answers.value(2),
+                   answers.value(3), answers.value(4)},
+                  error))
+            return fail(*error);
+    }
+    if (!m_db.commit())
+        return fail(
+            located(m_path, QStringLiteral("cannot write: %1").arg(m_db.lastError().text())));
+    return true;
+}
+
+bool StudyDatabase::addParticipant(const QString &id, int position, QString *error)
+{
     if (!StudyProtocol::isId(id)) {
         *error =
             QStringLiteral("a participant's id is 1 to 32 of A-Z a-z 0-9 _ . -, got '%1'").arg(id);
@@ -298,7 +441,11 @@ bool StudyDatabase::addParticipant(const QString &id, QString *error)
         *error = QStringLiteral("'%1' is already a participant").arg(id);
         return false;
     }
-    const int position = int(participants().size());
+    if (position < 0) {
+        *error =
+            QStringLiteral("a participant's row of the scheme is 0 or more, got %1").arg(position);
+        return false;
+    }
     QStringList ids;
     for (int condition : m_protocol.order().order(position))
         ids.append(m_protocol.conditions[size_t(condition)].id);

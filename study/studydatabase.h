@@ -106,6 +106,30 @@ public:
      * `A-Z a-z 0-9 _ . -` (no names needed); false with the reason in `error`.
      */
     bool addParticipant(const QString &id, QString *error);
+    /**
+     * Adds a participant with row `position` (0-based) of the scheme, which no one else has:
+     * a study simulated in shards gives each participant the row it has on one machine.
+     */
+    bool addParticipant(const QString &id, int position, QString *error);
+    /** The participant's row of the scheme (0-based); -1 for an unknown one. */
+    int position(const QString &participant) const;
+    /**
+     * Copies `participant` of `from` into this study as it is there: its row of the scheme,
+     * its trials in their order with their sessions (copied into this study's sessions
+     * folder) and its answers, in one transaction; false with `error` and nothing changed.
+     */
+    bool copyParticipant(const StudyDatabase &from, const QString &participant, QString *error);
+
+    /**
+     * Points every trial's session at the file of the same name in `folder`: the sessions
+     * folder is about to move there (a merged study renamed into place).
+     */
+    bool relocateSessions(const QString &folder, QString *error);
+
+    /** A value of the study's own table (`simulation`, `created` …); empty when unset. */
+    QString value(const QString &key) const;
+    /** Sets a value of the study's own table; false with `error`. */
+    bool setValue(const QString &key, const QString &value, QString *error);
     /** The participant's order of conditions (indices); empty for an unknown one. */
     std::vector<int> order(const QString &participant) const;
 

@@ -116,6 +116,12 @@ std::uint64_t StudySimulation::seed(int participant, int trial)
     return std::uint64_t(participant) * 100u + std::uint64_t(trial);
 }
 
+QString StudySimulation::participantName(int number, int participants)
+{
+    const int width = std::max(2, int(QString::number(participants).size()));
+    return QStringLiteral("P%1").arg(number, width, 10, QLatin1Char('0'));
+}
+
 QStringList StudySimulation::operatorNames()
 {
     return {QStringLiteral("reactive"), QStringLiteral("perceiving")};
@@ -128,10 +134,12 @@ bool StudySimulation::run(StudyDatabase &study, const Options &options, QString 
                      .arg(study.path());
         return false;
     }
-    const int width = std::max(2, int(QString::number(options.participants).size()));
     for (int number = 1; number <= options.participants; ++number) {
-        const QString participant = QStringLiteral("P%1").arg(number, width, 10, QLatin1Char('0'));
-        if (!study.addParticipant(participant, error))
+        if ((number - 1) % options.shards != options.shard - 1)
+            continue;
+        // Their name, seed and row of the scheme are their number's, in any shard.
+        const QString participant = participantName(number, options.participants);
+        if (!study.addParticipant(participant, number - 1, error))
             return false;
         for (const StudyProtocol::Step &step : study.protocol().steps(study.order(participant))) {
             if (step.kind != Kind::Practice && step.kind != Kind::Trial)

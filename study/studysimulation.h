@@ -24,7 +24,14 @@ class StudySimulation
 public:
     struct Options
     {
+        /** The whole study's participants, in every shard. */
         int participants = 20;
+        /**
+         * Which of them this run simulates: participant n (1-based) when (n - 1) % shards ==
+         * shard - 1, so that the shards 1..shards together are the whole study.
+         */
+        int shard = 1;
+        int shards = 1;
         /** Caps every practice round and trial (simulated s); 0: the protocol's lengths. */
         double maxSeconds = 0.0;
         /** The participants' operator: one of operatorNames(). */
@@ -43,15 +50,17 @@ public:
      * the same operator noise, as the seeds of `semhap compare` do.
      */
     static std::uint64_t seed(int participant, int trial);
+    /** Participant `number`'s name (P01 …) in a study of `participants`. */
+    static QString participantName(int number, int participants);
     /** The operators a study simulates participants with: those that heed feedback. */
     static QStringList operatorNames();
     /** The longest a practice round runs when its goal is a number of transfers only (s). */
     static constexpr double PracticeLimit = 600.0;
 
     /**
-     * Adds `options.participants` participants (P01, P02, …) to a study that has none and
-     * runs their steps; false with `error` (`FILE: reason`) when a run or a write failed or
-     * the simulation was cancelled.
+     * Adds this shard's participants of `options.participants` (P01, P02, …; all of them
+     * with one shard) to a study that has none and runs their steps; false with `error`
+     * (`FILE: reason`) when a run or a write failed or the simulation was cancelled.
      */
     static bool run(StudyDatabase &study, const Options &options, QString *error);
 };

@@ -2,6 +2,7 @@
 // The `semhap` command line as users meet it: exit codes, one-line errors, render output.
 #include "clitool.h"
 #include "emulatedband.h"
+#include "shard.h"
 #include "transportscheme.h"
 
 #include <QBuffer>
@@ -64,6 +65,8 @@ private slots:
     void devicesListsEveryTransport();
     void probeAsksTheBand();
     void realBinaryReadsStdin();
+    void shards_data();
+    void shards();
 };
 
 void TestCli::errors_data()
@@ -378,6 +381,95 @@ void TestCli::realBinaryReadsStdin()
     QCOMPARE(semhap.exitCode(), 0);
     QCOMPARE(semhap.readAllStandardError(), QByteArray());
     QCOMPARE(semhap.readAllStandardOutput().count('\n'), 170); // reference_events.py's count
+}
+
+void TestCli::shards_data()
+{
+    // --shard's text, the SLURM_ARRAY_TASK_* values (ID MIN MAX STEP COUNT, "" for none),
+    // and the slice or the start of the error.
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("array");
+    QTest::addColumn<QString>("slice");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("I/N") << "3/10"
+                         << ""
+                         << "3/10"
+                         << "";
+    QTest::newRow("one of one") << "1/1"
+                                << ""
+                                << "1/1"
+                                << "";
+    QTest::newRow("I above N") << "4/3"
+                               << ""
+                               << ""
+                               << "--shard expects I/N";
+    QTest::newRow("I zero") << "0/3"
+                            << ""
+                            << ""
+                            << "--shard expects I/N";
+    QTest::newRow("not a slice") << "half"
+                                 << ""
+                                 << ""
+                                 << "--shard expects I/N";
+    QTest::newRow("first of 1-20") << "auto"
+                                   << "1 1 20 1 20"
+                                   << "1/20"
+                                   << "";
+    QTest::newRow("last of 0-19") << "auto"
+                                  << "19 0 19 1 20"
+                                  << "20/20"
+                                  << "";
+    QTest::newRow("stepped 1-39:2") << "auto"
+                                    << "5 1 39 2 20"
+                                    << "3/20"
+                                    << "";
+    QTest::newRow("a list without gaps") << "auto"
+                                         << "7 7 9 1 3"
+                                         << "1/3"
+                                         << "";
+    QTest::newRow("no array") << "auto"
+                              << ""
+                              << ""
+                              << "--shard auto takes the slice from a Slurm job array";
+    QTest::newRow("gaps 1,2,5") << "auto"
+                                << "5 1 5 1 3"
+                                << ""
+                                << "--shard auto: the job array has gaps (3 tasks from 1 to 5 by "
+                                   "steps of 1)";
+    QTest::newRow("an index off the step") << "auto"
+                                           << "2 1 5 2 3"
+                                           << ""
+                                           << "--shard auto: the job array has gaps";
+    QTest::newRow("a task outside its array") << "auto"
+                                              << "9 1 5 1 5"
+                                              << ""
+                                              << "--shard auto: the array's variables do not "
+                                                 "describe one";
+    QTest::newRow("a variable not a number") << "auto"
+                                             << "1 1 x 1 3"
+                                             << ""
+                                             << "--shard auto: SLURM_ARRAY_TASK_MAX is 'x', not "
+                                                "a whole number";
+}
+
+void TestCli::shards()
+{
+    QFETCH(QString, text);
+    QFETCH(QString, array);
+    QFETCH(QString, slice);
+    QFETCH(QString, error);
+    QProcessEnvironment environment;
+    const QStringList values = array.split(' ', Qt::SkipEmptyParts);
+    const char *const names[] = {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN",
+                                 "SLURM_ARRAY_TASK_MAX", "SLURM_ARRAY_TASK_STEP",
+                                 "SLURM_ARRAY_TASK_COUNT"};
+    for (int i = 0; i < values.size(); ++i)
+        environment.insert(names[i], values[i]);
+    QString reason;
+    const std::optional<semhap::Shard> shard = semhap::Shard::parse(text, environment, &reason);
+    QCOMPARE(shard ? shard->text() : QString(), slice);
+    QCOMPARE(reason.left(error.size()), error);
+    QCOMPARE(reason.isEmpty(), error.isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestCli)
