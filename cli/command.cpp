@@ -58,6 +58,8 @@ int Command::run(const QStringList &arguments)
     // A failed command replaces nothing: its temporaries go with it.
     if (code == ExitOk && !commitOutputs())
         code = ExitInvalidInput;
+    else if (code == ExitOk)
+        committed();
     m_outputs.clear();
     return code;
 }

@@ -73,6 +73,8 @@ protected:
     virtual void configure(QCommandLineParser &parser) = 0;
     /** Runs once the arguments parsed; report usage errors with usageError(). */
     virtual int execute(const QCommandLineParser &parser) = 0;
+    /** After a successful execute(), once every output is whole in its place. */
+    virtual void committed() {}
 
     int usageError(const QString &message);
     /** Prints `WHERE: reason` on the error stream; returns ExitInvalidInput. */

@@ -3,10 +3,14 @@
 
 #include "metricspec.h"
 #include "operator.h"
+#include "provenance.h"
 #include "simrun.h"
 #include "statistics.h"
 
 #include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QThread>
 
@@ -14,7 +18,10 @@
 #include <atomic>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <thread>
+
+#include <unistd.h>
 
 namespace semhap {
 
@@ -78,6 +85,111 @@ QByteArray csvLine(const Row &row)
         cells.append(csvNumber(value));
     return cells.join(QLatin1Char(',')).toUtf8() + '\n';
 }
+
+/**
+ * A CSV line back into a row; false with the reason (`expected N cells, found M`, `'x' is
+ * not a number`).
+ */
+bool parseLine(const QByteArray &line, Row *row, QString *reason)
+{
+    const QStringList cells = QString::fromUtf8(line).trimmed().split(QLatin1Char(','));
+    const int width = int(inputKeys().size() + metricKeys().size());
+    if (cells.size() != width) {
+        *reason = QStringLiteral("expected %1 cells, found %2").arg(width).arg(cells.size());
+        return false;
+    }
+    row->inputs = cells.mid(0, inputKeys().size());
+    row->metrics.clear();
+    for (int c = int(inputKeys().size()); c < cells.size(); ++c) {
+        bool ok = cells[c].isEmpty();
+        const double value = ok ? std::nan("") : cells[c].toDouble(&ok);
+        if (!ok) {
+            *reason = QStringLiteral("'%1' is not a number").arg(cells[c]);
+            return false;
+        }
+        row->metrics.push_back(value);
+    }
+    return true;
+}
+
+/**
+ * The runs of a compare whose CSV is not whole yet: `CSV.partial`, the header and then each
+ * finished run's line, appended and handed to the disk as the run ends, so that a task
+ * killed mid-way keeps every run it finished for `--resume`. It is written directly rather
+ * than through an OutputFile because it must be on the disk while the command runs; the
+ * CSV itself appears whole at the end, and the journal goes once it has.
+ */
+class Journal
+{
+public:
+    static QString pathOf(const QString &csv) { return csv + QStringLiteral(".partial"); }
+
+    /**
+     * The complete lines of an existing journal or CSV after its header: a last line cut
+     * off by a kill (no newline) is dropped. False with `FILE:LINE: reason`.
+     */
+    static bool read(const QString &path, std::vector<Row> *rows, QString *error)
+    {
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly)) {
+            *error = QStringLiteral("%1: cannot read: %2").arg(path, file.errorString());
+            return false;
+        }
+        if (file.readLine() != csvHeader()) {
+            *error = QStringLiteral("%1:1: not a semhap compare CSV (header differs)").arg(path);
+            return false;
+        }
+        for (int line = 2; !file.atEnd(); ++line) {
+            const QByteArray text = file.readLine();
+            if (!text.endsWith('\n'))
+                break; // cut off: that run is done again
+            Row row;
+            QString reason;
+            if (!parseLine(text, &row, &reason)) {
+                *error = QStringLiteral("%1:%2: %3").arg(path).arg(line).arg(reason);
+                return false;
+            }
+            rows->push_back(row);
+        }
+        return true;
+    }
+
+    /** Starts the journal afresh with `rows` (those a resumed run keeps); false with why. */
+    bool start(const QString &path, const std::vector<Row> &rows, QString *error)
+    {
+        m_file.setFileName(path);
+        if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+            *error = QStringLiteral("%1: cannot write: %2").arg(path, m_file.errorString());
+            return false;
+        }
+        QByteArray text = csvHeader();
+        for (const Row &row : rows)
+            text += csvLine(row);
+        return write(text, error);
+    }
+
+    /** Appends a finished run's line and hands it to the disk; false with why. */
+    bool append(const Row &row, QString *error)
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        return write(csvLine(row), error);
+    }
+
+private:
+    bool write(const QByteArray &text, QString *error)
+    {
+        if (m_file.write(text) != text.size() || !m_file.flush() ||
+            ::fsync(m_file.handle()) != 0) {
+            *error = QStringLiteral("%1: cannot write: %2")
+                         .arg(m_file.fileName(), m_file.errorString());
+            return false;
+        }
+        return true;
+    }
+
+    QFile m_file;
+    std::mutex m_mutex;
+};
 
 /** Digits after the point for numbers of this size: 3 significant ones at most. */
 int digitsFor(double value)
@@ -266,6 +378,9 @@ void CompareCommand::configure(QCommandLineParser &parser)
                          "of a Slurm job array."),
                       tr("I/N|auto")});
     parser.addOption({QStringLiteral("csv"), tr("Where to write one row per run."), tr("FILE|-")});
+    parser.addOption({QStringLiteral("resume"),
+                      tr("Keep the runs a killed compare of the same grid finished (its "
+                         "FILE.partial, or FILE) and do only the rest.")});
     parser.addOption({QStringLiteral("baseline"),
                       tr("The router the others are compared with, run by run (default: none, "
                          "when compared)."),
@@ -278,6 +393,7 @@ void CompareCommand::configure(QCommandLineParser &parser)
 
 int CompareCommand::execute(const QCommandLineParser &parser)
 {
+    const Provenance provenance;
     if (parser.isSet(QStringLiteral("merge")))
         return merge(parser, parser.positionalArguments(), parser.value(QStringLiteral("csv")));
     if (!parser.positionalArguments().isEmpty())
@@ -344,16 +460,77 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         keepFromOutputs(options.scene, Kept::Input);
         keepFromOutputs(options.router, Kept::Input);
     }
+    const QString csvPath = parser.value(QStringLiteral("csv"));
+    const bool csvFile = parser.isSet(QStringLiteral("csv")) && csvPath != QLatin1String("-");
+    const bool resume = parser.isSet(QStringLiteral("resume"));
+    if (resume && !csvFile)
+        return usageError(tr("--resume needs --csv FILE: the runs it keeps are that file's"));
     QIODevice *csv = nullptr;
+    QIODevice *sidecar = nullptr;
     if (parser.isSet(QStringLiteral("csv"))) {
-        csv = openOutput(parser.value(QStringLiteral("csv")));
+        csv = openOutput(csvPath);
         if (!csv)
             return ExitInvalidInput;
     }
+    if (csvFile) {
+        sidecar = openOutput(csvPath + QStringLiteral(".provenance.json"));
+        if (!sidecar)
+            return ExitInvalidInput;
+    }
+
+    // A file grid's runs go to the journal as they end; resumed, the runs a killed compare
+    // of this grid finished are kept, and only the rest run.
+    const auto inputsOf = [](const RunOptions &options) {
+        return QStringList{options.scene, options.router, options.operatorName,
+                           QString::number(options.seed), QString::number(options.duration)};
+    };
     std::vector<Row> rows(grid.size());
+    std::vector<bool> done(grid.size(), false);
+    int resumed = 0;
+    Journal journal;
+    if (csvFile) {
+        m_journal = Journal::pathOf(csvPath);
+        QString error;
+        if (QFileInfo::exists(m_journal) && !resume)
+            return inputError(tr("%1: is left from a compare that did not finish: --resume keeps "
+                                 "its runs, or remove it")
+                                  .arg(m_journal));
+        for (const QString &path : {csvPath, m_journal}) {
+            std::vector<Row> kept;
+            if (!resume || !QFileInfo::exists(path))
+                continue;
+            if (!Journal::read(path, &kept, &error))
+                return inputError(error);
+            for (const Row &row : kept) {
+                size_t i = 0;
+                while (i < grid.size() && inputsOf(grid[i]) != row.inputs)
+                    ++i;
+                if (i == grid.size())
+                    return inputError(tr("%1: has a run of another grid (%2); resume with the "
+                                         "grid it was made by")
+                                          .arg(path, row.inputs.join(QLatin1Char(','))));
+                if (!done[i]) {
+                    rows[i] = row;
+                    done[i] = true;
+                    ++resumed;
+                }
+            }
+        }
+        std::vector<Row> start;
+        for (size_t i = 0; i < grid.size(); ++i) {
+            if (done[i])
+                start.push_back(rows[i]);
+        }
+        if (!journal.start(m_journal, start, &error))
+            return inputError(error);
+    }
     std::atomic<size_t> next{0};
+    std::mutex failure;
+    QString journalError;
     const auto worker = [&] {
         for (size_t i = next++; i < grid.size(); i = next++) {
+            if (done[i])
+                continue;
             const RunOptions &options = grid[i];
             QString error;
             std::unique_ptr<SimRun> run = SimRun::create(options, &error);
@@ -365,13 +542,19 @@ int CompareCommand::execute(const QCommandLineParser &parser)
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const QJsonObject metrics = run->report(wall);
             Row row;
-            row.inputs = {options.scene, options.router, options.operatorName,
-                          QString::number(options.seed), QString::number(options.duration)};
+            row.inputs = inputsOf(options);
             for (const QString &key : metricKeys()) {
                 const QJsonValue v = metrics.value(key);
                 row.metrics.push_back(v.isDouble() ? v.toDouble() : std::nan(""));
             }
             rows[i] = row;
+            QString written;
+            if (csvFile && !journal.append(row, &written)) {
+                // The rest would be lost too: stop, keeping what the journal holds.
+                const std::lock_guard<std::mutex> lock(failure);
+                journalError = written;
+                next = grid.size();
+            }
         }
     };
     std::vector<std::thread> threads;
@@ -379,15 +562,38 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         threads.emplace_back(worker);
     for (std::thread &thread : threads)
         thread.join();
+    if (!journalError.isEmpty())
+        return inputError(journalError);
 
     if (csv) {
         csv->write(csvHeader());
         for (const Row &row : rows)
             csv->write(csvLine(row));
     }
+    if (sidecar) {
+        // Where the CSV came from; the CSV itself stays a header and rows.
+        QJsonObject json = provenance.toJson(true);
+        json.insert(QStringLiteral("shard"), shard.text());
+        json.insert(QStringLiteral("runs"), int(grid.size()));
+        json.insert(QStringLiteral("resumed"), resumed);
+        json.insert(
+            QStringLiteral("grid"),
+            QJsonObject{{QStringLiteral("scene"), parser.value(QStringLiteral("scene"))},
+                        {QStringLiteral("routers"), QJsonArray::fromStringList(routers)},
+                        {QStringLiteral("operator"), parser.value(QStringLiteral("operator"))},
+                        {QStringLiteral("seeds"), QStringLiteral("1-%1").arg(int(seeds))},
+                        {QStringLiteral("duration"), common.duration}});
+        sidecar->write(QJsonDocument(json).toJson());
+    }
     if (!csv || parser.value(QStringLiteral("csv")) != QLatin1String("-"))
         m_out << table(rows) << pairedTable(rows, baseline);
     return ExitOk;
+}
+
+void CompareCommand::committed()
+{
+    if (!m_journal.isEmpty())
+        QFile::remove(m_journal);
 }
 
 bool CompareCommand::chooseBaseline(const QCommandLineParser &parser, const QStringList &routers,

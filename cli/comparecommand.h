@@ -22,8 +22,11 @@ public:
 protected:
     void configure(QCommandLineParser &parser) override;
     int execute(const QCommandLineParser &parser) override;
+    /** The CSV is whole: the journal of its runs goes. */
+    void committed() override;
 
 private:
+    QString m_journal; ///< the journal of this run's rows, removed once the CSV is whole
     int merge(const QCommandLineParser &parser, const QStringList &files, const QString &csvPath);
     /** The --baseline among `routers` (empty: none to pair with); false after a usage error. */
     bool chooseBaseline(const QCommandLineParser &parser, const QStringList &routers,

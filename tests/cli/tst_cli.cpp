@@ -7,11 +7,17 @@
 
 #include <QBuffer>
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 
 using namespace semhap;
 
@@ -65,6 +71,7 @@ private slots:
     void devicesListsEveryTransport();
     void probeAsksTheBand();
     void realBinaryReadsStdin();
+    void aKilledCompareResumes();
     void shards_data();
     void shards();
 };
@@ -381,6 +388,73 @@ void TestCli::realBinaryReadsStdin()
     QCOMPARE(semhap.exitCode(), 0);
     QCOMPARE(semhap.readAllStandardError(), QByteArray());
     QCOMPARE(semhap.readAllStandardOutput().count('\n'), 170); // reference_events.py's count
+}
+
+void TestCli::aKilledCompareResumes()
+{
+    // A grid's runs go to CSV.partial as they end. Killed after two of eight, the compare
+    // resumed keeps those, does the other six, and gives the CSV one call gives.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("grid.csv");
+    const QString journal = csv + ".partial";
+    const QStringList grid{
+        "compare", "--scene", "box_and_block", "--routers", "none,C3", "--operator", "scripted",
+        "--seeds", "4",       "--duration",    "3",         "--jobs",  "1"};
+    QProcess killed;
+    killed.start(SEMHAP_CLI_BINARY, grid + QStringList{"--csv", csv});
+    QVERIFY(killed.waitForStarted());
+    const auto lines = [&] {
+        QFile file(journal);
+        return file.open(QIODevice::ReadOnly) ? int(file.readAll().count('\n')) : 0;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(lines() >= 3 || killed.state() != QProcess::Running, 120000);
+    QCOMPARE(killed.state(), QProcess::Running);
+    QVERIFY(killed.processId() > 0); // never kill(0): that is this test's own group
+    ::kill(pid_t(killed.processId()), SIGKILL);
+    QVERIFY(killed.waitForFinished());
+    QVERIFY(!QFileInfo::exists(csv));
+    const int finished = lines() - 1;
+    QVERIFY(finished >= 2 && finished < 8);
+
+    // Not resumed, the journal is kept and the call refused.
+    Result r = semhapRun(grid + QStringList{"--csv", csv});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("grid.csv.partial: is left from a compare that did not finish: "
+                            "--resume keeps its runs, or remove it"),
+             r.err.constData());
+    r = semhapRun(grid + QStringList{"--csv", csv, "--resume"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(!QFileInfo::exists(journal));
+    QFile sidecar(csv + ".provenance.json");
+    QVERIFY(sidecar.open(QIODevice::ReadOnly));
+    const QJsonObject provenance = QJsonDocument::fromJson(sidecar.readAll()).object();
+    QCOMPARE(provenance.value("resumed").toInt(), finished);
+    QCOMPARE(provenance.value("runs").toInt(), 8);
+    for (const char *key : {"semhap", "command", "host", "started", "ended", "shard", "grid"})
+        QVERIFY2(provenance.contains(key), key);
+
+    // The same rows as one call's, in the grid's order, but for the wall-clock columns.
+    r = semhapRun(grid + QStringList{"--csv", dir.filePath("whole.csv")});
+    QVERIFY2(r.code == 0, r.err.constData());
+    const auto runs = [](const QString &path) {
+        QFile file(path);
+        file.open(QIODevice::ReadOnly);
+        QStringList rows;
+        for (const QByteArray &line : file.readAll().trimmed().split('\n'))
+            rows.append(QString::fromUtf8(line).section(',', 0, -3));
+        return rows;
+    };
+    QCOMPARE(runs(csv).size(), 9);
+    QCOMPARE(runs(csv), runs(dir.filePath("whole.csv")));
+
+    // Resumed with another grid (longer runs), its rows are not this grid's.
+    QStringList longer = grid;
+    longer[longer.indexOf("--duration") + 1] = "4";
+    r = semhapRun(longer + QStringList{"--csv", csv, "--resume"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("grid.csv: has a run of another grid (box_and_block,none,scripted,"
+                            "1,3); resume with the grid it was made by"),
+             r.err.constData());
 }
 
 void TestCli::shards_data()
