@@ -38,7 +38,7 @@ void StudyCommand::configure(QCommandLineParser &parser)
     parser.setApplicationDescription(tr(
         "semhap study simulate PROTOCOL --participants N --out STUDY.db [--trial-seconds S]\n"
         "                      [--operator reactive|perceiving] [--person NAME=VALUE]...\n"
-        "                      [--shard I/N|auto]\n"
+        "                      [--shard I/N|auto] [--resume]\n"
         "semhap study merge OUT.db SHARD.db...\n"
         "semhap study export STUDY.db --csv DIR\n"
         "semhap study analyze STUDY.db|MEASURES.csv [--report DIR] [--json] [--measure M]...\n\n"
@@ -73,6 +73,9 @@ void StudyCommand::configure(QCommandLineParser &parser)
                       tr("simulate: only slice I of N of the participants (1-based); auto: this "
                          "task's slice of a Slurm job array."),
                       tr("I/N|auto")});
+    parser.addOption({QStringLiteral("resume"),
+                      tr("simulate: go on with the study a killed simulation began (the runs "
+                         "done stay; the rest run).")});
     parser.addOption({QStringLiteral("person"),
                       tr("simulate: set a parameter of the perceiving operator's person "
                          "(repeatable; docs/operator.md)."),
@@ -171,7 +174,10 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     if (!StudyProtocol::read(protocolPath, &protocol, &loadError))
         return inputError(loadError.toString());
     QString error;
-    std::unique_ptr<StudyDatabase> study = StudyDatabase::create(out, protocol, &error);
+    options.resume = parser.isSet(QStringLiteral("resume")) && QFileInfo::exists(out);
+    std::unique_ptr<StudyDatabase> study =
+        options.resume ? StudyDatabase::open(out, StudyDatabase::Access::Write, &error)
+                       : StudyDatabase::create(out, protocol, &error);
     if (!study)
         return inputError(error);
     // What a merge checks the shards by, and where this one came from (docs/cluster.md).
@@ -181,16 +187,36 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
         if (shard.takes(number - 1))
             numbers.append(number);
     }
+    QJsonObject simulation{
+        {QStringLiteral("participants"), options.participants},
+        {QStringLiteral("shard"), shard.text()},
+        {QStringLiteral("operator"), options.operatorName},
+        {QStringLiteral("trial_seconds"), options.maxSeconds},
+        {QStringLiteral("person"), options.person.toJson()},
+        {QStringLiteral("simulated"), numbers},
+        {QStringLiteral("seeds"), QStringLiteral("participant * 100 + trial (0: practice)")},
+        {QStringLiteral("attempt"), 1}};
+    if (options.resume) {
+        // Resumed only as it was begun: the same protocol, slice and simulation.
+        const QJsonObject before =
+            QJsonDocument::fromJson(study->value(QStringLiteral("simulation")).toUtf8()).object();
+        if (study->value(QStringLiteral("protocol")).toUtf8() != protocol.source)
+            return inputError(
+                tr("%1: was simulated from another protocol than %2").arg(out, protocolPath));
+        for (const QString &key :
+             {QStringLiteral("participants"), QStringLiteral("shard"), QStringLiteral("operator"),
+              QStringLiteral("trial_seconds"), QStringLiteral("person")}) {
+            if (before.value(key) != simulation.value(key))
+                return inputError(tr("%1: was simulated with another %2; resume it with the "
+                                     "options it was begun with")
+                                      .arg(out, key));
+        }
+        simulation.insert(QStringLiteral("attempt"),
+                          before.value(QStringLiteral("attempt")).toInt(1) + 1);
+    }
     const auto record = [&](bool ended) {
-        const QJsonObject json{
-            {QStringLiteral("participants"), options.participants},
-            {QStringLiteral("shard"), shard.text()},
-            {QStringLiteral("operator"), options.operatorName},
-            {QStringLiteral("trial_seconds"), options.maxSeconds},
-            {QStringLiteral("person"), options.person.toJson()},
-            {QStringLiteral("simulated"), numbers},
-            {QStringLiteral("seeds"), QStringLiteral("participant * 100 + trial (0: practice)")},
-            {QStringLiteral("provenance"), provenance.toJson(ended)}};
+        QJsonObject json = simulation;
+        json.insert(QStringLiteral("provenance"), provenance.toJson(ended));
         return study->setValue(
             QStringLiteral("simulation"),
             QString::fromUtf8(QJsonDocument(json).toJson(QJsonDocument::Compact)), &error);

@@ -129,20 +129,36 @@ QStringList StudySimulation::operatorNames()
 
 bool StudySimulation::run(StudyDatabase &study, const Options &options, QString *error)
 {
-    if (!study.participants().isEmpty()) {
+    const QStringList present = study.participants();
+    if (!present.isEmpty() && !options.resume) {
         *error = QStringLiteral("%1: has participants already; simulate into a new study")
                      .arg(study.path());
         return false;
+    }
+    for (const QString &participant : present) {
+        bool ours = false;
+        for (int number = 1; number <= options.participants && !ours; ++number)
+            ours = (number - 1) % options.shards == options.shard - 1 &&
+                   participantName(number, options.participants) == participant &&
+                   study.position(participant) == number - 1;
+        if (!ours) {
+            *error = QStringLiteral("%1: %2 is not a participant this simulation would make")
+                         .arg(study.path(), participant);
+            return false;
+        }
     }
     for (int number = 1; number <= options.participants; ++number) {
         if ((number - 1) % options.shards != options.shard - 1)
             continue;
         // Their name, seed and row of the scheme are their number's, in any shard.
         const QString participant = participantName(number, options.participants);
-        if (!study.addParticipant(participant, number - 1, error))
+        if (!present.contains(participant) &&
+            !study.addParticipant(participant, number - 1, error))
             return false;
         for (const StudyProtocol::Step &step : study.protocol().steps(study.order(participant))) {
             if (step.kind != Kind::Practice && step.kind != Kind::Trial)
+                continue;
+            if (present.contains(participant) && study.isDone(participant, step))
                 continue;
             if (!runStep(study, participant, number, step, options, error))
                 return false;

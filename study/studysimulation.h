@@ -32,6 +32,11 @@ public:
          */
         int shard = 1;
         int shards = 1;
+        /**
+         * Goes on with a study this simulation began: the practice rounds and trials done
+         * stay, the rest (one a kill cut off included) run.
+         */
+        bool resume = false;
         /** Caps every practice round and trial (simulated s); 0: the protocol's lengths. */
         double maxSeconds = 0.0;
         /** The participants' operator: one of operatorNames(). */
@@ -59,8 +64,9 @@ public:
 
     /**
      * Adds this shard's participants of `options.participants` (P01, P02, …; all of them
-     * with one shard) to a study that has none and runs their steps; false with `error`
-     * (`FILE: reason`) when a run or a write failed or the simulation was cancelled.
+     * with one shard) to a study that has none and runs their steps; resumed, runs only the
+     * steps not done, adding those of the participants it lacks. False with `error` (`FILE:
+     * reason`) when a run or a write failed or the simulation was cancelled.
      */
     static bool run(StudyDatabase &study, const Options &options, QString *error);
 };

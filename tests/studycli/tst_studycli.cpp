@@ -362,6 +362,43 @@ void TestStudyCli::aKillLosesAtMostTheRunningTrial()
     QSqlQuery check(db);
     QVERIFY(check.exec(QStringLiteral("PRAGMA integrity_check")) && check.next());
     QCOMPARE(check.value(0).toString(), QStringLiteral("ok"));
+    check = QSqlQuery();
+    db.close();
+    db = QSqlDatabase();
+    QSqlDatabase::removeDatabase(QStringLiteral("check"));
+    study.reset();
+
+    // Resumed, the runs done stay and the rest run, the one cut off again: the measures are
+    // those of a simulation never killed, and the cut-off attempt stays, as interrupted.
+    const QStringList simulate{
+        "study",           "simulate", example("unimanual.json"), "--participants", "2",
+        "--trial-seconds", "20"};
+    CliResult r = semhapRun(simulate + QStringList{"--out", path, "--resume"});
+    QVERIFY2(r.code == 0, r.err.constData());
+    QVERIFY(r.out.contains("2 simulated participants, 25 runs"));
+    const QString whole = m_dir.filePath(QStringLiteral("unkilled.db"));
+    r = semhapRun(simulate + QStringList{"--out", whole});
+    QVERIFY2(r.code == 0, r.err.constData());
+    for (const QString &made : {path, whole}) {
+        r = semhapRun({"study", "export", made, "--csv", made + QStringLiteral("-csv")});
+        QVERIFY2(r.code == 0, r.err.constData());
+    }
+    QCOMPARE(readAll(path + QStringLiteral("-csv/measures.csv")),
+             readAll(whole + QStringLiteral("-csv/measures.csv")));
+    auto resumed = StudyDatabase::open(path, StudyDatabase::Access::Read, &error);
+    QVERIFY2(resumed, qPrintable(error));
+    QCOMPARE(resumed->trials()[3].status, StudyDatabase::Status::Interrupted);
+    QCOMPARE(QJsonDocument::fromJson(resumed->value("simulation").toUtf8())
+                 .object()
+                 .value("attempt")
+                 .toInt(),
+             2);
+    // Resumed with another slice of the study, it is refused.
+    r = semhapRun(simulate + QStringList{"--out", path, "--resume", "--shard", "1/2"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("was simulated with another shard; resume it with the options it "
+                            "was begun with"),
+             r.err.constData());
 }
 
 void TestStudyCli::aDamagedStudyIsNeitherExportedNorAnalysed()
