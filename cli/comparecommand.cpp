@@ -461,10 +461,14 @@ int CompareCommand::execute(const QCommandLineParser &parser)
         keepFromOutputs(options.router, Kept::Input);
     }
     const QString csvPath = parser.value(QStringLiteral("csv"));
-    const bool csvFile = parser.isSet(QStringLiteral("csv")) && csvPath != QLatin1String("-");
+    // A journal and a sidecar only beside a regular file: not beside a pipe or a device
+    // (/dev/full), whose folder is not the user's.
+    const bool csvFile = parser.isSet(QStringLiteral("csv")) && csvPath != QLatin1String("-") &&
+                         (!QFileInfo::exists(csvPath) || QFileInfo(csvPath).isFile());
     const bool resume = parser.isSet(QStringLiteral("resume"));
     if (resume && !csvFile)
-        return usageError(tr("--resume needs --csv FILE: the runs it keeps are that file's"));
+        return usageError(tr("--resume needs --csv FILE, a regular file: the runs it keeps are "
+                             "that file's"));
     QIODevice *csv = nullptr;
     QIODevice *sidecar = nullptr;
     if (parser.isSet(QStringLiteral("csv"))) {

@@ -299,6 +299,9 @@ void TestOutputs::fullDisk()
     // Every line says where and why: no empty messages.
     for (const QByteArray &line : r.err.trimmed().split('\n'))
         QVERIFY2(line.contains(": "), r.err.constData());
+    // Nothing of the command's own is left beside a device (a compare's journal, its sidecar).
+    for (const char *left : {"/dev/full.partial", "/dev/full.provenance.json"})
+        QVERIFY2(!QFileInfo::exists(left), left);
 }
 
 void TestOutputs::failedWriteKeepsTheOldFile()
