@@ -16,6 +16,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/build/tests/bench/bench_ros"
 "$root/build/tests/bench/bench_foxglove"
 "$root/build/tests/bench/bench_study"
+# 3 routers x 30 seeds x 120 s of bimanual_sorting three ways: about 40 minutes on 2 cores.
+"$root/build/tests/bench/bench_cluster"
 # The studio's plots draw in a virtual display, so the number is the same on any machine.
 xvfb-run -a -s '-screen 0 1920x1200x24' "$root/build/tests/bench/bench_plots"
 # The studio at real time in a virtual display with software GL (no GPU): CPU and memory

@@ -2,6 +2,7 @@
 // Headless runs of the simulation: deterministic streams, task metrics whose answer is known,
 // the container's slip timing, and the `semhap run` command line.
 #include "clirun.h"
+#include "compareruns.h"
 #include "contactframereader.h"
 #include "driveoperator.h"
 #include "handplan.h"
@@ -547,15 +548,9 @@ void TestSimRun::compareShardsMergeToTheWholeGrid()
         semhapRun(QStringList{"compare", "--merge", "--csv", dir.filePath("merged.csv")} + parts);
     QCOMPARE(merged.code, 0);
     // The same six runs, whatever slice ran them (the wall time and real-time factor aside).
-    const auto runs = [](const QByteArray &csv) {
-        QStringList lines;
-        for (const QByteArray &line : csv.trimmed().split('\n'))
-            lines.append(QString::fromUtf8(line).section(QLatin1Char(','), 0, -3));
-        lines.sort();
-        return lines;
-    };
-    QCOMPARE(runs(readAll(dir.filePath("merged.csv"))), runs(readAll(dir.filePath("all.csv"))));
-    QCOMPARE(runs(readAll(dir.filePath("all.csv"))).size(), 7);
+    QCOMPARE(compareRuns(readAll(dir.filePath("merged.csv"))),
+             compareRuns(readAll(dir.filePath("all.csv"))));
+    QCOMPARE(compareRuns(readAll(dir.filePath("all.csv"))).size(), 7);
     // The runs pair by seed with the baseline (none by default), whatever slice ran them.
     const auto paired = [](const QByteArray &out) {
         return out.mid(out.indexOf("\nPaired with"));
