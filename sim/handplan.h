@@ -21,6 +21,8 @@ public:
     void move(const std::array<double, 3> &to, double seconds);
     /** Ramps the total grip force to `force` (N) over `seconds`. */
     void grip(double force, double seconds);
+    /** The grip every operator opens the fingers with (N; negative opens). */
+    static constexpr double OpenGrip = -20.0;
     void wait(double seconds);
     /** Drops what is queued (a reaction replans). */
     void clear();

@@ -12,7 +12,6 @@ namespace semhap {
 
 namespace {
 
-constexpr double OpenGrip = -20.0;
 // Heights of the wrist (m) carrying, and of the pads' centre above a standing plug's centre
 // when grasping it (14 mm: the pads' lowest taxels then stay above the port's face when the
 // plug is seated). Where the pads are below the wrist is the gripper's (World::padDrop).
@@ -107,7 +106,7 @@ void InsertionOperator::act(World &world)
         } else if (t - m_lostSince > DropTime) {
             // Dropped: open, rise, and wait for it to be back on the table.
             m_hand.clear();
-            m_hand.grip(OpenGrip, 0.1);
+            m_hand.grip(HandPlan::OpenGrip, 0.1);
             Pose wrist = world.target(Gripper::Right);
             m_hand.move({wrist.pos[0], wrist.pos[1], CarryHeight}, 0.6);
             m_phase = Phase::Idle;
@@ -123,7 +122,7 @@ void InsertionOperator::act(World &world)
         if (!m_hand.isIdle())
             break;
         if (!world.isBetween(Gripper::Right, m_plug)) {
-            m_hand.grip(OpenGrip, 0.1);
+            m_hand.grip(HandPlan::OpenGrip, 0.1);
             m_phase = Phase::Idle;
             break;
         }
@@ -160,7 +159,7 @@ void InsertionOperator::act(World &world)
         const double depth = depthOf(world);
         if (InsertionTask::isSeated(depth, lateralOf(world))) {
             m_hand.clear();
-            m_hand.grip(OpenGrip, 0.2);
+            m_hand.grip(HandPlan::OpenGrip, 0.2);
             m_hand.wait(0.2);
             const Pose wrist = world.target(Gripper::Right);
             m_hand.move({wrist.pos[0], wrist.pos[1], CarryHeight}, 0.8 * m_pace);
@@ -210,7 +209,7 @@ void InsertionOperator::engage(const World &world)
     const bool held = world.isBetween(Gripper::Right, plug) &&
                       !InsertionTask::isSeated(depthOf(world), lateralOf(world));
     if (!held)
-        m_hand.grip(OpenGrip, 0.1);
+        m_hand.grip(HandPlan::OpenGrip, 0.1);
     const auto wrist = world.target(Gripper::Right).pos;
     if (wrist[2] < CarryHeight)
         m_hand.move({wrist[0], wrist[1], CarryHeight}, 0.8);
@@ -238,7 +237,7 @@ void InsertionOperator::planPick(World &world)
     const double x = plug.pos[0] + m_random.normal(0.0, 0.0005);
     const double y = plug.pos[1] + m_random.normal(0.0, 0.0005);
     const double force = std::clamp(m_random.normal(20.0, 4.0), 10.0, 30.0);
-    m_hand.grip(OpenGrip, 0.1);
+    m_hand.grip(HandPlan::OpenGrip, 0.1);
     m_hand.move({x, y, CarryHeight}, 0.9 * m_pace);
     m_hand.move({x, y, plug.pos[2] + GraspAbove + world.padDrop(Gripper::Right, PlugWidth)},
                 0.6 * m_pace);
@@ -269,7 +268,7 @@ void InsertionOperator::startAligning(World &world, double t, bool lookAgain)
         if (m_tipInHand[2] >
             -(world.padReach(Gripper::Right, PlugWidth) + InsertionTask::FullDepth)) {
             m_hand.clear();
-            m_hand.grip(OpenGrip, 0.2);
+            m_hand.grip(HandPlan::OpenGrip, 0.2);
             const Pose wrist = world.target(Gripper::Right);
             m_hand.move({wrist.pos[0], wrist.pos[1], CarryHeight}, 0.8);
             m_phase = Phase::Leaving;

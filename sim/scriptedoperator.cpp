@@ -19,7 +19,6 @@ constexpr double ReleaseHeight = 0.19;
 // How far from a cube's centre the fingers come down, and the room they need there.
 constexpr double FingerReach = 0.04;
 constexpr double MinClearance = 0.008;
-constexpr double OpenGrip = -20.0;
 // Sensory baseline: pressure (F / ref) at which a person stops closing, and eases off.
 constexpr double EnoughPressure = 0.3;
 constexpr double TooMuchPressure = 0.65;
@@ -166,7 +165,7 @@ void ScriptedOperator::planPick(World &world)
     // Reach above it first; the grasp is planned from there, on what the eyes see then.
     const auto pos = world.objectPosition(cube);
     m_target = cube;
-    m_right.grip(OpenGrip, 0.1);
+    m_right.grip(HandPlan::OpenGrip, 0.1);
     m_right.move({pos[0], pos[1], CarryHeight}, 0.9 * m_random.uniform(0.85, 1.2));
 }
 
@@ -213,7 +212,7 @@ void ScriptedOperator::planPlace(const World &world, const std::array<double, 3>
     m_right.move({from[0], from[1], carry}, 0.6 * pace);
     m_right.move({place[0], place[1], carry}, 1.0 * pace);
     m_right.move(place, 0.4 * pace);
-    m_right.grip(OpenGrip, 0.15);
+    m_right.grip(HandPlan::OpenGrip, 0.15);
     m_right.wait(0.3);
     m_right.move({place[0], place[1], carry}, 0.3 * pace);
 }
@@ -233,7 +232,7 @@ void ScriptedOperator::engage(const World &world)
         m_carried = held;
         planPlace(world, wrist, 1.0);
     } else {
-        m_right.grip(OpenGrip, 0.1);
+        m_right.grip(HandPlan::OpenGrip, 0.1);
         const double rise = CarryHeight - wrist[2];
         if (rise > 0)
             m_right.move({wrist[0], wrist[1], CarryHeight}, std::max(0.3, rise / RiseSpeed));
@@ -249,7 +248,7 @@ void ScriptedOperator::engage(const World &world)
         m_holdGrip = world.grip(Gripper::Left);
     } else if (m_hold == Hold::Dropped) {
         const auto hand = world.target(Gripper::Left).pos;
-        m_left.grip(OpenGrip, 0.15);
+        m_left.grip(HandPlan::OpenGrip, 0.15);
         m_left.move({hand[0], hand[1], std::max(hand[2], 0.3)}, 0.6);
     } else {
         m_hold = Hold::Acquire;
@@ -316,7 +315,7 @@ void ScriptedOperator::planHold(World &world)
             // for the load it expects.
             m_holdGrip = m_random.normal(46.0, 3.0);
             m_gripPerLoad = m_holdGrip / holdLimit;
-            m_left.grip(OpenGrip, 0.1);
+            m_left.grip(HandPlan::OpenGrip, 0.1);
             m_left.move({pos[0], pos[1], 0.3}, 0.8);
             m_left.move({pos[0], pos[1], gripZ}, 0.6);
             m_left.grip(m_holdGrip, 0.4);
@@ -350,13 +349,13 @@ void ScriptedOperator::planHold(World &world)
             m_hold = Hold::Dropped;
             m_droppedAt = t;
             m_left.clear();
-            m_left.grip(OpenGrip, 0.15);
+            m_left.grip(HandPlan::OpenGrip, 0.15);
             m_left.move({m_holdPos[0], m_holdPos[1], 0.3}, 0.6);
         } else if (int(cubesIn(world).size()) >= Quarters && m_right.isIdle()) {
             // Full: put it down on its base to be emptied, and take it again.
             m_hold = Hold::SetDown;
             m_left.move({m_holdPos[0], m_holdPos[1], m_holdPos[2] - HoldLift}, 0.8);
-            m_left.grip(OpenGrip, 0.2);
+            m_left.grip(HandPlan::OpenGrip, 0.2);
             m_left.move({m_holdPos[0], m_holdPos[1], 0.3}, 0.6);
         }
         break;

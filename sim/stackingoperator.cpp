@@ -13,7 +13,6 @@ namespace semhap {
 namespace {
 
 constexpr double Pi = 3.14159265358979323846;
-constexpr double OpenGrip = -20.0;
 // The wrist's height (m) reaching over the pile, and how far above a finished tower it
 // rises (the task clears a finished tower once the hand is 8 cm above it).
 constexpr double CarryHeight = 0.25;
@@ -77,7 +76,7 @@ void StackingOperator::act(World &world)
         if (world.isBetween(Gripper::Right, m_block)) {
             planCarry(world);
         } else {
-            m_hand.grip(OpenGrip, 0.1);
+            m_hand.grip(HandPlan::OpenGrip, 0.1);
             m_phase = Phase::Idle;
         }
         break;
@@ -150,7 +149,7 @@ void StackingOperator::planPick(World &world)
     wrist.quat = yawQuaternion(graspYaw(pose.quat));
     world.setTarget(Gripper::Right, wrist);
     const double size = StackingTask::blockSize(world, block);
-    m_hand.grip(OpenGrip, 0.1);
+    m_hand.grip(HandPlan::OpenGrip, 0.1);
     m_hand.move({pose.pos[0], pose.pos[1], CarryHeight}, 0.9 * m_pace);
     m_hand.move({pose.pos[0], pose.pos[1], pose.pos[2] + world.padDrop(Gripper::Right, size)},
                 0.6 * m_pace);
@@ -191,7 +190,7 @@ void StackingOperator::planLeave(const World &world)
     const double top = StackingTask::base(world)[2] +
                        StackingTask::Levels *
                            StackingTask::blockSize(world, StackingTask::blocksOf(world).front());
-    m_hand.grip(OpenGrip, 0.15 * m_pace);
+    m_hand.grip(HandPlan::OpenGrip, 0.15 * m_pace);
     m_hand.wait(0.3);
     m_hand.move({wrist[0], wrist[1], std::max(CarryHeight, top + ClearAbove)}, 0.6 * m_pace);
     m_grip = 0.0;

@@ -14,7 +14,6 @@ namespace semhap {
 namespace {
 
 constexpr double Pi = 3.14159265358979323846;
-constexpr double OpenGrip = -20.0;
 // The grip the left hand holds the plate's rim with (N): firm, far below the plate's limit.
 constexpr double HoldGrip = 15.0;
 constexpr double HoldGripSd = 2.0;
@@ -122,7 +121,7 @@ bool WipingOperator::handleBrokenPlate(World &world)
         m_plateOut = true;
         m_plateBack = -1.0;
         m_left.clear();
-        m_left.grip(OpenGrip, 0.15);
+        m_left.grip(HandPlan::OpenGrip, 0.15);
         m_path.clear();
         m_segmentStarted = false;
         const double face =
