@@ -6,6 +6,7 @@
 #include "mcapexport.h"
 #include "nametable.h"
 #include "sessionreader.h"
+#include "xdfexport.h"
 
 #include <QDir>
 #include <QJsonDocument>
@@ -41,8 +42,8 @@ void appendFingertip(QByteArray &row, const Fingertip &tip, const ActorTable &ac
 
 QString ExportCommand::summary() const
 {
-    return tr("Exports a session to CSV (one file per stream, for pandas or PlotJuggler) or "
-              "to JSON Lines in the spec's stream formats.");
+    return tr("Exports a session to CSV (one file per stream, for pandas or PlotJuggler), to "
+              "JSON Lines in the spec's stream formats, to MCAP or to XDF.");
 }
 
 void ExportCommand::configure(QCommandLineParser &parser)
@@ -60,6 +61,15 @@ void ExportCommand::configure(QCommandLineParser &parser)
                       tr("Write FILE.mcap, which Foxglove, PlotJuggler, Rerun and ros2 bag open: "
                          "every frame as ROS 2 messages (docs/ros.md)."),
                       tr("FILE.mcap")});
+    parser.addOption({QStringLiteral("xdf"),
+                      tr("Write FILE.xdf, the Lab Streaming Layer's format: the fingertip "
+                         "forces, the events as markers, the devices' output and the operator's "
+                         "input as streams (docs/science.md)."),
+                      tr("FILE.xdf")});
+    parser.addOption({QStringLiteral("time"),
+                      tr("With --xdf, the clock of the time stamps: session (its seconds, with "
+                         "clock offsets onto LSL's clock) or lsl (LSL's clock itself)."),
+                      tr("CLOCK"), QStringLiteral("session")});
 }
 
 int ExportCommand::execute(const QCommandLineParser &parser)
@@ -70,8 +80,13 @@ int ExportCommand::execute(const QCommandLineParser &parser)
     if (positional.size() > 1)
         return usageError(tr("unexpected argument '%1'").arg(positional.at(1)));
     if (!parser.isSet(QStringLiteral("csv")) && !parser.isSet(QStringLiteral("jsonl")) &&
-        !parser.isSet(QStringLiteral("mcap")))
-        return usageError(tr("--csv DIR, --jsonl DIR or --mcap FILE is required"));
+        !parser.isSet(QStringLiteral("mcap")) && !parser.isSet(QStringLiteral("xdf")))
+        return usageError(tr("--csv DIR, --jsonl DIR, --mcap FILE or --xdf FILE is required"));
+    const QString clock = parser.value(QStringLiteral("time"));
+    if (clock != QLatin1String("session") && clock != QLatin1String("lsl"))
+        return usageError(tr("--time: '%1' is not a clock (session or lsl)").arg(clock));
+    if (parser.isSet(QStringLiteral("time")) && !parser.isSet(QStringLiteral("xdf")))
+        return usageError(tr("--time goes with --xdf"));
     QString error;
     std::unique_ptr<SessionReader> session = SessionReader::open(positional.first(), &error);
     if (!session)
@@ -89,6 +104,23 @@ int ExportCommand::execute(const QCommandLineParser &parser)
         if (!out)
             return ExitInvalidInput;
         if (!McapExport::write(*session, out, &error)) {
+            const OutputFile *failed = failedOutput();
+            return inputError(failed ? failed->writeError().toString() : error);
+        }
+    }
+    if (parser.isSet(QStringLiteral("xdf"))) {
+        QIODevice *out = openOutput(parser.value(QStringLiteral("xdf")));
+        if (!out)
+            return ExitInvalidInput;
+        QStringList notes;
+        const bool written =
+            XdfExport::write(*session, out,
+                             clock == QLatin1String("lsl") ? XdfExport::TimeBase::Lsl
+                                                           : XdfExport::TimeBase::Session,
+                             &notes, &error);
+        for (const QString &note : std::as_const(notes))
+            report(note);
+        if (!written) {
             const OutputFile *failed = failedOutput();
             return inputError(failed ? failed->writeError().toString() : error);
         }

@@ -2,6 +2,7 @@
 #include "sessioninfo.h"
 
 #include "contactframe.h"
+#include "sessionclock.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -133,7 +134,7 @@ QJsonObject SessionInfo::toJson() const
 bool SessionInfo::isJsonKey(const QString &key)
 {
     return key == RouterKey || key == OverridesKey || key == BindingsKey ||
-           key == QLatin1String(OpenAtStartKey);
+           key == QLatin1String(OpenAtStartKey) || key == QLatin1String(SessionClock::MetadataKey);
 }
 
 bool SessionInfo::fromMetadata(const QMap<QString, QString> &rows, SessionInfo *result,

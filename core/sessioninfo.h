@@ -53,7 +53,10 @@ struct SessionInfo
      * value is JSON (isJsonKey) nested, every other value a string as stored.
      */
     QJsonObject toJson() const;
-    /** Whether metadata `key` holds JSON: `router`, `overrides`, `bindings`, `open_at_start`. */
+    /**
+     * Whether metadata `key` holds JSON: `router`, `overrides`, `bindings`, `open_at_start`,
+     * `steady_clock`.
+     */
     static bool isJsonKey(const QString &key);
     /**
      * Reads the rows back; unknown keys go to `extra`. False with `error` (`KEY: reason`)

@@ -41,7 +41,9 @@ namespace {
 /** One queued value; `arrival` only means something for contact frames. */
 struct Record
 {
-    std::variant<ContactFrame, SemanticEvent, DeviceFrame, HandCommand, SceneState> value;
+    std::variant<ContactFrame, SemanticEvent, DeviceFrame, HandCommand, SceneState,
+                 SessionClock::Sample>
+        value;
     double arrival = 0.0;
 };
 
@@ -198,8 +200,8 @@ private:
             stamp.addBindValue(QString::number(m_owner.dropped()));
             check(stamp.exec(), stamp);
             stamp.clear();
-            for (QSqlQuery *query :
-                 {&m_eventInsert, &m_blockInsert, &m_blockDelete, &m_nameInsert})
+            for (QSqlQuery *query : {&m_eventInsert, &m_blockInsert, &m_blockDelete, &m_nameInsert,
+                                     &m_metadataReplace})
                 query->clear();
             // A finished session is one file: back to a rollback journal, so readers (the
             // studio's replay, `semhap replay`, opening it read-only) leave no -wal or -shm
@@ -322,11 +324,12 @@ private:
 
     bool prepare(QSqlDatabase &db, QString *error)
     {
-        const std::array<std::pair<QSqlQuery *, const char *>, 4> statements{{
+        const std::array<std::pair<QSqlQuery *, const char *>, 5> statements{{
             {&m_eventInsert, "INSERT INTO events VALUES (?, ?, ?, ?, ?, ?, ?, ?)"},
             {&m_blockInsert, "INSERT INTO blocks VALUES (?, ?, ?, ?, ?, ?)"},
             {&m_blockDelete, "DELETE FROM blocks WHERE rowid = ?"},
             {&m_nameInsert, "INSERT INTO names VALUES (?, ?, ?)"},
+            {&m_metadataReplace, "INSERT OR REPLACE INTO metadata VALUES (?, ?)"},
         }};
         for (const auto &[query, statement] : statements) {
             *query = QSqlQuery(db);
@@ -382,7 +385,9 @@ private:
         if (!db.commit() && m_error.isEmpty())
             m_error = m_path + QStringLiteral(": cannot write: ") + sqlError(db.lastError());
         else
-            m_owner.m_committed.fetch_add(m_back.size(), std::memory_order_relaxed);
+            m_owner.m_committed.fetch_add(m_back.size() - m_batchClockSamples,
+                                          std::memory_order_relaxed);
+        m_batchClockSamples = 0;
         m_back.clear();
     }
 
@@ -523,6 +528,16 @@ private:
         append(Stream::OperatorInput, m_row);
     }
 
+    /** The steady clock's samples so far, in the metadata (a few a minute: rewritten whole). */
+    void insert(const SessionClock::Sample &sample, double)
+    {
+        m_clockSamples.push_back(sample);
+        ++m_batchClockSamples; // not a stream's value: committed() leaves it out
+        m_metadataReplace.addBindValue(QLatin1String(SessionClock::MetadataKey));
+        m_metadataReplace.addBindValue(QString::fromUtf8(SessionClock::toJson(m_clockSamples)));
+        check(m_metadataReplace.exec(), m_metadataReplace);
+    }
+
     void insert(const SceneState &state, double)
     {
         // A block holds rows of at most SessionBlock::MaxWidth numbers: a wider scene state
@@ -578,6 +593,9 @@ private:
     QSqlQuery m_blockInsert;
     QSqlQuery m_blockDelete;
     QSqlQuery m_nameInsert;
+    QSqlQuery m_metadataReplace;
+    std::vector<SessionClock::Sample> m_clockSamples;
+    size_t m_batchClockSamples = 0; ///< of the batch being written
     QString m_error;
 };
 
@@ -651,6 +669,12 @@ void SessionWriter::recordContactFrame(const ContactFrame &frame, double arrival
     pushActors(frame);
     if (!m_thread->push({frame, arrival}))
         m_dropped.fetch_add(1, std::memory_order_relaxed);
+    m_lastClock = {frame.t, SessionClock::now()};
+    if (m_lastClock.steady >= m_nextClockSample) {
+        if (m_thread->push({m_lastClock, 0.0}))
+            m_nextClockSample = m_lastClock.steady + SessionClock::Interval;
+        m_clockSampled = true;
+    }
     if (m_open.empty())
         return;
     // Before the first tick's own events, which may already end them.
@@ -690,6 +714,9 @@ bool SessionWriter::finish(QString *error)
     if (m_finished)
         return true;
     m_finished = true;
+    // The last frame's pair, so the samples span the whole recording.
+    if (m_clockSampled && m_lastClock.steady > m_nextClockSample - SessionClock::Interval)
+        m_thread->push({m_lastClock, 0.0});
     const QString failure = m_thread->stop();
     if (error)
         *error = failure;

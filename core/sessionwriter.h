@@ -5,11 +5,13 @@
 #include "handcommand.h"
 #include "pipeline.h"
 #include "scenestate.h"
+#include "sessionclock.h"
 #include "sessioninfo.h"
 
 #include <QString>
 
 #include <atomic>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -95,6 +97,10 @@ private:
     /** Producer thread: begins of messages active at create(), due at the first frame. */
     std::vector<SemanticEvent> m_open;
     int m_actorsSent = 0; ///< producer thread: actor ids already handed to the writer
+    /** Producer thread: the last frame's clock pair, and when the next is due (steady s). */
+    SessionClock::Sample m_lastClock;
+    double m_nextClockSample = -std::numeric_limits<double>::infinity();
+    bool m_clockSampled = false;
     std::atomic<quint64> m_dropped{0};
     std::atomic<quint64> m_committed{0};
     bool m_finished = false;

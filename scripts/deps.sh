@@ -31,6 +31,8 @@ packages=(
     # ROS 2 recordings: MCAP's chunk compressions and CRC-32; robots live over Foxglove's
     # WebSocket protocol
     libzstd-dev liblz4-dev zlib1g-dev qt6-websockets-dev
+    # tests/xdf: XDF files read back by the Lab Streaming Layer's reference reader
+    libxdf-dev
     # tests/cluster and bench_cluster: a one-node Slurm cluster that the test starts as root
     slurm-wlm munge
     # the desktop package: man pages, metadata checks, .deb dependencies

@@ -1052,6 +1052,38 @@ Machen Sie mit der wieder gefüllten Kiste weiter, oder setzen Sie zurück (%2),
         <source>Cannot publish to Foxglove on port %1: %2</source>
         <translation>Veröffentlichen für Foxglove auf Port %1 nicht möglich: %2</translation>
     </message>
+    <message>
+        <source>Export session…</source>
+        <translation>Sitzung exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the session replayed, or one you pick, as XDF for labs synchronised by the Lab Streaming Layer or as MCAP for Foxglove, PlotJuggler and Rerun</source>
+        <translation>Die wiedergegebene oder eine gewählte Sitzung als XDF für Labore, die mit dem Lab Streaming Layer synchronisieren, oder als MCAP für Foxglove, PlotJuggler und Rerun schreiben</translation>
+    </message>
+    <message>
+        <source>Session to export</source>
+        <translation>Zu exportierende Sitzung</translation>
+    </message>
+    <message>
+        <source>semhap sessions (*.db);;All files (*)</source>
+        <translation>semhap-Sitzungen (*.db);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>%1 wird exportiert…</translation>
+    </message>
+    <message>
+        <source>Could not export the session</source>
+        <translation>Die Sitzung konnte nicht exportiert werden</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Session exported</source>
+        <translation>Sitzung exportiert</translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>
@@ -2986,6 +3018,25 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Which feedback design turns events into patterns</source>
         <translation>Das Rückmeldungsdesign, das Ereignisse in Muster umsetzt</translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SessionExport</name>
+    <message>
+        <source>XDF for LSL labs, session time with clock offsets (*.xdf)</source>
+        <translation>XDF für LSL-Labore, Sitzungszeit mit Uhrenversatz (*.xdf)</translation>
+    </message>
+    <message>
+        <source>XDF for LSL labs, on LSL&apos;s clock (*.xdf)</source>
+        <translation>XDF für LSL-Labore, auf der LSL-Uhr (*.xdf)</translation>
+    </message>
+    <message>
+        <source>MCAP for Foxglove, PlotJuggler and Rerun (*.mcap)</source>
+        <translation>MCAP für Foxglove, PlotJuggler und Rerun (*.mcap)</translation>
+    </message>
+    <message>
+        <source>Export session</source>
+        <translation>Sitzung exportieren</translation>
     </message>
 </context>
 <context>

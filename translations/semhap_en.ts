@@ -1049,6 +1049,38 @@ Carry on with the refilled box, or reset (%2) to start over.</source>
         <source>Cannot publish to Foxglove on port %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Export session…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the session replayed, or one you pick, as XDF for labs synchronised by the Lab Streaming Layer or as MCAP for Foxglove, PlotJuggler and Rerun</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session to export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>semhap sessions (*.db);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session exported</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>semhap::ManualWindow</name>
@@ -2977,6 +3009,25 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Which feedback design turns events into patterns</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>semhap::SessionExport</name>
+    <message>
+        <source>XDF for LSL labs, session time with clock offsets (*.xdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XDF for LSL labs, on LSL&apos;s clock (*.xdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MCAP for Foxglove, PlotJuggler and Rerun (*.mcap)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export session</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

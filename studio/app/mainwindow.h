@@ -24,6 +24,7 @@ class PlotPanel;
 class PoseInput;
 class ReplayBar;
 class RouterEditor;
+class SessionExport;
 class SessionReplay;
 class SimViewport;
 class RunReadouts;
@@ -193,6 +194,8 @@ private:
     QAction *m_openRouterAction = nullptr;
     QAction *m_recordAction = nullptr;
     QAction *m_openSessionAction = nullptr;
+    QAction *m_exportSessionAction = nullptr;
+    SessionExport *m_sessionExport = nullptr;
     QAction *m_listenAction = nullptr;
     StudyMenu *m_studyMenu = nullptr;
     QAction *m_preferencesAction = nullptr;

@@ -9,6 +9,7 @@
 #include "helpactions.h"
 #include "liverigdialog.h"
 #include "runtoolbar.h"
+#include "sessionexport.h"
 #include "simviewport.h"
 #include "studymenu.h"
 #include "waveformdesigner.h"
@@ -16,7 +17,9 @@
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
@@ -141,6 +144,37 @@ void MainWindow::createActions()
         else if (!file.isEmpty())
             openSession(file);
     });
+    m_exportSessionAction =
+        action(tr("Export session…"), QStringLiteral("exportSessionAction"), {});
+    m_exportSessionAction->setToolTip(
+        tr("Write the session replayed, or one you pick, as XDF for labs synchronised by the "
+           "Lab Streaming Layer or as MCAP for Foxglove, PlotJuggler and Rerun"));
+    m_sessionExport = new SessionExport(this);
+    connect(m_exportSessionAction, &QAction::triggered, this, [this] {
+        QString session = m_engine.isReplaying() ? m_engine.replay().path() : QString();
+        if (session.isEmpty())
+            session = FileDialogs::openFile(this, FileKind::Session, tr("Session to export"),
+                                            tr("semhap sessions (*.db);;All files (*)"));
+        if (!session.isEmpty() && m_sessionExport->start(session)) {
+            m_exportSessionAction->setEnabled(false);
+            statusBar()->showMessage(tr("Exporting %1…").arg(QFileInfo(session).fileName()));
+        }
+    });
+    connect(m_sessionExport, &SessionExport::finished, this,
+            [this](const QString &target, const QString &error, const QString &notes) {
+                m_exportSessionAction->setEnabled(true);
+                if (!error.isEmpty()) {
+                    statusBar()->clearMessage();
+                    showError(tr("Could not export the session"), error);
+                    return;
+                }
+                const QString done = tr("Exported %1").arg(QDir::toNativeSeparators(target));
+                statusBar()->showMessage(done, 10000);
+                // What the file cannot do (line up with an LSL recording) is worth a stop.
+                if (!notes.isEmpty())
+                    QMessageBox::information(this, tr("Session exported"),
+                                             done + QStringLiteral("\n\n") + notes);
+            });
     m_listenAction = action(tr("Listen for a live rig…"), QStringLiteral("listenAction"),
                             QKeySequence(Qt::CTRL | Qt::Key_L));
     m_listenAction->setToolTip(tr("Run another program's contact frames, sent over UDP, "
@@ -186,6 +220,7 @@ void MainWindow::createMenus()
     file->addAction(m_gripperAction);
     file->addAction(m_openRouterAction);
     file->addAction(m_openSessionAction);
+    file->addAction(m_exportSessionAction);
     file->addAction(m_listenAction);
     file->addSeparator();
     file->addMenu(m_studyMenu);

@@ -31,6 +31,8 @@ QString settingsKey(FileKind kind)
         return QStringLiteral("fileDialogs/hapticFiles");
     case FileKind::PlotExport:
         return QStringLiteral("fileDialogs/plotExports");
+    case FileKind::SessionExport:
+        return QStringLiteral("fileDialogs/sessionExports");
     case FileKind::Protocol:
         return QStringLiteral("fileDialogs/protocols");
     case FileKind::Study:
@@ -99,11 +101,11 @@ QString FileDialogs::openFile(QWidget *parent, FileKind kind, const QString &cap
 }
 
 QString FileDialogs::saveFile(QWidget *parent, FileKind kind, const QString &caption,
-                              const QString &name, const QString &filter)
+                              const QString &name, const QString &filter, QString *picked)
 {
     const QString start = startFolder(kind); // made if it is the kind's own folder
     const QString offered = QFileInfo(name).isAbsolute() ? name : QDir(start).filePath(name);
-    const QString path = QFileDialog::getSaveFileName(parent, caption, offered, filter);
+    const QString path = QFileDialog::getSaveFileName(parent, caption, offered, filter, picked);
     remember(kind, path);
     return path;
 }

@@ -10,16 +10,17 @@ namespace semhap {
 /** The kinds of file the studio opens and saves; each has its own place to start from. */
 enum class FileKind
 {
-    Session,    ///< recordings: the sessions folder (File → Preferences)
-    Pattern,    ///< the designer's patterns: the user pattern folder
-    Router,     ///< router files
-    Scene,      ///< MuJoCo scenes
-    Gripper,    ///< gripper adapters (`semhap.gripper/1`) outside the gripper folders
-    HapticFile, ///< AHAP and `.haptic` files, imported and exported
-    PlotExport, ///< the plots as CSV or PNG
-    Protocol,   ///< study protocols (`semhap.study/1`): first the example studies
-    Study,      ///< study databases (STUDY.db)
-    TopicMap,   ///< a robot recording's topic maps (`semhap.topics/1`)
+    Session,       ///< recordings: the sessions folder (File → Preferences)
+    Pattern,       ///< the designer's patterns: the user pattern folder
+    Router,        ///< router files
+    Scene,         ///< MuJoCo scenes
+    Gripper,       ///< gripper adapters (`semhap.gripper/1`) outside the gripper folders
+    HapticFile,    ///< AHAP and `.haptic` files, imported and exported
+    PlotExport,    ///< the plots as CSV or PNG
+    SessionExport, ///< sessions exported as XDF or MCAP
+    Protocol,      ///< study protocols (`semhap.study/1`): first the example studies
+    Study,         ///< study databases (STUDY.db)
+    TopicMap,      ///< a robot recording's topic maps (`semhap.topics/1`)
 };
 
 /**
@@ -48,10 +49,11 @@ public:
                             const QString &filter);
     /**
      * Asks where to save a file of `kind`, offering `name` (a bare name goes in the start
-     * folder; a path is offered as it is); empty when cancelled.
+     * folder; a path is offered as it is); empty when cancelled. `picked`, when given, gets
+     * the file type the user chose among `filter`'s.
      */
     static QString saveFile(QWidget *parent, FileKind kind, const QString &caption,
-                            const QString &name, const QString &filter);
+                            const QString &name, const QString &filter, QString *picked = nullptr);
     /** Asks for a folder to write files of `kind` into; empty when cancelled. */
     static QString folder(QWidget *parent, FileKind kind, const QString &caption);
 };

@@ -263,6 +263,11 @@ void TestOutputs::fullDisk_data()
     QTest::newRow("export --jsonl")
         << QStringList{"export", path("recorded.db"), "--jsonl", path("jsonl")} << ""
         << "File too large" << qint64(40000);
+    QTest::newRow("export --xdf") << QStringList{"export", path("recorded.db"), "--xdf", full}
+                                  << "" << full + ": " + nospace << qint64(0);
+    QTest::newRow("export --xdf, too large")
+        << QStringList{"export", path("recorded.db"), "--xdf", path("big.xdf")} << ""
+        << path("big.xdf") + ": cannot write: File too large" << qint64(40000);
     QTest::newRow("convert") << QStringList{"convert",
                                             SEMHAP_RESOURCES "/patterns/vib.geiger.json",
                                             path("big.ahap")}

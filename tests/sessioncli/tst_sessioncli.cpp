@@ -327,7 +327,7 @@ void TestSessionCli::errors_data()
         << "/nonexistent.db: cannot read: No such file or directory";
     QTest::newRow("export without format")
         << QStringList{"export", Trace} << 2
-        << "semhap export: --csv DIR, --jsonl DIR or --mcap FILE is required";
+        << "semhap export: --csv DIR, --jsonl DIR, --mcap FILE or --xdf FILE is required";
     // The export's writer runs on a thread of its own; its write errors still end it.
     QTest::newRow("export to a full disk")
         << QStringList{"export", m_session, "--mcap", "/dev/full"} << 1

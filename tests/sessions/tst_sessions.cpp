@@ -6,6 +6,7 @@
 #include "pipeline.h"
 #include "router.h"
 #include "sessionblocks.h"
+#include "sessionclock.h"
 #include "sessionreader.h"
 #include "sessionwriter.h"
 #include "slipdetector.h"
@@ -320,6 +321,9 @@ private slots:
     void rowsAreCheckedAsStreamsAre();
     void blocksAreCheckedAsStreamsAre();
     void blocksAreSealedBySecond();
+    void keepsTheSteadyClock();
+    void steadyClockPairs_data();
+    void steadyClockPairs();
     void aSceneTooWideIsRefused();
     void udpGarbageOversizeAndBatch();
     void udpFlood();
@@ -941,6 +945,78 @@ void TestSessions::blocksAreSealedBySecond()
     db.close();
     db = QSqlDatabase();
     QSqlDatabase::removeDatabase("sealed");
+}
+
+void TestSessions::keepsTheSteadyClock()
+{
+    // The steady clock beside the session's time (docs/science.md): a pair at the first
+    // frame and one at the last, each taken while the frame was recorded.
+    const auto router = c3();
+    const QString path = m_dir.filePath("clock.db");
+    const Recording r = synthetic(*router, 200);
+    QString error;
+    const double before = SessionClock::now();
+    std::unique_ptr<SessionWriter> writer =
+        SessionWriter::create(path, SessionInfo(), *router, &error);
+    QVERIFY2(writer, qPrintable(error));
+    writer->setActorTable(&r.actors);
+    for (size_t i = 0; i < r.frames.size(); ++i)
+        writer->recordContactFrame(r.frames[i], r.arrivals[i]);
+    QVERIFY2(writer->finish(&error), qPrintable(error));
+    QCOMPARE(writer->committed(), quint64(r.frames.size())); // the pairs are not values
+    const double after = SessionClock::now();
+    std::unique_ptr<SessionReader> reader = SessionReader::open(path, &error);
+    QVERIFY2(reader, qPrintable(error));
+    SessionClock clock;
+    QVERIFY2(SessionClock::fromInfo(reader->info(), &clock, &error), qPrintable(error));
+    QCOMPARE(clock.samples().size(), size_t(2));
+    QCOMPARE(clock.samples().front().t, r.frames.front().t);
+    QCOMPARE(clock.samples().back().t, r.frames.back().t);
+    for (const SessionClock::Sample &s : clock.samples())
+        QVERIFY(s.steady >= before && s.steady <= after);
+    // 0.1 s of frames in far less than a second: faster than the clock, not lined up.
+    QVERIFY(clock.rate() > 1.0 + SessionClock::MaxRateError);
+    QVERIFY(!clock.followsClock());
+    // The metadata export nests the pairs.
+    QVERIFY(reader->info().toJson().value("steady_clock").isArray());
+}
+
+void TestSessions::steadyClockPairs_data()
+{
+    QTest::addColumn<QString>("pairs");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("real time") << "[[0, 100], [10, 110.5], [20, 120.5]]"
+                               << "";
+    QTest::newRow("not an array") << "{\"t\": 0}"
+                                  << "steady_clock: not a JSON array of [t, steady] pairs";
+    QTest::newRow("not a pair") << "[[0, 100], [1]]"
+                                << "steady_clock: pair 2 is not two numbers";
+    QTest::newRow("not numbers") << "[[\"0\", 100]]"
+                                 << "steady_clock: pair 1 is not two numbers";
+    QTest::newRow("back in time") << "[[0, 100], [1, 99]]"
+                                  << "steady_clock: pair 2 goes back in time";
+}
+
+void TestSessions::steadyClockPairs()
+{
+    QFETCH(QString, pairs);
+    QFETCH(QString, error);
+    SessionInfo info;
+    info.extra.insert(SessionClock::MetadataKey, pairs);
+    SessionClock clock;
+    QString reason;
+    QCOMPARE(SessionClock::fromInfo(info, &clock, &reason), error.isEmpty());
+    QCOMPARE(reason, error);
+    if (!error.isEmpty())
+        return;
+    // Between pairs, interpolated; beyond them, at the rate of real time. A pause (10.5 s
+    // of clock for 10 s of session) slows the rate below 1: still on the clock.
+    QCOMPARE(clock.toSteady(5.0), 105.25);
+    QCOMPARE(clock.toSteady(15.0), 115.5);
+    QCOMPARE(clock.toSteady(-1.0), 99.0);
+    QCOMPARE(clock.toSteady(21.0), 121.5);
+    QCOMPARE(clock.rate(), 20.0 / 20.5);
+    QVERIFY(clock.followsClock());
 }
 
 void TestSessions::aSceneTooWideIsRefused()

@@ -38,6 +38,7 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProcess>
 #include <QRadioButton>
 #include <QSettings>
@@ -76,6 +77,7 @@ private slots:
     void windowListensToALiveRig();
     void aLiveRigFollowsARobot();
     void closingAReplayBringsTheRunBack();
+    void exportsTheReplayedSession();
     void opensARobotRecording();
     void replayNamesAnEditedRouter();
     void recordingMidGraspShowsTheGraspFromItsStart();
@@ -726,6 +728,65 @@ void TestStudioSessions::closingAReplayBringsTheRunBack()
     QTRY_VERIFY(window.engine().simTime() > t + 0.1);
     QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier);
     QVERIFY(window.engine().simTime() < t);
+}
+
+void TestStudioSessions::exportsTheReplayedSession()
+{
+    // File → Export session… on the session replayed: as XDF, which says that a run at 4×
+    // cannot be lined up with an LSL recording, then as MCAP, picked by its file type.
+    Workspace workspace;
+    MainWindow window(workspace, studioOptions());
+    QVERIFY(openWindow(window));
+    const QString path = recordWithKeys(window, 1.0);
+    QVERIFY(!path.isEmpty());
+    openSessionWithKeys(window, path);
+    QVERIFY(window.engine().isReplaying());
+    auto *exportAction = window.findChild<QAction *>("exportSessionAction");
+    QVERIFY(exportAction && exportAction->isEnabled());
+    const auto exportAs = [&](const QString &target, const QString &fileType) {
+        QTimer::singleShot(0, [target, fileType] {
+            QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            QCOMPARE(dialog->nameFilters().size(), 3);
+            const QStringList types = dialog->nameFilters().filter(fileType);
+            QCOMPARE(types.size(), 1);
+            dialog->selectNameFilter(types.first());
+            dialog->selectFile(target);
+            QTest::keyClick(dialog->focusWidget() ? dialog->focusWidget() : dialog,
+                            Qt::Key_Return);
+        });
+        exportAction->trigger();
+    };
+    const QString xdf = m_dir.filePath("exported.xdf");
+    // The export's note comes in a message box once the file is written; the box runs its
+    // own event loop, so a timer answers it from inside.
+    QString note;
+    QTimer closer;
+    connect(&closer, &QTimer::timeout, [&note] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+            note = box->text();
+            box->accept();
+        }
+    });
+    closer.start(20);
+    exportAs(xdf, "session time");
+    QTRY_VERIFY_WITH_TIMEOUT(exportAction->isEnabled(), 30000);
+    closer.stop();
+    QVERIFY2(note.contains("cannot be lined up with an LSL recording"), qPrintable(note));
+    QFile file(xdf);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(4), QByteArray("XDF:"));
+    QVERIFY(window.statusBar()->currentMessage().startsWith("Exported "));
+
+    const QString mcap = m_dir.filePath("exported.mcap");
+    exportAs(mcap, "MCAP");
+    QTRY_VERIFY_WITH_TIMEOUT(exportAction->isEnabled(), 30000);
+    QFile recording(mcap);
+    QVERIFY(recording.open(QIODevice::ReadOnly));
+    QCOMPARE(recording.read(8), QByteArray("\x89MCAP0\r\n"));
+    // Nothing but the two files: the temporaries were renamed into place.
+    QCOMPARE(QDir(m_dir.path()).entryList({"exported*"}, QDir::Files),
+             QStringList({"exported.mcap", "exported.xdf"}));
 }
 
 void TestStudioSessions::opensARobotRecording()
