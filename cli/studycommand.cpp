@@ -82,6 +82,10 @@ void StudyCommand::configure(QCommandLineParser &parser)
                       tr("NAME=VALUE")});
     parser.addOption(
         {QStringLiteral("csv"), tr("export: the folder of the CSV files."), tr("DIR")});
+    parser.addOption({QStringLiteral("r"),
+                      tr("export: write measures.csv and analysis.R, which computes the "
+                         "analysis' tests in R, into DIR (docs/science.md)."),
+                      tr("DIR")});
     parser.addOption({QStringLiteral("report"),
                       tr("analyze: write report.md and a box plot per measure into DIR."),
                       tr("DIR")});
@@ -106,9 +110,12 @@ int StudyCommand::execute(const QCommandLineParser &parser)
     if (action == QLatin1String("simulate"))
         return simulate(parser, positional.at(1));
     if (action == QLatin1String("export")) {
-        if (!parser.isSet(QStringLiteral("csv")))
-            return usageError(tr("export needs --csv DIR"));
-        return exportCsv(positional.at(1), parser.value(QStringLiteral("csv")));
+        const bool csv = parser.isSet(QStringLiteral("csv"));
+        const bool r = parser.isSet(QStringLiteral("r"));
+        if (!csv && !r)
+            return usageError(tr("export needs --csv DIR or --r DIR"));
+        return exportFiles(positional.at(1), csv ? parser.value(QStringLiteral("csv")) : QString(),
+                           r ? parser.value(QStringLiteral("r")) : QString());
     }
     if (action == QLatin1String("analyze"))
         return analyze(parser, positional.at(1));
@@ -246,7 +253,7 @@ int StudyCommand::simulate(const QCommandLineParser &parser, const QString &prot
     return ExitOk;
 }
 
-int StudyCommand::exportCsv(const QString &path, const QString &dir)
+int StudyCommand::exportFiles(const QString &path, const QString &csvDir, const QString &rDir)
 {
     QString error;
     std::unique_ptr<StudyDatabase> study =
@@ -254,10 +261,15 @@ int StudyCommand::exportCsv(const QString &path, const QString &dir)
     if (!study)
         return inputError(error);
     keepFromOutputs(path, Kept::Input);
-    const std::vector<StudyExport::File> files = StudyExport::results(*study, &error);
-    if (files.empty())
+    // Every file made before any is written: a study that reads short writes nothing.
+    std::vector<StudyExport::File> csv, r;
+    if (!csvDir.isEmpty() && (csv = StudyExport::results(*study, &error)).empty())
         return inputError(error);
-    return writeFiles(dir, files) ? ExitOk : ExitInvalidInput;
+    if (!rDir.isEmpty() && (r = StudyExport::rAnalysis(*study, &error)).empty())
+        return inputError(error);
+    return (csv.empty() || writeFiles(csvDir, csv)) && (r.empty() || writeFiles(rDir, r))
+               ? ExitOk
+               : ExitInvalidInput;
 }
 
 bool StudyCommand::writeFiles(const QString &dir, const std::vector<StudyExport::File> &files)

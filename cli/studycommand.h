@@ -28,7 +28,8 @@ private:
     int simulate(const QCommandLineParser &parser, const QString &protocol);
     /** Joins the shards of a simulated study into `out`. */
     int merge(const QString &out, const QStringList &shards);
-    int exportCsv(const QString &study, const QString &dir);
+    /** `study export`: the CSV files into `csvDir`, the R analysis into `rDir` (each if given). */
+    int exportFiles(const QString &study, const QString &csvDir, const QString &rDir);
     int analyze(const QCommandLineParser &parser, const QString &input);
     /** Writes `files` into the folder `dir`; false after an error line. */
     bool writeFiles(const QString &dir, const std::vector<StudyExport::File> &files);

@@ -305,8 +305,14 @@ PairedTTest pairedTTest(const std::vector<double> &baseline, const std::vector<d
     test.meanDifference = gsl_stats_mean(differences.data(), 1, differences.size());
     const double sd =
         gsl_stats_sd_m(differences.data(), 1, differences.size(), test.meanDifference);
-    // Equal differences (sd 0, or rounding noise next to the mean) leave nothing to test.
-    if (!std::isfinite(sd) || !(sd > 1e-12 * std::abs(test.meanDifference)))
+    // Equal differences (sd 0, or rounding noise next to the mean or the values themselves)
+    // leave nothing to test.
+    double scale = std::abs(test.meanDifference);
+    for (size_t i = 0; i < baseline.size(); ++i) {
+        if (!std::isnan(baseline[i]) && !std::isnan(other[i]))
+            scale = std::max({scale, std::abs(baseline[i]), std::abs(other[i])});
+    }
+    if (!std::isfinite(sd) || !(sd > 1e-12 * scale))
         return test;
     test.tested = true;
     test.df = test.n - 1;
@@ -326,10 +332,18 @@ std::vector<PairwiseComparison> pairwiseComparisons(const std::vector<std::vecto
     for (size_t first = 0; first + 1 < k; ++first) {
         for (size_t second = first + 1; second < k; ++second) {
             std::vector<double> a, b, differences;
+            double scale = 0.0;
             for (const std::vector<double> &row : rows) {
                 a.push_back(row[first]);
                 b.push_back(row[second]);
                 differences.push_back(row[second] - row[first]);
+                scale = std::max({scale, std::abs(row[first]), std::abs(row[second])});
+            }
+            // A difference in the values' last digits is none: the signed-rank test drops
+            // it, as it drops a zero.
+            for (double &d : differences) {
+                if (std::abs(d) <= 1e-12 * scale)
+                    d = 0.0;
             }
             PairwiseComparison pair;
             pair.first = int(first);

@@ -33,6 +33,8 @@ packages=(
     libzstd-dev liblz4-dev zlib1g-dev qt6-websockets-dev
     # tests/xdf: XDF files read back by the Lab Streaming Layer's reference reader
     libxdf-dev
+    # tests/ranalysis: study export --r's analysis.R run by R, afex and emmeans
+    r-base-core r-cran-afex r-cran-emmeans
     # tests/cluster and bench_cluster: a one-node Slurm cluster that the test starts as root
     slurm-wlm munge
     # the desktop package: man pages, metadata checks, .deb dependencies

@@ -4,11 +4,25 @@
 #include "csvrow.h"
 #include "studyanalysis.h"
 #include "studydatabase.h"
+#include "studyrscript.h"
 #include "studytable.h"
 
 #include <cmath>
 
 namespace semhap {
+
+std::vector<StudyExport::File> StudyExport::rAnalysis(const StudyDatabase &study, QString *error)
+{
+    const StudyTable table = StudyTable::fromStudy(study);
+    if (!study.readError().isEmpty()) {
+        *error = study.readError();
+        return {};
+    }
+    StudyAnalysis analysis = StudyAnalysis::run(table);
+    analysis.name = study.protocol().name;
+    return {{QStringLiteral("measures.csv"), table.toCsv()},
+            {QStringLiteral("analysis.R"), StudyRScript::script(analysis, table)}};
+}
 
 std::vector<StudyExport::File> StudyExport::results(const StudyDatabase &study, QString *error)
 {

@@ -31,6 +31,11 @@ public:
      * `error`, when the study read short (readError()).
      */
     static std::vector<File> results(const StudyDatabase &study, QString *error);
+    /**
+     * `measures.csv` and `analysis.R`, which computes `study analyze`'s tests from it in R
+     * (StudyRScript). Empty, with `error`, when the study read short.
+     */
+    static std::vector<File> rAnalysis(const StudyDatabase &study, QString *error);
     /** `report.md` and a box plot per measure. */
     static std::vector<File> report(const StudyAnalysis &analysis);
     /** The folder a report goes in beside the results (the studio's export). */

@@ -668,6 +668,14 @@ void TestStatistics::anovaNothingToTest()
     // Every subject shifted alike: no error variance, F undefined.
     QVERIFY(untested(repeatedMeasuresAnova({{1, 2, 4}, {11, 12, 14}, {-1, 0, 2}})));
     QVERIFY(untested(repeatedMeasuresAnova({{5, 5}, {5, 5}})));
+    // Conditions that differ only in the values' last digits (means of the same numbers
+    // summed in another order): effect and error are rounding alike, F would be their ratio.
+    const double ulp = 1.4210854715202004e-14; // one step of a double near 62
+    QVERIFY(untested(repeatedMeasuresAnova({{62.2266400068458, 62.2266400068458 + ulp},
+                                            {38.08202, 38.08202},
+                                            {59.8075, 59.8075},
+                                            {53.7274816, 53.7274816 + ulp},
+                                            {71.3998766, 71.3998766 - ulp}})));
     // Two-way: rows that do not hold a x b cells, or a factor with one level.
     const auto untestedTwoWay = [&](const TwoWayWithinEffects &anova) {
         return untested(anova.a) && untested(anova.b) && untested(anova.interaction);
@@ -791,6 +799,15 @@ void TestStatistics::pairwiseNothingToTest()
     QVERIFY(!constant[0].tested);
     QCOMPARE(constant[0].pAdjusted, 1.0);
     QCOMPARE(constant[0].meanDifference, 2.0);
+    // Differences in the values' last digits are none: nothing for the t test, and zeros the
+    // signed-rank test drops.
+    const double ulp = 1.4210854715202004e-14; // one step of a double near 62
+    const std::vector<std::vector<double>> rounding{{62.2266400068458, 62.2266400068458 + ulp},
+                                                    {38.08202, 38.08202},
+                                                    {53.7274816, 53.7274816 + ulp},
+                                                    {71.3998766, 71.3998766 - ulp}};
+    QVERIFY(!pairwiseComparisons(rounding, PairedTest::T)[0].tested);
+    QVERIFY(!pairwiseComparisons(rounding, PairedTest::SignedRank)[0].tested);
 }
 
 void TestStatistics::boxPlotAsGgplot()

@@ -491,7 +491,7 @@ void TestStudyCli::badCallsAreRefused_data()
         << QStringList{"export", example("unimanual.json"), "--csv", "OUT"} << 1
         << "not a semhap study";
     QTest::newRow("export without --csv")
-        << QStringList{"export", "STUDY"} << 2 << "export needs --csv DIR";
+        << QStringList{"export", "STUDY"} << 2 << "export needs --csv DIR or --r DIR";
     QTest::newRow("analyze a bad CSV")
         << QStringList{"analyze", QStringLiteral(SEMHAP_TEST_DATA "/bad.csv")} << 1
         << "bad.csv:3:19: value must be a number, empty or NA, got 'many'";
