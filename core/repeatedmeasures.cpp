@@ -163,17 +163,16 @@ WithinEffect effect(const gsl_matrix *y, const gsl_matrix *contrast)
     for (size_t j = 0; j < d; ++j)
         result.ssError += gsl_matrix_get(crossProducts.get(), j, j);
     // No error variance (every subject shifted alike, rounding aside): F is not defined.
-    // Rounding is judged against the effect and against the data's own spread: values that
+    // Rounding is judged against the effect and against the values' own size: values that
     // differ only in their last digits (means of the same numbers summed in another order)
     // have an effect and an error of rounding alike, whose ratio means nothing.
-    double ssTotal = 0.0;
-    const double grand = gsl_stats_mean(y->data, 1, y->size1 * y->size2);
+    double squares = 0.0;
     for (size_t i = 0; i < y->size1; ++i) {
         for (size_t j = 0; j < y->size2; ++j)
-            ssTotal += (gsl_matrix_get(y, i, j) - grand) * (gsl_matrix_get(y, i, j) - grand);
+            squares += gsl_matrix_get(y, i, j) * gsl_matrix_get(y, i, j);
     }
     if (!(result.ssError > 1e-12 * (result.ssEffect + result.ssError)) ||
-        !(result.ssError > 1e-20 * ssTotal))
+        !(result.ssError > 1e-20 * squares))
         return WithinEffect();
     result.tested = true;
     result.df1 = int(d);

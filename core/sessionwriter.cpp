@@ -600,7 +600,8 @@ private:
 };
 
 SessionWriter::SessionWriter(const QString &path, Options options)
-    : m_path(path), m_thread(std::make_unique<Thread>(*this, path, options))
+    : m_path(path), m_thread(std::make_unique<Thread>(*this, path, options)),
+      m_steadyClock(options.steadyClock)
 {}
 
 SessionWriter::~SessionWriter()
@@ -669,6 +670,10 @@ void SessionWriter::recordContactFrame(const ContactFrame &frame, double arrival
     pushActors(frame);
     if (!m_thread->push({frame, arrival}))
         m_dropped.fetch_add(1, std::memory_order_relaxed);
+    // Pairs in the order of t: a gripper's frame behind the other's (each gripper's t only
+    // rises on its own) is not one.
+    if (!m_steadyClock || (m_clockSampled && frame.t < m_lastClock.t))
+        return;
     m_lastClock = {frame.t, SessionClock::now()};
     if (m_lastClock.steady >= m_nextClockSample) {
         if (m_thread->push({m_lastClock, 0.0}))

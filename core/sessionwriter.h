@@ -45,6 +45,9 @@ public:
         /// Wait for the writer when the batch is full instead of dropping: for producers
         /// with no clock to keep, such as an import from a file.
         bool waitWhenFull = false;
+        /// Keep the steady clock beside the session's time (SessionClock): not for a
+        /// producer whose frames were not made now, such as an import from a file.
+        bool steadyClock = true;
     };
 
     /**
@@ -98,6 +101,7 @@ private:
     std::vector<SemanticEvent> m_open;
     int m_actorsSent = 0; ///< producer thread: actor ids already handed to the writer
     /** Producer thread: the last frame's clock pair, and when the next is due (steady s). */
+    bool m_steadyClock;
     SessionClock::Sample m_lastClock;
     double m_nextClockSample = -std::numeric_limits<double>::infinity();
     bool m_clockSampled = false;

@@ -31,6 +31,7 @@ bool RecordingImport::run(const QString &recording, const QString &topics,
     info.extra.insert(QStringLiteral("topics"), topics);
     SessionWriter::Options options;
     options.waitWhenFull = true; // a file keeps no clock: nothing may be dropped
+    options.steadyClock = false; // nor were its frames made now
     std::unique_ptr<SessionWriter> writer =
         SessionWriter::create(session, info, *router, options, &result->error);
     if (!writer)

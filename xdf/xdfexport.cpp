@@ -236,7 +236,11 @@ bool XdfExport::write(SessionReader &session, QIODevice *out, TimeBase time, QSt
     if (!clock.followsClock()) {
         const QString why =
             clock.isEmpty()
-                ? QStringLiteral("it was recorded before sessions kept the steady clock")
+                ? (session.info().source == QLatin1String("import")
+                       ? QStringLiteral("it was imported from a recording, whose times are "
+                                        "the recording's, not this machine's clock")
+                       : QStringLiteral("it was recorded before sessions kept the steady "
+                                        "clock"))
                 : QStringLiteral("its time ran %1 times as fast as the clock (a simulation "
                                  "faster than real time): its times are simulated seconds")
                       .arg(clock.rate(), 0, 'f', 1);

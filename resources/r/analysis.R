@@ -4,7 +4,11 @@ suppressPackageStartupMessages({
     library(emmeans)
 })
 
-table <- read.csv("measures.csv", stringsAsFactors = FALSE)
+# Names as they are (a participant `NA`, a condition `T`); an empty value is no observation.
+table <- read.csv("measures.csv", na.strings = "",
+                  colClasses = c(participant = "character", condition = "character",
+                                 trial = "character", measure = "character",
+                                 value = "numeric"))
 
 # One line per statistic: the measure, where `semhap study analyze --json` has it (a JSON
 # pointer into the measure's object), and R's value.
@@ -63,12 +67,14 @@ fit_within <- function(data, within) {
 # design, `two_way`: for each effect its tested, sphericity and gg.
 measure <- function(name, anova, sphericity, gg, friedman, pairwise, tested, two_way = NULL) {
     m <- means(name)
+    if (nrow(m) == 0)
+        return(invisible())
     fit <- NULL
     if (anova || (pairwise == "t" && any(tested)))
         fit <- fit_within(long(m), "condition")
     if (anova)
         effect(name, "/anova", fit, "condition", sphericity, gg)
-    if (!is.null(two_way)) {
+    if (!is.null(two_way) && any(two_way$tested)) {
         data <- long(m)
         cell <- match(as.character(data$condition), conditions)
         data$A <- factor(level_a[cell], levels = unique(level_a))
@@ -107,10 +113,10 @@ measure <- function(name, anova, sphericity, gg, friedman, pairwise, tested, two
             say(name, paste0(pointer, "/p"), raw$p.value[k])
             say(name, paste0(pointer, "/p_bonferroni"), corrected$p.value[k])
         } else {
-            # The later condition minus the earlier, zeros dropped (as semhap drops them,
-            # so an exact p stays exact).
+            # The later condition minus the earlier, zeros dropped as semhap drops them (so an
+            # exact p stays exact), and so are differences in the values' last digits.
             d <- m[, second] - m[, first]
-            d <- d[d != 0]
+            d <- d[abs(d) > 1e-12 * max(abs(m[, c(first, second)]))]
             exact <- length(d) <= 25 && !any(duplicated(abs(d)))
             w <- wilcox.test(d, exact = exact, correct = TRUE)
             say(name, paste0(pointer, "/statistic"), w$statistic)

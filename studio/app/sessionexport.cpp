@@ -74,16 +74,22 @@ bool SessionExport::start(const QString &session)
     const QString xdfLsl = tr("XDF for LSL labs, on LSL's clock (*.xdf)");
     const QString mcap = tr("MCAP for Foxglove, PlotJuggler and Rerun (*.mcap)");
     QString picked;
-    const QString target = FileDialogs::saveFile(
+    QString target = FileDialogs::saveFile(
         m_window, FileKind::SessionExport, tr("Export session"),
         QFileInfo(session).completeBaseName() + QStringLiteral(".xdf"),
         xdfSession + QStringLiteral(";;") + xdfLsl + QStringLiteral(";;") + mcap, &picked);
     if (target.isEmpty())
         return false;
-    const Format format = target.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive)
-                              ? Format::Mcap
-                          : picked == xdfLsl ? Format::XdfLsl
-                                             : Format::XdfSession;
+    // The file type picked decides; a name typed without its suffix gets it. With no type
+    // picked (some native dialogs), the name's suffix does.
+    const bool mcapName = target.endsWith(QLatin1String(".mcap"), Qt::CaseInsensitive);
+    const Format format = picked == mcap || (picked.isEmpty() && mcapName) ? Format::Mcap
+                          : picked == xdfLsl                               ? Format::XdfLsl
+                                                                           : Format::XdfSession;
+    const QString suffix =
+        format == Format::Mcap ? QStringLiteral(".mcap") : QStringLiteral(".xdf");
+    if (!target.endsWith(suffix, Qt::CaseInsensitive))
+        target += suffix;
     m_thread = QThread::create([this, session, target, format] {
         QStringList notes;
         const QString error = exportSession(session, target, format, &notes);

@@ -133,7 +133,7 @@ int main(int argc, char *argv[])
     const QString why = SlurmCluster::unavailable();
     SlurmCluster cluster;
     QString error;
-    if (why.isEmpty() && !cluster.start(2, &error)) {
+    if (why.isEmpty() && !cluster.start(QThread::idealThreadCount(), &error)) {
         std::fprintf(stderr, "%s\n", qPrintable(error));
         return 1;
     }

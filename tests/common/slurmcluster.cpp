@@ -16,7 +16,8 @@
 
 namespace {
 
-const char *const Programs[] = {"munged", "slurmctld", "slurmd", "sbatch", "scontrol", "scancel"};
+const char *const Programs[] = {"munged",   "slurmctld", "slurmd", "sbatch",
+                                "scontrol", "scancel",   "squeue"};
 
 /** A program of Debian's munge or slurm-wlm: daemons live in sbin, off a user's PATH. */
 QString program(const QString &name)
@@ -90,9 +91,16 @@ QString SlurmCluster::unavailable()
 SlurmCluster::~SlurmCluster()
 {
     if (!m_jobs.isEmpty()) {
+        // Cancelled, the jobs' tasks end before the daemons go: none outlives the cluster.
         QByteArray out;
         QString error;
         client(QStringLiteral("scancel"), m_jobs, &out, &error);
+        QDeadlineTimer deadline(StartMs);
+        while (!deadline.hasExpired() &&
+               client(QStringLiteral("squeue"), {"--noheader", "--jobs", m_jobs.join(',')}, &out,
+                      &error) &&
+               !out.trimmed().isEmpty())
+            QThread::msleep(PollMs);
     }
     // slurmd first, so that no job step outlives the daemons; munged last, as they need it.
     for (auto it = m_daemons.rbegin(); it != m_daemons.rend(); ++it) {

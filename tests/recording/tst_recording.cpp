@@ -272,6 +272,14 @@ void TestRecording::jsonMessagesWithoutAHeader()
     QCOMPARE(semhapRun({"export", session, "--jsonl", dir.filePath("j")}).code, 0);
     const QList<QJsonObject> frames = readLines(dir.filePath("j/frames.jsonl"));
     QCOMPARE(frames.size(), 1000);
+    // Its times are the recording's: an import keeps no steady clock, and cannot be put on
+    // LSL's (docs/science.md).
+    const CliResult lsl =
+        semhapRun({"export", session, "--xdf", dir.filePath("n.xdf"), "--time", "lsl"});
+    QCOMPARE(lsl.code, 1);
+    QVERIFY2(lsl.err.contains("cannot be put on the LSL clock: it was imported from a "
+                              "recording, whose times are the recording's"),
+             lsl.err.constData());
     // Notes are logged every 100 ticks; a frame's stamp is 3 ms (1.5 ticks) before its log.
     for (int j = 0; j < frames.size(); ++j) {
         const QJsonValue note = frames[j]["signals"].toObject().value("note.i");

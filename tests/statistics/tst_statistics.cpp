@@ -676,6 +676,10 @@ void TestStatistics::anovaNothingToTest()
                                             {59.8075, 59.8075},
                                             {53.7274816, 53.7274816 + ulp},
                                             {71.3998766, 71.3998766 - ulp}})));
+    // The same where every value is one number but for its last digits.
+    const double third = 0.1 + 0.2; // 0.30000000000000004
+    QVERIFY(untested(repeatedMeasuresAnova(
+        {{third, 0.3, 0.3}, {0.3, third, 0.3}, {0.3, 0.3, third}, {third, third, 0.3}})));
     // Two-way: rows that do not hold a x b cells, or a factor with one level.
     const auto untestedTwoWay = [&](const TwoWayWithinEffects &anova) {
         return untested(anova.a) && untested(anova.b) && untested(anova.interaction);
