@@ -22,6 +22,20 @@ namespace {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 /**
+ * `differences` of values no larger than `scale`, with those in the values' last digits made
+ * 0 (means of the same numbers summed in another order): no difference, as the signed-rank
+ * test takes it.
+ */
+std::vector<double> withoutRounding(std::vector<double> differences, double scale)
+{
+    for (double &d : differences) {
+        if (std::abs(d) <= 1e-12 * scale)
+            d = 0.0;
+    }
+    return differences;
+}
+
+/**
  * GSL's default error handler aborts the process on a domain error (an F distribution with
  * astronomic degrees of freedom, from a hostile measures CSV); with it off, the function
  * returns NaN, which the tests report as no result. Set once, as the core library loads;
@@ -228,7 +242,12 @@ PairedComparison comparePaired(const std::vector<double> &baseline,
     comparison.meanDifference =
         differences.empty() ? NaN : gsl_stats_mean(differences.data(), 1, differences.size());
     comparison.interval = bootstrapMeanInterval(differences);
-    comparison.test = signedRankTest(differences);
+    double scale = 0.0;
+    for (size_t i = 0; i < std::min(baseline.size(), other.size()); ++i) {
+        if (!std::isnan(baseline[i]) && !std::isnan(other[i]))
+            scale = std::max({scale, std::abs(baseline[i]), std::abs(other[i])});
+    }
+    comparison.test = signedRankTest(withoutRounding(differences, scale));
     return comparison;
 }
 
@@ -339,12 +358,7 @@ std::vector<PairwiseComparison> pairwiseComparisons(const std::vector<std::vecto
                 differences.push_back(row[second] - row[first]);
                 scale = std::max({scale, std::abs(row[first]), std::abs(row[second])});
             }
-            // A difference in the values' last digits is none: the signed-rank test drops
-            // it, as it drops a zero.
-            for (double &d : differences) {
-                if (std::abs(d) <= 1e-12 * scale)
-                    d = 0.0;
-            }
+            differences = withoutRounding(differences, scale);
             PairwiseComparison pair;
             pair.first = int(first);
             pair.second = int(second);

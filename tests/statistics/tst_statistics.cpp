@@ -265,6 +265,12 @@ void TestStatistics::pairsBySeed()
     QCOMPARE(none.pairs, 0);
     QVERIFY(std::isnan(none.meanDifference));
     QCOMPARE(none.test.p, 1.0);
+    // Runs that differ in their values' last digits only: no difference for the test.
+    const double third = 0.1 + 0.2; // 0.30000000000000004
+    const PairedComparison rounding = comparePaired({0.3, 0.3, third}, {third, third, 0.3});
+    QCOMPARE(rounding.pairs, 3);
+    QCOMPARE(rounding.test.n, 0);
+    QCOMPARE(rounding.test.p, 1.0);
 }
 
 void TestStatistics::friedmanAsR()
