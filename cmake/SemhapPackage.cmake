@@ -58,9 +58,9 @@ install(FILES ${CMAKE_CURRENT_LIST_DIR}/../resources/traces/demo.jsonl
 # (tests/package checks): the studio's Help → Documentation opens docs/studio.md.
 install(DIRECTORY ${CMAKE_CURRENT_LIST_DIR}/../docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
     FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
-foreach(readme README.md base/README.md bandsim/README.md cli/README.md core/README.md
-        devices/PROTOCOL.md devices/README.md firmware/README.md patterns/README.md
-        resources/README.md ros/README.md sim/README.md studio/README.md tests/bench/README.md)
+# Every module's README is taken, so that a new module's is installed with it.
+file(GLOB module_readmes RELATIVE ${CMAKE_CURRENT_LIST_DIR}/.. ${CMAKE_CURRENT_LIST_DIR}/../*/README.md)
+foreach(readme README.md ${module_readmes} devices/PROTOCOL.md tests/bench/README.md)
     get_filename_component(folder ${readme} DIRECTORY)
     install(FILES ${CMAKE_CURRENT_LIST_DIR}/../${readme}
         DESTINATION ${CMAKE_INSTALL_DOCDIR}/${folder})
