@@ -78,7 +78,7 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
                           {QLatin1String("format"), QLatin1String("name"),
                            QLatin1String("description"), QLatin1String("modality"),
                            QLatin1String("rate"), QLatin1String("channels"),
-                           QLatin1String("response")}) ||
+                           QLatin1String("response"), QLatin1String("actuator")}) ||
         !reader.string(json, root, QLatin1String("name"), &m_name) ||
         !reader.string(json, root, QLatin1String("description"), &m_description, false) ||
         !reader.string(json, root, QLatin1String("modality"), &m_modality, false) ||
@@ -134,6 +134,10 @@ bool DeviceModel::read(const QJsonObject &json, JsonReader &reader)
         m_channels.push_back(spec);
     }
 
+    QJsonObject actuator;
+    if (!reader.object(json, root, QLatin1String("actuator"), &actuator, false) ||
+        !m_actuator.read(actuator, QStringLiteral("/actuator"), reader))
+        return false;
     if (!reader.object(json, root, QLatin1String("response"), &m_response, false))
         return false;
     return readResponse(reader, m_response, &m_latency, &m_tau);
@@ -168,6 +172,8 @@ QJsonObject DeviceModel::toJson() const
         json.insert(QStringLiteral("description"), m_description);
     if (!m_modality.isEmpty())
         json.insert(QStringLiteral("modality"), m_modality);
+    if (!m_actuator.isEmpty())
+        json.insert(QStringLiteral("actuator"), m_actuator.toJson());
     if (!m_response.isEmpty())
         json.insert(QStringLiteral("response"), m_response);
     return json;

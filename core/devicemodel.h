@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "actuator.h"
 #include "deviceframe.h"
 #include "loaderror.h"
 
@@ -59,6 +60,8 @@ public:
     int channelCount() const { return int(m_channels.size()); }
     QStringList channelNames() const;
     int channelIndex(const QString &name) const; ///< -1 when the model has no such channel
+    /** Its actuators as their datasheet gives them (empty when the model does not say). */
+    const Actuator &actuator() const { return m_actuator; }
     /** Frames per second the device accepts. */
     double rate() const { return m_rate; }
     /** Dead time before the output starts to follow a command (s). */
@@ -96,6 +99,7 @@ private:
     double m_rate = 100.0;
     double m_latency = 0.0;
     double m_tau = 0.0;
+    Actuator m_actuator;
     QJsonObject m_response; ///< as written, so toJson keeps bandwidth vs rise
 };
 

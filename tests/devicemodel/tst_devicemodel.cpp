@@ -16,6 +16,7 @@ class TestDeviceModel : public QObject
 private slots:
     void builtins_data();
     void builtins();
+    void actuators();
     void roundTrip();
     void clampsToLimits();
     void predictsDeadTimeThenLag();
@@ -55,6 +56,28 @@ void TestDeviceModel::builtins()
         QCOMPARE(c.max, 1.0);
     }
     QCOMPARE(DeviceModelLibrary::builtinNames().size(), 4);
+}
+
+void TestDeviceModel::actuators()
+{
+    const Actuator &lra = DeviceModelLibrary::builtin(QStringLiteral("lra4"))->actuator();
+    QCOMPARE(lra.type, QStringLiteral("LRA"));
+    QCOMPARE(lra.body, QStringLiteral("wrist"));
+    QVERIFY(lra.hasCarrier());
+    QCOMPARE(lra.resonance, 170.0);
+    QCOMPARE(lra.minFrequency, 170.0);
+    QCOMPARE(lra.maxFrequency, 175.0);
+    QCOMPARE(lra.maxAmplitude, 1.0);
+    const Actuator &air = DeviceModelLibrary::builtin(QStringLiteral("pneumatic6"))->actuator();
+    QCOMPARE(air.type, QStringLiteral("bellows"));
+    QVERIFY(!air.hasCarrier());
+    QCOMPARE(air.maxFrequency, 7.0);
+    QCOMPARE(air.amplitudeUnit, QStringLiteral("N"));
+    QCOMPARE(DeviceModelLibrary::builtin(QStringLiteral("fingertips2"))->actuator().body,
+             QStringLiteral("fingers"));
+    const Actuator &none = DeviceModelLibrary::builtin(QStringLiteral("overlay"))->actuator();
+    QVERIFY(none.isEmpty());
+    QVERIFY(std::isnan(none.maxAmplitude));
 }
 
 void TestDeviceModel::roundTrip()
@@ -178,6 +201,30 @@ void TestDeviceModel::malformed_data()
     QTest::newRow("latency too long")
         << "{" + ok + R"(, "channels": [{"name": "a"}], "response": {"latency": 5}})"
         << "m.json: /response/latency: must be between 0 and 1 s";
+    const QByteArray withChannel = "{" + ok + R"(, "channels": [{"name": "a"}], "actuator": )";
+    QTest::newRow("unknown actuator type")
+        << withChannel + R"({"type": "solenoid"}})"
+        << "m.json: /actuator/type: unknown type 'solenoid' (one of LRA, VCA, ERM, piezo, "
+           "bellows)";
+    QTest::newRow("unknown body")
+        << withChannel + R"({"body": "ankle"}})"
+        << "m.json: /actuator/body: unknown body 'ankle' (one of wrist, fingers)";
+    QTest::newRow("frequencies not a pair")
+        << withChannel + R"({"frequencies": [170]}})"
+        << "m.json: /actuator/frequencies: expected [lowest, highest] in Hz";
+    QTest::newRow("frequencies falling")
+        << withChannel + R"({"frequencies": [200, 100]}})"
+        << "m.json: /actuator/frequencies: must rise from 0 Hz or more, got [200, 100]";
+    QTest::newRow("resonance outside frequencies")
+        << withChannel + R"({"resonance": 90, "frequencies": [150, 200]}})"
+        << "m.json: /actuator/resonance: 90 Hz lies outside the frequencies [150, 200]";
+    QTest::newRow("zero weight") << withChannel + R"({"weight": 0}})"
+                                 << "m.json: /actuator/weight: must be above 0, got 0";
+    QTest::newRow("unit without amplitude")
+        << withChannel + R"({"amplitude_unit": "N"}})"
+        << "m.json: /actuator/amplitude_unit: a unit without max_amplitude";
+    QTest::newRow("unknown actuator key") << withChannel + R"({"mass": 1}})"
+                                          << "m.json: /actuator: unknown key 'mass'";
 }
 
 void TestDeviceModel::malformed()
