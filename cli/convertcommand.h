@@ -7,7 +7,8 @@ namespace semhap {
 
 /**
  * `semhap convert IN OUT`: between semhap patterns and the haptic files users already have
- * (AHAP, Meta `.haptic`), the formats told by the file extensions.
+ * (AHAP, Meta `.haptic`, MPEG haptics `.hjif`), the formats told by the file extensions;
+ * `semhap convert --router R OUT.hjif`: a router's messages as an HJIF effect library.
  */
 class ConvertCommand : public Command
 {

@@ -84,10 +84,19 @@ QString describe(HapticFileFormat format)
         return QStringLiteral("AHAP");
     case HapticFileFormat::MetaHaptic:
         return QStringLiteral(".haptic");
+    case HapticFileFormat::Hjif:
+        return QStringLiteral("HJIF");
     case HapticFileFormat::Semhap:
         break;
     }
     return QStringLiteral("semhap pattern");
+}
+
+/** HJIF needs device models, which live above this module. */
+LoadError hjifElsewhere(const QString &file)
+{
+    return LoadError::at(file, QString(),
+                         QStringLiteral("HJIF is converted by HjifConverter (the hjif module)"));
 }
 
 } // namespace
@@ -101,11 +110,14 @@ bool HapticConverter::formatOf(const QString &path, HapticFileFormat *format, Lo
         *format = HapticFileFormat::Ahap;
     else if (suffix == QLatin1String("haptic"))
         *format = HapticFileFormat::MetaHaptic;
+    else if (suffix == QLatin1String("hjif"))
+        *format = HapticFileFormat::Hjif;
     else {
         *error =
             LoadError::at(path, QString(),
                           QStringLiteral("unknown file type %1: use .json (semhap pattern), "
-                                         ".ahap (Apple Core Haptics) or .haptic (Meta)")
+                                         ".ahap (Apple Core Haptics), .haptic (Meta) or .hjif "
+                                         "(MPEG haptics)")
                               .arg(quoted(suffix.isEmpty() ? path : QLatin1Char('.') + suffix)));
         return false;
     }
@@ -137,6 +149,9 @@ bool HapticConverter::parsePattern(const QByteArray &bytes, const QString &file,
         return false;
     HapticTimeline timeline;
     switch (format) {
+    case HapticFileFormat::Hjif:
+        *error = hjifElsewhere(file);
+        return false;
     case HapticFileFormat::Semhap:
         if (!Pattern::fromJson(json, file, error))
             return false;
@@ -182,6 +197,10 @@ bool HapticConverter::serialize(const QJsonObject &pattern, HapticFileFormat for
         *bytes = QJsonDocument(pattern).toJson(QJsonDocument::Indented);
         return true;
     }
+    if (format == HapticFileFormat::Hjif) {
+        *error = hjifElsewhere(file);
+        return false;
+    }
     HapticTimeline timeline;
     if (!patternToTimeline(pattern, file, options, &timeline, warnings, error))
         return false;
@@ -194,18 +213,44 @@ bool HapticConverter::serialize(const QJsonObject &pattern, HapticFileFormat for
     return true;
 }
 
-QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
-                                               const ConvertOptions &options,
-                                               const QString &source)
+QJsonObject HapticConverter::keyframes(const EnvelopeCurve &curve)
 {
     QJsonArray points;
-    const EnvelopeCurve &curve = timeline.intensity;
     if (curve.isEmpty() || curve.startTime() > 0)
         points.append(QJsonArray{0.0, curve.isEmpty() ? 0.0 : curve.points().front().v});
     for (const EnvelopePoint &p : curve.points())
         points.append(QJsonArray{p.t, p.v});
-    QJsonObject envelope{{QStringLiteral("type"), QStringLiteral("keyframes")},
-                         {QStringLiteral("points"), points}};
+    return {{QStringLiteral("type"), QStringLiteral("keyframes")},
+            {QStringLiteral("points"), points}};
+}
+
+QJsonObject HapticConverter::oneShotTrack(const QStringList &channels, const QJsonValue &attack)
+{
+    return {
+        {QStringLiteral("channels"), QJsonArray::fromStringList(channels)},
+        {QStringLiteral("attack"), attack},
+        {QStringLiteral("sustain"), QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
+                                                {QStringLiteral("value"), 0}}}};
+}
+
+QJsonObject HapticConverter::oneShotPattern(const QJsonArray &tracks,
+                                            const ConvertOptions &options,
+                                            const QString &description)
+{
+    return {{QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
+            {QStringLiteral("name"),
+             options.name.isEmpty() ? QStringLiteral("imported") : options.name},
+            {QStringLiteral("model"),
+             options.model.isEmpty() ? QStringLiteral("lra4") : options.model},
+            {QStringLiteral("description"), description},
+            {QStringLiteral("tracks"), tracks}};
+}
+
+QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
+                                               const ConvertOptions &options,
+                                               const QString &source)
+{
+    const QJsonObject envelope = keyframes(timeline.intensity);
     QJsonValue attack = envelope;
     QString description =
         QStringLiteral("Imported from %1: its envelope plays once on begin").arg(source);
@@ -218,21 +263,70 @@ QJsonObject HapticConverter::timelineToPattern(const HapticTimeline &timeline,
         description += QStringLiteral(" as a %1 Hz modulation").arg(freq, 0, 'g', 3);
     }
     const QString channel = options.channel.isEmpty() ? QStringLiteral("*") : options.channel;
-    QJsonObject pattern{
-        {QStringLiteral("format"), QString::fromLatin1(Pattern::Format)},
-        {QStringLiteral("name"),
-         options.name.isEmpty() ? QStringLiteral("imported") : options.name},
-        {QStringLiteral("model"), options.model},
-        {QStringLiteral("description"), QString(description + QLatin1Char('.'))},
-        {QStringLiteral("tracks"),
-         QJsonArray{QJsonObject{{QStringLiteral("channels"), QJsonArray{channel}},
-                                {QStringLiteral("attack"), attack},
-                                {QStringLiteral("sustain"),
-                                 QJsonObject{{QStringLiteral("type"), QStringLiteral("const")},
-                                             {QStringLiteral("value"), 0}}}}}}};
+    QJsonObject pattern = oneShotPattern(QJsonArray{oneShotTrack(QStringList{channel}, attack)},
+                                         options, description + QLatin1Char('.'));
     if (timeline.sharpness >= 0)
         pattern.insert(QStringLiteral("sharpness"), timeline.sharpness);
     return pattern;
+}
+
+bool HapticConverter::span(const QJsonObject &pattern, const QString &file,
+                           const ConvertOptions &options, const std::vector<int> &tracks,
+                           double *releaseAtOut, double *durationOut, QStringList *warnings,
+                           LoadError *error)
+{
+    const PatternPtr parsed = Pattern::fromJson(pattern, file, error);
+    if (!parsed)
+        return false;
+    const auto warn = [&](const QString &pointer, const QString &reason) {
+        if (warnings)
+            warnings->append(LoadError::at(file, pointer, reason).toString());
+    };
+    const QJsonArray json = pattern.value(QLatin1String("tracks")).toArray();
+    // When to end: after the attack, and after a while of sustain if the sustain plays.
+    const double *params = parsed->params().defaults().data();
+    double attackEnd = 0.0;
+    double releaseLength = 0.0;
+    bool silent = true;
+    for (const int i : tracks) {
+        const PatternTrack &track = parsed->tracks()[size_t(i)];
+        const QString at = jsonPointerChild(QStringLiteral("/tracks"), i);
+        if (track.attack) {
+            double length = track.attack->duration(params);
+            if (!std::isfinite(length)) {
+                warn(jsonPointerChild(at, QLatin1String("attack")),
+                     QStringLiteral("the attack never ends: rendered for %1 s").arg(DefaultHold));
+                length = DefaultHold;
+            }
+            attackEnd = std::max(attackEnd, length);
+        }
+        if (track.release)
+            releaseLength = std::max(releaseLength, track.release->duration(params));
+        silent = silent && isSilent(json.at(i).toObject());
+    }
+    double releaseAt = options.releaseAt;
+    if (releaseAt < 0) {
+        releaseAt = attackEnd;
+        if (!silent) {
+            releaseAt += DefaultHold;
+            warn(QString(), QStringLiteral("the sustain is rendered for %1 s; choose the end "
+                                           "with --release-at")
+                                .arg(DefaultHold));
+        }
+    }
+    const double duration = options.duration >= 0 ? options.duration : releaseAt + releaseLength;
+    if (duration > MaxDuration) {
+        *error = LoadError::at(file, QString(),
+                               QStringLiteral("renders for %1 s, more than %2 s: choose a shorter "
+                                              "end or duration")
+                                   .arg(duration)
+                                   .arg(MaxDuration));
+        return false;
+    }
+
+    *releaseAtOut = releaseAt;
+    *durationOut = duration;
+    return true;
 }
 
 bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QString &file,
@@ -295,46 +389,10 @@ bool HapticConverter::patternToTimeline(const QJsonObject &pattern, const QStrin
         warn(QStringLiteral("/params"),
              QStringLiteral("rendered with every parameter at its default"));
 
-    // When to end: after the attack, and after a while of sustain if the sustain plays.
-    const double *params = parsed->params().defaults().data();
-    double attackEnd = 0.0;
-    double releaseLength = 0.0;
-    bool silent = true;
-    for (const int i : selected) {
-        const PatternTrack &track = parsed->tracks()[size_t(i)];
-        const QString at = jsonPointerChild(QStringLiteral("/tracks"), i);
-        if (track.attack) {
-            double length = track.attack->duration(params);
-            if (!std::isfinite(length)) {
-                warn(jsonPointerChild(at, QLatin1String("attack")),
-                     QStringLiteral("the attack never ends: rendered for %1 s").arg(DefaultHold));
-                length = DefaultHold;
-            }
-            attackEnd = std::max(attackEnd, length);
-        }
-        if (track.release)
-            releaseLength = std::max(releaseLength, track.release->duration(params));
-        silent = silent && isSilent(tracks.at(i).toObject());
-    }
-    double releaseAt = options.releaseAt;
-    if (releaseAt < 0) {
-        releaseAt = attackEnd;
-        if (!silent) {
-            releaseAt += DefaultHold;
-            warn(QString(), QStringLiteral("the sustain is rendered for %1 s; choose the end "
-                                           "with --release-at")
-                                .arg(DefaultHold));
-        }
-    }
-    const double duration = options.duration >= 0 ? options.duration : releaseAt + releaseLength;
-    if (duration > MaxDuration) {
-        *error = LoadError::at(file, QString(),
-                               QStringLiteral("renders for %1 s, more than %2 s: choose a shorter "
-                                              "end or duration")
-                                   .arg(duration)
-                                   .arg(MaxDuration));
+    double releaseAt = 0.0;
+    double duration = 0.0;
+    if (!span(bare, file, options, selected, &releaseAt, &duration, warnings, error))
         return false;
-    }
 
     Voice voice(parsed);
     voice.begin(0.0);

@@ -12,15 +12,24 @@ namespace semhap {
 /** The file formats `semhap convert` and the designer read and write, by extension. */
 enum class HapticFileFormat
 {
-    Semhap,    ///< `.json`: a `semhap.pattern/1` document
-    Ahap,      ///< `.ahap`: Apple Core Haptics
-    MetaHaptic ///< `.haptic`: Meta Haptics Studio
+    Semhap,     ///< `.json`: a `semhap.pattern/1` document
+    Ahap,       ///< `.ahap`: Apple Core Haptics
+    MetaHaptic, ///< `.haptic`: Meta Haptics Studio
+    /**
+     * `.hjif`: MPEG haptics (ISO/IEC 23090-31) as JSON. Converted by the hjif module
+     * (HjifConverter), which knows device models; HapticConverter only names it.
+     */
+    Hjif
 };
 
 /** How to map between a haptic file and a semhap pattern; see `docs/convert.md`. */
 struct ConvertOptions
 {
-    QString model = QStringLiteral("lra4"); ///< import: the new pattern's device model
+    /**
+     * Import: the new pattern's device model; empty: `lra4` for AHAP and `.haptic`, the
+     * file's own device for HJIF.
+     */
+    QString model;
     /**
      * Import: the one channel the new pattern drives (empty: every channel, `"*"`).
      * Export: the channel whose tracks are written (empty: every track, the loudest wins).
@@ -37,6 +46,12 @@ struct ConvertOptions
     /** Export: seconds rendered; < 0: up to the end of the longest release. */
     double duration = -1.0;
     QString name; ///< import: the pattern's name; empty: the file's base name
+    /** HJIF import: the perception read (its id); < 0: the first the model can play. */
+    int perception = -1;
+    /** HJIF import: the library effect read (its id); < 0: every channel's whole content. */
+    int effect = -1;
+    /** HJIF export: the hand wearing the band, `left` or `right`; empty: either. */
+    QString hand;
 };
 
 /**
@@ -68,6 +83,21 @@ public:
                           const ConvertOptions &options, QByteArray *bytes, QStringList *warnings,
                           LoadError *error);
 
+    /** A keyframes waveform through the curve's points, from 0 s. */
+    static QJsonObject keyframes(const EnvelopeCurve &curve);
+    /** A track that plays `attack` once on begin on `channels`, then is silent. */
+    static QJsonObject oneShotTrack(const QStringList &channels, const QJsonValue &attack);
+    /** An imported pattern of `tracks` (oneShotTrack), named and modelled by `options`. */
+    static QJsonObject oneShotPattern(const QJsonArray &tracks, const ConvertOptions &options,
+                                      const QString &description);
+    /**
+     * When an export of `tracks` (indices) of `pattern` ends the pattern and how long it
+     * renders (`ConvertOptions::releaseAt`, `duration`), with a warning when a sustain is
+     * cut to DefaultHold; false with `error` beyond MaxDuration.
+     */
+    static bool span(const QJsonObject &pattern, const QString &file,
+                     const ConvertOptions &options, const std::vector<int> &tracks,
+                     double *releaseAt, double *duration, QStringList *warnings, LoadError *error);
     /** A one-shot pattern playing `timeline` on begin. */
     static QJsonObject timelineToPattern(const HapticTimeline &timeline,
                                          const ConvertOptions &options, const QString &source);

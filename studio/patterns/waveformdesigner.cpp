@@ -5,6 +5,7 @@
 #include "devicemanager.h"
 #include "filedialogs.h"
 #include "hapticconverter.h"
+#include "hjifconverter.h"
 #include "jsonreader.h"
 #include "nodeinspector.h"
 #include "patternauditioner.h"
@@ -246,16 +247,16 @@ void WaveformDesigner::createActions()
            &WaveformDesigner::newPattern);
     // No Ctrl+O: the main window opens scenes with it, and a shared shortcut fires neither.
     action(tr("Open…"), QStringLiteral("openPattern"), {}, nullptr)
-        ->setToolTip(tr("Open a pattern, an AHAP or a .haptic file"));
-    connect(
-        findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this, [this] {
-            const QString path =
-                FileDialogs::openFile(this, FileKind::Pattern, tr("Open pattern"),
-                                      tr("Patterns and haptic files (*.json *.ahap *.haptic)"));
-            QString error;
-            if (!path.isEmpty() && !openFile(path, &error))
-                reportError(tr("Could not open %1").arg(path), error);
-        });
+        ->setToolTip(tr("Open a pattern, an AHAP, a .haptic or an HJIF file"));
+    connect(findChild<QAction *>(QStringLiteral("openPattern")), &QAction::triggered, this,
+            [this] {
+                const QString path = FileDialogs::openFile(
+                    this, FileKind::Pattern, tr("Open pattern"),
+                    tr("Patterns and haptic files (*.json *.ahap *.haptic *.hjif)"));
+                QString error;
+                if (!path.isEmpty() && !openFile(path, &error))
+                    reportError(tr("Could not open %1").arg(path), error);
+            });
     m_saveAction = action(tr("Save"), QStringLiteral("savePattern"), QKeySequence::Save,
                           &WaveformDesigner::save);
     action(tr("Save as…"), QStringLiteral("saveAsPattern"), QKeySequence::SaveAs,
@@ -594,11 +595,20 @@ bool WaveformDesigner::openFile(const QString &path, QString *error)
     QStringList warnings;
     QJsonObject json;
     ConvertOptions options;
-    // The file's envelope as it is; its sharpness is kept with the pattern.
-    if (const DeviceModelPtr model = previewModel())
+    if (!HapticConverter::formatOf(path, &format, &loadError)) {
+        *error = loadError.toString();
+        return false;
+    }
+    // The file's envelope as it is; its sharpness is kept with the pattern. An HJIF file
+    // names its own device.
+    const DeviceModelPtr model = previewModel();
+    if (model && format != HapticFileFormat::Hjif)
         options.model = model->name();
-    if (!HapticConverter::formatOf(path, &format, &loadError) ||
-        !HapticConverter::readPattern(path, options, &json, &warnings, &loadError)) {
+    const bool read =
+        format == HapticFileFormat::Hjif
+            ? HjifConverter::readPattern(path, options, &json, &warnings, &loadError)
+            : HapticConverter::readPattern(path, options, &json, &warnings, &loadError);
+    if (!read) {
         *error = loadError.toString();
         return false;
     }
@@ -652,7 +662,12 @@ bool WaveformDesigner::saveFile(const QString &path, QString *error)
     if (!m_hold->isChecked())
         options.releaseAt = m_endAt->value();
     QStringList warnings;
-    if (!HapticConverter::writePattern(m_document->json(), path, options, &warnings, &loadError)) {
+    const bool written =
+        format == HapticFileFormat::Hjif
+            ? HjifConverter::writePattern(m_document->json(), path, options, &warnings, &loadError)
+            : HapticConverter::writePattern(m_document->json(), path, options, &warnings,
+                                            &loadError);
+    if (!written) {
         *error = loadError.toString();
         return false;
     }
@@ -765,7 +780,7 @@ void WaveformDesigner::importFile()
 {
     const QString path =
         FileDialogs::openFile(this, FileKind::HapticFile, tr("Import haptic file"),
-                              tr("Haptic files (*.ahap *.haptic)"));
+                              tr("Haptic files (*.ahap *.haptic *.hjif)"));
     QString error;
     if (!path.isEmpty() && !openFile(path, &error))
         reportError(tr("Could not import %1").arg(path), error);
@@ -776,7 +791,8 @@ void WaveformDesigner::exportFile()
     const QString name = m_document->json().value(QLatin1String("name")).toString();
     const QString path = FileDialogs::saveFile(this, FileKind::HapticFile, tr("Export pattern"),
                                                name + QStringLiteral(".ahap"),
-                                               tr("Apple AHAP (*.ahap);;Meta Haptics (*.haptic)"));
+                                               tr("Apple AHAP (*.ahap);;Meta Haptics (*.haptic);;"
+                                                  "MPEG haptics (*.hjif)"));
     QString error;
     if (!path.isEmpty() && !saveFile(path, &error))
         reportError(tr("Could not export %1").arg(path), error);

@@ -453,9 +453,10 @@ void TestConvert::malformed_data()
            "got a string";
     QTest::newRow("pattern") << "x.json" << QByteArray(R"({"format": "semhap.pattern/1"})")
                              << "x.json: missing key 'name'";
-    QTest::newRow("extension") << "x.wav" << QByteArray("{}")
-                               << "x.wav: unknown file type '.wav': use .json (semhap pattern), "
-                                  ".ahap (Apple Core Haptics) or .haptic (Meta)";
+    QTest::newRow("extension")
+        << "x.wav" << QByteArray("{}")
+        << "x.wav: unknown file type '.wav': use .json (semhap pattern), "
+           ".ahap (Apple Core Haptics), .haptic (Meta) or .hjif (MPEG haptics)";
 }
 
 void TestConvert::malformed()

@@ -7,6 +7,7 @@
 #include "devicemanager.h"
 #include "emulatedband.h"
 #include "emulator.h"
+#include "hjifdocument.h"
 #include "jsonreader.h"
 #include "nodeinspector.h"
 #include "numberedit.h"
@@ -186,6 +187,7 @@ private slots:
     void auditionKeepsTheDevicesRate();
     void auditionIsStampedFromTheRun();
     void importAhap();
+    void exportImportHjif();
     void screenshot();
 };
 
@@ -658,6 +660,33 @@ void TestWaveformDesigner::importAhap()
                          std::abs(a.intensity.value(k / 1000.0) - b.intensity.value(k / 1000.0)));
     QVERIFY2(worst < 0.01, qPrintable(QString::number(worst)));
     QVERIFY(std::abs(a.sharpness - b.sharpness) < 1e-9);
+}
+
+void TestWaveformDesigner::exportImportHjif()
+{
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.designer));
+    f.designer.openBuiltin(QStringLiteral("air.squeeze"));
+    QString error;
+    const QString exported = f.folder.filePath(QStringLiteral("squeeze.hjif"));
+    QVERIFY2(f.designer.saveFile(exported, &error), qPrintable(error));
+    QJsonObject json;
+    LoadError loadError;
+    HjifDocument document;
+    QVERIFY(readJsonObjectFile(exported, &json, &loadError));
+    QVERIFY2(HjifDocument::fromJson(json, exported, &document, nullptr, &loadError),
+             qPrintable(loadError.toString()));
+    QCOMPARE(document.perceptions.front().modality, QStringLiteral("Pressure"));
+    QCOMPARE(document.perceptions.front().channels.size(), size_t(6));
+
+    // Opened again it is a new pattern on the file's own device, whatever the preview shows.
+    f.designer.openBuiltin(QStringLiteral("vib.geiger"));
+    QVERIFY2(f.designer.openFile(exported, &error), qPrintable(error));
+    PatternDocument *opened = f.designer.document();
+    QVERIFY(opened->pattern());
+    QCOMPARE(opened->pattern()->model(), QStringLiteral("pneumatic6"));
+    QCOMPARE(opened->path(), f.folder.filePath(QStringLiteral("squeeze.json")));
+    QVERIFY(f.designer.preview()->message().isEmpty());
 }
 
 /** With SEMHAP_SCREENSHOTS=DIR: the designer with a built-in open, for docs/screenshots. */
