@@ -364,8 +364,11 @@ bool HjifConverter::documentToPattern(const HjifDocument &document, const QStrin
     QString source = QStringLiteral("HJIF %1, perception %2")
                          .arg(QFileInfo(file).fileName())
                          .arg(perception->id);
-    if (!perception->description.isEmpty())
-        source += QStringLiteral(" (%1)").arg(perception->description);
+    QString about = perception->description;
+    while (about.endsWith(QLatin1Char('.')))
+        about.chop(1);
+    if (!about.isEmpty())
+        source += QStringLiteral(" (%1)").arg(about);
     if (chosen) {
         source += QStringLiteral(", effect %1").arg(chosen->id);
         if (!chosen->semantic.isEmpty())

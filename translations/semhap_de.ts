@@ -3707,16 +3707,8 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <translation>Öffnen…</translation>
     </message>
     <message>
-        <source>Open a pattern, an AHAP or a .haptic file</source>
-        <translation>Ein Muster, eine AHAP- oder eine .haptic-Datei öffnen</translation>
-    </message>
-    <message>
         <source>Open pattern</source>
         <translation>Muster öffnen</translation>
-    </message>
-    <message>
-        <source>Patterns and haptic files (*.json *.ahap *.haptic)</source>
-        <translation>Muster und Haptik-Dateien (*.json *.ahap *.haptic)</translation>
     </message>
     <message>
         <source>Could not open %1</source>
@@ -3907,20 +3899,12 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
         <translation>Haptik-Datei importieren</translation>
     </message>
     <message>
-        <source>Haptic files (*.ahap *.haptic)</source>
-        <translation>Haptik-Dateien (*.ahap *.haptic)</translation>
-    </message>
-    <message>
         <source>Could not import %1</source>
         <translation>%1 konnte nicht importiert werden</translation>
     </message>
     <message>
         <source>Export pattern</source>
         <translation>Muster exportieren</translation>
-    </message>
-    <message>
-        <source>Apple AHAP (*.ahap);;Meta Haptics (*.haptic)</source>
-        <translation>Apple AHAP (*.ahap);;Meta Haptics (*.haptic)</translation>
     </message>
     <message>
         <source>Could not export %1</source>
@@ -4017,6 +4001,22 @@ Die eigenen Greifer der Szene oder an ihrer Stelle das Modell eines Greifer-Adap
     <message>
         <source>Patterns</source>
         <translation>Muster</translation>
+    </message>
+    <message>
+        <source>Open a pattern, an AHAP, a .haptic or an HJIF file</source>
+        <translation>Ein Muster, eine AHAP-, eine .haptic- oder eine HJIF-Datei öffnen</translation>
+    </message>
+    <message>
+        <source>Patterns and haptic files (*.json *.ahap *.haptic *.hjif)</source>
+        <translation>Muster und Haptik-Dateien (*.json *.ahap *.haptic *.hjif)</translation>
+    </message>
+    <message>
+        <source>Haptic files (*.ahap *.haptic *.hjif)</source>
+        <translation>Haptik-Dateien (*.ahap *.haptic *.hjif)</translation>
+    </message>
+    <message>
+        <source>Apple AHAP (*.ahap);;Meta Haptics (*.haptic);;MPEG haptics (*.hjif)</source>
+        <translation>Apple AHAP (*.ahap);;Meta Haptics (*.haptic);;MPEG-Haptik (*.hjif)</translation>
     </message>
 </context>
 <context>

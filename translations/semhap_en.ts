@@ -3699,15 +3699,7 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Open a pattern, an AHAP or a .haptic file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Open pattern</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Patterns and haptic files (*.json *.ahap *.haptic)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3899,19 +3891,11 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Haptic files (*.ahap *.haptic)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Could not import %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Export pattern</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Apple AHAP (*.ahap);;Meta Haptics (*.haptic)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4008,6 +3992,22 @@ The scene&apos;s own grippers, or a gripper adapter&apos;s model in their place<
     </message>
     <message>
         <source>Patterns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a pattern, an AHAP, a .haptic or an HJIF file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Patterns and haptic files (*.json *.ahap *.haptic *.hjif)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Haptic files (*.ahap *.haptic *.hjif)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apple AHAP (*.ahap);;Meta Haptics (*.haptic);;MPEG haptics (*.hjif)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
