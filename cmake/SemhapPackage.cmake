@@ -11,7 +11,8 @@ set(SEMHAP_PUBLIC_HEADERS
     core/eventbuffer.h core/detector.h core/messagetracker.h core/forcedetector.h
     core/slipdetector.h core/contactframeparser.h core/contactframereader.h
     core/jsonlineswriter.h
-    core/devicemodel.h core/routercontext.h core/routergraph.h core/routernodetype.h
+    core/actuator.h core/devicemodel.h core/routercontext.h core/routergraph.h
+    core/routernodetype.h
     core/router.h core/player.h
     core/pipeline.h core/nodeactivity.h core/sinklist.h core/statistics.h
     core/patternrender.h)
