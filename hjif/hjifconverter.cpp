@@ -175,6 +175,22 @@ bool hapticModel(const DeviceModel &model, const QString &file, LoadError *error
     return false;
 }
 
+/**
+ * An envelope as a pattern keeps it: reduced to breakpoints, and no finer than semhap plays
+ * (a sample a millisecond), so a file of dense keyframes makes a pattern of bounded size.
+ */
+EnvelopeCurve playable(const EnvelopeCurve &curve)
+{
+    const double step = 0.001;
+    const auto samples = qint64(std::ceil(curve.endTime() / step));
+    if (qint64(curve.points().size()) <= 2 * (samples + 1))
+        return curve.simplified(HapticTimeline::SimplifyTolerance / 4);
+    EnvelopeCurve sampled;
+    for (qint64 k = 0; k <= samples; ++k)
+        sampled.append(double(k) * step, curve.value(double(k) * step));
+    return sampled.simplified(HapticTimeline::SimplifyTolerance / 4);
+}
+
 /** The model an import plays on: the one asked for, the reference device's, or the sense's. */
 DeviceModelPtr importModel(const HjifPerception &perception, const QString &asked)
 {
@@ -338,7 +354,7 @@ bool HjifConverter::documentToPattern(const HjifDocument &document, const QStrin
     for (size_t c = 0; c < envelopes.size(); ++c) {
         if (done[c] || envelopes[c].isEmpty())
             continue;
-        const EnvelopeCurve curve = envelopes[c].simplified(HapticTimeline::SimplifyTolerance / 4);
+        const EnvelopeCurve curve = playable(envelopes[c]);
         QStringList channels;
         for (size_t d = c; d < envelopes.size(); ++d) {
             if (!done[d] && envelopes[d].points().size() == envelopes[c].points().size() &&

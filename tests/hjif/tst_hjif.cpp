@@ -113,6 +113,7 @@ private slots:
     void boundedWork_data();
     void boundedWork();
     void foreignContent();
+    void denseKeyframesAreSampled();
     void commandLine();
 };
 
@@ -722,6 +723,43 @@ void TestHjif::foreignContent()
     QCOMPARE(felt.values.size(), size_t(4));
     QVERIFY(std::abs(felt.values[0][250] - 0.6) < 1e-9);
     QCOMPARE(felt.values[0][600], 0.0);
+}
+
+void TestHjif::denseKeyframesAreSampled()
+{
+    // 20 000 keyframes a second, alternating 1 and 0.5: finer than semhap plays.
+    QString keyframes;
+    for (int i = 0; i < 20000; ++i)
+        keyframes += QStringLiteral(R"({"relative_position":%1,"amplitude_modulation":%2},)")
+                         .arg(i)
+                         .arg(i % 2 ? 0.5 : 1.0);
+    keyframes.chop(1);
+    const QByteArray file =
+        fileWith(QStringLiteral("Pressure"),
+                 QLatin1Char('[') +
+                     channelWith(QStringLiteral("Curve"),
+                                 QStringLiteral(R"([{"effect_type": "Basis", "position": 0,
+                        "keyframes": [%1]}])")
+                                     .arg(keyframes)) +
+                     QLatin1Char(']'),
+                 QStringLiteral("[]"), 20000);
+    QJsonObject pattern;
+    LoadError error;
+    QVERIFY2(importBytes(file, {}, &pattern, nullptr, &error), qPrintable(error.toString()));
+    const QJsonArray points = pattern.value(QLatin1String("tracks"))
+                                  .toArray()
+                                  .first()
+                                  .toObject()
+                                  .value(QLatin1String("attack"))
+                                  .toObject()
+                                  .value(QLatin1String("points"))
+                                  .toArray();
+    // A sample a millisecond at most, each on a keyframe of the file.
+    QVERIFY2(points.size() <= 1002, qPrintable(QString::number(points.size())));
+    for (const QJsonValue &p : points) {
+        const double v = p.toArray().at(1).toDouble();
+        QVERIFY(v == 0.0 || v == 0.5 || v == 1.0);
+    }
 }
 
 void TestHjif::commandLine()
