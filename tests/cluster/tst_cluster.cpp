@@ -5,6 +5,7 @@
 #include "compareruns.h"
 #include "slurmcluster.h"
 #include "studyexports.h"
+#include "testfiles.h"
 
 #include <QDir>
 #include <QFile>
@@ -21,12 +22,6 @@ namespace {
 QString jobScript(const char *name)
 {
     return QStringLiteral(SEMHAP_SOURCE_DIR "/scripts/slurm/") + QLatin1String(name);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 // Every task gets one CPU, so that two run side by side on a two-core machine; the tasks

@@ -10,6 +10,7 @@
 #include "metricspec.h"
 #include "simrun.h"
 #include "taskmonitor.h"
+#include "testfiles.h"
 #include "world.h"
 
 #include <QBuffer>
@@ -23,12 +24,6 @@
 using namespace semhap;
 
 namespace {
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 /**
  * What the operator is told of `hand` while stepping: a warning felt from `from` on (never

@@ -8,6 +8,7 @@
 #include "studydatabase.h"
 #include "studysimulation.h"
 #include "studytable.h"
+#include "testfiles.h"
 
 #include <QDir>
 #include <QFile>
@@ -27,17 +28,6 @@
 using namespace semhap;
 
 namespace {
-
-QString example(const char *name)
-{
-    return QStringLiteral(SEMHAP_RESOURCES "/studies/") + QLatin1String(name);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 /** The trial seconds CI can afford: 20 participants x 4 conditions x 3 runs. */
 constexpr double TrialSeconds = 6.0;

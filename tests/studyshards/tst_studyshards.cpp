@@ -4,6 +4,7 @@
 // slices that are not of one study.
 #include "studydatabase.h"
 #include "studyexports.h"
+#include "testfiles.h"
 
 #include <QDir>
 #include <QFile>
@@ -15,21 +16,6 @@
 #include <QtTest>
 
 using namespace semhap;
-
-namespace {
-
-QString example(const char *name)
-{
-    return QStringLiteral(SEMHAP_RESOURCES "/studies/") + QLatin1String(name);
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-} // namespace
 
 class TestStudyShards : public QObject
 {
