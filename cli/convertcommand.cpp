@@ -105,6 +105,8 @@ int ConvertCommand::execute(const QCommandLineParser &parser)
     if (parser.isSet(QStringLiteral("hand"))) {
         if (!hjifOut)
             return usageError(tr("--hand is for writing HJIF files"));
+        if (fromRouter)
+            return usageError(tr("--hand is for patterns: a router's devices name their hands"));
         if (options.hand != QLatin1String("left") && options.hand != QLatin1String("right"))
             return usageError(tr("--hand expects left or right, got '%1'").arg(options.hand));
     }

@@ -288,7 +288,7 @@ bool HjifConverter::documentToPattern(const HjifDocument &document, const QStrin
         if (!perception)
             perception = &document.perceptions.front();
     }
-    if (document.perceptions.size() > 1)
+    if (document.perceptions.size() > 1 && options.perception < 0)
         warn(perception->pointer,
              QStringLiteral("read this one of %1 perceptions; choose another with --perception")
                  .arg(document.perceptions.size()));
@@ -320,16 +320,20 @@ bool HjifConverter::documentToPattern(const HjifDocument &document, const QStrin
     }
 
     // Channels go to the model's channel of their description's name, else in order.
-    HjifRenderer renderer(document, *perception, model->actuator().hasCarrier(), file, warnings);
+    HjifRenderer renderer(document, *perception, *model, file, warnings);
     std::vector<EnvelopeCurve> envelopes(size_t(model->channelCount()));
     std::vector<bool> taken(size_t(model->channelCount()), false);
     bool anyFound = false;
     for (size_t i = 0; i < perception->channels.size(); ++i) {
         const HjifChannel &channel = perception->channels[i];
         int target = model->channelIndex(channel.description);
-        if (target < 0 && int(i) < model->channelCount() && !taken[i])
-            target = int(i);
         if (target < 0 || taken[size_t(target)]) {
+            // Otherwise the channel of its place, or the first still free.
+            target = int(i) < model->channelCount() && !taken[i]
+                         ? int(i)
+                         : int(std::find(taken.begin(), taken.end(), false) - taken.begin());
+        }
+        if (target >= model->channelCount()) {
             warn(channel.pointer,
                  QStringLiteral("ignored: %1 has no channel left for it").arg(model->name()));
             continue;

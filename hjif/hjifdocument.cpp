@@ -3,8 +3,10 @@
 
 #include "jsonreader.h"
 
+#include <QHash>
 #include <QJsonArray>
 #include <QRegularExpression>
+#include <QSet>
 
 #include <cmath>
 
@@ -14,16 +16,32 @@ namespace {
 
 constexpr qint64 MaxInt = 2147483647; // the reference software reads 32-bit integers
 constexpr double UnsignedMax = 4294967295.0;
+/** A full turn either way, and the rounding of a phase kept as a float (as the reference). */
+constexpr double PhaseLimit = 2 * M_PI + 1e-6;
+
+/** Adds `id` to `ids`; false when it was there already. */
+bool insertUnique(QSet<int> *ids, int id)
+{
+    const qsizetype before = ids->size();
+    ids->insert(id);
+    return ids->size() != before;
+}
 
 class HjifReader : public JsonReader
 {
 public:
-    HjifReader(const QString &file, QStringList *warnings) : JsonReader(file), m_warnings(warnings)
+    HjifReader(const QString &file, QStringList *warnings)
+        : JsonReader(file), m_file(file), m_warnings(warnings)
     {}
 
     bool read(const QJsonObject &json, HjifDocument *document);
+    /** Lists each unknown key once, with how many more places hold it. */
+    void reportUnknownKeys() const;
 
 private:
+    /** Notes the keys of `object` not in `known`: ignored, as the standard's readers do. */
+    void unknownKeys(const QJsonObject &object, const QString &pointer,
+                     std::initializer_list<QLatin1String> known);
     /** An integral number of `key` within [min, max]. */
     bool integer(const QJsonObject &object, const QString &pointer, QLatin1String key, qint64 *out,
                  qint64 min, qint64 max, bool required);
@@ -37,16 +55,52 @@ private:
 
     bool readPerception(const QJsonObject &json, const QString &pointer, HjifPerception *out);
     bool readDevice(const QJsonObject &json, const QString &pointer, HjifReferenceDevice *out);
-    bool readChannel(const QJsonObject &json, const QString &pointer, const HjifPerception &owner,
-                     HjifChannel *out);
+    bool readChannel(const QJsonObject &json, const QString &pointer, HjifChannel *out);
     bool readBand(const QJsonObject &json, const QString &pointer, HjifBand *out);
     bool readEffect(const QJsonObject &json, const QString &pointer, bool library,
                     HjifEffect *out);
     bool readKeyframes(const QJsonArray &json, const QString &pointer, HjifEffect *out);
 
+    struct Unknown
+    {
+        QString pointer; ///< where it was first met
+        qint64 count = 0;
+    };
+
+    QString m_file;
     QStringList *m_warnings;
     qint64 m_elements = 0;
+    QHash<QString, Unknown> m_unknown;
+    QStringList m_unknownOrder;
+    QSet<int> m_deviceIds; ///< the reference devices of the perception being read
 };
+
+void HjifReader::unknownKeys(const QJsonObject &object, const QString &pointer,
+                             std::initializer_list<QLatin1String> known)
+{
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (std::find(known.begin(), known.end(), it.key()) != known.end())
+            continue;
+        Unknown &unknown = m_unknown[it.key()];
+        if (unknown.count++ == 0) {
+            unknown.pointer = jsonPointerChild(pointer, it.key());
+            m_unknownOrder.append(it.key());
+        }
+    }
+}
+
+void HjifReader::reportUnknownKeys() const
+{
+    if (!m_warnings)
+        return;
+    for (const QString &key : m_unknownOrder) {
+        const Unknown &unknown = m_unknown.value(key);
+        QString reason = QStringLiteral("ignored: unknown key");
+        if (unknown.count > 1)
+            reason += QStringLiteral(" (and in %1 more places)").arg(unknown.count - 1);
+        m_warnings->append(LoadError::at(m_file, unknown.pointer, reason).toString());
+    }
+}
 
 bool HjifReader::integer(const QJsonObject &object, const QString &pointer, QLatin1String key,
                          qint64 *out, qint64 min, qint64 max, bool required)
@@ -116,12 +170,10 @@ bool HjifReader::spend(qint64 n, const QString &pointer)
 bool HjifReader::read(const QJsonObject &json, HjifDocument *document)
 {
     const QString root;
-    ignoreUnknownKeys(json, root,
-                      {QLatin1String("version"), QLatin1String("profile"), QLatin1String("level"),
-                       QLatin1String("date"), QLatin1String("description"),
-                       QLatin1String("timescale"), QLatin1String("avatars"),
-                       QLatin1String("perceptions"), QLatin1String("syncs")},
-                      m_warnings);
+    unknownKeys(json, root,
+                {QLatin1String("version"), QLatin1String("profile"), QLatin1String("level"),
+                 QLatin1String("date"), QLatin1String("description"), QLatin1String("timescale"),
+                 QLatin1String("avatars"), QLatin1String("perceptions"), QLatin1String("syncs")});
     qint64 level = 1;
     qint64 timescale = 1000;
     QJsonArray avatars;
@@ -149,14 +201,15 @@ bool HjifReader::read(const QJsonObject &json, HjifDocument *document)
     document->timescale = timescale;
     if (perceptions.isEmpty())
         return fail(QStringLiteral("/perceptions"), QStringLiteral("expected at least one"));
+    QSet<int> ids;
     for (int i = 0; i < perceptions.size(); ++i) {
         const QString at = jsonPointerChild(QStringLiteral("/perceptions"), i);
         QJsonObject object;
         HjifPerception perception;
-        if (!objectAt(perceptions, i, QStringLiteral("/perceptions"), &object) ||
+        if (!spend(1, at) || !objectAt(perceptions, i, QStringLiteral("/perceptions"), &object) ||
             !readPerception(object, at, &perception))
             return false;
-        if (document->perception(perception.id))
+        if (!insertUnique(&ids, perception.id))
             return fail(at + QStringLiteral("/id"),
                         QStringLiteral("perception %1 is not unique").arg(perception.id));
         document->perceptions.push_back(std::move(perception));
@@ -168,14 +221,12 @@ bool HjifReader::readPerception(const QJsonObject &json, const QString &pointer,
                                 HjifPerception *out)
 {
     out->pointer = pointer;
-    ignoreUnknownKeys(json, pointer,
-                      {QLatin1String("id"), QLatin1String("avatar_id"),
-                       QLatin1String("description"), QLatin1String("perception_modality"),
-                       QLatin1String("priority"), QLatin1String("unit_exponent"),
-                       QLatin1String("perception_unit_exponent"),
-                       QLatin1String("effect_semantic_scheme"), QLatin1String("effect_library"),
-                       QLatin1String("reference_devices"), QLatin1String("channels")},
-                      m_warnings);
+    unknownKeys(json, pointer,
+                {QLatin1String("id"), QLatin1String("avatar_id"), QLatin1String("description"),
+                 QLatin1String("perception_modality"), QLatin1String("priority"),
+                 QLatin1String("unit_exponent"), QLatin1String("perception_unit_exponent"),
+                 QLatin1String("effect_semantic_scheme"), QLatin1String("effect_library"),
+                 QLatin1String("reference_devices"), QLatin1String("channels")});
     qint64 id = 0;
     qint64 avatar = 0;
     QJsonArray library;
@@ -193,47 +244,44 @@ bool HjifReader::readPerception(const QJsonObject &json, const QString &pointer,
     out->id = int(id);
     out->avatarId = int(avatar);
     const QString libraryAt = jsonPointerChild(pointer, QLatin1String("effect_library"));
+    QSet<int> libraryIds;
     for (int i = 0; i < library.size(); ++i) {
         QJsonObject object;
         HjifEffect effect;
         if (!objectAt(library, i, libraryAt, &object) ||
             !readEffect(object, jsonPointerChild(libraryAt, i), true, &effect))
             return false;
-        for (const HjifEffect &other : out->library) {
-            if (other.id == effect.id)
-                return fail(jsonPointerChild(libraryAt, i) + QStringLiteral("/id"),
-                            QStringLiteral("library effect %1 is not unique").arg(effect.id));
-        }
+        if (!insertUnique(&libraryIds, effect.id))
+            return fail(jsonPointerChild(libraryAt, i) + QStringLiteral("/id"),
+                        QStringLiteral("library effect %1 is not unique").arg(effect.id));
         out->library.push_back(std::move(effect));
     }
     const QString devicesAt = jsonPointerChild(pointer, QLatin1String("reference_devices"));
+    m_deviceIds.clear();
     for (int i = 0; i < devices.size(); ++i) {
         QJsonObject object;
         HjifReferenceDevice device;
-        if (!objectAt(devices, i, devicesAt, &object) ||
+        if (!spend(1, devicesAt) || !objectAt(devices, i, devicesAt, &object) ||
             !readDevice(object, jsonPointerChild(devicesAt, i), &device))
             return false;
-        for (const HjifReferenceDevice &other : out->devices) {
-            if (other.id == device.id)
-                return fail(jsonPointerChild(devicesAt, i) + QStringLiteral("/id"),
-                            QStringLiteral("reference device %1 is not unique").arg(device.id));
-        }
+        if (!insertUnique(&m_deviceIds, device.id))
+            return fail(jsonPointerChild(devicesAt, i) + QStringLiteral("/id"),
+                        QStringLiteral("reference device %1 is not unique").arg(device.id));
         out->devices.push_back(std::move(device));
     }
     const QString channelsAt = jsonPointerChild(pointer, QLatin1String("channels"));
     if (channels.isEmpty())
         return fail(channelsAt, QStringLiteral("expected at least one channel"));
+    QSet<int> channelIds;
     for (int i = 0; i < channels.size(); ++i) {
         QJsonObject object;
         HjifChannel channel;
         if (!spend(1, channelsAt) || !objectAt(channels, i, channelsAt, &object) ||
-            !readChannel(object, jsonPointerChild(channelsAt, i), *out, &channel))
+            !readChannel(object, jsonPointerChild(channelsAt, i), &channel))
             return false;
-        for (const HjifChannel &other : out->channels) {
-            if (other.id == channel.id)
-                return fail(jsonPointerChild(channelsAt, i) + QStringLiteral("/id"),
-                            QStringLiteral("channel %1 is not unique").arg(channel.id));
-        }
+        if (!insertUnique(&channelIds, channel.id))
+            return fail(jsonPointerChild(channelsAt, i) + QStringLiteral("/id"),
+                        QStringLiteral("channel %1 is not unique").arg(channel.id));
         out->channels.push_back(std::move(channel));
     }
     return true;
@@ -242,15 +290,14 @@ bool HjifReader::readPerception(const QJsonObject &json, const QString &pointer,
 bool HjifReader::readDevice(const QJsonObject &json, const QString &pointer,
                             HjifReferenceDevice *out)
 {
-    ignoreUnknownKeys(json, pointer,
-                      {QLatin1String("id"), QLatin1String("name"), QLatin1String("body_part_mask"),
-                       QLatin1String("maximum_frequency"), QLatin1String("minimum_frequency"),
-                       QLatin1String("resonance_frequency"), QLatin1String("maximum_amplitude"),
-                       QLatin1String("impedance"), QLatin1String("maximum_voltage"),
-                       QLatin1String("maximum_current"), QLatin1String("maximum_displacement"),
-                       QLatin1String("weight"), QLatin1String("size"), QLatin1String("custom"),
-                       QLatin1String("type")},
-                      m_warnings);
+    unknownKeys(json, pointer,
+                {QLatin1String("id"), QLatin1String("name"), QLatin1String("body_part_mask"),
+                 QLatin1String("maximum_frequency"), QLatin1String("minimum_frequency"),
+                 QLatin1String("resonance_frequency"), QLatin1String("maximum_amplitude"),
+                 QLatin1String("impedance"), QLatin1String("maximum_voltage"),
+                 QLatin1String("maximum_current"), QLatin1String("maximum_displacement"),
+                 QLatin1String("weight"), QLatin1String("size"), QLatin1String("custom"),
+                 QLatin1String("type")});
     qint64 id = 0;
     qint64 mask = 0;
     if (!integer(json, pointer, QLatin1String("id"), &id, 1, MaxInt, true) ||
@@ -287,19 +334,17 @@ bool HjifReader::readDevice(const QJsonObject &json, const QString &pointer,
     return true;
 }
 
-bool HjifReader::readChannel(const QJsonObject &json, const QString &pointer,
-                             const HjifPerception &owner, HjifChannel *out)
+bool HjifReader::readChannel(const QJsonObject &json, const QString &pointer, HjifChannel *out)
 {
     out->pointer = pointer;
-    ignoreUnknownKeys(json, pointer,
-                      {QLatin1String("id"), QLatin1String("description"), QLatin1String("gain"),
-                       QLatin1String("mixing_coefficient"), QLatin1String("body_part_mask"),
-                       QLatin1String("priority"), QLatin1String("reference_device_id"),
-                       QLatin1String("direction"), QLatin1String("actuator_resolution"),
-                       QLatin1String("body_part_target"), QLatin1String("actuator_target"),
-                       QLatin1String("frequency_sampling"), QLatin1String("sample_count"),
-                       QLatin1String("vertices"), QLatin1String("bands")},
-                      m_warnings);
+    unknownKeys(json, pointer,
+                {QLatin1String("id"), QLatin1String("description"), QLatin1String("gain"),
+                 QLatin1String("mixing_coefficient"), QLatin1String("body_part_mask"),
+                 QLatin1String("priority"), QLatin1String("reference_device_id"),
+                 QLatin1String("direction"), QLatin1String("actuator_resolution"),
+                 QLatin1String("body_part_target"), QLatin1String("actuator_target"),
+                 QLatin1String("frequency_sampling"), QLatin1String("sample_count"),
+                 QLatin1String("vertices"), QLatin1String("bands")});
     qint64 id = 0;
     qint64 mask = 0;
     qint64 device = 0;
@@ -317,10 +362,7 @@ bool HjifReader::readChannel(const QJsonObject &json, const QString &pointer,
     out->id = int(id);
     out->bodyPartMask = quint32(mask);
     if (json.contains(QLatin1String("reference_device_id"))) {
-        const bool known =
-            std::any_of(owner.devices.begin(), owner.devices.end(),
-                        [&](const HjifReferenceDevice &d) { return d.id == device; });
-        if (!known)
+        if (!m_deviceIds.contains(int(device)))
             return fail(pointer + QStringLiteral("/reference_device_id"),
                         QStringLiteral("no reference device %1 in the perception").arg(device));
         out->referenceDevice = int(device);
@@ -340,12 +382,11 @@ bool HjifReader::readChannel(const QJsonObject &json, const QString &pointer,
 bool HjifReader::readBand(const QJsonObject &json, const QString &pointer, HjifBand *out)
 {
     out->pointer = pointer;
-    ignoreUnknownKeys(json, pointer,
-                      {QLatin1String("band_type"), QLatin1String("curve_type"),
-                       QLatin1String("block_length"), QLatin1String("priority"),
-                       QLatin1String("lower_frequency_limit"),
-                       QLatin1String("upper_frequency_limit"), QLatin1String("effects")},
-                      m_warnings);
+    unknownKeys(json, pointer,
+                {QLatin1String("band_type"), QLatin1String("curve_type"),
+                 QLatin1String("block_length"), QLatin1String("priority"),
+                 QLatin1String("lower_frequency_limit"), QLatin1String("upper_frequency_limit"),
+                 QLatin1String("effects")});
     QString type;
     qint64 lower = 0;
     qint64 upper = 0;
@@ -385,12 +426,11 @@ bool HjifReader::readEffect(const QJsonObject &json, const QString &pointer, boo
                             HjifEffect *out)
 {
     out->pointer = pointer;
-    ignoreUnknownKeys(json, pointer,
-                      {QLatin1String("effect_type"), QLatin1String("id"),
-                       QLatin1String("position"), QLatin1String("phase"),
-                       QLatin1String("base_signal"), QLatin1String("semantic_keywords"),
-                       QLatin1String("keyframes"), QLatin1String("wavelet_stream")},
-                      m_warnings);
+    unknownKeys(json, pointer,
+                {QLatin1String("effect_type"), QLatin1String("id"), QLatin1String("position"),
+                 QLatin1String("phase"), QLatin1String("base_signal"),
+                 QLatin1String("semantic_keywords"), QLatin1String("keyframes"),
+                 QLatin1String("wavelet_stream")});
     static const QStringList types{QStringLiteral("Basis"), QStringLiteral("Reference"),
                                    QStringLiteral("Composite")};
     QString type = types.first();
@@ -403,7 +443,8 @@ bool HjifReader::readEffect(const QJsonObject &json, const QString &pointer, boo
     const bool needsId = library || out->type == HjifEffect::Type::Reference;
     if (!integer(json, pointer, QLatin1String("id"), &id, 0, MaxInt, needsId) ||
         !integer(json, pointer, QLatin1String("position"), &out->position, 0, MaxInt, true) ||
-        !bounded(json, pointer, QLatin1String("phase"), &out->phase, -2 * M_PI, 2 * M_PI, false) ||
+        !bounded(json, pointer, QLatin1String("phase"), &out->phase, -PhaseLimit, PhaseLimit,
+                 false) ||
         !oneOf(json, pointer, QLatin1String("base_signal"), HjifDocument::baseSignals(),
                &out->baseSignal, false) ||
         !string(json, pointer, QLatin1String("semantic_keywords"), &out->semantic, false) ||
@@ -423,11 +464,9 @@ bool HjifReader::readKeyframes(const QJsonArray &json, const QString &pointer, H
         QJsonObject object;
         if (!objectAt(json, i, pointer, &object))
             return false;
-        ignoreUnknownKeys(object, at,
-                          {QLatin1String("relative_position"),
-                           QLatin1String("amplitude_modulation"),
-                           QLatin1String("frequency_modulation")},
-                          m_warnings);
+        unknownKeys(object, at,
+                    {QLatin1String("relative_position"), QLatin1String("amplitude_modulation"),
+                     QLatin1String("frequency_modulation")});
         HjifKeyframe keyframe;
         double amplitude = 0.0;
         qint64 frequency = 0;
@@ -488,7 +527,9 @@ bool HjifDocument::fromJson(const QJsonObject &json, const QString &file, HjifDo
 {
     HjifReader reader(file, warnings);
     *document = HjifDocument();
-    if (reader.read(json, document))
+    const bool read = reader.read(json, document);
+    reader.reportUnknownKeys();
+    if (read)
         return true;
     *error = reader.error();
     return false;

@@ -28,9 +28,9 @@ double baseSignal(const QString &name, double x)
 } // namespace
 
 HjifRenderer::HjifRenderer(const HjifDocument &document, const HjifPerception &perception,
-                           bool carrier, const QString &file, QStringList *warnings)
-    : m_document(document), m_perception(perception), m_carrier(carrier), m_file(file),
-      m_warnings(warnings)
+                           const DeviceModel &model, const QString &file, QStringList *warnings)
+    : m_document(document), m_perception(perception), m_carrier(model.actuator().hasCarrier()),
+      m_followLimit(model.modulationLimit()), m_file(file), m_warnings(warnings)
 {}
 
 bool HjifRenderer::render(const HjifChannel &channel, int effectId, EnvelopeCurve *out,
@@ -92,12 +92,17 @@ bool HjifRenderer::effect(const HjifBand &band, const HjifEffect &e, double offs
                                 QStringLiteral("library effect %1 refers to itself").arg(e.id));
         return false;
     }
-    return effect(band, *target, start, out);
+    // The reference places the library effect: its own position is not added (as the
+    // reference software linearises a library).
+    return basis(band, *target, start, out);
 }
 
 bool HjifRenderer::basis(const HjifBand &band, const HjifEffect &e, double start,
                          std::vector<EnvelopeCurve> *out)
 {
+    // Every keyframe costs work, with an amplitude or not, each time a reference plays it.
+    if (!spend(qint64(e.keyframes.size()), e.pointer))
+        return false;
     const double scale = double(m_document.timescale);
     EnvelopeCurve curve;
     switch (band.type) {
@@ -122,50 +127,67 @@ bool HjifRenderer::basis(const HjifBand &band, const HjifEffect &e, double start
         if (!wave(e, start, &curve))
             return false;
         break;
-    case HjifBand::Type::Curve: {
-        const bool cubic = band.curveType == QLatin1String("Cubic");
-        if (!cubic && !band.curveType.isEmpty() && band.curveType != QLatin1String("Linear"))
-            warnOnce(
-                QStringLiteral("curve ") + band.curveType, band.pointer,
-                QStringLiteral("curve_type %1 is read as Linear").arg(quoted(band.curveType)));
-        const HjifKeyframe *previous = nullptr;
-        for (const HjifKeyframe &k : e.keyframes) {
-            if (!k.amplitude)
-                continue;
-            const double t = start + double(k.position) / scale;
-            if (!checkEnd(t, e.pointer))
-                return false;
-            if (*k.amplitude < 0.0)
-                warnOnce(QStringLiteral("negative"), e.pointer,
-                         QStringLiteral("negative amplitudes are played as 0"));
-            if (cubic && previous) {
-                // The reference software's cubic: a smooth step between two keyframes.
-                const double t0 = start + double(previous->position) / scale;
-                const double a0 = *previous->amplitude;
-                const double a1 = *k.amplitude;
-                const auto steps = qint64(std::floor((t - t0) / Step));
-                if (!spend(steps, e.pointer))
-                    return false;
-                for (qint64 i = 1; i < steps; ++i) {
-                    const double u = double(i) * Step / (t - t0);
-                    curve.append(t0 + double(i) * Step,
-                                 std::max(0.0, a0 + (a1 - a0) * u * u * (3.0 - 2.0 * u)));
-                }
-            }
-            if (curve.isEmpty())
-                curve.append(t, 0.0);
-            if (!spend(1, e.pointer))
-                return false;
-            curve.append(t, std::max(0.0, *k.amplitude));
-            previous = &k;
-        }
+    case HjifBand::Type::Curve:
+        if (!curveOf(band, e, start, &curve))
+            return false;
         break;
-    }
     }
     if (curve.isEmpty())
         return true;
     curve.append(curve.endTime(), 0.0);
     out->push_back(std::move(curve));
+    return true;
+}
+
+bool HjifRenderer::curveOf(const HjifBand &band, const HjifEffect &e, double start,
+                           EnvelopeCurve *curve)
+{
+    const double scale = double(m_document.timescale);
+    // The reference software's default curve (none given, or Unknown) is its cubic.
+    const QString &type = band.curveType;
+    const bool cubic =
+        type.isEmpty() || type == QLatin1String("Unknown") || type == QLatin1String("Cubic");
+    if (!cubic && type != QLatin1String("Linear"))
+        warnOnce(QStringLiteral("curve ") + type, band.pointer,
+                 QStringLiteral("curve_type %1 is read as Linear").arg(quoted(type)));
+    // A device with a carrier takes a level: the curve's magnitude. One without takes the
+    // curve, and cannot go below nothing.
+    const auto level = [&](double a) {
+        if (m_carrier)
+            return std::abs(a);
+        if (a < 0.0)
+            warnOnce(QStringLiteral("negative"), e.pointer,
+                     QStringLiteral("negative amplitudes are played as 0"));
+        return std::max(0.0, a);
+    };
+    const HjifKeyframe *previous = nullptr;
+    for (const HjifKeyframe &k : e.keyframes) {
+        if (!k.amplitude)
+            continue;
+        const double t = start + double(k.position) / scale;
+        if (!checkEnd(t, e.pointer))
+            return false;
+        if (!previous) {
+            // Until its first keyframe an effect holds that keyframe's value.
+            curve->append(start, 0.0);
+            curve->append(start, level(*k.amplitude));
+        } else if (cubic) {
+            // The reference software's cubic: a smooth step between two keyframes.
+            const double t0 = start + double(previous->position) / scale;
+            const double a0 = *previous->amplitude;
+            const double a1 = *k.amplitude;
+            const auto steps = qint64(std::floor((t - t0) / Step));
+            if (!spend(steps, e.pointer))
+                return false;
+            for (qint64 i = 1; i < steps; ++i) {
+                const double u = double(i) * Step / (t - t0);
+                curve->append(t0 + double(i) * Step,
+                              level(a0 + (a1 - a0) * u * u * (3.0 - 2.0 * u)));
+            }
+        }
+        curve->append(t, level(*k.amplitude));
+        previous = &k;
+    }
     return true;
 }
 
@@ -183,11 +205,16 @@ bool HjifRenderer::wave(const HjifEffect &e, double start, EnvelopeCurve *out)
         if (k.frequency)
             frequencies.push_back({t, double(*k.frequency)});
     }
-    if (e.keyframes.empty() || !checkEnd(end, e.pointer))
+    if (e.keyframes.empty())
         return true;
-    // No amplitude keyframe: the wave plays at full amplitude, as the reference software has it.
+    if (!checkEnd(end, e.pointer))
+        return false;
+    // No amplitude keyframe: the wave plays at full amplitude, as the reference software has
+    // it; until the first, at the first's.
     if (amplitudes.empty())
         amplitudes.push_back({start, 1.0});
+    else if (amplitudes.front().t > start)
+        amplitudes.insert(amplitudes.begin(), {start, amplitudes.front().v});
     const EnvelopeCurve amplitude(std::move(amplitudes));
     const EnvelopeCurve frequency(std::move(frequencies));
     if (m_carrier) {
@@ -209,7 +236,26 @@ bool HjifRenderer::wave(const HjifEffect &e, double start, EnvelopeCurve *out)
             out->append(end, out->points().back().v);
         return true;
     }
-    // A device without a carrier plays the wave itself, raised to 0…amplitude.
+    // A device without a carrier plays the wave itself, raised to 0…amplitude; one faster
+    // than it follows (or than the samples could show) as its mean level.
+    double fastest = 0.0;
+    for (const EnvelopePoint &f : frequency.points())
+        fastest = std::max(fastest, f.v);
+    if (fastest > m_followLimit) {
+        warnOnce(QStringLiteral("fast"), e.pointer,
+                 QStringLiteral("a %1 Hz wave is faster than the device follows (%2 Hz): "
+                                "played as its mean level")
+                     .arg(fastest)
+                     .arg(m_followLimit, 0, 'g', 3));
+        if (!spend(qint64(amplitude.points().size()) + 2, e.pointer))
+            return false;
+        out->append(start, 0.0);
+        for (const EnvelopePoint &p : amplitude.points())
+            out->append(p.t, 0.5 * p.v);
+        if (out->endTime() < end)
+            out->append(end, out->points().back().v);
+        return true;
+    }
     const auto steps = qint64(std::floor((end - start) / Step));
     if (!spend(steps + 2, e.pointer))
         return false;

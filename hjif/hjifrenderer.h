@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "devicemodel.h"
 #include "envelopecurve.h"
 #include "hjifdocument.h"
 
@@ -10,7 +11,8 @@ namespace semhap {
  * Renders a perception's channels as the envelopes semhap devices play (docs/convert.md):
  * each band's effects over seconds, library references followed, combined by their maximum.
  * A device with a carrier of its own (an LRA) takes a wave's amplitude; one without (a
- * bellows) takes the wave itself, raised to 0…amplitude. The work is bounded: a reference
+ * bellows) takes the wave itself, raised to 0…amplitude (its mean level when faster than
+ * the device follows). The work is bounded: a reference
  * plays one library effect, never another reference (in the library an effect's id is its
  * own, so a reference there names itself); at most MaxPoints points; nothing past
  * MaxDuration.
@@ -18,8 +20,8 @@ namespace semhap {
 class HjifRenderer
 {
 public:
-    HjifRenderer(const HjifDocument &document, const HjifPerception &perception, bool carrier,
-                 const QString &file, QStringList *warnings);
+    HjifRenderer(const HjifDocument &document, const HjifPerception &perception,
+                 const DeviceModel &model, const QString &file, QStringList *warnings);
 
     /**
      * The envelope of `channel`, from 0 s. With `effect` ≥ 0, only what refers to library
@@ -43,6 +45,7 @@ private:
                 std::vector<EnvelopeCurve> *out);
     bool basis(const HjifBand &band, const HjifEffect &effect, double start,
                std::vector<EnvelopeCurve> *out);
+    bool curveOf(const HjifBand &band, const HjifEffect &effect, double start, EnvelopeCurve *out);
     bool wave(const HjifEffect &effect, double start, EnvelopeCurve *out);
     bool spend(qint64 points, const QString &pointer);
     bool checkEnd(double t, const QString &pointer);
@@ -51,6 +54,7 @@ private:
     const HjifDocument &m_document;
     const HjifPerception &m_perception;
     bool m_carrier;
+    double m_followLimit; ///< Hz: the fastest wave a device without a carrier follows
     QString m_file;
     QStringList *m_warnings;
     QStringList m_warned;

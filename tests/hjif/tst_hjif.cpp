@@ -114,6 +114,7 @@ private slots:
     void boundedWork();
     void foreignContent();
     void denseKeyframesAreSampled();
+    void asTheReferenceSoftwarePlays();
     void commandLine();
 };
 
@@ -528,6 +529,11 @@ void TestHjif::malformed_data()
         << replaced(R"("relative_position": 100)", R"("relative_position": 2147483647)")
         << "t.hjif: /perceptions/0/channels/0/bands/0/effects/0: plays until 2.14748e+06 s, more "
            "than 600 s";
+    QTest::newRow("a wave beyond ten minutes")
+        << replaced(R"("band_type": "Curve")", R"("band_type": "VectorialWave")")
+               .replace(R"("relative_position": 100)", R"("relative_position": 700000)")
+        << "t.hjif: /perceptions/0/channels/0/bands/0/effects/0: plays until 700 s, more than "
+           "600 s";
     QTest::newRow("beyond ten minutes at one tick a second")
         << replaced(R"("timescale": 1000)", R"("timescale": 1)")
                .replace(R"("relative_position": 100)", R"("relative_position": 601)")
@@ -587,6 +593,20 @@ void TestHjif::boundedWork_data()
                     QLatin1Char('[') + channelWith(QStringLiteral("Curve"), uses) +
                         QLatin1Char(']'),
                     library)
+        << QStringLiteral("t.hjif: /perceptions/0/effect_library/0: renders to more than 4000000 "
+                          "points: the file is refused");
+    // Keyframes without an amplitude cost work too, each time a reference plays them.
+    QString empty =
+        QStringLiteral(R"([{"effect_type": "Basis", "id": 0, "position": 0, "keyframes": [)");
+    for (int i = 0; i < 100000; ++i)
+        empty += QStringLiteral("{},");
+    empty.chop(1);
+    empty += QStringLiteral("]}]");
+    QTest::newRow("references to keyframes without amplitudes")
+        << fileWith(QStringLiteral("Pressure"),
+                    QLatin1Char('[') + channelWith(QStringLiteral("Curve"), uses) +
+                        QLatin1Char(']'),
+                    empty)
         << QStringLiteral("t.hjif: /perceptions/0/effect_library/0: renders to more than 4000000 "
                           "points: the file is refused");
     // A cubic curve between keyframes ten minutes apart, in many effects, is sampled finely.
@@ -666,9 +686,11 @@ void TestHjif::foreignContent()
     const QString wavelet =
         channelWith(QStringLiteral("WaveletWave"),
                     QStringLiteral(R"([{"effect_type": "Basis", "position": 0}])"), 3);
-    const QString composite = channelWith(
-        QStringLiteral("Curve"),
-        QStringLiteral(R"([{"effect_type": "Composite", "position": 0, "hue": 1}])"), 4);
+    const QString composite =
+        channelWith(QStringLiteral("Curve"),
+                    QStringLiteral(R"([{"effect_type": "Composite", "position": 0, "hue": 1},
+        {"effect_type": "Basis", "position": 0, "hue": 2}])"),
+                    4);
     const QByteArray file =
         fileWith(QStringLiteral("Pressure"), QLatin1Char('[') + transient + ", " + cubic + ", " +
                                                  square + ", " + wavelet + ", " + composite + ']');
@@ -679,7 +701,7 @@ void TestHjif::foreignContent()
     QCOMPARE(pattern.value(QLatin1String("model")).toString(), QStringLiteral("pneumatic6"));
     QCOMPARE(warnings,
              (QStringList{"t.hjif: /perceptions/0/channels/4/bands/0/effects/0/hue: ignored: "
-                          "unknown key",
+                          "unknown key (and in 1 more places)",
                           "t.hjif: /perceptions/0/channels/3/bands/0: ignored: WaveletWave bands "
                           "are coded signals semhap does not decode",
                           "t.hjif: /perceptions/0/channels/4/bands/0/effects/0: ignored: "
@@ -762,6 +784,95 @@ void TestHjif::denseKeyframesAreSampled()
     }
 }
 
+void TestHjif::asTheReferenceSoftwarePlays()
+{
+    const auto basis = [](const QString &keyframes, const QString &extra = QString()) {
+        return QStringLiteral(R"({"effect_type": "Basis", "position": 0%1, "keyframes": [%2]})")
+            .arg(extra, keyframes);
+    };
+    // b1: a library effect placed by its reference: its own position (0.5 s) is not added.
+    const QString placed = channelWith(
+        QStringLiteral("Curve"),
+        QStringLiteral(R"([{"effect_type": "Reference", "id": 4, "position": 100}])"), 0);
+    const QString library = QStringLiteral(
+        R"([{"effect_type": "Basis", "id": 4, "position": 500, "keyframes": [
+        {"relative_position": 0, "amplitude_modulation": 1},
+        {"relative_position": 100, "amplitude_modulation": 1}]}])");
+    // b2: a Curve band without a curve type is the reference's default, its cubic.
+    const QString cubic = channelWith(
+        QStringLiteral("Curve"),
+        QLatin1Char('[') +
+            basis(QStringLiteral(R"({"relative_position": 0, "amplitude_modulation": 0},
+            {"relative_position": 400, "amplitude_modulation": 1})")) +
+            QLatin1Char(']'),
+        1);
+    // b3: until its first amplitude keyframe a wave holds that amplitude.
+    const QString held = channelWith(
+        QStringLiteral("VectorialWave"),
+        QLatin1Char('[') +
+            basis(QStringLiteral(R"({"relative_position": 0, "frequency_modulation": 2},
+            {"relative_position": 100, "amplitude_modulation": 0.8},
+            {"relative_position": 300, "amplitude_modulation": 0.8})"),
+                  QStringLiteral(R"(, "base_signal": "Square", "phase": 6.2831854820251465)")) +
+            QLatin1Char(']'),
+        2);
+    // b4: a wave faster than a bellows follows is its mean level.
+    const QString fast = channelWith(
+        QStringLiteral("VectorialWave"),
+        QLatin1Char('[') +
+            basis(QStringLiteral(R"({"relative_position": 0, "amplitude_modulation": 0.6,
+            "frequency_modulation": 999}, {"relative_position": 200,
+            "amplitude_modulation": 0.6})")) +
+            QLatin1Char(']'),
+        3);
+    QJsonObject pattern;
+    QStringList warnings;
+    LoadError error;
+    QVERIFY2(importBytes(fileWith(QStringLiteral("Pressure"),
+                                  QLatin1Char('[') + placed + ", " + cubic + ", " + held + ", " +
+                                      fast + ']',
+                                  library),
+                         {}, &pattern, &warnings, &error),
+             qPrintable(error.toString()));
+    QCOMPARE(warnings, QStringList{"t.hjif: /perceptions/0/channels/3/bands/0/effects/0: a 999 Hz "
+                                   "wave is faster than the device follows (7 Hz): played as its "
+                                   "mean level"});
+    const RenderedPattern out = renderOf(pattern, 1.0);
+    QCOMPARE(out.values[0][50], 0.0);
+    QCOMPARE(out.values[0][150], 1.0);
+    QCOMPARE(out.values[0][250], 0.0);
+    QVERIFY(std::abs(out.values[1][100] - 0.15625) < 0.005);
+    QVERIFY(std::abs(out.values[2][50] - 0.8) < 1e-9); // the square is high for 250 ms
+    QVERIFY(std::abs(out.values[3][100] - 0.3) < 1e-9);
+
+    // On a device with a carrier a curve below zero is felt by its size; channels whose
+    // names are not the model's go to the first channels free.
+    const QString below = channelWith(
+        QStringLiteral("Curve"),
+        QLatin1Char('[') +
+            basis(QStringLiteral(R"({"relative_position": 0, "amplitude_modulation": -0.5},
+            {"relative_position": 200, "amplitude_modulation": -0.5})")) +
+            QLatin1Char(']'),
+        0);
+    QString named = below;
+    named.replace(QStringLiteral(R"("description": "")"),
+                  QStringLiteral(R"("description": "m2")"));
+    QString other = below;
+    other.replace(QStringLiteral(R"("id": 0)"), QStringLiteral(R"("id": 1)"))
+        .replace(QStringLiteral(R"("description": "")"),
+                 QStringLiteral(R"("description": "Channel 2")"));
+    warnings.clear();
+    QVERIFY2(importBytes(fileWith(QStringLiteral("Vibrotactile"),
+                                  QLatin1Char('[') + named + ", " + other + ']'),
+                         {}, &pattern, &warnings, &error),
+             qPrintable(error.toString()));
+    QCOMPARE(warnings, QStringList());
+    const RenderedPattern felt = renderOf(pattern, 0.5);
+    QVERIFY(std::abs(felt.values[0][100] - 0.5) < 1e-9); // "Channel 2" on m1
+    QVERIFY(std::abs(felt.values[1][100] - 0.5) < 1e-9); // "m2" on m2
+    QCOMPARE(felt.values[2][100], 0.0);
+}
+
 void TestHjif::commandLine()
 {
     QTemporaryDir dir;
@@ -772,6 +883,7 @@ void TestHjif::commandLine()
     const QString pattern = dir.filePath(QStringLiteral("alarm.json"));
     r = semhapRun({"convert", out, pattern, "--perception", "3", "--effect", "0"});
     QVERIFY2(r.code == 0, r.err.constData());
+    QCOMPARE(r.err, QByteArray()); // the perception asked for: no word of the others
     LoadError error;
     const PatternPtr alarm = PatternLibrary::load(pattern, &error);
     QVERIFY2(alarm, qPrintable(error.toString()));
@@ -801,6 +913,8 @@ void TestHjif::commandLine()
         {{"convert", out, "x.json", "--effect", "one"}, "--effect expects an id"},
         {{"convert", pattern, "x.hjif", "--hand", "both"}, "--hand expects left or right"},
         {{"convert", pattern, "x.json", "--hand", "left"}, "--hand is for writing HJIF files"},
+        {{"convert", "--router", "C3", "--hand", "left", "x.hjif"},
+         "--hand is for patterns: a router's devices name their hands"},
         {{"convert", out, "x.json", "--channel", "m1"}, "--channel and --modulate are for AHAP"},
         {{"convert", "--router", "C3", "--device", "lra4", "x.hjif"}, "--device is for imports"},
         {{"convert", "--router", "visual", dir.filePath("v.hjif")},
