@@ -15,6 +15,7 @@
 #include <QJsonDocument>
 
 #include <cmath>
+#include <numeric>
 
 namespace semhap {
 
@@ -105,6 +106,35 @@ std::vector<HjifKeyframe> keyframesOf(const EnvelopeCurve &curve, double carrier
         keyframes.push_back(k);
     }
     return keyframes;
+}
+
+/** A channel's envelope as an effect at 0, on the carrier when the device has one. */
+HjifEffect effectOf(const EnvelopeCurve &envelope, double carrier)
+{
+    HjifEffect effect;
+    if (carrier > 0)
+        effect.baseSignal = QStringLiteral("Sine");
+    effect.keyframes = keyframesOf(envelope, carrier);
+    return effect;
+}
+
+/**
+ * How an export renders `pattern` (all its tracks, as HapticConverter::span says) at 1 kHz,
+ * with a last sample at the end; `length` (when given) is the span without it.
+ */
+bool exportRender(const Pattern &pattern, const QString &file, const ConvertOptions &options,
+                  RenderOptions *render, double *length, QStringList *warnings, LoadError *error)
+{
+    std::vector<int> all(pattern.tracks().size());
+    std::iota(all.begin(), all.end(), 0);
+    if (!HapticConverter::span(pattern.toJson(), file, options, all, &render->releaseAt,
+                               &render->duration, warnings, error))
+        return false;
+    if (length)
+        *length = render->duration;
+    render->rate = 1000.0;
+    render->duration += 1.0 / render->rate; // the render takes its last sample at the end too
+    return true;
 }
 
 bool sameKeyframes(const std::vector<HjifKeyframe> &a, const std::vector<HjifKeyframe> &b)
@@ -413,12 +443,8 @@ bool HjifConverter::patternToDocument(const QJsonObject &pattern, const QString 
     const DeviceModelPtr model = DeviceModelLibrary::load(parsed->model(), error);
     if (!model || !hapticModel(*model, file, error))
         return false;
-    std::vector<int> all;
-    for (int i = 0; i < int(parsed->tracks().size()); ++i)
-        all.push_back(i);
     RenderOptions render;
-    if (!HapticConverter::span(pattern, file, options, all, &render.releaseAt, &render.duration,
-                               warnings, error))
+    if (!exportRender(*parsed, file, options, &render, nullptr, warnings, error))
         return false;
     if (warnings && parsed->params().size() > 1)
         warnings->append(LoadError::at(file, QStringLiteral("/params"),
@@ -429,8 +455,6 @@ bool HjifConverter::patternToDocument(const QJsonObject &pattern, const QString 
         warnings->append(LoadError::at(file, QStringLiteral("/sharpness"),
                                        QStringLiteral("not carried: HJIF has no sharpness"))
                              .toString());
-    render.rate = 1000.0;
-    render.duration += 1.0 / render.rate; // the render takes its last sample at the end too
     RenderedPattern rendered;
     QString reason;
     if (!renderPattern(parsed, *model, render, &rendered, &reason)) {
@@ -445,11 +469,7 @@ bool HjifConverter::patternToDocument(const QJsonObject &pattern, const QString 
     for (size_t c = 0; c < envelopes.size(); ++c) {
         if (envelopes[c].isEmpty())
             continue;
-        HjifEffect effect;
-        if (carrier > 0)
-            effect.baseSignal = QStringLiteral("Sine");
-        effect.keyframes = keyframesOf(envelopes[c], carrier);
-        perception.channels[c].bands.front().effects.push_back(std::move(effect));
+        perception.channels[c].bands.front().effects.push_back(effectOf(envelopes[c], carrier));
     }
     document->perceptions.push_back(std::move(perception));
     return true;
@@ -501,15 +521,9 @@ bool HjifConverter::routerToDocument(const Router &router, const QString &file,
                 QStringLiteral("%1 (%2 on %3)").arg(file, via, player.deviceName(device));
             RenderOptions render;
             render.intensity = route->intensity;
-            std::vector<int> all;
-            for (int i = 0; i < int(route->played->tracks().size()); ++i)
-                all.push_back(i);
-            if (!HapticConverter::span(route->played->toJson(), where, options, all,
-                                       &render.releaseAt, &render.duration, warnings, error))
+            double length = 0.0;
+            if (!exportRender(*route->played, where, options, &render, &length, warnings, error))
                 return false;
-            const double length = render.duration;
-            render.rate = 1000.0;
-            render.duration += 1.0 / render.rate;
             RenderedPattern rendered;
             renderRoutedPattern(route->played, route->routes, model, render, &rendered);
             const QString keyword =
@@ -519,11 +533,8 @@ bool HjifConverter::routerToDocument(const Router &router, const QString &file,
             for (size_t c = 0; c < envelopes.size(); ++c) {
                 if (envelopes[c].isEmpty())
                     continue;
-                HjifEffect effect;
+                HjifEffect effect = effectOf(envelopes[c], carrier);
                 effect.semantic = keyword;
-                if (carrier > 0)
-                    effect.baseSignal = QStringLiteral("Sine");
-                effect.keyframes = keyframesOf(envelopes[c], carrier);
                 int id = -1;
                 for (const HjifEffect &e : perception.library) {
                     if (e.semantic == keyword && e.baseSignal == effect.baseSignal &&
